@@ -1,0 +1,42 @@
+//! The program's error type and its exit codes (SPEC section 5).
+
+use thiserror::Error;
+
+/// Every error the library reports. `exit_code` maps it to the CLI contract:
+/// 2 for bad input (the user can fix the command line), 1 for a run that failed.
+#[derive(Debug, Error)]
+pub enum Error {
+    /// Bad input: unknown ID, a parameter out of range, an unwritable folder.
+    #[error("{0}")]
+    BadInput(String),
+    /// A run that failed, e.g. a diverging integrator; the message says when
+    /// and gives a hint.
+    #[error("{0}")]
+    Failed(String),
+}
+
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+impl Error {
+    pub fn bad_input(msg: impl Into<String>) -> Self {
+        Self::BadInput(msg.into())
+    }
+
+    pub fn failed(msg: impl Into<String>) -> Self {
+        Self::Failed(msg.into())
+    }
+
+    /// Process exit code: 2 for bad input, 1 for a failed run.
+    pub fn exit_code(&self) -> i32 {
+        match self {
+            Self::BadInput(_) => 2,
+            Self::Failed(_) => 1,
+        }
+    }
+}
+
+impl From<crate::model::ParamError> for Error {
+    fn from(e: crate::model::ParamError) -> Self {
+        Self::BadInput(e.0)
+    }
+}

@@ -1,0 +1,8 @@
+//! `jacobs-ladder`: simulate the Jacob's-ladder toy and render the figures and
+//! movies of "Topological antiqued mechanical toy" (Wada, Mizobata, Ueno,
+//! Yoneda). See `SPEC.md` for the conventions.
+
+pub mod model;
+pub mod error;
+
+pub use error::{Error, Result};

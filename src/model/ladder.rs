@@ -1,0 +1,247 @@
+//! Geometry, energy and analytic forces of the ladder (SPEC section 1; the
+//! supplement's "Details of numerical simulation").
+//!
+//! Coordinates are stored block after block, `q = [X_1, Y_1, θ_1, X_2, ...]`
+//! (index `3 i + k` for block n = i + 1). The x axis points along gravity,
+//! down the ladder.
+
+use super::params::{M, Params, R, S};
+use nalgebra::DMatrix;
+
+/// Index of X_n, Y_n, θ_n of the block with zero-based index `i` (n = i + 1).
+pub const fn ix(i: usize) -> usize {
+    3 * i
+}
+pub const fn iy(i: usize) -> usize {
+    3 * i + 1
+}
+pub const fn itheta(i: usize) -> usize {
+    3 * i + 2
+}
+
+/// (−1)^n for the block with zero-based index `i` (n = i + 1).
+pub const fn parity(i: usize) -> f64 {
+    if i % 2 == 0 { -1.0 } else { 1.0 }
+}
+
+/// Orientation t_n = (sin θ_n, (−1)^n cos θ_n) of block `i` at angle `theta`.
+pub fn orientation(i: usize, theta: f64) -> [f64; 2] {
+    let (s, c) = theta.sin_cos();
+    [s, parity(i) * c]
+}
+
+/// A-node X_n − r t_n and B-node X_n + r t_n of block `i`.
+pub fn nodes(q: &[f64], i: usize) -> ([f64; 2], [f64; 2]) {
+    let t = orientation(i, q[itheta(i)]);
+    let (x, y) = (q[ix(i)], q[iy(i)]);
+    (
+        [x - R * t[0], y - R * t[1]],
+        [x + R * t[0], y + R * t[1]],
+    )
+}
+
+/// The ladder model: parameters plus the derived rest length a.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ladder {
+    pub params: Params,
+    /// Rest length of the A springs, a = sqrt(b² + 4 s² cos²α).
+    pub a: f64,
+}
+
+impl Ladder {
+    pub fn new(params: Params) -> Self {
+        Self {
+            a: params.a(),
+            params,
+        }
+    }
+
+    pub fn n(&self) -> usize {
+        self.params.n
+    }
+
+    /// Ground state of sign α (SPEC section 1): θ_n = α, X_n = (n − 1) b,
+    /// Y_{n+1} − Y_n = (−1)^n s cos|α|, Y_1 = 0. Every A spring has length a
+    /// and every B spring length b.
+    pub fn ground_state(&self) -> Vec<f64> {
+        let p = &self.params;
+        let mut q = vec![0.0; p.dof()];
+        let dy = S * p.alpha.abs().cos();
+        for i in 0..p.n {
+            q[ix(i)] = i as f64 * p.b;
+            q[itheta(i)] = p.alpha;
+            if i > 0 {
+                // Y_{n+1} − Y_n with n = i (one-based index of the block above).
+                q[iy(i)] = q[iy(i - 1)] + parity(i - 1) * dy;
+            }
+        }
+        q
+    }
+
+    /// Spring lengths L_A,n and L_B,n, n = 1..N−1, written into `la`, `lb`.
+    pub fn spring_lengths(&self, q: &[f64], la: &mut [f64], lb: &mut [f64]) {
+        for i in 0..self.n() - 1 {
+            let (a0, b0) = nodes(q, i);
+            let (a1, b1) = nodes(q, i + 1);
+            la[i] = (a1[0] - a0[0]).hypot(a1[1] - a0[1]);
+            lb[i] = (b1[0] - b0[0]).hypot(b1[1] - b0[1]);
+        }
+    }
+
+    /// Elastic energy Σ ½k[(L_A,n − a)² + (L_B,n − b)²].
+    pub fn elastic_energy(&self, q: &[f64]) -> f64 {
+        let mut e = 0.0;
+        for i in 0..self.n() - 1 {
+            let (a0, b0) = nodes(q, i);
+            let (a1, b1) = nodes(q, i + 1);
+            let la = (a1[0] - a0[0]).hypot(a1[1] - a0[1]);
+            let lb = (b1[0] - b0[0]).hypot(b1[1] - b0[1]);
+            e += 0.5 * ((la - self.a).powi(2) + (lb - self.params.b).powi(2));
+        }
+        e
+    }
+
+    /// Potential energy E = Σ ½k[(L_A,n − a)² + (L_B,n − b)²] − m G Σ X_n
+    /// (SPEC section 1; the paper's +mgX_n has the wrong sign).
+    pub fn energy(&self, q: &[f64]) -> f64 {
+        let gravity: f64 = (0..self.n()).map(|i| q[ix(i)]).sum();
+        self.elastic_energy(q) - M * self.params.gravity * gravity
+    }
+
+    /// Kinetic energy ½ m (Ẋ² + Ẏ²) + ½ I θ̇² summed over blocks.
+    pub fn kinetic_energy(&self, v: &[f64]) -> f64 {
+        v.chunks_exact(3)
+            .map(|b| 0.5 * M * (b[0] * b[0] + b[1] * b[1]) + 0.5 * self.params.inertia * b[2] * b[2])
+            .sum()
+    }
+
+    /// Analytic gradient ∂E/∂q written into `grad` (same layout as `q`).
+    /// One pass over the blocks, one sin/cos per block, no allocation.
+    pub fn gradient(&self, q: &[f64], grad: &mut [f64]) {
+        let n = self.n();
+        let (a_rest, b_rest) = (self.a, self.params.b);
+        let g = M * self.params.gravity;
+        // Previous block's nodes and dt/dθ.
+        let mut prev = BlockFrame::new(q, 0);
+        grad[ix(0)] = -g;
+        grad[iy(0)] = 0.0;
+        grad[itheta(0)] = 0.0;
+        for i in 1..n {
+            let cur = BlockFrame::new(q, i);
+            grad[ix(i)] = -g;
+            grad[iy(i)] = 0.0;
+            grad[itheta(i)] = 0.0;
+            // Node position p = X ∓ r t, so ∂p/∂θ = ∓ r t'.
+            for (sign, rest) in [(-1.0, a_rest), (1.0, b_rest)] {
+                let dx = (cur.x + sign * R * cur.t[0]) - (prev.x + sign * R * prev.t[0]);
+                let dy = (cur.y + sign * R * cur.t[1]) - (prev.y + sign * R * prev.t[1]);
+                let len = (dx * dx + dy * dy).sqrt();
+                // f = ∂E/∂d = k (L − rest) d / L
+                let scale = (len - rest) / len;
+                let (fx, fy) = (scale * dx, scale * dy);
+                grad[ix(i)] += fx;
+                grad[iy(i)] += fy;
+                grad[ix(i - 1)] -= fx;
+                grad[iy(i - 1)] -= fy;
+                grad[itheta(i)] += sign * R * (fx * cur.dt[0] + fy * cur.dt[1]);
+                grad[itheta(i - 1)] -= sign * R * (fx * prev.dt[0] + fy * prev.dt[1]);
+            }
+            prev = cur;
+        }
+    }
+
+    /// Jacobian ∂L/∂q of the spring lengths (the compatibility matrix of the
+    /// finite chain, linearised about `q`). Rows are ordered
+    /// [A_1, B_1, A_2, B_2, ...], 2(N − 1) rows and 3N columns.
+    pub fn spring_length_jacobian(&self, q: &[f64]) -> DMatrix<f64> {
+        let n = self.n();
+        let mut c = DMatrix::zeros(2 * (n - 1), 3 * n);
+        for i in 0..n - 1 {
+            let f0 = BlockFrame::new(q, i);
+            let f1 = BlockFrame::new(q, i + 1);
+            for (row_off, sign) in [(0, -1.0), (1, 1.0)] {
+                let dx = (f1.x + sign * R * f1.t[0]) - (f0.x + sign * R * f0.t[0]);
+                let dy = (f1.y + sign * R * f1.t[1]) - (f0.y + sign * R * f0.t[1]);
+                let len = (dx * dx + dy * dy).sqrt();
+                let (ux, uy) = (dx / len, dy / len);
+                let row = 2 * i + row_off;
+                c[(row, ix(i + 1))] = ux;
+                c[(row, iy(i + 1))] = uy;
+                c[(row, ix(i))] = -ux;
+                c[(row, iy(i))] = -uy;
+                c[(row, itheta(i + 1))] = sign * R * (ux * f1.dt[0] + uy * f1.dt[1]);
+                c[(row, itheta(i))] = -sign * R * (ux * f0.dt[0] + uy * f0.dt[1]);
+            }
+        }
+        c
+    }
+}
+
+/// Centre, orientation t_n and its derivative dt_n/dθ_n of one block.
+#[derive(Clone, Copy)]
+struct BlockFrame {
+    x: f64,
+    y: f64,
+    t: [f64; 2],
+    dt: [f64; 2],
+}
+
+impl BlockFrame {
+    #[inline(always)]
+    fn new(q: &[f64], i: usize) -> Self {
+        let (s, c) = q[itheta(i)].sin_cos();
+        let p = parity(i);
+        Self {
+            x: q[ix(i)],
+            y: q[iy(i)],
+            t: [s, p * c],
+            dt: [c, -p * s],
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ground_state_lengths_are_rest_lengths() {
+        for alpha in [60.0, -60.0, 86.0, -50.0, 10.0] {
+            let ladder = Ladder::new(Params::paper(alpha).unwrap());
+            let q = ladder.ground_state();
+            let (mut la, mut lb) = (vec![0.0; 9], vec![0.0; 9]);
+            ladder.spring_lengths(&q, &mut la, &mut lb);
+            for k in 0..9 {
+                assert!((la[k] - ladder.a).abs() < 1e-14, "A {k}: {}", la[k]);
+                assert!((lb[k] - 1.3).abs() < 1e-14, "B {k}: {}", lb[k]);
+            }
+        }
+    }
+
+    #[test]
+    fn jacobian_matches_finite_differences() {
+        let ladder = Ladder::new(Params::paper(60.0).unwrap());
+        let mut q = ladder.ground_state();
+        for (k, x) in q.iter_mut().enumerate() {
+            *x += 0.05 * ((k as f64) * 1.7).sin();
+        }
+        let c = ladder.spring_length_jacobian(&q);
+        let n = ladder.n();
+        let lengths = |q: &[f64]| {
+            let (mut la, mut lb) = (vec![0.0; n - 1], vec![0.0; n - 1]);
+            ladder.spring_lengths(q, &mut la, &mut lb);
+            la.iter().zip(&lb).flat_map(|(a, b)| [*a, *b]).collect::<Vec<_>>()
+        };
+        let h = 1e-6;
+        for col in 0..q.len() {
+            let (mut qp, mut qm) = (q.clone(), q.clone());
+            qp[col] += h;
+            qm[col] -= h;
+            let (lp, lm) = (lengths(&qp), lengths(&qm));
+            for row in 0..lp.len() {
+                let fd = (lp[row] - lm[row]) / (2.0 * h);
+                assert!((fd - c[(row, col)]).abs() < 1e-8, "({row},{col})");
+            }
+        }
+    }
+}

@@ -1,0 +1,8 @@
+//! The ladder model: parameters, geometry, energy and analytic forces.
+//! Knows nothing else of the project.
+
+pub mod ladder;
+pub mod params;
+
+pub use ladder::Ladder;
+pub use params::{ParamError, Params};
