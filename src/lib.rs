@@ -2,7 +2,13 @@
 //! movies of "Topological antiqued mechanical toy" (Wada, Mizobata, Ueno,
 //! Yoneda). See `SPEC.md` for the conventions.
 
-pub mod model;
+// Numerical loops index several arrays with one index, as the formulas do.
+#![allow(clippy::needless_range_loop)]
+
 pub mod error;
+pub mod model;
 
 pub use error::{Error, Result};
+pub mod cli;
+pub mod output;
+pub mod sim;

@@ -21,7 +21,7 @@ pub const fn itheta(i: usize) -> usize {
 
 /// (−1)^n for the block with zero-based index `i` (n = i + 1).
 pub const fn parity(i: usize) -> f64 {
-    if i % 2 == 0 { -1.0 } else { 1.0 }
+    if i.is_multiple_of(2) { -1.0 } else { 1.0 }
 }
 
 /// Orientation t_n = (sin θ_n, (−1)^n cos θ_n) of block `i` at angle `theta`.
@@ -34,10 +34,7 @@ pub fn orientation(i: usize, theta: f64) -> [f64; 2] {
 pub fn nodes(q: &[f64], i: usize) -> ([f64; 2], [f64; 2]) {
     let t = orientation(i, q[itheta(i)]);
     let (x, y) = (q[ix(i)], q[iy(i)]);
-    (
-        [x - R * t[0], y - R * t[1]],
-        [x + R * t[0], y + R * t[1]],
-    )
+    ([x - R * t[0], y - R * t[1]], [x + R * t[0], y + R * t[1]])
 }
 
 /// The ladder model: parameters plus the derived rest length a.
@@ -111,43 +108,36 @@ impl Ladder {
     /// Kinetic energy ½ m (Ẋ² + Ẏ²) + ½ I θ̇² summed over blocks.
     pub fn kinetic_energy(&self, v: &[f64]) -> f64 {
         v.chunks_exact(3)
-            .map(|b| 0.5 * M * (b[0] * b[0] + b[1] * b[1]) + 0.5 * self.params.inertia * b[2] * b[2])
+            .map(|b| {
+                0.5 * M * (b[0] * b[0] + b[1] * b[1]) + 0.5 * self.params.inertia * b[2] * b[2]
+            })
             .sum()
     }
 
     /// Analytic gradient ∂E/∂q written into `grad` (same layout as `q`).
-    /// One pass over the blocks, one sin/cos per block, no allocation.
+    /// Allocates its scratch; the integrators use [`Ladder::gradient_with`].
     pub fn gradient(&self, q: &[f64], grad: &mut [f64]) {
-        let n = self.n();
-        let (a_rest, b_rest) = (self.a, self.params.b);
-        let g = M * self.params.gravity;
-        // Previous block's nodes and dt/dθ.
-        let mut prev = BlockFrame::new(q, 0);
-        grad[ix(0)] = -g;
-        grad[iy(0)] = 0.0;
-        grad[itheta(0)] = 0.0;
-        for i in 1..n {
-            let cur = BlockFrame::new(q, i);
-            grad[ix(i)] = -g;
-            grad[iy(i)] = 0.0;
-            grad[itheta(i)] = 0.0;
-            // Node position p = X ∓ r t, so ∂p/∂θ = ∓ r t'.
-            for (sign, rest) in [(-1.0, a_rest), (1.0, b_rest)] {
-                let dx = (cur.x + sign * R * cur.t[0]) - (prev.x + sign * R * prev.t[0]);
-                let dy = (cur.y + sign * R * cur.t[1]) - (prev.y + sign * R * prev.t[1]);
-                let len = (dx * dx + dy * dy).sqrt();
-                // f = ∂E/∂d = k (L − rest) d / L
-                let scale = (len - rest) / len;
-                let (fx, fy) = (scale * dx, scale * dy);
-                grad[ix(i)] += fx;
-                grad[iy(i)] += fy;
-                grad[ix(i - 1)] -= fx;
-                grad[iy(i - 1)] -= fy;
-                grad[itheta(i)] += sign * R * (fx * cur.dt[0] + fy * cur.dt[1]);
-                grad[itheta(i - 1)] -= sign * R * (fx * prev.dt[0] + fy * prev.dt[1]);
+        let mut scratch = ForceScratch::new(self.n());
+        self.gradient_with(q, grad, &mut scratch);
+    }
+
+    /// Analytic gradient using preallocated `scratch` (no allocation).
+    ///
+    /// For spring σ ∈ {A, B} between blocks n and n+1 with node offset
+    /// ∓r t_n, d = p_{n+1} − p_n and L = |d|: ∂E/∂d = k (L − ℓ_σ) d / L; the
+    /// node moves with X_n and rotates with ∂p/∂θ_n = ∓ r t'_n, where
+    /// t'_n = (cos θ_n, −(−1)^n sin θ_n). The loops run over blocks and
+    /// springs as flat arrays so that the compiler vectorises them.
+    pub fn gradient_with(&self, q: &[f64], grad: &mut [f64], scratch: &mut ForceScratch) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if std::arch::is_x86_feature_detected!("avx2") {
+                // SAFETY: the CPU supports AVX2, checked just above.
+                unsafe { gradient_avx2(self, q, grad, scratch) };
+                return;
             }
-            prev = cur;
         }
+        gradient_body(self, q, grad, scratch);
     }
 
     /// Jacobian ∂L/∂q of the spring lengths (the compatibility matrix of the
@@ -177,6 +167,102 @@ impl Ladder {
     }
 }
 
+/// Scratch arrays of the force loop, one entry per block or per spring.
+#[derive(Debug, Clone)]
+pub struct ForceScratch {
+    parity: Vec<f64>,
+    x: Vec<f64>,
+    y: Vec<f64>,
+    theta: Vec<f64>,
+    sin: Vec<f64>,
+    cos: Vec<f64>,
+    /// Net force of the spring pair n on block n + 1 (x and y).
+    fx: Vec<f64>,
+    fy: Vec<f64>,
+    /// Torque contributions of spring pair n to block n + 1 and to block n.
+    torque_lower: Vec<f64>,
+    torque_upper: Vec<f64>,
+}
+
+impl ForceScratch {
+    pub fn new(n: usize) -> Self {
+        let z = vec![0.0; n];
+        Self {
+            parity: (0..n).map(parity).collect(),
+            x: z.clone(),
+            y: z.clone(),
+            theta: z.clone(),
+            sin: z.clone(),
+            cos: z.clone(),
+            fx: z.clone(),
+            fy: z.clone(),
+            torque_lower: z.clone(),
+            torque_upper: z,
+        }
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn gradient_avx2(ladder: &Ladder, q: &[f64], grad: &mut [f64], w: &mut ForceScratch) {
+    gradient_body(ladder, q, grad, w)
+}
+
+/// The force loop (see [`Ladder::gradient_with`]). No fused multiply-adds:
+/// the result is bit-identical with and without AVX2.
+#[inline(always)]
+fn gradient_body(ladder: &Ladder, q: &[f64], grad: &mut [f64], w: &mut ForceScratch) {
+    let n = ladder.n();
+    let m = n - 1;
+    let q = &q[..3 * n];
+    for i in 0..n {
+        w.x[i] = q[3 * i];
+        w.y[i] = q[3 * i + 1];
+        w.theta[i] = q[3 * i + 2];
+    }
+    super::trig::sin_cos_slice(&w.theta, &mut w.sin, &mut w.cos);
+    let (a_rest, b_rest) = (ladder.a, ladder.params.b);
+    let (x, y, s, c, p) = (
+        &w.x[..n],
+        &w.y[..n],
+        &w.sin[..n],
+        &w.cos[..n],
+        &w.parity[..n],
+    );
+    let (fx, fy) = (&mut w.fx[..m], &mut w.fy[..m]);
+    let (tl, tu) = (&mut w.torque_lower[..m], &mut w.torque_upper[..m]);
+    for j in 0..m {
+        // t = (sin θ, p cos θ), t' = (cos θ, −p sin θ).
+        let (tx0, ty0, tx1, ty1) = (s[j], p[j] * c[j], s[j + 1], p[j + 1] * c[j + 1]);
+        let (ex, ey) = (x[j + 1] - x[j], y[j + 1] - y[j]);
+        let (ux, uy) = (R * (tx1 - tx0), R * (ty1 - ty0));
+        let (ax, ay, bx, by) = (ex - ux, ey - uy, ex + ux, ey + uy);
+        let ka = 1.0 - a_rest / (ax * ax + ay * ay).sqrt();
+        let kb = 1.0 - b_rest / (bx * bx + by * by).sqrt();
+        let (fax, fay, fbx, fby) = (ka * ax, ka * ay, kb * bx, kb * by);
+        fx[j] = fax + fbx;
+        fy[j] = fay + fby;
+        // A node rotates with −r t', B node with +r t'.
+        let (dx, dy) = (R * (fbx - fax), R * (fby - fay));
+        tu[j] = dx * c[j + 1] - dy * p[j + 1] * s[j + 1];
+        tl[j] = -(dx * c[j] - dy * p[j] * s[j]);
+    }
+    let g = M * ladder.params.gravity;
+    let grad = &mut grad[..3 * n];
+    // Block n feels spring pair n − 1 from above and pair n from below.
+    grad[0] = -g - fx[0];
+    grad[1] = -fy[0];
+    grad[2] = tl[0];
+    for i in 1..m {
+        grad[3 * i] = -g + fx[i - 1] - fx[i];
+        grad[3 * i + 1] = fy[i - 1] - fy[i];
+        grad[3 * i + 2] = tu[i - 1] + tl[i];
+    }
+    grad[3 * m] = -g + fx[m - 1];
+    grad[3 * m + 1] = fy[m - 1];
+    grad[3 * m + 2] = tu[m - 1];
+}
+
 /// Centre, orientation t_n and its derivative dt_n/dθ_n of one block.
 #[derive(Clone, Copy)]
 struct BlockFrame {
@@ -189,7 +275,7 @@ struct BlockFrame {
 impl BlockFrame {
     #[inline(always)]
     fn new(q: &[f64], i: usize) -> Self {
-        let (s, c) = q[itheta(i)].sin_cos();
+        let (s, c) = super::trig::sin_cos(q[itheta(i)]);
         let p = parity(i);
         Self {
             x: q[ix(i)],
@@ -230,7 +316,10 @@ mod tests {
         let lengths = |q: &[f64]| {
             let (mut la, mut lb) = (vec![0.0; n - 1], vec![0.0; n - 1]);
             ladder.spring_lengths(q, &mut la, &mut lb);
-            la.iter().zip(&lb).flat_map(|(a, b)| [*a, *b]).collect::<Vec<_>>()
+            la.iter()
+                .zip(&lb)
+                .flat_map(|(a, b)| [*a, *b])
+                .collect::<Vec<_>>()
         };
         let h = 1e-6;
         for col in 0..q.len() {

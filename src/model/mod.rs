@@ -3,6 +3,7 @@
 
 pub mod ladder;
 pub mod params;
+pub mod trig;
 
 pub use ladder::Ladder;
 pub use params::{ParamError, Params};

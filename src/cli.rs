@@ -1,0 +1,258 @@
+//! Command-line definitions and dispatch (SPEC section 5). No physics and no
+//! drawing here: each command calls the library and prints its result.
+
+use crate::error::{Error, Result};
+use crate::model::Params;
+use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario};
+use clap::{Args, Parser, Subcommand};
+use serde::Serialize;
+use std::ffi::OsString;
+use std::path::PathBuf;
+use std::time::Instant;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "ladder",
+    version,
+    about = "Simulate the Jacob's-ladder toy and render the figures and movies of \
+             \"Topological antiqued mechanical toy\" (Wada, Mizobata, Ueno, Yoneda)",
+    allow_negative_numbers = true
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Simulate a kink (alpha > 0) or antikink (alpha < 0) driven from the top block
+    Simulate(SimulateArgs),
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct SimulateArgs {
+    /// Equilibrium angle alpha in degrees, 0 < |alpha| < 90; its sign picks the ground state
+    #[arg(long, default_value_t = 60.0, value_name = "DEG")]
+    pub alpha: f64,
+    /// Number of blocks N (>= 2)
+    #[arg(long, default_value_t = 10)]
+    pub n: usize,
+    /// Rest length b of the B springs, in units of the block length s
+    #[arg(long, default_value_t = 1.3)]
+    pub b: f64,
+    /// End time, in units of tau = sqrt(m/k)
+    #[arg(long, default_value_t = 4000.0, value_name = "T")]
+    pub t_end: f64,
+    /// Time T_d over which block 1 turns from alpha to -alpha
+    #[arg(long, default_value_t = sim::PAPER_DRIVE_TIME, value_name = "TD")]
+    pub drive_time: f64,
+    /// explicit-euler, symplectic-euler, verlet, rk4 or dopri5
+    #[arg(long, default_value = "symplectic-euler", value_name = "NAME")]
+    pub integrator: String,
+    /// Time step (first trial step for dopri5)
+    #[arg(long, default_value_t = 0.01)]
+    pub dt: f64,
+    /// Error tolerance of dopri5 (relative and absolute) [default: 1e-6]
+    #[arg(long, value_name = "R")]
+    pub rtol: Option<f64>,
+    /// Damping gamma (force -gamma*dX/dt, torque -gamma*r^2*dtheta/dt)
+    #[arg(long, default_value_t = 0.02, value_name = "G")]
+    pub gamma: f64,
+    /// Gravity G = mg/(ks)
+    #[arg(long, default_value_t = 2e-4, value_name = "G")]
+    pub gravity: f64,
+    /// Print one JSON object instead of a table
+    #[arg(long)]
+    pub json: bool,
+    /// Write theta_n(t) in degrees at the sample times to this CSV file
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+    /// Interval between CSV samples, in tau
+    #[arg(long, default_value_t = 10.0, value_name = "T")]
+    pub sample_every: f64,
+}
+
+/// Runs the program on `args`; returns the process exit code.
+pub fn main_with_args<I, T>(args: I) -> i32
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(e) => return clap_exit(e),
+    };
+    match run(cli) {
+        Ok(()) => 0,
+        Err(e) => {
+            eprintln!("ladder: {e}");
+            e.exit_code()
+        }
+    }
+}
+
+/// Help and version go to stdout with exit 0; a usage error is one line on
+/// stderr with exit 2.
+fn clap_exit(e: clap::Error) -> i32 {
+    use clap::error::ErrorKind;
+    match e.kind() {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            print!("{e}");
+            0
+        }
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            eprint!("{e}");
+            2
+        }
+        _ => {
+            let text = e.to_string();
+            let line = text.lines().next().unwrap_or("invalid arguments");
+            eprintln!("ladder: {}", line.trim_start_matches("error: "));
+            2
+        }
+    }
+}
+
+pub fn run(cli: Cli) -> Result<()> {
+    match cli.command {
+        Command::Simulate(args) => simulate(&args),
+    }
+}
+
+/// `simulate --json` (SPEC section 5).
+#[derive(Serialize, Debug)]
+pub struct SimulateReport {
+    pub alpha_deg: f64,
+    pub n: usize,
+    pub b: f64,
+    pub a: f64,
+    pub integrator: String,
+    pub dt: f64,
+    pub rtol: Option<f64>,
+    pub t_end: f64,
+    pub drive_time: f64,
+    pub steps: u64,
+    pub force_evals: u64,
+    pub wall_seconds: f64,
+    pub arrival_times: Vec<Option<f64>>,
+    pub final_theta_deg: Vec<f64>,
+}
+
+fn simulate(args: &SimulateArgs) -> Result<()> {
+    let base = Params::paper(60.0)?;
+    let params = Params {
+        gamma: args.gamma,
+        gravity: args.gravity,
+        ..base.with(args.n, args.b, args.alpha)?
+    }
+    .validated()?;
+    let kind: IntegratorKind = args.integrator.parse()?;
+    let rtol = match (kind, args.rtol) {
+        (IntegratorKind::Dopri5, r) => Some(r.unwrap_or(1e-6)),
+        (_, Some(_)) => {
+            return Err(Error::bad_input(
+                "--rtol applies only to --integrator dopri5",
+            ));
+        }
+        (_, None) => None,
+    };
+    let config = IntegratorConfig {
+        kind,
+        dt: args.dt,
+        rtol,
+    }
+    .validated()?;
+    let scenario = Scenario::single_flip(params, args.drive_time, args.t_end)?;
+    let samples = csv_samples(args)?;
+    if let Some(path) = &args.csv {
+        crate::output::check_writable(path)?;
+    }
+    let start = Instant::now();
+    let traj = sim::simulate(&scenario, &samples, &config)?;
+    let wall_seconds = start.elapsed().as_secs_f64();
+    if let Some(path) = &args.csv {
+        crate::output::write_atomic(path, csv_text(&traj).as_bytes())?;
+    }
+    let report = SimulateReport {
+        alpha_deg: args.alpha,
+        n: params.n,
+        b: params.b,
+        a: params.a(),
+        integrator: kind.name().to_string(),
+        dt: config.dt,
+        rtol,
+        t_end: args.t_end,
+        drive_time: args.drive_time,
+        steps: traj.steps,
+        force_evals: traj.force_evals,
+        wall_seconds,
+        arrival_times: traj.arrival_times.clone(),
+        final_theta_deg: traj.final_theta_deg(),
+    };
+    if args.json {
+        let text = serde_json::to_string(&report).map_err(|e| Error::failed(e.to_string()))?;
+        println!("{text}");
+    } else {
+        print!("{}", simulate_table(&report));
+    }
+    Ok(())
+}
+
+fn csv_samples(args: &SimulateArgs) -> Result<Vec<f64>> {
+    if args.csv.is_none() {
+        return Ok(Vec::new());
+    }
+    let every = args.sample_every;
+    if !(every.is_finite() && every > 0.0) {
+        return Err(Error::bad_input(format!(
+            "--sample-every must be a finite number > 0, got {every}"
+        )));
+    }
+    let count = (args.t_end / every).floor() as usize;
+    if count > 10_000_000 {
+        return Err(Error::bad_input(
+            "--sample-every is too small for this --t-end",
+        ));
+    }
+    Ok((0..=count).map(|k| k as f64 * every).collect())
+}
+
+fn csv_text(traj: &sim::Trajectory) -> String {
+    let n = traj.final_state.q.len() / 3;
+    let mut out = String::from("t");
+    for i in 1..=n {
+        out.push_str(&format!(",theta_{i}_deg"));
+    }
+    out.push('\n');
+    for (t, q) in traj.times.iter().zip(&traj.states) {
+        out.push_str(&format!("{t}"));
+        for th in sim::observables::angles_deg(q) {
+            out.push_str(&format!(",{th:.6}"));
+        }
+        out.push('\n');
+    }
+    out
+}
+
+fn simulate_table(r: &SimulateReport) -> String {
+    let mut s = format!(
+        "alpha = {}°, N = {}, b = {}, a = {:.6}; {} with {}; {} steps, {} force evaluations, {:.3} s\n",
+        r.alpha_deg,
+        r.n,
+        r.b,
+        r.a,
+        r.integrator,
+        r.rtol
+            .map_or(format!("dt = {}", r.dt), |x| format!("rtol = {x:e}")),
+        r.steps,
+        r.force_evals,
+        r.wall_seconds
+    );
+    s.push_str("block  arrival t/τ   final θ (deg)\n");
+    for (i, (t, th)) in r.arrival_times.iter().zip(&r.final_theta_deg).enumerate() {
+        let t = t.map_or("never".to_string(), |t| format!("{t:.2}"));
+        s.push_str(&format!("{:>5}  {:>11}   {:>13.3}\n", i + 1, t, th));
+    }
+    s
+}

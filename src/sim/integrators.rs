@@ -1,0 +1,548 @@
+//! Five time integrators behind one interface: explicit (forward) Euler,
+//! symplectic (semi-implicit) Euler, velocity Verlet, classical RK4 and
+//! adaptive Dormand–Prince 5(4).
+//!
+//! Each `advance` call takes one step from `t` towards `t_stop` and lands
+//! exactly on `t_stop` when the rest of the interval fits in one step; the
+//! run loop puts every sample time and every drive corner into `t_stop`.
+
+use super::rhs::{Rhs, State};
+use crate::error::{Error, Result};
+use std::fmt;
+use std::str::FromStr;
+
+/// The integrators of SPEC section 5, by their command-line names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum IntegratorKind {
+    ExplicitEuler,
+    SymplecticEuler,
+    Verlet,
+    Rk4,
+    Dopri5,
+}
+
+impl IntegratorKind {
+    pub const ALL: [Self; 5] = [
+        Self::ExplicitEuler,
+        Self::SymplecticEuler,
+        Self::Verlet,
+        Self::Rk4,
+        Self::Dopri5,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::ExplicitEuler => "explicit-euler",
+            Self::SymplecticEuler => "symplectic-euler",
+            Self::Verlet => "verlet",
+            Self::Rk4 => "rk4",
+            Self::Dopri5 => "dopri5",
+        }
+    }
+
+    /// Order of convergence of the global error.
+    pub fn order(self) -> u32 {
+        match self {
+            Self::ExplicitEuler | Self::SymplecticEuler => 1,
+            Self::Verlet => 2,
+            Self::Rk4 => 4,
+            Self::Dopri5 => 5,
+        }
+    }
+
+    /// Force evaluations per step (excluding dopri5's rejected steps).
+    pub fn evals_per_step(self) -> u32 {
+        match self {
+            Self::ExplicitEuler | Self::SymplecticEuler | Self::Verlet => 1,
+            Self::Rk4 => 4,
+            Self::Dopri5 => 6,
+        }
+    }
+}
+
+impl fmt::Display for IntegratorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for IntegratorKind {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|k| k.name() == s)
+            .ok_or_else(|| {
+                let names: Vec<_> = Self::ALL.iter().map(|k| k.name()).collect();
+                Error::bad_input(format!(
+                    "unknown integrator '{s}'; choose one of {}",
+                    names.join(", ")
+                ))
+            })
+    }
+}
+
+/// Integration parameters, kept apart from the model's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IntegratorConfig {
+    pub kind: IntegratorKind,
+    /// Step for the fixed-step schemes; first trial step for dopri5.
+    pub dt: f64,
+    /// Relative (and absolute) tolerance of dopri5; `None` runs dopri5 with
+    /// the fixed step `dt` and no error control (for convergence studies).
+    pub rtol: Option<f64>,
+}
+
+impl IntegratorConfig {
+    /// The paper's setting: symplectic Euler, dt = 0.01 (SPEC section 5 default).
+    pub fn paper() -> Self {
+        Self {
+            kind: IntegratorKind::SymplecticEuler,
+            dt: 0.01,
+            rtol: None,
+        }
+    }
+
+    pub fn fixed(kind: IntegratorKind, dt: f64) -> Self {
+        Self {
+            kind,
+            dt,
+            rtol: None,
+        }
+    }
+
+    pub fn adaptive(rtol: f64) -> Self {
+        Self {
+            kind: IntegratorKind::Dopri5,
+            dt: 0.1,
+            rtol: Some(rtol),
+        }
+    }
+
+    /// Rejects dt ≤ 0, NaN or infinite, and rtol outside (0, 1).
+    pub fn validated(self) -> Result<Self> {
+        if !(self.dt.is_finite() && self.dt > 0.0) {
+            return Err(Error::bad_input(format!(
+                "dt must be a finite number > 0, got {}",
+                self.dt
+            )));
+        }
+        if let Some(r) = self.rtol
+            && !(r.is_finite() && r > 0.0 && r < 1.0)
+        {
+            return Err(Error::bad_input(format!(
+                "rtol must be a number in (0, 1), got {r}"
+            )));
+        }
+        Ok(self)
+    }
+
+    /// A stepper with scratch buffers for a system of `dof` coordinates.
+    pub fn build(&self, dof: usize) -> Box<dyn Integrator> {
+        match self.kind {
+            IntegratorKind::Dopri5 => Box::new(Dopri5::new(dof, self.dt, self.rtol)),
+            kind => Box::new(FixedStep::new(kind, dof, self.dt)),
+        }
+    }
+
+    /// "dt = 0.01" or "rtol = 1e-6", for messages.
+    pub fn describe_step(&self) -> String {
+        match self.rtol {
+            Some(r) if self.kind == IntegratorKind::Dopri5 => format!("rtol = {r:e}"),
+            _ => format!("dt = {}", self.dt),
+        }
+    }
+}
+
+/// One step of a scheme. `st` satisfies the protocol's constraint at `t` on
+/// entry and at the returned time on exit.
+pub trait Integrator {
+    fn kind(&self) -> IntegratorKind;
+    /// Advances one step towards `t_stop` (> t); returns the new time.
+    fn advance(&mut self, rhs: &mut Rhs, st: &mut State, t: f64, t_stop: f64) -> Result<f64>;
+}
+
+/// Step size that divides [t, t_stop] into whole steps of at most `dt`.
+fn subdivide(t: f64, t_stop: f64, dt: f64) -> (f64, bool) {
+    let span = t_stop - t;
+    let n = (span / dt - 1e-6).ceil().max(1.0);
+    (span / n, n <= 1.0)
+}
+
+/// The subdivision of the current interval [t, t_stop]: equal steps `h`,
+/// `left` of them still to take. Computed once per interval.
+#[derive(Debug, Clone, Copy, Default)]
+struct Plan {
+    t_stop: f64,
+    h: f64,
+    left: u64,
+}
+
+impl Plan {
+    /// Next step towards `t_stop` from `t`: (h, is the last step).
+    fn next(&mut self, t: f64, t_stop: f64, dt: f64) -> (f64, bool) {
+        if self.left == 0 || self.t_stop != t_stop {
+            let span = t_stop - t;
+            let n = (span / dt - 1e-6).ceil().max(1.0);
+            *self = Self {
+                t_stop,
+                h: span / n,
+                left: n as u64,
+            };
+        }
+        self.left -= 1;
+        (self.h, self.left == 0)
+    }
+}
+
+/// Explicit Euler, symplectic Euler and velocity Verlet (one force evaluation
+/// per step each), and classical RK4 (four).
+pub struct FixedStep {
+    kind: IntegratorKind,
+    dt: f64,
+    acc: Vec<f64>,
+    /// Verlet: conservative acceleration at the current (q, t), if known.
+    cached_at: Option<f64>,
+    rk: Option<RungeKutta>,
+    /// 1/(1 + h c_k) for the step `damp_h` (symplectic Euler's implicit damping).
+    inv_damp: Vec<f64>,
+    damp_h: f64,
+    plan: Plan,
+}
+
+impl FixedStep {
+    pub fn new(kind: IntegratorKind, dof: usize, dt: f64) -> Self {
+        let rk = (kind == IntegratorKind::Rk4).then(|| RungeKutta::new(&RK4, dof));
+        Self {
+            kind,
+            dt,
+            acc: vec![0.0; dof],
+            cached_at: None,
+            rk,
+            inv_damp: vec![1.0; dof],
+            damp_h: 0.0,
+            plan: Plan::default(),
+        }
+    }
+
+    /// Forward Euler: q' = q + h v, v' = v + h a(q, v).
+    fn explicit_euler(&mut self, rhs: &mut Rhs, st: &mut State, h: f64) {
+        rhs.acceleration(&st.q, &st.v, &mut self.acc);
+        for k in 0..st.q.len() {
+            st.q[k] += h * st.v[k];
+            st.v[k] += h * self.acc[k];
+        }
+    }
+
+    /// Semi-implicit Euler, damping taken implicitly (unconditionally stable
+    /// for the damping term, still first order):
+    /// v' = (v + h F(q)/m) / (1 + h γ/m), q' = q + h v'.
+    fn symplectic_euler(&mut self, rhs: &mut Rhs, st: &mut State, h: f64) {
+        if h != self.damp_h {
+            for (inv, rate) in self.inv_damp.iter_mut().zip(&rhs.damping_rate) {
+                *inv = 1.0 / (1.0 + h * rate);
+            }
+            self.damp_h = h;
+        }
+        rhs.conservative(&st.q, &mut self.acc);
+        for k in 0..st.q.len() {
+            st.v[k] = (st.v[k] + h * self.acc[k]) * self.inv_damp[k];
+            st.q[k] += h * st.v[k];
+        }
+    }
+
+    /// Velocity Verlet with the damping split symmetrically: explicit in the
+    /// first half kick, implicit in the second (second order overall).
+    fn verlet(&mut self, rhs: &mut Rhs, st: &mut State, t: f64, h: f64) {
+        if self.cached_at != Some(t) {
+            rhs.conservative(&st.q, &mut self.acc);
+        }
+        let half = 0.5 * h;
+        for k in 0..st.q.len() {
+            st.v[k] += half * (self.acc[k] - rhs.damping_rate[k] * st.v[k]);
+            st.q[k] += h * st.v[k];
+        }
+        rhs.constrain(t + h, &mut st.q, &mut st.v);
+        rhs.conservative(&st.q, &mut self.acc);
+        for k in 0..st.q.len() {
+            st.v[k] = (st.v[k] + half * self.acc[k]) / (1.0 + half * rhs.damping_rate[k]);
+        }
+        self.cached_at = Some(t + h);
+    }
+}
+
+impl Integrator for FixedStep {
+    fn kind(&self) -> IntegratorKind {
+        self.kind
+    }
+
+    fn advance(&mut self, rhs: &mut Rhs, st: &mut State, t: f64, t_stop: f64) -> Result<f64> {
+        let (h, last) = self.plan.next(t, t_stop, self.dt);
+        match self.kind {
+            IntegratorKind::ExplicitEuler => self.explicit_euler(rhs, st, h),
+            IntegratorKind::SymplecticEuler => self.symplectic_euler(rhs, st, h),
+            IntegratorKind::Verlet => self.verlet(rhs, st, t, h),
+            _ => {
+                if let Some(rk) = self.rk.as_mut() {
+                    rk.step(rhs, st, t, h, t + h, false);
+                }
+            }
+        }
+        let t_new = if last { t_stop } else { t + h };
+        if self.kind == IntegratorKind::Verlet && last {
+            self.cached_at = Some(t_stop);
+        }
+        rhs.constrain(t_new, &mut st.q, &mut st.v);
+        Ok(t_new)
+    }
+}
+
+/// An explicit Runge–Kutta tableau (lower-triangular `a`, weights `b`,
+/// optional embedded weights `b_hat` for error control).
+pub struct Tableau {
+    pub c: &'static [f64],
+    pub a: &'static [&'static [f64]],
+    pub b: &'static [f64],
+    pub b_hat: Option<&'static [f64]>,
+}
+
+/// Classical fourth-order Runge–Kutta.
+pub const RK4: Tableau = Tableau {
+    c: &[0.0, 0.5, 0.5, 1.0],
+    a: &[&[], &[0.5], &[0.0, 0.5], &[0.0, 0.0, 1.0]],
+    b: &[1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0],
+    b_hat: None,
+};
+
+/// Dormand–Prince 5(4) (Hairer, Nørsett & Wanner, Table II.5.2): fifth-order
+/// solution, fourth-order embedded estimate, first-same-as-last.
+pub const DOPRI5: Tableau = Tableau {
+    c: &[0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0],
+    a: &[
+        &[],
+        &[1.0 / 5.0],
+        &[3.0 / 40.0, 9.0 / 40.0],
+        &[44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0],
+        &[
+            19372.0 / 6561.0,
+            -25360.0 / 2187.0,
+            64448.0 / 6561.0,
+            -212.0 / 729.0,
+        ],
+        &[
+            9017.0 / 3168.0,
+            -355.0 / 33.0,
+            46732.0 / 5247.0,
+            49.0 / 176.0,
+            -5103.0 / 18656.0,
+        ],
+        &[
+            35.0 / 384.0,
+            0.0,
+            500.0 / 1113.0,
+            125.0 / 192.0,
+            -2187.0 / 6784.0,
+            11.0 / 84.0,
+        ],
+    ],
+    b: &[
+        35.0 / 384.0,
+        0.0,
+        500.0 / 1113.0,
+        125.0 / 192.0,
+        -2187.0 / 6784.0,
+        11.0 / 84.0,
+        0.0,
+    ],
+    b_hat: Some(&[
+        5179.0 / 57600.0,
+        0.0,
+        7571.0 / 16695.0,
+        393.0 / 640.0,
+        -92097.0 / 339200.0,
+        187.0 / 2100.0,
+        1.0 / 40.0,
+    ]),
+};
+
+/// Explicit Runge–Kutta stepper on y = (q, v), y' = (v, a(q, v)), with
+/// block 1 constrained at every stage time.
+struct RungeKutta {
+    tableau: &'static Tableau,
+    /// Stage derivatives: kq[i] = q-rate, kv[i] = v-rate.
+    kq: Vec<Vec<f64>>,
+    kv: Vec<Vec<f64>>,
+    q: Vec<f64>,
+    v: Vec<f64>,
+    /// Error estimate of the last step (q then v), when the tableau has one.
+    err_q: Vec<f64>,
+    err_v: Vec<f64>,
+    /// Time at which stage 0 equals the derivative of the current state (FSAL).
+    fsal_at: Option<f64>,
+}
+
+impl RungeKutta {
+    fn new(tableau: &'static Tableau, dof: usize) -> Self {
+        let stages = tableau.b.len();
+        Self {
+            tableau,
+            kq: vec![vec![0.0; dof]; stages],
+            kv: vec![vec![0.0; dof]; stages],
+            q: vec![0.0; dof],
+            v: vec![0.0; dof],
+            err_q: vec![0.0; dof],
+            err_v: vec![0.0; dof],
+            fsal_at: None,
+        }
+    }
+
+    /// Evaluates stage `i` at (self.q, self.v), constrained at time `ts`.
+    fn stage(&mut self, rhs: &mut Rhs, i: usize, ts: f64) {
+        rhs.constrain(ts, &mut self.q, &mut self.v);
+        self.kq[i].copy_from_slice(&self.v);
+        rhs.acceleration(&self.q, &self.v, &mut self.kv[i]);
+    }
+
+    /// Computes all stages for a step of size `h` from (st, t) and leaves the
+    /// new state in (self.q, self.v) and the error estimate in err_q/err_v.
+    fn trial(&mut self, rhs: &mut Rhs, st: &State, t: f64, h: f64, fsal: bool) {
+        let tab = self.tableau;
+        if !(fsal && self.fsal_at == Some(t)) {
+            self.q.copy_from_slice(&st.q);
+            self.v.copy_from_slice(&st.v);
+            self.stage(rhs, 0, t);
+        }
+        for i in 1..tab.b.len() {
+            self.combine(st, h, tab.a[i]);
+            self.stage(rhs, i, t + tab.c[i] * h);
+        }
+        // With FSAL the last stage is evaluated at the new solution; without
+        // it, form the solution from the weights b.
+        if !fsal {
+            self.combine(st, h, tab.b);
+        }
+        if let Some(b_hat) = tab.b_hat {
+            let dof = self.q.len();
+            for k in 0..dof {
+                let (mut eq, mut ev) = (0.0, 0.0);
+                for (i, (bi, bh)) in tab.b.iter().zip(b_hat).enumerate() {
+                    eq += (bi - bh) * self.kq[i][k];
+                    ev += (bi - bh) * self.kv[i][k];
+                }
+                self.err_q[k] = h * eq;
+                self.err_v[k] = h * ev;
+            }
+        }
+    }
+
+    /// (self.q, self.v) = st + h Σ w_j k_j.
+    fn combine(&mut self, st: &State, h: f64, w: &[f64]) {
+        for k in 0..self.q.len() {
+            let (mut dq, mut dv) = (0.0, 0.0);
+            for (j, wj) in w.iter().enumerate() {
+                dq += wj * self.kq[j][k];
+                dv += wj * self.kv[j][k];
+            }
+            self.q[k] = st.q[k] + h * dq;
+            self.v[k] = st.v[k] + h * dv;
+        }
+    }
+
+    /// Accepts the trial: copies it into `st` and, with FSAL, moves the last
+    /// stage into stage 0 for the next step.
+    fn accept(&mut self, st: &mut State, t_new: f64, fsal: bool) {
+        st.q.copy_from_slice(&self.q);
+        st.v.copy_from_slice(&self.v);
+        if fsal {
+            let last = self.kq.len() - 1;
+            self.kq.swap(0, last);
+            self.kv.swap(0, last);
+            self.fsal_at = Some(t_new);
+        }
+    }
+
+    /// One step without error control, ending at `t_new` (= t + h up to rounding).
+    fn step(&mut self, rhs: &mut Rhs, st: &mut State, t: f64, h: f64, t_new: f64, fsal: bool) {
+        self.trial(rhs, st, t, h, fsal);
+        self.accept(st, t_new, fsal);
+    }
+}
+
+/// Adaptive Dormand–Prince 5(4) with the standard step-size controller
+/// (Hairer I, II.4): err = RMS of e_k / (rtol (1 + max(|y_k|, |y'_k|))) over
+/// the free coordinates; accept when err ≤ 1; h ← h · clamp(0.9 err^(−1/5), 0.2, 5).
+pub struct Dopri5 {
+    rk: RungeKutta,
+    h: f64,
+    rtol: Option<f64>,
+    pub rejected: u64,
+}
+
+/// Largest step dopri5 takes, in τ: keeps the Hermite interpolation of
+/// arrival times accurate between steps.
+pub const DOPRI5_MAX_STEP: f64 = 5.0;
+
+impl Dopri5 {
+    pub fn new(dof: usize, h0: f64, rtol: Option<f64>) -> Self {
+        Self {
+            rk: RungeKutta::new(&DOPRI5, dof),
+            h: h0,
+            rtol,
+            rejected: 0,
+        }
+    }
+
+    fn error_norm(&self, st: &State, rtol: f64) -> f64 {
+        let rk = &self.rk;
+        let mut sum = 0.0;
+        let n = st.q.len();
+        for k in 0..n {
+            let sq = rtol * (1.0 + st.q[k].abs().max(rk.q[k].abs()));
+            let sv = rtol * (1.0 + st.v[k].abs().max(rk.v[k].abs()));
+            sum += (rk.err_q[k] / sq).powi(2) + (rk.err_v[k] / sv).powi(2);
+        }
+        (sum / (2 * n) as f64).sqrt()
+    }
+}
+
+impl Integrator for Dopri5 {
+    fn kind(&self) -> IntegratorKind {
+        IntegratorKind::Dopri5
+    }
+
+    fn advance(&mut self, rhs: &mut Rhs, st: &mut State, t: f64, t_stop: f64) -> Result<f64> {
+        let Some(rtol) = self.rtol else {
+            let (h, last) = subdivide(t, t_stop, self.h);
+            let t_new = if last { t_stop } else { t + h };
+            self.rk.step(rhs, st, t, h, t_new, true);
+            rhs.constrain(t_new, &mut st.q, &mut st.v);
+            return Ok(t_new);
+        };
+        loop {
+            let span = t_stop - t;
+            let h = self.h.min(DOPRI5_MAX_STEP).min(span);
+            self.rk.trial(rhs, st, t, h, true);
+            let err = self.error_norm(st, rtol);
+            let factor = if err.is_finite() {
+                (0.9 * err.powf(-0.2)).clamp(0.2, 5.0)
+            } else {
+                0.2
+            };
+            if err <= 1.0 {
+                let t_new = if h >= span { t_stop } else { t + h };
+                self.rk.accept(st, t_new, true);
+                rhs.constrain(t_new, &mut st.q, &mut st.v);
+                self.h = h * factor;
+                return Ok(t_new);
+            }
+            self.rejected += 1;
+            self.rk.fsal_at = Some(t);
+            self.h = h * factor.min(1.0);
+            if self.h < 1e-10 * t.abs().max(1.0) {
+                return Err(Error::failed(format!(
+                    "dopri5 step size underflow at t = {t:.3} τ (rtol = {rtol:e})"
+                )));
+            }
+        }
+    }
+}

@@ -1,0 +1,109 @@
+//! The equations of motion as a right-hand side for the integrators
+//! (supplement, "Details of numerical simulation"):
+//! m Ẍ = −∂E/∂X − γẊ, I θ̈ = −∂E/∂θ − γ r² θ̇, with block 1 constrained by the
+//! protocol.
+
+use super::protocol::Protocol;
+use crate::model::Ladder;
+use crate::model::ladder::{ForceScratch, itheta, ix, iy};
+use crate::model::params::{M, R};
+
+/// Positions q and velocities v, both in the model's layout [X, Y, θ per block].
+#[derive(Debug, Clone, PartialEq)]
+pub struct State {
+    pub q: Vec<f64>,
+    pub v: Vec<f64>,
+}
+
+impl State {
+    /// At rest at `q`.
+    pub fn at_rest(q: Vec<f64>) -> Self {
+        let v = vec![0.0; q.len()];
+        Self { q, v }
+    }
+}
+
+/// Conservative accelerations −M⁻¹∇E and damping rates, with the protocol's
+/// constraint on block 1. Owns its scratch buffer: evaluating it never allocates.
+pub struct Rhs<'a> {
+    pub ladder: &'a Ladder,
+    protocol: &'a Protocol,
+    /// Where block 1's centre is clamped.
+    clamp: [f64; 2],
+    inv_mass: Vec<f64>,
+    /// Damping rate per coordinate: γ/m for X and Y, γ r²/I for θ.
+    pub damping_rate: Vec<f64>,
+    /// 1 for a free coordinate, 0 for one the protocol prescribes.
+    free: Vec<f64>,
+    grad: Vec<f64>,
+    scratch: ForceScratch,
+    /// Number of force (gradient) evaluations so far.
+    pub force_evals: u64,
+}
+
+impl<'a> Rhs<'a> {
+    /// `q0` gives the clamp position of block 1's centre.
+    pub fn new(ladder: &'a Ladder, protocol: &'a Protocol, q0: &[f64]) -> Self {
+        let p = &ladder.params;
+        let dof = p.dof();
+        let per_block = |x: f64, th: f64| (0..dof).map(move |k| if k % 3 == 2 { th } else { x });
+        let driven = matches!(protocol, Protocol::Driven(_));
+        let free = (0..dof)
+            .map(|k| if driven && k < 3 { 0.0 } else { 1.0 })
+            .collect();
+        Self {
+            ladder,
+            protocol,
+            clamp: [q0[ix(0)], q0[iy(0)]],
+            inv_mass: per_block(1.0 / M, 1.0 / p.inertia).collect(),
+            damping_rate: per_block(p.gamma / M, p.gamma * R * R / p.inertia).collect(),
+            free,
+            grad: vec![0.0; dof],
+            scratch: ForceScratch::new(p.n),
+            force_evals: 0,
+        }
+    }
+
+    pub fn dof(&self) -> usize {
+        self.grad.len()
+    }
+
+    /// Sets block 1's position and velocity to the protocol's values at `t`.
+    #[inline]
+    pub fn constrain(&self, t: f64, q: &mut [f64], v: &mut [f64]) {
+        if let Some(d) = self.protocol.drive() {
+            q[ix(0)] = self.clamp[0];
+            q[iy(0)] = self.clamp[1];
+            q[itheta(0)] = d.theta(t);
+            v[ix(0)] = 0.0;
+            v[iy(0)] = 0.0;
+            v[itheta(0)] = d.omega(t);
+        }
+    }
+
+    /// Conservative acceleration −M⁻¹ ∂E/∂q at `q` (already constrained);
+    /// zero for prescribed coordinates.
+    #[inline]
+    pub fn conservative(&mut self, q: &[f64], acc: &mut [f64]) {
+        self.force_evals += 1;
+        self.ladder
+            .gradient_with(q, &mut self.grad, &mut self.scratch);
+        for k in 0..acc.len() {
+            acc[k] = -self.grad[k] * self.inv_mass[k] * self.free[k];
+        }
+    }
+
+    /// Full acceleration including damping, −M⁻¹(∂E/∂q + Γ v).
+    #[inline]
+    pub fn acceleration(&mut self, q: &[f64], v: &[f64], acc: &mut [f64]) {
+        self.conservative(q, acc);
+        for k in 0..acc.len() {
+            acc[k] -= self.damping_rate[k] * v[k] * self.free[k];
+        }
+    }
+
+    /// Mechanical energy: kinetic plus potential.
+    pub fn mechanical_energy(&self, s: &State) -> f64 {
+        self.ladder.kinetic_energy(&s.v) + self.ladder.energy(&s.q)
+    }
+}

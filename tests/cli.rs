@@ -1,0 +1,125 @@
+//! The command-line contract (SPEC section 5): exit codes, one-line errors,
+//! `simulate --json` fields and the CSV file.
+
+use std::process::{Command, Output};
+
+fn ladder(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(args)
+        .output()
+        .expect("the ladder binary runs")
+}
+
+fn assert_bad_input(args: &[&str], needle: &str) {
+    let out = ladder(args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: stderr {stderr}");
+    assert_eq!(
+        stderr.lines().count(),
+        1,
+        "{args:?}: one line wanted, got {stderr}"
+    );
+    assert!(
+        stderr.contains(needle),
+        "{args:?}: '{needle}' not in {stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(out.stdout.is_empty(), "{args:?}: no result on bad input");
+}
+
+#[test]
+fn simulate_rejects_bad_input_with_one_line() {
+    let short = ["simulate", "--t-end", "10"];
+    let with = |extra: &[&'static str]| -> Vec<&'static str> {
+        short.iter().copied().chain(extra.iter().copied()).collect()
+    };
+    assert_bad_input(&with(&["--alpha", "95"]), "alpha");
+    assert_bad_input(&with(&["--alpha", "-90"]), "alpha");
+    assert_bad_input(&with(&["--alpha", "0"]), "alpha");
+    assert_bad_input(&with(&["--alpha", "NaN"]), "alpha");
+    assert_bad_input(&with(&["--n", "1"]), "N");
+    assert_bad_input(&with(&["--dt", "0"]), "dt");
+    assert_bad_input(&with(&["--dt", "-0.01"]), "dt");
+    assert_bad_input(&with(&["--dt", "inf"]), "dt");
+    assert_bad_input(&with(&["--b", "0"]), "b");
+    assert_bad_input(&with(&["--gamma", "-1"]), "gamma");
+    assert_bad_input(&["simulate", "--t-end", "-5"], "t_end");
+    assert_bad_input(&with(&["--integrator", "leapfrog"]), "unknown integrator");
+    assert_bad_input(&with(&["--alpha", "sixty"]), "--alpha");
+    assert_bad_input(
+        &with(&["--csv", "/nonexistent-dir/x.csv"]),
+        "/nonexistent-dir/x.csv",
+    );
+    assert_bad_input(&with(&["--rtol", "1e-6"]), "rtol");
+    assert_bad_input(&["frobnicate"], "frobnicate");
+}
+
+#[test]
+fn diverging_run_exits_1_with_time_and_hint() {
+    let out = ladder(&["simulate", "--integrator", "explicit-euler", "--json"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("diverged at t = ") && stderr.contains("hint"),
+        "{stderr}"
+    );
+    assert!(out.stdout.is_empty(), "a diverged run prints no result");
+}
+
+#[test]
+fn simulate_json_has_the_spec_fields() {
+    let out = ladder(&["simulate", "--alpha", "-60", "--t-end", "1200", "--json"]);
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    for key in [
+        "alpha_deg",
+        "n",
+        "integrator",
+        "dt",
+        "steps",
+        "force_evals",
+        "wall_seconds",
+        "arrival_times",
+        "final_theta_deg",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(v["alpha_deg"], -60.0);
+    assert_eq!(v["integrator"], "symplectic-euler");
+    assert_eq!(v["steps"], 120_000);
+    let arrivals = v["arrival_times"].as_array().unwrap();
+    assert_eq!(arrivals.len(), 10);
+    assert!((arrivals[0].as_f64().unwrap() - 500.0).abs() < 1e-6);
+    assert!(
+        arrivals[9].is_null(),
+        "block 10 has not flipped by t = 1200"
+    );
+}
+
+#[test]
+fn csv_has_theta_at_the_sample_times_and_is_reproducible() {
+    let dir = std::env::temp_dir().join(format!("ladder-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("theta.csv");
+    let p = path.to_str().unwrap();
+    let args = [
+        "simulate",
+        "--t-end",
+        "100",
+        "--sample-every",
+        "25",
+        "--csv",
+        p,
+    ];
+    assert_eq!(ladder(&args).status.code(), Some(0));
+    let first = std::fs::read_to_string(&path).unwrap();
+    let lines: Vec<&str> = first.lines().collect();
+    assert_eq!(lines[0].split(',').count(), 11);
+    assert_eq!(lines.len(), 6, "header + t = 0, 25, 50, 75, 100");
+    assert!(lines[1].starts_with("0,60.000000,"));
+    assert_eq!(ladder(&args).status.code(), Some(0));
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), first);
+    let leftovers = std::fs::read_dir(&dir).unwrap().count();
+    assert_eq!(leftovers, 1, "no temporary files left behind");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

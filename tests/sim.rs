@@ -1,0 +1,278 @@
+//! Simulation core: forces, ground states, energy decay, convergence orders
+//! and the paper's qualitative results (SPEC section 2).
+
+use jacobs_ladder::model::{Ladder, Params};
+use jacobs_ladder::sim::{
+    self, Drive, IntegratorConfig, IntegratorKind, Protocol, Scenario, State, Trajectory,
+};
+
+/// A small deterministic generator (64-bit LCG) for random configurations.
+struct Lcg(u64);
+impl Lcg {
+    fn uniform(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    }
+}
+
+fn perturbed(q: &[f64], rng: &mut Lcg, size: f64) -> Vec<f64> {
+    q.iter().map(|x| x + size * rng.uniform()).collect()
+}
+
+#[test]
+fn analytic_gradient_matches_finite_differences() {
+    let mut rng = Lcg(7);
+    for alpha in [60.0, -60.0, 86.0, -50.0, 20.0] {
+        let mut params = Params::paper(alpha).unwrap();
+        params.gravity = 0.3; // large enough that the gravity term is tested too
+        let ladder = Ladder::new(params);
+        for _ in 0..5 {
+            let q = perturbed(&ladder.ground_state(), &mut rng, 0.4);
+            let mut grad = vec![0.0; q.len()];
+            ladder.gradient(&q, &mut grad);
+            let h = 1e-5;
+            for k in 0..q.len() {
+                let (mut qp, mut qm) = (q.clone(), q.clone());
+                qp[k] += h;
+                qm[k] -= h;
+                let fd = (ladder.energy(&qp) - ladder.energy(&qm)) / (2.0 * h);
+                let scale = grad[k].abs().max(1e-3);
+                assert!(
+                    (fd - grad[k]).abs() / scale < 1e-6,
+                    "alpha {alpha}, coordinate {k}: analytic {} vs finite difference {fd}",
+                    grad[k]
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn ground_states_are_force_free_without_gravity() {
+    for alpha in [60.0, -60.0, 75.0, -75.0, 86.0, 5.0] {
+        let mut params = Params::paper(alpha).unwrap();
+        params.gravity = 0.0;
+        let ladder = Ladder::new(params);
+        let q = ladder.ground_state();
+        let mut grad = vec![1.0; q.len()];
+        ladder.gradient(&q, &mut grad);
+        let worst = grad.iter().fold(0.0f64, |m, g| m.max(g.abs()));
+        assert!(worst < 1e-13, "alpha {alpha}: largest force {worst:e}");
+    }
+}
+
+/// Free chain (no drive), damped, from a perturbed ground state with
+/// random velocities: the mechanical energy must never increase.
+fn energy_history(kind: IntegratorKind, dt: f64, rtol: Option<f64>) -> Vec<f64> {
+    let mut rng = Lcg(11);
+    let params = Params::paper(60.0).unwrap();
+    let ladder = Ladder::new(params);
+    let q = perturbed(&ladder.ground_state(), &mut rng, 0.05);
+    let v = (0..q.len()).map(|_| 0.05 * rng.uniform()).collect();
+    let scenario = Scenario {
+        ladder,
+        protocol: Protocol::Free,
+        initial: State { q, v },
+        t_end: 100.0,
+    };
+    let samples: Vec<f64> = (0..=1000).map(|k| k as f64 * 0.1).collect();
+    let config = IntegratorConfig { kind, dt, rtol };
+    let traj = sim::simulate(&scenario, &samples, &config).unwrap();
+    traj.states
+        .iter()
+        .zip(&traj.velocities)
+        .map(|(q, v)| ladder.kinetic_energy(v) + ladder.energy(q))
+        .collect()
+}
+
+#[test]
+fn damped_energy_never_increases() {
+    for (kind, dt, rtol) in [
+        (IntegratorKind::SymplecticEuler, 1e-4, None),
+        (IntegratorKind::Rk4, 0.01, None),
+        (IntegratorKind::Dopri5, 0.01, Some(1e-10)),
+    ] {
+        let e = energy_history(kind, dt, rtol);
+        assert!(
+            e[0] - e[e.len() - 1] > 1e-4,
+            "{kind}: energy hardly decayed"
+        );
+        for w in e.windows(2) {
+            assert!(
+                w[1] <= w[0] + 1e-9,
+                "{kind}: energy rose from {} to {}",
+                w[0],
+                w[1]
+            );
+        }
+    }
+}
+
+/// A smooth short run (no drive corner inside): the kink scene's first 10 τ,
+/// with random initial velocities so that every mode moves.
+fn smooth_run(kind: IntegratorKind, dt: f64) -> Vec<f64> {
+    let mut rng = Lcg(3);
+    let params = Params::paper(60.0).unwrap();
+    let mut scenario = Scenario::single_flip(params, 5.0, 4.0).unwrap();
+    for v in scenario.initial.v.iter_mut().skip(3) {
+        *v = 0.1 * rng.uniform();
+    }
+    let config = IntegratorConfig::fixed(kind, dt);
+    let t = sim::simulate(&scenario, &[], &config).unwrap();
+    t.final_state
+        .q
+        .iter()
+        .chain(&t.final_state.v)
+        .copied()
+        .collect()
+}
+
+fn max_diff(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).fold(0.0, |m, (x, y)| m.max((x - y).abs()))
+}
+
+#[test]
+fn integrators_converge_at_their_order() {
+    let reference = smooth_run(IntegratorKind::Dopri5, 1e-3);
+    for kind in IntegratorKind::ALL {
+        let coarse = match kind.order() {
+            1 => 0.01,
+            2 => 0.02,
+            _ => 0.05,
+        };
+        let e1 = max_diff(&smooth_run(kind, coarse), &reference);
+        let e2 = max_diff(&smooth_run(kind, coarse / 2.0), &reference);
+        let order = (e1 / e2).log2();
+        let want = kind.order() as f64;
+        eprintln!("{kind}: measured order {order:.2}");
+        assert!(
+            (order - want).abs() < 0.3,
+            "{kind}: measured order {order:.2} (errors {e1:e}, {e2:e}), expected {want}"
+        );
+    }
+}
+
+fn kink_run(alpha: f64) -> Trajectory {
+    let params = Params::paper(alpha).unwrap();
+    let scenario = Scenario::single_flip(params, sim::PAPER_DRIVE_TIME, 4000.0).unwrap();
+    sim::simulate(&scenario, &[], &IntegratorConfig::paper()).unwrap()
+}
+
+/// Blocks per τ from a least-squares line through t_n for blocks 3..=8.
+fn speed(t: &Trajectory) -> f64 {
+    let pts: Vec<(f64, f64)> = (2..8)
+        .map(|i| (i as f64, t.arrival_times[i].unwrap()))
+        .collect();
+    let n = pts.len() as f64;
+    let (mx, my) = pts
+        .iter()
+        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    sxx / sxy
+}
+
+#[test]
+fn kink_at_60_degrees_reaches_the_bottom() {
+    let t = kink_run(60.0);
+    assert!(
+        t.arrival_times.iter().all(Option::is_some),
+        "{:?}",
+        t.arrival_times
+    );
+    let arrivals: Vec<f64> = t.arrival_times.iter().map(|a| a.unwrap()).collect();
+    assert!((arrivals[0] - 500.0).abs() < 1e-6, "t_1 = T_d/2");
+    assert!(
+        arrivals.windows(2).all(|w| w[1] > w[0]),
+        "top to bottom: {arrivals:?}"
+    );
+    let theta = t.final_theta_deg();
+    for (n, th) in theta.iter().enumerate().take(9) {
+        assert!((th + 60.0).abs() < 5.0, "block {} ends at {th}°", n + 1);
+    }
+}
+
+#[test]
+fn antikink_at_60_degrees_is_slower_and_spares_the_last_block() {
+    let kink = kink_run(60.0);
+    let anti = kink_run(-60.0);
+    for n in 2..9 {
+        let (k, a) = (
+            kink.arrival_times[n].unwrap(),
+            anti.arrival_times[n].unwrap(),
+        );
+        assert!(
+            a > k,
+            "block {}: antikink {a} not later than kink {k}",
+            n + 1
+        );
+    }
+    assert!(speed(&anti) < 0.8 * speed(&kink));
+    let theta = anti.final_theta_deg();
+    for (n, th) in theta.iter().enumerate().take(8) {
+        assert!(
+            (th - 60.0).abs() < 5.0,
+            "block {} ends at {th}°, not +60°",
+            n + 1
+        );
+    }
+    let last = theta[9];
+    assert!(
+        anti.arrival_times[9].is_none() && (last - 60.0).abs() > 20.0,
+        "block 10: {last}°"
+    );
+}
+
+#[test]
+fn at_50_degrees_kink_runs_but_antikink_is_pinned() {
+    let kink = kink_run(50.0);
+    assert!(kink.arrival_times.iter().all(Option::is_some));
+    let anti = kink_run(-50.0);
+    for n in 2..10 {
+        assert!(anti.arrival_times[n].is_none(), "block {} flipped", n + 1);
+    }
+}
+
+#[test]
+fn nearly_symmetric_ladder_has_equal_speeds() {
+    let (k, a) = (speed(&kink_run(86.0)), speed(&kink_run(-86.0)));
+    assert!((k - a).abs() / k < 0.05, "kink {k}, antikink {a} blocks/τ");
+    assert!(kink_run(-86.0).arrival_times.iter().all(Option::is_some));
+}
+
+#[test]
+fn explicit_euler_diverges_at_the_papers_step() {
+    let params = Params::paper(60.0).unwrap();
+    let scenario = Scenario::single_flip(params, sim::PAPER_DRIVE_TIME, 4000.0).unwrap();
+    let config = IntegratorConfig::fixed(IntegratorKind::ExplicitEuler, 0.01);
+    let err = sim::simulate(&scenario, &[], &config).unwrap_err();
+    assert_eq!(err.exit_code(), 1);
+    let msg = err.to_string();
+    assert!(msg.starts_with("explicit-euler diverged at t = "), "{msg}");
+    assert!(msg.contains("dt = 0.01") && msg.contains("hint"), "{msg}");
+    // At a tenth of the step it is stable and agrees with symplectic Euler.
+    let fine = IntegratorConfig::fixed(IntegratorKind::ExplicitEuler, 0.001);
+    let t = sim::simulate(&scenario, &[], &fine).unwrap();
+    let reference = kink_run(60.0);
+    for (a, b) in t.arrival_times.iter().zip(&reference.arrival_times) {
+        assert!((a.unwrap() - b.unwrap()).abs() < 2.0);
+    }
+}
+
+#[test]
+fn dopri5_lands_on_samples_and_corners() {
+    let params = Params::paper(86.0).unwrap();
+    let drive = Drive::two_flips(params.alpha, 100.0, 150.0).unwrap();
+    let scenario = Scenario::with_drive(params, drive, 300.0).unwrap();
+    let samples = [0.0, 33.3, 100.0, 250.0, 300.0];
+    let t = sim::simulate(&scenario, &samples, &IntegratorConfig::adaptive(1e-8)).unwrap();
+    assert_eq!(t.times, samples);
+    // Block 1 follows the drive exactly at every sample.
+    for (time, q) in t.times.iter().zip(&t.states) {
+        let want = scenario.protocol.drive().unwrap().theta(*time);
+        assert!((q[2] - want).abs() < 1e-12, "t = {time}");
+    }
+}
