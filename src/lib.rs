@@ -9,6 +9,7 @@ pub mod error;
 pub mod model;
 
 pub use error::{Error, Result};
+pub mod bench;
 pub mod cli;
 pub mod output;
 pub mod sim;

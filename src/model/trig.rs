@@ -59,7 +59,7 @@ pub fn sin_cos_slice(x: &[f64], s: &mut [f64], c: &mut [f64]) {
     let n = x.len().min(s.len()).min(c.len());
     let (x, s, c) = (&x[..n], &mut s[..n], &mut c[..n]);
     for i in 0..n {
-        let k = (x[i] * FRAC_2_PI).round();
+        let k = (x[i] * FRAC_2_PI).round_ties_even();
         let r = ((x[i] - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
         let z = r * r;
         let ps = r + r * z * (S1 + z * (S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)))));

@@ -469,8 +469,8 @@ impl RungeKutta {
 }
 
 /// Adaptive Dormand–Prince 5(4) with the standard step-size controller
-/// (Hairer I, II.4): err = RMS of e_k / (rtol (1 + max(|y_k|, |y'_k|))) over
-/// the free coordinates; accept when err ≤ 1; h ← h · clamp(0.9 err^(−1/5), 0.2, 5).
+/// (Hairer I, II.4): err = RMS of e_k / (rtol (ATOL_SCALE + max(|y_k|, |y'_k|)))
+/// over all coordinates; accept when err ≤ 1; h ← h · clamp(0.9 err^(−1/5), 0.2, 5).
 pub struct Dopri5 {
     rk: RungeKutta,
     h: f64,
@@ -481,6 +481,11 @@ pub struct Dopri5 {
 /// Largest step dopri5 takes, in τ: keeps the Hermite interpolation of
 /// arrival times accurate between steps.
 pub const DOPRI5_MAX_STEP: f64 = 5.0;
+
+/// Absolute part of dopri5's error scale, relative to rtol: velocities in
+/// the scenes are of order 1e-3 s/τ, so an absolute tolerance equal to rtol
+/// would leave them uncontrolled.
+pub const ATOL_SCALE: f64 = 1e-3;
 
 impl Dopri5 {
     pub fn new(dof: usize, h0: f64, rtol: Option<f64>) -> Self {
@@ -497,8 +502,8 @@ impl Dopri5 {
         let mut sum = 0.0;
         let n = st.q.len();
         for k in 0..n {
-            let sq = rtol * (1.0 + st.q[k].abs().max(rk.q[k].abs()));
-            let sv = rtol * (1.0 + st.v[k].abs().max(rk.v[k].abs()));
+            let sq = rtol * (ATOL_SCALE + st.q[k].abs().max(rk.q[k].abs()));
+            let sv = rtol * (ATOL_SCALE + st.v[k].abs().max(rk.v[k].abs()));
             sum += (rk.err_q[k] / sq).powi(2) + (rk.err_v[k] / sv).powi(2);
         }
         (sum / (2 * n) as f64).sqrt()

@@ -1,0 +1,372 @@
+//! Speed against accuracy: work-precision sweeps and stability bisection
+//! (SPEC section 5, `bench work-precision` and `bench stability`).
+//!
+//! Every error is measured against a reference computed by the program
+//! itself at a much tighter setting (dopri5, rtol = 1e-11).
+
+use crate::error::{Error, Result};
+use crate::model::Params;
+use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Trajectory};
+use nalgebra::Complex;
+use serde::Serialize;
+use std::time::Instant;
+
+/// Tolerance of the reference solution.
+pub const REFERENCE_RTOL: f64 = 1e-11;
+
+/// A scene of the work-precision study: the paper's single flip at `alpha_deg`.
+#[derive(Debug, Clone)]
+pub struct BenchScene {
+    pub name: String,
+    pub alpha_deg: f64,
+    pub params: Params,
+    pub drive_time: f64,
+    pub t_end: f64,
+    /// Times at which θ is compared with the reference.
+    pub frames: Vec<f64>,
+}
+
+impl BenchScene {
+    /// The paper's kink (α > 0) or antikink (α < 0) scene, N = 10, b = 1.3,
+    /// T_d = 1000, t_end = 4000, compared every 20 τ.
+    pub fn paper(alpha_deg: f64) -> Result<Self> {
+        let params = Params::paper(alpha_deg)?;
+        Self::new(params, sim::PAPER_DRIVE_TIME, 4000.0, 200)
+    }
+
+    pub fn new(params: Params, drive_time: f64, t_end: f64, frames: usize) -> Result<Self> {
+        let alpha_deg = params.alpha_deg();
+        let kind = if alpha_deg > 0.0 { "kink" } else { "antikink" };
+        Ok(Self {
+            name: format!("{kind} α = {alpha_deg}°"),
+            alpha_deg,
+            params,
+            drive_time,
+            t_end,
+            frames: (0..=frames)
+                .map(|k| t_end * k as f64 / frames as f64)
+                .collect(),
+        })
+    }
+
+    pub fn scenario(&self) -> Result<Scenario> {
+        Scenario::single_flip(self.params, self.drive_time, self.t_end)
+    }
+
+    /// Runs the scene with `config`, sampled at the frames.
+    pub fn run(&self, config: &IntegratorConfig) -> Result<Trajectory> {
+        sim::simulate(&self.scenario()?, &self.frames, config)
+    }
+
+    /// The reference solution (dopri5 at `rtol`).
+    pub fn reference(&self, rtol: f64) -> Result<Trajectory> {
+        self.run(&IntegratorConfig::adaptive(rtol))
+    }
+}
+
+/// Largest |θ_n(t) − θ_ref,n(t)| over the frames (radians).
+pub fn theta_error(run: &Trajectory, reference: &Trajectory) -> f64 {
+    run.states
+        .iter()
+        .zip(&reference.states)
+        .flat_map(|(a, b)| a.iter().zip(b).skip(2).step_by(3))
+        .fold(0.0, |m, (x, y)| m.max((x - y).abs()))
+}
+
+/// Largest |t_n − t_ref,n| (τ); `None` (infinite) when a block flips in one
+/// run and not in the other.
+pub fn arrival_error(run: &Trajectory, reference: &Trajectory) -> Option<f64> {
+    let mut worst: f64 = 0.0;
+    for (a, b) in run.arrival_times.iter().zip(&reference.arrival_times) {
+        match (a, b) {
+            (Some(a), Some(b)) => worst = worst.max((a - b).abs()),
+            (None, None) => {}
+            _ => return None,
+        }
+    }
+    Some(worst)
+}
+
+/// One point of a work-precision sweep.
+#[derive(Debug, Clone, Serialize)]
+pub struct Point {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dt: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rtol: Option<f64>,
+    pub force_evals: u64,
+    pub wall_seconds: f64,
+    pub theta_error: Option<f64>,
+    pub arrival_error: Option<f64>,
+    pub diverged: bool,
+}
+
+/// All points of one integrator, and its order measured from them.
+#[derive(Debug, Clone, Serialize)]
+pub struct Sweep {
+    pub name: String,
+    pub measured_order: Option<f64>,
+    pub points: Vec<Point>,
+}
+
+/// The step sizes (or tolerances, for dopri5) swept for each integrator:
+/// from well converged to past the stability limit.
+pub fn default_steps(kind: IntegratorKind) -> Vec<f64> {
+    match kind {
+        IntegratorKind::ExplicitEuler => vec![0.0005, 0.001, 0.002, 0.005, 0.01],
+        IntegratorKind::SymplecticEuler => vec![0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.4],
+        IntegratorKind::Verlet => vec![0.01, 0.02, 0.05, 0.1, 0.2, 0.3, 0.4, 0.6],
+        IntegratorKind::Rk4 => vec![0.05, 0.1, 0.2, 0.3, 0.4, 0.6, 0.8],
+        IntegratorKind::Dopri5 => vec![1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10],
+    }
+}
+
+/// The configuration of `kind` at sweep value `x` (dt, or rtol for dopri5).
+pub fn config_at(kind: IntegratorKind, x: f64) -> IntegratorConfig {
+    match kind {
+        IntegratorKind::Dopri5 => IntegratorConfig::adaptive(x),
+        _ => IntegratorConfig::fixed(kind, x),
+    }
+}
+
+/// Runs `kind` at every value of `steps` on `scene`, `repeats` times each
+/// (the median wall time is kept), and measures the errors against `reference`.
+pub fn sweep(
+    scene: &BenchScene,
+    reference: &Trajectory,
+    kind: IntegratorKind,
+    steps: &[f64],
+    repeats: usize,
+) -> Result<Sweep> {
+    let mut points = Vec::with_capacity(steps.len());
+    for &x in steps {
+        points.push(measure(scene, reference, kind, x, repeats)?);
+    }
+    Ok(Sweep {
+        name: kind.name().to_string(),
+        measured_order: measured_order(&points),
+        points,
+    })
+}
+
+fn measure(
+    scene: &BenchScene,
+    reference: &Trajectory,
+    kind: IntegratorKind,
+    x: f64,
+    repeats: usize,
+) -> Result<Point> {
+    let config = config_at(kind, x);
+    let (dt, rtol) = match kind {
+        IntegratorKind::Dopri5 => (None, Some(x)),
+        _ => (Some(x), None),
+    };
+    let mut times = Vec::with_capacity(repeats.max(1));
+    let mut outcome = None;
+    for _ in 0..repeats.max(1) {
+        let start = Instant::now();
+        let run = scene.run(&config);
+        times.push(start.elapsed().as_secs_f64());
+        match run {
+            Err(Error::Failed(_)) => {
+                outcome = None;
+                break;
+            }
+            Err(e) => return Err(e),
+            Ok(t) => outcome = Some(t),
+        }
+    }
+    times.sort_by(f64::total_cmp);
+    let wall_seconds = times[times.len() / 2];
+    Ok(match outcome {
+        Some(run) => Point {
+            dt,
+            rtol,
+            force_evals: run.force_evals,
+            wall_seconds,
+            theta_error: Some(theta_error(&run, reference)),
+            arrival_error: arrival_error(&run, reference),
+            diverged: false,
+        },
+        None => Point {
+            dt,
+            rtol,
+            force_evals: 0,
+            wall_seconds,
+            theta_error: None,
+            arrival_error: None,
+            diverged: true,
+        },
+    })
+}
+
+/// Order p from the slope of log(θ error) against log(force evaluations)
+/// (error ∝ evals^(−p)), over converged points whose error lies between
+/// 1e-9 (above the reference's own error) and 1e-2 (asymptotic regime).
+pub fn measured_order(points: &[Point]) -> Option<f64> {
+    let pts: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|p| !p.diverged)
+        .filter_map(|p| p.theta_error.map(|e| (p.force_evals as f64, e)))
+        .filter(|(_, e)| *e > 1e-9 && *e < 1e-2)
+        .map(|(n, e)| (n.ln(), e.ln()))
+        .collect();
+    if pts.len() < 2 {
+        return None;
+    }
+    Some(-slope(&pts))
+}
+
+/// Least-squares slope of y against x.
+pub fn slope(pts: &[(f64, f64)]) -> f64 {
+    let n = pts.len() as f64;
+    let (mx, my) = pts
+        .iter()
+        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    sxy / sxx
+}
+
+/// The cheapest point (fewest force evaluations) whose arrival times all lie
+/// within `tolerance` τ of the reference.
+pub fn cheapest_within(sweeps: &[Sweep], tolerance: f64) -> Option<(&str, &Point)> {
+    sweeps
+        .iter()
+        .flat_map(|s| s.points.iter().map(move |p| (s.name.as_str(), p)))
+        .filter(|(_, p)| p.arrival_error.is_some_and(|e| e <= tolerance))
+        .min_by_key(|(_, p)| p.force_evals)
+}
+
+/// Linear stability bound of each scheme for a mode of frequency ω and
+/// damping rate c, λ = −c/2 ± i sqrt(ω² − c²/4) (SPEC section 5): 2/ω for
+/// symplectic Euler and Verlet, 2√2/ω for RK4 (the undamped bounds the spec
+/// quotes), and for explicit Euler and fixed-step dopri5 the damped bound,
+/// the first h at which |R(hλ)| exceeds 1 (c/ω² for explicit Euler). Both of
+/// those are unstable on the imaginary axis, so only damping gives a bound.
+pub fn predicted_dt(kind: IntegratorKind, omega: f64, damping: f64) -> f64 {
+    match kind {
+        IntegratorKind::SymplecticEuler | IntegratorKind::Verlet => 2.0 / omega,
+        IntegratorKind::Rk4 => 2.0 * std::f64::consts::SQRT_2 / omega,
+        IntegratorKind::ExplicitEuler | IntegratorKind::Dopri5 => {
+            let lambda = Complex::new(
+                -0.5 * damping,
+                (omega * omega - 0.25 * damping * damping).max(0.0).sqrt(),
+            );
+            damped_bound(kind, lambda)
+        }
+    }
+}
+
+/// Stability function R(z) of the explicit one-step schemes: 1 + z for
+/// explicit Euler, the Taylor polynomial of degree 4 for RK4, and
+/// Σ_{k≤5} z^k/k! + z⁶/600 for Dormand–Prince 5.
+pub fn stability_function(kind: IntegratorKind, z: Complex<f64>) -> Complex<f64> {
+    let coeffs: &[f64] = match kind {
+        IntegratorKind::ExplicitEuler => &[1.0, 1.0],
+        IntegratorKind::Dopri5 => &[
+            1.0,
+            1.0,
+            0.5,
+            1.0 / 6.0,
+            1.0 / 24.0,
+            1.0 / 120.0,
+            1.0 / 600.0,
+        ],
+        _ => &[1.0, 1.0, 0.5, 1.0 / 6.0, 1.0 / 24.0],
+    };
+    coeffs
+        .iter()
+        .rev()
+        .fold(Complex::new(0.0, 0.0), |acc, c| acc * z + c)
+}
+
+/// First h > 0 at which |R(hλ)| > 1, by a scan in steps of 0.1 % and bisection.
+fn damped_bound(kind: IntegratorKind, lambda: Complex<f64>) -> f64 {
+    let grows = |h: f64| stability_function(kind, lambda * h).norm() > 1.0;
+    let mut h = 1e-6 / lambda.norm();
+    while !grows(h * 1.001) {
+        h *= 1.001;
+        if h * lambda.norm() > 100.0 {
+            return f64::INFINITY;
+        }
+    }
+    let (mut lo, mut hi) = (h, h * 1.001);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if grows(mid) { hi = mid } else { lo = mid }
+    }
+    lo
+}
+
+/// Whether the scene stays bounded with `kind` at fixed step `dt`
+/// (dopri5 is run at fixed step here).
+pub fn is_stable(scene: &BenchScene, kind: IntegratorKind, dt: f64) -> Result<bool> {
+    let config = IntegratorConfig::fixed(kind, dt);
+    match sim::simulate(&scene.scenario()?, &[], &config) {
+        Ok(_) => Ok(true),
+        Err(Error::Failed(_)) => Ok(false),
+        Err(e) => Err(e),
+    }
+}
+
+/// The largest stable dt, by geometric bisection from a bracket around
+/// `guess`, to a relative precision `rel`.
+pub fn critical_dt(scene: &BenchScene, kind: IntegratorKind, guess: f64, rel: f64) -> Result<f64> {
+    let (mut lo, mut hi) = (guess, guess);
+    while !is_stable(scene, kind, lo)? {
+        lo /= 2.0;
+        if lo < 1e-6 {
+            return Err(Error::failed(format!("{kind}: no stable dt above 1e-6")));
+        }
+    }
+    hi = hi.max(lo * 2.0);
+    while is_stable(scene, kind, hi)? {
+        hi *= 2.0;
+        if hi > scene.t_end {
+            return Ok(hi);
+        }
+    }
+    while hi / lo > 1.0 + rel {
+        let mid = (lo * hi).sqrt();
+        if is_stable(scene, kind, mid)? {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(lo)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn damped_bounds_match_closed_forms() {
+        let (omega, c) = (3.0, 0.02);
+        let euler = predicted_dt(IntegratorKind::ExplicitEuler, omega, c);
+        assert!(
+            (euler - c / (omega * omega)).abs() / euler < 1e-6,
+            "{euler}"
+        );
+        // RK4 with damping is stable a little beyond its undamped bound 2√2/ω.
+        let lambda = Complex::new(-c / 2.0, (omega * omega - c * c / 4.0).sqrt());
+        let rk4 = damped_bound(IntegratorKind::Rk4, lambda);
+        let undamped = predicted_dt(IntegratorKind::Rk4, omega, c);
+        assert!(
+            rk4 > undamped && rk4 < 1.05 * undamped,
+            "{rk4} vs {undamped}"
+        );
+        // Dormand–Prince 5 is (barely) unstable on the imaginary axis beyond
+        // ωh ≈ 1: with light damping its bound sits a little above that.
+        let dp5 = predicted_dt(IntegratorKind::Dopri5, omega, c) * omega;
+        assert!(dp5 > 1.0 && dp5 < 3.5, "{dp5}");
+    }
+
+    #[test]
+    fn slope_of_a_power_law() {
+        let pts: Vec<(f64, f64)> = (1..6).map(|k| (k as f64, -3.0 * k as f64 + 1.0)).collect();
+        assert!((slope(&pts) + 3.0).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,53 @@
+//! Work-precision and stability machinery (issue: speed against accuracy).
+
+use jacobs_ladder::bench::{self, BenchScene};
+use jacobs_ladder::model::Params;
+use jacobs_ladder::sim::IntegratorKind;
+
+/// A tiny scene: N = 4, a short drive, 60 τ.
+fn tiny() -> BenchScene {
+    let params = Params::paper(60.0).unwrap().with(4, 1.3, 60.0).unwrap();
+    BenchScene::new(params, 20.0, 60.0, 30).unwrap()
+}
+
+#[test]
+fn reference_is_converged() {
+    let scene = tiny();
+    let r1 = scene.reference(bench::REFERENCE_RTOL).unwrap();
+    let r2 = scene.reference(bench::REFERENCE_RTOL / 2.0).unwrap();
+    let change = bench::theta_error(&r1, &r2);
+    assert!(change < 1e-8, "halving the tolerance moved θ by {change:e}");
+}
+
+#[test]
+fn sweep_error_falls_monotonically_for_convergent_methods() {
+    let scene = tiny();
+    let reference = scene.reference(bench::REFERENCE_RTOL).unwrap();
+    for (kind, steps) in [
+        (IntegratorKind::SymplecticEuler, vec![0.2, 0.1, 0.05, 0.025]),
+        (IntegratorKind::Verlet, vec![0.2, 0.1, 0.05, 0.025]),
+        (IntegratorKind::Rk4, vec![0.4, 0.2, 0.1, 0.05]),
+        (IntegratorKind::Dopri5, vec![1e-4, 1e-6, 1e-8]),
+    ] {
+        let sweep = bench::sweep(&scene, &reference, kind, &steps, 1).unwrap();
+        let errors: Vec<f64> = sweep
+            .points
+            .iter()
+            .map(|p| p.theta_error.unwrap())
+            .collect();
+        assert!(
+            errors.windows(2).all(|w| w[1] < w[0]),
+            "{kind}: errors {errors:?} not decreasing"
+        );
+        let evals: Vec<u64> = sweep.points.iter().map(|p| p.force_evals).collect();
+        assert!(evals.windows(2).all(|w| w[1] > w[0]), "{kind}: {evals:?}");
+        if kind != IntegratorKind::Dopri5 {
+            let order = sweep.measured_order.unwrap();
+            let want = kind.order() as f64;
+            assert!(
+                (order - want).abs() < 0.35,
+                "{kind}: order {order}, want {want}"
+            );
+        }
+    }
+}
