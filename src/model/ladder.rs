@@ -185,11 +185,15 @@ pub struct ForceScratch {
 }
 
 impl ForceScratch {
+    /// Scratch for N blocks. Arrays are padded to a multiple of four plus
+    /// four, so that every loop runs in whole SIMD lanes; the padding blocks
+    /// sit far apart at θ = 0 and never enter the result.
     pub fn new(n: usize) -> Self {
-        let z = vec![0.0; n];
+        let len = padded(n) + 4;
+        let z = vec![0.0; len];
         Self {
-            parity: (0..n).map(parity).collect(),
-            x: z.clone(),
+            parity: (0..len).map(parity).collect(),
+            x: (0..len).map(|i| 10.0 * i as f64).collect(),
             y: z.clone(),
             theta: z.clone(),
             sin: z.clone(),
@@ -200,6 +204,11 @@ impl ForceScratch {
             torque_upper: z,
         }
     }
+}
+
+/// `n` rounded up to a multiple of four.
+const fn padded(n: usize) -> usize {
+    n.div_ceil(4) * 4
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -220,18 +229,20 @@ fn gradient_body(ladder: &Ladder, q: &[f64], grad: &mut [f64], w: &mut ForceScra
         w.y[i] = q[3 * i + 1];
         w.theta[i] = q[3 * i + 2];
     }
-    super::trig::sin_cos_slice(&w.theta, &mut w.sin, &mut w.cos);
+    // Whole lanes: sin/cos of padded(n) angles, padded(m) spring pairs.
+    let (np, mp) = (padded(n), padded(m));
+    super::trig::sin_cos_slice(&w.theta[..np], &mut w.sin[..np], &mut w.cos[..np]);
     let (a_rest, b_rest) = (ladder.a, ladder.params.b);
     let (x, y, s, c, p) = (
-        &w.x[..n],
-        &w.y[..n],
-        &w.sin[..n],
-        &w.cos[..n],
-        &w.parity[..n],
+        &w.x[..=mp],
+        &w.y[..=mp],
+        &w.sin[..=mp],
+        &w.cos[..=mp],
+        &w.parity[..=mp],
     );
-    let (fx, fy) = (&mut w.fx[..m], &mut w.fy[..m]);
-    let (tl, tu) = (&mut w.torque_lower[..m], &mut w.torque_upper[..m]);
-    for j in 0..m {
+    let (fx, fy) = (&mut w.fx[..mp], &mut w.fy[..mp]);
+    let (tl, tu) = (&mut w.torque_lower[..mp], &mut w.torque_upper[..mp]);
+    for j in 0..mp {
         // t = (sin θ, p cos θ), t' = (cos θ, −p sin θ).
         let (tx0, ty0, tx1, ty1) = (s[j], p[j] * c[j], s[j + 1], p[j + 1] * c[j + 1]);
         let (ex, ey) = (x[j + 1] - x[j], y[j + 1] - y[j]);
