@@ -3,7 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::model::Params;
-use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario};
+use crate::sim::{self, Drive, IntegratorConfig, IntegratorKind, Scenario};
 use clap::{Args, Parser, Subcommand};
 use serde::Serialize;
 use std::ffi::OsString;
@@ -47,6 +47,9 @@ pub struct SimulateArgs {
     /// Time T_d over which block 1 turns from alpha to -alpha
     #[arg(long, default_value_t = sim::PAPER_DRIVE_TIME, value_name = "TD")]
     pub drive_time: f64,
+    /// Turn block 1 back (−alpha → alpha) over [T, T + drive time] as well (movies 10, 11)
+    #[arg(long, value_name = "T")]
+    pub second_flip: Option<f64>,
     /// explicit-euler, symplectic-euler, verlet, rk4 or dopri5
     #[arg(long, default_value = "symplectic-euler", value_name = "NAME")]
     pub integrator: String,
@@ -163,7 +166,14 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         rtol,
     }
     .validated()?;
-    let scenario = Scenario::single_flip(params, args.drive_time, args.t_end)?;
+    let scenario = match args.second_flip {
+        None => Scenario::single_flip(params, args.drive_time, args.t_end)?,
+        Some(t2) => {
+            sim::check_simulable(&params)?;
+            let drive = Drive::two_flips(params.alpha, args.drive_time, t2)?;
+            Scenario::with_drive(params, drive, args.t_end)?
+        }
+    };
     let samples = csv_samples(args)?;
     if let Some(path) = &args.csv {
         crate::output::check_writable(path)?;

@@ -13,3 +13,4 @@ pub mod bench;
 pub mod cli;
 pub mod output;
 pub mod sim;
+pub mod catalog;

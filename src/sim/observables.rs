@@ -46,8 +46,8 @@ impl ArrivalDetector {
 }
 
 /// Root in [0, 1] of the cubic Hermite interpolant with values y0, y1 and
-/// scaled slopes m0, m1 at 0 and 1, where y0 and y1 have opposite signs (or
-/// y1 = 0). Bisection to machine precision.
+/// scaled slopes m0, m1 at 0 and 1, where y1 ≠ 0 and y0 is zero or of the
+/// opposite sign (a zero y0 is the root). Bisection to machine precision.
 pub fn hermite_root(y0: f64, m0: f64, y1: f64, m1: f64) -> f64 {
     let p = |s: f64| {
         let (s2, s3) = (s * s, s * s * s);
@@ -57,7 +57,7 @@ pub fn hermite_root(y0: f64, m0: f64, y1: f64, m1: f64) -> f64 {
             + (s3 - s2) * m1
     };
     let (mut lo, mut hi) = (0.0, 1.0);
-    let sign_lo = y0.signum();
+    let sign_lo = -y1.signum();
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);
         if p(mid) * sign_lo > 0.0 {
@@ -100,6 +100,9 @@ mod tests {
         assert!((hermite_root(-1.0, 2.0, 1.0, 2.0) - 0.5).abs() < 1e-12);
         // y = s^3 - 0.125 on [0, 1]: root 0.5; slopes 0 and 3.
         assert!((hermite_root(-0.125, 0.0, 0.875, 3.0) - 0.5).abs() < 1e-12);
+        // A step that starts exactly on the root.
+        assert!(hermite_root(0.0, 1.0, 1.0, 1.0) < 1e-12);
+        assert!(hermite_root(-0.0, -1.0, -1.0, -1.0) < 1e-12);
     }
 
     #[test]
