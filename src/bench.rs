@@ -370,3 +370,150 @@ mod tests {
         assert!((slope(&pts) + 3.0).abs() < 1e-12);
     }
 }
+
+/// Results of one scene of the work-precision study.
+#[derive(Debug, Clone, Serialize)]
+pub struct SceneReport {
+    pub scene: String,
+    pub alpha_deg: f64,
+    pub integrators: Vec<Sweep>,
+}
+
+/// `bench work-precision --json`: the α = 60° kink's sweeps at the top level
+/// (SPEC section 5), both scenes under `scenes`, and the cheapest setting
+/// that keeps every arrival time within 1 τ of the reference.
+#[derive(Debug, Clone, Serialize)]
+pub struct WorkPrecisionReport {
+    pub integrators: Vec<Sweep>,
+    pub scenes: Vec<SceneReport>,
+    pub cheapest_within_1tau: Vec<Cheapest>,
+    pub reference: String,
+}
+
+/// The cheapest setting of one scene within a tolerance on arrival times.
+#[derive(Debug, Clone, Serialize)]
+pub struct Cheapest {
+    pub scene: String,
+    pub integrator: String,
+    pub step: f64,
+    pub force_evals: u64,
+    pub arrival_error: f64,
+}
+
+/// Runs the whole study on `scenes` (every integrator over its default
+/// range); `progress` is told each finished point.
+pub fn work_precision(
+    scenes: &[BenchScene],
+    repeats: usize,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<WorkPrecisionReport> {
+    let mut reports = Vec::new();
+    let mut cheapest = Vec::new();
+    for scene in scenes {
+        let reference = scene.reference(REFERENCE_RTOL)?;
+        let mut sweeps = Vec::new();
+        for kind in IntegratorKind::ALL {
+            let mut points = Vec::new();
+            for x in default_steps(kind) {
+                points.push(measure(scene, &reference, kind, x, repeats)?);
+                progress(&format!("{}: {kind} at {x}", scene.name));
+            }
+            sweeps.push(Sweep {
+                name: kind.name().to_string(),
+                measured_order: measured_order(&points),
+                points,
+            });
+        }
+        if let Some((name, p)) = cheapest_within(&sweeps, 1.0) {
+            cheapest.push(Cheapest {
+                scene: scene.name.clone(),
+                integrator: name.to_string(),
+                step: p.dt.or(p.rtol).unwrap_or(f64::NAN),
+                force_evals: p.force_evals,
+                arrival_error: p.arrival_error.unwrap_or(f64::NAN),
+            });
+        }
+        reports.push(SceneReport {
+            scene: scene.name.clone(),
+            alpha_deg: scene.alpha_deg,
+            integrators: sweeps,
+        });
+    }
+    Ok(WorkPrecisionReport {
+        integrators: reports.first().map(|r| r.integrators.clone()).unwrap_or_default(),
+        scenes: reports,
+        cheapest_within_1tau: cheapest,
+        reference: format!("dopri5, rtol = {REFERENCE_RTOL:e}"),
+    })
+}
+
+fn opt(x: Option<f64>) -> String {
+    x.map_or(String::new(), |v| format!("{v:e}"))
+}
+
+/// The numbers behind `work-precision.png`, one row per point.
+pub fn work_precision_csv(report: &WorkPrecisionReport) -> String {
+    let mut s = String::from(
+        "scene,integrator,dt,rtol,force_evals,wall_seconds,theta_error,arrival_error,diverged\n",
+    );
+    for scene in &report.scenes {
+        for sweep in &scene.integrators {
+            for p in &sweep.points {
+                s.push_str(&format!(
+                    "{},{},{},{},{},{:e},{},{},{}\n",
+                    scene.scene,
+                    sweep.name,
+                    opt(p.dt),
+                    opt(p.rtol),
+                    p.force_evals,
+                    p.wall_seconds,
+                    opt(p.theta_error),
+                    opt(p.arrival_error),
+                    p.diverged
+                ));
+            }
+        }
+    }
+    s
+}
+
+/// A human-readable table of the study.
+pub fn work_precision_table(report: &WorkPrecisionReport) -> String {
+    let mut s = String::new();
+    for scene in &report.scenes {
+        s.push_str(&format!("{} (reference: {})\n", scene.scene, report.reference));
+        s.push_str("integrator        step      force evals  wall (ms)  θ error     arrival error (τ)\n");
+        for sweep in &scene.integrators {
+            for p in &sweep.points {
+                let step = p.dt.or(p.rtol).unwrap_or(f64::NAN);
+                let (th, ar) = if p.diverged {
+                    ("diverged".to_string(), String::new())
+                } else {
+                    (
+                        opt(p.theta_error),
+                        p.arrival_error.map_or("a flip differs".into(), |e| format!("{e:.3}")),
+                    )
+                };
+                s.push_str(&format!(
+                    "{:<17} {:<9} {:>11}  {:>9.2}  {:<11} {}\n",
+                    sweep.name,
+                    format!("{step}"),
+                    p.force_evals,
+                    1e3 * p.wall_seconds,
+                    th,
+                    ar
+                ));
+            }
+            let order = sweep.measured_order.map_or("n/a".into(), |o| format!("{o:.2}"));
+            s.push_str(&format!("{:<17} measured order {order}\n", sweep.name));
+        }
+        s.push('\n');
+    }
+    for c in &report.cheapest_within_1tau {
+        s.push_str(&format!(
+            "cheapest within 1 τ, {}: {} at {} ({} force evaluations, arrival error {:.3} τ)\n",
+            c.scene, c.integrator, c.step, c.force_evals, c.arrival_error
+        ));
+    }
+    s
+}

@@ -27,6 +27,24 @@ pub struct Cli {
 pub enum Command {
     /// Simulate a kink (alpha > 0) or antikink (alpha < 0) driven from the top block
     Simulate(SimulateArgs),
+    /// Measure the integrators: speed against accuracy, or stability limits
+    Bench(BenchArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct BenchArgs {
+    /// work-precision (error against cost) or stability (critical time steps)
+    #[arg(value_name = "STUDY")]
+    pub study: String,
+    /// Output folder for the chart and its CSV
+    #[arg(long, default_value = "out", value_name = "DIR")]
+    pub out: PathBuf,
+    /// Print one JSON object instead of a table
+    #[arg(long)]
+    pub json: bool,
+    /// Repeats per work-precision point (the median wall time is kept)
+    #[arg(long, default_value_t = 3)]
+    pub repeats: usize,
 }
 
 #[derive(Args, Debug)]
@@ -120,6 +138,7 @@ fn clap_exit(e: clap::Error) -> i32 {
 pub fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Simulate(args) => simulate(&args),
+        Command::Bench(args) => bench(&args),
     }
 }
 
@@ -265,4 +284,63 @@ fn simulate_table(r: &SimulateReport) -> String {
         s.push_str(&format!("{:>5}  {:>11}   {:>13.3}\n", i + 1, t, th));
     }
     s
+}
+
+fn bench(args: &BenchArgs) -> Result<()> {
+    if !(1..=100).contains(&args.repeats) {
+        return Err(Error::bad_input(format!(
+            "--repeats must be between 1 and 100, got {}",
+            args.repeats
+        )));
+    }
+    crate::output::ensure_dir(&args.out)?;
+    match args.study.as_str() {
+        "work-precision" => bench_work_precision(args),
+        other => Err(Error::bad_input(format!(
+            "unknown study '{other}'; choose work-precision or stability"
+        ))),
+    }
+}
+
+fn bench_work_precision(args: &BenchArgs) -> Result<()> {
+    use crate::bench::{self, BenchScene};
+    let scenes = [BenchScene::paper(60.0)?, BenchScene::paper(-60.0)?];
+    let total: usize = scenes.len()
+        * IntegratorKind::ALL
+            .iter()
+            .map(|k| bench::default_steps(*k).len())
+            .sum::<usize>();
+    let bar = progress_bar(total as u64, "work-precision");
+    let report = bench::work_precision(&scenes, args.repeats, &|msg| {
+        bar.set_message(msg.to_string());
+        bar.inc(1);
+    })?;
+    bar.finish_and_clear();
+    let csv = args.out.join("work-precision.csv");
+    crate::output::write_atomic(&csv, bench::work_precision_csv(&report).as_bytes())?;
+    if args.json {
+        println!("{}", to_json(&report)?);
+    } else {
+        print!("{}", bench::work_precision_table(&report));
+        println!("wrote {}", csv.display());
+    }
+    Ok(())
+}
+
+fn to_json<T: Serialize>(value: &T) -> Result<String> {
+    serde_json::to_string(value).map_err(|e| Error::failed(format!("cannot encode JSON: {e}")))
+}
+
+/// A progress bar on stderr (hidden when stderr is not a terminal).
+fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(len);
+    let style = indicatif::ProgressStyle::with_template(
+        "{prefix} [{bar:30}] {pos}/{len} {elapsed} {msg}",
+    )
+    .map(|s| s.progress_chars("=> "));
+    if let Ok(style) = style {
+        bar.set_style(style);
+    }
+    bar.set_prefix(what.to_string());
+    bar
 }
