@@ -4,5 +4,6 @@
 
 pub mod model;
 pub mod error;
+pub mod theory;
 
 pub use error::{Error, Result};
