@@ -108,9 +108,24 @@ pub fn clamp_block_one(h: &DMatrix<f64>) -> DMatrix<f64> {
     linalg::remove_rows_cols(h, &b1, &b1)
 }
 
+/// Hessian of the spring energy at a stress-free state, H = Cᵀ C: in general
+/// H = k Cᵀ C + Σ_s t_s ∇²L_s, and every tension t_s = k(L_s − ℓ_s) vanishes
+/// in the ground state with G = 0 (every spring at its rest length).
+/// `chain_hessian_by_differences` checks it against the analytic gradient.
+pub fn stress_free_hessian(c: &DMatrix<f64>) -> DMatrix<f64> {
+    c.transpose() * c
+}
+
 /// Hessian of the spring energy (G = 0) of the open N-block chain at its
-/// ground state, by central differences of the model's analytic gradient.
+/// ground state (stress free, so Cᵀ C exactly).
 pub fn chain_hessian(params: &Params) -> DMatrix<f64> {
+    let ladder = Ladder::new(*params);
+    stress_free_hessian(&ladder.spring_length_jacobian(&ladder.ground_state()))
+}
+
+/// The same Hessian by central differences of the model's analytic gradient
+/// (step `HESSIAN_STEP`, symmetrised): an independent check of `chain_hessian`.
+pub fn chain_hessian_by_differences(params: &Params) -> DMatrix<f64> {
     let ladder = Ladder::new(springs_only(params));
     let grad = |q: &[f64], g: &mut [f64]| ladder.gradient(q, g);
     linalg::hessian_by_differences(grad, &ladder.ground_state(), HESSIAN_STEP)
@@ -185,9 +200,15 @@ impl Ring {
         grad.copy_from_slice(&full[..3 * self.n]);
     }
 
-    /// Hessian of the ring's spring energy at its ground state (central
-    /// differences of the analytic gradient, symmetrised).
+    /// Hessian of the ring's spring energy at its (stress-free) ground state,
+    /// Cᵀ C.
     pub fn hessian(&self) -> DMatrix<f64> {
+        stress_free_hessian(&self.jacobian(&self.ground_state()))
+    }
+
+    /// The same Hessian by central differences of the model's analytic
+    /// gradient, folded onto the ring (step `HESSIAN_STEP`, symmetrised).
+    pub fn hessian_by_differences(&self) -> DMatrix<f64> {
         let grad = |q: &[f64], g: &mut [f64]| self.gradient(q, g);
         linalg::hessian_by_differences(grad, &self.ground_state(), HESSIAN_STEP)
     }
@@ -219,11 +240,10 @@ mod tests {
     fn hessian_is_ct_c_at_the_stress_free_ground_state() {
         let p = params(8, 60.0);
         let ring = Ring::new(&p).unwrap();
-        let c = ring.jacobian(&ring.ground_state());
-        let diff = ring.hessian() - c.transpose() * &c;
+        let diff = ring.hessian_by_differences() - ring.hessian();
         assert!(diff.amax() < 1e-8, "{}", diff.amax());
-        let c = compatibility_matrix(&p, Boundary::Free).unwrap();
-        assert!((chain_hessian(&p) - c.transpose() * &c).amax() < 1e-8);
+        let diff = chain_hessian_by_differences(&p) - chain_hessian(&p);
+        assert!(diff.amax() < 1e-8, "{}", diff.amax());
     }
 
     #[test]

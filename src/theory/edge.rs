@@ -79,8 +79,9 @@ pub struct SurfaceMode {
     pub ratio_formula: f64,
     /// Number of zero singular values of the reduced chain (1 expected).
     pub zero_modes: usize,
-    /// Where |δθ_n| is largest.
-    pub edge: Edge,
+    /// The end where |δθ_n| is largest; `None` when |δθ_1| = |δθ_N| (α = 0:
+    /// the mode is uniform, κ = 0).
+    pub edge: Option<Edge>,
 }
 
 /// Null vector of the reduced chain's compatibility matrix (SVD) compared
@@ -93,12 +94,24 @@ pub fn surface_zero_mode(params: &Params) -> Result<SurfaceMode> {
     let big = v.iter().copied().max_by(|x, y| x.abs().total_cmp(&y.abs())).unwrap_or(1.0);
     let theta: Vec<f64> = v.iter().map(|x| x / big).collect();
     let ratios = theta.windows(2).map(|w| w[1] / w[0]).collect();
-    let edge = if theta[0].abs() >= theta[theta.len() - 1].abs() { Edge::Top } else { Edge::Bottom };
+    let edge = localisation(theta[0], theta[theta.len() - 1]);
     Ok(SurfaceMode { theta, ratios, ratio_formula, zero_modes: params.n - linalg::rank(&c), edge })
 }
 
-/// Norm of the reduced chain's B extensions and of C P δθ for δθ of
-/// eq:2nd_sol, relative to |δθ|: both vanish (checks eq:e-KL and eq:2nd_sol).
+/// The edge of the larger of |δθ_1| and |δθ_N| (equal within 1e-9: none).
+fn localisation(first: f64, last: f64) -> Option<Edge> {
+    let (f, l) = (first.abs(), last.abs());
+    if (f - l).abs() <= 1e-9 * f.max(l) {
+        None
+    } else if f > l {
+        Some(Edge::Top)
+    } else {
+        Some(Edge::Bottom)
+    }
+}
+
+/// |C P δθ| / |δθ| for δθ_n = (c_2/c_1)^{n−1} of eq:2nd_sol: zero when the
+/// formula is a zero mode of the model's reduced chain.
 pub fn formula_mode_residual(params: &Params) -> Option<f64> {
     let ratio = zero_mode_ratio(params.b, params.alpha)?;
     let theta: Vec<f64> = (0..params.n as i32).map(|k| ratio.powi(k)).collect();

@@ -11,3 +11,6 @@ pub mod dispersion;
 pub mod edge;
 pub mod gravity;
 pub mod linalg;
+pub mod report;
+
+pub use report::TheoryReport;
