@@ -2,8 +2,8 @@
 //! movies of "Topological antiqued mechanical toy" (Wada, Mizobata, Ueno,
 //! Yoneda). See `SPEC.md` for the conventions.
 
-pub mod model;
 pub mod error;
+pub mod model;
 pub mod theory;
 
 pub use error::{Error, Result};

@@ -12,9 +12,9 @@
 
 use super::compatibility::Ring;
 use crate::error::Result;
+use crate::model::Params;
 use crate::model::ladder::parity;
 use crate::model::params::S;
-use crate::model::Params;
 use nalgebra::{Complex, Matrix2, Matrix2x3, Matrix3, Vector3};
 use std::f64::consts::PI;
 
@@ -46,7 +46,16 @@ impl Coefficients {
         let gamma = S / (2.0 * a) * alpha.cos();
         let ss = S * alpha.sin();
         let (c1, c2) = (gamma * (b + 2.0 * ss), gamma * (b - 2.0 * ss));
-        Self { a, b, alpha, gamma, c1, c2, v1: c1 + 2.0 * gamma * ss, v2: c2 - 2.0 * gamma * ss }
+        Self {
+            a,
+            b,
+            alpha,
+            gamma,
+            c1,
+            c2,
+            v1: c1 + 2.0 * gamma * ss,
+            v2: c2 - 2.0 * gamma * ss,
+        }
     }
 
     pub fn of(params: &Params) -> Self {
@@ -70,8 +79,12 @@ pub fn paper_compatibility_matrix(k: &Coefficients, q: f64) -> Matrix2x3<C64> {
     let (z, one) = (k.z(q), C64::from(1.0));
     let (g, r) = (C64::from(k.gamma), C64::from(k.b / k.a));
     Matrix2x3::new(
-        r * (z - one), -g * 4.0 * (z - one), -z * k.c1 + k.c2,
-        z - one, C64::from(0.0), g * k.a * (z - one),
+        r * (z - one),
+        -g * 4.0 * (z - one),
+        -z * k.c1 + k.c2,
+        z - one,
+        C64::from(0.0),
+        g * k.a * (z - one),
     )
 }
 
@@ -87,15 +100,22 @@ pub fn corrected_compatibility_matrix(k: &Coefficients, q: f64) -> Matrix2x3<C64
 pub fn paper_reduced_compatibility_matrix(k: &Coefficients, q: f64) -> Matrix2<C64> {
     let (z, one) = (k.z(q), C64::from(1.0));
     Matrix2::new(
-        (z - one) * (k.b / k.a), -z * k.v1 + k.v2,
-        z - one, (z - one) * (k.gamma * k.a),
+        (z - one) * (k.b / k.a),
+        -z * k.v1 + k.v2,
+        z - one,
+        (z - one) * (k.gamma * k.a),
     )
 }
 
 /// Impose ṽ = (s/2) sin α θ on a 2 × 3 C(q): columns (û, θ̂ + (s/2) sin α ṽ̂).
 pub fn reduce(c: &Matrix2x3<C64>, k: &Coefficients) -> Matrix2<C64> {
     let w = k.constraint();
-    Matrix2::new(c[(0, 0)], c[(0, 2)] + c[(0, 1)] * w, c[(1, 0)], c[(1, 2)] + c[(1, 1)] * w)
+    Matrix2::new(
+        c[(0, 0)],
+        c[(0, 2)] + c[(0, 1)] * w,
+        c[(1, 0)],
+        c[(1, 2)] + c[(1, 1)] * w,
+    )
 }
 
 /// det C(q) = 2(e^{iqb} − 1)(c_1 e^{iqb} − c_2) (eq:det-C).
@@ -292,8 +312,14 @@ mod tests {
 
     #[test]
     fn winding_number_detects_degenerate_curves() {
-        assert_eq!(winding_number(|qb| Complex::from_polar(1.0, qb) * 0.5 + 0.1), Some(1));
-        assert_eq!(winding_number(|qb| Complex::from_polar(0.1, qb) + 0.5), Some(0));
+        assert_eq!(
+            winding_number(|qb| Complex::from_polar(1.0, qb) * 0.5 + 0.1),
+            Some(1)
+        );
+        assert_eq!(
+            winding_number(|qb| Complex::from_polar(0.1, qb) + 0.5),
+            Some(0)
+        );
         assert_eq!(winding_number(|_| C64::from(1e-13)), None);
     }
 }

@@ -10,7 +10,7 @@
 
 use super::linalg::{self, HESSIAN_STEP};
 use crate::error::{Error, Result};
-use crate::model::ladder::{ix, iy, itheta};
+use crate::model::ladder::{itheta, ix, iy};
 use crate::model::{Ladder, Params};
 use nalgebra::DMatrix;
 use serde::Serialize;
@@ -81,7 +81,9 @@ pub fn compatibility_matrix(params: &Params, boundary: Boundary) -> Result<DMatr
     let ladder = Ladder::new(*params);
     let c = match boundary {
         Boundary::Free => ladder.spring_length_jacobian(&ladder.ground_state()),
-        Boundary::Clamped => clamp_block_one_cols(&ladder.spring_length_jacobian(&ladder.ground_state())),
+        Boundary::Clamped => {
+            clamp_block_one_cols(&ladder.spring_length_jacobian(&ladder.ground_state()))
+        }
         Boundary::Periodic => {
             let ring = Ring::new(params)?;
             ring.jacobian(&ring.ground_state())
@@ -95,6 +97,30 @@ pub fn compatibility_matrix(params: &Params, boundary: Boundary) -> Result<DMatr
 pub fn index_count(params: &Params, boundary: Boundary) -> Result<IndexCount> {
     let c = compatibility_matrix(params, boundary)?;
     Ok(IndexCount::of(boundary, params.n, &c))
+}
+
+/// Projection (δu_n, δθ_n) ↦ (δu_n, (−1)^n (s/2) sin α δθ_n, δθ_n) of the
+/// constraint eq:constraint_Y, 3N × 2N.
+pub fn transverse_constraint(params: &Params) -> DMatrix<f64> {
+    let n = params.n;
+    let w = 0.5 * crate::model::params::S * params.alpha.sin();
+    let mut p = DMatrix::zeros(3 * n, 2 * n);
+    for i in 0..n {
+        p[(ix(i), 2 * i)] = 1.0;
+        p[(iy(i), 2 * i + 1)] = crate::model::ladder::parity(i) * w;
+        p[(itheta(i), 2 * i + 1)] = 1.0;
+    }
+    p
+}
+
+/// Index count of the free chain under δv_n = (−1)^n (s/2) sin α δθ_n
+/// (main text before eq:C_red): 2N columns (δu_n, δθ_n), 2(N − 1) springs.
+/// The paper expects ν = 2 and N_0 = 2: translation along x and the surface
+/// zero mode.
+pub fn constrained_index_count(params: &Params) -> IndexCount {
+    let ladder = Ladder::new(*params);
+    let c = ladder.spring_length_jacobian(&ladder.ground_state()) * transverse_constraint(params);
+    IndexCount::of(Boundary::Free, params.n, &c)
 }
 
 /// Drop the three columns of block 1.
@@ -159,7 +185,10 @@ impl Ring {
             )));
         }
         let open = springs_only(params).with(n + 1, params.b, params.alpha_deg())?;
-        Ok(Self { open: Ladder::new(open), n })
+        Ok(Self {
+            open: Ladder::new(open),
+            n,
+        })
     }
 
     /// Ground state of the ring: the first N blocks of the model's ground state.
@@ -172,7 +201,11 @@ impl Ring {
     /// Coordinates of the open (N + 1)-block chain: q plus the image of block 1.
     pub fn unfold(&self, q: &[f64]) -> Vec<f64> {
         let mut full = q.to_vec();
-        full.extend([q[ix(0)] + self.n as f64 * self.open.params.b, q[iy(0)], q[itheta(0)]]);
+        full.extend([
+            q[ix(0)] + self.n as f64 * self.open.params.b,
+            q[iy(0)],
+            q[itheta(0)],
+        ]);
         full
     }
 

@@ -55,7 +55,10 @@ pub fn closed_form_d(k: &Coefficients, q: f64) -> (f64, f64, f64) {
 pub fn omega_closed_form(k: &Coefficients, q: f64) -> [f64; 2] {
     let (d11, d22, d12_sq) = closed_form_d(k, q);
     let root = ((d11 - d22).powi(2) + 4.0 * d12_sq).sqrt();
-    [frequency(0.5 * (d11 + d22 - root)), frequency(0.5 * (d11 + d22 + root))]
+    [
+        frequency(0.5 * (d11 + d22 - root)),
+        frequency(0.5 * (d11 + d22 + root)),
+    ]
 }
 
 /// ω_+(0) = 2√2 ω_0 (s/a) sin 2α as printed (eq:gap), with ω_0 = 1 (signed:
@@ -123,7 +126,10 @@ impl BlochChain {
 pub fn normal_mode_frequencies(params: &Params, boundary: Boundary) -> Result<Vec<f64>> {
     let (hessian, blocks) = match boundary {
         Boundary::Free => (compatibility::chain_hessian(params), params.n),
-        Boundary::Clamped => (clamp_block_one(&compatibility::chain_hessian(params)), params.n - 1),
+        Boundary::Clamped => (
+            clamp_block_one(&compatibility::chain_hessian(params)),
+            params.n - 1,
+        ),
         Boundary::Periodic => (Ring::new(params)?.hessian(), params.n),
     };
     let ev = mass_weighted_eigenvalues(&hessian, &block_masses(params, blocks));

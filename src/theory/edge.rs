@@ -10,7 +10,7 @@
 use super::bloch::Coefficients;
 use super::linalg;
 use crate::error::{Error, Result};
-use crate::model::ladder::{ix, itheta, iy, parity};
+use crate::model::ladder::{itheta, ix, iy, parity};
 use crate::model::params::R;
 use crate::model::{Ladder, Params};
 use nalgebra::DMatrix;
@@ -33,7 +33,7 @@ pub fn zero_mode_ratio(b: f64, alpha: f64) -> Option<f64> {
 /// infinite (b = 2s|sin α|: the mode sits on one block) or undefined (a = b).
 pub fn kappa(b: f64, alpha: f64) -> Option<f64> {
     let ratio = zero_mode_ratio(b, alpha)?;
-    (ratio != 0.0).then(|| -ratio.abs().ln() / b)
+    (ratio != 0.0).then(|| ratio.abs().recip().ln() / b)
 }
 
 /// The edge that a surface mode is localised at.
@@ -91,11 +91,21 @@ pub fn surface_zero_mode(params: &Params) -> Result<SurfaceMode> {
         .ok_or_else(|| Error::bad_input("no single surface zero mode for a = b (alpha = 90)"))?;
     let c = reduced_chain_matrix(params);
     let v = linalg::null_vector(&c);
-    let big = v.iter().copied().max_by(|x, y| x.abs().total_cmp(&y.abs())).unwrap_or(1.0);
+    let big = v
+        .iter()
+        .copied()
+        .max_by(|x, y| x.abs().total_cmp(&y.abs()))
+        .unwrap_or(1.0);
     let theta: Vec<f64> = v.iter().map(|x| x / big).collect();
     let ratios = theta.windows(2).map(|w| w[1] / w[0]).collect();
     let edge = localisation(theta[0], theta[theta.len() - 1]);
-    Ok(SurfaceMode { theta, ratios, ratio_formula, zero_modes: params.n - linalg::rank(&c), edge })
+    Ok(SurfaceMode {
+        theta,
+        ratios,
+        ratio_formula,
+        zero_modes: params.n - linalg::rank(&c),
+        edge,
+    })
 }
 
 /// The edge of the larger of |δθ_1| and |δθ_N| (equal within 1e-9: none).

@@ -124,7 +124,10 @@ mod tests {
             let (b, alpha) = (1.3, alpha_deg.to_radians());
             let a = a_from_alpha(b, alpha);
             let du = potential(a, b, 0.0).unwrap() - potential(a, b, alpha).unwrap();
-            assert!((du - barrier(b, alpha).unwrap()).abs() < 1e-12, "{alpha_deg}");
+            assert!(
+                (du - barrier(b, alpha).unwrap()).abs() < 1e-12,
+                "{alpha_deg}"
+            );
         }
         assert_eq!(barrier(1.3, 0.0), Some(0.0));
         assert!(barrier(0.5, 1.5).is_none());

@@ -24,7 +24,13 @@ pub fn rank(m: &DMatrix<f64>) -> usize {
 
 /// Singular values of `m`, descending.
 pub fn singular_values(m: &DMatrix<f64>) -> Vec<f64> {
-    let mut sv: Vec<f64> = m.clone().svd(false, false).singular_values.iter().copied().collect();
+    let mut sv: Vec<f64> = m
+        .clone()
+        .svd(false, false)
+        .singular_values
+        .iter()
+        .copied()
+        .collect();
     sv.sort_by(|x, y| y.total_cmp(x));
     sv
 }
@@ -40,7 +46,11 @@ pub fn null_vector(m: &DMatrix<f64>) -> DVector<f64> {
 
 /// Hessian of a function from its gradient by central differences with step
 /// `h`, symmetrised: H = ½(H̃ + H̃ᵀ).
-pub fn hessian_by_differences(grad: impl Fn(&[f64], &mut [f64]), q: &[f64], h: f64) -> DMatrix<f64> {
+pub fn hessian_by_differences(
+    grad: impl Fn(&[f64], &mut [f64]),
+    q: &[f64],
+    h: f64,
+) -> DMatrix<f64> {
     let n = q.len();
     let mut hess = DMatrix::zeros(n, n);
     let (mut gp, mut gm) = (vec![0.0; n], vec![0.0; n]);
@@ -63,7 +73,11 @@ pub fn hessian_by_differences(grad: impl Fn(&[f64], &mut [f64]), q: &[f64], h: f
 pub fn mass_weighted_eigenvalues(k: &DMatrix<f64>, masses: &[f64]) -> Vec<f64> {
     let w: Vec<f64> = masses.iter().map(|m| 1.0 / m.sqrt()).collect();
     let weighted = DMatrix::from_fn(k.nrows(), k.ncols(), |i, j| w[i] * k[(i, j)] * w[j]);
-    let mut ev: Vec<f64> = SymmetricEigen::new(weighted).eigenvalues.iter().copied().collect();
+    let mut ev: Vec<f64> = SymmetricEigen::new(weighted)
+        .eigenvalues
+        .iter()
+        .copied()
+        .collect();
     ev.sort_by(f64::total_cmp);
     ev
 }

@@ -9,6 +9,7 @@ pub mod bloch;
 pub mod compatibility;
 pub mod dispersion;
 pub mod edge;
+pub mod figures;
 pub mod gravity;
 pub mod linalg;
 pub mod report;

@@ -72,7 +72,10 @@ impl TheoryReport {
         let p = params.validated()?;
         let k = Coefficients::of(&p);
         let chain = BlochChain::new(&p)?;
-        let (free, clamped) = (index_count(&p, Boundary::Free)?, index_count(&p, Boundary::Clamped)?);
+        let (free, clamped) = (
+            index_count(&p, Boundary::Free)?,
+            index_count(&p, Boundary::Clamped)?,
+        );
         let periodic = index_count(&p, Boundary::Periodic).ok();
         let mode = surface_zero_mode(&p).ok();
         Ok(Self {
@@ -86,7 +89,9 @@ impl TheoryReport {
             c1: k.c1,
             c2: k.c2,
             zero_mode_ratio: zero_mode_ratio(p.b, p.alpha),
-            zero_mode_ratio_numerical: mode.as_ref().and_then(|m| m.ratios.get(m.ratios.len() / 2).copied()),
+            zero_mode_ratio_numerical: mode
+                .as_ref()
+                .and_then(|m| m.ratios.get(m.ratios.len() / 2).copied()),
             kappa: kappa(p.b, p.alpha),
             surface_mode_edge: mode.and_then(|m| m.edge),
             winding_number: chain.winding_number(),
@@ -108,7 +113,11 @@ impl TheoryReport {
     /// A human-readable table: quantity, value, source.
     pub fn to_table(&self) -> String {
         let mut out = String::new();
-        let _ = writeln!(out, "Linear theory, N = {}, b/s = {}, alpha = {} deg", self.n, self.b, self.alpha_deg);
+        let _ = writeln!(
+            out,
+            "Linear theory, N = {}, b/s = {}, alpha = {} deg",
+            self.n, self.b, self.alpha_deg
+        );
         for (name, value, note) in self.rows() {
             let _ = writeln!(out, "  {name:<34} {value:>14}  {note}");
         }
@@ -119,26 +128,91 @@ impl TheoryReport {
         vec![
             ("a/s", num(self.a), "eq:eq_alpha"),
             ("U_min / mgs (per pair)", num(self.u_min), "eq:min_values"),
-            ("barrier dU / mgs (per pair)", opt(self.barrier), "eq:delta_U"),
+            (
+                "barrier dU / mgs (per pair)",
+                opt(self.barrier),
+                "eq:delta_U",
+            ),
             ("c1", num(self.c1), "eq:c_12"),
             ("c2", num(self.c2), "eq:c_12"),
             ("c2/c1", opt(self.zero_mode_ratio), "eq:2nd_sol"),
-            ("dtheta_{n+1}/dtheta_n (numerical)", opt(self.zero_mode_ratio_numerical), "reduced chain null vector"),
+            (
+                "dtheta_{n+1}/dtheta_n (numerical)",
+                opt(self.zero_mode_ratio_numerical),
+                "reduced chain null vector",
+            ),
             ("kappa * s", opt(self.kappa), "after eq:2nd_sol (signed)"),
-            ("surface mode edge", edge(self.surface_mode_edge), "reduced chain null vector"),
-            ("winding number n_C", self.winding_number.map_or("undefined".into(), |w| w.to_string()), "phase of det C(q), eq:n"),
-            ("gap omega+(0) tau", num(self.gap_omega_plus_q0), "model, metric diag(m, I)"),
-            ("gap omega+(0) tau, paper", num(self.gap_omega_plus_q0_paper), "eq:gap, omega_0 = 1/tau"),
-            ("gap, consistent metric", num(self.gap_omega_plus_q0_consistent_metric), "I + m (s/2)^2 sin^2 alpha"),
-            ("gap, unconstrained top branch", num(self.gap_unconstrained), "3 branches at q = 0"),
-            ("omega_max tau (clamped)", num(self.omega_max), "Hessian, block 1 clamped"),
-            ("zero modes, clamped", self.zero_modes_clamped.to_string(), "rank of C"),
-            ("self-stress, clamped", self.self_stress_clamped.to_string(), "rank of C"),
-            ("zero modes, free (incl. 3 rigid)", self.zero_modes_free.to_string(), "rank of C"),
-            ("self-stress, free", self.self_stress_free.to_string(), "rank of C"),
-            ("Maxwell index 3N - N_b, free", self.maxwell_index_free.to_string(), "= N_0 - N_s"),
-            ("zero modes, periodic", opt_count(self.zero_modes_periodic), "ring of N blocks"),
-            ("self-stress, periodic", opt_count(self.self_stress_periodic), "ring of N blocks"),
+            (
+                "surface mode edge",
+                edge(self.surface_mode_edge),
+                "reduced chain null vector",
+            ),
+            (
+                "winding number n_C",
+                self.winding_number
+                    .map_or("undefined".into(), |w| w.to_string()),
+                "phase of det C(q), eq:n",
+            ),
+            (
+                "gap omega+(0) tau",
+                num(self.gap_omega_plus_q0),
+                "model, metric diag(m, I)",
+            ),
+            (
+                "gap omega+(0) tau, paper",
+                num(self.gap_omega_plus_q0_paper),
+                "eq:gap, omega_0 = 1/tau",
+            ),
+            (
+                "gap, consistent metric",
+                num(self.gap_omega_plus_q0_consistent_metric),
+                "I + m (s/2)^2 sin^2 alpha",
+            ),
+            (
+                "gap, unconstrained top branch",
+                num(self.gap_unconstrained),
+                "3 branches at q = 0",
+            ),
+            (
+                "omega_max tau (clamped)",
+                num(self.omega_max),
+                "Hessian, block 1 clamped",
+            ),
+            (
+                "zero modes, clamped",
+                self.zero_modes_clamped.to_string(),
+                "rank of C",
+            ),
+            (
+                "self-stress, clamped",
+                self.self_stress_clamped.to_string(),
+                "rank of C",
+            ),
+            (
+                "zero modes, free (incl. 3 rigid)",
+                self.zero_modes_free.to_string(),
+                "rank of C",
+            ),
+            (
+                "self-stress, free",
+                self.self_stress_free.to_string(),
+                "rank of C",
+            ),
+            (
+                "Maxwell index 3N - N_b, free",
+                self.maxwell_index_free.to_string(),
+                "= N_0 - N_s",
+            ),
+            (
+                "zero modes, periodic",
+                opt_count(self.zero_modes_periodic),
+                "ring of N blocks",
+            ),
+            (
+                "self-stress, periodic",
+                opt_count(self.self_stress_periodic),
+                "ring of N blocks",
+            ),
         ]
     }
 }
@@ -172,8 +246,17 @@ mod tests {
         let r = TheoryReport::compute(&Params::paper(60.0).unwrap()).unwrap();
         let v = serde_json::to_value(&r).unwrap();
         for key in [
-            "a", "alpha_deg", "u_min", "barrier", "kappa", "winding_number", "gap_omega_plus_q0",
-            "omega_max", "zero_modes_clamped", "zero_modes_free", "self_stress_free",
+            "a",
+            "alpha_deg",
+            "u_min",
+            "barrier",
+            "kappa",
+            "winding_number",
+            "gap_omega_plus_q0",
+            "omega_max",
+            "zero_modes_clamped",
+            "zero_modes_free",
+            "self_stress_free",
         ] {
             assert!(v.get(key).is_some(), "{key}");
         }
