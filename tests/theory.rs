@@ -173,6 +173,12 @@ fn periodic_chain_has_a_self_stress_at_q0() {
     let chain = BlochChain::new(&params(8, 1.3, 60.0)).unwrap();
     let c0 = chain.compatibility_matrix(0.0);
     assert!(c0.row(1).iter().all(|x| x.norm() < 1e-14));
+    // n_0(0) = 2: translation along x and the uniform tilt ṽ = −(s/2) sin α θ.
+    let w = chain.coefficients.constraint();
+    for mode in [[1.0, 0.0, 0.0], [0.0, -w, 1.0]] {
+        let v = nalgebra::Vector3::from(mode).map(C64::from);
+        assert!((c0 * v).norm() < 1e-14);
+    }
     let ring = Ring::new(&params(8, 1.3, 60.0)).unwrap();
     let c = ring.jacobian(&ring.ground_state());
     let t = nalgebra::DVector::from_fn(16, |r, _| if r % 2 == 1 { 1.0 } else { 0.0 });

@@ -5,7 +5,7 @@ use super::compatibility::{Boundary, IndexCount, index_count};
 use super::dispersion::{KineticMetric, gap_closed_form, omega_max_clamped};
 use super::edge::{Edge, kappa, surface_zero_mode, zero_mode_ratio};
 use super::gravity::{barrier, u_min};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::model::Params;
 use serde::Serialize;
 use std::fmt::Write;
@@ -66,10 +66,20 @@ pub struct TheoryReport {
     pub self_stress_periodic: Option<usize>,
 }
 
+/// Largest N for the linear theory: the dense SVDs and eigen-decompositions
+/// cost O(N³) (N = 200 takes about 0.5 s, N = 400 about 4 s).
+pub const MAX_THEORY_BLOCKS: usize = 400;
+
 impl TheoryReport {
-    /// Every quantity for `params` (0 ≤ |α| ≤ 90°).
+    /// Every quantity for `params` (0 ≤ |α| ≤ 90°, 2 ≤ N ≤ `MAX_THEORY_BLOCKS`).
     pub fn compute(params: &Params) -> Result<Self> {
         let p = params.validated()?;
+        if p.n > MAX_THEORY_BLOCKS {
+            return Err(Error::bad_input(format!(
+                "the linear theory takes N between 2 and {MAX_THEORY_BLOCKS}, got {}",
+                p.n
+            )));
+        }
         let k = Coefficients::of(&p);
         let chain = BlochChain::new(&p)?;
         let (free, clamped) = (
@@ -261,6 +271,15 @@ mod tests {
             assert!(v.get(key).is_some(), "{key}");
         }
         assert!(r.to_table().contains("winding number"));
+    }
+
+    #[test]
+    fn rejects_huge_chains() {
+        let p = Params::paper(60.0)
+            .unwrap()
+            .with(MAX_THEORY_BLOCKS + 1, 1.3, 60.0)
+            .unwrap();
+        assert_eq!(TheoryReport::compute(&p).unwrap_err().exit_code(), 2);
     }
 
     #[test]
