@@ -1,16 +1,22 @@
 //! `jacobs-ladder`: simulate the Jacob's-ladder toy and render the figures and
 //! movies of "Topological antiqued mechanical toy" (Wada, Mizobata, Ueno,
 //! Yoneda). See `SPEC.md` for the conventions.
+//!
+//! Floors, from the ground up: `model` (parameters, energy, forces);
+//! `sim` (integrators, drives, observables) and `theory` (linear analysis)
+//! on the model; `catalog` and `bench` bring them together; `cli` on top.
 
 // Numerical loops index several arrays with one index, as the formulas do.
 #![allow(clippy::needless_range_loop)]
 
 pub mod error;
 pub mod model;
+pub mod sim;
+pub mod theory;
 
-pub use error::{Error, Result};
 pub mod bench;
+pub mod catalog;
 pub mod cli;
 pub mod output;
-pub mod sim;
-pub mod catalog;
+
+pub use error::{Error, Result};
