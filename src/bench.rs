@@ -440,7 +440,10 @@ pub fn work_precision(
         });
     }
     Ok(WorkPrecisionReport {
-        integrators: reports.first().map(|r| r.integrators.clone()).unwrap_or_default(),
+        integrators: reports
+            .first()
+            .map(|r| r.integrators.clone())
+            .unwrap_or_default(),
         scenes: reports,
         cheapest_within_1tau: cheapest,
         reference: format!("dopri5, rtol = {REFERENCE_RTOL:e}"),
@@ -481,8 +484,13 @@ pub fn work_precision_csv(report: &WorkPrecisionReport) -> String {
 pub fn work_precision_table(report: &WorkPrecisionReport) -> String {
     let mut s = String::new();
     for scene in &report.scenes {
-        s.push_str(&format!("{} (reference: {})\n", scene.scene, report.reference));
-        s.push_str("integrator        step      force evals  wall (ms)  θ error     arrival error (τ)\n");
+        s.push_str(&format!(
+            "{} (reference: {})\n",
+            scene.scene, report.reference
+        ));
+        s.push_str(
+            "integrator        step      force evals  wall (ms)  θ error     arrival error (τ)\n",
+        );
         for sweep in &scene.integrators {
             for p in &sweep.points {
                 let step = p.dt.or(p.rtol).unwrap_or(f64::NAN);
@@ -491,7 +499,8 @@ pub fn work_precision_table(report: &WorkPrecisionReport) -> String {
                 } else {
                     (
                         opt(p.theta_error),
-                        p.arrival_error.map_or("a flip differs".into(), |e| format!("{e:.3}")),
+                        p.arrival_error
+                            .map_or("a flip differs".into(), |e| format!("{e:.3}")),
                     )
                 };
                 s.push_str(&format!(
@@ -504,7 +513,9 @@ pub fn work_precision_table(report: &WorkPrecisionReport) -> String {
                     ar
                 ));
             }
-            let order = sweep.measured_order.map_or("n/a".into(), |o| format!("{o:.2}"));
+            let order = sweep
+                .measured_order
+                .map_or("n/a".into(), |o| format!("{o:.2}"));
             s.push_str(&format!("{:<17} measured order {order}\n", sweep.name));
         }
         s.push('\n');

@@ -140,7 +140,10 @@ pub enum Content {
     Arrivals(&'static [f64]),
     Theory(TheoryFigure),
     /// A GIF and its kymograph; `follow_kink` moves the view with the kink.
-    Movie { sim: SimSpec, follow_kink: bool },
+    Movie {
+        sim: SimSpec,
+        follow_kink: bool,
+    },
 }
 
 /// A catalogue entry.
@@ -191,7 +194,11 @@ impl Entry {
             Content::Movie { sim, .. } => sim.describe(),
             Content::Arrivals(alphas) => format!(
                 "α = ±{}°, b/s = 1.3, N = 10, T_d = 1000 τ",
-                alphas.iter().map(|a| a.to_string()).collect::<Vec<_>>().join("°, ±")
+                alphas
+                    .iter()
+                    .map(|a| a.to_string())
+                    .collect::<Vec<_>>()
+                    .join("°, ±")
             ),
             Content::Theory(_) => String::new(),
         };
@@ -203,7 +210,11 @@ impl Entry {
             ),
             f => f.name().to_string(),
         };
-        if model.is_empty() { level } else { format!("{model}; {level}") }
+        if model.is_empty() {
+            level
+        } else {
+            format!("{model}; {level}")
+        }
     }
 }
 
@@ -237,7 +248,9 @@ pub const CATALOGUE: &[Entry] = &[
         content: Content::Strips(&[StripSpec {
             label: "",
             sim: WATER_TANK,
-            times: &[0.0, 800.0, 1100.0, 1400.0, 1700.0, 2000.0, 2300.0, 2600.0, 2900.0],
+            times: &[
+                0.0, 800.0, 1100.0, 1400.0, 1700.0, 2000.0, 2300.0, 2600.0, 2900.0,
+            ],
         }]),
     },
     Entry {
@@ -304,7 +317,9 @@ pub const CATALOGUE: &[Entry] = &[
         content: Content::Strips(&[StripSpec {
             label: "",
             sim: ANNIHILATION_60,
-            times: &[1000.0, 1800.0, 2300.0, 2600.0, 2800.0, 2950.0, 3100.0, 3600.0],
+            times: &[
+                1000.0, 1800.0, 2300.0, 2600.0, 2800.0, 2950.0, 3100.0, 3600.0,
+            ],
         }]),
     },
     Entry {
@@ -363,15 +378,35 @@ pub const CATALOGUE: &[Entry] = &[
                   equilibrium angle α, b/s = 1.3.",
         content: Content::Theory(TheoryFigure::Barrier),
     },
-    movie("3", "Movie 3: the kink of movie 4 in the frame moving with it", KINK_60, true),
+    movie(
+        "3",
+        "Movie 3: the kink of movie 4 in the frame moving with it",
+        KINK_60,
+        true,
+    ),
     movie("4", "Movie 4: kink, α = 60°", KINK_60, false),
     movie("5", "Movie 5: antikink, α = −60°", ANTIKINK_60, false),
     movie("6", "Movie 6: kink, α = 50°", KINK_50, false),
-    movie("7", "Movie 7: antikink, α = −50° (pinned)", ANTIKINK_50, false),
+    movie(
+        "7",
+        "Movie 7: antikink, α = −50° (pinned)",
+        ANTIKINK_50,
+        false,
+    ),
     movie("8", "Movie 8: kink, α = 86°", KINK_86, false),
     movie("9", "Movie 9: antikink, α = −86°", ANTIKINK_86, false),
-    movie("10", "Movie 10: kink and antikink coexisting, α = 86°", PAIR_86, false),
-    movie("11", "Movie 11: pair annihilation, α = −60°", ANNIHILATION_60, false),
+    movie(
+        "10",
+        "Movie 10: kink and antikink coexisting, α = 86°",
+        PAIR_86,
+        false,
+    ),
+    movie(
+        "11",
+        "Movie 11: pair annihilation, α = −60°",
+        ANNIHILATION_60,
+        false,
+    ),
 ];
 
 const fn movie(id: &'static str, title: &'static str, sim: SimSpec, follow_kink: bool) -> Entry {

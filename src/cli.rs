@@ -334,10 +334,9 @@ fn to_json<T: Serialize>(value: &T) -> Result<String> {
 /// A progress bar on stderr (hidden when stderr is not a terminal).
 fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(len);
-    let style = indicatif::ProgressStyle::with_template(
-        "{prefix} [{bar:30}] {pos}/{len} {elapsed} {msg}",
-    )
-    .map(|s| s.progress_chars("=> "));
+    let style =
+        indicatif::ProgressStyle::with_template("{prefix} [{bar:30}] {pos}/{len} {elapsed} {msg}")
+            .map(|s| s.progress_chars("=> "));
     if let Ok(style) = style {
         bar.set_style(style);
     }
