@@ -203,10 +203,21 @@ fn measure(
 /// Order p from the slope of log(θ error) against log(force evaluations)
 /// (error ∝ evals^(−p)), over converged points whose error lies between
 /// 1e-9 (above the reference's own error) and 1e-2 (asymptotic regime).
+/// Points on a cost plateau (within 30 % of the cheapest, where an adaptive
+/// method is held by stability rather than by its tolerance) are left out.
 pub fn measured_order(points: &[Point]) -> Option<f64> {
-    let pts: Vec<(f64, f64)> = points
+    let floor = points
         .iter()
         .filter(|p| !p.diverged)
+        .map(|p| p.force_evals)
+        .min()?;
+    let plateau = |p: &Point| {
+        let tolerance_driven = points.iter().any(|q| q.rtol.is_some());
+        tolerance_driven && (p.force_evals as f64) < 1.3 * floor as f64
+    };
+    let pts: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|p| !p.diverged && !plateau(p))
         .filter_map(|p| p.theta_error.map(|e| (p.force_evals as f64, e)))
         .filter(|(_, e)| *e > 1e-9 && *e < 1e-2)
         .map(|(n, e)| (n.ln(), e.ln()))
@@ -524,6 +535,128 @@ pub fn work_precision_table(report: &WorkPrecisionReport) -> String {
         s.push_str(&format!(
             "cheapest within 1 τ, {}: {} at {} ({} force evaluations, arrival error {:.3} τ)\n",
             c.scene, c.integrator, c.step, c.force_evals, c.arrival_error
+        ));
+    }
+    s
+}
+
+/// Observed and predicted critical step of one integrator.
+#[derive(Debug, Clone, Serialize)]
+pub struct StabilityRow {
+    pub name: String,
+    /// Largest dt at which the kink scene stays bounded (bisection).
+    pub critical_dt: f64,
+    /// Linear prediction from ω_max ([`predicted_dt`]).
+    pub predicted_dt: f64,
+}
+
+/// The stability study at one α.
+#[derive(Debug, Clone, Serialize)]
+pub struct StabilityPoint {
+    pub alpha_deg: f64,
+    pub omega_max: f64,
+    pub integrators: Vec<StabilityRow>,
+}
+
+/// `bench stability --json`: the α = 60° rows at the top level (SPEC
+/// section 5) and the sweep over α.
+#[derive(Debug, Clone, Serialize)]
+pub struct StabilityReport {
+    pub alpha_deg: f64,
+    pub omega_max: f64,
+    pub damping_rate: f64,
+    pub integrators: Vec<StabilityRow>,
+    pub sweep: Vec<StabilityPoint>,
+}
+
+/// Relative precision of the stability bisection.
+pub const STABILITY_PRECISION: f64 = 0.02;
+
+/// Critical and predicted dt of every integrator on the kink scene at α.
+pub fn stability_at(alpha_deg: f64) -> Result<StabilityPoint> {
+    let scene = BenchScene::paper(alpha_deg)?;
+    let omega_max = crate::theory::dispersion::omega_max_clamped(&scene.params)?;
+    let c = damping_rate(&scene.params);
+    let mut rows = Vec::new();
+    for kind in IntegratorKind::ALL {
+        let predicted = predicted_dt(kind, omega_max, c);
+        let critical = critical_dt(&scene, kind, predicted, STABILITY_PRECISION)?;
+        rows.push(StabilityRow {
+            name: kind.name().to_string(),
+            critical_dt: critical,
+            predicted_dt: predicted,
+        });
+    }
+    Ok(StabilityPoint {
+        alpha_deg,
+        omega_max,
+        integrators: rows,
+    })
+}
+
+/// The smaller of the translational (γ/m) and rotational (γ r²/I) damping rates.
+pub fn damping_rate(params: &Params) -> f64 {
+    use crate::model::params::{M, R};
+    (params.gamma / M).min(params.gamma * R * R / params.inertia)
+}
+
+/// The α values of the stability chart.
+pub const STABILITY_ALPHAS: [f64; 11] = [
+    5.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 85.0, 89.0,
+];
+
+/// The whole study: α = 60° and the sweep over `alphas` (in parallel).
+pub fn stability(alphas: &[f64], progress: &(dyn Fn(&str) + Sync)) -> Result<StabilityReport> {
+    use rayon::prelude::*;
+    let sweep: Vec<StabilityPoint> = alphas
+        .par_iter()
+        .map(|&a| {
+            let p = stability_at(a);
+            progress(&format!("α = {a}°"));
+            p
+        })
+        .collect::<Result<_>>()?;
+    let at60 = match sweep.iter().find(|p| p.alpha_deg == 60.0) {
+        Some(p) => p.clone(),
+        None => stability_at(60.0)?,
+    };
+    Ok(StabilityReport {
+        alpha_deg: 60.0,
+        omega_max: at60.omega_max,
+        damping_rate: damping_rate(&Params::paper(60.0)?),
+        integrators: at60.integrators,
+        sweep,
+    })
+}
+
+/// The numbers behind `stability.png`.
+pub fn stability_csv(report: &StabilityReport) -> String {
+    let mut s = String::from("alpha_deg,omega_max,integrator,critical_dt,predicted_dt\n");
+    for p in &report.sweep {
+        for r in &p.integrators {
+            s.push_str(&format!(
+                "{},{:.6},{},{:.6e},{:.6e}\n",
+                p.alpha_deg, p.omega_max, r.name, r.critical_dt, r.predicted_dt
+            ));
+        }
+    }
+    s
+}
+
+/// A human-readable table of the α = 60° rows.
+pub fn stability_table(report: &StabilityReport) -> String {
+    let mut s = format!(
+        "kink α = {}°: ω_max = {:.4} /τ (block 1 clamped), damping rate {} /τ\n\
+         integrator        critical dt   predicted dt   ratio\n",
+        report.alpha_deg, report.omega_max, report.damping_rate
+    );
+    for r in &report.integrators {
+        s.push_str(&format!(
+            "{:<17} {:<13.5} {:<14.5} {:.2}\n",
+            r.name,
+            r.critical_dt,
+            r.predicted_dt,
+            r.critical_dt / r.predicted_dt
         ));
     }
     s

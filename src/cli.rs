@@ -29,6 +29,25 @@ pub enum Command {
     Simulate(SimulateArgs),
     /// Measure the integrators: speed against accuracy, or stability limits
     Bench(BenchArgs),
+    /// Linear theory of the ladder: potential, zero modes, winding, dispersion
+    Theory(TheoryArgs),
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct TheoryArgs {
+    /// Equilibrium angle alpha in degrees, 0 <= |alpha| <= 90
+    #[arg(long, default_value_t = 60.0, value_name = "DEG")]
+    pub alpha: f64,
+    /// Rest length b of the B springs, in units of s
+    #[arg(long, default_value_t = 1.3)]
+    pub b: f64,
+    /// Number of blocks N of the finite chain (2..=400)
+    #[arg(long, default_value_t = 10)]
+    pub n: usize,
+    /// Print one JSON object instead of a table
+    #[arg(long)]
+    pub json: bool,
 }
 
 #[derive(Args, Debug)]
@@ -139,6 +158,7 @@ pub fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Simulate(args) => simulate(&args),
         Command::Bench(args) => bench(&args),
+        Command::Theory(args) => theory(&args),
     }
 }
 
@@ -296,6 +316,7 @@ fn bench(args: &BenchArgs) -> Result<()> {
     crate::output::ensure_dir(&args.out)?;
     match args.study.as_str() {
         "work-precision" => bench_work_precision(args),
+        "stability" => bench_stability(args),
         other => Err(Error::bad_input(format!(
             "unknown study '{other}'; choose work-precision or stability"
         ))),
@@ -327,6 +348,26 @@ fn bench_work_precision(args: &BenchArgs) -> Result<()> {
     Ok(())
 }
 
+fn bench_stability(args: &BenchArgs) -> Result<()> {
+    use crate::bench;
+    let alphas = bench::STABILITY_ALPHAS;
+    let bar = progress_bar(alphas.len() as u64, "stability");
+    let report = bench::stability(&alphas, &|msg| {
+        bar.set_message(msg.to_string());
+        bar.inc(1);
+    })?;
+    bar.finish_and_clear();
+    let csv = args.out.join("stability.csv");
+    crate::output::write_atomic(&csv, bench::stability_csv(&report).as_bytes())?;
+    if args.json {
+        println!("{}", to_json(&report)?);
+    } else {
+        print!("{}", bench::stability_table(&report));
+        println!("wrote {}", csv.display());
+    }
+    Ok(())
+}
+
 fn to_json<T: Serialize>(value: &T) -> Result<String> {
     serde_json::to_string(value).map_err(|e| Error::failed(format!("cannot encode JSON: {e}")))
 }
@@ -342,4 +383,15 @@ fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
     }
     bar.set_prefix(what.to_string());
     bar
+}
+
+fn theory(args: &TheoryArgs) -> Result<()> {
+    let params = Params::paper(60.0)?.with(args.n, args.b, args.alpha)?;
+    let report = crate::theory::TheoryReport::compute(&params)?;
+    if args.json {
+        println!("{}", to_json(&report)?);
+    } else {
+        print!("{}", report.to_table());
+    }
+    Ok(())
 }

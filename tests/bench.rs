@@ -51,3 +51,25 @@ fn sweep_error_falls_monotonically_for_convergent_methods() {
         }
     }
 }
+
+#[test]
+fn stability_bisection_matches_the_linear_bound_for_symplectic_euler() {
+    let params = Params::paper(60.0).unwrap().with(4, 1.3, 60.0).unwrap();
+    let scene = BenchScene::new(params, 20.0, 200.0, 10).unwrap();
+    let omega_max = jacobs_ladder::theory::dispersion::omega_max_clamped(&params).unwrap();
+    let predicted = bench::predicted_dt(IntegratorKind::SymplecticEuler, omega_max, 0.02);
+    let critical = bench::critical_dt(
+        &scene,
+        IntegratorKind::SymplecticEuler,
+        predicted / 3.0,
+        0.005,
+    )
+    .unwrap();
+    let ratio = critical / predicted;
+    assert!(
+        (ratio - 1.0).abs() < 0.05,
+        "critical {critical}, predicted {predicted}"
+    );
+    // Past the bound the run is reported as diverged, not returned.
+    assert!(!bench::is_stable(&scene, IntegratorKind::SymplecticEuler, 1.2 * predicted).unwrap());
+}

@@ -89,9 +89,9 @@ impl Params {
         Ok(self)
     }
 
-    /// α in degrees.
+    /// α in degrees, rounded to 1e-9° so that 60 reads back as 60.
     pub fn alpha_deg(&self) -> f64 {
-        self.alpha.to_degrees()
+        (self.alpha.to_degrees() * 1e9).round() / 1e9
     }
 
     /// Rest length of the A springs, a = sqrt(b² + 4 s² cos²α) (supplement
