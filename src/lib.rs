@@ -2,7 +2,10 @@
 //! movies of "Topological antiqued mechanical toy" (Wada, Mizobata, Ueno,
 //! Yoneda). See `SPEC.md` for the conventions.
 
-pub mod model;
+pub mod encode;
 pub mod error;
+pub mod model;
+pub mod output;
+pub mod render;
 
 pub use error::{Error, Result};

@@ -34,10 +34,7 @@ pub fn orientation(i: usize, theta: f64) -> [f64; 2] {
 pub fn nodes(q: &[f64], i: usize) -> ([f64; 2], [f64; 2]) {
     let t = orientation(i, q[itheta(i)]);
     let (x, y) = (q[ix(i)], q[iy(i)]);
-    (
-        [x - R * t[0], y - R * t[1]],
-        [x + R * t[0], y + R * t[1]],
-    )
+    ([x - R * t[0], y - R * t[1]], [x + R * t[0], y + R * t[1]])
 }
 
 /// The ladder model: parameters plus the derived rest length a.
@@ -111,7 +108,9 @@ impl Ladder {
     /// Kinetic energy ½ m (Ẋ² + Ẏ²) + ½ I θ̇² summed over blocks.
     pub fn kinetic_energy(&self, v: &[f64]) -> f64 {
         v.chunks_exact(3)
-            .map(|b| 0.5 * M * (b[0] * b[0] + b[1] * b[1]) + 0.5 * self.params.inertia * b[2] * b[2])
+            .map(|b| {
+                0.5 * M * (b[0] * b[0] + b[1] * b[1]) + 0.5 * self.params.inertia * b[2] * b[2]
+            })
             .sum()
     }
 
@@ -230,7 +229,10 @@ mod tests {
         let lengths = |q: &[f64]| {
             let (mut la, mut lb) = (vec![0.0; n - 1], vec![0.0; n - 1]);
             ladder.spring_lengths(q, &mut la, &mut lb);
-            la.iter().zip(&lb).flat_map(|(a, b)| [*a, *b]).collect::<Vec<_>>()
+            la.iter()
+                .zip(&lb)
+                .flat_map(|(a, b)| [*a, *b])
+                .collect::<Vec<_>>()
         };
         let h = 1e-6;
         for col in 0..q.len() {
