@@ -14,6 +14,7 @@ use plotters::coord::Shift;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::element::{Drawable, PointCollection};
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters_backend::{BackendCoord, DrawingErrorKind};
 use std::ops::Range;
 use tiny_skia::Pixmap;
@@ -146,15 +147,18 @@ impl Series {
     }
 }
 
-/// Where the legend goes. `Auto` picks the inside corner that covers the
-/// fewest data; `Outside` reserves a column right of the plot.
+/// Where the legend goes. `Auto` picks an inside position (corners, then
+/// top and bottom middle) that covers no data, and reserves a column right
+/// of the plot (`Outside`) when every inside position would.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Legend {
     #[default]
     Auto,
     UpperLeft,
+    UpperMiddle,
     UpperRight,
     LowerLeft,
+    LowerMiddle,
     LowerRight,
     Outside,
     Hidden,
@@ -230,18 +234,31 @@ pub fn rasterize_svg(svg: &str, width: u32, height: u32) -> Result<Pixmap> {
 pub fn line_chart(spec: &ChartSpec, width: u32, height: u32) -> Result<Chart> {
     check_size(width, height)?;
     style::register_plotters_font();
-    let (xr, yr) = (data_range(spec, true)?, data_range(spec, false)?);
-    let (xr, yr) = if spec.equal_aspect {
-        let (pw, ph) = plot_area_size(spec, width, height, &xr, &yr)?;
-        equalize(xr, yr, pw, ph)
-    } else {
-        (xr, yr)
+    let (x0, y0) = (data_range(spec, true)?, data_range(spec, false)?);
+    let mut pass = Pass {
+        legend: if has_labels(spec) {
+            spec.legend
+        } else {
+            Legend::Hidden
+        },
+        probe: true,
     };
+    let (mut xr, mut yr) = (x0.clone(), y0.clone());
+    if spec.equal_aspect {
+        (xr, yr) = equalized(spec, pass, (width, height), x0.clone(), y0.clone())?;
+    }
+    if pass.legend == Legend::Auto {
+        pass.legend = probe(spec, pass, (width, height), xr.clone(), yr.clone())?.legend;
+        if pass.legend == Legend::Outside && spec.equal_aspect {
+            (xr, yr) = equalized(spec, pass, (width, height), x0, y0)?;
+        }
+    }
+    pass.probe = false;
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
-        draw_any(&root, spec, xr, yr)?;
+        draw_any(&root, spec, pass, xr, yr)?;
         root.present().map_err(plot_error)?;
     }
     let pixmap = rasterize_svg(&svg, width, height)?;
@@ -259,38 +276,76 @@ fn check_size(width: u32, height: u32) -> Result<()> {
 }
 
 /// Dispatches on the four combinations of linear and log axes.
-fn draw_any(root: &Area<'_>, spec: &ChartSpec, xr: Range<f64>, yr: Range<f64>) -> Result<Range2> {
+fn draw_any(
+    root: &Area<'_>,
+    spec: &ChartSpec,
+    pass: Pass,
+    xr: Range<f64>,
+    yr: Range<f64>,
+) -> Result<Probe> {
     match (spec.x.scale, spec.y.scale) {
-        (Scale::Linear, Scale::Linear) => draw_xy(root, spec, xr, yr),
-        (Scale::Linear, Scale::Log) => draw_xy(root, spec, xr, yr.log_scale()),
-        (Scale::Log, Scale::Linear) => draw_xy(root, spec, xr.log_scale(), yr),
-        (Scale::Log, Scale::Log) => draw_xy(root, spec, xr.log_scale(), yr.log_scale()),
+        (Scale::Linear, Scale::Linear) => draw_xy(root, spec, pass, xr, yr),
+        (Scale::Linear, Scale::Log) => draw_xy(root, spec, pass, xr, yr.log_scale()),
+        (Scale::Log, Scale::Linear) => draw_xy(root, spec, pass, xr.log_scale(), yr),
+        (Scale::Log, Scale::Log) => draw_xy(root, spec, pass, xr.log_scale(), yr.log_scale()),
     }
+}
+
+/// One drawing pass: the legend placement to use, and whether this is a
+/// layout probe on a scratch SVG (axes only, no series).
+#[derive(Clone, Copy, Debug)]
+struct Pass {
+    legend: Legend,
+    probe: bool,
+}
+
+/// What a pass found out: the plotting area and, for `Legend::Auto`, the
+/// placement that covers no data.
+struct Probe {
+    plot: Range2,
+    legend: Legend,
+}
+
+/// Lays the chart out on a scratch SVG.
+fn probe(
+    spec: &ChartSpec,
+    pass: Pass,
+    (w, h): (u32, u32),
+    xr: Range<f64>,
+    yr: Range<f64>,
+) -> Result<Probe> {
+    let mut scratch = String::new();
+    let root = SVGBackend::with_string(&mut scratch, (w, h)).into_drawing_area();
+    draw_any(
+        &root,
+        spec,
+        Pass {
+            probe: true,
+            ..pass
+        },
+        xr,
+        yr,
+    )
+}
+
+/// Ranges grown to equal scales for the plotting area of this layout.
+fn equalized(
+    spec: &ChartSpec,
+    pass: Pass,
+    size: (u32, u32),
+    xr: Range<f64>,
+    yr: Range<f64>,
+) -> Result<(Range<f64>, Range<f64>)> {
+    let (px, py) = probe(spec, pass, size, xr.clone(), yr.clone())?.plot;
+    let (pw, ph) = (
+        (px.end - px.start).max(1) as f64,
+        (py.end - py.start).max(1) as f64,
+    );
+    Ok(equalize(xr, yr, pw, ph))
 }
 
 /// Pixel ranges (horizontal, vertical) of the plotting area.
 type Range2 = (Range<i32>, Range<i32>);
-
-/// Size of the plotting area, found by laying the chart out on a scratch SVG.
-fn plot_area_size(
-    spec: &ChartSpec,
-    w: u32,
-    h: u32,
-    xr: &Range<f64>,
-    yr: &Range<f64>,
-) -> Result<(f64, f64)> {
-    let mut scratch = String::new();
-    let root = SVGBackend::with_string(&mut scratch, (w, h)).into_drawing_area();
-    let empty = ChartSpec {
-        series: Vec::new(),
-        ..spec.clone()
-    };
-    let (px, py) = draw_any(&root, &empty, xr.clone(), yr.clone())?;
-    Ok((
-        (px.end - px.start).max(1) as f64,
-        (py.end - py.start).max(1) as f64,
-    ))
-}
 
 /// Grows one range so that both axes have the same units per pixel.
 fn equalize(xr: Range<f64>, yr: Range<f64>, pw: f64, ph: f64) -> (Range<f64>, Range<f64>) {
@@ -416,17 +471,16 @@ fn superscript(e: i64) -> String {
 /// Left, right, top, bottom label areas and margins in pixels.
 const Y_LABEL_AREA: u32 = 64;
 const X_LABEL_AREA: u32 = 50;
-const LEGEND_OUTSIDE: u32 = 150;
 
-fn draw_xy<XS, YS>(root: &Area<'_>, spec: &ChartSpec, xs: XS, ys: YS) -> Result<Range2>
+fn draw_xy<XS, YS>(root: &Area<'_>, spec: &ChartSpec, pass: Pass, xs: XS, ys: YS) -> Result<Probe>
 where
     XS: AsRangedCoord<Value = f64>,
     YS: AsRangedCoord<Value = f64>,
     XS::CoordDescType: ValueFormatter<f64>,
     YS::CoordDescType: ValueFormatter<f64>,
 {
-    let area = if spec.legend == Legend::Outside && has_labels(spec) {
-        root.margin(0, LEGEND_OUTSIDE, 0, 0)
+    let area = if pass.legend == Legend::Outside {
+        root.margin(0, 0, 0, legend_box(spec).0 as u32 + 8)
     } else {
         root.clone()
     };
@@ -439,6 +493,14 @@ where
         builder.caption(t, font(size::TITLE).into_font().color(&rgb(DARK)));
     }
     let mut chart = builder.build_cartesian_2d(xs, ys).map_err(plot_error)?;
+    let plot = chart.plotting_area().get_pixel_range();
+    if pass.probe {
+        let legend = match pass.legend {
+            Legend::Auto => auto_legend(&chart, spec),
+            other => other,
+        };
+        return Ok(Probe { plot, legend });
+    }
     draw_mesh(&mut chart, spec)?;
     if spec.zero_lines {
         draw_zero_lines(&mut chart)?;
@@ -446,8 +508,15 @@ where
     for s in &spec.series {
         draw_series(&mut chart, s, spec)?;
     }
-    draw_legend(&mut chart, spec)?;
-    Ok(chart.plotting_area().get_pixel_range())
+    if pass.legend == Legend::Outside {
+        draw_outside_legend(root, spec, (plot.0.end + 12, plot.1.start))?;
+    } else {
+        draw_legend(&mut chart, spec, pass.legend)?;
+    }
+    Ok(Probe {
+        plot,
+        legend: pass.legend,
+    })
 }
 
 type Ctx<'a, 'b, X, Y> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, Y>>;
@@ -644,15 +713,18 @@ fn has_labels(spec: &ChartSpec) -> bool {
     spec.series.iter().any(|s| s.label.is_some())
 }
 
-fn draw_legend<'a, 'b: 'a, X, Y>(chart: &mut Ctx<'a, 'b, X, Y>, spec: &ChartSpec) -> Result<()>
+fn draw_legend<'a, 'b: 'a, X, Y>(
+    chart: &mut Ctx<'a, 'b, X, Y>,
+    spec: &ChartSpec,
+    legend: Legend,
+) -> Result<()>
 where
     X: Ranged<ValueType = f64>,
     Y: Ranged<ValueType = f64>,
 {
-    if spec.legend == Legend::Hidden || !has_labels(spec) {
+    let Some(pos) = label_position(legend) else {
         return Ok(());
-    }
-    let pos = legend_position(chart, spec);
+    };
     // Re-register labelled series as empty draws that only carry a legend.
     for s in spec.series.iter().filter(|s| s.label.is_some()) {
         let label = s.label.clone().unwrap_or_default();
@@ -682,43 +754,81 @@ where
         .map_err(plot_error)
 }
 
-/// The requested corner, or for `Auto` the corner whose legend box covers
-/// the fewest sampled points of the series (ties: upper right first).
-fn legend_position<X, Y>(chart: &Ctx<'_, '_, X, Y>, spec: &ChartSpec) -> SeriesLabelPosition
+/// A legend right of the plot: one row per labelled series, glyph then
+/// text, starting at pixel `(x, y)` of the whole chart.
+fn draw_outside_legend(root: &Area<'_>, spec: &ChartSpec, (x, y): (i32, i32)) -> Result<()> {
+    let row = (size::TICK * 1.55) as i32;
+    let text_style = font(size::TICK)
+        .into_font()
+        .color(&rgb(DARK))
+        .pos(Pos::new(HPos::Left, VPos::Center));
+    let labelled = spec
+        .series
+        .iter()
+        .filter_map(|s| s.label.as_ref().map(|l| (s, l)));
+    for (k, (s, label)) in labelled.enumerate() {
+        let at = (x, y + row / 2 + k as i32 * row);
+        let glyph = Glyph {
+            at,
+            line: s.line,
+            marker: s.marker,
+            color: s.color,
+            width: s.width,
+            offset: LEGEND_LINE / 2,
+        };
+        root.draw(&glyph).map_err(plot_error)?;
+        let text = Text::new(
+            label.as_str(),
+            (at.0 + LEGEND_LINE + 6, at.1),
+            text_style.clone(),
+        );
+        root.draw(&text).map_err(plot_error)?;
+    }
+    Ok(())
+}
+
+/// Plotters' placement for a resolved legend; `None` draws no legend.
+fn label_position(legend: Legend) -> Option<SeriesLabelPosition> {
+    use SeriesLabelPosition as P;
+    Some(match legend {
+        Legend::UpperLeft => P::UpperLeft,
+        Legend::UpperMiddle => P::UpperMiddle,
+        Legend::UpperRight | Legend::Auto => P::UpperRight,
+        Legend::LowerLeft => P::LowerLeft,
+        Legend::LowerMiddle => P::LowerMiddle,
+        Legend::LowerRight => P::LowerRight,
+        Legend::Outside | Legend::Hidden => return None,
+    })
+}
+
+/// The first inside placement whose legend box covers no sampled data
+/// pixel (upper right, upper left, lower right, lower left, upper middle,
+/// lower middle), else `Outside`.
+fn auto_legend<X, Y>(chart: &Ctx<'_, '_, X, Y>, spec: &ChartSpec) -> Legend
 where
     X: Ranged<ValueType = f64>,
     Y: Ranged<ValueType = f64>,
 {
-    use SeriesLabelPosition as P;
-    match spec.legend {
-        Legend::UpperLeft => return P::UpperLeft,
-        Legend::UpperRight => return P::UpperRight,
-        Legend::LowerLeft => return P::LowerLeft,
-        Legend::LowerRight => return P::LowerRight,
-        Legend::Outside => {
-            let (px, py) = chart.plotting_area().get_pixel_range();
-            return P::Coordinate(px.end - px.start + 16, py.start.min(0).abs());
-        }
-        _ => {}
-    }
     let (px, py) = chart.plotting_area().get_pixel_range();
     let (bw, bh) = legend_box(spec);
     let pts = sampled_pixels(chart, spec);
-    let corners = [
-        (P::UpperRight, px.end - bw, py.start),
-        (P::UpperLeft, px.start, py.start),
-        (P::LowerRight, px.end - bw, py.end - bh),
-        (P::LowerLeft, px.start, py.end - bh),
+    let mid = (px.start + px.end - bw) / 2;
+    let candidates = [
+        (Legend::UpperRight, px.end - bw, py.start),
+        (Legend::UpperLeft, px.start, py.start),
+        (Legend::LowerRight, px.end - bw, py.end - bh),
+        (Legend::LowerLeft, px.start, py.end - bh),
+        (Legend::UpperMiddle, mid, py.start),
+        (Legend::LowerMiddle, mid, py.end - bh),
     ];
-    let covered = |x0: i32, y0: i32| {
-        pts.iter()
-            .filter(|p| p.0 >= x0 && p.0 <= x0 + bw && p.1 >= y0 && p.1 <= y0 + bh)
-            .count()
+    let free = |x0: i32, y0: i32| {
+        !pts.iter()
+            .any(|p| p.0 >= x0 && p.0 <= x0 + bw && p.1 >= y0 && p.1 <= y0 + bh)
     };
-    corners
+    candidates
         .into_iter()
-        .min_by_key(|(_, x0, y0)| covered(*x0, *y0))
-        .map_or(P::UpperRight, |c| c.0)
+        .find(|(_, x0, y0)| free(*x0, *y0))
+        .map_or(Legend::Outside, |c| c.0)
 }
 
 /// Estimated legend box in pixels (with its margin).
@@ -884,7 +994,7 @@ fn draw_heatmap(area: &Area<'_>, k: &Kymograph<'_>) -> Result<()> {
         .configure_mesh()
         .disable_mesh()
         .x_desc("block n")
-        .y_desc(format!("{}  (time runs down)", k.time_label))
+        .y_desc(k.time_label)
         .x_labels(k.n.min(12))
         .y_labels(8)
         .x_label_formatter(&xf)

@@ -92,8 +92,9 @@ fn bands(panels: &[Panel]) -> (u32, u32) {
     (l, c)
 }
 
-/// Places panels in a grid (row-major). Cells share the size of the largest
-/// image; smaller images are centred in their cell.
+/// Places panels in a grid (row-major). Each column is as wide as its
+/// widest image and each row as tall as its tallest; images are centred in
+/// their cells.
 pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
     if panels.is_empty() || layout.columns == 0 {
         return Err(Error::bad_input(
@@ -102,17 +103,21 @@ pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
     }
     let cols = layout.columns.min(panels.len());
     let rows = panels.len().div_ceil(cols);
-    let cell_w = panels.iter().map(|p| p.image.width()).max().unwrap_or(1);
-    let img_h = panels.iter().map(|p| p.image.height()).max().unwrap_or(1);
+    let mut col_w = vec![0u32; cols];
+    let mut row_h = vec![0u32; rows];
+    for (k, p) in panels.iter().enumerate() {
+        col_w[k % cols] = col_w[k % cols].max(p.image.width());
+        row_h[k / cols] = row_h[k / cols].max(p.image.height());
+    }
     let (label_h, caption_h) = bands(panels);
-    let cell_h = label_h + img_h + caption_h;
     let title_h = layout
         .title
         .as_ref()
         .map_or(0, |_| (size::TITLE * 1.8) as u32);
     let (m, g) = (layout.margin, layout.gap);
-    let width = 2 * m + cols as u32 * cell_w + (cols as u32 - 1) * g;
-    let height = 2 * m + title_h + rows as u32 * cell_h + (rows as u32 - 1) * g;
+    let width = 2 * m + col_w.iter().sum::<u32>() + (cols as u32 - 1) * g;
+    let cells_h: u32 = row_h.iter().map(|h| h + label_h + caption_h).sum();
+    let height = 2 * m + title_h + cells_h + (rows as u32 - 1) * g;
     let mut out =
         style::white_pixmap(width, height).ok_or_else(|| snapshot::bad_size(width, height))?;
     if let Some(t) = &layout.title {
@@ -126,10 +131,21 @@ pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
             (HAlign::Center, VAlign::Top),
         );
     }
+    let offsets = |sizes: &[u32], extra: u32| -> Vec<u32> {
+        sizes
+            .iter()
+            .scan(0, |acc, s| {
+                let at = *acc;
+                *acc += s + extra + g;
+                Some(at)
+            })
+            .collect()
+    };
+    let (xs, ys) = (offsets(&col_w, 0), offsets(&row_h, label_h + caption_h));
     for (k, p) in panels.iter().enumerate() {
-        let x = m + (k % cols) as u32 * (cell_w + g);
-        let y = m + title_h + (k / cols) as u32 * (cell_h + g);
-        draw_panel(&mut out, p, (x, y), (cell_w, img_h), (label_h, caption_h));
+        let (c, r) = (k % cols, k / cols);
+        let at = (m + xs[c], m + title_h + ys[r]);
+        draw_panel(&mut out, p, at, (col_w[c], row_h[r]), (label_h, caption_h));
     }
     Ok(out)
 }
@@ -213,7 +229,7 @@ pub fn filmstrip(ladder: &Ladder, frames: &[Frame<'_>], opts: &FilmstripOptions)
         panels.push(Panel::new(img).caption(snapshot::time_label(f.time)));
     }
     let mut layout = Layout::row(panels.len());
-    layout.gap = 0;
+    layout.gap = 6;
     // A label without a title still gets the title band, above the frames.
     layout.title = opts
         .title
