@@ -46,8 +46,11 @@ pub const TRANSPARENT_INDEX: u8 = 255;
 /// a 32×32×32 lookup table from RGB to the nearest entry.
 pub struct Palette {
     colors: Vec<Rgb>,
-    lut: Vec<u8>,
+    lut: Box<[u8; LUT_SIZE]>,
 }
+
+/// Entries of the 32×32×32 lookup table.
+const LUT_SIZE: usize = 1 << 15;
 
 impl Palette {
     /// Builds a palette of white, `steps` ramp colours from white to each
@@ -89,6 +92,12 @@ impl Palette {
         self.lut[lut_key(c)]
     }
 
+    /// Index of the palette entry for an RGBA pixel (alpha ignored).
+    #[inline(always)]
+    fn index_px(&self, px: &[u8]) -> u8 {
+        self.lut[lut_key([px[0], px[1], px[2]])]
+    }
+
     /// The colour of `index`.
     pub fn color(&self, index: u8) -> Rgb {
         self.colors.get(index as usize).copied().unwrap_or(WHITE)
@@ -110,14 +119,15 @@ fn ramp(a: Rgb, j: usize, steps: usize) -> Rgb {
 
 #[inline(always)]
 fn lut_key(c: Rgb) -> usize {
-    ((c[0] as usize >> 3) << 10) | ((c[1] as usize >> 3) << 5) | (c[2] as usize >> 3)
+    (((c[0] as usize >> 3) << 10) | ((c[1] as usize >> 3) << 5) | (c[2] as usize >> 3))
+        & (LUT_SIZE - 1)
 }
 
 /// Nearest palette entry for the centre of every LUT cell, then the exact
 /// palette colours (white, anchors and extras last, so they win) pinned to
 /// their own cells.
-fn build_lut(colors: &[Rgb], anchors: &[Rgb], extras: &[Rgb]) -> Vec<u8> {
-    let mut lut = vec![0u8; 1 << 15];
+fn build_lut(colors: &[Rgb], anchors: &[Rgb], extras: &[Rgb]) -> Box<[u8; LUT_SIZE]> {
+    let mut lut = Box::new([0u8; LUT_SIZE]);
     for (key, slot) in lut.iter_mut().enumerate() {
         let centre = [(key >> 10) & 31, (key >> 5) & 31, key & 31].map(|v| (v << 3 | 4) as i32);
         *slot = nearest(colors, centre);
@@ -283,27 +293,33 @@ impl GifWriter {
     /// transparent (the decoder keeps what it showed).
     fn fill_indices(&mut self, data: &[u8], rect: Rect) {
         let w = self.width as usize;
+        let pal = self.palette;
         self.indices.clear();
-        let prev = self.previous.as_deref();
         for y in rect.y0 as usize..rect.y1 as usize {
             let row = (y * w + rect.x0 as usize) * 4..(y * w + rect.x1 as usize) * 4;
-            let cur = data[row.clone()].chunks_exact(4);
-            match prev {
-                Some(p) => self
-                    .indices
-                    .extend(cur.zip(p[row].chunks_exact(4)).map(|(c, o)| {
-                        if c == o {
-                            TRANSPARENT_INDEX
-                        } else {
-                            self.palette.index([c[0], c[1], c[2]])
-                        }
-                    })),
+            let cur = &data[row.clone()];
+            match self.previous.as_deref() {
+                Some(p) => map_changed(pal, cur, &p[row], &mut self.indices),
                 None => self
                     .indices
-                    .extend(cur.map(|c| self.palette.index([c[0], c[1], c[2]]))),
+                    .extend(cur.chunks_exact(4).map(|c| pal.index_px(c))),
             }
         }
     }
+}
+
+/// Appends the palette index of each pixel of `cur`, or the transparent
+/// index where it equals `prev`.
+#[inline]
+fn map_changed(pal: &Palette, cur: &[u8], prev: &[u8], out: &mut Vec<u8>) {
+    let word = |c: &[u8]| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]);
+    out.extend(cur.chunks_exact(4).zip(prev.chunks_exact(4)).map(|(c, o)| {
+        if word(c) == word(o) {
+            TRANSPARENT_INDEX
+        } else {
+            pal.index_px(c)
+        }
+    }));
 }
 
 /// A pixel rectangle [x0, x1) × [y0, y1).
@@ -325,7 +341,7 @@ fn changed_rect(prev: &[u8], cur: &[u8], w: usize) -> Option<Rect> {
         if p == c {
             continue;
         }
-        let px = |i: usize| &p[4 * i..4 * i + 4] != &c[4 * i..4 * i + 4];
+        let px = |i: usize| p[4 * i..4 * i + 4] != c[4 * i..4 * i + 4];
         let first = (0..w).find(|&i| px(i)).unwrap_or(0);
         let last = (first..w).rev().find(|&i| px(i)).unwrap_or(first);
         x0 = x0.min(first);

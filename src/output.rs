@@ -46,6 +46,18 @@ where
     })
 }
 
+/// Fails early, before any work, when the folder of `path` cannot be
+/// created or written: creates it, then creates and removes a probe file.
+pub fn check_writable(path: &Path) -> Result<()> {
+    let dir = parent_dir(path);
+    ensure_dir(&dir)?;
+    let probe = dir.join(format!(".ladder-probe-{}", std::process::id()));
+    fs::File::create(&probe).map_err(|e| io_error(&dir, &e))?;
+    // Best effort: the probe is empty and hidden.
+    let _ = fs::remove_file(probe);
+    Ok(())
+}
+
 /// `path` joined onto `dir` after creating `dir`.
 pub fn file_in(dir: &Path, name: &str) -> Result<PathBuf> {
     ensure_dir(dir)?;

@@ -5,7 +5,7 @@ mod common;
 use common::golden::rgba;
 use common::scenes::{domain_wall, kink_state, ladder, ladder_with};
 use jacobs_ladder::encode::{GifWriter, Palette, TRANSPARENT_INDEX, png_bytes};
-use jacobs_ladder::output::{write_atomic, write_atomic_with};
+use jacobs_ladder::output::{check_writable, write_atomic, write_atomic_with};
 use jacobs_ladder::render::charts::{self, line_chart};
 use jacobs_ladder::render::compose::filmstrip;
 use jacobs_ladder::render::snapshot::{render_snapshot, render_snapshot_into};

@@ -179,7 +179,7 @@ pub struct Snapshot<'a> {
     pub q: &'a [f64],
     /// A second state drawn in grey underneath (e.g. the ground state).
     pub ghost: Option<&'a [f64]>,
-    /// Time in units of τ, shown as "t/τ = 1234" at the bottom left.
+    /// Time in units of τ, shown as "t/τ = 1234" centred at the bottom.
     pub time: Option<f64>,
     /// Title shown at the top.
     pub title: Option<&'a str>,
@@ -319,7 +319,9 @@ fn draw_labels(pixmap: &mut Pixmap, region: Region, margin: f32, snap: &Snapshot
         );
     }
     if let Some(t) = snap.time {
-        let at = (region.x + margin, region.y + region.h - margin);
+        // Centred under the ladder: in movies the changed rectangle of each
+        // frame then stays narrow (see `encode::GifWriter`).
+        let at = (region.x + 0.5 * region.w, region.y + region.h - margin);
         let label = time_label(t);
         style::draw_text(
             pixmap,
@@ -327,7 +329,7 @@ fn draw_labels(pixmap: &mut Pixmap, region: Region, margin: f32, snap: &Snapshot
             at,
             size::LABEL,
             DARK,
-            (HAlign::Left, VAlign::Baseline),
+            (HAlign::Center, VAlign::Baseline),
         );
     }
 }
