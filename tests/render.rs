@@ -253,6 +253,10 @@ fn unwritable_folder_is_bad_input() {
         msg.starts_with("cannot write to ") && msg.contains("plain"),
         "{msg}"
     );
+    let e = check_writable(&file.join("x.png")).unwrap_err();
+    assert!(matches!(e, Error::BadInput(_)));
+    one_line(&e);
+    check_writable(&dir.join("new").join("x.png")).unwrap();
 }
 
 #[test]
