@@ -81,5 +81,10 @@ fn bench(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, bench);
+criterion_group! {
+    name = benches;
+    // No HTML plots: criterion's plotters backend finds no system font here.
+    config = Criterion::default().without_plots();
+    targets = bench
+}
 criterion_main!(benches);

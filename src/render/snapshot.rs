@@ -117,9 +117,13 @@ impl Bounds {
 /// A rectangle of pixels on a canvas.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Region {
+    /// Left edge in pixels.
     pub x: f32,
+    /// Top edge in pixels.
     pub y: f32,
+    /// Width in pixels.
     pub w: f32,
+    /// Height in pixels.
     pub h: f32,
 }
 
