@@ -3,14 +3,18 @@
 //! Yoneda). See `SPEC.md` for the conventions.
 //!
 //! Floors, from the ground up: `model` (parameters, energy, forces);
-//! `sim` (integrators, drives, observables) and `theory` (linear analysis)
-//! on the model; `catalog` and `bench` bring them together; `cli` on top.
+//! `sim` (integrators, drives, observables), `theory` (linear analysis) and
+//! `render` (pixels of a ladder state, charts) on the model; `encode` and
+//! `output` know nothing of it; `catalog` and `bench` bring them together;
+//! `cli` on top.
 
 // Numerical loops index several arrays with one index, as the formulas do.
 #![allow(clippy::needless_range_loop)]
 
+pub mod encode;
 pub mod error;
 pub mod model;
+pub mod render;
 pub mod sim;
 pub mod theory;
 

@@ -1,0 +1,417 @@
+//! PNG and GIF bytes from pixels. Knows nothing else of the project.
+//!
+//! Frames are opaque `tiny_skia::Pixmap`s (the renderers fill a white
+//! background first). PNG goes through the `image` crate; GIF through the
+//! `gif` crate with one fixed global palette made for our scenes (ramps from
+//! the white background to each drawing colour), mapped by a 32×32×32 lookup
+//! table, so no per-frame quantiser runs and the output is deterministic.
+//! Each GIF frame after the first encodes only the bounding box of the pixels
+//! that changed, with unchanged pixels inside that box transparent.
+
+use crate::error::{Error, Result};
+use std::borrow::Cow;
+use std::sync::OnceLock;
+use tiny_skia::Pixmap;
+
+/// An sRGB colour without alpha.
+pub type Rgb = [u8; 3];
+
+/// Background of every scene.
+pub const WHITE: Rgb = [255, 255, 255];
+
+/// Colours the scene palette ramps to from white: dark grey (blocks, text,
+/// axes), red (A springs, A ends), blue (B ends), green (B springs), and the
+/// two ends of the kymograph's diverging map. `render::style` uses exactly
+/// these values.
+pub const PALETTE_ANCHORS: [Rgb; 6] = [
+    [34, 34, 34],
+    [214, 39, 40],
+    [31, 119, 180],
+    [44, 160, 44],
+    [33, 102, 172],
+    [178, 24, 43],
+];
+
+/// Colours added to the palette verbatim (not ramps): mid grey for the
+/// ground state underneath, and pure black.
+pub const PALETTE_EXTRAS: [Rgb; 2] = [[150, 150, 150], [0, 0, 0]];
+
+/// Ramp steps from white to each anchor (the anchor itself is the last step).
+const RAMP_STEPS: usize = 42;
+
+/// The palette index that marks "unchanged since the previous frame".
+pub const TRANSPARENT_INDEX: u8 = 255;
+
+/// A global GIF palette (at most 255 colours; index 255 is transparent) with
+/// a 32×32×32 lookup table from RGB to the nearest entry.
+pub struct Palette {
+    colors: Vec<Rgb>,
+    lut: Box<[u8; LUT_SIZE]>,
+}
+
+/// Entries of the 32×32×32 lookup table.
+const LUT_SIZE: usize = 1 << 15;
+
+impl Palette {
+    /// Builds a palette of white, `steps` ramp colours from white to each
+    /// anchor, and the extra colours. Every palette colour maps to itself
+    /// exactly; other colours map to the nearest entry of their LUT cell.
+    pub fn new(anchors: &[Rgb], steps: usize, extras: &[Rgb]) -> Result<Self> {
+        let mut colors = vec![WHITE];
+        for a in anchors {
+            colors.extend((1..=steps).map(|j| ramp(*a, j, steps)));
+        }
+        colors.extend_from_slice(extras);
+        if colors.len() > TRANSPARENT_INDEX as usize {
+            return Err(Error::bad_input(format!(
+                "a GIF palette holds at most 255 colours, this one has {}",
+                colors.len()
+            )));
+        }
+        let lut = build_lut(&colors, anchors, extras);
+        Ok(Self { colors, lut })
+    }
+
+    /// The palette used for every movie of the program.
+    pub fn scene() -> &'static Palette {
+        static SCENE: OnceLock<Palette> = OnceLock::new();
+        SCENE.get_or_init(|| {
+            Palette::new(&PALETTE_ANCHORS, RAMP_STEPS, &PALETTE_EXTRAS)
+                .unwrap_or_else(|_| unreachable!("the scene palette has 255 colours"))
+        })
+    }
+
+    /// The palette's colours in index order.
+    pub fn colors(&self) -> &[Rgb] {
+        &self.colors
+    }
+
+    /// Index of the palette entry for `c` (table lookup).
+    #[inline(always)]
+    pub fn index(&self, c: Rgb) -> u8 {
+        self.lut[lut_key(c)]
+    }
+
+    /// Index of the palette entry for an RGBA pixel (alpha ignored).
+    #[inline(always)]
+    fn index_px(&self, px: &[u8]) -> u8 {
+        self.lut[lut_key([px[0], px[1], px[2]])]
+    }
+
+    /// The colour of `index`.
+    pub fn color(&self, index: u8) -> Rgb {
+        self.colors.get(index as usize).copied().unwrap_or(WHITE)
+    }
+
+    /// The palette as `[r, g, b, ...]`, padded to 256 entries.
+    fn gif_table(&self) -> Vec<u8> {
+        let mut t: Vec<u8> = self.colors.iter().flatten().copied().collect();
+        t.resize(256 * 3, 255);
+        t
+    }
+}
+
+/// Step `j` of `steps` from white to `a` (step `steps` is `a` itself).
+fn ramp(a: Rgb, j: usize, steps: usize) -> Rgb {
+    let f = j as f64 / steps as f64;
+    a.map(|c| (255.0 + (c as f64 - 255.0) * f).round() as u8)
+}
+
+#[inline(always)]
+fn lut_key(c: Rgb) -> usize {
+    (((c[0] as usize >> 3) << 10) | ((c[1] as usize >> 3) << 5) | (c[2] as usize >> 3))
+        & (LUT_SIZE - 1)
+}
+
+/// Nearest palette entry for the centre of every LUT cell, then the exact
+/// palette colours (white, anchors and extras last, so they win) pinned to
+/// their own cells.
+fn build_lut(colors: &[Rgb], anchors: &[Rgb], extras: &[Rgb]) -> Box<[u8; LUT_SIZE]> {
+    let mut lut = Box::new([0u8; LUT_SIZE]);
+    for (key, slot) in lut.iter_mut().enumerate() {
+        let centre = [(key >> 10) & 31, (key >> 5) & 31, key & 31].map(|v| (v << 3 | 4) as i32);
+        *slot = nearest(colors, centre);
+    }
+    let pinned = colors.iter().chain(anchors).chain(extras).chain([&WHITE]);
+    for c in pinned {
+        if let Some(i) = colors.iter().position(|p| p == c) {
+            lut[lut_key(*c)] = i as u8;
+        }
+    }
+    lut
+}
+
+fn nearest(colors: &[Rgb], c: [i32; 3]) -> u8 {
+    let dist = |p: &Rgb| -> i32 {
+        let d = [0, 1, 2].map(|k| p[k] as i32 - c[k]);
+        2 * d[0] * d[0] + 4 * d[1] * d[1] + 3 * d[2] * d[2]
+    };
+    let best = colors
+        .iter()
+        .enumerate()
+        .min_by_key(|(_, p)| dist(p))
+        .map_or(0, |(i, _)| i);
+    best as u8
+}
+
+/// PNG bytes of an opaque or translucent pixmap (alpha is demultiplied).
+pub fn png_bytes(pixmap: &Pixmap) -> Result<Vec<u8>> {
+    let (w, h) = (pixmap.width(), pixmap.height());
+    let mut rgba = Vec::with_capacity((w * h * 4) as usize);
+    for p in pixmap.pixels() {
+        let c = p.demultiply();
+        rgba.extend_from_slice(&[c.red(), c.green(), c.blue(), c.alpha()]);
+    }
+    let mut out = Vec::new();
+    let encoder = image::codecs::png::PngEncoder::new(&mut out);
+    image::ImageEncoder::write_image(encoder, &rgba, w, h, image::ExtendedColorType::Rgba8)
+        .map_err(|e| Error::failed(format!("PNG encoding failed: {e}")))?;
+    Ok(out)
+}
+
+/// Streaming GIF encoder: push frames, then `finish` for the bytes.
+///
+/// Infinite loop, one global palette, per-frame delays from `fps` (rounded so
+/// that the total duration never drifts), and only the changed rectangle of
+/// each frame encoded.
+pub struct GifWriter {
+    encoder: gif::Encoder<Vec<u8>>,
+    palette: &'static Palette,
+    width: u32,
+    height: u32,
+    fps: f64,
+    frames: usize,
+    previous: Option<Vec<u8>>,
+    indices: Vec<u8>,
+}
+
+impl GifWriter {
+    /// A writer for `width × height` frames shown at `fps` frames per second.
+    pub fn new(width: u32, height: u32, fps: f64) -> Result<Self> {
+        Self::with_palette(width, height, fps, Palette::scene())
+    }
+
+    /// Same as [`GifWriter::new`] with a caller-given palette.
+    pub fn with_palette(
+        width: u32,
+        height: u32,
+        fps: f64,
+        palette: &'static Palette,
+    ) -> Result<Self> {
+        check_gif_size(width, height)?;
+        if !(fps.is_finite() && fps > 0.0 && fps <= 100.0) {
+            return Err(Error::bad_input(format!(
+                "fps must be a number in (0, 100], got {fps}"
+            )));
+        }
+        let table = palette.gif_table();
+        let mut encoder = gif::Encoder::new(Vec::new(), width as u16, height as u16, &table)
+            .map_err(gif_error)?;
+        encoder
+            .set_repeat(gif::Repeat::Infinite)
+            .map_err(gif_error)?;
+        Ok(Self {
+            encoder,
+            palette,
+            width,
+            height,
+            fps,
+            frames: 0,
+            previous: None,
+            indices: Vec::new(),
+        })
+    }
+
+    /// Number of frames pushed so far.
+    pub fn frames(&self) -> usize {
+        self.frames
+    }
+
+    /// Appends one frame; it must have the writer's size.
+    pub fn push_frame(&mut self, pixmap: &Pixmap) -> Result<()> {
+        if (pixmap.width(), pixmap.height()) != (self.width, self.height) {
+            return Err(Error::bad_input(format!(
+                "GIF frame is {}x{}, the movie is {}x{}",
+                pixmap.width(),
+                pixmap.height(),
+                self.width,
+                self.height
+            )));
+        }
+        let data = pixmap.data();
+        let rect = match &self.previous {
+            None => Some(Rect {
+                x0: 0,
+                y0: 0,
+                x1: self.width,
+                y1: self.height,
+            }),
+            Some(prev) => changed_rect(prev, data, self.width as usize),
+        };
+        let rect = rect.unwrap_or(Rect {
+            x0: 0,
+            y0: 0,
+            x1: 1,
+            y1: 1,
+        });
+        self.fill_indices(data, rect);
+        let frame = gif::Frame {
+            delay: self.delay(self.frames),
+            dispose: gif::DisposalMethod::Keep,
+            transparent: Some(TRANSPARENT_INDEX),
+            left: rect.x0 as u16,
+            top: rect.y0 as u16,
+            width: (rect.x1 - rect.x0) as u16,
+            height: (rect.y1 - rect.y0) as u16,
+            buffer: Cow::Borrowed(&self.indices),
+            ..gif::Frame::default()
+        };
+        self.encoder.write_frame(&frame).map_err(gif_error)?;
+        match &mut self.previous {
+            Some(prev) => prev.copy_from_slice(data),
+            None => self.previous = Some(data.to_vec()),
+        }
+        self.frames += 1;
+        Ok(())
+    }
+
+    /// Finishes the stream and returns the GIF bytes.
+    pub fn finish(self) -> Result<Vec<u8>> {
+        if self.frames == 0 {
+            return Err(Error::failed("a GIF needs at least one frame"));
+        }
+        self.encoder.into_inner().map_err(gif_error)
+    }
+
+    /// Delay of frame `k` in 1/100 s: differences of rounded cumulative times.
+    fn delay(&self, k: usize) -> u16 {
+        let t = |k: usize| (k as f64 * 100.0 / self.fps).round() as i64;
+        (t(k + 1) - t(k)).clamp(1, u16::MAX as i64) as u16
+    }
+
+    /// Palette indices of `rect`; pixels equal to the previous frame become
+    /// transparent (the decoder keeps what it showed).
+    fn fill_indices(&mut self, data: &[u8], rect: Rect) {
+        let w = self.width as usize;
+        let pal = self.palette;
+        self.indices.clear();
+        for y in rect.y0 as usize..rect.y1 as usize {
+            let row = (y * w + rect.x0 as usize) * 4..(y * w + rect.x1 as usize) * 4;
+            let cur = &data[row.clone()];
+            match self.previous.as_deref() {
+                Some(p) => map_changed(pal, cur, &p[row], &mut self.indices),
+                None => self
+                    .indices
+                    .extend(cur.chunks_exact(4).map(|c| pal.index_px(c))),
+            }
+        }
+    }
+}
+
+/// Appends the palette index of each pixel of `cur`, or the transparent
+/// index where it equals `prev`.
+#[inline]
+fn map_changed(pal: &Palette, cur: &[u8], prev: &[u8], out: &mut Vec<u8>) {
+    let word = |c: &[u8]| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]);
+    out.extend(cur.chunks_exact(4).zip(prev.chunks_exact(4)).map(|(c, o)| {
+        if word(c) == word(o) {
+            TRANSPARENT_INDEX
+        } else {
+            pal.index_px(c)
+        }
+    }));
+}
+
+/// A pixel rectangle [x0, x1) × [y0, y1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Rect {
+    x0: u32,
+    y0: u32,
+    x1: u32,
+    y1: u32,
+}
+
+/// Bounding box of the pixels that differ between two RGBA buffers of row
+/// width `w`; `None` when they are identical.
+fn changed_rect(prev: &[u8], cur: &[u8], w: usize) -> Option<Rect> {
+    let stride = w * 4;
+    let rows = prev.chunks_exact(stride).zip(cur.chunks_exact(stride));
+    let (mut x0, mut x1, mut y0, mut y1) = (w, 0, usize::MAX, 0);
+    for (y, (p, c)) in rows.enumerate() {
+        if p == c {
+            continue;
+        }
+        let px = |i: usize| p[4 * i..4 * i + 4] != c[4 * i..4 * i + 4];
+        let first = (0..w).find(|&i| px(i)).unwrap_or(0);
+        let last = (first..w).rev().find(|&i| px(i)).unwrap_or(first);
+        x0 = x0.min(first);
+        x1 = x1.max(last + 1);
+        y0 = y0.min(y);
+        y1 = y + 1;
+    }
+    (y0 != usize::MAX).then_some(Rect {
+        x0: x0 as u32,
+        y0: y0 as u32,
+        x1: x1 as u32,
+        y1: y1 as u32,
+    })
+}
+
+fn check_gif_size(width: u32, height: u32) -> Result<()> {
+    let ok = |v: u32| (1..=u16::MAX as u32).contains(&v);
+    if ok(width) && ok(height) {
+        Ok(())
+    } else {
+        Err(Error::bad_input(format!(
+            "GIF size must be between 1x1 and 65535x65535 pixels, got {width}x{height}"
+        )))
+    }
+}
+
+fn gif_error(e: gif::EncodingError) -> Error {
+    Error::failed(format!("GIF encoding failed: {e}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn palette_colours_map_to_themselves() {
+        let p = Palette::scene();
+        for c in PALETTE_ANCHORS
+            .iter()
+            .chain(&PALETTE_EXTRAS)
+            .chain([&WHITE])
+        {
+            assert_eq!(p.color(p.index(*c)), *c);
+        }
+        assert!(p.colors().len() <= 255);
+    }
+
+    #[test]
+    fn delays_do_not_drift() {
+        let w = GifWriter::new(4, 4, 30.0).unwrap();
+        let total: u32 = (0..30).map(|k| w.delay(k) as u32).sum();
+        assert_eq!(total, 100);
+    }
+
+    #[test]
+    fn changed_rect_finds_box() {
+        let a = vec![0u8; 4 * 5 * 3];
+        let mut b = a.clone();
+        b[4 * (5 + 2)] = 9;
+        b[4 * (2 * 5 + 3) + 1] = 9;
+        let r = changed_rect(&a, &b, 5).unwrap();
+        assert_eq!(
+            r,
+            Rect {
+                x0: 2,
+                y0: 1,
+                x1: 4,
+                y1: 3
+            }
+        );
+        assert!(changed_rect(&a, &a, 5).is_none());
+    }
+}

@@ -1,0 +1,259 @@
+//! Composition: panels in a grid with labels such as "(a1)" and captions,
+//! a common margin and title; filmstrips of snapshots side by side (paper
+//! Fig. 1c and Fig. 3).
+
+use super::snapshot::{self, Region, Snapshot, View};
+use super::style::{self, DARK, HAlign, VAlign, size};
+use crate::error::{Error, Result};
+use crate::model::Ladder;
+use tiny_skia::{Pixmap, PixmapPaint, Transform};
+
+/// One image of a composition with an optional label above it (drawn at its
+/// top left, e.g. "(a1)") and an optional caption centred below it.
+pub struct Panel {
+    pub image: Pixmap,
+    pub label: Option<String>,
+    pub caption: Option<String>,
+}
+
+impl Panel {
+    /// A panel without label or caption.
+    pub fn new(image: Pixmap) -> Panel {
+        Panel {
+            image,
+            label: None,
+            caption: None,
+        }
+    }
+
+    /// Sets the label drawn above the image.
+    pub fn label(mut self, label: impl Into<String>) -> Panel {
+        self.label = Some(label.into());
+        self
+    }
+
+    /// Sets the caption drawn below the image.
+    pub fn caption(mut self, caption: impl Into<String>) -> Panel {
+        self.caption = Some(caption.into());
+        self
+    }
+}
+
+/// Grid layout options.
+#[derive(Clone, Debug)]
+pub struct Layout {
+    /// Panels per row (at least 1).
+    pub columns: usize,
+    /// Title centred above everything.
+    pub title: Option<String>,
+    /// Outer margin in pixels.
+    pub margin: u32,
+    /// Gap between panels in pixels.
+    pub gap: u32,
+}
+
+impl Layout {
+    /// `columns` panels per row, the default margin and gap, no title.
+    pub fn columns(columns: usize) -> Layout {
+        Layout {
+            columns,
+            title: None,
+            margin: size::MARGIN,
+            gap: size::GAP,
+        }
+    }
+
+    /// One row holding every panel.
+    pub fn row(count: usize) -> Layout {
+        Layout::columns(count.max(1))
+    }
+
+    /// Sets the title.
+    pub fn title(mut self, title: impl Into<String>) -> Layout {
+        self.title = Some(title.into());
+        self
+    }
+}
+
+/// Heights of the label band above and the caption band below each image.
+fn bands(panels: &[Panel]) -> (u32, u32) {
+    let label = panels.iter().any(|p| p.label.is_some());
+    let caption = panels.iter().any(|p| p.caption.is_some());
+    let l = if label {
+        (size::PANEL_LABEL * 1.5) as u32
+    } else {
+        0
+    };
+    let c = if caption {
+        (size::LABEL * 1.7) as u32
+    } else {
+        0
+    };
+    (l, c)
+}
+
+/// Places panels in a grid (row-major). Each column is as wide as its
+/// widest image and each row as tall as its tallest; images are centred in
+/// their cells.
+pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
+    if panels.is_empty() || layout.columns == 0 {
+        return Err(Error::bad_input(
+            "a composition needs at least one panel and one column",
+        ));
+    }
+    let cols = layout.columns.min(panels.len());
+    let rows = panels.len().div_ceil(cols);
+    let mut col_w = vec![0u32; cols];
+    let mut row_h = vec![0u32; rows];
+    for (k, p) in panels.iter().enumerate() {
+        col_w[k % cols] = col_w[k % cols].max(p.image.width());
+        row_h[k / cols] = row_h[k / cols].max(p.image.height());
+    }
+    let (label_h, caption_h) = bands(panels);
+    let title_h = layout
+        .title
+        .as_ref()
+        .map_or(0, |_| (size::TITLE * 1.8) as u32);
+    let (m, g) = (layout.margin, layout.gap);
+    let width = 2 * m + col_w.iter().sum::<u32>() + (cols as u32 - 1) * g;
+    let cells_h: u32 = row_h.iter().map(|h| h + label_h + caption_h).sum();
+    let height = 2 * m + title_h + cells_h + (rows as u32 - 1) * g;
+    let mut out =
+        style::white_pixmap(width, height).ok_or_else(|| snapshot::bad_size(width, height))?;
+    if let Some(t) = &layout.title {
+        let at = (0.5 * width as f32, m as f32);
+        style::draw_text(
+            &mut out,
+            t,
+            at,
+            size::TITLE,
+            DARK,
+            (HAlign::Center, VAlign::Top),
+        );
+    }
+    let offsets = |sizes: &[u32], extra: u32| -> Vec<u32> {
+        sizes
+            .iter()
+            .scan(0, |acc, s| {
+                let at = *acc;
+                *acc += s + extra + g;
+                Some(at)
+            })
+            .collect()
+    };
+    let (xs, ys) = (offsets(&col_w, 0), offsets(&row_h, label_h + caption_h));
+    for (k, p) in panels.iter().enumerate() {
+        let (c, r) = (k % cols, k / cols);
+        let at = (m + xs[c], m + title_h + ys[r]);
+        draw_panel(&mut out, p, at, (col_w[c], row_h[r]), (label_h, caption_h));
+    }
+    Ok(out)
+}
+
+fn draw_panel(
+    out: &mut Pixmap,
+    p: &Panel,
+    (x, y): (u32, u32),
+    (cw, ih): (u32, u32),
+    (lh, _ch): (u32, u32),
+) {
+    let ix = x + (cw - p.image.width()) / 2;
+    let iy = y + lh + (ih - p.image.height()) / 2;
+    blit(out, &p.image, ix, iy);
+    if let Some(l) = &p.label {
+        let at = (x as f32 + 2.0, y as f32);
+        style::draw_text(
+            out,
+            l,
+            at,
+            size::PANEL_LABEL,
+            DARK,
+            (HAlign::Left, VAlign::Top),
+        );
+    }
+    if let Some(c) = &p.caption {
+        let at = (
+            x as f32 + 0.5 * cw as f32,
+            (y + lh + ih) as f32 + 0.3 * size::LABEL,
+        );
+        style::draw_text(out, c, at, size::LABEL, DARK, (HAlign::Center, VAlign::Top));
+    }
+}
+
+/// Copies `src` onto `dst` with its top left at (`x`, `y`).
+pub fn blit(dst: &mut Pixmap, src: &Pixmap, x: u32, y: u32) {
+    dst.draw_pixmap(
+        x as i32,
+        y as i32,
+        src.as_ref(),
+        &PixmapPaint::default(),
+        Transform::identity(),
+        None,
+    );
+}
+
+/// One frame of a filmstrip: a time and the state at that time.
+#[derive(Clone, Copy, Debug)]
+pub struct Frame<'a> {
+    pub time: f64,
+    pub q: &'a [f64],
+}
+
+/// Options of a filmstrip.
+#[derive(Clone, Debug, Default)]
+pub struct FilmstripOptions {
+    /// Size of each snapshot in pixels (default 110 × 330).
+    pub frame_size: Option<(u32, u32)>,
+    /// Title above the strip.
+    pub title: Option<String>,
+    /// Label at the top left of the strip, e.g. "(a1)".
+    pub label: Option<String>,
+    /// A fixed window; by default one window fits every frame, so all
+    /// snapshots share one scale.
+    pub view: Option<View>,
+}
+
+/// Snapshots side by side in time order (left to right), each captioned
+/// "t/τ = …", sharing one scale.
+pub fn filmstrip(ladder: &Ladder, frames: &[Frame<'_>], opts: &FilmstripOptions) -> Result<Pixmap> {
+    if frames.is_empty() {
+        return Err(Error::bad_input("a filmstrip needs at least one frame"));
+    }
+    let (w, h) = opts.frame_size.unwrap_or((110, 330));
+    let states: Vec<&[f64]> = frames.iter().map(|f| f.q).collect();
+    let view = opts.view.unwrap_or_else(|| View::fit(&states));
+    let mut panels = Vec::with_capacity(frames.len());
+    for f in frames {
+        let snap = Snapshot::new(ladder, f.q)?.with_view(view);
+        let img = snapshot::render_snapshot(&snap, w, h)?;
+        panels.push(Panel::new(img).caption(snapshot::time_label(f.time)));
+    }
+    let mut layout = Layout::row(panels.len());
+    layout.gap = 6;
+    // A label without a title still gets the title band, above the frames.
+    layout.title = opts
+        .title
+        .clone()
+        .or_else(|| opts.label.as_ref().map(|_| String::new()));
+    let mut strip = compose(&panels, &layout)?;
+    if let Some(l) = &opts.label {
+        let at = (layout.margin as f32, layout.margin as f32);
+        style::draw_text(
+            &mut strip,
+            l,
+            at,
+            size::PANEL_LABEL,
+            DARK,
+            (HAlign::Left, VAlign::Top),
+        );
+    }
+    Ok(strip)
+}
+
+/// Draws several snapshots into one canvas region by region (no captions):
+/// the building block for custom layouts.
+pub fn draw_snapshots(canvas: &mut Pixmap, items: &[(Region, Snapshot<'_>)]) {
+    for (r, s) in items {
+        snapshot::draw_snapshot(canvas, *r, s);
+    }
+}

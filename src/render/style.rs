@@ -1,0 +1,280 @@
+//! Shared style: the bundled font, colours, sizes, and text on tiny-skia
+//! canvases.
+//!
+//! One font (DejaVu Sans, `assets/fonts/`) is used everywhere: plotters lays
+//! chart text out with it, resvg rasterises chart SVGs with it, and canvas
+//! text (labels on snapshots and panels) is rasterised from its outlines with
+//! `ab_glyph`, which is fast enough for a time label on every movie frame.
+
+use crate::encode::{PALETTE_ANCHORS, PALETTE_EXTRAS, Rgb};
+use ab_glyph::{Font, FontRef, PxScale, ScaleFont, point};
+use std::sync::{Arc, Once, OnceLock};
+use tiny_skia::{Color, Pixmap};
+
+/// The bundled font file.
+pub const FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+/// Its family name (as in the file; SVG text uses it).
+pub const FONT_FAMILY: &str = "DejaVu Sans";
+
+/// Dark grey: blocks, text, axes, the clamp of block 1.
+pub const DARK: Rgb = PALETTE_ANCHORS[0];
+/// Red: A springs and the A end of each block (paper Fig. 2).
+pub const RED: Rgb = PALETTE_ANCHORS[1];
+/// Blue: the B end of each block; ω− curves.
+pub const BLUE: Rgb = PALETTE_ANCHORS[2];
+/// Green: B springs (paper Fig. 2).
+pub const GREEN: Rgb = PALETTE_ANCHORS[3];
+/// Negative end of the kymograph's diverging map (sin θ = −1).
+pub const KYMO_NEG: Rgb = PALETTE_ANCHORS[4];
+/// Positive end of the kymograph's diverging map (sin θ = +1).
+pub const KYMO_POS: Rgb = PALETTE_ANCHORS[5];
+/// Grey: the ground state drawn underneath a deformed state.
+pub const GREY: Rgb = PALETTE_EXTRAS[0];
+/// Background.
+pub const WHITE: Rgb = crate::encode::WHITE;
+/// A few more distinguishable series colours for charts (orange, purple,
+/// brown, pink, olive, cyan), after dark, red, blue, green.
+pub const SERIES_EXTRA: [Rgb; 6] = [
+    [255, 127, 14],
+    [148, 103, 189],
+    [140, 86, 75],
+    [227, 119, 194],
+    [188, 189, 34],
+    [23, 190, 207],
+];
+
+/// Sizes in pixels at 100 % zoom.
+pub mod size {
+    /// Figure and panel titles.
+    pub const TITLE: f32 = 18.0;
+    /// Axis labels, captions, time labels.
+    pub const LABEL: f32 = 15.0;
+    /// Tick labels and legends.
+    pub const TICK: f32 = 13.0;
+    /// Panel labels such as "(a1)".
+    pub const PANEL_LABEL: f32 = 16.0;
+    /// Outer margin of composed images.
+    pub const MARGIN: u32 = 12;
+    /// Gap between panels.
+    pub const GAP: u32 = 10;
+}
+
+/// The `i`-th chart series colour: dark, red, blue, green, then extras.
+pub fn series_color(i: usize) -> Rgb {
+    let base = [DARK, RED, BLUE, GREEN];
+    if i < base.len() {
+        base[i]
+    } else {
+        SERIES_EXTRA[(i - base.len()) % SERIES_EXTRA.len()]
+    }
+}
+
+/// A tiny-skia colour from an [`Rgb`], fully opaque.
+pub fn color(c: Rgb) -> Color {
+    Color::from_rgba8(c[0], c[1], c[2], 255)
+}
+
+/// `#rrggbb` for SVG.
+pub fn hex(c: Rgb) -> String {
+    format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2])
+}
+
+/// Linear blend from `a` (f = 0) to `b` (f = 1).
+pub fn mix(a: Rgb, b: Rgb, f: f64) -> Rgb {
+    let f = f.clamp(0.0, 1.0);
+    [0, 1, 2].map(|k| (a[k] as f64 + (b[k] as f64 - a[k] as f64) * f).round() as u8)
+}
+
+/// The kymograph's diverging map: −1 → [`KYMO_NEG`], 0 → white, +1 →
+/// [`KYMO_POS`], linear in between (so every colour lies on a GIF palette
+/// ramp). NaN maps to grey.
+pub fn diverging(v: f64) -> Rgb {
+    if v.is_nan() {
+        GREY
+    } else if v < 0.0 {
+        mix(WHITE, KYMO_NEG, -v)
+    } else {
+        mix(WHITE, KYMO_POS, v)
+    }
+}
+
+/// The font database for resvg: the bundled font only, loaded once.
+pub fn fontdb() -> Arc<resvg::usvg::fontdb::Database> {
+    static DB: OnceLock<Arc<resvg::usvg::fontdb::Database>> = OnceLock::new();
+    DB.get_or_init(|| {
+        let mut db = resvg::usvg::fontdb::Database::new();
+        db.load_font_data(FONT_BYTES.to_vec());
+        db.set_sans_serif_family(FONT_FAMILY);
+        Arc::new(db)
+    })
+    .clone()
+}
+
+/// usvg options that resolve every font to the bundled one.
+pub fn usvg_options() -> resvg::usvg::Options<'static> {
+    resvg::usvg::Options {
+        font_family: FONT_FAMILY.to_string(),
+        fontdb: fontdb(),
+        ..Default::default()
+    }
+}
+
+/// Registers the bundled font with plotters under its family name and
+/// "sans-serif" (once per process).
+pub fn register_plotters_font() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        for name in [FONT_FAMILY, "sans-serif"] {
+            // The bytes are the bundled, valid font; a failure would only
+            // make plotters fall back to its own layout estimate.
+            let _ = plotters::style::register_font(
+                name,
+                plotters::style::FontStyle::Normal,
+                FONT_BYTES,
+            );
+        }
+    });
+}
+
+/// The bundled font for canvas text, parsed once.
+fn font() -> Option<&'static FontRef<'static>> {
+    static FONT: OnceLock<Option<FontRef<'static>>> = OnceLock::new();
+    FONT.get_or_init(|| FontRef::try_from_slice(FONT_BYTES).ok())
+        .as_ref()
+}
+
+/// Horizontal placement of canvas text relative to the anchor point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HAlign {
+    Left,
+    Center,
+    Right,
+}
+
+/// Vertical placement: the anchor is the top of the em box, its middle
+/// (half the cap height above the baseline), or the baseline.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum VAlign {
+    Top,
+    Middle,
+    Baseline,
+}
+
+/// Scale for a CSS-like font size (em size in pixels).
+fn px_scale(font: &FontRef<'_>, size: f32) -> PxScale {
+    let upem = font.units_per_em().unwrap_or(2048.0);
+    PxScale::from(size * font.height_unscaled() / upem)
+}
+
+/// Width in pixels of `text` at font size `size` (with kerning).
+pub fn text_width(text: &str, size: f32) -> f32 {
+    let Some(font) = font() else { return 0.0 };
+    let sf = font.as_scaled(px_scale(font, size));
+    let mut prev = None;
+    let mut w = 0.0;
+    for ch in text.chars() {
+        let id = sf.glyph_id(ch);
+        if let Some(p) = prev {
+            w += sf.kern(p, id);
+        }
+        w += sf.h_advance(id);
+        prev = Some(id);
+    }
+    w
+}
+
+/// Draws `text` onto `pixmap` anti-aliased, anchored at (`x`, `y`) pixels.
+pub fn draw_text(
+    pixmap: &mut Pixmap,
+    text: &str,
+    (x, y): (f32, f32),
+    size: f32,
+    rgb: Rgb,
+    (h, v): (HAlign, VAlign),
+) {
+    let Some(font) = font() else { return };
+    let sf = font.as_scaled(px_scale(font, size));
+    let width = text_width(text, size);
+    let mut pen = match h {
+        HAlign::Left => x,
+        HAlign::Center => x - 0.5 * width,
+        HAlign::Right => x - width,
+    };
+    let baseline = match v {
+        VAlign::Top => y + sf.ascent(),
+        VAlign::Middle => y + 0.36 * size,
+        VAlign::Baseline => y,
+    };
+    let mut prev = None;
+    for ch in text.chars() {
+        let id = sf.glyph_id(ch);
+        if let Some(p) = prev {
+            pen += sf.kern(p, id);
+        }
+        let glyph = id.with_scale_and_position(sf.scale(), point(pen, baseline));
+        if let Some(outline) = font.outline_glyph(glyph) {
+            let b = outline.px_bounds();
+            outline.draw(|gx, gy, cov| {
+                blend(
+                    pixmap,
+                    b.min.x as i32 + gx as i32,
+                    b.min.y as i32 + gy as i32,
+                    rgb,
+                    cov,
+                );
+            });
+        }
+        pen += sf.h_advance(id);
+        prev = Some(id);
+    }
+}
+
+/// Source-over of `rgb` with coverage `cov` onto one premultiplied pixel.
+#[inline]
+fn blend(pixmap: &mut Pixmap, x: i32, y: i32, rgb: Rgb, cov: f32) {
+    let (w, h) = (pixmap.width() as i32, pixmap.height() as i32);
+    if x < 0 || y < 0 || x >= w || y >= h || cov <= 0.0 {
+        return;
+    }
+    let a = cov.min(1.0);
+    let i = ((y * w + x) * 4) as usize;
+    let px = &mut pixmap.data_mut()[i..i + 4];
+    for k in 0..3 {
+        px[k] = (rgb[k] as f32 * a + px[k] as f32 * (1.0 - a)).round() as u8;
+    }
+    px[3] = (255.0 * a + px[3] as f32 * (1.0 - a)).round() as u8;
+}
+
+/// A new pixmap filled with white; `None` for a zero or huge size.
+pub fn white_pixmap(width: u32, height: u32) -> Option<Pixmap> {
+    let mut p = Pixmap::new(width, height)?;
+    p.fill(Color::WHITE);
+    Some(p)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn text_draws_something() {
+        let mut p = white_pixmap(80, 30).unwrap();
+        draw_text(
+            &mut p,
+            "t/τ = 12",
+            (2.0, 2.0),
+            14.0,
+            DARK,
+            (HAlign::Left, VAlign::Top),
+        );
+        assert!(p.pixels().iter().any(|c| c.red() < 100));
+        assert!(text_width("θ", 14.0) > 3.0);
+    }
+
+    #[test]
+    fn diverging_ends() {
+        assert_eq!(diverging(-1.0), KYMO_NEG);
+        assert_eq!(diverging(1.0), KYMO_POS);
+        assert_eq!(diverging(0.0), WHITE);
+    }
+}
