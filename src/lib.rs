@@ -24,3 +24,4 @@ pub mod cli;
 pub mod output;
 
 pub use error::{Error, Result};
+pub mod scenes;
