@@ -46,7 +46,7 @@ fn simulate_rejects_bad_input_with_one_line() {
     assert_bad_input(&["simulate", "--t-end", "-5"], "t_end");
     assert_bad_input(&with(&["--integrator", "leapfrog"]), "unknown integrator");
     assert_bad_input(&with(&["--alpha", "sixty"]), "--alpha");
-    assert_bad_input(&with(&["--csv", "/dev/null/x.csv"]), "/dev/null/x.csv");
+    assert_bad_input(&with(&["--csv", "/dev/null/x.csv"]), "cannot write to /dev/null");
     assert_bad_input(&with(&["--rtol", "1e-6"]), "rtol");
     assert_bad_input(&["frobnicate"], "frobnicate");
 }
