@@ -68,7 +68,8 @@ pub struct SimSpec {
 }
 
 impl SimSpec {
-    const fn paper(alpha_deg: f64, t_end: f64) -> Self {
+    /// The paper's N = 10, b/s = 1.3 and single flip at `alpha_deg`.
+    pub const fn paper(alpha_deg: f64, t_end: f64) -> Self {
         Self {
             alpha_deg,
             b: 1.3,

@@ -1,13 +1,15 @@
 //! Command-line definitions and dispatch (SPEC section 5). No physics and no
 //! drawing here: each command calls the library and prints its result.
 
+use crate::catalog::{self, Entry, Output};
 use crate::error::{Error, Result};
+use crate::scenes::{self, MovieOptions};
 use crate::model::Params;
 use crate::sim::{self, Drive, IntegratorConfig, IntegratorKind, Scenario};
 use clap::{Args, Parser, Subcommand};
 use serde::Serialize;
 use std::ffi::OsString;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 #[derive(Parser, Debug)]
@@ -31,6 +33,78 @@ pub enum Command {
     Bench(BenchArgs),
     /// Linear theory of the ladder: potential, zero modes, winding, dispersion
     Theory(TheoryArgs),
+    /// Render every figure and movie, plus OUT/index.html
+    All(AllArgs),
+    /// Render one figure (figure-ID.png) or all of them
+    Figure(FigureArgs),
+    /// Render one movie (movie-ID.gif and movie-ID-kymograph.png) or all of them
+    Movie(MovieArgs),
+    /// List the catalogue of figures and movies, one line each
+    List,
+}
+
+#[derive(Args, Debug)]
+pub struct OutArgs {
+    /// Output folder
+    #[arg(long, default_value = "out", value_name = "DIR")]
+    pub out: PathBuf,
+}
+
+#[derive(Args, Debug)]
+pub struct MovieFormat {
+    /// Frames per movie (2..=5000)
+    #[arg(long, default_value_t = 200)]
+    pub frames: usize,
+    /// Frame size WxH in pixels
+    #[arg(long, default_value = "640x480", value_name = "WxH", value_parser = parse_size)]
+    pub size: (u32, u32),
+    /// Frames per second
+    #[arg(long, default_value_t = 25.0)]
+    pub fps: f64,
+}
+
+impl MovieFormat {
+    fn options(&self) -> Result<MovieOptions> {
+        MovieOptions {
+            frames: self.frames,
+            width: self.size.0,
+            height: self.size.1,
+            fps: self.fps,
+        }
+        .validated()
+    }
+}
+
+fn parse_size(s: &str) -> std::result::Result<(u32, u32), String> {
+    let bad = || format!("expected WxH such as 640x480, got '{s}'");
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    Ok((w.trim().parse().map_err(|_| bad())?, h.trim().parse().map_err(|_| bad())?))
+}
+
+#[derive(Args, Debug)]
+pub struct AllArgs {
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub format: MovieFormat,
+}
+
+#[derive(Args, Debug)]
+pub struct FigureArgs {
+    /// Figure ID (see `ladder list`) or all
+    pub id: String,
+    #[command(flatten)]
+    pub out: OutArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct MovieArgs {
+    /// Movie ID (see `ladder list`) or all
+    pub id: String,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub format: MovieFormat,
 }
 
 #[derive(Args, Debug)]
@@ -159,6 +233,24 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Simulate(args) => simulate(&args),
         Command::Bench(args) => bench(&args),
         Command::Theory(args) => theory(&args),
+        Command::List => {
+            print!("{}", catalog::listing());
+            Ok(())
+        }
+        Command::Figure(args) => {
+            let entries = pick(Output::Figure, &args.id)?;
+            render_into(&entries, &args.out.out, &MovieOptions::default(), false)
+        }
+        Command::Movie(args) => {
+            let opts = args.format.options()?;
+            let entries = pick(Output::Movie, &args.id)?;
+            render_into(&entries, &args.out.out, &opts, false)
+        }
+        Command::All(args) => {
+            let opts = args.format.options()?;
+            let entries: Vec<&'static Entry> = catalog::CATALOGUE.iter().collect();
+            render_into(&entries, &args.out.out, &opts, true)
+        }
     }
 }
 
@@ -393,5 +485,49 @@ fn theory(args: &TheoryArgs) -> Result<()> {
     } else {
         print!("{}", report.to_table());
     }
+    Ok(())
+}
+
+/// The entries named by `id` (or all of that kind).
+fn pick(output: Output, id: &str) -> Result<Vec<&'static Entry>> {
+    if id == "all" {
+        Ok(catalog::entries(output).collect())
+    } else {
+        Ok(vec![catalog::find(output, id)?])
+    }
+}
+
+/// Renders `entries` into `out` in parallel (rayon), each file written
+/// atomically as soon as it is ready, with a progress bar and a summary.
+fn render_into(entries: &[&'static Entry], out: &Path, movie: &MovieOptions, index: bool) -> Result<()> {
+    use rayon::prelude::*;
+    crate::output::check_writable(&out.join("index.html"))?;
+    let start = Instant::now();
+    let bar = progress_bar(entries.len() as u64, "rendering");
+    let written: Vec<usize> = entries
+        .par_iter()
+        .map(|e| {
+            let files = scenes::render(e, movie)?;
+            for (name, bytes) in &files {
+                crate::output::write_atomic(&out.join(name), bytes)?;
+            }
+            bar.set_message(e.id.to_string());
+            bar.inc(1);
+            Ok(files.len())
+        })
+        .collect::<Result<_>>()?;
+    bar.finish_and_clear();
+    let mut files: usize = written.iter().sum();
+    if index {
+        let page = crate::gallery::index_html(entries);
+        crate::output::write_atomic(&out.join("index.html"), page.as_bytes())?;
+        files += 1;
+    }
+    eprintln!(
+        "ladder: wrote {files} files ({} scenes) into {} in {:.2} s",
+        entries.len(),
+        out.display(),
+        start.elapsed().as_secs_f64()
+    );
     Ok(())
 }

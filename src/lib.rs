@@ -25,3 +25,4 @@ pub mod output;
 
 pub use error::{Error, Result};
 pub mod scenes;
+pub mod gallery;

@@ -307,7 +307,21 @@ pub fn draw_snapshot(pixmap: &mut Pixmap, region: Region, snap: &Snapshot<'_>) {
     if snap.clamp && snap.q.len() >= 3 {
         draw_pivot(pixmap, &map, [snap.q[ix(0)], snap.q[iy(0)]]);
     }
+    // A fixed window (a camera) may cut the ladder: clear the label bands.
+    if snap.view.is_some() {
+        clear_band(pixmap, region.x, region.y, region.w, margin + top);
+        clear_band(pixmap, region.x, inner.y + inner.h, region.w, margin + bottom);
+    }
     draw_labels(pixmap, region, margin, snap);
+}
+
+/// Paints a white rectangle (nothing if it is empty).
+fn clear_band(pixmap: &mut Pixmap, x: f32, y: f32, w: f32, h: f32) {
+    if let Some(rect) = tiny_skia::Rect::from_xywh(x, y, w, h) {
+        let mut paint = Paint::default();
+        paint.set_color(style::color(WHITE));
+        pixmap.fill_rect(rect, &paint, Transform::identity(), None);
+    }
 }
 
 fn draw_labels(pixmap: &mut Pixmap, region: Region, margin: f32, snap: &Snapshot<'_>) {

@@ -1,0 +1,226 @@
+//! The simulated scenes: filmstrips (figures 1c, 3, 4a), arrival times
+//! (figure S6) and the movies with their kymographs. Each simulation runs
+//! only to its last frame and is sampled only at the times drawn.
+
+use crate::catalog::{SCENE_INTEGRATOR, SimSpec, StripSpec};
+use crate::encode::{GifWriter, png_bytes};
+use crate::error::{Error, Result};
+use crate::model::Ladder;
+use crate::render::charts::{self, Axis, ChartSpec, Kymograph, Marker, Series};
+use crate::render::compose::{self, FilmstripOptions, Frame, Layout, Panel};
+use crate::render::snapshot::{self, Snapshot, View};
+use crate::render::style;
+use crate::sim::{self, Trajectory};
+use tiny_skia::Pixmap;
+
+/// Movie frame count, size and rate (`--frames`, `--size`, `--fps`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MovieOptions {
+    pub frames: usize,
+    pub width: u32,
+    pub height: u32,
+    pub fps: f64,
+}
+
+impl Default for MovieOptions {
+    fn default() -> Self {
+        Self {
+            frames: 200,
+            width: 640,
+            height: 480,
+            fps: 25.0,
+        }
+    }
+}
+
+/// Largest frame count and side accepted: bounded memory and time.
+pub const MAX_FRAMES: usize = 5000;
+pub const MIN_SIDE: u32 = 64;
+pub const MAX_SIDE: u32 = 4096;
+
+impl MovieOptions {
+    pub fn validated(self) -> Result<Self> {
+        if !(2..=MAX_FRAMES).contains(&self.frames) {
+            return Err(Error::bad_input(format!(
+                "--frames must be between 2 and {MAX_FRAMES}, got {}",
+                self.frames
+            )));
+        }
+        for side in [self.width, self.height] {
+            if !(MIN_SIDE..=MAX_SIDE).contains(&side) {
+                return Err(Error::bad_input(format!(
+                    "--size must be WxH with each side between {MIN_SIDE} and {MAX_SIDE} pixels, got {}x{}",
+                    self.width, self.height
+                )));
+            }
+        }
+        if !(self.fps.is_finite() && self.fps > 0.0 && self.fps <= 100.0) {
+            return Err(Error::bad_input(format!(
+                "--fps must be a number in (0, 100], got {}",
+                self.fps
+            )));
+        }
+        Ok(self)
+    }
+}
+
+/// Runs `spec` with the scenes' integrator, sampled at `times`.
+pub fn run(spec: &SimSpec, times: &[f64]) -> Result<Trajectory> {
+    sim::simulate(&spec.scenario()?, times, &SCENE_INTEGRATOR)
+}
+
+/// "kink α = 60°" or "antikink α = −60°".
+fn wave_name(alpha_deg: f64) -> String {
+    let kind = if alpha_deg > 0.0 { "kink" } else { "antikink" };
+    format!("{kind} α = {}°", signed(alpha_deg))
+}
+
+/// A number with a typographic minus sign.
+fn signed(x: f64) -> String {
+    format!("{x}").replace('-', "−")
+}
+
+/// Snapshot size in a filmstrip for an N-block ladder.
+const STRIP_FRAME: (u32, u32) = (96, 330);
+
+/// One filmstrip: snapshots of `strip` at its times, sharing one scale.
+fn strip_image(strip: &StripSpec) -> Result<Pixmap> {
+    let traj = run(&strip.sim, strip.times)?;
+    let ladder = Ladder::new(strip.sim.params()?);
+    let frames: Vec<Frame<'_>> = traj
+        .times
+        .iter()
+        .zip(&traj.states)
+        .map(|(&time, q)| Frame { time, q })
+        .collect();
+    let title = if strip.label.is_empty() {
+        None
+    } else {
+        Some(format!("{}  {}", strip.label, wave_name(strip.sim.alpha_deg)))
+    };
+    let opts = FilmstripOptions {
+        frame_size: Some(STRIP_FRAME),
+        title,
+        label: None,
+        view: None,
+    };
+    compose::filmstrip(&ladder, &frames, &opts)
+}
+
+/// Figures 1c, 3 and 4a: one filmstrip per strip, stacked, with a title.
+pub fn strips_figure(title: &str, strips: &[StripSpec]) -> Result<Vec<u8>> {
+    let panels = strips
+        .iter()
+        .map(|s| strip_image(s).map(Panel::new))
+        .collect::<Result<Vec<_>>>()?;
+    let layout = Layout::columns(if panels.len() > 2 { 2 } else { 1 }).title(title);
+    png_bytes(&compose::compose(&panels, &layout)?)
+}
+
+/// Simulated window of the arrival-time figure S6.
+const ARRIVAL_T_END: f64 = 4000.0;
+
+/// Least-squares speed in blocks per 1000 τ from the arrivals of blocks
+/// 2..N−1 (the driven top and the free bottom excluded); `None` if fewer
+/// than three of them flipped.
+pub fn fitted_speed(arrivals: &[Option<f64>]) -> Option<f64> {
+    let last = arrivals.len().saturating_sub(1);
+    let pts: Vec<(f64, f64)> = (1..last)
+        .filter_map(|i| arrivals[i].map(|t| (i as f64 + 1.0, t)))
+        .collect();
+    if pts.len() < 3 {
+        return None;
+    }
+    let n = pts.len() as f64;
+    let (mx, my) = pts.iter().fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    Some(1000.0 * sxx / sxy)
+}
+
+/// Figure S6: t_n against n for the kink and antikink at each |α|.
+pub fn arrivals_figure(title: &str, alphas: &[f64]) -> Result<Vec<u8>> {
+    let mut spec = ChartSpec::new(
+        Axis::new("block n").range(0.5, 10.5),
+        Axis::new("arrival time tₙ / τ"),
+    )
+    .title(title);
+    let markers = [Marker::Circle, Marker::Square, Marker::Triangle];
+    for (k, &a) in alphas.iter().enumerate() {
+        let color = style::series_color(k + 1);
+        for alpha in [a, -a] {
+            let sim = SimSpec { alpha_deg: alpha, ..SimSpec::paper(alpha, ARRIVAL_T_END) };
+            let traj = run(&sim, &[])?;
+            let pts: Vec<(f64, f64)> = traj
+                .arrival_times
+                .iter()
+                .enumerate()
+                .filter_map(|(i, t)| t.map(|t| (i as f64 + 1.0, t)))
+                .collect();
+            let speed = fitted_speed(&traj.arrival_times)
+                .map_or("stalls".to_string(), |v| format!("{v:.1} blocks/1000τ"));
+            let label = format!("{}: {speed}", wave_name(alpha));
+            let mut s = Series::line(label, pts, color).with_marker(markers[k % 3]);
+            if alpha < 0.0 {
+                s = s.dashed();
+            }
+            spec = spec.series(s);
+        }
+    }
+    png_bytes(&charts::line_chart(&spec, 820, 560)?.pixmap)
+}
+
+/// Frame times of a movie: `frames` times evenly over [0, t_end].
+pub fn frame_times(t_end: f64, frames: usize) -> Vec<f64> {
+    let last = (frames - 1).max(1) as f64;
+    (0..frames).map(|k| t_end * k as f64 / last).collect()
+}
+
+/// The camera of a movie: one fixed window fitting every frame, or a window
+/// that follows the kink (movie 3), `blocks` blocks tall.
+fn movie_view(ladder: &Ladder, traj: &Trajectory, k: usize, follow: bool, aspect: f64) -> View {
+    let all: Vec<&[f64]> = traj.states.iter().map(|q| q.as_slice()).collect();
+    let fit = View::fit(&all);
+    if !follow {
+        return fit;
+    }
+    let b = ladder.params.b;
+    let x_span = 5.0 * b;
+    let centre_x = traj.kink_position[k].clamp(1.5, ladder.n() as f64 - 1.5) * b;
+    let centre_y = 0.5 * (fit.y.0 + fit.y.1);
+    View::centered(centre_x, centre_y, x_span, x_span * aspect)
+}
+
+/// A movie: the GIF and the kymograph PNG.
+pub fn movie(title: &str, sim: &SimSpec, follow: bool, opts: &MovieOptions) -> Result<(Vec<u8>, Vec<u8>)> {
+    let opts = opts.validated()?;
+    let times = frame_times(sim.t_end, opts.frames);
+    let traj = run(sim, &times)?;
+    let ladder = Ladder::new(sim.params()?);
+    let aspect = opts.width as f64 / opts.height as f64;
+    let fixed = movie_view(&ladder, &traj, 0, false, aspect);
+    let mut gif = GifWriter::new(opts.width, opts.height, opts.fps)?;
+    let mut canvas = style::white_pixmap(opts.width, opts.height)
+        .ok_or_else(|| Error::bad_input("the movie frame does not fit in memory"))?;
+    for (k, q) in traj.states.iter().enumerate() {
+        let view = if follow { movie_view(&ladder, &traj, k, true, aspect) } else { fixed };
+        let snap = Snapshot::new(&ladder, q)?
+            .with_title(title)
+            .with_time(traj.times[k])
+            .with_view(view);
+        snapshot::render_snapshot_into(&mut canvas, &snap);
+        gif.push_frame(&canvas)?;
+    }
+    let kymo = kymograph_png(title, &traj, ladder.n(), opts.width.max(480), opts.height.max(360))?;
+    Ok((gif.finish()?, kymo))
+}
+
+/// The kymograph of sin θ_n: blocks across, time down.
+fn kymograph_png(title: &str, traj: &Trajectory, n: usize, width: u32, height: u32) -> Result<Vec<u8>> {
+    let states: Vec<&[f64]> = traj.states.iter().map(|q| q.as_slice()).collect();
+    let values = charts::polarisation_rows(&states);
+    let kymo_title = format!("{title}: sin θₙ");
+    let mut k = Kymograph::new(&traj.times, &values, n);
+    k.title = Some(&kymo_title);
+    png_bytes(&charts::kymograph(&k, width, height)?.pixmap)
+}
