@@ -3,8 +3,8 @@
 
 use crate::catalog::{self, Entry, Output};
 use crate::error::{Error, Result};
-use crate::scenes::{self, MovieOptions};
 use crate::model::Params;
+use crate::scenes::{self, MovieOptions};
 use crate::sim::{self, Drive, IntegratorConfig, IntegratorKind, Scenario};
 use clap::{Args, Parser, Subcommand};
 use serde::Serialize;
@@ -78,10 +78,14 @@ impl MovieFormat {
 fn parse_size(s: &str) -> std::result::Result<(u32, u32), String> {
     let bad = || format!("expected WxH such as 640x480, got '{s}'");
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
-    Ok((w.trim().parse().map_err(|_| bad())?, h.trim().parse().map_err(|_| bad())?))
+    Ok((
+        w.trim().parse().map_err(|_| bad())?,
+        h.trim().parse().map_err(|_| bad())?,
+    ))
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct AllArgs {
     #[command(flatten)]
     pub out: OutArgs,
@@ -98,6 +102,7 @@ pub struct FigureArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct MovieArgs {
     /// Movie ID (see `ladder list`) or all
     pub id: String,
@@ -499,7 +504,12 @@ fn pick(output: Output, id: &str) -> Result<Vec<&'static Entry>> {
 
 /// Renders `entries` into `out` in parallel (rayon), each file written
 /// atomically as soon as it is ready, with a progress bar and a summary.
-fn render_into(entries: &[&'static Entry], out: &Path, movie: &MovieOptions, index: bool) -> Result<()> {
+fn render_into(
+    entries: &[&'static Entry],
+    out: &Path,
+    movie: &MovieOptions,
+    index: bool,
+) -> Result<()> {
     use rayon::prelude::*;
     crate::output::check_writable(&out.join("index.html"))?;
     let start = Instant::now();

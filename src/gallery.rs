@@ -14,12 +14,21 @@ fn item(e: &Entry) -> String {
     let images: String = e
         .files()
         .iter()
-        .map(|f| format!("<a href=\"{0}\"><img src=\"{0}\" alt=\"{0}\"></a>", escape(f)))
+        .map(|f| {
+            format!(
+                "<a href=\"{0}\"><img src=\"{0}\" alt=\"{0}\"></a>",
+                escape(f)
+            )
+        })
         .collect();
     format!(
         "<figure id=\"{kind}-{id}\">{images}<figcaption><b>{title}.</b> {caption}<br>\
          <small>{params}</small></figcaption></figure>\n",
-        kind = if e.output == Output::Figure { "figure" } else { "movie" },
+        kind = if e.output == Output::Figure {
+            "figure"
+        } else {
+            "movie"
+        },
         id = escape(e.id),
         title = escape(e.title),
         caption = escape(e.caption),
@@ -30,7 +39,10 @@ fn item(e: &Entry) -> String {
 /// The gallery page for `entries` (files named as `Entry::files`).
 pub fn index_html(entries: &[&Entry]) -> String {
     let mut body = String::new();
-    for (heading, kind) in [("Figures", Output::Figure), ("Supplemental movies", Output::Movie)] {
+    for (heading, kind) in [
+        ("Figures", Output::Figure),
+        ("Supplemental movies", Output::Movie),
+    ] {
         body.push_str(&format!("<h2>{heading}</h2>\n"));
         for e in entries.iter().filter(|e| e.output == kind) {
             body.push_str(&item(e));

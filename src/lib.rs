@@ -24,5 +24,5 @@ pub mod cli;
 pub mod output;
 
 pub use error::{Error, Result};
-pub mod scenes;
 pub mod gallery;
+pub mod scenes;

@@ -46,7 +46,10 @@ fn simulate_rejects_bad_input_with_one_line() {
     assert_bad_input(&["simulate", "--t-end", "-5"], "t_end");
     assert_bad_input(&with(&["--integrator", "leapfrog"]), "unknown integrator");
     assert_bad_input(&with(&["--alpha", "sixty"]), "--alpha");
-    assert_bad_input(&with(&["--csv", "/dev/null/x.csv"]), "cannot write to /dev/null");
+    assert_bad_input(
+        &with(&["--csv", "/dev/null/x.csv"]),
+        "cannot write to /dev/null",
+    );
     assert_bad_input(&with(&["--rtol", "1e-6"]), "rtol");
     assert_bad_input(&["frobnicate"], "frobnicate");
 }
@@ -118,5 +121,54 @@ fn csv_has_theta_at_the_sample_times_and_is_reproducible() {
     assert_eq!(std::fs::read_to_string(&path).unwrap(), first);
     let leftovers = std::fs::read_dir(&dir).unwrap().count();
     assert_eq!(leftovers, 1, "no temporary files left behind");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn render_commands_reject_bad_input_with_one_line() {
+    assert_bad_input(&["figure", "9z"], "unknown figure '9z'");
+    assert_bad_input(&["movie", "12"], "unknown movie '12'");
+    assert_bad_input(&["movie", "4", "--frames", "0"], "--frames");
+    assert_bad_input(&["movie", "4", "--frames", "-3"], "--frames");
+    assert_bad_input(&["movie", "4", "--frames", "100000000"], "--frames");
+    assert_bad_input(&["movie", "4", "--size", "640"], "WxH");
+    assert_bad_input(&["movie", "4", "--size", "0x480"], "--size");
+    assert_bad_input(&["movie", "4", "--size", "99999x480"], "--size");
+    assert_bad_input(&["movie", "4", "--fps", "0"], "--fps");
+    assert_bad_input(&["all", "--out", "/dev/null/out"], "cannot write");
+    assert_bad_input(&["figure", "3", "--out", "/proc/ladder"], "cannot write");
+}
+
+#[test]
+fn list_names_every_scene() {
+    let out = ladder(&["list"]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(text.lines().count(), 22);
+    assert!(text.contains("movie  11") && text.contains("figure S6"));
+}
+
+#[test]
+fn movie_command_writes_gif_and_kymograph() {
+    let dir = std::env::temp_dir().join(format!("ladder-movie-{}", std::process::id()));
+    let d = dir.to_str().unwrap();
+    let args = [
+        "movie", "4", "--out", d, "--frames", "5", "--size", "200x150",
+    ];
+    let out = ladder(&args);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let gif = std::fs::read(dir.join("movie-4.gif")).unwrap();
+    assert!(dir.join("movie-4-kymograph.png").exists());
+    assert_eq!(ladder(&args).status.code(), Some(0));
+    assert_eq!(
+        std::fs::read(dir.join("movie-4.gif")).unwrap(),
+        gif,
+        "byte-identical"
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -310,7 +310,13 @@ pub fn draw_snapshot(pixmap: &mut Pixmap, region: Region, snap: &Snapshot<'_>) {
     // A fixed window (a camera) may cut the ladder: clear the label bands.
     if snap.view.is_some() {
         clear_band(pixmap, region.x, region.y, region.w, margin + top);
-        clear_band(pixmap, region.x, inner.y + inner.h, region.w, margin + bottom);
+        clear_band(
+            pixmap,
+            region.x,
+            inner.y + inner.h,
+            region.w,
+            margin + bottom,
+        );
     }
     draw_labels(pixmap, region, margin, snap);
 }

@@ -81,10 +81,10 @@ fn signed(x: f64) -> String {
 }
 
 /// Snapshot size in a filmstrip for an N-block ladder.
-const STRIP_FRAME: (u32, u32) = (96, 330);
+pub const STRIP_FRAME: (u32, u32) = (96, 330);
 
 /// One filmstrip: snapshots of `strip` at its times, sharing one scale.
-fn strip_image(strip: &StripSpec) -> Result<Pixmap> {
+fn strip_image(strip: &StripSpec, frame: (u32, u32)) -> Result<Pixmap> {
     let traj = run(&strip.sim, strip.times)?;
     let ladder = Ladder::new(strip.sim.params()?);
     let frames: Vec<Frame<'_>> = traj
@@ -96,10 +96,14 @@ fn strip_image(strip: &StripSpec) -> Result<Pixmap> {
     let title = if strip.label.is_empty() {
         None
     } else {
-        Some(format!("{}  {}", strip.label, wave_name(strip.sim.alpha_deg)))
+        Some(format!(
+            "{}  {}",
+            strip.label,
+            wave_name(strip.sim.alpha_deg)
+        ))
     };
     let opts = FilmstripOptions {
-        frame_size: Some(STRIP_FRAME),
+        frame_size: Some(frame),
         title,
         label: None,
         view: None,
@@ -107,14 +111,15 @@ fn strip_image(strip: &StripSpec) -> Result<Pixmap> {
     compose::filmstrip(&ladder, &frames, &opts)
 }
 
-/// Figures 1c, 3 and 4a: one filmstrip per strip, stacked, with a title.
-pub fn strips_figure(title: &str, strips: &[StripSpec]) -> Result<Vec<u8>> {
+/// Figures 1c, 3 and 4a: one filmstrip per strip (snapshots of `frame`
+/// pixels), two strips a row, with a title.
+pub fn strips_figure(title: &str, strips: &[StripSpec], frame: (u32, u32)) -> Result<Pixmap> {
     let panels = strips
         .iter()
-        .map(|s| strip_image(s).map(Panel::new))
+        .map(|s| strip_image(s, frame).map(Panel::new))
         .collect::<Result<Vec<_>>>()?;
     let layout = Layout::columns(if panels.len() > 2 { 2 } else { 1 }).title(title);
-    png_bytes(&compose::compose(&panels, &layout)?)
+    compose::compose(&panels, &layout)
 }
 
 /// Simulated window of the arrival-time figure S6.
@@ -132,14 +137,16 @@ pub fn fitted_speed(arrivals: &[Option<f64>]) -> Option<f64> {
         return None;
     }
     let n = pts.len() as f64;
-    let (mx, my) = pts.iter().fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
+    let (mx, my) = pts
+        .iter()
+        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
     let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
     let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
     Some(1000.0 * sxx / sxy)
 }
 
 /// Figure S6: t_n against n for the kink and antikink at each |α|.
-pub fn arrivals_figure(title: &str, alphas: &[f64]) -> Result<Vec<u8>> {
+pub fn arrivals_figure(title: &str, alphas: &[f64]) -> Result<Pixmap> {
     let mut spec = ChartSpec::new(
         Axis::new("block n").range(0.5, 10.5),
         Axis::new("arrival time tₙ / τ"),
@@ -149,7 +156,10 @@ pub fn arrivals_figure(title: &str, alphas: &[f64]) -> Result<Vec<u8>> {
     for (k, &a) in alphas.iter().enumerate() {
         let color = style::series_color(k + 1);
         for alpha in [a, -a] {
-            let sim = SimSpec { alpha_deg: alpha, ..SimSpec::paper(alpha, ARRIVAL_T_END) };
+            let sim = SimSpec {
+                alpha_deg: alpha,
+                ..SimSpec::paper(alpha, ARRIVAL_T_END)
+            };
             let traj = run(&sim, &[])?;
             let pts: Vec<(f64, f64)> = traj
                 .arrival_times
@@ -167,7 +177,7 @@ pub fn arrivals_figure(title: &str, alphas: &[f64]) -> Result<Vec<u8>> {
             spec = spec.series(s);
         }
     }
-    png_bytes(&charts::line_chart(&spec, 820, 560)?.pixmap)
+    Ok(charts::line_chart(&spec, 820, 560)?.pixmap)
 }
 
 /// Frame times of a movie: `frames` times evenly over [0, t_end].
@@ -192,7 +202,12 @@ fn movie_view(ladder: &Ladder, traj: &Trajectory, k: usize, follow: bool, aspect
 }
 
 /// A movie: the GIF and the kymograph PNG.
-pub fn movie(title: &str, sim: &SimSpec, follow: bool, opts: &MovieOptions) -> Result<(Vec<u8>, Vec<u8>)> {
+pub fn movie(
+    title: &str,
+    sim: &SimSpec,
+    follow: bool,
+    opts: &MovieOptions,
+) -> Result<(Vec<u8>, Vec<u8>)> {
     let opts = opts.validated()?;
     let times = frame_times(sim.t_end, opts.frames);
     let traj = run(sim, &times)?;
@@ -203,7 +218,11 @@ pub fn movie(title: &str, sim: &SimSpec, follow: bool, opts: &MovieOptions) -> R
     let mut canvas = style::white_pixmap(opts.width, opts.height)
         .ok_or_else(|| Error::bad_input("the movie frame does not fit in memory"))?;
     for (k, q) in traj.states.iter().enumerate() {
-        let view = if follow { movie_view(&ladder, &traj, k, true, aspect) } else { fixed };
+        let view = if follow {
+            movie_view(&ladder, &traj, k, true, aspect)
+        } else {
+            fixed
+        };
         let snap = Snapshot::new(&ladder, q)?
             .with_title(title)
             .with_time(traj.times[k])
@@ -211,16 +230,28 @@ pub fn movie(title: &str, sim: &SimSpec, follow: bool, opts: &MovieOptions) -> R
         snapshot::render_snapshot_into(&mut canvas, &snap);
         gif.push_frame(&canvas)?;
     }
-    let kymo = kymograph_png(title, &traj, ladder.n(), opts.width.max(480), opts.height.max(360))?;
-    Ok((gif.finish()?, kymo))
+    let kymo = kymograph_image(
+        title,
+        &traj,
+        ladder.n(),
+        opts.width.max(480),
+        opts.height.max(360),
+    )?;
+    Ok((gif.finish()?, png_bytes(&kymo)?))
 }
 
-/// The kymograph of sin θ_n: blocks across, time down.
-fn kymograph_png(title: &str, traj: &Trajectory, n: usize, width: u32, height: u32) -> Result<Vec<u8>> {
+/// The kymograph of sin θ_n of `traj`: blocks across, time down.
+pub fn kymograph_image(
+    title: &str,
+    traj: &Trajectory,
+    n: usize,
+    width: u32,
+    height: u32,
+) -> Result<Pixmap> {
     let states: Vec<&[f64]> = traj.states.iter().map(|q| q.as_slice()).collect();
     let values = charts::polarisation_rows(&states);
     let kymo_title = format!("{title}: sin θₙ");
     let mut k = Kymograph::new(&traj.times, &values, n);
     k.title = Some(&kymo_title);
-    png_bytes(&charts::kymograph(&k, width, height)?.pixmap)
+    Ok(charts::kymograph(&k, width, height)?.pixmap)
 }

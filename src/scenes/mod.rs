@@ -15,8 +15,13 @@ pub fn render(entry: &Entry, movie: &MovieOptions) -> Result<Vec<(String, Vec<u8
     let names = entry.files();
     let bytes = match entry.content {
         Content::Theory(fig) => vec![png_bytes(&theory::render(fig)?)?],
-        Content::Strips(strips) => vec![dynamic::strips_figure(entry.title, strips)?],
-        Content::Arrivals(alphas) => vec![dynamic::arrivals_figure(entry.title, alphas)?],
+        Content::Strips(strips) => {
+            let image = dynamic::strips_figure(entry.title, strips, dynamic::STRIP_FRAME)?;
+            vec![png_bytes(&image)?]
+        }
+        Content::Arrivals(alphas) => {
+            vec![png_bytes(&dynamic::arrivals_figure(entry.title, alphas)?)?]
+        }
         Content::Movie { sim, follow_kink } => {
             let (gif, kymo) = dynamic::movie(entry.title, &sim, follow_kink, movie)?;
             vec![gif, kymo]
