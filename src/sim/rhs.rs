@@ -30,11 +30,11 @@ pub struct Rhs<'a> {
     protocol: &'a Protocol,
     /// Where block 1's centre is clamped.
     clamp: [f64; 2],
+    /// 1/m or 1/I for a free coordinate, 0 for one the protocol prescribes.
     inv_mass: Vec<f64>,
-    /// Damping rate per coordinate: γ/m for X and Y, γ r²/I for θ.
+    /// Damping rate per free coordinate: γ/m for X and Y, γ r²/I for θ;
+    /// 0 for a prescribed one.
     pub damping_rate: Vec<f64>,
-    /// 1 for a free coordinate, 0 for one the protocol prescribes.
-    free: Vec<f64>,
     grad: Vec<f64>,
     scratch: ForceScratch,
     /// Number of force (gradient) evaluations so far.
@@ -48,16 +48,16 @@ impl<'a> Rhs<'a> {
         let dof = p.dof();
         let per_block = |x: f64, th: f64| (0..dof).map(move |k| if k % 3 == 2 { th } else { x });
         let driven = matches!(protocol, Protocol::Driven(_));
-        let free = (0..dof)
-            .map(|k| if driven && k < 3 { 0.0 } else { 1.0 })
-            .collect();
+        let free = |(k, x): (usize, f64)| if driven && k < 3 { 0.0 } else { x };
         Self {
             ladder,
             protocol,
             clamp: [q0[ix(0)], q0[iy(0)]],
-            inv_mass: per_block(1.0 / M, 1.0 / p.inertia).collect(),
-            damping_rate: per_block(p.gamma / M, p.gamma * R * R / p.inertia).collect(),
-            free,
+            inv_mass: per_block(1.0 / M, 1.0 / p.inertia).enumerate().map(free).collect(),
+            damping_rate: per_block(p.gamma / M, p.gamma * R * R / p.inertia)
+                .enumerate()
+                .map(free)
+                .collect(),
             grad: vec![0.0; dof],
             scratch: ForceScratch::new(p.n),
             force_evals: 0,
@@ -89,7 +89,7 @@ impl<'a> Rhs<'a> {
         self.ladder
             .gradient_with(q, &mut self.grad, &mut self.scratch);
         for k in 0..acc.len() {
-            acc[k] = -self.grad[k] * self.inv_mass[k] * self.free[k];
+            acc[k] = -self.grad[k] * self.inv_mass[k];
         }
     }
 
@@ -98,7 +98,7 @@ impl<'a> Rhs<'a> {
     pub fn acceleration(&mut self, q: &[f64], v: &[f64], acc: &mut [f64]) {
         self.conservative(q, acc);
         for k in 0..acc.len() {
-            acc[k] -= self.damping_rate[k] * v[k] * self.free[k];
+            acc[k] -= self.damping_rate[k] * v[k];
         }
     }
 
