@@ -8,7 +8,7 @@ use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::charts::{self, Axis, ChartSpec, Kymograph, Marker, Series};
 use crate::render::compose::{self, FilmstripOptions, Frame, Layout, Panel};
-use crate::render::snapshot::{self, Snapshot, View};
+use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::style;
 use crate::sim::{self, Trajectory};
 use tiny_skia::Pixmap;
@@ -201,43 +201,127 @@ fn movie_view(ladder: &Ladder, traj: &Trajectory, k: usize, follow: bool, aspect
     View::centered(centre_x, centre_y, x_span, x_span * aspect)
 }
 
-/// A movie: the GIF and the kymograph PNG.
-pub fn movie(
-    title: &str,
-    sim: &SimSpec,
-    follow: bool,
-    opts: &MovieOptions,
-) -> Result<(Vec<u8>, Vec<u8>)> {
+/// A movie: the GIF and the kymograph PNG. Each frame shows the ladder on
+/// the left and, on the right, the kymograph of sin θ_n up to that frame.
+pub fn movie(title: &str, sim: &SimSpec, follow: bool, opts: &MovieOptions) -> Result<(Vec<u8>, Vec<u8>)> {
     let opts = opts.validated()?;
     let times = frame_times(sim.t_end, opts.frames);
     let traj = run(sim, &times)?;
     let ladder = Ladder::new(sim.params()?);
-    let aspect = opts.width as f64 / opts.height as f64;
+    let layout = MovieLayout::new(opts.width, opts.height);
+    let aspect = layout.ladder.w as f64 / layout.ladder.h as f64;
     let fixed = movie_view(&ladder, &traj, 0, false, aspect);
+    let heat = heat_map(&traj, ladder.n(), layout.heat)?;
     let mut gif = GifWriter::new(opts.width, opts.height, opts.fps)?;
-    let mut canvas = style::white_pixmap(opts.width, opts.height)
-        .ok_or_else(|| Error::bad_input("the movie frame does not fit in memory"))?;
+    let blank = || {
+        style::white_pixmap(opts.width, opts.height)
+            .ok_or_else(|| Error::bad_input("the movie frame does not fit in memory"))
+    };
+    // What every frame shares is drawn once; each frame starts from a copy.
+    let mut background = blank()?;
+    layout.decorate(&mut background, title, sim.t_end, ladder.n());
+    let mut canvas = blank()?;
     for (k, q) in traj.states.iter().enumerate() {
-        let view = if follow {
-            movie_view(&ladder, &traj, k, true, aspect)
-        } else {
-            fixed
-        };
-        let snap = Snapshot::new(&ladder, q)?
-            .with_title(title)
-            .with_time(traj.times[k])
-            .with_view(view);
-        snapshot::render_snapshot_into(&mut canvas, &snap);
+        let view = if follow { movie_view(&ladder, &traj, k, true, aspect) } else { fixed };
+        let snap = Snapshot::new(&ladder, q)?.with_time(traj.times[k]).with_view(view);
+        canvas.data_mut().copy_from_slice(background.data());
+        snapshot::draw_snapshot(&mut canvas, layout.ladder, &snap);
+        layout.restore_title(&mut canvas, &background);
+        reveal_rows(&mut canvas, &heat, layout.heat, (k + 1) as f32 / traj.states.len() as f32);
         gif.push_frame(&canvas)?;
     }
-    let kymo = kymograph_image(
-        title,
-        &traj,
-        ladder.n(),
-        opts.width.max(480),
-        opts.height.max(360),
-    )?;
+    let kymo = kymograph_image(title, &traj, ladder.n(), opts.width.max(480), opts.height.max(360))?;
     Ok((gif.finish()?, png_bytes(&kymo)?))
+}
+
+/// Where a movie frame puts the title, the ladder and the live kymograph.
+struct MovieLayout {
+    width: f32,
+    ladder: Region,
+    heat: Region,
+}
+
+impl MovieLayout {
+    fn new(width: u32, height: u32) -> Self {
+        let (w, h) = (width as f32, height as f32);
+        let top = (1.8 * style::size::TITLE).min(0.2 * h);
+        let split = (0.45 * w).round();
+        let heat_x = split + (0.1 * w).min(56.0);
+        let bottom = (2.6 * style::size::TICK).min(0.15 * h);
+        Self {
+            width: w,
+            ladder: Region { x: 0.0, y: top, w: split, h: (h - top).max(1.0) },
+            heat: Region {
+                x: heat_x.round(),
+                y: (top + 0.8 * style::size::TICK).round(),
+                w: (w - heat_x - 0.04 * w).max(1.0).round(),
+                h: (h - top - bottom - 0.8 * style::size::TICK).max(1.0).round(),
+            },
+        }
+    }
+
+    /// Copies the title band back from `background` (a camera window may
+    /// draw the ladder over it).
+    fn restore_title(&self, canvas: &mut Pixmap, background: &Pixmap) {
+        let bytes = 4 * canvas.width() as usize * self.ladder.y as usize;
+        canvas.data_mut()[..bytes].copy_from_slice(&background.data()[..bytes]);
+    }
+
+    /// Title across the frame; time axis and block labels of the kymograph.
+    fn decorate(&self, canvas: &mut Pixmap, title: &str, t_end: f64, n: usize) {
+        use style::{DARK, HAlign, VAlign, draw_text, size};
+        let tick = size::TICK;
+        draw_text(canvas, title, (0.5 * self.width, 6.0), size::TITLE, DARK, (HAlign::Center, VAlign::Top));
+        let r = self.heat;
+        let left = r.x - 4.0;
+        draw_text(canvas, "t/τ = 0", (left, r.y), tick, DARK, (HAlign::Right, VAlign::Top));
+        let end = format!("{t_end:.0}");
+        draw_text(canvas, &end, (left, r.y + r.h), tick, DARK, (HAlign::Right, VAlign::Baseline));
+        let below = r.y + r.h + 4.0;
+        draw_text(canvas, "block 1", (r.x, below), tick, DARK, (HAlign::Left, VAlign::Top));
+        let last = format!("{n}");
+        draw_text(canvas, &last, (r.x + r.w, below), tick, DARK, (HAlign::Right, VAlign::Top));
+        let legend = "sin θₙ: red +1, blue −1";
+        let mid = (r.x + 0.5 * r.w, below + 1.3 * tick);
+        draw_text(canvas, legend, mid, tick, DARK, (HAlign::Center, VAlign::Top));
+    }
+}
+
+/// The whole kymograph as a `region`-sized image: one row per frame, one
+/// column per block, sin θ_n in the diverging map (no anti-aliasing).
+fn heat_map(traj: &Trajectory, n: usize, region: Region) -> Result<Pixmap> {
+    let (w, h) = (region.w as u32, region.h as u32);
+    let mut map = style::white_pixmap(w, h).ok_or_else(|| Error::bad_input("the movie frame is too small"))?;
+    let rows = traj.states.len();
+    let mut paint = tiny_skia::Paint { anti_alias: false, ..Default::default() };
+    for (k, q) in traj.states.iter().enumerate() {
+        let (y0, y1) = (k as f32 * h as f32 / rows as f32, (k + 1) as f32 * h as f32 / rows as f32);
+        for j in 0..n {
+            let (x0, x1) = (j as f32 * w as f32 / n as f32, (j + 1) as f32 * w as f32 / n as f32);
+            let v = q[crate::model::ladder::itheta(j)].sin();
+            paint.set_color(style::color(style::diverging(v)));
+            if let Some(rect) = tiny_skia::Rect::from_ltrb(x0.floor(), y0.floor(), x1.ceil(), y1.ceil()) {
+                map.fill_rect(rect, &paint, tiny_skia::Transform::identity(), None);
+            }
+        }
+    }
+    Ok(map)
+}
+
+/// Copies the top `fraction` of `heat` into `canvas` at `region`.
+fn reveal_rows(canvas: &mut Pixmap, heat: &Pixmap, region: Region, fraction: f32) {
+    let rows = ((fraction * heat.height() as f32).round() as u32).min(heat.height());
+    let (cw, hw) = (canvas.width() as usize, heat.width() as usize);
+    let (x0, y0) = (region.x as usize, region.y as usize);
+    let src = heat.data();
+    let dst = canvas.data_mut();
+    for y in 0..rows as usize {
+        let from = &src[4 * y * hw..4 * (y + 1) * hw];
+        let start = 4 * ((y0 + y) * cw + x0);
+        if let Some(to) = dst.get_mut(start..start + from.len()) {
+            to.copy_from_slice(from);
+        }
+    }
 }
 
 /// The kymograph of sin θ_n of `traj`: blocks across, time down.
