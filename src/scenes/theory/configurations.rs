@@ -95,6 +95,15 @@ fn gapless_potential(a: f64, b: f64) -> Result<Pixmap> {
     Ok(line_chart(&spec, 560, 440)?.pixmap)
 }
 
+/// A residual that is zero to rounding as "< 10⁻¹²", otherwise 2 decimals.
+fn tiny(x: f64) -> String {
+    if x < 1e-12 {
+        "< 10⁻¹²".into()
+    } else {
+        format!("{x:.2}")
+    }
+}
+
 /// Fig. S4: the model's zero modes (top row, exact) and the paper's
 /// eq:zm_n shapes (bottom row) for m = 1, ε₀ = 0.1 and m = 5, ε₀ = 0.05.
 pub fn zero_modes() -> Result<Pixmap> {
@@ -106,7 +115,7 @@ pub fn zero_modes() -> Result<Pixmap> {
     let mut residuals = Vec::new();
     for (k, &(m, eps)) in FIG_S4_MODES.iter().enumerate() {
         let z = zero_mode_shape(&p, m, eps);
-        let label = ["(a)", "(b)"][k];
+        let (label, primed) = [("(a)", "(a′)"), ("(b)", "(b′)")][k];
         let caption = format!("m = {m}, ε₀ = {eps}");
         model.push(
             Panel::new(configuration(&ladder, &z.model, Some(&z.ground), size)?)
@@ -115,7 +124,7 @@ pub fn zero_modes() -> Result<Pixmap> {
         );
         paper.push(
             Panel::new(configuration(&ladder, &z.paper, Some(&z.ground), size)?)
-                .label(format!("{label} eq:zm_n"))
+                .label(format!("{primed} eq:zm_n"))
                 .caption(caption),
         );
         residuals.push((m, z.paper_residual, z.model_residual));
@@ -124,13 +133,13 @@ pub fn zero_modes() -> Result<Pixmap> {
     let body = grid(&model, 4)?;
     let res: Vec<String> = residuals
         .iter()
-        .map(|(m, p, q)| format!("m = {m}: {p:.2} (eq:zm_n), {q:.0e} (model)"))
+        .map(|(m, p, q)| format!("m = {m}: {p:.2} for eq:zm_n, {} for the model", tiny(*q)))
         .collect();
     let notes = format!(
         "N = 10, b/s = {FIG_2C_B}, α = 75°; deformed configuration in colour, ground state in \
-         grey. Left pair: the model's true zero modes (null vectors of its compatibility \
+         grey. (a), (b): the model's true zero modes (null vectors of its compatibility \
          matrix, δv staggered, docs/paper-errata.md item 5); for m = 5 (k = π/b) the zero \
-         mode is a rigid shift along y. Right pair: the paper's eq:zm_n as printed (Fig. S4), \
+         mode is a rigid shift along y. (a′), (b′): the paper's eq:zm_n as printed (Fig. S4), \
          which stretches the springs. Relative spring stretch |C δq|/|δq|: {}.",
         res.join("; ")
     );

@@ -18,7 +18,11 @@ fn paint(c: Rgb) -> Paint<'static> {
 fn stroke(width: f32, dashed: bool) -> Stroke {
     Stroke {
         width,
-        line_cap: if dashed { LineCap::Butt } else { LineCap::Round },
+        line_cap: if dashed {
+            LineCap::Butt
+        } else {
+            LineCap::Round
+        },
         dash: if dashed {
             StrokeDash::new(vec![6.0, 4.0], 0.0)
         } else {

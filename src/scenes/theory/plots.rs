@@ -67,6 +67,14 @@ fn curve_color(i: usize) -> Rgb {
     style::series_color(i + 1)
 }
 
+/// The name of `curve_color(i)`, for the inset labels.
+fn color_name(i: usize) -> &'static str {
+    ["red", "blue", "green", "orange", "purple"]
+        .get(i)
+        .copied()
+        .unwrap_or("")
+}
+
 /// Ground states of 4 blocks at θ = ∓α for the curves `which`, one row per
 /// curve.
 fn potential_insets(which: &[usize]) -> Result<Pixmap> {
@@ -79,12 +87,10 @@ fn potential_insets(which: &[usize]) -> Result<Pixmap> {
         for sign in [-1.0, 1.0] {
             let l = Ladder::new(params(4, FIG_2C_B, sign * alpha)?);
             let q = l.ground_state();
-            let mut panel =
-                Panel::new(configuration(&l, &q, None, (120, 230))?).caption(signed_deg(
-                    (sign * alpha * 10.0).round() / 10.0,
-                ));
+            let mut panel = Panel::new(configuration(&l, &q, None, (120, 230))?)
+                .caption(signed_deg((sign * alpha * 10.0).round() / 10.0));
             if sign < 0.0 {
-                panel = panel.label(format!("a/b = {r}"));
+                panel = panel.label(format!("a/b = {r} ({})", color_name(i)));
             }
             panels.push(panel);
         }
@@ -176,7 +182,14 @@ fn dispersion_key(width: u32) -> Result<Pixmap> {
             _ => pen::dot(&mut p, (x + 13.0, y), 3.5, e.1),
         }
         let at = (x + 34.0, y);
-        style::draw_text(&mut p, e.0, at, size::TICK, DARK, (HAlign::Left, VAlign::Middle));
+        style::draw_text(
+            &mut p,
+            e.0,
+            at,
+            size::TICK,
+            DARK,
+            (HAlign::Left, VAlign::Middle),
+        );
         x += w;
     }
     Ok(p)
@@ -195,7 +208,7 @@ fn stack(top: &Pixmap, bottom: &Pixmap) -> Result<Pixmap> {
 /// α of the winding and edge-mode figures.
 const WINDING_ALPHA: f64 = 60.0;
 
-/// The winding figure: det C_red(q)/(e^{iqb} − 1) (a circle of radius 2|c₁|
+/// The winding figure: det C_red(q)/(e^(iqb) − 1) (a circle of radius 2|c₁|
 /// about −2c₂, errata item 8) and det C_red(q) itself (eq:det-C) over the
 /// Brillouin zone for α = ±60°, b/s = 1.3.
 pub fn winding() -> Result<Pixmap> {
@@ -205,7 +218,7 @@ pub fn winding() -> Result<Pixmap> {
         panels.push(Panel::new(winding_panel(&p)?));
     }
     let body = grid(&panels, 2)?;
-    let notes = "b/s = 1.3. Solid: det C(q)/(e^{iqb} − 1) = 2(c₁e^{iqb} − c₂), the circle of \
+    let notes = "b/s = 1.3. Solid: det C(q)/(e^(iqb) − 1) = 2(c₁e^(iqb) − c₂), the circle of \
                  radius 2|c₁| about −2c₂ whose winding about the origin (+) is the winding number \
                  n; dashed: det C(q) of the model's reduced chain (= eq:det-C), which passes \
                  through 0 at q = 0 (translation along x). For α > 0, |c₂| < c₁ and the loop \
@@ -229,7 +242,11 @@ fn winding_panel(p: &crate::model::Params) -> Result<Pixmap> {
     };
     let mut spec = ChartSpec::new(Axis::new("Re det C"), Axis::new("Im det C"))
         .title(format!("α = {}: n = {n}", signed_deg(l.alpha_deg)))
-        .series(Series::line("det C / (e^{iqb} − 1)", closed(&l.reduced), color))
+        .series(Series::line(
+            "det C / (e^(iqb) − 1)",
+            closed(&l.reduced),
+            color,
+        ))
         .series(Series::line("det C", closed(&l.det), GREY).dashed())
         .series(Series::scatter(
             "origin",
@@ -241,6 +258,7 @@ fn winding_panel(p: &crate::model::Params) -> Result<Pixmap> {
     spec.y = spec.y.range(-2.2, 2.2);
     spec.equal_aspect = true;
     spec.zero_lines = true;
+    spec.legend = Legend::UpperLeft;
     chart(&spec, 440, 440)
 }
 
@@ -255,8 +273,9 @@ pub fn edge_mode() -> Result<Pixmap> {
     let body = grid(&panels, 2)?;
     let notes = "N = 10, b/s = 1.3; surface zero mode of the chain with the B nodes pinned \
                  (eq:e-KL), found as the null vector of the model's compatibility matrix and \
-                 normalised to max |δθ_n| = 1. κ = b⁻¹ ln|(b + 2s sin α)/(b − 2s sin α)| is the \
-                 same for ±α; the mode sits at the top for α > 0 and at the bottom for α < 0. \
+                 normalised to max |δθ_n| = 1. κ = b⁻¹ ln|(b + 2s sin α)/(b − 2s sin α)| changes sign \
+                 with α: the mode decays from the top for α > 0 (κ > 0) and from the bottom for \
+                 α < 0 (κ < 0). \
                  Beyond |α| ≈ 40.5° (b < 2s|sin α|) c₂/c₁ < 0 and δθ_n alternates in sign.";
     frame(title(TheoryFigure::EdgeMode), &body, notes, 900)
 }
@@ -276,7 +295,10 @@ fn edge_panel(sign: f64) -> Result<Pixmap> {
         let color = [RED, BLUE][k];
         let kb = e.kappa.map_or(f64::NAN, |x| x * 1.3);
         let line = e.n.iter().map(|&n| n as f64).zip(e.formula.iter().copied());
-        let dots = e.n.iter().map(|&n| n as f64).zip(e.numerical.iter().copied());
+        let dots =
+            e.n.iter()
+                .map(|&n| n as f64)
+                .zip(e.numerical.iter().copied());
         spec = spec
             .series(Series::line(
                 format!("e^(−κ(n−1)b), κb = {kb:.2}"),
@@ -303,7 +325,7 @@ pub fn barrier() -> Result<Pixmap> {
         .filter_map(|k| model_barrier(b, 5.0 * k as f64).map(|du| (5.0 * k as f64, du)))
         .collect();
     let mut spec = ChartSpec::new(
-        Axis::new("equilibrium angle α (degrees)").range(0.0, 90.0),
+        Axis::new("equilibrium angle α (degrees)").range(-2.0, 92.0),
         Axis::new("ΔU / (m g s), per pair of blocks"),
     )
     .series(Series::line("eq:delta_U", curve, RED))

@@ -19,9 +19,9 @@ const B: f64 = 1.2;
 const ALPHA_DEG: f64 = 60.0;
 /// Canvas size, pixels per s and the pixel position of block n's centre.
 const W: u32 = 880;
-const H: u32 = 600;
+const H: u32 = 620;
 const SCALE: f64 = 215.0;
-const ORIGIN: Pt = (470.0, 130.0);
+const ORIGIN: Pt = (470.0, 150.0);
 /// Annotation text size.
 const TEXT: f32 = 19.0;
 
@@ -116,8 +116,9 @@ fn draw_links_and_blocks(p: &mut Pixmap, u: &Unit) {
     let mb = mid(u.b1, u.b2);
     text(p, "b", add(mb, (16.0, 0.0)), GREEN, LEFT);
     text(p, "B", add(u.b1, (-26.0, 4.0)), BLUE, MIDDLE);
-    text(p, "block n", add(u.a1, (60.0, -34.0)), DARK, LEFT);
-    text(p, "block n + 1", add(u.b2, (-50.0, 52.0)), DARK, LEFT);
+    text(p, "block n", add(u.c1, (120.0, -60.0)), DARK, LEFT);
+    let at = add(u.c2, (-60.0, -30.0));
+    text(p, "block n + 1", at, DARK, (HAlign::Right, VAlign::Middle));
 }
 
 /// θ between the transverse axis (dashed, through block n's centre) and
@@ -137,7 +138,7 @@ fn draw_s(p: &mut Pixmap, u: &Unit) {
     let (dx, dy) = (u.b2.0 - u.a2.0, u.b2.1 - u.a2.1);
     let l = (dx * dx + dy * dy).sqrt();
     // The side of block n + 1 away from the links: left and down.
-    let nrm = (dy / l, -dx / l);
+    let nrm = (-dy / l, dx / l);
     let off = (0.16 * SCALE) as f32;
     let o = (nrm.0 * off, nrm.1 * off);
     let (a, b) = (add(u.a2, o), add(u.b2, o));
