@@ -336,15 +336,18 @@ pub const CATALOGUE: &[Entry] = &[
         output: Output::Figure,
         title: "Fig. S4: zero-mode shapes",
         caption: "Deformed zero modes of the N = 10 ladder (black) over the ground state (grey), \
-                  b/s = 1.2, α = 75°: (a) m = 1, ε₀ = 0.1; (b) m = 5, ε₀ = 0.05.",
+                  b/s = 1.2, α = 75°: (a) m = 1, ε₀ = 0.1; (b) m = 5, ε₀ = 0.05. (a), (b): the model's \
+                  true zero modes; (a′), (b′): the paper's eq:zm_n shapes, which stretch the \
+                  springs (docs/paper-errata.md item 5).",
         content: Content::Theory(TheoryFigure::ZeroModes),
     },
     Entry {
         id: "S5",
         output: Output::Figure,
         title: "Fig. S5: phonon dispersion",
-        caption: "ω±(q)/ω₀ against qb for several α, b/s = 1.3: ω+ red, ω− blue; lines are the \
-                  closed form, dots the eigenvalues of the model's periodic chain.",
+        caption: "ω±(q)/ω₀ against qb for several α, b/s = 1.3: ω+ red, ω− blue; dashed lines \
+                  the printed closed form, solid lines the same × √2 (ω₀ = √(k/m), errata item 9), \
+                  dots the eigenvalues of the model's constrained periodic chain.",
         content: Content::Theory(TheoryFigure::Dispersion),
     },
     Entry {

@@ -1,0 +1,132 @@
+//! The static figures of the catalogue (SPEC section 4): 2b, 2c, 2d, S3, S4,
+//! S5, winding, edge-mode and barrier.
+//!
+//! Each figure is a title, a body (a drawing, snapshots of the model's
+//! configurations or charts of `theory::figures` data) and a few lines of
+//! notes that say what is drawn and where it departs from the paper
+//! (docs/paper-errata.md).
+
+mod configurations;
+mod pen;
+mod plots;
+mod schematic;
+
+use crate::catalog::{CATALOGUE, Content, TheoryFigure};
+use crate::error::{Error, Result};
+use crate::model::{Ladder, Params};
+use crate::render::compose::{self, Layout, Panel};
+use crate::render::snapshot::{self, Snapshot};
+use crate::render::style::{self, DARK, HAlign, VAlign, size};
+use tiny_skia::Pixmap;
+
+/// Renders one static figure.
+pub fn render(figure: TheoryFigure) -> Result<Pixmap> {
+    match figure {
+        TheoryFigure::UnitSchematic => schematic::unit(),
+        TheoryFigure::GravityPotential => plots::gravity_potential(),
+        TheoryFigure::GroundStates => configurations::ground_states(),
+        TheoryFigure::Gapless => configurations::gapless(),
+        TheoryFigure::ZeroModes => configurations::zero_modes(),
+        TheoryFigure::Dispersion => plots::dispersion(),
+        TheoryFigure::Winding => plots::winding(),
+        TheoryFigure::EdgeMode => plots::edge_mode(),
+        TheoryFigure::Barrier => plots::barrier(),
+    }
+}
+
+/// The catalogue title of a figure.
+fn title(figure: TheoryFigure) -> &'static str {
+    CATALOGUE
+        .iter()
+        .find(|e| e.content == Content::Theory(figure))
+        .map_or("", |e| e.title)
+}
+
+/// Greedy word wrap of `text` to lines at most `width` pixels wide at `size`.
+fn wrap(text: &str, width: f32, size: f32) -> Vec<String> {
+    let mut lines = Vec::new();
+    for paragraph in text.split('\n') {
+        let mut line = String::new();
+        for word in paragraph.split_whitespace() {
+            let candidate = if line.is_empty() {
+                word.to_string()
+            } else {
+                format!("{line} {word}")
+            };
+            if !line.is_empty() && style::text_width(&candidate, size) > width {
+                lines.push(std::mem::replace(&mut line, word.to_string()));
+            } else {
+                line = candidate;
+            }
+        }
+        lines.push(line);
+    }
+    lines
+}
+
+/// Line height of the notes.
+const NOTE_LINE: f32 = 1.35 * size::LABEL;
+
+/// Puts `body` under a centred title with wrapped `notes` below it, on a
+/// white canvas at least `min_width` pixels wide.
+fn frame(title: &str, body: &Pixmap, notes: &str, min_width: u32) -> Result<Pixmap> {
+    let m = size::MARGIN;
+    let width = (body.width() + 2 * m).max(min_width);
+    let lines = wrap(notes, (width - 2 * m) as f32, size::LABEL);
+    let title_h = (1.8 * size::TITLE) as u32;
+    let notes_h = (lines.len() as f32 * NOTE_LINE + 0.5 * size::LABEL) as u32;
+    let height = m + title_h + body.height() + notes_h + m;
+    let mut out = style::white_pixmap(width, height)
+        .ok_or_else(|| Error::failed(format!("cannot allocate a {width}x{height} figure")))?;
+    let centre = 0.5 * width as f32;
+    let top = (centre, m as f32);
+    style::draw_text(&mut out, title, top, size::TITLE, DARK, TOP_CENTRE);
+    compose::blit(&mut out, body, (width - body.width()) / 2, m + title_h);
+    let y0 = (m + title_h + body.height()) as f32 + 0.4 * size::LABEL;
+    for (k, l) in lines.iter().enumerate() {
+        let at = (m as f32, y0 + k as f32 * NOTE_LINE);
+        style::draw_text(&mut out, l, at, size::LABEL, DARK, TOP_LEFT);
+    }
+    Ok(out)
+}
+
+const TOP_CENTRE: (HAlign, VAlign) = (HAlign::Center, VAlign::Top);
+const TOP_LEFT: (HAlign, VAlign) = (HAlign::Left, VAlign::Top);
+
+/// Panels in a grid without a title (the figure frame carries it).
+fn grid(panels: &[Panel], columns: usize) -> Result<Pixmap> {
+    compose::compose(panels, &Layout::columns(columns))
+}
+
+/// A snapshot of `q` on `ladder` without the pin support of block 1 (these
+/// configurations are not driven), over an optional grey `ghost`.
+fn configuration(
+    ladder: &Ladder,
+    q: &[f64],
+    ghost: Option<&[f64]>,
+    (w, h): (u32, u32),
+) -> Result<Pixmap> {
+    let mut snap = Snapshot::new(ladder, q)?;
+    if let Some(g) = ghost {
+        snap = snap.with_ghost(ladder, g)?;
+    }
+    snap.clamp = false;
+    snapshot::render_snapshot(&snap, w, h)
+}
+
+/// The paper's parameters with N blocks, b and α (degrees).
+fn params(n: usize, b: f64, alpha_deg: f64) -> Result<Params> {
+    Ok(Params::paper(alpha_deg)?.with(n, b, alpha_deg)?)
+}
+
+/// "+75°", "−75°", "0°" with a true minus sign.
+fn signed_deg(x: f64) -> String {
+    let v = crate::render::charts::short_number(x.abs());
+    if x > 0.0 {
+        format!("+{v}°")
+    } else if x < 0.0 {
+        format!("−{v}°")
+    } else {
+        format!("{v}°")
+    }
+}

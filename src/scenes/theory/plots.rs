@@ -1,0 +1,355 @@
+//! Chart figures of the linear theory: Fig. 2c (U(θ), eq:U_g), Fig. S5
+//! (dispersion, eq:dispersion), the winding of det C(q) (eq:det-C,
+//! eq:winding), the surface zero mode (eq:2nd_sol) and the barrier ΔU(α)
+//! (eq:delta_U).
+
+use super::pen;
+use super::{configuration, frame, grid, params, signed_deg, title};
+use crate::catalog::TheoryFigure;
+use crate::encode::Rgb;
+use crate::error::{Error, Result};
+use crate::model::Ladder;
+use crate::render::charts::{line_chart, short_number};
+use crate::render::compose::Panel;
+use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign, size};
+use crate::render::{Axis, ChartSpec, Legend, Marker, Series};
+use crate::theory::figures::{
+    DispersionCurve, FIG_2C_A_OVER_B, FIG_2C_B, FIG_S5_ALPHAS, FIG_S5_B, barrier_curve, det_loop,
+    dispersion_curves, edge_mode_profile, potential_curves,
+};
+use crate::theory::gravity;
+use std::f64::consts::PI;
+use tiny_skia::Pixmap;
+
+fn chart(spec: &ChartSpec, w: u32, h: u32) -> Result<Pixmap> {
+    Ok(line_chart(spec, w, h)?.pixmap)
+}
+
+fn pairs(points: &[[f64; 2]]) -> Vec<(f64, f64)> {
+    points.iter().map(|p| (p[0], p[1])).collect()
+}
+
+/// Fig. 2c: U(θ) for each a/b of `FIG_2C_A_OVER_B` at b/s = 1.2, the
+/// minima at ±α (eq:eq_alpha, U_min = −2mgb), and ladders at both minima
+/// of two of the curves beside the chart.
+pub fn gravity_potential() -> Result<Pixmap> {
+    let curves = potential_curves(FIG_2C_B, &FIG_2C_A_OVER_B, 1441);
+    let mut spec = ChartSpec::new(
+        Axis::new("θ (degrees)").range(-90.0, 90.0),
+        Axis::new("U(θ) / (m g s), per pair of blocks"),
+    );
+    let mut minima = Vec::new();
+    for (i, c) in curves.iter().enumerate() {
+        let alpha = c.alpha_deg.unwrap_or(f64::NAN);
+        let label = format!("a/b = {} (α = ±{alpha:.1}°)", c.a_over_b);
+        spec = spec.series(Series::line(label, pairs(&c.points), curve_color(i)));
+        minima.extend([(-alpha, gravity::u_min(c.b)), (alpha, gravity::u_min(c.b))]);
+    }
+    spec = spec.series(Series::scatter(
+        "minima U(±α) = −2mgb",
+        minima,
+        DARK,
+        Marker::Circle,
+    ));
+    let plot = chart(&spec, 620, 560)?;
+    let insets = potential_insets(&[1, 3])?;
+    let body = grid(&[Panel::new(plot), Panel::new(insets)], 2)?;
+    let notes = format!(
+        "Linkage limit, b/s = {FIG_2C_B}: U(θ) = −mg√(2(a² + b²) − 4s²cos²θ − (a² − b²)²/(4s²cos²θ)) \
+         (eq:U_G), a symmetric double well whose minima θ = ±α (cos α = √(a² − b²)/2s) all lie \
+         at U_min = −2mgb. Right: the ladder (4 blocks) at θ = −α and θ = +α for two of the \
+         curves; the two orientations are degenerate."
+    );
+    frame(title(TheoryFigure::GravityPotential), &body, &notes, 900)
+}
+
+fn curve_color(i: usize) -> Rgb {
+    style::series_color(i + 1)
+}
+
+/// The name of `curve_color(i)`, for the inset labels.
+fn color_name(i: usize) -> &'static str {
+    ["red", "blue", "green", "orange", "purple"]
+        .get(i)
+        .copied()
+        .unwrap_or("")
+}
+
+/// Ground states of 4 blocks at θ = ∓α for the curves `which`, one row per
+/// curve.
+fn potential_insets(which: &[usize]) -> Result<Pixmap> {
+    let mut panels = Vec::new();
+    for &i in which {
+        let r = FIG_2C_A_OVER_B[i];
+        let alpha = gravity::alpha_from_lengths(r * FIG_2C_B, FIG_2C_B)
+            .ok_or_else(|| Error::failed(format!("a/b = {r} has no equilibrium")))?
+            .to_degrees();
+        for sign in [-1.0, 1.0] {
+            let l = Ladder::new(params(4, FIG_2C_B, sign * alpha)?);
+            let q = l.ground_state();
+            let mut panel = Panel::new(configuration(&l, &q, None, (120, 230))?)
+                .caption(signed_deg((sign * alpha * 10.0).round() / 10.0));
+            if sign < 0.0 {
+                panel = panel.label(format!("a/b = {r} ({})", color_name(i)));
+            }
+            panels.push(panel);
+        }
+    }
+    grid(&panels, 2)
+}
+
+/// Number of dispersion samples for lines and for dots.
+const LINE_SAMPLES: usize = 128;
+const DOT_SAMPLES: usize = 24;
+
+/// Fig. S5: ω±(q)/ω₀ against qb for each α of `FIG_S5_ALPHAS`, b/s = 1.3,
+/// one panel per α: eq:dispersion as printed (dashed), ×√2 (solid, errata
+/// item 9) and the model's eigenvalues (dots).
+pub fn dispersion() -> Result<Pixmap> {
+    let base = params(10, FIG_S5_B, 60.0)?;
+    let lines = dispersion_curves(&base, FIG_S5_B, &FIG_S5_ALPHAS, LINE_SAMPLES)?;
+    let dots = dispersion_curves(&base, FIG_S5_B, &FIG_S5_ALPHAS, DOT_SAMPLES)?;
+    let top = lines
+        .iter()
+        .flat_map(|c| c.samples.iter())
+        .map(|s| s.closed_form_rescaled[1].max(s.numerical[1]))
+        .fold(0.0, f64::max);
+    let y_max = (top * 1.08 * 2.0).ceil() / 2.0;
+    let mut panels = Vec::new();
+    for (l, d) in lines.iter().zip(&dots) {
+        panels.push(Panel::new(dispersion_panel(l, d, y_max)?));
+    }
+    let mut body = grid(&panels, 3)?;
+    body = stack(&body, &dispersion_key(body.width())?)?;
+    let notes = "ω₀ = √(k/m) = 1/τ, I = ms²/4, constraint δv_n = (−1)ⁿ(s/2) sin α δθ_n \
+                 (eq:constraint_Y). The printed closed form is √2 too small for this ω₀ \
+                 (docs/paper-errata.md item 9): it is exact if ω₀ is read as √(2k/m). The \
+                 eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I) \
+                 as in eq:D) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \
+                 of the rotational branch; ω₋ is acoustic.";
+    frame(title(TheoryFigure::Dispersion), &body, notes, 900)
+}
+
+fn dispersion_panel(lines: &DispersionCurve, dots: &DispersionCurve, y_max: f64) -> Result<Pixmap> {
+    let mut spec = ChartSpec::new(
+        Axis::new("qb").range(-PI, PI),
+        Axis::new("ω/ω₀").range(0.0, y_max),
+    )
+    .title(format!("α = {}°", short_number(lines.alpha_deg)));
+    for (branch, color) in [(1, RED), (0, BLUE)] {
+        let pick = |f: fn(&crate::theory::figures::DispersionSample) -> [f64; 2]| {
+            lines
+                .samples
+                .iter()
+                .map(|s| (s.qb, f(s)[branch]))
+                .collect::<Vec<_>>()
+        };
+        spec = spec
+            .series(Series::line("", pick(|s| s.closed_form), color).dashed())
+            .series(Series::line("", pick(|s| s.closed_form_rescaled), color));
+        let pts = dots
+            .samples
+            .iter()
+            .map(|s| (s.qb, s.numerical[branch]))
+            .collect();
+        spec = spec.series(Series::scatter("", pts, color, Marker::Circle).with_width(1.0));
+    }
+    spec.legend = Legend::Hidden;
+    chart(&spec, 300, 250)
+}
+
+/// The shared key of the dispersion panels, drawn as one row.
+fn dispersion_key(width: u32) -> Result<Pixmap> {
+    let mut p = style::white_pixmap(width, 34).ok_or_else(|| Error::failed("canvas"))?;
+    let entries: [(&str, Rgb, u8); 6] = [
+        ("ω₊ eq:dispersion × √2", RED, 0),
+        ("ω₊ as printed", RED, 1),
+        ("ω₊ model", RED, 2),
+        ("ω₋ × √2", BLUE, 0),
+        ("ω₋ as printed", BLUE, 1),
+        ("ω₋ model", BLUE, 2),
+    ];
+    let widths: Vec<f32> = entries
+        .iter()
+        .map(|e| 34.0 + style::text_width(e.0, size::TICK) + 22.0)
+        .collect();
+    let mut x = 0.5 * (width as f32 - widths.iter().sum::<f32>());
+    let y = 17.0;
+    for (e, w) in entries.iter().zip(&widths) {
+        match e.2 {
+            0 => pen::line(&mut p, (x, y), (x + 26.0, y), 2.0, e.1),
+            1 => pen::polyline(&mut p, &[(x, y), (x + 26.0, y)], 2.0, e.1, true),
+            _ => pen::dot(&mut p, (x + 13.0, y), 3.5, e.1),
+        }
+        let at = (x + 34.0, y);
+        style::draw_text(
+            &mut p,
+            e.0,
+            at,
+            size::TICK,
+            DARK,
+            (HAlign::Left, VAlign::Middle),
+        );
+        x += w;
+    }
+    Ok(p)
+}
+
+/// `top` above `bottom`, centred, on white.
+fn stack(top: &Pixmap, bottom: &Pixmap) -> Result<Pixmap> {
+    let w = top.width().max(bottom.width());
+    let mut out = style::white_pixmap(w, top.height() + bottom.height())
+        .ok_or_else(|| Error::failed("canvas"))?;
+    crate::render::compose::blit(&mut out, top, (w - top.width()) / 2, 0);
+    crate::render::compose::blit(&mut out, bottom, (w - bottom.width()) / 2, top.height());
+    Ok(out)
+}
+
+/// α of the winding and edge-mode figures.
+const WINDING_ALPHA: f64 = 60.0;
+
+/// The winding figure: det C_red(q)/(e^(iqb) − 1) (a circle of radius 2|c₁|
+/// about −2c₂, errata item 8) and det C_red(q) itself (eq:det-C) over the
+/// Brillouin zone for α = ±60°, b/s = 1.3.
+pub fn winding() -> Result<Pixmap> {
+    let mut panels = Vec::new();
+    for sign in [1.0, -1.0] {
+        let p = params(10, 1.3, sign * WINDING_ALPHA)?;
+        panels.push(Panel::new(winding_panel(&p)?));
+    }
+    let body = grid(&panels, 2)?;
+    let notes = "b/s = 1.3. Solid: det C(q)/(e^(iqb) − 1) = 2(c₁e^(iqb) − c₂), the circle of \
+                 radius 2|c₁| about −2c₂ whose winding about the origin (+) is the winding number \
+                 n; dashed: det C(q) of the model's reduced chain (= eq:det-C), which passes \
+                 through 0 at q = 0 (translation along x). For α > 0, |c₂| < c₁ and the loop \
+                 encloses the origin (n = 1, surface zero mode at the top); for α < 0 it does not \
+                 (n = 0).";
+    frame(title(TheoryFigure::Winding), &body, notes, 900)
+}
+
+fn winding_panel(p: &crate::model::Params) -> Result<Pixmap> {
+    let l = det_loop(p, 720)?;
+    let n = l
+        .winding_number
+        .map_or_else(|| "undefined".to_string(), |n| n.to_string());
+    let color = if l.alpha_deg > 0.0 { RED } else { BLUE };
+    let closed = |v: &[[f64; 2]]| {
+        let mut v = pairs(v);
+        if let Some(&first) = v.first() {
+            v.push(first);
+        }
+        v
+    };
+    let mut spec = ChartSpec::new(Axis::new("Re det C"), Axis::new("Im det C"))
+        .title(format!("α = {}: n = {n}", signed_deg(l.alpha_deg)))
+        .series(Series::line(
+            "det C / (e^(iqb) − 1)",
+            closed(&l.reduced),
+            color,
+        ))
+        .series(Series::line("det C", closed(&l.det), GREY).dashed())
+        .series(Series::scatter(
+            "origin",
+            vec![(0.0, 0.0)],
+            DARK,
+            Marker::Cross,
+        ));
+    spec.x = spec.x.range(-2.6, 2.6);
+    spec.y = spec.y.range(-2.2, 2.2);
+    spec.equal_aspect = true;
+    spec.zero_lines = true;
+    spec.legend = Legend::UpperLeft;
+    chart(&spec, 440, 440)
+}
+
+/// The edge-mode figure: |δθ_n| of the reduced chain's null vector (dots)
+/// and |c₂/c₁|^{n−1} ∝ e^{−κ(n−1)b} (eq:2nd_sol, lines), log scale; α > 0
+/// left (top edge), α < 0 right (bottom edge).
+pub fn edge_mode() -> Result<Pixmap> {
+    let mut panels = Vec::new();
+    for sign in [1.0, -1.0] {
+        panels.push(Panel::new(edge_panel(sign)?));
+    }
+    let body = grid(&panels, 2)?;
+    let notes = "N = 10, b/s = 1.3; surface zero mode of the chain with the B nodes pinned \
+                 (eq:e-KL), found as the null vector of the model's compatibility matrix and \
+                 normalised to max |δθ_n| = 1. κ = b⁻¹ ln|(b + 2s sin α)/(b − 2s sin α)| changes sign \
+                 with α: the mode decays from the top for α > 0 (κ > 0) and from the bottom for \
+                 α < 0 (κ < 0). \
+                 Beyond |α| ≈ 40.5° (b < 2s|sin α|) c₂/c₁ < 0 and δθ_n alternates in sign.";
+    frame(title(TheoryFigure::EdgeMode), &body, notes, 900)
+}
+
+fn edge_panel(sign: f64) -> Result<Pixmap> {
+    let mut spec = ChartSpec::new(
+        Axis::new("block n").range(0.5, 10.5),
+        Axis::new("|δθ_n| / max").log(),
+    )
+    .title(if sign > 0.0 {
+        "α > 0: localised at the top"
+    } else {
+        "α < 0: localised at the bottom"
+    });
+    for (k, alpha) in [25.0, 60.0].into_iter().enumerate() {
+        let e = edge_mode_profile(&params(10, 1.3, sign * alpha)?)?;
+        let color = [RED, BLUE][k];
+        let kb = e.kappa.map_or(f64::NAN, |x| x * 1.3);
+        let line = e.n.iter().map(|&n| n as f64).zip(e.formula.iter().copied());
+        let dots =
+            e.n.iter()
+                .map(|&n| n as f64)
+                .zip(e.numerical.iter().copied());
+        spec = spec
+            .series(Series::line(
+                format!("e^(−κ(n−1)b), κb = {kb:.2}"),
+                line.collect(),
+                color,
+            ))
+            .series(Series::scatter(
+                format!("α = {}, numerical", signed_deg(sign * alpha)),
+                dots.collect(),
+                color,
+                Marker::Circle,
+            ));
+    }
+    spec.y = spec.y.range(1e-9, 3.0);
+    chart(&spec, 440, 420)
+}
+
+/// The barrier figure: ΔU(α) = U(0) − U(α) (eq:delta_U) for b/s = 1.3, and
+/// the same from the model's two-block linkage solved at θ = 0 (dots).
+pub fn barrier() -> Result<Pixmap> {
+    let b = 1.3;
+    let curve = pairs(&barrier_curve(b, 180));
+    let dots: Vec<(f64, f64)> = (0..=18)
+        .filter_map(|k| model_barrier(b, 5.0 * k as f64).map(|du| (5.0 * k as f64, du)))
+        .collect();
+    let mut spec = ChartSpec::new(
+        Axis::new("equilibrium angle α (degrees)").range(-2.0, 92.0),
+        Axis::new("ΔU / (m g s), per pair of blocks"),
+    )
+    .series(Series::line("eq:delta_U", curve, RED))
+    .series(Series::scatter(
+        "model linkage, U(0) − U(α)",
+        dots,
+        DARK,
+        Marker::Circle,
+    ));
+    spec.legend = Legend::UpperLeft;
+    let plot = chart(&spec, 800, 500)?;
+    let notes = "b/s = 1.3. ΔU(α) = 2mgb(1 − √(1 − (s²/b²)sin⁴α)): the height of the criss-cross \
+                 configuration θ = 0 above the two minima θ = ±α of U(θ). Dots: centre spacing \
+                 of the model's two-block chain with both springs at rest length, solved by \
+                 Newton's method at θ = 0 and θ = α. The barrier vanishes as α → 0 (the gapless \
+                 configuration of Fig. S3) and is largest for the symmetric toy α → 90°.";
+    frame(title(TheoryFigure::Barrier), &plot, notes, 840)
+}
+
+/// U(0) − U(α) from the model's two-block linkage (no closed form).
+fn model_barrier(b: f64, alpha_deg: f64) -> Option<f64> {
+    let p = params(2, b, alpha_deg).ok()?;
+    let guess = [b, -p.alpha.cos().powi(2)];
+    let at_zero = gravity::model_pair_spacing(&p, 0.0, guess)?;
+    let at_alpha = gravity::model_pair_spacing(&p, p.alpha, [b, -p.alpha.cos()])?;
+    Some(2.0 * (at_alpha[0] - at_zero[0]))
+}

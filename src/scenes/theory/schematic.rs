@@ -1,0 +1,176 @@
+//! Fig. 2b (and supplement Fig. S2b): one unit of the asymmetric ladder,
+//! drawn from the model's two-block ground state at θ = α: blocks of length
+//! s with their red A and blue B ends, the A link (length a, red) and the B
+//! link (length b, green), the angle θ from the transverse y axis, and the
+//! offsets Δx, Δy of eq:b and eq:del_y. Gravity points down the page.
+
+use super::pen::{self, Pt};
+use super::{frame, params, title};
+use crate::catalog::TheoryFigure;
+use crate::encode::Rgb;
+use crate::error::{Error, Result};
+use crate::model::Ladder;
+use crate::model::ladder::nodes;
+use crate::render::style::{self, BLUE, DARK, GREEN, GREY, HAlign, RED, VAlign};
+use tiny_skia::Pixmap;
+
+/// b/s and θ = α (degrees) of the drawn unit.
+const B: f64 = 1.2;
+const ALPHA_DEG: f64 = 60.0;
+/// Canvas size, pixels per s and the pixel position of block n's centre.
+const W: u32 = 880;
+const H: u32 = 620;
+const SCALE: f64 = 215.0;
+const ORIGIN: Pt = (470.0, 150.0);
+/// Annotation text size.
+const TEXT: f32 = 19.0;
+
+/// Pixel position of the model point [x (down), y (across)].
+fn px(p: [f64; 2]) -> Pt {
+    (
+        ORIGIN.0 + (p[1] * SCALE) as f32,
+        ORIGIN.1 + (p[0] * SCALE) as f32,
+    )
+}
+
+fn add(p: Pt, d: (f32, f32)) -> Pt {
+    (p.0 + d.0, p.1 + d.1)
+}
+
+fn mid(a: Pt, b: Pt) -> Pt {
+    (0.5 * (a.0 + b.0), 0.5 * (a.1 + b.1))
+}
+
+fn text(p: &mut Pixmap, s: &str, at: Pt, c: Rgb, align: (HAlign, VAlign)) {
+    style::draw_text(p, s, at, TEXT, c, align);
+}
+
+const MIDDLE: (HAlign, VAlign) = (HAlign::Center, VAlign::Middle);
+const LEFT: (HAlign, VAlign) = (HAlign::Left, VAlign::Middle);
+
+/// The figure: drawing plus notes.
+pub fn unit() -> Result<Pixmap> {
+    let ladder = Ladder::new(params(2, B, ALPHA_DEG)?);
+    let q = ladder.ground_state();
+    let mut p = style::white_pixmap(W, H).ok_or_else(|| Error::failed("canvas"))?;
+    let unit = Unit::of(&q);
+    draw_links_and_blocks(&mut p, &unit);
+    draw_theta(&mut p, &unit);
+    draw_s(&mut p, &unit);
+    draw_offsets(&mut p, &unit);
+    draw_frame_hints(&mut p);
+    let notes = format!(
+        "Drawn from the model's ground state of two blocks at b/s = {B}, θ = α = {ALPHA_DEG}°, \
+         a = √(b² + 4s²cos²α) = {:.3} s. The A link (red) joins the red A ends of the blocks, \
+         the B link (green) their blue B ends. θ is measured from the transverse y axis \
+         (counter-clockwise for even n, clockwise for odd n); Δx is the gap along gravity \
+         between the facing ends, Δy the transverse offset of the centres (eq:b). \
+         At θ = α: Δx = b − s sin α, Δy = s cos α, and the B link hangs straight down \
+         (eq:min_values).",
+        ladder.a
+    );
+    frame(title(TheoryFigure::UnitSchematic), &p, &notes, W)
+}
+
+/// Pixel positions of the unit's nodes and centres.
+struct Unit {
+    /// A and B nodes of the upper block n and the lower block n + 1.
+    a1: Pt,
+    b1: Pt,
+    a2: Pt,
+    b2: Pt,
+    c1: Pt,
+    c2: Pt,
+}
+
+impl Unit {
+    fn of(q: &[f64]) -> Unit {
+        let (a1, b1) = nodes(q, 0);
+        let (a2, b2) = nodes(q, 1);
+        Unit {
+            a1: px(a1),
+            b1: px(b1),
+            a2: px(a2),
+            b2: px(b2),
+            c1: px([q[0], q[1]]),
+            c2: px([q[3], q[4]]),
+        }
+    }
+}
+
+fn draw_links_and_blocks(p: &mut Pixmap, u: &Unit) {
+    pen::line(p, u.a1, u.a2, 3.5, RED);
+    pen::line(p, u.b1, u.b2, 3.5, GREEN);
+    for (a, b) in [(u.a1, u.b1), (u.a2, u.b2)] {
+        let at = |f: f32| (a.0 + (b.0 - a.0) * f, a.1 + (b.1 - a.1) * f);
+        pen::line(p, a, b, 14.0, DARK);
+        pen::line(p, a, at(0.22), 14.0, RED);
+        pen::line(p, at(0.78), b, 14.0, BLUE);
+    }
+    for c in [u.c1, u.c2] {
+        pen::dot(p, c, 4.0, style::WHITE);
+    }
+    let ma = mid(u.a1, u.a2);
+    text(p, "a", add(ma, (-22.0, -6.0)), RED, MIDDLE);
+    text(p, "A", add(u.a1, (16.0, -10.0)), RED, LEFT);
+    let mb = mid(u.b1, u.b2);
+    text(p, "b", add(mb, (16.0, 0.0)), GREEN, LEFT);
+    text(p, "B", add(u.b1, (-26.0, 4.0)), BLUE, MIDDLE);
+    text(p, "block n", add(u.c1, (120.0, -60.0)), DARK, LEFT);
+    let at = add(u.c2, (-60.0, -30.0));
+    text(p, "block n + 1", at, DARK, (HAlign::Right, VAlign::Middle));
+}
+
+/// θ between the transverse axis (dashed, through block n's centre) and
+/// the upper half of block n.
+fn draw_theta(p: &mut Pixmap, u: &Unit) {
+    let r = 0.36 * SCALE as f32;
+    pen::dashed(p, u.c1, add(u.c1, (1.35 * r, 0.0)), 1.3, GREY);
+    let up = ((u.a1.1 - u.c1.1).atan2(u.a1.0 - u.c1.0), 0.0);
+    pen::arc(p, u.c1, r, up.0, up.1, 1.6, DARK);
+    let half = 0.5 * up.0;
+    let at = add(u.c1, (1.28 * r * half.cos(), 1.28 * r * half.sin()));
+    text(p, "θ", at, DARK, MIDDLE);
+}
+
+/// The block length s as a dimension line beside block n + 1.
+fn draw_s(p: &mut Pixmap, u: &Unit) {
+    let (dx, dy) = (u.b2.0 - u.a2.0, u.b2.1 - u.a2.1);
+    let l = (dx * dx + dy * dy).sqrt();
+    // The side of block n + 1 away from the links: left and down.
+    let nrm = (-dy / l, dx / l);
+    let off = (0.16 * SCALE) as f32;
+    let o = (nrm.0 * off, nrm.1 * off);
+    let (a, b) = (add(u.a2, o), add(u.b2, o));
+    pen::dimension(p, a, b, DARK);
+    let m = add(mid(a, b), (nrm.0 * 18.0, nrm.1 * 18.0));
+    text(p, "s", m, DARK, MIDDLE);
+}
+
+/// Δx (gap along gravity between the facing block ends) to the right, Δy
+/// (transverse offset of the centres) below the unit.
+fn draw_offsets(p: &mut Pixmap, u: &Unit) {
+    let right = u.c1.0 + (0.62 * SCALE) as f32;
+    let (top, bottom) = (u.b1.1, u.a2.1);
+    pen::dashed(p, u.b1, (right + 12.0, top), 1.2, GREY);
+    pen::dashed(p, u.a2, (right + 12.0, bottom), 1.2, GREY);
+    pen::dimension(p, (right, top), (right, bottom), DARK);
+    text(p, "Δx", (right + 14.0, 0.5 * (top + bottom)), DARK, LEFT);
+    let low = u.b2.1 + (0.32 * SCALE) as f32;
+    pen::dashed(p, u.c1, (u.c1.0, low + 12.0), 1.2, GREY);
+    pen::dashed(p, u.c2, (u.c2.0, low + 12.0), 1.2, GREY);
+    pen::dimension(p, (u.c2.0, low), (u.c1.0, low), DARK);
+    text(p, "Δy", (0.5 * (u.c1.0 + u.c2.0), low + 22.0), DARK, MIDDLE);
+}
+
+/// Axes (x down along gravity, y across) and the gravity arrow, top left.
+fn draw_frame_hints(p: &mut Pixmap) {
+    let o = (60.0, 40.0);
+    pen::arrow(p, o, (o.0, o.1 + 70.0), 1.6, DARK);
+    pen::arrow(p, o, (o.0 + 70.0, o.1), 1.6, DARK);
+    text(p, "x", (o.0 - 16.0, o.1 + 62.0), DARK, MIDDLE);
+    text(p, "y", (o.0 + 66.0, o.1 - 14.0), DARK, MIDDLE);
+    let g = (o.0 + 8.0, o.1 + 160.0);
+    pen::arrow(p, g, (g.0, g.1 + 110.0), 3.0, DARK);
+    text(p, "g", (g.0 + 14.0, g.1 + 50.0), DARK, LEFT);
+}
