@@ -203,7 +203,12 @@ fn movie_view(ladder: &Ladder, traj: &Trajectory, k: usize, follow: bool, aspect
 
 /// A movie: the GIF and the kymograph PNG. Each frame shows the ladder on
 /// the left and, on the right, the kymograph of sin θ_n up to that frame.
-pub fn movie(title: &str, sim: &SimSpec, follow: bool, opts: &MovieOptions) -> Result<(Vec<u8>, Vec<u8>)> {
+pub fn movie(
+    title: &str,
+    sim: &SimSpec,
+    follow: bool,
+    opts: &MovieOptions,
+) -> Result<(Vec<u8>, Vec<u8>)> {
     let opts = opts.validated()?;
     let times = frame_times(sim.t_end, opts.frames);
     let traj = run(sim, &times)?;
@@ -222,15 +227,32 @@ pub fn movie(title: &str, sim: &SimSpec, follow: bool, opts: &MovieOptions) -> R
     layout.decorate(&mut background, title, sim.t_end, ladder.n());
     let mut canvas = blank()?;
     for (k, q) in traj.states.iter().enumerate() {
-        let view = if follow { movie_view(&ladder, &traj, k, true, aspect) } else { fixed };
-        let snap = Snapshot::new(&ladder, q)?.with_time(traj.times[k]).with_view(view);
+        let view = if follow {
+            movie_view(&ladder, &traj, k, true, aspect)
+        } else {
+            fixed
+        };
+        let snap = Snapshot::new(&ladder, q)?
+            .with_time(traj.times[k])
+            .with_view(view);
         canvas.data_mut().copy_from_slice(background.data());
         snapshot::draw_snapshot(&mut canvas, layout.ladder, &snap);
         layout.restore_title(&mut canvas, &background);
-        reveal_rows(&mut canvas, &heat, layout.heat, (k + 1) as f32 / traj.states.len() as f32);
+        reveal_rows(
+            &mut canvas,
+            &heat,
+            layout.heat,
+            (k + 1) as f32 / traj.states.len() as f32,
+        );
         gif.push_frame(&canvas)?;
     }
-    let kymo = kymograph_image(title, &traj, ladder.n(), opts.width.max(480), opts.height.max(360))?;
+    let kymo = kymograph_image(
+        title,
+        &traj,
+        ladder.n(),
+        opts.width.max(480),
+        opts.height.max(360),
+    )?;
     Ok((gif.finish()?, png_bytes(&kymo)?))
 }
 
@@ -250,12 +272,19 @@ impl MovieLayout {
         let bottom = (2.6 * style::size::TICK).min(0.15 * h);
         Self {
             width: w,
-            ladder: Region { x: 0.0, y: top, w: split, h: (h - top).max(1.0) },
+            ladder: Region {
+                x: 0.0,
+                y: top,
+                w: split,
+                h: (h - top).max(1.0),
+            },
             heat: Region {
                 x: heat_x.round(),
                 y: (top + 0.8 * style::size::TICK).round(),
                 w: (w - heat_x - 0.04 * w).max(1.0).round(),
-                h: (h - top - bottom - 0.8 * style::size::TICK).max(1.0).round(),
+                h: (h - top - bottom - 0.8 * style::size::TICK)
+                    .max(1.0)
+                    .round(),
             },
         }
     }
@@ -271,19 +300,61 @@ impl MovieLayout {
     fn decorate(&self, canvas: &mut Pixmap, title: &str, t_end: f64, n: usize) {
         use style::{DARK, HAlign, VAlign, draw_text, size};
         let tick = size::TICK;
-        draw_text(canvas, title, (0.5 * self.width, 6.0), size::TITLE, DARK, (HAlign::Center, VAlign::Top));
+        draw_text(
+            canvas,
+            title,
+            (0.5 * self.width, 6.0),
+            size::TITLE,
+            DARK,
+            (HAlign::Center, VAlign::Top),
+        );
         let r = self.heat;
         let left = r.x - 4.0;
-        draw_text(canvas, "t/τ = 0", (left, r.y), tick, DARK, (HAlign::Right, VAlign::Top));
+        draw_text(
+            canvas,
+            "t/τ = 0",
+            (left, r.y),
+            tick,
+            DARK,
+            (HAlign::Right, VAlign::Top),
+        );
         let end = format!("{t_end:.0}");
-        draw_text(canvas, &end, (left, r.y + r.h), tick, DARK, (HAlign::Right, VAlign::Baseline));
+        draw_text(
+            canvas,
+            &end,
+            (left, r.y + r.h),
+            tick,
+            DARK,
+            (HAlign::Right, VAlign::Baseline),
+        );
         let below = r.y + r.h + 4.0;
-        draw_text(canvas, "block 1", (r.x, below), tick, DARK, (HAlign::Left, VAlign::Top));
+        draw_text(
+            canvas,
+            "block 1",
+            (r.x, below),
+            tick,
+            DARK,
+            (HAlign::Left, VAlign::Top),
+        );
         let last = format!("{n}");
-        draw_text(canvas, &last, (r.x + r.w, below), tick, DARK, (HAlign::Right, VAlign::Top));
+        draw_text(
+            canvas,
+            &last,
+            (r.x + r.w, below),
+            tick,
+            DARK,
+            (HAlign::Right, VAlign::Top),
+        );
         let legend = "sin θₙ: red +1, blue −1";
         let mid = (r.x + 0.5 * r.w, below + 1.3 * tick);
-        draw_text(canvas, legend, mid, tick, DARK, (HAlign::Center, VAlign::Top));
+        draw_text(
+            canvas,
+            legend,
+            mid,
+            tick,
+            DARK,
+            (HAlign::Center, VAlign::Top),
+        );
     }
 }
 
@@ -291,16 +362,28 @@ impl MovieLayout {
 /// column per block, sin θ_n in the diverging map (no anti-aliasing).
 fn heat_map(traj: &Trajectory, n: usize, region: Region) -> Result<Pixmap> {
     let (w, h) = (region.w as u32, region.h as u32);
-    let mut map = style::white_pixmap(w, h).ok_or_else(|| Error::bad_input("the movie frame is too small"))?;
+    let mut map = style::white_pixmap(w, h)
+        .ok_or_else(|| Error::bad_input("the movie frame is too small"))?;
     let rows = traj.states.len();
-    let mut paint = tiny_skia::Paint { anti_alias: false, ..Default::default() };
+    let mut paint = tiny_skia::Paint {
+        anti_alias: false,
+        ..Default::default()
+    };
     for (k, q) in traj.states.iter().enumerate() {
-        let (y0, y1) = (k as f32 * h as f32 / rows as f32, (k + 1) as f32 * h as f32 / rows as f32);
+        let (y0, y1) = (
+            k as f32 * h as f32 / rows as f32,
+            (k + 1) as f32 * h as f32 / rows as f32,
+        );
         for j in 0..n {
-            let (x0, x1) = (j as f32 * w as f32 / n as f32, (j + 1) as f32 * w as f32 / n as f32);
+            let (x0, x1) = (
+                j as f32 * w as f32 / n as f32,
+                (j + 1) as f32 * w as f32 / n as f32,
+            );
             let v = q[crate::model::ladder::itheta(j)].sin();
             paint.set_color(style::color(style::diverging(v)));
-            if let Some(rect) = tiny_skia::Rect::from_ltrb(x0.floor(), y0.floor(), x1.ceil(), y1.ceil()) {
+            if let Some(rect) =
+                tiny_skia::Rect::from_ltrb(x0.floor(), y0.floor(), x1.ceil(), y1.ceil())
+            {
                 map.fill_rect(rect, &paint, tiny_skia::Transform::identity(), None);
             }
         }

@@ -53,7 +53,10 @@ impl<'a> Rhs<'a> {
             ladder,
             protocol,
             clamp: [q0[ix(0)], q0[iy(0)]],
-            inv_mass: per_block(1.0 / M, 1.0 / p.inertia).enumerate().map(free).collect(),
+            inv_mass: per_block(1.0 / M, 1.0 / p.inertia)
+                .enumerate()
+                .map(free)
+                .collect(),
             damping_rate: per_block(p.gamma / M, p.gamma * R * R / p.inertia)
                 .enumerate()
                 .map(free)
