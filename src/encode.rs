@@ -183,7 +183,12 @@ pub struct GifWriter {
     frames: usize,
     previous: Option<Vec<u8>>,
     indices: Vec<u8>,
+    /// Frames whose indices are ready, waiting for LZW compression.
+    pending: Vec<gif::Frame<'static>>,
 }
+
+/// Frames compressed together (in parallel) before they are written.
+const LZW_BATCH: usize = 8;
 
 impl GifWriter {
     /// A writer for `width × height` frames shown at `fps` frames per second.
@@ -219,6 +224,7 @@ impl GifWriter {
             frames: 0,
             previous: None,
             indices: Vec::new(),
+            pending: Vec::with_capacity(LZW_BATCH),
         })
     }
 
@@ -263,10 +269,13 @@ impl GifWriter {
             top: rect.y0 as u16,
             width: (rect.x1 - rect.x0) as u16,
             height: (rect.y1 - rect.y0) as u16,
-            buffer: Cow::Borrowed(&self.indices),
+            buffer: Cow::Owned(self.indices.clone()),
             ..gif::Frame::default()
         };
-        self.encoder.write_frame(&frame).map_err(gif_error)?;
+        self.pending.push(frame);
+        if self.pending.len() >= LZW_BATCH {
+            self.flush()?;
+        }
         match &mut self.previous {
             Some(prev) => prev.copy_from_slice(data),
             None => self.previous = Some(data.to_vec()),
@@ -276,11 +285,24 @@ impl GifWriter {
     }
 
     /// Finishes the stream and returns the GIF bytes.
-    pub fn finish(self) -> Result<Vec<u8>> {
+    pub fn finish(mut self) -> Result<Vec<u8>> {
         if self.frames == 0 {
             return Err(Error::failed("a GIF needs at least one frame"));
         }
+        self.flush()?;
         self.encoder.into_inner().map_err(gif_error)
+    }
+
+    /// LZW-compresses the pending frames in parallel (each frame's code
+    /// stream is independent of the others, so the bytes do not depend on
+    /// the threads) and writes them in order.
+    fn flush(&mut self) -> Result<()> {
+        use rayon::prelude::*;
+        self.pending.par_iter_mut().for_each(|f| f.make_lzw_pre_encoded());
+        for f in self.pending.drain(..) {
+            self.encoder.write_lzw_pre_encoded_frame(&f).map_err(gif_error)?;
+        }
+        Ok(())
     }
 
     /// Delay of frame `k` in 1/100 s: differences of rounded cumulative times.
