@@ -223,11 +223,13 @@ unsafe fn gradient_avx2(ladder: &Ladder, q: &[f64], grad: &mut [f64], w: &mut Fo
 fn gradient_body(ladder: &Ladder, q: &[f64], grad: &mut [f64], w: &mut ForceScratch) {
     let n = ladder.n();
     let m = n - 1;
-    let q = &q[..3 * n];
-    for i in 0..n {
-        w.x[i] = q[3 * i];
-        w.y[i] = q[3 * i + 1];
-        w.theta[i] = q[3 * i + 2];
+    for (((b, x), y), th) in q[..3 * n]
+        .chunks_exact(3)
+        .zip(&mut w.x)
+        .zip(&mut w.y)
+        .zip(&mut w.theta)
+    {
+        (*x, *y, *th) = (b[0], b[1], b[2]);
     }
     // Whole lanes: sin/cos of padded(n) angles, padded(m) spring pairs.
     let (np, mp) = (padded(n), padded(m));
@@ -259,19 +261,17 @@ fn gradient_body(ladder: &Ladder, q: &[f64], grad: &mut [f64], w: &mut ForceScra
         tl[j] = -(dx * c[j] - dy * p[j] * s[j]);
     }
     let g = M * ladder.params.gravity;
-    let grad = &mut grad[..3 * n];
     // Block n feels spring pair n − 1 from above and pair n from below.
-    grad[0] = -g - fx[0];
-    grad[1] = -fy[0];
-    grad[2] = tl[0];
-    for i in 1..m {
-        grad[3 * i] = -g + fx[i - 1] - fx[i];
-        grad[3 * i + 1] = fy[i - 1] - fy[i];
-        grad[3 * i + 2] = tu[i - 1] + tl[i];
+    let (first, rest) = grad[..3 * n].split_at_mut(3);
+    first.copy_from_slice(&[-g - fx[0], -fy[0], tl[0]]);
+    let (middle, last) = rest.split_at_mut(3 * (m - 1));
+    for (j, b) in middle.chunks_exact_mut(3).enumerate() {
+        // Block j + 2 (zero-based j + 1): pair j above, pair j + 1 below.
+        b[0] = -g + fx[j] - fx[j + 1];
+        b[1] = fy[j] - fy[j + 1];
+        b[2] = tu[j] + tl[j + 1];
     }
-    grad[3 * m] = -g + fx[m - 1];
-    grad[3 * m + 1] = fy[m - 1];
-    grad[3 * m + 2] = tu[m - 1];
+    last.copy_from_slice(&[-g + fx[m - 1], fy[m - 1], tu[m - 1]]);
 }
 
 /// Centre, orientation t_n and its derivative dt_n/dθ_n of one block.

@@ -244,10 +244,12 @@ impl FixedStep {
             }
             self.damp_h = h;
         }
-        rhs.conservative(&st.q, &mut self.acc);
-        for k in 0..st.q.len() {
-            st.v[k] = (st.v[k] + h * self.acc[k]) * self.inv_damp[k];
-            st.q[k] += h * st.v[k];
+        let (grad, inv_mass) = rhs.gradient(&st.q);
+        let coords = st.q.iter_mut().zip(st.v.iter_mut());
+        let factors = grad.iter().zip(inv_mass).zip(&self.inv_damp);
+        for ((q, v), ((g, im), d)) in coords.zip(factors) {
+            *v = (*v - h * g * im) * d;
+            *q += h * *v;
         }
     }
 

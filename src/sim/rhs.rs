@@ -88,12 +88,20 @@ impl<'a> Rhs<'a> {
     /// zero for prescribed coordinates.
     #[inline]
     pub fn conservative(&mut self, q: &[f64], acc: &mut [f64]) {
+        self.gradient(q);
+        for ((a, g), im) in acc.iter_mut().zip(&self.grad).zip(&self.inv_mass) {
+            *a = -g * im;
+        }
+    }
+
+    /// ∂E/∂q at `q` (already constrained), with M⁻¹ for free coordinates
+    /// (zero for prescribed ones): the pieces of a fused update.
+    #[inline]
+    pub fn gradient(&mut self, q: &[f64]) -> (&[f64], &[f64]) {
         self.force_evals += 1;
         self.ladder
             .gradient_with(q, &mut self.grad, &mut self.scratch);
-        for k in 0..acc.len() {
-            acc[k] = -self.grad[k] * self.inv_mass[k];
-        }
+        (&self.grad, &self.inv_mass)
     }
 
     /// Full acceleration including damping, −M⁻¹(∂E/∂q + Γ v).
