@@ -337,13 +337,18 @@ fn bench_work_precision(args: &BenchArgs) -> Result<()> {
         bar.inc(1);
     })?;
     bar.finish_and_clear();
-    let csv = args.out.join("work-precision.csv");
+    let png_bytes = crate::encode::png_bytes(&bench::work_precision_chart(&report)?)?;
+    let (csv, png) = (
+        args.out.join("work-precision.csv"),
+        args.out.join("work-precision.png"),
+    );
     crate::output::write_atomic(&csv, bench::work_precision_csv(&report).as_bytes())?;
+    crate::output::write_atomic(&png, &png_bytes)?;
     if args.json {
         println!("{}", to_json(&report)?);
     } else {
         print!("{}", bench::work_precision_table(&report));
-        println!("wrote {}", csv.display());
+        println!("wrote {} and {}", csv.display(), png.display());
     }
     Ok(())
 }
@@ -357,13 +362,18 @@ fn bench_stability(args: &BenchArgs) -> Result<()> {
         bar.inc(1);
     })?;
     bar.finish_and_clear();
-    let csv = args.out.join("stability.csv");
+    let png_bytes = crate::encode::png_bytes(&bench::stability_chart(&report)?)?;
+    let (csv, png) = (
+        args.out.join("stability.csv"),
+        args.out.join("stability.png"),
+    );
     crate::output::write_atomic(&csv, bench::stability_csv(&report).as_bytes())?;
+    crate::output::write_atomic(&png, &png_bytes)?;
     if args.json {
         println!("{}", to_json(&report)?);
     } else {
         print!("{}", bench::stability_table(&report));
-        println!("wrote {}", csv.display());
+        println!("wrote {} and {}", csv.display(), png.display());
     }
     Ok(())
 }
