@@ -87,7 +87,9 @@ pub struct SimulateArgs {
     /// Turn block 1 back (−alpha → alpha) over [T, T + drive time] as well (movies 10, 11)
     #[arg(long, value_name = "T")]
     pub second_flip: Option<f64>,
-    /// explicit-euler, symplectic-euler, verlet, rk4 or dopri5
+    /// explicit-euler, symplectic-euler, verlet, rk4, dopri5, or auto: the
+    /// measured best (docs/performance.md), velocity Verlet at
+    /// dt = min(0.25, 0.4 * 2/omega_max), 0.25 for the paper's ladder; auto ignores --dt
     #[arg(long, default_value = "symplectic-euler", value_name = "NAME")]
     pub integrator: String,
     /// Time step (first trial step for dopri5)
@@ -189,7 +191,12 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         ..base.with(args.n, args.b, args.alpha)?
     }
     .validated()?;
-    let kind: IntegratorKind = args.integrator.parse()?;
+    let auto = args.integrator == "auto";
+    let kind: IntegratorKind = if auto {
+        IntegratorKind::Verlet
+    } else {
+        args.integrator.parse()?
+    };
     let rtol = match (kind, args.rtol) {
         (IntegratorKind::Dopri5, r) => Some(r.unwrap_or(1e-6)),
         (_, Some(_)) => {
@@ -199,10 +206,14 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         }
         (_, None) => None,
     };
-    let config = IntegratorConfig {
-        kind,
-        dt: args.dt,
-        rtol,
+    let config = if auto {
+        IntegratorConfig::auto(crate::theory::dispersion::omega_max_clamped(&params)?)
+    } else {
+        IntegratorConfig {
+            kind,
+            dt: args.dt,
+            rtol,
+        }
     }
     .validated()?;
     let scenario = match args.second_flip {
