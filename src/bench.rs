@@ -8,8 +8,11 @@ use crate::error::{Error, Result};
 use crate::model::Params;
 use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Trajectory};
 use nalgebra::Complex;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::time::Instant;
+
+pub mod charts;
+pub use charts::{stability_caption, stability_chart, work_precision_chart};
 
 /// Tolerance of the reference solution.
 pub const REFERENCE_RTOL: f64 = 1e-11;
@@ -88,7 +91,7 @@ pub fn arrival_error(run: &Trajectory, reference: &Trajectory) -> Option<f64> {
 }
 
 /// One point of a work-precision sweep.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Point {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dt: Option<f64>,
@@ -102,7 +105,7 @@ pub struct Point {
 }
 
 /// All points of one integrator, and its order measured from them.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Sweep {
     pub name: String,
     pub measured_order: Option<f64>,
@@ -115,7 +118,7 @@ pub fn default_steps(kind: IntegratorKind) -> Vec<f64> {
     match kind {
         IntegratorKind::ExplicitEuler => vec![0.0005, 0.001, 0.002, 0.005, 0.01],
         IntegratorKind::SymplecticEuler => vec![0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.4],
-        IntegratorKind::Verlet => vec![0.01, 0.02, 0.05, 0.1, 0.2, 0.3, 0.4, 0.6],
+        IntegratorKind::Verlet => vec![0.01, 0.02, 0.05, 0.1, 0.2, 0.25, 0.3, 0.4, 0.6],
         IntegratorKind::Rk4 => vec![0.05, 0.1, 0.2, 0.3, 0.4, 0.6, 0.8],
         IntegratorKind::Dopri5 => vec![1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10],
     }
@@ -202,7 +205,7 @@ fn measure(
 
 /// Order p from the slope of log(θ error) against log(force evaluations)
 /// (error ∝ evals^(−p)), over converged points whose error lies between
-/// 1e-9 (above the reference's own error) and 1e-2 (asymptotic regime).
+/// 1e-10 (well above the reference's own error, about 1e-12) and 1e-2 (asymptotic regime).
 /// Points on a cost plateau (within 30 % of the cheapest, where an adaptive
 /// method is held by stability rather than by its tolerance) are left out.
 pub fn measured_order(points: &[Point]) -> Option<f64> {
@@ -219,7 +222,7 @@ pub fn measured_order(points: &[Point]) -> Option<f64> {
         .iter()
         .filter(|p| !p.diverged && !plateau(p))
         .filter_map(|p| p.theta_error.map(|e| (p.force_evals as f64, e)))
-        .filter(|(_, e)| *e > 1e-9 && *e < 1e-2)
+        .filter(|(_, e)| *e > 1e-10 && *e < 1e-2)
         .map(|(n, e)| (n.ln(), e.ln()))
         .collect();
     if pts.len() < 2 {
@@ -383,17 +386,19 @@ mod tests {
 }
 
 /// Results of one scene of the work-precision study.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct SceneReport {
     pub scene: String,
     pub alpha_deg: f64,
+    /// Length of the simulated window (τ).
+    pub t_end: f64,
     pub integrators: Vec<Sweep>,
 }
 
 /// `bench work-precision --json`: the α = 60° kink's sweeps at the top level
 /// (SPEC section 5), both scenes under `scenes`, and the cheapest setting
 /// that keeps every arrival time within 1 τ of the reference.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct WorkPrecisionReport {
     pub integrators: Vec<Sweep>,
     pub scenes: Vec<SceneReport>,
@@ -402,7 +407,7 @@ pub struct WorkPrecisionReport {
 }
 
 /// The cheapest setting of one scene within a tolerance on arrival times.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Cheapest {
     pub scene: String,
     pub integrator: String,
@@ -447,6 +452,7 @@ pub fn work_precision(
         reports.push(SceneReport {
             scene: scene.name.clone(),
             alpha_deg: scene.alpha_deg,
+            t_end: scene.t_end,
             integrators: sweeps,
         });
     }
@@ -509,7 +515,7 @@ pub fn work_precision_table(report: &WorkPrecisionReport) -> String {
                     ("diverged".to_string(), String::new())
                 } else {
                     (
-                        opt(p.theta_error),
+                        p.theta_error.map_or(String::new(), |e| format!("{e:.2e}")),
                         p.arrival_error
                             .map_or("a flip differs".into(), |e| format!("{e:.3}")),
                     )
@@ -541,7 +547,7 @@ pub fn work_precision_table(report: &WorkPrecisionReport) -> String {
 }
 
 /// Observed and predicted critical step of one integrator.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct StabilityRow {
     pub name: String,
     /// Largest dt at which the kink scene stays bounded (bisection).
@@ -551,7 +557,7 @@ pub struct StabilityRow {
 }
 
 /// The stability study at one α.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct StabilityPoint {
     pub alpha_deg: f64,
     pub omega_max: f64,
@@ -560,7 +566,7 @@ pub struct StabilityPoint {
 
 /// `bench stability --json`: the α = 60° rows at the top level (SPEC
 /// section 5) and the sweep over α.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct StabilityReport {
     pub alpha_deg: f64,
     pub omega_max: f64,

@@ -166,7 +166,9 @@ pub struct SimulateArgs {
     /// Turn block 1 back (−alpha → alpha) over [T, T + drive time] as well (movies 10, 11)
     #[arg(long, value_name = "T")]
     pub second_flip: Option<f64>,
-    /// explicit-euler, symplectic-euler, verlet, rk4 or dopri5
+    /// explicit-euler, symplectic-euler, verlet, rk4, dopri5, or auto: the
+    /// measured best (docs/performance.md), velocity Verlet at
+    /// dt = min(0.25, 0.4 * 2/omega_max), 0.25 for the paper's ladder; auto ignores --dt
     #[arg(long, default_value = "symplectic-euler", value_name = "NAME")]
     pub integrator: String,
     /// Time step (first trial step for dopri5)
@@ -286,7 +288,12 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         ..base.with(args.n, args.b, args.alpha)?
     }
     .validated()?;
-    let kind: IntegratorKind = args.integrator.parse()?;
+    let auto = args.integrator == "auto";
+    let kind: IntegratorKind = if auto {
+        IntegratorKind::Verlet
+    } else {
+        args.integrator.parse()?
+    };
     let rtol = match (kind, args.rtol) {
         (IntegratorKind::Dopri5, r) => Some(r.unwrap_or(1e-6)),
         (_, Some(_)) => {
@@ -296,10 +303,14 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         }
         (_, None) => None,
     };
-    let config = IntegratorConfig {
-        kind,
-        dt: args.dt,
-        rtol,
+    let config = if auto {
+        IntegratorConfig::auto(crate::theory::dispersion::omega_max_clamped(&params)?)
+    } else {
+        IntegratorConfig {
+            kind,
+            dt: args.dt,
+            rtol,
+        }
     }
     .validated()?;
     let scenario = match args.second_flip {
@@ -434,13 +445,18 @@ fn bench_work_precision(args: &BenchArgs) -> Result<()> {
         bar.inc(1);
     })?;
     bar.finish_and_clear();
-    let csv = args.out.join("work-precision.csv");
+    let png_bytes = crate::encode::png_bytes(&bench::work_precision_chart(&report)?)?;
+    let (csv, png) = (
+        args.out.join("work-precision.csv"),
+        args.out.join("work-precision.png"),
+    );
     crate::output::write_atomic(&csv, bench::work_precision_csv(&report).as_bytes())?;
+    crate::output::write_atomic(&png, &png_bytes)?;
     if args.json {
         println!("{}", to_json(&report)?);
     } else {
         print!("{}", bench::work_precision_table(&report));
-        println!("wrote {}", csv.display());
+        println!("wrote {} and {}", csv.display(), png.display());
     }
     Ok(())
 }
@@ -454,13 +470,18 @@ fn bench_stability(args: &BenchArgs) -> Result<()> {
         bar.inc(1);
     })?;
     bar.finish_and_clear();
-    let csv = args.out.join("stability.csv");
+    let png_bytes = crate::encode::png_bytes(&bench::stability_chart(&report)?)?;
+    let (csv, png) = (
+        args.out.join("stability.csv"),
+        args.out.join("stability.png"),
+    );
     crate::output::write_atomic(&csv, bench::stability_csv(&report).as_bytes())?;
+    crate::output::write_atomic(&png, &png_bytes)?;
     if args.json {
         println!("{}", to_json(&report)?);
     } else {
         print!("{}", bench::stability_table(&report));
-        println!("wrote {}", csv.display());
+        println!("wrote {} and {}", csv.display(), png.display());
     }
     Ok(())
 }

@@ -298,9 +298,13 @@ impl GifWriter {
     /// the threads) and writes them in order.
     fn flush(&mut self) -> Result<()> {
         use rayon::prelude::*;
-        self.pending.par_iter_mut().for_each(|f| f.make_lzw_pre_encoded());
+        self.pending
+            .par_iter_mut()
+            .for_each(|f| f.make_lzw_pre_encoded());
         for f in self.pending.drain(..) {
-            self.encoder.write_lzw_pre_encoded_frame(&f).map_err(gif_error)?;
+            self.encoder
+                .write_lzw_pre_encoded_frame(&f)
+                .map_err(gif_error)?;
         }
         Ok(())
     }

@@ -73,3 +73,45 @@ fn stability_bisection_matches_the_linear_bound_for_symplectic_euler() {
     // Past the bound the run is reported as diverged, not returned.
     assert!(!bench::is_stable(&scene, IntegratorKind::SymplecticEuler, 1.2 * predicted).unwrap());
 }
+
+#[test]
+fn charts_draw_from_reports() {
+    let report = bench::work_precision(&[tiny()], 1, &|_| {}).unwrap();
+    assert_eq!(report.scenes[0].t_end, 60.0);
+    let image = bench::work_precision_chart(&report).unwrap();
+    assert!(
+        image.width() > 1000 && image.height() > 400,
+        "one row per scene"
+    );
+    // Not blank: a good share of the pixels is not white.
+    let inked = image.pixels().iter().filter(|p| p.red() < 200).count();
+    assert!(inked > 10_000, "{inked} dark pixels");
+
+    let row = |name: &str, critical: f64, predicted: f64| bench::StabilityRow {
+        name: name.into(),
+        critical_dt: critical,
+        predicted_dt: predicted,
+    };
+    let point = |alpha: f64| bench::StabilityPoint {
+        alpha_deg: alpha,
+        omega_max: 2.5,
+        integrators: vec![
+            row("explicit-euler", 0.0057, 0.0031),
+            row("symplectic-euler", 0.78, 0.79),
+            row("verlet", 0.77, 0.79),
+            row("rk4", 1.12, 1.11),
+            row("dopri5", 0.72, 0.645),
+        ],
+    };
+    let stability = bench::StabilityReport {
+        alpha_deg: 60.0,
+        omega_max: 2.5,
+        damping_rate: 0.02,
+        integrators: point(60.0).integrators,
+        sweep: vec![point(30.0), point(60.0)],
+    };
+    let caption = bench::stability_caption(&stability);
+    assert!(caption.contains("ratio 1.84 at 60°"), "{caption}");
+    let image = bench::stability_chart(&stability).unwrap();
+    assert!(image.width() >= 800 && image.height() > 1000);
+}

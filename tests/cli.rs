@@ -172,3 +172,53 @@ fn movie_command_writes_gif_and_kymograph() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn integrator_auto_is_verlet_at_the_measured_step_and_agrees_with_the_paper_setting() {
+    let run = |extra: &[&str]| -> serde_json::Value {
+        let mut args = vec!["simulate", "--alpha", "60", "--t-end", "2200", "--json"];
+        args.extend_from_slice(extra);
+        let out = ladder(&args);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).expect("one JSON object")
+    };
+    let auto = run(&["--integrator", "auto", "--dt", "0.5"]);
+    assert_eq!(auto["integrator"], "verlet");
+    assert_eq!(auto["dt"], 0.25, "auto ignores --dt");
+    assert!(auto["rtol"].is_null());
+    // 25 times fewer force evaluations than the paper's setting, and the
+    // same arrival times to well within 1 τ.
+    let paper = run(&[]);
+    let (fa, fp) = (
+        auto["force_evals"].as_u64().unwrap(),
+        paper["force_evals"].as_u64().unwrap(),
+    );
+    assert!(fa * 20 < fp, "auto {fa} vs paper {fp} force evaluations");
+    let (ta, tp) = (
+        auto["arrival_times"].as_array().unwrap(),
+        paper["arrival_times"].as_array().unwrap(),
+    );
+    for (n, (a, p)) in ta.iter().zip(tp).enumerate() {
+        match (a.as_f64(), p.as_f64()) {
+            (Some(a), Some(p)) => assert!((a - p).abs() < 1.0, "block {}: {a} vs {p}", n + 1),
+            (a, p) => assert_eq!(a, p, "block {} flips in one run only", n + 1),
+        }
+    }
+    assert_bad_input(
+        &["simulate", "--integrator", "auto", "--rtol", "1e-6"],
+        "--rtol",
+    );
+}
+
+#[test]
+fn help_documents_integrator_auto() {
+    let out = ladder(&["simulate", "--help"]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("auto"), "{text}");
+}

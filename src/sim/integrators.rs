@@ -82,6 +82,12 @@ impl FromStr for IntegratorKind {
     }
 }
 
+/// The largest step of [`IntegratorConfig::auto`] (τ).
+pub const AUTO_DT: f64 = 0.25;
+/// The fraction of velocity Verlet's stability bound 2/ω_max that
+/// [`IntegratorConfig::auto`] stays below.
+pub const AUTO_STABILITY_FRACTION: f64 = 0.4;
+
 /// Integration parameters, kept apart from the model's.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct IntegratorConfig {
@@ -109,6 +115,25 @@ impl IntegratorConfig {
             dt,
             rtol: None,
         }
+    }
+
+    /// `--integrator auto`: the measured best choice for these scenes
+    /// (`ladder bench work-precision`, docs/performance.md). Velocity Verlet
+    /// was the cheapest setting whose arrival times stay within 1 τ of the
+    /// reference, at dt = 0.6 for the α = ±60° scenes (6801 force
+    /// evaluations, 77 % of its stability bound 2/ω_max). `auto` keeps a
+    /// margin: dt = min([`AUTO_DT`], [`AUTO_STABILITY_FRACTION`] · 2/ω_max),
+    /// where `omega_max` is the highest normal mode of the clamped chain
+    /// (`theory::dispersion::omega_max_clamped`); 0.25 τ for the paper's
+    /// parameters, the step every simulated scene of the catalogue uses.
+    pub fn auto(omega_max: f64) -> Self {
+        let bound = AUTO_STABILITY_FRACTION * 2.0 / omega_max;
+        let dt = if bound.is_finite() && bound > 0.0 {
+            AUTO_DT.min(bound)
+        } else {
+            AUTO_DT
+        };
+        Self::fixed(IntegratorKind::Verlet, dt)
     }
 
     pub fn adaptive(rtol: f64) -> Self {
