@@ -31,15 +31,17 @@ impl ArrivalDetector {
     /// Feeds the state at the end of a step.
     #[inline]
     pub fn observe(&mut self, t: f64, q: &[f64], v: &[f64]) {
-        for i in 0..self.arrival.len() {
-            let (th, om) = (q[itheta(i)], v[itheta(i)]);
-            if self.arrival[i].is_none() && th * self.initial_sign[i] < 0.0 {
-                let h = t - self.prev_t;
-                let s = hermite_root(self.prev_theta[i], h * self.prev_omega[i], th, h * om);
-                self.arrival[i] = Some(self.prev_t + s * h);
+        let h = t - self.prev_t;
+        let blocks = q.chunks_exact(3).zip(v.chunks_exact(3));
+        let memory = self.prev_theta.iter_mut().zip(self.prev_omega.iter_mut());
+        let record = self.arrival.iter_mut().zip(&self.initial_sign);
+        for (((qb, vb), (th0, om0)), (arrival, sign)) in blocks.zip(memory).zip(record) {
+            let (th, om) = (qb[2], vb[2]);
+            if th * sign < 0.0 && arrival.is_none() {
+                let s = hermite_root(*th0, h * *om0, th, h * om);
+                *arrival = Some(self.prev_t + s * h);
             }
-            self.prev_theta[i] = th;
-            self.prev_omega[i] = om;
+            (*th0, *om0) = (th, om);
         }
         self.prev_t = t;
     }
