@@ -175,7 +175,9 @@ pub fn png_bytes(pixmap: &Pixmap) -> Result<Vec<u8>> {
 /// that the total duration never drifts), and only the changed rectangle of
 /// each frame encoded.
 pub struct GifWriter {
-    encoder: gif::Encoder<Vec<u8>>,
+    /// The LZW stage: a thread that compresses and writes frames in order
+    /// while the caller draws the next ones.
+    lzw: LzwStage,
     palette: &'static Palette,
     width: u32,
     height: u32,
@@ -183,12 +185,45 @@ pub struct GifWriter {
     frames: usize,
     previous: Option<Vec<u8>>,
     indices: Vec<u8>,
-    /// Frames whose indices are ready, waiting for LZW compression.
-    pending: Vec<gif::Frame<'static>>,
 }
 
-/// Frames compressed together (in parallel) before they are written.
-const LZW_BATCH: usize = 8;
+/// A thread owning the encoder: frames go in through a channel, in order,
+/// and the GIF bytes come out when the channel closes. The output does not
+/// depend on the timing of the two threads.
+struct LzwStage {
+    frames: std::sync::mpsc::SyncSender<gif::Frame<'static>>,
+    done: std::thread::JoinHandle<Result<Vec<u8>>>,
+}
+
+/// Frames that may wait for compression: bounds the memory held.
+const LZW_QUEUE: usize = 16;
+
+impl LzwStage {
+    fn start(mut encoder: gif::Encoder<Vec<u8>>) -> Self {
+        let (frames, inbox) = std::sync::mpsc::sync_channel::<gif::Frame<'static>>(LZW_QUEUE);
+        let done = std::thread::spawn(move || {
+            for mut frame in inbox {
+                frame.make_lzw_pre_encoded();
+                encoder.write_lzw_pre_encoded_frame(&frame).map_err(gif_error)?;
+            }
+            encoder.into_inner().map_err(gif_error)
+        });
+        Self { frames, done }
+    }
+
+    fn send(&self, frame: gif::Frame<'static>) -> Result<()> {
+        self.frames
+            .send(frame)
+            .map_err(|_| Error::failed("the GIF encoder stopped early"))
+    }
+
+    fn finish(self) -> Result<Vec<u8>> {
+        drop(self.frames);
+        self.done
+            .join()
+            .map_err(|_| Error::failed("the GIF encoder thread panicked"))?
+    }
+}
 
 impl GifWriter {
     /// A writer for `width × height` frames shown at `fps` frames per second.
@@ -216,7 +251,7 @@ impl GifWriter {
             .set_repeat(gif::Repeat::Infinite)
             .map_err(gif_error)?;
         Ok(Self {
-            encoder,
+            lzw: LzwStage::start(encoder),
             palette,
             width,
             height,
@@ -224,7 +259,6 @@ impl GifWriter {
             frames: 0,
             previous: None,
             indices: Vec::new(),
-            pending: Vec::with_capacity(LZW_BATCH),
         })
     }
 
@@ -272,10 +306,7 @@ impl GifWriter {
             buffer: Cow::Owned(self.indices.clone()),
             ..gif::Frame::default()
         };
-        self.pending.push(frame);
-        if self.pending.len() >= LZW_BATCH {
-            self.flush()?;
-        }
+        self.lzw.send(frame)?;
         match &mut self.previous {
             Some(prev) => prev.copy_from_slice(data),
             None => self.previous = Some(data.to_vec()),
@@ -285,28 +316,12 @@ impl GifWriter {
     }
 
     /// Finishes the stream and returns the GIF bytes.
-    pub fn finish(mut self) -> Result<Vec<u8>> {
+    pub fn finish(self) -> Result<Vec<u8>> {
+        let bytes = self.lzw.finish()?;
         if self.frames == 0 {
             return Err(Error::failed("a GIF needs at least one frame"));
         }
-        self.flush()?;
-        self.encoder.into_inner().map_err(gif_error)
-    }
-
-    /// LZW-compresses the pending frames in parallel (each frame's code
-    /// stream is independent of the others, so the bytes do not depend on
-    /// the threads) and writes them in order.
-    fn flush(&mut self) -> Result<()> {
-        use rayon::prelude::*;
-        self.pending
-            .par_iter_mut()
-            .for_each(|f| f.make_lzw_pre_encoded());
-        for f in self.pending.drain(..) {
-            self.encoder
-                .write_lzw_pre_encoded_frame(&f)
-                .map_err(gif_error)?;
-        }
-        Ok(())
+        Ok(bytes)
     }
 
     /// Delay of frame `k` in 1/100 s: differences of rounded cumulative times.

@@ -213,7 +213,7 @@ pub fn movie(
     let times = frame_times(sim.t_end, opts.frames);
     let traj = run(sim, &times)?;
     let ladder = Ladder::new(sim.params()?);
-    let layout = MovieLayout::new(opts.width, opts.height);
+    let layout = MovieLayout::new(opts.width, opts.height, sim.n);
     let aspect = layout.ladder.w as f64 / layout.ladder.h as f64;
     let fixed = movie_view(&ladder, &traj, 0, false, aspect);
     let heat = heat_map(&traj, ladder.n(), layout.heat)?;
@@ -264,7 +264,11 @@ struct MovieLayout {
 }
 
 impl MovieLayout {
-    fn new(width: u32, height: u32) -> Self {
+    /// Width of one block's column of the live kymograph, in pixels: a
+    /// narrow panel keeps the changed rectangle of each GIF frame small.
+    const COLUMN: f32 = 20.0;
+
+    fn new(width: u32, height: u32, n: usize) -> Self {
         let (w, h) = (width as f32, height as f32);
         let top = (1.8 * style::size::TITLE).min(0.2 * h);
         let split = (0.45 * w).round();
@@ -281,7 +285,7 @@ impl MovieLayout {
             heat: Region {
                 x: heat_x.round(),
                 y: (top + 0.8 * style::size::TICK).round(),
-                w: (w - heat_x - 0.04 * w).max(1.0).round(),
+                w: (w - heat_x - 0.04 * w).min(Self::COLUMN * n as f32).max(1.0).round(),
                 h: (h - top - bottom - 0.8 * style::size::TICK)
                     .max(1.0)
                     .round(),
