@@ -231,16 +231,7 @@ pub fn measured_order(points: &[Point]) -> Option<f64> {
     Some(-slope(&pts))
 }
 
-/// Least-squares slope of y against x.
-pub fn slope(pts: &[(f64, f64)]) -> f64 {
-    let n = pts.len() as f64;
-    let (mx, my) = pts
-        .iter()
-        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    sxy / sxx
-}
+pub use crate::sim::observables::least_squares_slope as slope;
 
 /// The cheapest point (fewest force evaluations) whose arrival times all lie
 /// within `tolerance` τ of the reference.

@@ -204,7 +204,9 @@ impl LzwStage {
         let done = std::thread::spawn(move || {
             for mut frame in inbox {
                 frame.make_lzw_pre_encoded();
-                encoder.write_lzw_pre_encoded_frame(&frame).map_err(gif_error)?;
+                encoder
+                    .write_lzw_pre_encoded_frame(&frame)
+                    .map_err(gif_error)?;
             }
             encoder.into_inner().map_err(gif_error)
         });

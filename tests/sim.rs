@@ -161,18 +161,9 @@ fn kink_run(alpha: f64) -> Trajectory {
     sim::simulate(&scenario, &[], &IntegratorConfig::paper()).unwrap()
 }
 
-/// Blocks per τ from a least-squares line through t_n for blocks 3..=8.
+/// Blocks per τ from a least-squares line through the arrival times.
 fn speed(t: &Trajectory) -> f64 {
-    let pts: Vec<(f64, f64)> = (2..8)
-        .map(|i| (i as f64, t.arrival_times[i].unwrap()))
-        .collect();
-    let n = pts.len() as f64;
-    let (mx, my) = pts
-        .iter()
-        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    sxx / sxy
+    sim::observables::wave_speed(&t.arrival_times).expect("the wave ran")
 }
 
 #[test]

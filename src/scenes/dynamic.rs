@@ -125,24 +125,9 @@ pub fn strips_figure(title: &str, strips: &[StripSpec], frame: (u32, u32)) -> Re
 /// Simulated window of the arrival-time figure S6.
 const ARRIVAL_T_END: f64 = 4000.0;
 
-/// Least-squares speed in blocks per 1000 τ from the arrivals of blocks
-/// 2..N−1 (the driven top and the free bottom excluded); `None` if fewer
-/// than three of them flipped.
+/// Speed in blocks per 1000 τ (see `observables::wave_speed`).
 pub fn fitted_speed(arrivals: &[Option<f64>]) -> Option<f64> {
-    let last = arrivals.len().saturating_sub(1);
-    let pts: Vec<(f64, f64)> = (1..last)
-        .filter_map(|i| arrivals[i].map(|t| (i as f64 + 1.0, t)))
-        .collect();
-    if pts.len() < 3 {
-        return None;
-    }
-    let n = pts.len() as f64;
-    let (mx, my) = pts
-        .iter()
-        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    Some(1000.0 * sxx / sxy)
+    sim::observables::wave_speed(arrivals).map(|v| 1000.0 * v)
 }
 
 /// Figure S6: t_n against n for the kink and antikink at each |α|.
@@ -285,7 +270,10 @@ impl MovieLayout {
             heat: Region {
                 x: heat_x.round(),
                 y: (top + 0.8 * style::size::TICK).round(),
-                w: (w - heat_x - 0.04 * w).min(Self::COLUMN * n as f32).max(1.0).round(),
+                w: (w - heat_x - 0.04 * w)
+                    .min(Self::COLUMN * n as f32)
+                    .max(1.0)
+                    .round(),
                 h: (h - top - bottom - 0.8 * style::size::TICK)
                     .max(1.0)
                     .round(),
