@@ -222,3 +222,35 @@ fn help_documents_integrator_auto() {
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("auto"), "{text}");
 }
+
+#[test]
+fn theory_reports_the_spec_fields_and_rejects_bad_angles() {
+    let out = ladder(&["theory", "--alpha", "-60", "--json"]);
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    for key in [
+        "a",
+        "alpha_deg",
+        "u_min",
+        "barrier",
+        "kappa",
+        "winding_number",
+        "gap_omega_plus_q0",
+        "omega_max",
+        "zero_modes_clamped",
+        "zero_modes_free",
+        "self_stress_free",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(v["winding_number"], 0);
+    assert_eq!(v["alpha_deg"], -60.0);
+    let table = ladder(&["theory"]);
+    assert_eq!(table.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&table.stdout).contains("winding"));
+    assert_bad_input(&["theory", "--alpha", "91"], "alpha");
+    assert_bad_input(&["theory", "--alpha", "NaN"], "alpha");
+    assert_bad_input(&["theory", "--n", "1"], "N");
+    assert_bad_input(&["theory", "--n", "100000"], "400");
+    assert_bad_input(&["bench", "speed"], "unknown study");
+}

@@ -10,7 +10,7 @@
 //! Run in release: `cargo test --release --test scenes_accuracy`.
 
 use jacobs_ladder::bench::{self, BenchScene};
-use jacobs_ladder::catalog::{CATALOGUE, Content, SCENE_INTEGRATOR, SimSpec};
+use jacobs_ladder::catalog::{self, CATALOGUE, Content, SCENE_INTEGRATOR, SimSpec};
 use jacobs_ladder::sim::{self, IntegratorConfig, IntegratorKind};
 
 /// Tolerance of the reference runs.
@@ -97,6 +97,12 @@ fn every_scene_matches_the_reference_within_one_tau() {
                 if a.signum() != r.signum() || (a - r).abs() > 1.0 {
                     bad.push(format!("block {} ends at {a:.3}° vs {r:.3}°", n + 1));
                 }
+            }
+            if worst > catalog::SCENE_ARRIVAL_ERROR {
+                bad.push(format!(
+                    "worst arrival error {worst:.4} τ above the catalogue's {} τ",
+                    catalog::SCENE_ARRIVAL_ERROR
+                ));
             }
             let flips = run.arrival_times.iter().filter(|t| t.is_some()).count();
             eprintln!(
