@@ -267,3 +267,20 @@ fn dopri5_lands_on_samples_and_corners() {
         assert!((q[2] - want).abs() < 1e-12, "t = {time}");
     }
 }
+
+#[test]
+fn simd_force_kernel_matches_the_portable_one_bit_for_bit() {
+    use jacobs_ladder::model::ladder::ForceScratch;
+    let mut rng = Lcg(19);
+    for n in 2..=13 {
+        for alpha in [60.0, -50.0, 86.0] {
+            let ladder = Ladder::new(Params::paper(alpha).unwrap().with(n, 1.3, alpha).unwrap());
+            let q = perturbed(&ladder.ground_state(), &mut rng, 2.0);
+            let (mut fast, mut portable) = (vec![0.0; 3 * n], vec![1.0; 3 * n]);
+            let mut scratch = ForceScratch::new(n);
+            ladder.gradient_with(&q, &mut fast, &mut scratch);
+            ladder.gradient_portable(&q, &mut portable, &mut scratch);
+            assert_eq!(fast, portable, "N = {n}, α = {alpha}");
+        }
+    }
+}

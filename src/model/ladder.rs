@@ -140,6 +140,13 @@ impl Ladder {
         gradient_body(self, q, grad, scratch);
     }
 
+    /// The force loop compiled for the baseline CPU, whatever this one
+    /// supports: the reference the AVX2 build of the same loop must match
+    /// bit for bit (no fused multiply-adds; see tests/sim.rs).
+    pub fn gradient_portable(&self, q: &[f64], grad: &mut [f64], scratch: &mut ForceScratch) {
+        gradient_body(self, q, grad, scratch);
+    }
+
     /// Jacobian ∂L/∂q of the spring lengths (the compatibility matrix of the
     /// finite chain, linearised about `q`). Rows are ordered
     /// [A_1, B_1, A_2, B_2, ...], 2(N − 1) rows and 3N columns.
