@@ -292,7 +292,9 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
     let kind: IntegratorKind = if auto {
         IntegratorKind::Verlet
     } else {
-        args.integrator.parse()?
+        args.integrator
+            .parse()
+            .map_err(|e: Error| Error::bad_input(format!("{e}, or auto")))?
     };
     let rtol = match (kind, args.rtol) {
         (IntegratorKind::Dopri5, r) => Some(r.unwrap_or(1e-6)),
