@@ -429,8 +429,13 @@ pub fn tick_label(v: f64, scale: Scale) -> String {
     short_number(v)
 }
 
-/// A number with at most four significant digits and no trailing zeros.
+/// A number with at most four significant digits and no trailing zeros,
+/// negative numbers with a typographic minus sign (U+2212).
 pub fn short_number(v: f64) -> String {
+    plain_number(v).replace('-', "−")
+}
+
+fn plain_number(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return if v.is_finite() {
             "0".into()
@@ -1081,7 +1086,7 @@ mod tests {
     fn numbers_are_short() {
         assert_eq!(short_number(0.5), "0.5");
         assert_eq!(short_number(1200.0), "1200");
-        assert_eq!(short_number(-2.0), "-2");
+        assert_eq!(short_number(-2.0), "−2");
         assert_eq!(short_number(1e-6), "1×10⁻⁶");
         assert_eq!(tick_label(1e-3, Scale::Log), "10⁻³");
         assert_eq!(tick_label(100.0, Scale::Log), "10²");
