@@ -447,17 +447,33 @@ fn bench_work_precision(args: &BenchArgs) -> Result<()> {
         bar.inc(1);
     })?;
     bar.finish_and_clear();
-    let png_bytes = crate::encode::png_bytes(&bench::work_precision_chart(&report)?)?;
+    let chart = bench::work_precision_chart(&report)?;
+    let csv = bench::work_precision_csv(&report);
+    let table = bench::work_precision_table(&report);
+    write_study(args, "work-precision", &csv, &chart, &report, &table)
+}
+
+/// Writes a study's chart and CSV (`DIR/NAME.png`, `DIR/NAME.csv`; the PNG
+/// is encoded before anything is written) and prints its JSON or table.
+fn write_study<T: Serialize>(
+    args: &BenchArgs,
+    name: &str,
+    csv_text: &str,
+    chart: &tiny_skia::Pixmap,
+    report: &T,
+    table: &str,
+) -> Result<()> {
+    let png_bytes = crate::encode::png_bytes(chart)?;
     let (csv, png) = (
-        args.out.join("work-precision.csv"),
-        args.out.join("work-precision.png"),
+        args.out.join(format!("{name}.csv")),
+        args.out.join(format!("{name}.png")),
     );
-    crate::output::write_atomic(&csv, bench::work_precision_csv(&report).as_bytes())?;
+    crate::output::write_atomic(&csv, csv_text.as_bytes())?;
     crate::output::write_atomic(&png, &png_bytes)?;
     if args.json {
-        println!("{}", to_json(&report)?);
+        println!("{}", to_json(report)?);
     } else {
-        print!("{}", bench::work_precision_table(&report));
+        print!("{table}");
         println!("wrote {} and {}", csv.display(), png.display());
     }
     Ok(())
@@ -472,20 +488,10 @@ fn bench_stability(args: &BenchArgs) -> Result<()> {
         bar.inc(1);
     })?;
     bar.finish_and_clear();
-    let png_bytes = crate::encode::png_bytes(&bench::stability_chart(&report)?)?;
-    let (csv, png) = (
-        args.out.join("stability.csv"),
-        args.out.join("stability.png"),
-    );
-    crate::output::write_atomic(&csv, bench::stability_csv(&report).as_bytes())?;
-    crate::output::write_atomic(&png, &png_bytes)?;
-    if args.json {
-        println!("{}", to_json(&report)?);
-    } else {
-        print!("{}", bench::stability_table(&report));
-        println!("wrote {} and {}", csv.display(), png.display());
-    }
-    Ok(())
+    let chart = bench::stability_chart(&report)?;
+    let csv = bench::stability_csv(&report);
+    let table = bench::stability_table(&report);
+    write_study(args, "stability", &csv, &chart, &report, &table)
 }
 
 fn to_json<T: Serialize>(value: &T) -> Result<String> {

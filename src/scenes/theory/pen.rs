@@ -60,7 +60,12 @@ pub fn dashed(p: &mut Pixmap, a: Pt, b: Pt, width: f32, c: Rgb) {
 
 /// A filled disc.
 pub fn dot(p: &mut Pixmap, at: Pt, r: f32, c: Rgb) {
-    if let Some(path) = PathBuilder::from_circle(at.0, at.1, r) {
+    fill(p, PathBuilder::from_circle(at.0, at.1, r), c);
+}
+
+/// Fills `path` (if any) in colour `c`.
+fn fill(p: &mut Pixmap, path: Option<tiny_skia::Path>, c: Rgb) {
+    if let Some(path) = path {
         p.fill_path(
             &path,
             &paint(c),
@@ -83,15 +88,7 @@ fn head(p: &mut Pixmap, from: Pt, tip: Pt, size: f32, c: Rgb) {
     pb.line_to(base.0 - w * uy, base.1 + w * ux);
     pb.line_to(base.0 + w * uy, base.1 - w * ux);
     pb.close();
-    if let Some(path) = pb.finish() {
-        p.fill_path(
-            &path,
-            &paint(c),
-            FillRule::Winding,
-            Transform::identity(),
-            None,
-        );
-    }
+    fill(p, pb.finish(), c);
 }
 
 /// An arrow from `a` to `b`.
