@@ -346,28 +346,6 @@ pub fn stability_caption(report: &StabilityReport) -> String {
     )
 }
 
-/// Words of `text` in lines no wider than `width` pixels at `font_size`.
-fn wrap(text: &str, width: f32, font_size: f32) -> Vec<String> {
-    let mut lines = Vec::new();
-    for para in text.lines() {
-        let mut line = String::new();
-        for word in para.split_whitespace() {
-            let candidate = if line.is_empty() {
-                word.to_string()
-            } else {
-                format!("{line} {word}")
-            };
-            if !line.is_empty() && style::text_width(&candidate, font_size) > width {
-                lines.push(std::mem::replace(&mut line, word.to_string()));
-            } else {
-                line = candidate;
-            }
-        }
-        lines.push(line);
-    }
-    lines
-}
-
 /// `stability.png`: critical dt against α (log y), one colour per
 /// integrator, observed as dots and solid line, predicted dashed, with the
 /// caption of [`stability_caption`] drawn underneath.
@@ -508,7 +486,7 @@ fn stability_spec(report: &StabilityReport, names: &[&str]) -> ChartSpec {
 fn with_caption(image: &Pixmap, text: &str) -> Result<Pixmap> {
     let margin = size::MARGIN as f32 * 2.0;
     let font_size = size::TICK;
-    let lines = wrap(text, image.width() as f32 - 2.0 * margin, font_size);
+    let lines = style::wrap_text(text, image.width() as f32 - 2.0 * margin, font_size);
     let line_h = font_size * 1.45;
     let caption_h = (lines.len() as f32 * line_h + margin).ceil() as u32;
     let (w, h) = (image.width(), image.height() + caption_h);
@@ -535,9 +513,9 @@ mod tests {
 
     #[test]
     fn wrap_keeps_words_and_paragraphs() {
-        let lines = wrap("one two three\nfour", 10_000.0, 13.0);
+        let lines = style::wrap_text("one two three\nfour", 10_000.0, 13.0);
         assert_eq!(lines, vec!["one two three", "four"]);
-        let narrow = wrap("alpha beta gamma", 1.0, 13.0);
+        let narrow = style::wrap_text("alpha beta gamma", 1.0, 13.0);
         assert_eq!(narrow, vec!["alpha", "beta", "gamma"]);
     }
 }

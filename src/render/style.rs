@@ -252,6 +252,29 @@ pub fn white_pixmap(width: u32, height: u32) -> Option<Pixmap> {
     Some(p)
 }
 
+/// Greedy word wrap: the words of `text` (paragraphs split at newlines) in
+/// lines at most `width` pixels wide at font `size`.
+pub fn wrap_text(text: &str, width: f32, size: f32) -> Vec<String> {
+    let mut lines = Vec::new();
+    for paragraph in text.split('\n') {
+        let mut line = String::new();
+        for word in paragraph.split_whitespace() {
+            let candidate = if line.is_empty() {
+                word.to_string()
+            } else {
+                format!("{line} {word}")
+            };
+            if !line.is_empty() && text_width(&candidate, size) > width {
+                lines.push(std::mem::replace(&mut line, word.to_string()));
+            } else {
+                line = candidate;
+            }
+        }
+        lines.push(line);
+    }
+    lines
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -42,28 +42,6 @@ fn title(figure: TheoryFigure) -> &'static str {
         .map_or("", |e| e.title)
 }
 
-/// Greedy word wrap of `text` to lines at most `width` pixels wide at `size`.
-fn wrap(text: &str, width: f32, size: f32) -> Vec<String> {
-    let mut lines = Vec::new();
-    for paragraph in text.split('\n') {
-        let mut line = String::new();
-        for word in paragraph.split_whitespace() {
-            let candidate = if line.is_empty() {
-                word.to_string()
-            } else {
-                format!("{line} {word}")
-            };
-            if !line.is_empty() && style::text_width(&candidate, size) > width {
-                lines.push(std::mem::replace(&mut line, word.to_string()));
-            } else {
-                line = candidate;
-            }
-        }
-        lines.push(line);
-    }
-    lines
-}
-
 /// Line height of the notes.
 const NOTE_LINE: f32 = 1.35 * size::LABEL;
 
@@ -72,7 +50,7 @@ const NOTE_LINE: f32 = 1.35 * size::LABEL;
 fn frame(title: &str, body: &Pixmap, notes: &str, min_width: u32) -> Result<Pixmap> {
     let m = size::MARGIN;
     let width = (body.width() + 2 * m).max(min_width);
-    let lines = wrap(notes, (width - 2 * m) as f32, size::LABEL);
+    let lines = style::wrap_text(notes, (width - 2 * m) as f32, size::LABEL);
     let title_h = (1.8 * size::TITLE) as u32;
     let notes_h = (lines.len() as f32 * NOTE_LINE + 0.5 * size::LABEL) as u32;
     let height = m + title_h + body.height() + notes_h + m;
