@@ -3,7 +3,8 @@
 
 use jacobs_ladder::model::{Ladder, Params};
 use jacobs_ladder::sim::{
-    self, Drive, IntegratorConfig, IntegratorKind, Protocol, Scenario, State, Trajectory,
+    self, Drive, IntegratorConfig, IntegratorKind, Isa, Protocol, Scenario, State, Stepping,
+    Trajectory,
 };
 
 /// A small deterministic generator (64-bit LCG) for random configurations.
@@ -283,4 +284,94 @@ fn simd_force_kernel_matches_the_portable_one_bit_for_bit() {
             assert_eq!(fast, portable, "N = {n}, α = {alpha}");
         }
     }
+}
+
+/// Every way of taking symplectic Euler's steps that this CPU offers.
+fn steppings() -> Vec<Stepping> {
+    let fused = [Isa::Avx2, Isa::Avx512]
+        .into_iter()
+        .filter(|isa| isa.available())
+        .map(Stepping::Fused);
+    [Stepping::Fastest].into_iter().chain(fused).collect()
+}
+
+/// Asserts that `scenario` gives the portable path's trajectory, bit for
+/// bit, with every fused kernel: samples, arrivals, final state, counts.
+fn assert_fused_matches_portable(scenario: &Scenario, samples: &[f64], what: &str) {
+    let config = IntegratorConfig::paper();
+    let portable = sim::simulate_with(scenario, samples, &config, Stepping::Portable).unwrap();
+    for stepping in steppings() {
+        let fused = sim::simulate_with(scenario, samples, &config, stepping).unwrap();
+        let label = format!("{what}, {stepping:?}");
+        assert_eq!(fused.times, portable.times, "{label}");
+        assert_eq!(fused.states, portable.states, "{label}");
+        assert_eq!(fused.velocities, portable.velocities, "{label}");
+        assert_eq!(fused.arrival_times, portable.arrival_times, "{label}");
+        assert_eq!(fused.final_state, portable.final_state, "{label}");
+        assert_eq!(
+            (fused.steps, fused.force_evals),
+            (portable.steps, portable.force_evals),
+            "{label}"
+        );
+    }
+}
+
+#[test]
+fn fused_stepper_matches_the_portable_path_bit_for_bit() {
+    // Every register count (N = 2..32 in 1..8 registers), both signs of α,
+    // the paper's single flip with a kink that arrives inside the run.
+    for (n, alpha) in [
+        (2, 60.0),
+        (3, -60.0),
+        (4, 86.0),
+        (5, 60.0),
+        (8, -50.0),
+        (9, 60.0),
+        (10, 60.0),
+        (10, -60.0),
+        (12, 50.0),
+        (13, -86.0),
+        (17, 60.0),
+        (24, 60.0),
+        (32, -60.0),
+    ] {
+        let params = Params::paper(alpha).unwrap().with(n, 1.3, alpha).unwrap();
+        let scenario = Scenario::single_flip(params, 100.0, 400.0).unwrap();
+        let samples: Vec<f64> = (0..=40).map(|k| 10.0 * k as f64).collect();
+        assert_fused_matches_portable(&scenario, &samples, &format!("N = {n}, α = {alpha}"));
+    }
+}
+
+#[test]
+fn fused_stepper_matches_with_two_flips_and_without_a_drive() {
+    let params = Params::paper(60.0).unwrap();
+    let drive = Drive::two_flips(params.alpha, 50.0, 120.0).unwrap();
+    let two = Scenario::with_drive(params, drive, 300.0).unwrap();
+    assert_fused_matches_portable(&two, &[33.3, 120.0, 299.99], "two flips");
+    // Free ladder (block 1 not driven) from a random, moving start.
+    let mut rng = Lcg(5);
+    let mut free = Scenario::single_flip(params, 100.0, 50.0).unwrap();
+    free.protocol = Protocol::Free;
+    free.initial = State {
+        q: perturbed(&free.initial.q, &mut rng, 0.05),
+        v: perturbed(&vec![0.0; free.initial.v.len()], &mut rng, 0.02),
+    };
+    assert_fused_matches_portable(&free, &[1.0, 25.0], "free ladder");
+}
+
+#[test]
+fn fused_stepper_reports_the_same_divergence() {
+    // Symplectic Euler far beyond its stability bound (2/ω_max ≈ 0.79).
+    let params = Params::paper(60.0).unwrap();
+    let scenario = Scenario::single_flip(params, 1000.0, 4000.0).unwrap();
+    let config = IntegratorConfig::fixed(IntegratorKind::SymplecticEuler, 1.5);
+    let portable = sim::simulate_with(&scenario, &[], &config, Stepping::Portable).unwrap_err();
+    for stepping in steppings() {
+        let fused = sim::simulate_with(&scenario, &[], &config, stepping).unwrap_err();
+        assert_eq!(fused.to_string(), portable.to_string(), "{stepping:?}");
+    }
+    assert!(
+        portable.to_string().contains("diverged at t = "),
+        "{portable}"
+    );
 }

@@ -9,28 +9,50 @@
 //! printed precision so that they can be checked against its source.
 #![allow(clippy::excessive_precision)]
 
-const FRAC_2_PI: f64 = std::f64::consts::FRAC_2_PI;
-// π/2 split into three parts of 33, 33 and 53 bits (fdlibm pio2_1, pio2_2, pio2_2t).
-const PIO2_1: f64 = 1.570_796_326_734_125_614_17e0;
-const PIO2_2: f64 = 6.077_100_506_303_965_976_60e-11;
-const PIO2_2T: f64 = 2.022_266_248_795_950_631_54e-21;
+/// The reduction and kernel constants, shared with the vectorised copy in
+/// `sim::fused`.
+pub(crate) mod consts {
+    pub const FRAC_2_PI: f64 = std::f64::consts::FRAC_2_PI;
+    // π/2 split into three parts of 33, 33 and 53 bits (fdlibm pio2_1, pio2_2, pio2_2t).
+    pub const PIO2_1: f64 = 1.570_796_326_734_125_614_17e0;
+    pub const PIO2_2: f64 = 6.077_100_506_303_965_976_60e-11;
+    pub const PIO2_2T: f64 = 2.022_266_248_795_950_631_54e-21;
 
-const S1: f64 = -1.666_666_666_666_663_243_48e-1;
-const S2: f64 = 8.333_333_333_322_489_461_24e-3;
-const S3: f64 = -1.984_126_982_985_794_931_34e-4;
-const S4: f64 = 2.755_731_370_707_006_767_89e-6;
-const S5: f64 = -2.505_076_025_340_686_341_95e-8;
-const S6: f64 = 1.589_690_995_211_550_102_21e-10;
+    pub const S1: f64 = -1.666_666_666_666_663_243_48e-1;
+    pub const S2: f64 = 8.333_333_333_322_489_461_24e-3;
+    pub const S3: f64 = -1.984_126_982_985_794_931_34e-4;
+    pub const S4: f64 = 2.755_731_370_707_006_767_89e-6;
+    pub const S5: f64 = -2.505_076_025_340_686_341_95e-8;
+    pub const S6: f64 = 1.589_690_995_211_550_102_21e-10;
 
-const C1: f64 = 4.166_666_666_666_660_190_37e-2;
-const C2: f64 = -1.388_888_888_887_410_957_49e-3;
-const C3: f64 = 2.480_158_728_947_672_941_78e-5;
-const C4: f64 = -2.755_731_435_139_066_330_35e-7;
-const C5: f64 = 2.087_572_321_298_174_827_90e-9;
-const C6: f64 = -1.135_964_755_778_819_482_65e-11;
+    pub const C1: f64 = 4.166_666_666_666_660_190_37e-2;
+    pub const C2: f64 = -1.388_888_888_887_410_957_49e-3;
+    pub const C3: f64 = 2.480_158_728_947_672_941_78e-5;
+    pub const C4: f64 = -2.755_731_435_139_066_330_35e-7;
+    pub const C5: f64 = 2.087_572_321_298_174_827_90e-9;
+    pub const C6: f64 = -1.135_964_755_778_819_482_65e-11;
+}
+use consts::*;
 
 /// Largest |x| reduced here; beyond it the library is used.
-const REDUCE_LIMIT: f64 = 823_550.0; // ≈ 2^19 · π/2
+pub(crate) const REDUCE_LIMIT: f64 = 823_550.0; // ≈ 2^19 · π/2
+
+/// fdlibm's sine and cosine kernels on the reduced argument |r| ≤ π/4:
+/// r + r z S(z) and 1 − z/2 + z² C(z) with z = r², the degree-5
+/// polynomials S and C evaluated in Estrin's form
+/// (a + z b) + z² (c + z d) + z⁴ (e + z f), which halves the chain of
+/// dependent operations of Horner's rule at the same accuracy.
+#[inline(always)]
+pub fn kernels(r: f64) -> (f64, f64) {
+    let z = r * r;
+    let z2 = z * z;
+    let z4 = z2 * z2;
+    let estrin =
+        |k: [f64; 6]| ((k[0] + z * k[1]) + z2 * (k[2] + z * k[3])) + z4 * (k[4] + z * k[5]);
+    let ps = r + r * z * estrin([S1, S2, S3, S4, S5, S6]);
+    let pc = (1.0 - 0.5 * z) + z2 * estrin([C1, C2, C3, C4, C5, C6]);
+    (ps, pc)
+}
 
 /// (sin x, cos x).
 #[inline(always)]
@@ -40,9 +62,7 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     }
     let k = (x * FRAC_2_PI).round();
     let r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
-    let z = r * r;
-    let s = r + r * z * (S1 + z * (S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)))));
-    let c = 1.0 - 0.5 * z + z * z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6)))));
+    let (s, c) = kernels(r);
     match (k as i64) & 3 {
         0 => (s, c),
         1 => (c, -s),
@@ -61,9 +81,7 @@ pub fn sin_cos_slice(x: &[f64], s: &mut [f64], c: &mut [f64]) {
     for i in 0..n {
         let k = (x[i] * FRAC_2_PI).round_ties_even();
         let r = ((x[i] - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
-        let z = r * r;
-        let ps = r + r * z * (S1 + z * (S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)))));
-        let pc = 1.0 - 0.5 * z + z * z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6)))));
+        let (ps, pc) = kernels(r);
         // Quadrant k mod 4 as a float in {0, 1, 2, 3}.
         let quadrant = k - 4.0 * (k * 0.25).floor();
         let odd = quadrant == 1.0 || quadrant == 3.0;

@@ -6,6 +6,8 @@
 //! exactly on `t_stop` when the rest of the interval fits in one step; the
 //! run loop puts every sample time and every drive corner into `t_stop`.
 
+use super::fused::{Batch, FusedEuler, Stepping};
+use super::observables::ArrivalDetector;
 use super::rhs::{Rhs, State};
 use crate::error::{Error, Result};
 use std::fmt;
@@ -162,11 +164,19 @@ impl IntegratorConfig {
         Ok(self)
     }
 
-    /// A stepper with scratch buffers for a system of `dof` coordinates.
-    pub fn build(&self, dof: usize) -> Box<dyn Integrator> {
+    /// A stepper with scratch buffers for a system of `dof` coordinates;
+    /// symplectic Euler's steps are taken as `stepping` says
+    /// (`sim::fused`).
+    pub fn build(&self, dof: usize, stepping: Stepping) -> Box<dyn Integrator> {
         match self.kind {
             IntegratorKind::Dopri5 => Box::new(Dopri5::new(dof, self.dt, self.rtol)),
-            kind => Box::new(FixedStep::new(kind, dof, self.dt)),
+            kind => {
+                let mut stepper = FixedStep::new(kind, dof, self.dt);
+                if kind == IntegratorKind::SymplecticEuler {
+                    stepper.fused = FusedEuler::new(dof / 3, stepping);
+                }
+                Box::new(stepper)
+            }
         }
     }
 
@@ -185,6 +195,19 @@ pub trait Integrator {
     fn kind(&self) -> IntegratorKind;
     /// Advances one step towards `t_stop` (> t); returns the new time.
     fn advance(&mut self, rhs: &mut Rhs, st: &mut State, t: f64, t_stop: f64) -> Result<f64>;
+
+    /// Up to `max_steps` steps towards `t_stop`, feeding `arrivals` after
+    /// each; returns the new time and the number of steps taken.
+    fn advance_many(
+        &mut self,
+        rhs: &mut Rhs,
+        st: &mut State,
+        (t, t_stop): (f64, f64),
+        max_steps: u64,
+        arrivals: &mut ArrivalDetector,
+    ) -> Result<(f64, u64)> {
+        default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals)
+    }
 }
 
 /// Step size that divides [t, t_stop] into whole steps of at most `dt`.
@@ -206,6 +229,18 @@ struct Plan {
 impl Plan {
     /// Next step towards `t_stop` from `t`: (h, is the last step).
     fn next(&mut self, t: f64, t_stop: f64, dt: f64) -> (f64, bool) {
+        let (h, _, last) = self.take(t, t_stop, dt, 1);
+        (h, last)
+    }
+
+    /// Returns `count` steps taken by [`Plan::take`] but not made.
+    fn give_back(&mut self, count: u64) {
+        self.left += count;
+    }
+
+    /// Up to `max` (≥ 1) steps towards `t_stop` from `t`: (h, how many,
+    /// whether the last of them ends the interval).
+    fn take(&mut self, t: f64, t_stop: f64, dt: f64, max: u64) -> (f64, u64, bool) {
         if self.left == 0 || self.t_stop != t_stop {
             let span = t_stop - t;
             let n = (span / dt - 1e-6).ceil().max(1.0);
@@ -215,8 +250,52 @@ impl Plan {
                 left: n as u64,
             };
         }
-        self.left -= 1;
-        (self.h, self.left == 0)
+        let count = self.left.min(max);
+        self.left -= count;
+        (self.h, count, self.left == 0)
+    }
+}
+
+/// Symplectic Euler's factors for step `h`, per coordinate: the decay
+/// d = 1/(1 + h c) of the implicit damping and the kick h M⁻¹ d (zero for
+/// a prescribed coordinate).
+#[derive(Debug, Clone, Default)]
+pub struct ImplicitDamping {
+    pub h: f64,
+    pub decay: Vec<f64>,
+    pub kick: Vec<f64>,
+    /// (decay, kick) for X, Y and θ if every free block has the same ones
+    /// (as the ladder's uniform blocks do) and a prescribed block 1 has no
+    /// kick: what the fused stepper needs.
+    pub uniform: Option<([f64; 3], [f64; 3])>,
+}
+
+impl ImplicitDamping {
+    /// Recomputes the factors for step `h` in place (allocating only the
+    /// first time).
+    fn set(&mut self, rhs: &Rhs, h: f64) {
+        let dof = rhs.damping_rate.len();
+        self.decay.resize(dof, 0.0);
+        self.kick.resize(dof, 0.0);
+        let rates = rhs.damping_rate.iter().zip(rhs.inv_mass());
+        for ((d, kick), (rate, im)) in self.decay.iter_mut().zip(&mut self.kick).zip(rates) {
+            *d = 1.0 / (1.0 + h * rate);
+            *kick = h * im * *d;
+        }
+        self.h = h;
+        self.uniform = self.find_uniform();
+    }
+
+    fn find_uniform(&self) -> Option<([f64; 3], [f64; 3])> {
+        let block = |i: usize| {
+            let at = |v: &[f64]| -> Option<[f64; 3]> { v.get(3 * i..3 * i + 3)?.try_into().ok() };
+            Some((at(&self.decay)?, at(&self.kick)?))
+        };
+        let free = block(1)?;
+        let n = self.decay.len() / 3;
+        let first = block(0)?;
+        let first_ok = first == free || first.1 == [0.0; 3];
+        ((2..n).all(|i| block(i) == Some(free)) && first_ok).then_some(free)
     }
 }
 
@@ -229,10 +308,11 @@ pub struct FixedStep {
     /// Verlet: conservative acceleration at the current (q, t), if known.
     cached_at: Option<f64>,
     rk: Option<RungeKutta>,
-    /// 1/(1 + h c_k) for the step `damp_h` (symplectic Euler's implicit damping).
-    inv_damp: Vec<f64>,
-    damp_h: f64,
+    /// Symplectic Euler's factors for the last step size.
+    damping: ImplicitDamping,
     plan: Plan,
+    /// Symplectic Euler's fused stepper, where available.
+    fused: Option<FusedEuler>,
 }
 
 impl FixedStep {
@@ -244,9 +324,9 @@ impl FixedStep {
             acc: vec![0.0; dof],
             cached_at: None,
             rk,
-            inv_damp: vec![1.0; dof],
-            damp_h: 0.0,
+            damping: ImplicitDamping::default(),
             plan: Plan::default(),
+            fused: None,
         }
     }
 
@@ -261,20 +341,24 @@ impl FixedStep {
 
     /// Semi-implicit Euler, damping taken implicitly (unconditionally stable
     /// for the damping term, still first order):
-    /// v' = (v + h F(q)/m) / (1 + h γ/m), q' = q + h v'.
+    /// v' = (v + h F(q)/m) / (1 + h γ/m), q' = q + h v', computed as
+    /// v' = v d − ∂E/∂q · (h M⁻¹ d) with d = 1/(1 + h c) and both factors
+    /// precomputed per step size.
     fn symplectic_euler(&mut self, rhs: &mut Rhs, st: &mut State, h: f64) {
-        if h != self.damp_h {
-            for (inv, rate) in self.inv_damp.iter_mut().zip(&rhs.damping_rate) {
-                *inv = 1.0 / (1.0 + h * rate);
-            }
-            self.damp_h = h;
-        }
-        let (grad, inv_mass) = rhs.gradient(&st.q);
+        self.implicit_damping(rhs, h);
+        let (grad, _) = rhs.gradient(&st.q);
         let coords = st.q.iter_mut().zip(st.v.iter_mut());
-        let factors = grad.iter().zip(inv_mass).zip(&self.inv_damp);
-        for ((q, v), ((g, im), d)) in coords.zip(factors) {
-            *v = (*v - h * g * im) * d;
+        let factors = grad.iter().zip(&self.damping.kick).zip(&self.damping.decay);
+        for ((q, v), ((g, kick), decay)) in coords.zip(factors) {
+            *v = *v * decay - g * kick;
             *q += h * *v;
+        }
+    }
+
+    /// Symplectic Euler's per-coordinate factors for the step `h`.
+    fn implicit_damping(&mut self, rhs: &Rhs, h: f64) {
+        if h != self.damping.h {
+            self.damping.set(rhs, h);
         }
     }
 
@@ -322,6 +406,56 @@ impl Integrator for FixedStep {
         rhs.constrain(t_new, &mut st.q, &mut st.v);
         Ok(t_new)
     }
+
+    fn advance_many(
+        &mut self,
+        rhs: &mut Rhs,
+        st: &mut State,
+        (t, t_stop): (f64, f64),
+        max_steps: u64,
+        arrivals: &mut ArrivalDetector,
+    ) -> Result<(f64, u64)> {
+        let Some(fused) = self.fused else {
+            return default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals);
+        };
+        if max_steps == 0 || t >= t_stop {
+            return Ok((t, 0));
+        }
+        let (h, count, lands) = self.plan.take(t, t_stop, self.dt, max_steps);
+        self.implicit_damping(rhs, h);
+        let Some(factors) = self.damping.uniform else {
+            self.plan.give_back(count);
+            self.fused = None;
+            return default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals);
+        };
+        let batch = Batch {
+            t,
+            h,
+            count,
+            t_stop,
+            lands,
+        };
+        let t_new = fused.run(rhs, st, &batch, factors, arrivals);
+        Ok((t_new, count))
+    }
+}
+
+/// The trait's default `advance_many`, for an override that falls back to it.
+fn default_advance_many<I: Integrator + ?Sized>(
+    stepper: &mut I,
+    rhs: &mut Rhs,
+    st: &mut State,
+    (t, t_stop): (f64, f64),
+    max_steps: u64,
+    arrivals: &mut ArrivalDetector,
+) -> Result<(f64, u64)> {
+    let (mut t, mut taken) = (t, 0);
+    while taken < max_steps && t < t_stop {
+        t = stepper.advance(rhs, st, t, t_stop)?;
+        arrivals.observe(t, &st.q, &st.v);
+        taken += 1;
+    }
+    Ok((t, taken))
 }
 
 /// An explicit Runge–Kutta tableau (lower-triangular `a`, weights `b`,

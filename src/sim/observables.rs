@@ -31,17 +31,55 @@ impl ArrivalDetector {
     /// Feeds the state at the end of a step.
     #[inline]
     pub fn observe(&mut self, t: f64, q: &[f64], v: &[f64]) {
-        let h = t - self.prev_t;
-        let blocks = q.chunks_exact(3).zip(v.chunks_exact(3));
-        let memory = self.prev_theta.iter_mut().zip(self.prev_omega.iter_mut());
-        let record = self.arrival.iter_mut().zip(&self.initial_sign);
-        for (((qb, vb), (th0, om0)), (arrival, sign)) in blocks.zip(memory).zip(record) {
+        let t0 = self.prev_t;
+        for (i, (qb, vb)) in q.chunks_exact(3).zip(v.chunks_exact(3)).enumerate() {
             let (th, om) = (qb[2], vb[2]);
-            if th * sign < 0.0 && arrival.is_none() {
-                let s = hermite_root(*th0, h * *om0, th, h * om);
-                *arrival = Some(self.prev_t + s * h);
+            if self.crossed(i, th) {
+                let (th0, om0) = (self.prev_theta[i], self.prev_omega[i]);
+                self.record(i, (t0, th0, om0), (t, th, om));
             }
-            (*th0, *om0) = (th, om);
+            (self.prev_theta[i], self.prev_omega[i]) = (th, om);
+        }
+        self.prev_t = t;
+    }
+
+    /// Whether block `i`, at angle `theta`, has just turned past horizontal
+    /// for the first time.
+    #[inline]
+    pub fn crossed(&self, i: usize, theta: f64) -> bool {
+        theta * self.initial_sign[i] < 0.0 && self.arrival[i].is_none()
+    }
+
+    /// Blocks still to arrive, as a bit mask (bit i for block i; the first
+    /// 64 blocks).
+    pub fn pending_mask(&self) -> u64 {
+        self.arrival
+            .iter()
+            .take(64)
+            .enumerate()
+            .filter(|(_, a)| a.is_none())
+            .fold(0, |m, (i, _)| m | 1 << i)
+    }
+
+    /// (−1 or +1) sign of block `i`'s initial angle.
+    pub fn initial_sign(&self, i: usize) -> f64 {
+        self.initial_sign[i]
+    }
+
+    /// Records block `i`'s arrival inside the step from (t0, θ0, θ̇0) to
+    /// (t1, θ1, θ̇1), where θ changed sign.
+    pub fn record(&mut self, i: usize, start: (f64, f64, f64), end: (f64, f64, f64)) {
+        let ((t0, th0, om0), (t1, th1, om1)) = (start, end);
+        let h = t1 - t0;
+        let s = hermite_root(th0, h * om0, th1, h * om1);
+        self.arrival[i] = Some(t0 + s * h);
+    }
+
+    /// Takes (t, q, v) as the end of the last step, for callers that step
+    /// several times between observations and record crossings themselves.
+    pub fn restart(&mut self, t: f64, q: &[f64], v: &[f64]) {
+        for (i, (qb, vb)) in q.chunks_exact(3).zip(v.chunks_exact(3)).enumerate() {
+            (self.prev_theta[i], self.prev_omega[i]) = (qb[2], vb[2]);
         }
         self.prev_t = t;
     }

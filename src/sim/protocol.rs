@@ -60,22 +60,38 @@ impl Drive {
 
     /// θ_1(t).
     pub fn theta(&self, t: f64) -> f64 {
-        let k = &self.knots;
-        if t <= k[0].0 {
-            return k[0].1;
-        }
-        match k.windows(2).find(|w| t < w[1].0) {
-            Some(w) => w[0].1 + (w[1].1 - w[0].1) * (t - w[0].0) / (w[1].0 - w[0].0),
-            None => k[k.len() - 1].1,
-        }
+        self.piece(t).theta(t)
     }
 
     /// dθ_1/dt, taken from the right at a corner.
     pub fn omega(&self, t: f64) -> f64 {
-        self.knots
-            .windows(2)
-            .find(|w| t >= w[0].0 && t < w[1].0)
-            .map_or(0.0, |w| (w[1].1 - w[0].1) / (w[1].0 - w[0].0))
+        self.piece(t).omega()
+    }
+
+    /// The piece of θ_1 in force at `t`: the ramp [t_k, t_{k+1}) that
+    /// contains it (from the right at a knot), or the constant before the
+    /// first knot or after the last.
+    pub fn piece(&self, t: f64) -> Piece {
+        let k = &self.knots;
+        if t < k[0].0 {
+            return Piece::Hold {
+                theta: k[0].1,
+                from: f64::NEG_INFINITY,
+                until: k[0].0,
+            };
+        }
+        match k.windows(2).find(|w| t < w[1].0) {
+            Some(w) => Piece::Ramp {
+                start: w[0],
+                end: w[1],
+                slope: (w[1].1 - w[0].1) / (w[1].0 - w[0].0),
+            },
+            None => Piece::Hold {
+                theta: k[k.len() - 1].1,
+                from: k[k.len() - 1].0,
+                until: f64::INFINITY,
+            },
+        }
     }
 
     /// Times at which θ̇_1 jumps (the knots), where integrators must land.
@@ -86,6 +102,51 @@ impl Drive {
     /// Time after which the drive does no more work.
     pub fn end(&self) -> f64 {
         self.knots[self.knots.len() - 1].0
+    }
+}
+
+/// One piece of the piecewise-linear θ_1(t), valid on [from, until).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Piece {
+    Hold {
+        theta: f64,
+        from: f64,
+        until: f64,
+    },
+    /// Through the knots `start` and `end`; `slope` = dθ_1/dt.
+    Ramp {
+        start: (f64, f64),
+        end: (f64, f64),
+        slope: f64,
+    },
+}
+
+impl Piece {
+    /// Whether the piece is the one in force at `t`.
+    #[inline]
+    pub fn contains(&self, t: f64) -> bool {
+        match *self {
+            Self::Hold { from, until, .. } => t >= from && t < until,
+            Self::Ramp { start, end, .. } => t >= start.0 && t < end.0,
+        }
+    }
+
+    #[inline]
+    pub fn theta(&self, t: f64) -> f64 {
+        match *self {
+            Self::Hold { theta, .. } => theta,
+            Self::Ramp { start, end, .. } => {
+                start.1 + (end.1 - start.1) * (t - start.0) / (end.0 - start.0)
+            }
+        }
+    }
+
+    #[inline]
+    pub fn omega(&self) -> f64 {
+        match *self {
+            Self::Hold { .. } => 0.0,
+            Self::Ramp { slope, .. } => slope,
+        }
     }
 }
 

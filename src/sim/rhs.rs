@@ -3,9 +3,9 @@
 //! m Ẍ = −∂E/∂X − γẊ, I θ̈ = −∂E/∂θ − γ r² θ̇, with block 1 constrained by the
 //! protocol.
 
-use super::protocol::Protocol;
+use super::protocol::{Drive, Protocol};
 use crate::model::Ladder;
-use crate::model::ladder::{ForceScratch, itheta, ix, iy};
+use crate::model::ladder::{ForceScratch, ix, iy};
 use crate::model::params::{M, R};
 
 /// Positions q and velocities v, both in the model's layout [X, Y, θ per block].
@@ -74,14 +74,38 @@ impl<'a> Rhs<'a> {
     /// Sets block 1's position and velocity to the protocol's values at `t`.
     #[inline]
     pub fn constrain(&self, t: f64, q: &mut [f64], v: &mut [f64]) {
-        if let Some(d) = self.protocol.drive() {
-            q[ix(0)] = self.clamp[0];
-            q[iy(0)] = self.clamp[1];
-            q[itheta(0)] = d.theta(t);
-            v[ix(0)] = 0.0;
-            v[iy(0)] = 0.0;
-            v[itheta(0)] = d.omega(t);
+        if let Some((qp, vp)) = self.prescribed(t) {
+            q[..3].copy_from_slice(&qp);
+            v[..3].copy_from_slice(&vp);
         }
+    }
+
+    /// Block 1's prescribed (X, Y, θ) and their rates at `t`, if driven:
+    /// the centre clamped, the angle from the drive.
+    #[inline]
+    pub fn prescribed(&self, t: f64) -> Option<([f64; 3], [f64; 3])> {
+        self.protocol.drive().map(|d| {
+            (
+                [self.clamp[0], self.clamp[1], d.theta(t)],
+                [0.0, 0.0, d.omega(t)],
+            )
+        })
+    }
+
+    /// Block 1's drive and where its centre is clamped, if driven.
+    pub fn drive(&self) -> Option<(&Drive, [f64; 2])> {
+        self.protocol.drive().map(|d| (d, self.clamp))
+    }
+
+    /// M⁻¹ per coordinate: 1/m or 1/I, 0 for a prescribed one.
+    pub fn inv_mass(&self) -> &[f64] {
+        &self.inv_mass
+    }
+
+    /// Counts `n` force evaluations made outside [`Rhs::gradient`] (by a
+    /// fused stepper).
+    pub fn count_evals(&mut self, n: u64) {
+        self.force_evals += n;
     }
 
     /// Conservative acceleration −M⁻¹ ∂E/∂q at `q` (already constrained);
