@@ -1,10 +1,12 @@
 //! The paper's run (symplectic Euler, dt = 0.01, 4 × 10^5 steps, N = 10,
-//! α = 60°) and one force evaluation.
+//! α = 60°) with each way of stepping it (the fused kernel for the best
+//! instruction set, for AVX2, and the portable path), and one force
+//! evaluation.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use jacobs_ladder::model::ladder::ForceScratch;
 use jacobs_ladder::model::{Ladder, Params};
-use jacobs_ladder::sim::{self, IntegratorConfig, Scenario};
+use jacobs_ladder::sim::{self, IntegratorConfig, Isa, Scenario, Stepping};
 use std::hint::black_box;
 
 fn paper_run(c: &mut Criterion) {
@@ -13,9 +15,16 @@ fn paper_run(c: &mut Criterion) {
     let config = IntegratorConfig::paper();
     let mut group = c.benchmark_group("simulate");
     group.sample_size(10);
-    group.bench_function("paper_kink_4e5_steps", |b| {
-        b.iter(|| sim::simulate(black_box(&scenario), &[], &config).unwrap())
-    });
+    let steppings = [
+        ("fastest", Stepping::Fastest),
+        ("avx2", Stepping::Fused(Isa::Avx2)),
+        ("portable", Stepping::Portable),
+    ];
+    for (name, stepping) in steppings {
+        group.bench_function(format!("paper_kink_4e5_steps/{name}"), |b| {
+            b.iter(|| sim::simulate_with(black_box(&scenario), &[], &config, stepping).unwrap())
+        });
+    }
     group.finish();
 }
 
@@ -29,5 +38,10 @@ fn force_evaluation(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, paper_run, force_evaluation);
+criterion_group! {
+    name = benches;
+    // No HTML plots: criterion's plotters backend finds no system font here.
+    config = Criterion::default().without_plots();
+    targets = paper_run, force_evaluation
+}
 criterion_main!(benches);

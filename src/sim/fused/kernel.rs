@@ -320,10 +320,13 @@ fn half_sin_cos<const C: usize>(x: Lanes<C>) -> (Lanes<C>, Lanes<C>) {
 #[cold]
 #[inline(never)]
 fn library_half_sin_cos<const C: usize>(x: Lanes<C>) -> (Lanes<C>, Lanes<C>) {
-    let xs: Vec<f64> = x.to_vec().concat();
-    let (mut s, mut c) = (vec![0.0; xs.len()], vec![0.0; xs.len()]);
-    trig::sin_cos_slice(&xs, &mut s, &mut c);
-    (Lanes::from_fn(|i| R * s[i]), Lanes::from_fn(|i| R * c[i]))
+    let xs = x.to_vec();
+    let (mut s, mut c) = ([[0.0; 4]; C], [[0.0; 4]; C]);
+    for k in 0..C {
+        trig::sin_cos_slice(&xs[k], &mut s[k], &mut c[k]);
+    }
+    let half = |v: [[f64; 4]; C]| Lanes::from_fn(|i| R * v[i / 4][i % 4]);
+    (half(s), half(c))
 }
 
 /// Per-lane constants of a batch.
@@ -599,4 +602,40 @@ fn run_body<const C: usize>(job: &Job, st: &mut State, arrivals: &mut ArrivalDet
     r.store(st, n);
     arrivals.restart(t, &st.q, &st.v);
     t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `half_sin_cos` of `x`, in the AVX2 build.
+    #[target_feature(enable = "avx2")]
+    fn half_sin_cos_avx2(x: [[f64; 4]; 3]) -> ([[f64; 4]; 3], [[f64; 4]; 3]) {
+        let (s, c) = half_sin_cos(Lanes::<3>::from_fn(|i| x[i / 4][i % 4]));
+        (s.to_vec(), c.to_vec())
+    }
+
+    #[test]
+    fn half_sin_cos_is_half_the_portable_sin_cos_bit_for_bit() {
+        if !Isa::Avx2.available() {
+            return;
+        }
+        let quarter = std::f64::consts::FRAC_PI_2;
+        let mut xs: Vec<f64> = (-4000..4000).map(|k| k as f64 * 0.0123 + 1e-3).collect();
+        xs.extend((-8..8).flat_map(|k| [k as f64 * quarter, k as f64 * quarter + 1e-12]));
+        xs.extend([0.0, -0.0, 823_549.0, 823_551.0, -3e7, 1e300, f64::INFINITY, f64::NAN]);
+        xs.resize(xs.len().div_ceil(12) * 12, 0.5);
+        for chunk in xs.chunks_exact(12) {
+            let x: [[f64; 4]; 3] = std::array::from_fn(|c| std::array::from_fn(|l| chunk[4 * c + l]));
+            // SAFETY: the CPU has AVX2, checked above.
+            let (s, c) = unsafe { half_sin_cos_avx2(x) };
+            let (mut ws, mut wc) = (vec![0.0; 12], vec![0.0; 12]);
+            trig::sin_cos_slice(chunk, &mut ws, &mut wc);
+            for i in 0..12 {
+                let (gs, gc) = (s[i / 4][i % 4], c[i / 4][i % 4]);
+                let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+                assert!(same(gs, R * ws[i]) && same(gc, R * wc[i]), "x = {}", chunk[i]);
+            }
+        }
+    }
 }
