@@ -112,6 +112,11 @@ fn charts_draw_from_reports() {
     };
     let caption = bench::stability_caption(&stability);
     assert!(caption.contains("ratio 1.84 at 60°"), "{caption}");
+    // dopri5's growth at its limit: (4000/0.72) ln|R(0.72 (−0.01 + 2.5i))| = 37.07.
+    assert!(
+        caption.contains("about e^37 at the observed limit"),
+        "{caption}"
+    );
     let image = bench::stability_chart(&stability).unwrap();
     assert!(image.width() >= 800 && image.height() > 1000);
 }

@@ -26,7 +26,7 @@ pub const fn parity(i: usize) -> f64 {
 
 /// Orientation t_n = (sin θ_n, (−1)^n cos θ_n) of block `i` at angle `theta`.
 pub fn orientation(i: usize, theta: f64) -> [f64; 2] {
-    let (s, c) = theta.sin_cos();
+    let (s, c) = super::trig::sin_cos(theta);
     [s, parity(i) * c]
 }
 
@@ -77,25 +77,29 @@ impl Ladder {
 
     /// Spring lengths L_A,n and L_B,n, n = 1..N−1, written into `la`, `lb`.
     pub fn spring_lengths(&self, q: &[f64], la: &mut [f64], lb: &mut [f64]) {
-        for i in 0..self.n() - 1 {
-            let (a0, b0) = nodes(q, i);
-            let (a1, b1) = nodes(q, i + 1);
-            la[i] = (a1[0] - a0[0]).hypot(a1[1] - a0[1]);
-            lb[i] = (b1[0] - b0[0]).hypot(b1[1] - b0[1]);
+        for (i, (a, b)) in self.spring_length_pairs(q).enumerate() {
+            (la[i], lb[i]) = (a, b);
         }
+    }
+
+    /// (L_A,n, L_B,n) for n = 1..N−1, each block's nodes computed once.
+    fn spring_length_pairs<'q>(&self, q: &'q [f64]) -> impl Iterator<Item = (f64, f64)> + 'q {
+        let distance =
+            |p: [f64; 2], r: [f64; 2]| ((r[0] - p[0]).powi(2) + (r[1] - p[1]).powi(2)).sqrt();
+        let mut upper = nodes(q, 0);
+        (1..self.n()).map(move |i| {
+            let lower = nodes(q, i);
+            let pair = (distance(upper.0, lower.0), distance(upper.1, lower.1));
+            upper = lower;
+            pair
+        })
     }
 
     /// Elastic energy Σ ½k[(L_A,n − a)² + (L_B,n − b)²].
     pub fn elastic_energy(&self, q: &[f64]) -> f64 {
-        let mut e = 0.0;
-        for i in 0..self.n() - 1 {
-            let (a0, b0) = nodes(q, i);
-            let (a1, b1) = nodes(q, i + 1);
-            let la = (a1[0] - a0[0]).hypot(a1[1] - a0[1]);
-            let lb = (b1[0] - b0[0]).hypot(b1[1] - b0[1]);
-            e += 0.5 * ((la - self.a).powi(2) + (lb - self.params.b).powi(2));
-        }
-        e
+        self.spring_length_pairs(q)
+            .map(|(la, lb)| 0.5 * ((la - self.a).powi(2) + (lb - self.params.b).powi(2)))
+            .sum()
     }
 
     /// Potential energy E = Σ ½k[(L_A,n − a)² + (L_B,n − b)²] − m G Σ X_n

@@ -111,9 +111,22 @@ impl Trajectory {
     }
 }
 
-/// How often (in steps) the run loop looks for divergence (5 τ at the
-/// paper's dt; every sample time and drive corner is checked as well).
-const CHECK_EVERY: u64 = 512;
+/// How often, in τ, the run loop looks for divergence (every sample time
+/// and drive corner is checked as well): often enough to catch the
+/// transient stretches of a run at its stability limit whatever its step.
+const CHECK_INTERVAL: f64 = 5.0;
+/// The most steps between two checks (the fused stepper's batch).
+const CHECK_MAX_STEPS: u64 = 512;
+
+/// Steps between divergence checks: [`CHECK_INTERVAL`] in steps of `dt`
+/// (64 for adaptive dopri5, whose steps vary), at least 1 and at most
+/// [`CHECK_MAX_STEPS`].
+fn check_every(config: &IntegratorConfig) -> u64 {
+    if config.kind == IntegratorKind::Dopri5 && config.rtol.is_some() {
+        return 64;
+    }
+    ((CHECK_INTERVAL / config.dt).ceil() as u64).clamp(1, CHECK_MAX_STEPS)
+}
 /// Runaway thresholds: more than four turns of any block, or an elastic
 /// energy beyond one k s² per spring (a stretch of about 1.4 s everywhere).
 const MAX_TURNS: f64 = 4.0;
@@ -151,6 +164,7 @@ pub fn simulate_with(
     rhs.constrain(0.0, &mut st.q, &mut st.v);
     let mut integrator = config.build(rhs.dof(), stepping);
     let mut watch = DivergenceWatch::new(ladder, &scenario.protocol, &config);
+    let check_every = check_every(&config);
     let mut arrivals = ArrivalDetector::new(0.0, &st.q, &st.v);
     let mut traj = Trajectory {
         times: Vec::with_capacity(samples.len()),
@@ -167,12 +181,12 @@ pub fn simulate_with(
     traj.record_due(&samples, &mut next_sample, t, &st, ladder.params.alpha);
     for &stop in &stops {
         while t < stop {
-            let budget = CHECK_EVERY - traj.steps % CHECK_EVERY;
+            let budget = check_every - traj.steps % check_every;
             let (t_new, taken) =
                 integrator.advance_many(&mut rhs, &mut st, (t, stop), budget, &mut arrivals)?;
             t = t_new;
             traj.steps += taken;
-            if traj.steps.is_multiple_of(CHECK_EVERY) {
+            if traj.steps.is_multiple_of(check_every) {
                 watch.check(&rhs, &st, t)?;
             }
         }

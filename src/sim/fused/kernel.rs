@@ -623,18 +623,33 @@ mod tests {
         let quarter = std::f64::consts::FRAC_PI_2;
         let mut xs: Vec<f64> = (-4000..4000).map(|k| k as f64 * 0.0123 + 1e-3).collect();
         xs.extend((-8..8).flat_map(|k| [k as f64 * quarter, k as f64 * quarter + 1e-12]));
-        xs.extend([0.0, -0.0, 823_549.0, 823_551.0, -3e7, 1e300, f64::INFINITY, f64::NAN]);
+        xs.extend([
+            0.0,
+            -0.0,
+            823_549.0,
+            823_551.0,
+            -3e7,
+            1e300,
+            f64::INFINITY,
+            f64::NAN,
+        ]);
         xs.resize(xs.len().div_ceil(12) * 12, 0.5);
         for chunk in xs.chunks_exact(12) {
-            let x: [[f64; 4]; 3] = std::array::from_fn(|c| std::array::from_fn(|l| chunk[4 * c + l]));
+            let x: [[f64; 4]; 3] =
+                std::array::from_fn(|c| std::array::from_fn(|l| chunk[4 * c + l]));
             // SAFETY: the CPU has AVX2, checked above.
             let (s, c) = unsafe { half_sin_cos_avx2(x) };
             let (mut ws, mut wc) = (vec![0.0; 12], vec![0.0; 12]);
             trig::sin_cos_slice(chunk, &mut ws, &mut wc);
             for i in 0..12 {
                 let (gs, gc) = (s[i / 4][i % 4], c[i / 4][i % 4]);
-                let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
-                assert!(same(gs, R * ws[i]) && same(gc, R * wc[i]), "x = {}", chunk[i]);
+                let same =
+                    |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+                assert!(
+                    same(gs, R * ws[i]) && same(gc, R * wc[i]),
+                    "x = {}",
+                    chunk[i]
+                );
             }
         }
     }
