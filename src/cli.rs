@@ -192,6 +192,44 @@ pub struct SimulateArgs {
     /// Interval between CSV samples, in tau
     #[arg(long, default_value_t = 10.0, value_name = "T")]
     pub sample_every: f64,
+    /// Code that takes symplectic Euler's steps (N <= 32; otherwise, and for
+    /// the other integrators, the portable loop): the fused kernel for the
+    /// best instruction set of this CPU, the one for a given set, or the
+    /// portable loop. All give the same numbers, bit for bit; only the time
+    /// differs
+    #[arg(long, value_enum, default_value_t = KernelArg::Fastest, value_name = "KERNEL")]
+    pub kernel: KernelArg,
+}
+
+/// `simulate --kernel`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum KernelArg {
+    Fastest,
+    Avx2,
+    Avx512,
+    Portable,
+}
+
+impl KernelArg {
+    /// The stepping asked for, if this CPU can run it.
+    fn stepping(self) -> Result<sim::Stepping> {
+        let fused = |isa: sim::Isa| {
+            if isa.available() {
+                Ok(sim::Stepping::Fused(isa))
+            } else {
+                Err(Error::bad_input(format!(
+                    "--kernel {}: this CPU lacks the instruction set; use fastest or portable",
+                    isa.name()
+                )))
+            }
+        };
+        match self {
+            Self::Fastest => Ok(sim::Stepping::Fastest),
+            Self::Avx2 => fused(sim::Isa::Avx2),
+            Self::Avx512 => fused(sim::Isa::Avx512),
+            Self::Portable => Ok(sim::Stepping::Portable),
+        }
+    }
 }
 
 /// Runs the program on `args`; returns the process exit code.
@@ -324,11 +362,12 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         }
     };
     let samples = csv_samples(args)?;
+    let stepping = args.kernel.stepping()?;
     if let Some(path) = &args.csv {
         crate::output::check_writable(path)?;
     }
     let start = Instant::now();
-    let traj = sim::simulate(&scenario, &samples, &config)?;
+    let traj = sim::simulate_with(&scenario, &samples, &config, stepping)?;
     let wall_seconds = start.elapsed().as_secs_f64();
     if let Some(path) = &args.csv {
         crate::output::write_atomic(path, csv_text(&traj).as_bytes())?;

@@ -254,3 +254,27 @@ fn theory_reports_the_spec_fields_and_rejects_bad_angles() {
     assert_bad_input(&["theory", "--n", "100000"], "400");
     assert_bad_input(&["bench", "speed"], "unknown study");
 }
+
+#[test]
+fn every_kernel_prints_the_same_numbers() {
+    // The JSON without its wall time, for each --kernel this CPU runs.
+    let numbers = |kernel: &str| {
+        let out = ladder(&["simulate", "--t-end", "1500", "--json", "--kernel", kernel]);
+        assert_eq!(out.status.code(), Some(0), "{kernel}");
+        let mut v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        v.as_object_mut().unwrap().remove("wall_seconds");
+        v
+    };
+    let portable = numbers("portable");
+    assert!(portable["arrival_times"][4].is_number(), "{portable}");
+    for kernel in ["fastest", "avx2", "avx512"] {
+        let out = ladder(&["simulate", "--t-end", "1", "--kernel", kernel]);
+        if out.status.code() == Some(2) {
+            // This CPU lacks the instruction set: one clear line.
+            assert!(String::from_utf8_lossy(&out.stderr).contains("--kernel"));
+            continue;
+        }
+        assert_eq!(numbers(kernel), portable, "--kernel {kernel}");
+    }
+    assert_bad_input(&["simulate", "--kernel", "sse9"], "kernel");
+}
