@@ -8,6 +8,12 @@
 //! the instruction set, and there compile to single instructions on
 //! registers. Small loops over the C registers of a quantity unroll
 //! completely, so the whole state stays in registers across steps.
+//!
+//! Keep closures and runtime indices out of the step: a closure is not
+//! `#[inline(always)]`, and one left out of line compiles without AVX and
+//! calls every intrinsic (the run took 220 ms instead of 30 when that
+//! happened); an index the compiler cannot resolve sends a whole quantity
+//! to the stack.
 
 use super::{Batch, Isa};
 use crate::model::ladder::parity;
