@@ -1,5 +1,6 @@
 //! Speed against accuracy: work-precision sweeps and stability bisection
-//! (SPEC section 5, `bench work-precision` and `bench stability`).
+//! (SPEC section 5, `bench work-precision` and `bench stability`), and the
+//! paper's run timed with each kernel (`bench kernels`).
 //!
 //! Every error is measured against a reference computed by the program
 //! itself at a much tighter setting (dopri5, rtol = 1e-11).
@@ -12,7 +13,9 @@ use serde::{Deserialize, Serialize};
 use std::time::Instant;
 
 pub mod charts;
+pub mod kernels;
 pub use charts::{stability_caption, stability_chart, work_precision_chart};
+pub use kernels::{KernelReport, kernels, kernels_table};
 
 /// Tolerance of the reference solution.
 pub const REFERENCE_RTOL: f64 = 1e-11;

@@ -131,7 +131,9 @@ pub struct TheoryArgs {
 
 #[derive(Args, Debug)]
 pub struct BenchArgs {
-    /// work-precision (error against cost) or stability (critical time steps)
+    /// work-precision (error against cost), stability (critical time
+    /// steps), or kernels (the paper's run timed with each `simulate
+    /// --kernel`; prints only, writes no file)
     #[arg(value_name = "STUDY")]
     pub study: String,
     /// Output folder for the chart and its CSV
@@ -140,7 +142,8 @@ pub struct BenchArgs {
     /// Print one JSON object instead of a table
     #[arg(long)]
     pub json: bool,
-    /// Repeats per work-precision point (the median wall time is kept)
+    /// Repeats per work-precision point, or rounds of bench kernels (the
+    /// median wall time is kept)
     #[arg(long, default_value_t = 3)]
     pub repeats: usize,
 }
@@ -462,14 +465,35 @@ fn bench(args: &BenchArgs) -> Result<()> {
             args.repeats
         )));
     }
-    crate::output::ensure_dir(&args.out)?;
+    match args.study.as_str() {
+        "work-precision" | "stability" => crate::output::ensure_dir(&args.out)?,
+        "kernels" => return bench_kernels(args),
+        other => {
+            return Err(Error::bad_input(format!(
+                "unknown study '{other}'; choose work-precision, stability or kernels"
+            )));
+        }
+    }
     match args.study.as_str() {
         "work-precision" => bench_work_precision(args),
-        "stability" => bench_stability(args),
-        other => Err(Error::bad_input(format!(
-            "unknown study '{other}'; choose work-precision or stability"
-        ))),
+        _ => bench_stability(args),
     }
+}
+
+fn bench_kernels(args: &BenchArgs) -> Result<()> {
+    let runs = args.repeats * crate::bench::kernels::kernel_count();
+    let bar = progress_bar(runs as u64, "kernels");
+    let report = crate::bench::kernels(args.repeats, &|msg| {
+        bar.set_message(msg.to_string());
+        bar.inc(1);
+    })?;
+    bar.finish_and_clear();
+    if args.json {
+        println!("{}", to_json(&report)?);
+    } else {
+        print!("{}", crate::bench::kernels_table(&report));
+    }
+    Ok(())
 }
 
 fn bench_work_precision(args: &BenchArgs) -> Result<()> {

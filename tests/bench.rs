@@ -120,3 +120,20 @@ fn charts_draw_from_reports() {
     let image = bench::stability_chart(&stability).unwrap();
     assert!(image.width() >= 800 && image.height() > 1000);
 }
+
+#[test]
+fn every_kernel_gives_the_portable_trajectory() {
+    let report = bench::kernels(1, &|_| {}).unwrap();
+    assert_eq!(report.steps, 400_000);
+    let names: Vec<_> = report.kernels.iter().map(|k| k.kernel.as_str()).collect();
+    assert!(names.starts_with(&["portable", "fastest"]), "{names:?}");
+    for k in &report.kernels {
+        assert!(k.same_as_portable, "{}", k.kernel);
+        assert!(k.median_ms > 0.0 && k.speedup.is_finite(), "{k:?}");
+    }
+    let table = bench::kernels_table(&report);
+    assert!(
+        table.contains("bit for bit") && !table.contains("NO"),
+        "{table}"
+    );
+}
