@@ -17,6 +17,13 @@ pub mod kernels;
 pub use charts::{stability_caption, stability_chart, work_precision_chart};
 pub use kernels::{KernelReport, kernels, kernels_table};
 
+/// The middle of `values` (the upper of the two middle ones for an even
+/// count); NaN for none.
+pub fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
+}
+
 /// Tolerance of the reference solution.
 pub const REFERENCE_RTOL: f64 = 1e-11;
 
@@ -182,8 +189,7 @@ fn measure(
             Ok(t) => outcome = Some(t),
         }
     }
-    times.sort_by(f64::total_cmp);
-    let wall_seconds = times[times.len() / 2];
+    let wall_seconds = median(times);
     Ok(match outcome {
         Some(run) => Point {
             dt,
@@ -370,6 +376,13 @@ mod tests {
         // ωh ≈ 1: with light damping its bound sits a little above that.
         let dp5 = predicted_dt(IntegratorKind::Dopri5, omega, c) * omega;
         assert!(dp5 > 1.0 && dp5 < 3.5, "{dp5}");
+    }
+
+    #[test]
+    fn median_is_the_middle_value() {
+        assert_eq!(median(vec![3.0, 1.0, 2.0]), 2.0);
+        assert_eq!(median(vec![4.0, 1.0, 3.0, 2.0]), 3.0);
+        assert!(median(Vec::new()).is_nan());
     }
 
     #[test]

@@ -483,10 +483,7 @@ fn bench(args: &BenchArgs) -> Result<()> {
 fn bench_kernels(args: &BenchArgs) -> Result<()> {
     let runs = args.repeats * crate::bench::kernels::kernel_count();
     let bar = progress_bar(runs as u64, "kernels");
-    let report = crate::bench::kernels(args.repeats, &|msg| {
-        bar.set_message(msg.to_string());
-        bar.inc(1);
-    })?;
+    let report = crate::bench::kernels(args.repeats, &ticker(&bar))?;
     bar.finish_and_clear();
     if args.json {
         println!("{}", to_json(&report)?);
@@ -505,10 +502,7 @@ fn bench_work_precision(args: &BenchArgs) -> Result<()> {
             .map(|k| bench::default_steps(*k).len())
             .sum::<usize>();
     let bar = progress_bar(total as u64, "work-precision");
-    let report = bench::work_precision(&scenes, args.repeats, &|msg| {
-        bar.set_message(msg.to_string());
-        bar.inc(1);
-    })?;
+    let report = bench::work_precision(&scenes, args.repeats, &ticker(&bar))?;
     bar.finish_and_clear();
     let chart = bench::work_precision_chart(&report)?;
     let csv = bench::work_precision_csv(&report);
@@ -546,10 +540,7 @@ fn bench_stability(args: &BenchArgs) -> Result<()> {
     use crate::bench;
     let alphas = bench::STABILITY_ALPHAS;
     let bar = progress_bar(alphas.len() as u64, "stability");
-    let report = bench::stability(&alphas, &|msg| {
-        bar.set_message(msg.to_string());
-        bar.inc(1);
-    })?;
+    let report = bench::stability(&alphas, &ticker(&bar))?;
     bar.finish_and_clear();
     let chart = bench::stability_chart(&report)?;
     let csv = bench::stability_csv(&report);
@@ -562,6 +553,14 @@ fn to_json<T: Serialize>(value: &T) -> Result<String> {
 }
 
 /// A progress bar on stderr (hidden when stderr is not a terminal).
+/// A progress callback for a study: shows `msg` and counts one item.
+fn ticker(bar: &indicatif::ProgressBar) -> impl Fn(&str) + Sync + '_ {
+    move |msg| {
+        bar.set_message(msg.to_string());
+        bar.inc(1);
+    }
+}
+
 fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(len);
     let style =

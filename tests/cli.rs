@@ -252,7 +252,10 @@ fn theory_reports_the_spec_fields_and_rejects_bad_angles() {
     assert_bad_input(&["theory", "--alpha", "NaN"], "alpha");
     assert_bad_input(&["theory", "--n", "1"], "N");
     assert_bad_input(&["theory", "--n", "100000"], "400");
-    assert_bad_input(&["bench", "speed"], "unknown study");
+    assert_bad_input(
+        &["bench", "speed"],
+        "choose work-precision, stability or kernels",
+    );
 }
 
 #[test]

@@ -4,6 +4,7 @@
 //! shared machine's slow and fast phases fall on all of them alike, and
 //! checked to give the portable path's trajectory bit for bit.
 
+use super::median;
 use crate::error::{Error, Result};
 use crate::model::Params;
 use crate::sim::{self, IntegratorConfig, Isa, Scenario, Stepping, Trajectory};
@@ -43,16 +44,6 @@ fn available() -> Vec<(&'static str, Stepping)> {
     .into_iter()
     .chain(fused)
     .collect()
-}
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    let n = v.len();
-    if n % 2 == 1 {
-        v[n / 2]
-    } else {
-        0.5 * (v[n / 2 - 1] + v[n / 2])
-    }
 }
 
 /// How many kernels [`kernels`] times on this CPU.
