@@ -1,6 +1,7 @@
 //! Time integration of the ladder: the run loop, sampling at requested
 //! times, divergence detection, and the scenes' initial conditions.
 
+pub mod auto;
 pub mod fused;
 pub mod integrators;
 pub mod observables;
