@@ -3,6 +3,8 @@
 //! renders back to the same bytes; golden images of figure 3 and a
 //! kymograph; custom movies at N = 2, 40 and 200.
 
+#![allow(clippy::field_reassign_with_default)]
+
 mod common;
 
 use common::golden::check;

@@ -8,6 +8,8 @@
 //!
 //! Run in release: `cargo test --release --test scenes_accuracy`.
 
+#![allow(clippy::field_reassign_with_default)]
+
 use jacobs_ladder::bench::{self, BenchScene};
 use jacobs_ladder::catalog;
 use jacobs_ladder::scene::{DriveSpec, Scene};

@@ -243,8 +243,10 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         rtol: args.rtol,
         tolerance: args.tolerance,
     };
-    let mut base = Scene::default();
-    base.output = scene::OutputSpec::Data;
+    let base = Scene {
+        output: scene::OutputSpec::Data,
+        ..Scene::default()
+    };
     let method = convert::parse_method(&args.integrator)?;
     if args.dt.is_some() && method == scene::Method::Auto {
         return Err(Error::bad_input(
@@ -306,7 +308,7 @@ fn csv_samples(args: &SimulateArgs) -> Result<Vec<f64>> {
         )));
     }
     let count = (args.t_end / every).floor();
-    if !(count <= 10_000_000.0) {
+    if count.is_nan() || count > 10_000_000.0 {
         return Err(Error::bad_input(
             "--sample-every is too small for this --t-end (at most 10^7 samples)",
         ));

@@ -325,13 +325,13 @@ impl MoviePlan {
     }
 }
 
+/// Pixel positions of both ends of every block, one list per frame.
+pub type BlockPixels = Vec<Vec<(f32, f32)>>;
+
 /// For a test of the camera: the ladder's region of a movie frame and the
 /// pixel positions of both ends of every block at every frame, as the
 /// movie draws them.
-pub fn movie_block_pixels(
-    scene: &Scene,
-    opts: &MovieOptions,
-) -> Result<(Region, Vec<Vec<(f32, f32)>>)> {
+pub fn movie_block_pixels(scene: &Scene, opts: &MovieOptions) -> Result<(Region, BlockPixels)> {
     let plan = MoviePlan::new(scene, &opts.validated()?)?;
     let region = plan.layout.ladder;
     let mut frames = Vec::new();
