@@ -511,7 +511,7 @@ fn render_into(scenes: &[Scene], out: &Path, movie: &MovieOptions, index: bool) 
                 files: files.clone(),
             })
             .collect();
-        let page = crate::gallery::index_html(&items);
+        let page = crate::gallery::index_html(&items)?;
         crate::output::write_atomic(&out.join("index.html"), page.as_bytes())?;
         count += 1;
     }
