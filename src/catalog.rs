@@ -308,3 +308,43 @@ pub fn listing() -> Result<String> {
     }
     Ok(s)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn what_is_not_made_is_not_in_the_catalogue_and_points_at_what_is() {
+        let absent = absent().unwrap();
+        assert_eq!(absent.len(), 9, "six figures and three movies");
+        for a in absent {
+            assert!(
+                find(a.kind, &a.id).is_err(),
+                "{} {} is made",
+                a.kind.name(),
+                a.id
+            );
+            if let Some(n) = &a.nearest {
+                let (kind, id) = n.split_once(' ').unwrap();
+                let kind = if kind == "figure" {
+                    Kind::Figure
+                } else {
+                    Kind::Movie
+                };
+                assert!(
+                    find(kind, id).is_ok(),
+                    "nearest {n} is not in the catalogue"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn closest_ids() {
+        assert_eq!(closest(Some(Kind::Figure), "s6"), ["S6"]);
+        assert_eq!(closest(Some(Kind::Figure), "edge"), ["edge-mode"]);
+        assert_eq!(closest(Some(Kind::Movie), "3"), ["3", "figure 3"]);
+        assert!(closest(Some(Kind::Movie), "qqq").is_empty());
+        assert_eq!(or_list(&["a".into(), "b".into(), "c".into()]), "a, b or c");
+    }
+}

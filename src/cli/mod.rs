@@ -16,7 +16,6 @@ use crate::sim::{self, IntegratorKind};
 use clap::Parser;
 use serde::Serialize;
 use std::ffi::OsString;
-use std::path::Path;
 use std::time::Instant;
 
 /// Runs the program on `args`; returns the process exit code.
@@ -93,12 +92,18 @@ pub fn run(cli: Cli) -> Result<()> {
         }
         Command::Figure(args) => {
             let scenes = figure_scenes(&args)?;
-            render_into(&scenes, &args.out.out, &MovieOptions::default(), false)
+            render_into(
+                &scenes,
+                &args.out,
+                &MovieOptions::default(),
+                Words::Flags,
+                false,
+            )
         }
         Command::Movie(args) => {
             let opts = args.format.options()?;
             let scenes = movie_scenes(&args)?;
-            render_into(&scenes, &args.out.out, &opts, false)
+            render_into(&scenes, &args.out, &opts, Words::Flags, false)
         }
         Command::Render(args) => {
             let opts = args.format.options()?;
@@ -107,7 +112,7 @@ pub fn run(cli: Cli) -> Result<()> {
                 .iter()
                 .map(|f| scene::file::load(f))
                 .collect::<Result<Vec<_>>>()?;
-            render_into(&scenes, &args.out.out, &opts, false)
+            render_into(&scenes, &args.out, &opts, Words::Keys, false)
         }
         Command::All(args) => {
             let opts = args.format.options()?;
@@ -115,7 +120,7 @@ pub fn run(cli: Cli) -> Result<()> {
                 .iter()
                 .map(|e| e.scene.clone())
                 .collect();
-            render_into(&scenes, &args.out.out, &opts, true)
+            render_into(&scenes, &args.out, &opts, Words::Flags, true)
         }
     }
 }
@@ -260,7 +265,8 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         crate::output::check_writable(path)?;
     }
     let start = Instant::now();
-    let result = scenes::run::simulate_with(&scene, &samples, stepping)?;
+    let result = scenes::run::simulate_with(&scene, &samples, stepping)
+        .map_err(|e| with_divergence_hint(e, &scene, Words::Flags))?;
     let wall_seconds = start.elapsed().as_secs_f64();
     let traj = &result.trajectory;
     if let Some(path) = &args.csv {
@@ -295,6 +301,83 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         print!("{}", simulate_table(&report));
     }
     Ok(())
+}
+
+/// How a hint names the settings: as command-line flags, or as the keys
+/// of a scene file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Words {
+    Flags,
+    Keys,
+}
+
+impl Words {
+    fn dt(self) -> &'static str {
+        match self {
+            Self::Flags => "--dt",
+            Self::Keys => "[run] dt",
+        }
+    }
+
+    fn rtol(self) -> &'static str {
+        match self {
+            Self::Flags => "--rtol",
+            Self::Keys => "[run] rtol",
+        }
+    }
+
+    fn auto(self) -> &'static str {
+        match self {
+            Self::Flags => "--integrator auto",
+            Self::Keys => "[run] integrator = \"auto\"",
+        }
+    }
+}
+
+/// A diverged run's message with a hint in the user's terms: the largest
+/// step at which this scene stays bounded with the integrator that failed
+/// (measured by bisection, or the linear prediction where measuring would
+/// take long), or the auto integrator. Other errors pass unchanged.
+fn with_divergence_hint(e: Error, scene: &Scene, words: Words) -> Error {
+    let Error::Diverged(d) = &e else {
+        return e;
+    };
+    let scene::Method::Fixed(kind) = scene.run.integrator else {
+        return e;
+    };
+    let auto = words.auto();
+    let hint = if kind == IntegratorKind::Dopri5 && scene.run.rtol.is_some() {
+        format!("use a smaller {}, or {auto}", words.rtol())
+    } else {
+        let dt = words.dt();
+        match scenes::run::critical_step(scene, kind) {
+            Ok(scenes::run::CriticalStep {
+                measured: Some(c),
+                predicted,
+            }) => format!(
+                "on this scene {kind} stays bounded up to dt ≈ {} τ (measured; the linear theory \
+                 predicts {}): use {dt} below that, or {auto}, which picks a step and checks it",
+                short(c),
+                short(predicted)
+            ),
+            Ok(scenes::run::CriticalStep { predicted, .. }) if predicted.is_finite() => format!(
+                "the linear theory puts the stable step of {kind} on this scene near dt ≈ {} τ: \
+                 use {dt} well below that, or {auto}, which picks a step and checks it",
+                short(predicted)
+            ),
+            _ => format!("use a smaller {dt}, or {auto}, which picks a step and checks it"),
+        }
+    };
+    Error::failed(format!("{}; hint: {hint}", d.facts()))
+}
+
+/// `x` to two significant digits, as a reader writes it.
+fn short(x: f64) -> String {
+    if !(x.is_finite() && x > 0.0) {
+        return format!("{x}");
+    }
+    let scale = 10f64.powf(x.log10().floor() - 1.0);
+    scene::describe::num((x / scale).floor() * scale)
 }
 
 fn csv_samples(args: &SimulateArgs) -> Result<Vec<f64>> {
@@ -483,7 +566,14 @@ fn theory(args: &TheoryArgs) -> Result<()> {
 
 /// Renders `scenes` into `out` in parallel (rayon), each file written
 /// atomically as soon as it is ready, with a progress bar and a summary.
-fn render_into(scenes: &[Scene], out: &Path, movie: &MovieOptions, index: bool) -> Result<()> {
+fn render_into(
+    scenes: &[Scene],
+    out: &OutArgs,
+    movie: &MovieOptions,
+    words: Words,
+    index: bool,
+) -> Result<()> {
+    let (out, verbose) = (out.out.as_path(), out.verbose);
     use rayon::prelude::*;
     crate::output::check_writable(&out.join("index.html"))?;
     let start = Instant::now();
@@ -491,7 +581,7 @@ fn render_into(scenes: &[Scene], out: &Path, movie: &MovieOptions, index: bool) 
     let written: Vec<Vec<String>> = scenes
         .par_iter()
         .map(|s| {
-            let files = scenes::render(s, movie)?;
+            let files = scenes::render(s, movie).map_err(|e| with_divergence_hint(e, s, words))?;
             for (name, bytes) in &files {
                 crate::output::write_atomic(&out.join(name), bytes)?;
             }
@@ -501,7 +591,7 @@ fn render_into(scenes: &[Scene], out: &Path, movie: &MovieOptions, index: bool) 
         })
         .collect::<Result<_>>()?;
     bar.finish_and_clear();
-    let mut count: usize = written.iter().map(Vec::len).sum();
+    let mut files: Vec<String> = written.iter().flatten().cloned().collect();
     if index {
         let items: Vec<crate::gallery::Item<'_>> = scenes
             .iter()
@@ -513,18 +603,96 @@ fn render_into(scenes: &[Scene], out: &Path, movie: &MovieOptions, index: bool) 
             .collect();
         let page = crate::gallery::index_html(&items)?;
         crate::output::write_atomic(&out.join("index.html"), page.as_bytes())?;
-        count += 1;
+        files.push("index.html".into());
     }
-    let what = if scenes.len() == 1 {
-        format!("{} {}", scenes[0].kind().name(), scenes[0].name)
-    } else {
-        format!("{} scenes", scenes.len())
-    };
+    if verbose {
+        for f in &files {
+            eprintln!("{}", out.join(f).display());
+        }
+    }
     eprintln!(
-        "ladder: wrote {count} {} ({what}) into {} in {:.2} s",
-        if count == 1 { "file" } else { "files" },
+        "ladder: {} into {} in {:.2} s",
+        summary(scenes, &files, index),
         out.display(),
         start.elapsed().as_secs_f64()
     );
     Ok(())
+}
+
+/// "1 file", "3 files".
+fn count(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
+/// What a render wrote, in words: the files by name for one scene
+/// ("wrote figure-3.png and figure-3.json (figure 3)"), else the count of
+/// each kind ("wrote 13 figures and 9 movies, each with its data file, and
+/// index.html (54 files)").
+fn summary(scenes: &[Scene], files: &[String], index: bool) -> String {
+    let and_list = |items: &[String]| match items {
+        [] => String::new(),
+        [one] => one.clone(),
+        [init @ .., last] => format!("{} and {last}", init.join(", ")),
+    };
+    if let [one] = scenes {
+        return format!(
+            "wrote {} ({} {})",
+            and_list(files),
+            one.kind().name(),
+            one.name
+        );
+    }
+    let mut parts = Vec::new();
+    for (kind, one, many) in [
+        (Kind::Figure, "figure", "figures"),
+        (Kind::Movie, "movie", "movies"),
+        (Kind::Data, "data run", "data runs"),
+    ] {
+        let n = scenes.iter().filter(|s| s.kind() == kind).count();
+        if n > 0 {
+            parts.push(count(n, one, many));
+        }
+    }
+    let page = if index { ", and index.html" } else { "" };
+    format!(
+        "wrote {}, each with its data file{page} ({})",
+        and_list(&parts),
+        count(files.len(), "file", "files")
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_summary_names_what_was_written() {
+        let fig = catalog::find(Kind::Figure, "3").unwrap().scene.clone();
+        let movie = catalog::find(Kind::Movie, "4").unwrap().scene.clone();
+        let names = |s: &Scene| scenes::file_names(s);
+        assert_eq!(
+            summary(std::slice::from_ref(&fig), &names(&fig), false),
+            "wrote figure-3.png and figure-3.json (figure 3)"
+        );
+        assert_eq!(
+            summary(std::slice::from_ref(&movie), &names(&movie), false),
+            "wrote movie-4.gif, movie-4-kymograph.png and movie-4.json (movie 4)"
+        );
+        let both = [fig.clone(), movie.clone()];
+        let mut files = [names(&fig), names(&movie)].concat();
+        files.push("index.html".into());
+        assert_eq!(
+            summary(&both, &files, true),
+            "wrote 1 figure and 1 movie, each with its data file, and index.html (6 files)"
+        );
+        assert_eq!(count(1, "file", "files"), "1 file");
+        assert_eq!(count(0, "file", "files"), "0 files");
+    }
+
+    #[test]
+    fn short_numbers_round_down_to_two_digits() {
+        assert_eq!(short(0.7512), "0.75");
+        assert_eq!(short(0.0056789), "0.0056");
+        assert_eq!(short(12.9), "12");
+    }
 }

@@ -46,7 +46,7 @@ pub fn simulate_verified(
     let mut total = 0;
     let mut coarse = match simulate(scenario, &[], &verlet(dt)) {
         Ok(t) => Some(t),
-        Err(Error::Failed(_)) => None,
+        Err(e) if e.is_failed_run() => None,
         Err(e) => return Err(e),
     };
     if let Some(c) = &coarse {
@@ -57,7 +57,7 @@ pub fn simulate_verified(
         let config = verlet(0.5 * dt);
         let fine = match simulate(scenario, sample_times, &config) {
             Ok(t) => t,
-            Err(Error::Failed(_)) => {
+            Err(e) if e.is_failed_run() => {
                 dt *= 0.5;
                 coarse = None;
                 continue;
