@@ -8,6 +8,7 @@
 use crate::catalog;
 use crate::error::Result;
 use crate::scene::{Kind, Scene, describe};
+use crate::theory::formulas;
 
 /// The templates, built into the binary.
 mod template {
@@ -209,7 +210,7 @@ fn card(it: &Item<'_>) -> String {
     // The title is drawn at the top of the picture and listed in the
     // contents: the caption says what the picture shows instead.
     let caption = match &scene.caption {
-        Some(c) => escape(c),
+        Some(c) => formulas::html(&formulas::expand(c)),
         None => escape(&format!("{}.", describe::picture(scene))),
     };
     let wide = matches!(scene.output, crate::scene::OutputSpec::Filmstrip { .. });

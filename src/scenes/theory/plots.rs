@@ -315,7 +315,10 @@ fn edge_panel(input: &FigureInput, sign: f64) -> Result<Pixmap> {
                 .zip(e.numerical.iter().copied());
         spec = spec
             .series(Series::line(
-                format!("e^(−κ(n−1)b), κb = {kb:.2}"),
+                format!(
+                    "{}, κb = {kb:.2}",
+                    crate::theory::formulas::plain(crate::theory::formulas::EDGE_DECAY)
+                ),
                 line.collect(),
                 color,
             ))
