@@ -107,6 +107,20 @@ pub fn run(cli: Cli) -> Result<()> {
                 .iter()
                 .map(|f| scene::file::load(f))
                 .collect::<Result<Vec<_>>>()?;
+            if args.check {
+                for (file, s) in args.files.iter().zip(&scenes) {
+                    println!(
+                        "{}: {} {} ({} run{}): {}",
+                        file.display(),
+                        s.kind().name(),
+                        s.name,
+                        s.runs().len(),
+                        if s.runs().len() == 1 { "" } else { "s" },
+                        scene::describe::parameters(s)
+                    );
+                }
+                return Ok(());
+            }
             render_into(&scenes, &args.out.out, &opts, false)
         }
         Command::All(args) => {
