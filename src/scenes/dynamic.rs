@@ -493,6 +493,15 @@ pub fn movie_block_pixels(scene: &Scene, opts: &MovieOptions) -> Result<(Region,
 /// shows the ladder on the left and, on the right, the kymograph of
 /// sin θ_n up to that frame.
 pub fn movie(scene: &Scene, opts: &MovieOptions) -> Result<(Vec<u8>, Vec<u8>, RunData)> {
+    movie_observed(scene, opts, &|| {})
+}
+
+/// As [`movie`], calling `frame_done` after each frame is encoded.
+pub fn movie_observed(
+    scene: &Scene,
+    opts: &MovieOptions,
+    frame_done: &(dyn Fn() + Sync),
+) -> Result<(Vec<u8>, Vec<u8>, RunData)> {
     let opts = opts.validated()?;
     let plan = MoviePlan::new(scene, &opts)?;
     let traj = &plan.run.trajectory;
@@ -519,6 +528,7 @@ pub fn movie(scene: &Scene, opts: &MovieOptions) -> Result<(Vec<u8>, Vec<u8>, Ru
             (k + 1) as f32 / traj.states.len() as f32,
         );
         gif.push_frame(&canvas)?;
+        frame_done();
     }
     let kymo = kymograph_image(
         &plan.title,
