@@ -182,7 +182,7 @@ pub fn picture(scene: &Scene) -> String {
         OutputSpec::Movie { camera } => {
             let follow = match camera {
                 Camera::Follow => ", the camera moving with the kink",
-                Camera::Fixed => "",
+                Camera::Fixed | Camera::Auto => "",
             };
             format!(
                 "Animation of the {n} blocks from 0 to {} τ{follow}, with the kymograph of \
