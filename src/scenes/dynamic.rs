@@ -341,7 +341,8 @@ pub fn frame_times(t_end: f64, frames: usize) -> Vec<f64> {
 
 /// A window that follows the kink: `x_span` long (along the ladder),
 /// as wide as the frame's `aspect` allows, centred on the kink of frame
-/// `k` and kept inside the ladder `fit`.
+/// `k` and kept inside `fit` (every block of every frame), so that the
+/// ladder fills the window from the first frame to the last.
 fn follow_view(
     ladder: &Ladder,
     traj: &Trajectory,
@@ -351,15 +352,14 @@ fn follow_view(
     aspect: f64,
 ) -> View {
     let b = ladder.params.b;
-    let half = 0.5 * x_span / b;
-    let last = (ladder.n() as f64 - 1.0).max(0.0);
-    let centre_blocks = if last > 2.0 * half {
-        traj.kink_position[k].clamp(half, last - half)
+    let half = 0.5 * x_span;
+    let centre_x = if fit.x.1 - fit.x.0 > x_span {
+        (traj.kink_position[k] * b).clamp(fit.x.0 + half, fit.x.1 - half)
     } else {
-        0.5 * last
+        0.5 * (fit.x.0 + fit.x.1)
     };
     let centre_y = 0.5 * (fit.y.0 + fit.y.1);
-    View::centered(centre_blocks * b, centre_y, x_span, x_span * aspect)
+    View::centered(centre_x, centre_y, x_span, x_span * aspect)
 }
 
 /// One column of a movie's ladder: blocks `start..start + len` drawn into
@@ -451,6 +451,9 @@ struct MoviePlan {
     columns: Vec<Column>,
     /// Where the time label goes when the ladder is folded.
     time_band: Option<Region>,
+    /// A following camera's reference fixed in the lab: the rest position
+    /// X_n of every block, drawn as a scale behind the ladder.
+    lab_scale: Option<Vec<f64>>,
 }
 
 impl MoviePlan {
@@ -503,6 +506,10 @@ impl MoviePlan {
                 (fold(&ladder, &traj.states, inner)?, Some(time))
             }
         };
+        let lab_scale = (camera == Camera::Follow).then(|| {
+            let rest = ladder.ground_state();
+            (0..ladder.n()).map(|i| rest[3 * i]).collect()
+        });
         Ok(Self {
             title: describe::title(scene),
             run,
@@ -510,6 +517,7 @@ impl MoviePlan {
             layout,
             columns,
             time_band,
+            lab_scale,
         })
     }
 
@@ -529,7 +537,11 @@ impl MoviePlan {
     /// folded ladder).
     fn draw(&self, canvas: &mut Pixmap, k: usize) -> Result<()> {
         for c in &self.columns {
-            snapshot::draw_snapshot(canvas, c.region, &self.snapshot(c, k)?);
+            let snap = self.snapshot(c, k)?;
+            if let Some(rest) = &self.lab_scale {
+                draw_lab_scale(canvas, c.region, &snap, rest);
+            }
+            snapshot::draw_snapshot(canvas, c.region, &snap);
         }
         if let Some(band) = self.time_band {
             style::draw_text(
@@ -542,6 +554,50 @@ impl MoviePlan {
             );
         }
         Ok(())
+    }
+}
+
+/// The lab's scale behind a following camera's ladder (movie 3): a faint
+/// line across the window at the rest position of every block, numbered
+/// at the left edge. It is fixed in the lab, so it scrolls through the
+/// frame as the camera follows the kink: the camera's motion made visible.
+fn draw_lab_scale(canvas: &mut Pixmap, region: Region, snap: &Snapshot<'_>, rest: &[f64]) {
+    let inner = snapshot::inner_region(region, snap);
+    let y_mid = snap.view().y.0 + 0.5 * (snap.view().y.1 - snap.view().y.0);
+    let color = style::mix(style::GREY, style::WHITE, 0.55);
+    let mut paint = tiny_skia::Paint::default();
+    paint.set_color(style::color(color));
+    paint.anti_alias = true;
+    let stroke = tiny_skia::Stroke {
+        width: 1.0,
+        ..Default::default()
+    };
+    let label_size = 0.8 * style::size::TICK;
+    for (i, &x) in rest.iter().enumerate() {
+        let (_, py) = snapshot::pixel_of(region, snap, [x, y_mid]);
+        if py < inner.y || py > inner.y + inner.h {
+            continue;
+        }
+        let mut pb = tiny_skia::PathBuilder::new();
+        pb.move_to(inner.x + 1.4 * label_size, py);
+        pb.line_to(inner.x + inner.w, py);
+        if let Some(path) = pb.finish() {
+            canvas.stroke_path(
+                &path,
+                &paint,
+                &stroke,
+                tiny_skia::Transform::identity(),
+                None,
+            );
+        }
+        style::draw_text(
+            canvas,
+            &format!("{}", i + 1),
+            (inner.x + 1.1 * label_size, py),
+            label_size,
+            style::mix(style::GREY, style::DARK, 0.3),
+            (style::HAlign::Right, style::VAlign::Middle),
+        );
     }
 }
 
