@@ -12,17 +12,16 @@ use crate::model::Ladder;
 use crate::render::charts::{line_chart, short_number};
 use crate::render::compose::Panel;
 use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign, size};
-use crate::render::{Axis, ChartSpec, Legend, Marker, Series};
+use crate::render::{Axis, Canvas, ChartSpec, Legend, Marker, Picture, Series};
 use crate::theory::figures::{
     DispersionCurve, FIG_2C_A_OVER_B, FIG_2C_B, FIG_S5_ALPHAS, FIG_S5_B, barrier_curve, det_loop,
     dispersion_curves, edge_mode_profile, potential_curves,
 };
 use crate::theory::gravity;
 use std::f64::consts::PI;
-use tiny_skia::Pixmap;
 
-fn chart(spec: &ChartSpec, w: u32, h: u32) -> Result<Pixmap> {
-    Ok(line_chart(spec, w, h)?.pixmap)
+fn chart(spec: &ChartSpec, w: u32, h: u32) -> Result<Picture> {
+    Ok(line_chart(spec, w, h)?.into())
 }
 
 fn pairs(points: &[[f64; 2]]) -> Vec<(f64, f64)> {
@@ -32,7 +31,7 @@ fn pairs(points: &[[f64; 2]]) -> Vec<(f64, f64)> {
 /// Fig. 2c: U(θ) for each a/b of `FIG_2C_A_OVER_B` at b/s = 1.2, the
 /// minima at ±α (eq:eq_alpha, U_min = −2mgb), and ladders at both minima
 /// of two of the curves beside the chart.
-pub fn gravity_potential() -> Result<Pixmap> {
+pub fn gravity_potential() -> Result<Picture> {
     let curves = potential_curves(FIG_2C_B, &FIG_2C_A_OVER_B, 1441);
     let mut spec = ChartSpec::new(
         Axis::new("θ (degrees)").range(-90.0, 90.0),
@@ -55,9 +54,9 @@ pub fn gravity_potential() -> Result<Pixmap> {
     let insets = potential_insets(&[1, 3])?;
     let body = grid(&[Panel::new(plot), Panel::new(insets)], 2)?;
     let notes = format!(
-        "Linkage limit, b/s = {FIG_2C_B}: U(θ) = −mg√(2(a² + b²) − 4s²cos²θ − (a² − b²)²/(4s²cos²θ)) \
-         (eq:U_G), a symmetric double well whose minima θ = ±α (cos α = √(a² − b²)/2s) all lie \
-         at U_min = −2mgb. Right: the ladder (4 blocks) at θ = −α and θ = +α for two of the \
+        "Linkage limit, b/s = {FIG_2C_B}: U(θ) = −mg√(2(a² + b²) − 4s²cos²θ − (a² − b²)²/(4s²cos²θ)), \
+         a symmetric double well whose minima θ = ±α (cos α = √(a² − b²)/2s) all lie \
+         at U_{{min}} = −2mgb. Right: the ladder (4 blocks) at θ = −α and θ = +α for two of the \
          curves; the two orientations are degenerate."
     );
     frame(title(TheoryFigure::GravityPotential), &body, &notes, 900)
@@ -77,7 +76,7 @@ fn color_name(i: usize) -> &'static str {
 
 /// Ground states of 4 blocks at θ = ∓α for the curves `which`, one row per
 /// curve.
-fn potential_insets(which: &[usize]) -> Result<Pixmap> {
+fn potential_insets(which: &[usize]) -> Result<Picture> {
     let mut panels = Vec::new();
     for &i in which {
         let r = FIG_2C_A_OVER_B[i];
@@ -105,7 +104,7 @@ const DOT_SAMPLES: usize = 24;
 /// Fig. S5: ω±(q)/ω₀ against qb for each α of `FIG_S5_ALPHAS`, b/s = 1.3,
 /// one panel per α: eq:dispersion as printed (dashed), ×√2 (solid, errata
 /// item 9) and the model's eigenvalues (dots).
-pub fn dispersion() -> Result<Pixmap> {
+pub fn dispersion() -> Result<Picture> {
     let base = params(10, FIG_S5_B, 60.0)?;
     let lines = dispersion_curves(&base, FIG_S5_B, &FIG_S5_ALPHAS, LINE_SAMPLES)?;
     let dots = dispersion_curves(&base, FIG_S5_B, &FIG_S5_ALPHAS, DOT_SAMPLES)?;
@@ -120,17 +119,16 @@ pub fn dispersion() -> Result<Pixmap> {
         panels.push(Panel::new(dispersion_panel(l, d, y_max)?));
     }
     let mut body = grid(&panels, 3)?;
-    body = stack(&body, &dispersion_key(body.width())?)?;
-    let notes = "ω₀ = √(k/m) = 1/τ, I = ms²/4, constraint δv_n = (−1)ⁿ(s/2) sin α δθ_n \
-                 (eq:constraint_Y). The printed closed form is √2 too small for this ω₀ \
+    body = stack(&body, &dispersion_key(body.pixel_size().0)?);
+    let notes = "ω₀ = √(k/m) = 1/τ, I = ms²/4, constraint δv_{n} = (−1)ⁿ(s/2) sin α δθ_{n}. The printed closed form is √2 too small for this ω₀ \
                  (docs/paper-errata.md item 9): it is exact if ω₀ is read as √(2k/m). The \
-                 eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I) \
-                 as in eq:D) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \
+                 eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I), \
+                 as in the paper) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \
                  of the rotational branch; ω₋ is acoustic.";
     frame(title(TheoryFigure::Dispersion), &body, notes, 900)
 }
 
-fn dispersion_panel(lines: &DispersionCurve, dots: &DispersionCurve, y_max: f64) -> Result<Pixmap> {
+fn dispersion_panel(lines: &DispersionCurve, dots: &DispersionCurve, y_max: f64) -> Result<Picture> {
     let mut spec = ChartSpec::new(
         Axis::new("qb").range(-PI, PI),
         Axis::new("ω/ω₀").range(0.0, y_max),
@@ -159,13 +157,13 @@ fn dispersion_panel(lines: &DispersionCurve, dots: &DispersionCurve, y_max: f64)
 }
 
 /// The shared key of the dispersion panels, drawn as one row.
-fn dispersion_key(width: u32) -> Result<Pixmap> {
-    let mut p = style::white_pixmap(width, 34).ok_or_else(|| Error::failed("canvas"))?;
+fn dispersion_key(width: u32) -> Result<Picture> {
+    let mut p = Picture::new(width as f32, 34.0);
     let entries: [(&str, Rgb, u8); 6] = [
-        ("ω₊ eq:dispersion × √2", RED, 0),
+        ("ω₊ closed form × √2", RED, 0),
         ("ω₊ as printed", RED, 1),
         ("ω₊ model", RED, 2),
-        ("ω₋ × √2", BLUE, 0),
+        ("ω₋ closed form × √2", BLUE, 0),
         ("ω₋ as printed", BLUE, 1),
         ("ω₋ model", BLUE, 2),
     ];
@@ -182,27 +180,21 @@ fn dispersion_key(width: u32) -> Result<Pixmap> {
             _ => pen::dot(&mut p, (x + 13.0, y), 3.5, e.1),
         }
         let at = (x + 34.0, y);
-        style::draw_text(
-            &mut p,
-            e.0,
-            at,
-            size::TICK,
-            DARK,
-            (HAlign::Left, VAlign::Middle),
-        );
+        p.text(e.0, at, size::TICK, DARK, (HAlign::Left, VAlign::Middle));
         x += w;
     }
     Ok(p)
 }
 
 /// `top` above `bottom`, centred, on white.
-fn stack(top: &Pixmap, bottom: &Pixmap) -> Result<Pixmap> {
-    let w = top.width().max(bottom.width());
-    let mut out = style::white_pixmap(w, top.height() + bottom.height())
-        .ok_or_else(|| Error::failed("canvas"))?;
-    crate::render::compose::blit(&mut out, top, (w - top.width()) / 2, 0);
-    crate::render::compose::blit(&mut out, bottom, (w - bottom.width()) / 2, top.height());
-    Ok(out)
+fn stack(top: &Picture, bottom: &Picture) -> Picture {
+    let (tw, th) = top.pixel_size();
+    let (bw, bh) = bottom.pixel_size();
+    let w = tw.max(bw);
+    let mut out = Picture::new(w as f32, (th + bh) as f32);
+    out.place(top, (((w - tw) / 2) as f32, 0.0));
+    out.place(bottom, (((w - bw) / 2) as f32, th as f32));
+    out
 }
 
 /// α of the winding and edge-mode figures.
@@ -211,23 +203,23 @@ const WINDING_ALPHA: f64 = 60.0;
 /// The winding figure: det C_red(q)/(e^(iqb) − 1) (a circle of radius 2|c₁|
 /// about −2c₂, errata item 8) and det C_red(q) itself (eq:det-C) over the
 /// Brillouin zone for α = ±60°, b/s = 1.3.
-pub fn winding() -> Result<Pixmap> {
+pub fn winding() -> Result<Picture> {
     let mut panels = Vec::new();
     for sign in [1.0, -1.0] {
         let p = params(10, 1.3, sign * WINDING_ALPHA)?;
         panels.push(Panel::new(winding_panel(&p)?));
     }
     let body = grid(&panels, 2)?;
-    let notes = "b/s = 1.3. Solid: det C(q)/(e^(iqb) − 1) = 2(c₁e^(iqb) − c₂), the circle of \
+    let notes = "b/s = 1.3. Solid: det C(q)/(e^{iqb} − 1) = 2(c₁e^{iqb} − c₂), the circle of \
                  radius 2|c₁| about −2c₂ whose winding about the origin (+) is the winding number \
-                 n; dashed: det C(q) of the model's reduced chain (= eq:det-C), which passes \
+                 n; dashed: det C(q) of the model's reduced chain (the paper's det C), which passes \
                  through 0 at q = 0 (translation along x). For α > 0, |c₂| < c₁ and the loop \
                  encloses the origin (n = 1, surface zero mode at the top); for α < 0 it does not \
                  (n = 0).";
     frame(title(TheoryFigure::Winding), &body, notes, 900)
 }
 
-fn winding_panel(p: &crate::model::Params) -> Result<Pixmap> {
+fn winding_panel(p: &crate::model::Params) -> Result<Picture> {
     let l = det_loop(p, 720)?;
     let n = l
         .winding_number
@@ -243,7 +235,7 @@ fn winding_panel(p: &crate::model::Params) -> Result<Pixmap> {
     let mut spec = ChartSpec::new(Axis::new("Re det C"), Axis::new("Im det C"))
         .title(format!("α = {}: n = {n}", signed_deg(l.alpha_deg)))
         .series(Series::line(
-            "det C / (e^(iqb) − 1)",
+            "det C / (e^{iqb} − 1)",
             closed(&l.reduced),
             color,
         ))
@@ -265,25 +257,25 @@ fn winding_panel(p: &crate::model::Params) -> Result<Pixmap> {
 /// The edge-mode figure: |δθ_n| of the reduced chain's null vector (dots)
 /// and |c₂/c₁|^{n−1} ∝ e^{−κ(n−1)b} (eq:2nd_sol, lines), log scale; α > 0
 /// left (top edge), α < 0 right (bottom edge).
-pub fn edge_mode() -> Result<Pixmap> {
+pub fn edge_mode() -> Result<Picture> {
     let mut panels = Vec::new();
     for sign in [1.0, -1.0] {
         panels.push(Panel::new(edge_panel(sign)?));
     }
     let body = grid(&panels, 2)?;
     let notes = "N = 10, b/s = 1.3; surface zero mode of the chain with the B nodes pinned \
-                 (eq:e-KL), found as the null vector of the model's compatibility matrix and \
-                 normalised to max |δθ_n| = 1. κ = b⁻¹ ln|(b + 2s sin α)/(b − 2s sin α)| changes sign \
+                 (the paper's edge mode), found as the null vector of the model's compatibility \
+                 matrix and normalised to max |δθ_{n}| = 1. κ = b⁻¹ ln|(b + 2s sin α)/(b − 2s sin α)| changes sign \
                  with α: the mode decays from the top for α > 0 (κ > 0) and from the bottom for \
                  α < 0 (κ < 0). \
-                 Beyond |α| ≈ 40.5° (b < 2s|sin α|) c₂/c₁ < 0 and δθ_n alternates in sign.";
+                 Beyond |α| ≈ 40.5° (b < 2s|sin α|) c₂/c₁ < 0 and δθ_{n} alternates in sign.";
     frame(title(TheoryFigure::EdgeMode), &body, notes, 900)
 }
 
-fn edge_panel(sign: f64) -> Result<Pixmap> {
+fn edge_panel(sign: f64) -> Result<Picture> {
     let mut spec = ChartSpec::new(
         Axis::new("block n").range(0.5, 10.5),
-        Axis::new("|δθ_n| / max").log(),
+        Axis::new("|δθ_{n}| / max").log(),
     )
     .title(if sign > 0.0 {
         "α > 0: localised at the top"
@@ -301,7 +293,7 @@ fn edge_panel(sign: f64) -> Result<Pixmap> {
                 .zip(e.numerical.iter().copied());
         spec = spec
             .series(Series::line(
-                format!("e^(−κ(n−1)b), κb = {kb:.2}"),
+                format!("e^{{−κ(n−1)b}}, κb = {kb:.2}"),
                 line.collect(),
                 color,
             ))
@@ -318,7 +310,7 @@ fn edge_panel(sign: f64) -> Result<Pixmap> {
 
 /// The barrier figure: ΔU(α) = U(0) − U(α) (eq:delta_U) for b/s = 1.3, and
 /// the same from the model's two-block linkage solved at θ = 0 (dots).
-pub fn barrier() -> Result<Pixmap> {
+pub fn barrier() -> Result<Picture> {
     let b = 1.3;
     let curve = pairs(&barrier_curve(b, 180));
     let dots: Vec<(f64, f64)> = (0..=18)
@@ -328,7 +320,7 @@ pub fn barrier() -> Result<Pixmap> {
         Axis::new("equilibrium angle α (degrees)").range(-2.0, 92.0),
         Axis::new("ΔU / (m g s), per pair of blocks"),
     )
-    .series(Series::line("eq:delta_U", curve, RED))
+    .series(Series::line("ΔU(α), closed form", curve, RED))
     .series(Series::scatter(
         "model linkage, U(0) − U(α)",
         dots,
