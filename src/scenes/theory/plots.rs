@@ -293,7 +293,7 @@ fn edge_panel(sign: f64) -> Result<Picture> {
                 .zip(e.numerical.iter().copied());
         spec = spec
             .series(Series::line(
-                format!("e^{{−κ(n−1)b}}, κb = {kb:.2}"),
+                format!("e^{{−κ(n−1)b}}, κb = {}", format!("{kb:.2}").replace('-', "−")),
                 line.collect(),
                 color,
             ))
