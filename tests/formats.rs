@@ -9,23 +9,13 @@
 mod common;
 
 use common::golden::check;
-use jacobs_ladder::catalog::TheoryFigure;
+use jacobs_ladder::catalog;
 use jacobs_ladder::encode::{self, Format, Formats, Kind};
 use jacobs_ladder::render::Picture;
-use jacobs_ladder::scenes::theory;
+use jacobs_ladder::scene;
+use jacobs_ladder::scenes;
+use std::sync::OnceLock;
 use tiny_skia::Pixmap;
-
-const THEORY: [TheoryFigure; 9] = [
-    TheoryFigure::UnitSchematic,
-    TheoryFigure::GravityPotential,
-    TheoryFigure::GroundStates,
-    TheoryFigure::Gapless,
-    TheoryFigure::ZeroModes,
-    TheoryFigure::Dispersion,
-    TheoryFigure::Winding,
-    TheoryFigure::EdgeMode,
-    TheoryFigure::Barrier,
-];
 
 fn dump(name: &str, bytes: &[u8]) {
     if let Ok(dir) = std::env::var("LADDER_FORMATS_DIR") {
@@ -34,11 +24,22 @@ fn dump(name: &str, bytes: &[u8]) {
     }
 }
 
-fn figures() -> Vec<(String, Picture)> {
-    THEORY
-        .iter()
-        .map(|&f| (format!("{f:?}"), theory::picture(f).unwrap()))
-        .collect()
+/// Every figure of the catalogue, drawn once (shared by the tests).
+fn figures() -> &'static [(String, Picture)] {
+    static ALL: OnceLock<Vec<(String, Picture)>> = OnceLock::new();
+    ALL.get_or_init(|| {
+        let entries = catalog::entries(scene::Kind::Figure).unwrap();
+        let all: Vec<(String, Picture)> = entries
+            .iter()
+            .map(|e| {
+                let (p, _) = scenes::figure_picture(&e.scene)
+                    .unwrap_or_else(|err| panic!("{}: {err}", e.id));
+                (e.scene.stem(), p)
+            })
+            .collect();
+        assert_eq!(all.len(), 13, "every figure of the catalogue");
+        all
+    })
 }
 
 /// Rasterises SVG bytes (text already outlines: no fonts given) onto white.

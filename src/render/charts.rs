@@ -110,7 +110,9 @@ fn parse_svg(svg: &str) -> Result<resvg::usvg::Tree> {
         .map_err(|e| Error::failed(format!("internal SVG could not be parsed: {e}")))
 }
 
-fn rasterize_tree(tree: &resvg::usvg::Tree, width: u32, height: u32) -> Result<Pixmap> {
+/// Rasterises a parsed SVG onto a white `width × height` pixmap (scaled
+/// to fit).
+pub fn rasterize_tree(tree: &resvg::usvg::Tree, width: u32, height: u32) -> Result<Pixmap> {
     let mut pixmap = style::white_pixmap(width, height)
         .ok_or_else(|| super::snapshot::bad_size(width, height))?;
     let s = tree.size();
