@@ -142,7 +142,11 @@ impl fmt::Display for FormatError {
             ),
             FormatError::Unknown { name, kind: None } => {
                 let all: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
-                write!(f, "unknown format '{name}'; choose from {}", all.join(", "))
+                if name.is_empty() {
+                    write!(f, "no format given; choose from {}", all.join(", "))
+                } else {
+                    write!(f, "unknown format '{name}'; choose from {}", all.join(", "))
+                }
             }
             FormatError::Empty { kind } => {
                 write!(f, "no format given; a {} can be {}", kind.name(), kind.list())
@@ -267,6 +271,38 @@ impl fmt::Display for Formats {
     }
 }
 
+/// Splits a comma list that may name figure and movie formats (e.g.
+/// "pdf,mp4") into its figure formats and its movie formats; either part
+/// is `None` when the list names none of that kind.
+pub fn parse_mixed(
+    list: &str,
+) -> std::result::Result<(Option<Formats>, Option<Formats>), FormatError> {
+    let mut parts: [Vec<Format>; 2] = [Vec::new(), Vec::new()];
+    let mut any = false;
+    for name in list.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+        let f: Format = name.parse()?;
+        any = true;
+        parts[(f.kind() == Kind::Movie) as usize].push(f);
+    }
+    if !any {
+        return Err(FormatError::Unknown {
+            name: list.trim().to_string(),
+            kind: None,
+        });
+    }
+    let part = |v: &[Format], kind| -> std::result::Result<Option<Formats>, FormatError> {
+        if v.is_empty() {
+            Ok(None)
+        } else {
+            Formats::new(v, kind).map(Some)
+        }
+    };
+    Ok((
+        part(&parts[0], Kind::Figure)?,
+        part(&parts[1], Kind::Movie)?,
+    ))
+}
+
 /// Largest MP4 frame: the bundled H.264 encoder stops at level 5.2
 /// (3840 × 2160, either way round).
 pub const MP4_MAX: (u32, u32) = (3840, 2160);
@@ -279,23 +315,32 @@ pub const MP4_MAX: (u32, u32) = (3840, 2160);
 /// halves both), at least 16 pixels, at most 3840 × 2160 either way round.
 /// Odd sizes are refused, not rounded, so the file has the size asked for.
 pub fn check_movie_frame(format: Format, width: u32, height: u32, fps: f64) -> Result<()> {
+    check_movie_size(format, width, height)?;
+    check_movie_fps(format, fps)
+}
+
+/// The size part of [`check_movie_frame`].
+pub fn check_movie_size(format: Format, width: u32, height: u32) -> Result<()> {
     match format {
-        Format::Gif => {
-            super::gif::check_gif_size(width, height)?;
-            super::gif::check_gif_fps(fps)
+        Format::Gif => super::gif::check_gif_size(width, height),
+        Format::Mp4 if !format.is_built() => Err(FormatError::NotBuilt(format).into()),
+        Format::Mp4 => check_mp4_size(width, height),
+        other => Err(FormatError::WrongKind {
+            format: other,
+            kind: Kind::Movie,
         }
-        Format::Mp4 => {
-            if !format.is_built() {
-                return Err(FormatError::NotBuilt(format).into());
-            }
-            check_mp4_size(width, height)?;
-            if !(fps.is_finite() && fps > 0.0 && fps <= 240.0) {
-                return Err(Error::bad_input(format!(
-                    "an MP4 frame rate must be above 0 and at most 240, got {fps}"
-                )));
-            }
-            Ok(())
-        }
+        .into()),
+    }
+}
+
+/// The frame-rate part of [`check_movie_frame`].
+pub fn check_movie_fps(format: Format, fps: f64) -> Result<()> {
+    match format {
+        Format::Gif => super::gif::check_gif_fps(fps),
+        Format::Mp4 if !(fps.is_finite() && fps > 0.0 && fps <= 240.0) => Err(Error::bad_input(
+            format!("an MP4 frame rate must be above 0 and at most 240, got {fps}"),
+        )),
+        Format::Mp4 => Ok(()),
         other => Err(FormatError::WrongKind {
             format: other,
             kind: Kind::Movie,
@@ -347,6 +392,17 @@ mod tests {
             Formats::parse(" , ", Kind::Movie),
             Err(FormatError::Empty { .. })
         ));
+    }
+
+    #[test]
+    fn mixed_lists() {
+        let (f, m) = parse_mixed("pdf, mp4,png").unwrap();
+        assert_eq!(f.unwrap().as_slice(), &[Format::Pdf, Format::Png]);
+        assert_eq!(m.unwrap().as_slice(), &[Format::Mp4]);
+        let (f, m) = parse_mixed("gif").unwrap();
+        assert!(f.is_none() && m.is_some());
+        assert!(parse_mixed("tiff").is_err());
+        assert!(parse_mixed("").is_err());
     }
 
     #[test]

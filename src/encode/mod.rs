@@ -18,8 +18,11 @@ mod png;
 mod svg;
 mod yuv;
 
-pub use format::{Format, FormatError, Formats, Kind, check_movie_frame};
-pub use gif::{GifWriter, Palette, TRANSPARENT_INDEX};
+pub use format::{
+    Format, FormatError, Formats, Kind, MP4_MAX, check_movie_fps, check_movie_frame,
+    check_movie_size, parse_mixed,
+};
+pub use gif::{GIF_MAX_FPS, GifWriter, Palette, TRANSPARENT_INDEX};
 pub use isobmff::{Mp4Track, mp4_file};
 pub use movie::MovieWriter;
 #[cfg(feature = "mp4")]

@@ -38,7 +38,7 @@ pub struct Mp4Writer {
     to_encoder: SyncSender<Yuv420>,
     /// Buffers the encoder has finished with, for reuse.
     spare: Receiver<Yuv420>,
-    done: JoinHandle<Result<Mp4Track>>,
+    done: Option<JoinHandle<Result<Mp4Track>>>,
 }
 
 impl Mp4Writer {
@@ -47,7 +47,7 @@ impl Mp4Writer {
     pub fn new(width: u32, height: u32, fps: f64) -> Result<Self> {
         super::check_movie_frame(super::Format::Mp4, width, height, fps)?;
         let config = EncoderConfig::new()
-            .usage_type(UsageType::CameraVideoNonRealTime)
+            .usage_type(UsageType::CameraVideoRealTime)
             .rate_control_mode(RateControlMode::Off)
             .qp(QpRange::new(QP, QP))
             .skip_frames(false)
@@ -76,7 +76,7 @@ impl Mp4Writer {
             frames: 0,
             to_encoder,
             spare,
-            done,
+            done: Some(done),
         })
     }
 
@@ -99,9 +99,13 @@ impl Mp4Writer {
         let (w, h) = (self.width as usize, self.height as usize);
         let mut yuv = self.spare.try_recv().unwrap_or_else(|_| Yuv420::new(w, h));
         rgba_to_yuv420(pixmap.data(), w, h, &mut yuv);
-        self.to_encoder
-            .send(yuv)
-            .map_err(|_| Error::failed("the H.264 encoder stopped early"))?;
+        if self.to_encoder.send(yuv).is_err() {
+            // The encoder thread ended: report why.
+            return Err(match self.done.take().map(JoinHandle::join) {
+                Some(Ok(Err(e))) => e,
+                _ => Error::failed("the H.264 encoder stopped early"),
+            });
+        }
         self.frames += 1;
         Ok(())
     }
@@ -109,8 +113,10 @@ impl Mp4Writer {
     /// Finishes the stream and returns the MP4 bytes.
     pub fn finish(self) -> Result<Vec<u8>> {
         drop(self.to_encoder);
-        let track = self
+        let done = self
             .done
+            .ok_or_else(|| Error::failed("the H.264 encoder stopped early"))?;
+        let track = done
             .join()
             .map_err(|_| Error::failed("the H.264 encoder thread panicked"))??;
         if track.sizes.len() != self.frames {

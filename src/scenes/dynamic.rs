@@ -387,6 +387,28 @@ pub fn movie(
     Ok((writer.finish()?, png_bytes(&kymo)?, data))
 }
 
+/// Frame `k` of a movie exactly as [`movie`] draws it (for tests and
+/// thumbnails).
+pub fn movie_frame(scene: &Scene, opts: &MovieOptions, k: usize) -> Result<Pixmap> {
+    let opts = opts.validated()?;
+    let plan = MoviePlan::new(scene, &opts)?;
+    let traj = &plan.run.trajectory;
+    let frames = traj.states.len();
+    if k >= frames {
+        return Err(Error::bad_input(format!(
+            "the movie has {frames} frames, no frame {k}"
+        )));
+    }
+    let n = plan.ladder.n();
+    let layout = &plan.layout;
+    let heat = layout.heat_map(&traj.states, n)?;
+    let background = layout.background(&plan.title, scene.run.t_end, n)?;
+    let mut canvas = background.clone();
+    let shown = (k + 1) as f32 / frames as f32;
+    layout.draw_frame(&mut canvas, &background, &plan.snapshot(k)?, &heat, shown);
+    Ok(canvas)
+}
+
 /// A kymograph figure: sin θ_n of the scene's run over `frames` rows.
 pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Picture, RunData)> {
     let times = frame_times(scene.run.t_end, frames);
