@@ -356,3 +356,17 @@ fn nothing_is_cut_from_320x240_to_3840x2160() {
         }
     }
 }
+
+/// A golden image of a vector output: the SVG file of the edge-mode figure
+/// (superscripts and subscripts in chart legends, axis labels and notes)
+/// rasterised by resvg.
+#[test]
+fn golden_rasterised_svg() {
+    let (_, pic) = figures()
+        .iter()
+        .find(|(n, _)| n == "figure-edge-mode")
+        .unwrap();
+    let svg = encode::svg_bytes(&pic.to_tree(1.0).unwrap());
+    let (w, h) = pic.pixel_size();
+    check("svg-figure-edge-mode", &rasterize_svg_file(&svg, w, h));
+}
