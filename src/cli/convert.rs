@@ -282,12 +282,12 @@ pub fn check_out_dir(out: &Path) -> Result<()> {
     let ext = out
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    if let Some(ext) = ext.filter(|e| FILE_EXTENSIONS.contains(&e.as_str())) {
-        if !out.exists() {
-            return Err(Error::bad_input(format!(
-                "--out is a folder, not a file name: got {shown}; use --out DIR (the files are named after the scene) and --format {ext}"
-            )));
-        }
+    if let Some(ext) = ext.filter(|e| FILE_EXTENSIONS.contains(&e.as_str()))
+        && !out.exists()
+    {
+        return Err(Error::bad_input(format!(
+            "--out is a folder, not a file name: got {shown}; use --out DIR (the files are named after the scene) and --format {ext}"
+        )));
     }
     Ok(())
 }

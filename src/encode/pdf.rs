@@ -154,11 +154,11 @@ impl PageWriter {
             self.content.rect(0.0, 0.0, 0.0, 0.0).clip_nonzero();
         }
         self.content.end_path();
-        if !t.is_identity() {
-            if let Some(inv) = t.invert() {
-                self.content
-                    .transform([inv.sx, inv.ky, inv.kx, inv.sy, inv.tx, inv.ty]);
-            }
+        if !t.is_identity()
+            && let Some(inv) = t.invert()
+        {
+            self.content
+                .transform([inv.sx, inv.ky, inv.kx, inv.sy, inv.tx, inv.ty]);
         }
         Ok(())
     }

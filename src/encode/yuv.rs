@@ -62,7 +62,7 @@ fn dot(k: [i32; 3], r: i32, g: i32, b: i32) -> i32 {
 /// which is resized as needed. Chroma is taken from the mean of each 2 × 2
 /// block.
 pub fn rgba_to_yuv420(rgba: &[u8], width: usize, height: usize, out: &mut Yuv420) {
-    debug_assert!(width % 2 == 0 && height % 2 == 0);
+    debug_assert!(width.is_multiple_of(2) && height.is_multiple_of(2));
     debug_assert_eq!(rgba.len(), width * height * 4);
     let cw = width / 2;
     out.width = width;

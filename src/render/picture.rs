@@ -252,10 +252,10 @@ impl Canvas for Picture {
     }
 
     fn pop(&mut self) {
-        if let Some((transform, items)) = self.open.pop() {
-            if !items.is_empty() {
-                self.current().push(Item::Group { transform, items });
-            }
+        if let Some((transform, items)) = self.open.pop()
+            && !items.is_empty()
+        {
+            self.current().push(Item::Group { transform, items });
         }
     }
 }

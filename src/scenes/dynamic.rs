@@ -495,6 +495,9 @@ pub fn movie_block_pixels(scene: &Scene, opts: &MovieOptions) -> Result<(Region,
     Ok((plan.layout.ladder, frames))
 }
 
+/// A movie's files: its bytes in each format, the kymograph PNG, its data.
+pub type MovieFiles = (Vec<(Format, Vec<u8>)>, Vec<u8>, RunData);
+
 /// A movie: its bytes in each of `formats` (GIF, MP4: the same frames),
 /// the kymograph PNG and the run's data. Each frame shows the ladder on
 /// the left and, on the right, the kymograph of sin θ_n up to that frame;
@@ -505,7 +508,7 @@ pub fn movie(
     opts: &MovieOptions,
     formats: &[Format],
     frame_done: &(dyn Fn() + Sync),
-) -> Result<(Vec<(Format, Vec<u8>)>, Vec<u8>, RunData)> {
+) -> Result<MovieFiles> {
     let opts = opts.validated()?;
     let mut writer = MovieWriter::new(formats, opts.width, opts.height, opts.fps)?;
     let plan = MoviePlan::new(scene, &opts)?;
