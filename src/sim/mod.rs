@@ -43,7 +43,7 @@ impl Scenario {
         check_simulable(&params)?;
         if !(t_end.is_finite() && t_end >= 0.0) {
             return Err(Error::bad_input(format!(
-                "t_end must be a finite number >= 0, got {t_end}"
+                "t_end must be a finite number >= 0, got {}", crate::error::num(t_end)
             )));
         }
         let ladder = Ladder::new(params);
@@ -64,7 +64,7 @@ pub fn check_simulable(params: &Params) -> Result<()> {
         Ok(())
     } else {
         Err(Error::bad_input(format!(
-            "alpha must satisfy 0 < |alpha| < 90 degrees for a simulation, got {deg}"
+            "alpha must satisfy 0 < |alpha| < 90 degrees for a simulation, got {}", crate::error::num(deg)
         )))
     }
 }

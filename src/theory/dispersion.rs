@@ -132,7 +132,7 @@ pub fn normal_mode_frequencies(params: &Params, boundary: Boundary) -> Result<Ve
         ),
         Boundary::Periodic => (Ring::new(params)?.hessian(), params.n),
     };
-    let ev = mass_weighted_eigenvalues(&hessian, &block_masses(params, blocks));
+    let ev = mass_weighted_eigenvalues(&hessian, &block_masses(params, blocks))?;
     Ok(ev.into_iter().map(frequency).collect())
 }
 

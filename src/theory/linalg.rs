@@ -1,7 +1,8 @@
 //! Small numerical helpers: rank and null space by SVD, Hessians by central
 //! differences of an analytic gradient, mass-weighted eigenfrequencies.
 
-use nalgebra::{DMatrix, DVector, SymmetricEigen};
+use crate::error::{Error, Result};
+use nalgebra::{DMatrix, DVector, Dyn, SVD, SymmetricEigen};
 
 /// Relative tolerance of the numerical rank: a singular value σ counts as
 /// zero when σ ≤ `RANK_RTOL` · σ_max. For b = 1.3, N ≤ 40 and |α| ≤ 89° the
@@ -13,36 +14,83 @@ pub const RANK_RTOL: f64 = 1e-9;
 /// Step of the central differences of the analytic gradient.
 pub const HESSIAN_STEP: f64 = 1e-5;
 
-/// Numerical rank of `m` by SVD with the relative tolerance `RANK_RTOL`.
-pub fn rank(m: &DMatrix<f64>) -> usize {
-    if m.is_empty() {
-        return 0;
+/// Most QR sweeps of an SVD or a symmetric eigen-decomposition, per row or
+/// column of the matrix (plus [`ITERATIONS_BASE`]). A well-posed problem
+/// needs about two per singular value; a matrix whose entries span more
+/// than the range of `f64` (lengths such as b = 1e-17 or 1e308) can sweep
+/// forever without the cap.
+pub const ITERATIONS_PER_DIMENSION: usize = 30;
+/// Sweeps every decomposition may take, whatever its size.
+pub const ITERATIONS_BASE: usize = 100;
+
+/// The iteration cap of a decomposition of an `rows` × `cols` matrix.
+fn iteration_cap(rows: usize, cols: usize) -> usize {
+    ITERATIONS_BASE + ITERATIONS_PER_DIMENSION * rows.max(cols)
+}
+
+/// `Error::Failed` for a decomposition that did not converge (or was given
+/// a matrix with NaN or infinite entries): one line, with a hint.
+fn not_converged(what: &str, m: &DMatrix<f64>, cause: &str) -> Error {
+    Error::failed(format!(
+        "the {what} of a {}×{} matrix {cause}; hint: the lengths or angles are too \
+         extreme for the linear theory, try values closer to the paper's (b = 1.3, alpha = 60)",
+        m.nrows(),
+        m.ncols()
+    ))
+}
+
+/// Checks that every entry of `m` is finite.
+fn finite(what: &str, m: &DMatrix<f64>) -> Result<()> {
+    if m.iter().all(|x| x.is_finite()) {
+        Ok(())
+    } else {
+        Err(not_converged(what, m, "has NaN or infinite entries"))
     }
-    let sv = m.clone().svd(false, false).singular_values;
+}
+
+/// SVD of `m` with the iteration cap; `Error::Failed` if it does not converge.
+fn svd(m: &DMatrix<f64>, compute_v: bool) -> Result<SVD<f64, Dyn, Dyn>> {
+    const WHAT: &str = "singular value decomposition";
+    finite(WHAT, m)?;
+    let cap = iteration_cap(m.nrows(), m.ncols());
+    m.clone()
+        .try_svd(false, compute_v, f64::EPSILON, cap)
+        .ok_or_else(|| not_converged(WHAT, m, &format!("did not converge in {cap} sweeps")))
+}
+
+/// Numerical rank of `m` by SVD with the relative tolerance `RANK_RTOL`.
+pub fn rank(m: &DMatrix<f64>) -> Result<usize> {
+    if m.is_empty() {
+        return Ok(0);
+    }
+    let sv = svd(m, false)?.singular_values;
     let tol = RANK_RTOL * sv.max();
-    sv.iter().filter(|&&s| s > tol).count()
+    Ok(sv.iter().filter(|&&s| s > tol).count())
 }
 
 /// Singular values of `m`, descending.
-pub fn singular_values(m: &DMatrix<f64>) -> Vec<f64> {
-    let mut sv: Vec<f64> = m
-        .clone()
-        .svd(false, false)
-        .singular_values
-        .iter()
-        .copied()
-        .collect();
+pub fn singular_values(m: &DMatrix<f64>) -> Result<Vec<f64>> {
+    if m.is_empty() {
+        return Ok(Vec::new());
+    }
+    let mut sv: Vec<f64> = svd(m, false)?.singular_values.iter().copied().collect();
     sv.sort_by(|x, y| y.total_cmp(x));
-    sv
+    Ok(sv)
 }
 
 /// The right singular vector of the smallest singular value of `m`
-/// (`m` with at least as many rows as columns): its best null vector.
-pub fn null_vector(m: &DMatrix<f64>) -> DVector<f64> {
-    let svd = m.clone().svd(false, true);
-    let v_t = svd.v_t.expect("v_t was requested");
+/// (`m` non-empty, with at least as many rows as columns): its best null
+/// vector.
+pub fn null_vector(m: &DMatrix<f64>) -> Result<DVector<f64>> {
+    if m.is_empty() {
+        return Err(Error::failed("null vector of an empty matrix"));
+    }
+    let svd = svd(m, true)?;
     let k = svd.singular_values.imin();
-    v_t.row(k).transpose()
+    match svd.v_t {
+        Some(v_t) => Ok(v_t.row(k).transpose()),
+        None => Err(Error::failed("the SVD returned no singular vectors")),
+    }
 }
 
 /// Hessian of a function from its gradient by central differences with step
@@ -71,16 +119,22 @@ pub fn hessian_by_differences(
 
 /// Squared normal-mode frequencies ω² of the stiffness `k` with the diagonal
 /// mass matrix `masses`: eigenvalues of M^{-1/2} K M^{-1/2}, ascending.
-pub fn mass_weighted_eigenvalues(k: &DMatrix<f64>, masses: &[f64]) -> Vec<f64> {
+/// `Error::Failed` if the decomposition does not converge within its
+/// iteration cap.
+pub fn mass_weighted_eigenvalues(k: &DMatrix<f64>, masses: &[f64]) -> Result<Vec<f64>> {
+    const WHAT: &str = "symmetric eigen-decomposition";
     let w: Vec<f64> = masses.iter().map(|m| 1.0 / m.sqrt()).collect();
     let weighted = DMatrix::from_fn(k.nrows(), k.ncols(), |i, j| w[i] * k[(i, j)] * w[j]);
-    let mut ev: Vec<f64> = SymmetricEigen::new(weighted)
-        .eigenvalues
-        .iter()
-        .copied()
-        .collect();
+    if weighted.is_empty() {
+        return Ok(Vec::new());
+    }
+    finite(WHAT, &weighted)?;
+    let cap = iteration_cap(weighted.nrows(), weighted.ncols());
+    let eigen = SymmetricEigen::try_new(weighted.clone(), f64::EPSILON, cap)
+        .ok_or_else(|| not_converged(WHAT, &weighted, &format!("did not converge in {cap} sweeps")))?;
+    let mut ev: Vec<f64> = eigen.eigenvalues.iter().copied().collect();
     ev.sort_by(f64::total_cmp);
-    ev
+    Ok(ev)
 }
 
 /// ω = sqrt(max(ω², 0)): round-off can make a zero mode slightly negative.
@@ -102,8 +156,8 @@ mod tests {
     #[test]
     fn rank_of_a_rank_two_matrix() {
         let m = DMatrix::from_row_slice(3, 3, &[1.0, 2.0, 3.0, 2.0, 4.0, 6.0, 0.0, 1.0, 1.0]);
-        assert_eq!(rank(&m), 2);
-        let v = null_vector(&m);
+        assert_eq!(rank(&m).unwrap(), 2);
+        let v = null_vector(&m).unwrap();
         assert!((&m * v).norm() < 1e-12);
     }
 
@@ -115,7 +169,8 @@ mod tests {
         };
         let h = hessian_by_differences(grad, &[0.3, -0.2], HESSIAN_STEP);
         assert!((h[(0, 0)] - 2.0).abs() < 1e-9 && (h[(0, 1)] - 1.0).abs() < 1e-9);
-        let ev = mass_weighted_eigenvalues(&DMatrix::from_diagonal_element(2, 2, 4.0), &[1.0, 4.0]);
+        let ev = mass_weighted_eigenvalues(&DMatrix::from_diagonal_element(2, 2, 4.0), &[1.0, 4.0])
+            .unwrap();
         assert!((ev[0] - 1.0).abs() < 1e-12 && (ev[1] - 4.0).abs() < 1e-12);
     }
 }
