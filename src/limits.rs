@@ -104,13 +104,23 @@ impl Resource {
         Self::SweepRuns,
     ];
 
-    /// What the number counts, for messages ("block-steps (steps × N)").
+    /// The unit of the count, for messages ("block-steps").
+    pub fn unit(self) -> &'static str {
+        match self {
+            Self::BlockSteps => "block-steps",
+            Self::BlockSamples => "block-samples",
+            Self::MoviePixels => "pixels",
+            Self::SweepRuns => "runs",
+        }
+    }
+
+    /// What the count is ("steps × N").
     pub fn describe(self) -> &'static str {
         match self {
-            Self::BlockSteps => "block-steps (steps × N)",
-            Self::BlockSamples => "block-samples (samples × N)",
-            Self::MoviePixels => "pixels (frames × width × height)",
-            Self::SweepRuns => "runs",
+            Self::BlockSteps => "steps × N",
+            Self::BlockSamples => "samples × N",
+            Self::MoviePixels => "frames × width × height",
+            Self::SweepRuns => "runs of a sweep",
         }
     }
 }
@@ -132,9 +142,9 @@ impl fmt::Display for LimitExceeded {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "this needs {} {} ({}), above the cap of {}",
+            "this needs {} {} ({}), past the cap of {}",
             count(self.value),
-            self.resource.describe(),
+            self.resource.unit(),
             self.detail,
             count(self.cap)
         )
@@ -204,7 +214,7 @@ impl Limits {
     /// Block-samples of `samples` samples of `n` blocks.
     pub fn check_samples(&self, samples: f64, n: usize) -> Result<(), LimitExceeded> {
         self.check(Resource::BlockSamples, samples * n as f64, || {
-            format!("{} samples × N = {n}", count(samples))
+            format!("{} samples, times N = {n}", count(samples))
         })
     }
 
@@ -218,7 +228,9 @@ impl Limits {
 
     /// A sweep of `runs` runs.
     pub fn check_sweep(&self, runs: f64) -> Result<(), LimitExceeded> {
-        self.check(Resource::SweepRuns, runs, || format!("{} runs", count(runs)))
+        self.check(Resource::SweepRuns, runs, || {
+            format!("{} runs", count(runs))
+        })
     }
 }
 
@@ -245,7 +257,10 @@ mod tests {
         let l = Limits::default();
         // The paper's run, N = 1000 for 2e5 steps, N = 100,000 for 5000 steps.
         for (steps, n) in [(4e5, 10.0), (2e5, 1000.0), (5e3, 1e5)] {
-            assert!(l.check(Resource::BlockSteps, steps * n, String::new).is_ok());
+            assert!(
+                l.check(Resource::BlockSteps, steps * n, String::new)
+                    .is_ok()
+            );
         }
         assert!(l.check_movie(1000, 1920, 1080).is_ok());
         assert!(l.check_sweep(10_000.0).is_ok());
@@ -259,7 +274,10 @@ mod tests {
         assert_eq!(e.resource, Resource::BlockSamples);
         assert_eq!(e.value, f64::INFINITY);
         let text = e.to_string();
-        assert!(text.contains("block-samples") && text.contains("5.0e7"), "{text}");
+        assert!(
+            text.contains("block-samples") && text.contains("5.0e7"),
+            "{text}"
+        );
         assert!(!text.contains("--"), "the library names no flag: {text}");
         let nan = l.check(Resource::BlockSteps, f64::NAN, String::new);
         assert!(nan.is_err());

@@ -74,7 +74,8 @@ impl Params {
         let deg = self.alpha.to_degrees();
         if !self.alpha.is_finite() || deg.abs() > 90.0 + 1e-9 {
             return Err(ParamError(format!(
-                "alpha must be a number of degrees with |alpha| <= 90, got {}", crate::error::num(deg)
+                "alpha must be a number of degrees with |alpha| <= 90, got {}",
+                crate::error::num(deg)
             )));
         }
         if self.n < 2 || self.n > MAX_BLOCKS {
@@ -124,7 +125,8 @@ fn within(name: &str, x: f64, (lo, hi): (f64, f64)) -> Result<(), ParamError> {
         Ok(())
     } else {
         Err(ParamError(format!(
-            "{name} must be a number between {lo:e} and {hi:e}, got {}", crate::error::num(x)
+            "{name} must be a number between {lo:e} and {hi:e}, got {}",
+            crate::error::num(x)
         )))
     }
 }
@@ -134,7 +136,8 @@ fn non_negative(name: &str, x: f64) -> Result<(), ParamError> {
         Ok(())
     } else {
         Err(ParamError(format!(
-            "{name} must be a finite number >= 0, got {}", crate::error::num(x)
+            "{name} must be a finite number >= 0, got {}",
+            crate::error::num(x)
         )))
     }
 }

@@ -158,7 +158,8 @@ impl IntegratorConfig {
             && !(r.is_finite() && r > 0.0 && r < 1.0)
         {
             return Err(Error::bad_input(format!(
-                "rtol must be a number in (0, 1), got {}", crate::error::num(r)
+                "rtol must be a number in (0, 1), got {}",
+                crate::error::num(r)
             )));
         }
         Ok(self)

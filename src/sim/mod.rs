@@ -12,7 +12,8 @@ pub use integrators::{IntegratorConfig, IntegratorKind};
 pub use protocol::{Drive, Piece, Protocol};
 pub use rhs::{Rhs, State};
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, num};
+use crate::limits::{Limits, Resource};
 use crate::model::ladder::itheta;
 use crate::model::{Ladder, Params};
 use observables::{ArrivalDetector, kink_position};
@@ -43,7 +44,8 @@ impl Scenario {
         check_simulable(&params)?;
         if !(t_end.is_finite() && t_end >= 0.0) {
             return Err(Error::bad_input(format!(
-                "t_end must be a finite number >= 0, got {}", crate::error::num(t_end)
+                "t_end must be a finite number >= 0, got {}",
+                crate::error::num(t_end)
             )));
         }
         let ladder = Ladder::new(params);
@@ -64,7 +66,8 @@ pub fn check_simulable(params: &Params) -> Result<()> {
         Ok(())
     } else {
         Err(Error::bad_input(format!(
-            "alpha must satisfy 0 < |alpha| < 90 degrees for a simulation, got {}", crate::error::num(deg)
+            "alpha must satisfy 0 < |alpha| < 90 degrees for a simulation, got {}",
+            crate::error::num(deg)
         )))
     }
 }
@@ -155,8 +158,95 @@ pub fn simulate_with(
     config: &IntegratorConfig,
     stepping: Stepping,
 ) -> Result<Trajectory> {
+    let guard = RunGuard::default();
+    simulate_guarded(scenario, sample_times, config, stepping, &guard)
+}
+
+/// What a run may cost ([`Limits`]) and whom it tells how far it got.
+#[derive(Default)]
+pub struct RunGuard<'a> {
+    pub limits: Limits,
+    /// Called with the time reached, every few hundred steps at most.
+    pub progress: Option<&'a dyn Fn(f64)>,
+}
+
+/// The cost of a run, computed before it starts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cost {
+    /// Steps of a fixed-step run (each interval between stops subdivided
+    /// into steps of at most dt); for adaptive dopri5, the fewest it can
+    /// take (steps of `DOPRI5_MAX_STEP`); it is bounded while it runs.
+    pub steps: f64,
+    /// Steps × N.
+    pub block_steps: f64,
+    /// Samples × N.
+    pub block_samples: f64,
+}
+
+/// The cost of running `scenario` with `samples` sample times (after
+/// deduplication) and `config`: refuses, before any work, a run past
+/// `limits` (`Error::Limit`: samples × N, then steps × N) and a step that
+/// cannot advance time (`Error::BadInput`, `limits::MAX_STEPS_PER_ULP_SPAN`).
+pub fn check_cost(
+    scenario: &Scenario,
+    samples: usize,
+    config: &IntegratorConfig,
+    limits: &Limits,
+) -> Result<Cost> {
+    use crate::limits::{MAX_STEPS_PER_ULP_SPAN, count};
+    let config = config.validated()?;
+    let n = scenario.ladder.n();
+    let t_end = scenario.t_end;
+    limits.check_samples(samples as f64, n)?;
+    let adaptive = config.kind == IntegratorKind::Dopri5 && config.rtol.is_some();
+    let corners = scenario.protocol.drive().map_or(0, |d| d.corners().count());
+    let intervals = (samples + corners + 1) as f64;
+    let step = if adaptive {
+        integrators::DOPRI5_MAX_STEP
+    } else {
+        config.dt
+    };
+    let steps = (t_end / step).ceil() + intervals;
+    let cost = Cost {
+        steps,
+        block_steps: steps * n as f64,
+        block_samples: samples as f64 * n as f64,
+    };
+    limits.check(Resource::BlockSteps, cost.block_steps, || {
+        let least = if adaptive { "at least " } else { "" };
+        format!(
+            "{least}{} steps of dt = {} up to t_end = {}, times N = {n}",
+            count(steps),
+            num(step),
+            num(t_end),
+        )
+    })?;
+    if !adaptive && t_end / config.dt > MAX_STEPS_PER_ULP_SPAN {
+        return Err(Error::bad_input(format!(
+            "dt = {} is too small to advance time up to t_end = {}: each step must exceed the \
+             rounding of t a thousandfold (dt >= {})",
+            num(config.dt),
+            num(t_end),
+            num(t_end / MAX_STEPS_PER_ULP_SPAN)
+        )));
+    }
+    Ok(cost)
+}
+
+/// As [`simulate_with`], within `guard`'s limits (checked before the run
+/// by [`check_cost`], and while it runs for adaptive steps) and reporting
+/// progress to it.
+pub fn simulate_guarded(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    guard: &RunGuard,
+) -> Result<Trajectory> {
     let config = config.validated()?;
     let samples = sorted_samples(sample_times, scenario.t_end)?;
+    check_cost(scenario, samples.len(), &config, &guard.limits)?;
+    let max_steps = guard.limits.block_steps / scenario.ladder.n() as f64;
     let stops = stop_times(&samples, &scenario.protocol, scenario.t_end);
     let ladder = &scenario.ladder;
     let mut rhs = Rhs::new(ladder, &scenario.protocol, &scenario.initial.q);
@@ -184,10 +274,34 @@ pub fn simulate_with(
             let budget = check_every - traj.steps % check_every;
             let (t_new, taken) =
                 integrator.advance_many(&mut rhs, &mut st, (t, stop), budget, &mut arrivals)?;
+            if taken > 0 && t_new <= t {
+                return Err(Error::failed(format!(
+                    "time stopped advancing at t = {} τ ({}): the step is below the rounding of t",
+                    num(t),
+                    config.describe_step()
+                )));
+            }
             t = t_new;
             traj.steps += taken;
             if traj.steps.is_multiple_of(check_every) {
                 watch.check(&rhs, &st, t)?;
+                if let Some(progress) = guard.progress {
+                    progress(t);
+                }
+                if traj.steps as f64 > max_steps {
+                    return Err(Error::Limit(crate::limits::LimitExceeded {
+                        resource: Resource::BlockSteps,
+                        value: traj.steps as f64 * ladder.n() as f64,
+                        cap: guard.limits.block_steps,
+                        detail: format!(
+                            "{} steps by t = {} of t_end = {} × N = {}, and counting",
+                            traj.steps,
+                            num(t),
+                            num(scenario.t_end),
+                            ladder.n()
+                        ),
+                    }));
+                }
             }
         }
         watch.check(&rhs, &st, t)?;

@@ -195,7 +195,9 @@ pub fn clamped_band_hessian(params: &Params) -> BandSymmetric {
 /// (`linalg::BandSymmetric::largest_eigenvalue`), O(N) time and memory,
 /// so N = 100,000 takes a fraction of a second.
 pub fn omega_max_clamped_band(params: &Params) -> Result<f64> {
-    Ok(frequency(clamped_band_hessian(params).largest_eigenvalue()?))
+    Ok(frequency(
+        clamped_band_hessian(params).largest_eigenvalue()?,
+    ))
 }
 
 #[cfg(test)]

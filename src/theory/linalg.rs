@@ -134,8 +134,13 @@ pub fn mass_weighted_eigenvalues(k: &DMatrix<f64>, masses: &[f64]) -> Result<Vec
     }
     finite(WHAT, &weighted)?;
     let cap = iteration_cap(weighted.nrows(), weighted.ncols());
-    let eigen = SymmetricEigen::try_new(weighted.clone(), f64::EPSILON, cap)
-        .ok_or_else(|| not_converged(WHAT, &weighted, &format!("did not converge in {cap} sweeps")))?;
+    let eigen = SymmetricEigen::try_new(weighted.clone(), f64::EPSILON, cap).ok_or_else(|| {
+        not_converged(
+            WHAT,
+            &weighted,
+            &format!("did not converge in {cap} sweeps"),
+        )
+    })?;
     let mut ev: Vec<f64> = eigen.eigenvalues.iter().copied().collect();
     ev.sort_by(f64::total_cmp);
     Ok(ev)
@@ -236,11 +241,16 @@ impl BandSymmetric {
                  angles are too extreme, try values closer to the paper's (b = 1.3, alpha = 60)"
             )));
         }
-        let mut lo = (0..n).map(|i| self.row(i)[0]).fold(f64::NEG_INFINITY, f64::max);
+        let mut lo = (0..n)
+            .map(|i| self.row(i)[0])
+            .fold(f64::NEG_INFINITY, f64::max);
         let mut hi = (0..n)
             .map(|i| {
                 let lower = i.saturating_sub(self.width)..=(i + self.width).min(n - 1);
-                let off: f64 = lower.filter(|&j| j != i).map(|j| self.get(i, j).abs()).sum();
+                let off: f64 = lower
+                    .filter(|&j| j != i)
+                    .map(|j| self.get(i, j).abs())
+                    .sum();
                 self.row(i)[0] + off
             })
             .fold(f64::NEG_INFINITY, f64::max);
@@ -311,7 +321,11 @@ mod tests {
             let mut a = BandSymmetric::zeros(n, width);
             for i in 0..n {
                 for j in i..(i + width + 1).min(n) {
-                    a.add(i, j, ((i * 7 + j * 3) as f64 * 0.91).cos() + if i == j { 0.5 } else { 0.0 });
+                    a.add(
+                        i,
+                        j,
+                        ((i * 7 + j * 3) as f64 * 0.91).cos() + if i == j { 0.5 } else { 0.0 },
+                    );
                 }
             }
             let dense = SymmetricEigen::new(a.to_dense()).eigenvalues.max();
