@@ -211,11 +211,14 @@ fn antikink_at_60_degrees_is_slower_and_spares_the_last_block() {
             n + 1
         );
     }
+    // The free bottom block turns backwards past 180° (its polarisation
+    // changes sign, so it has an arrival time) into a configuration of its
+    // own, never reaching +60° (SPEC section 1 and section 2, item 2).
     let last = theta[9];
-    assert!(
-        anti.arrival_times[9].is_none() && (last - 60.0).abs() > 20.0,
-        "block 10: {last}°"
-    );
+    assert!((last - 60.0).abs() > 20.0, "block 10: {last}°");
+    let unwrapped = anti.final_theta_deg_unwrapped()[9];
+    assert!(unwrapped < -90.0, "block 10 turned backwards: {unwrapped}°");
+    assert!(anti.arrival_times[9].is_some(), "block 10: no arrival");
 }
 
 #[test]
@@ -374,4 +377,49 @@ fn fused_stepper_reports_the_same_divergence() {
         portable.to_string().contains("diverged at t = "),
         "{portable}"
     );
+}
+
+/// Near α = 90° whole groups of blocks turn the other way round, through
+/// ±180°, instead of through the horizontal: their polarisation sin θ
+/// changes sign although θ does not (SPEC section 1). Every block that ends
+/// near −α (mod 360°) has arrived, and the fused kernels agree with the
+/// portable path bit for bit.
+#[test]
+fn blocks_turning_through_180_degrees_have_arrival_times() {
+    let alpha = 88.0;
+    let params = Params::paper(alpha).unwrap().with(20, 1.3, alpha).unwrap();
+    let scenario = Scenario::single_flip(params, sim::PAPER_DRIVE_TIME, 3000.0).unwrap();
+    let config = IntegratorConfig::paper();
+    let traj = sim::simulate_with(&scenario, &[], &config, Stepping::Portable).unwrap();
+    let wrapped = traj.final_theta_deg();
+    let unwrapped = traj.final_theta_deg_unwrapped();
+    let mut turned_round = 0;
+    for (n, (w, u)) in wrapped.iter().zip(&unwrapped).enumerate() {
+        assert!(*w > -180.0 && *w <= 180.0, "block {}: {w}°", n + 1);
+        assert!(
+            ((u - w) / 360.0).fract() == 0.0,
+            "block {}: {u}° wraps to {w}°",
+            n + 1
+        );
+        if (w + alpha).abs() < 10.0 {
+            assert!(
+                traj.arrival_times[n].is_some(),
+                "block {} ends at {w}° (unwrapped {u}°) with no arrival",
+                n + 1
+            );
+        }
+        if *u > 180.0 {
+            turned_round += 1;
+        }
+    }
+    // The run does what this test is about: blocks turned through 180°
+    // (θ ends near 272°, so θ never changed sign), and most blocks end
+    // near −88°.
+    assert!(turned_round >= 3, "{unwrapped:?}");
+    let near = wrapped
+        .iter()
+        .filter(|w| (**w + alpha).abs() < 10.0)
+        .count();
+    assert!(near >= 15, "{wrapped:?}");
+    assert_fused_matches_portable(&scenario, &[500.0, 1500.0], "α = 88°, N = 20");
 }

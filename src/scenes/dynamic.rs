@@ -2,7 +2,7 @@
 //! (figure S6) and the movies with their kymographs. Each simulation runs
 //! only to its last frame and is sampled only at the times drawn.
 
-use crate::catalog::{SCENE_INTEGRATOR, SimSpec, StripSpec};
+use super::run::{self, IntegratorReport, SceneRun};
 use crate::encode::{GifWriter, png_bytes};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
@@ -10,10 +10,12 @@ use crate::render::charts::{self, Axis, ChartSpec, Kymograph, Marker, Series};
 use crate::render::compose::{self, FilmstripOptions, Frame, Layout, Panel};
 use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::style;
+use crate::scene::{Camera, DriveSpec, Model, OutputSpec, Scene, describe};
 use crate::sim::{self, Trajectory};
+use serde::Serialize;
 use tiny_skia::Pixmap;
 
-/// Movie frame count, size and rate (`--frames`, `--size`, `--fps`).
+/// Movie frame count, size and rate.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MovieOptions {
     pub frames: usize,
@@ -42,21 +44,21 @@ impl MovieOptions {
     pub fn validated(self) -> Result<Self> {
         if !(2..=MAX_FRAMES).contains(&self.frames) {
             return Err(Error::bad_input(format!(
-                "--frames must be between 2 and {MAX_FRAMES}, got {}",
+                "a movie needs between 2 and {MAX_FRAMES} frames, got {}",
                 self.frames
             )));
         }
         for side in [self.width, self.height] {
             if !(MIN_SIDE..=MAX_SIDE).contains(&side) {
                 return Err(Error::bad_input(format!(
-                    "--size must be WxH with each side between {MIN_SIDE} and {MAX_SIDE} pixels, got {}x{}",
+                    "the frame size must be WxH with each side between {MIN_SIDE} and {MAX_SIDE} pixels, got {}x{}",
                     self.width, self.height
                 )));
             }
         }
         if !(self.fps.is_finite() && self.fps > 0.0 && self.fps <= 100.0) {
             return Err(Error::bad_input(format!(
-                "--fps must be a number in (0, 100], got {}",
+                "the frame rate must be a number of frames per second in (0, 100], got {}",
                 self.fps
             )));
         }
@@ -64,111 +66,197 @@ impl MovieOptions {
     }
 }
 
-/// Runs `spec` with the scenes' integrator, sampled at `times`.
-pub fn run(spec: &SimSpec, times: &[f64]) -> Result<Trajectory> {
-    sim::simulate(&spec.scenario()?, times, &SCENE_INTEGRATOR)
+/// What the data file says of one run: the scene it ran, the integrator
+/// and accuracy, the arrival times, the final angles and, at each drawn
+/// time, θ_n (degrees, wrapped to (−180°, 180°]) and the centres.
+#[derive(Debug, Clone, Serialize)]
+pub struct RunData {
+    pub label: String,
+    pub model: Model,
+    pub drive: DriveSpec,
+    pub t_end: f64,
+    pub integrator: IntegratorReport,
+    pub arrival_times: Vec<Option<f64>>,
+    /// Speed of the wave in blocks per τ (least squares over blocks
+    /// 2..N−1), when at least three of them flipped.
+    pub speed: Option<f64>,
+    pub final_theta_deg: Vec<f64>,
+    pub frames: Vec<FrameData>,
+}
+
+/// The state drawn at one time.
+#[derive(Debug, Clone, Serialize)]
+pub struct FrameData {
+    pub t: f64,
+    pub theta_deg: Vec<f64>,
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+}
+
+impl RunData {
+    pub fn from_run(scene: &Scene, run: &SceneRun) -> Self {
+        Self::new("", scene, run)
+    }
+
+    fn new(label: &str, scene: &Scene, run: &SceneRun) -> Self {
+        let traj = &run.trajectory;
+        let frames = traj
+            .times
+            .iter()
+            .zip(&traj.states)
+            .map(|(&t, q)| FrameData {
+                t,
+                theta_deg: sim::observables::angles_deg(q),
+                x: (0..q.len() / 3).map(|i| q[3 * i]).collect(),
+                y: (0..q.len() / 3).map(|i| q[3 * i + 1]).collect(),
+            })
+            .collect();
+        Self {
+            label: label.to_string(),
+            model: scene.model,
+            drive: scene.drive.clone(),
+            t_end: scene.run.t_end,
+            integrator: run.integrator.clone(),
+            arrival_times: traj.arrival_times.clone(),
+            speed: sim::observables::wave_speed(&traj.arrival_times),
+            final_theta_deg: traj.final_theta_deg(),
+            frames,
+        }
+    }
 }
 
 /// "kink α = 60°" or "antikink α = −60°".
 fn wave_name(alpha_deg: f64) -> String {
     let kind = if alpha_deg > 0.0 { "kink" } else { "antikink" };
-    format!("{kind} α = {}°", signed(alpha_deg))
+    format!("{kind} α = {}°", describe::num(alpha_deg))
 }
 
-/// A number with a typographic minus sign.
-fn signed(x: f64) -> String {
-    format!("{x}").replace('-', "−")
+/// Snapshot size in a filmstrip for an N-block ladder: 330 pixels tall up
+/// to N = 10, taller for longer chains (up to 900), so that blocks stay
+/// visible.
+pub fn strip_frame(n: usize) -> (u32, u32) {
+    let h = (330.0 * (n.max(10) as f64 / 10.0).sqrt()).min(900.0) as u32;
+    (96, h)
 }
 
-/// Snapshot size in a filmstrip for an N-block ladder.
-pub const STRIP_FRAME: (u32, u32) = (96, 330);
-
-/// One filmstrip: snapshots of `strip` at its times, sharing one scale.
-fn strip_image(strip: &StripSpec, frame: (u32, u32)) -> Result<Pixmap> {
-    let traj = run(&strip.sim, strip.times)?;
-    let ladder = Ladder::new(strip.sim.params()?);
+/// One filmstrip: snapshots of a single-run scene at `times`, sharing one
+/// scale.
+fn strip_image(
+    label: &str,
+    scene: &Scene,
+    times: &[f64],
+    frame: Option<(u32, u32)>,
+) -> Result<(Pixmap, RunData)> {
+    let run = run::simulate(scene, times)?;
+    let ladder = Ladder::new(scene.model.params()?);
+    let traj = &run.trajectory;
     let frames: Vec<Frame<'_>> = traj
         .times
         .iter()
         .zip(&traj.states)
         .map(|(&time, q)| Frame { time, q })
         .collect();
-    let title = if strip.label.is_empty() {
-        None
-    } else {
-        Some(format!(
-            "{}  {}",
-            strip.label,
-            wave_name(strip.sim.alpha_deg)
-        ))
-    };
+    let title = (!label.is_empty()).then(|| format!("{label}  {}", wave_name(scene.model.alpha)));
     let opts = FilmstripOptions {
-        frame_size: Some(frame),
+        frame_size: Some(frame.unwrap_or_else(|| strip_frame(scene.model.n))),
         title,
         label: None,
         view: None,
     };
-    compose::filmstrip(&ladder, &frames, &opts)
+    let image = compose::filmstrip(&ladder, &frames, &opts)?;
+    Ok((image, RunData::new(label, scene, &run)))
 }
 
-/// Figures 1c, 3 and 4a: one filmstrip per strip (snapshots of `frame`
-/// pixels), two strips a row, with a title.
-pub fn strips_figure(title: &str, strips: &[StripSpec], frame: (u32, u32)) -> Result<Pixmap> {
-    let panels = strips
+/// A filmstrip figure (figures 1c, 3 and 4a): one strip per panel, two
+/// strips a row, with the scene's title; snapshots of `frame` pixels
+/// (default [`strip_frame`]).
+pub fn filmstrip_figure(
+    scene: &Scene,
+    frame: Option<(u32, u32)>,
+) -> Result<(Pixmap, Vec<RunData>)> {
+    let labels = panel_labels(scene);
+    let runs = scene.runs();
+    let strips = runs
         .iter()
-        .map(|s| strip_image(s, frame).map(Panel::new))
+        .zip(&labels)
+        .map(|((s, times), label)| strip_image(label, s, times, frame))
         .collect::<Result<Vec<_>>>()?;
-    let layout = Layout::columns(if panels.len() > 2 { 2 } else { 1 }).title(title);
-    compose::compose(&panels, &layout)
+    let (panels, data): (Vec<Panel>, Vec<RunData>) =
+        strips.into_iter().map(|(p, d)| (Panel::new(p), d)).unzip();
+    let layout =
+        Layout::columns(if panels.len() > 2 { 2 } else { 1 }).title(describe::title(scene));
+    Ok((compose::compose(&panels, &layout)?, data))
 }
 
-/// Simulated window of the arrival-time figure S6.
-const ARRIVAL_T_END: f64 = 4000.0;
+fn panel_labels(scene: &Scene) -> Vec<String> {
+    match &scene.output {
+        OutputSpec::Filmstrip { panels, .. } | OutputSpec::Arrivals { curves: panels } => {
+            let mut l: Vec<String> = panels.iter().map(|p| p.label.clone()).collect();
+            if l.is_empty() {
+                l.push(String::new());
+            }
+            l
+        }
+        _ => vec![String::new()],
+    }
+}
 
 /// Speed in blocks per 1000 τ (see `observables::wave_speed`).
 pub fn fitted_speed(arrivals: &[Option<f64>]) -> Option<f64> {
     sim::observables::wave_speed(arrivals).map(|v| 1000.0 * v)
 }
 
-/// Figure S6: t_n against n for the kink and antikink at each |α|.
-pub fn arrivals_figure(title: &str, alphas: &[f64]) -> Result<Pixmap> {
+/// The arrival-time chart (figure S6): t_n against n for each curve; one
+/// colour and marker per |α|, antikinks dashed.
+pub fn arrivals_figure(scene: &Scene) -> Result<(Pixmap, Vec<RunData>)> {
+    let runs = scene.runs();
+    let labels = panel_labels(scene);
+    let n_max = runs.iter().map(|(s, _)| s.model.n).max().unwrap_or(10);
     let mut spec = ChartSpec::new(
-        Axis::new("block n").range(0.5, 10.5),
+        Axis::new("block n").range(0.5, n_max as f64 + 0.5),
         Axis::new("arrival time tₙ / τ"),
     )
-    .title(title);
+    .title(describe::title(scene));
     let markers = [Marker::Circle, Marker::Square, Marker::Triangle];
-    for (k, &a) in alphas.iter().enumerate() {
-        let color = style::series_color(k + 1);
-        for alpha in [a, -a] {
-            let sim = SimSpec {
-                alpha_deg: alpha,
-                ..SimSpec::paper(alpha, ARRIVAL_T_END)
-            };
-            let traj = run(&sim, &[])?;
-            let pts: Vec<(f64, f64)> = traj
-                .arrival_times
-                .iter()
-                .enumerate()
-                .filter_map(|(i, t)| t.map(|t| (i as f64 + 1.0, t)))
-                .collect();
-            let speed = fitted_speed(&traj.arrival_times)
-                .map_or("stalls".to_string(), |v| format!("{v:.1} blocks/1000τ"));
-            let label = format!("{}: {speed}", wave_name(alpha));
-            let mut s = Series::line(label, pts, color).with_marker(markers[k % 3]);
-            if alpha < 0.0 {
-                s = s.dashed();
+    let mut groups: Vec<f64> = Vec::new();
+    let mut data = Vec::with_capacity(runs.len());
+    for ((s, _), label) in runs.iter().zip(&labels) {
+        let run = run::simulate(s, &[])?;
+        let alpha = s.model.alpha;
+        let k = match groups.iter().position(|g| *g == alpha.abs()) {
+            Some(k) => k,
+            None => {
+                groups.push(alpha.abs());
+                groups.len() - 1
             }
-            spec = spec.series(s);
+        };
+        let arrivals = &run.trajectory.arrival_times;
+        let pts: Vec<(f64, f64)> = arrivals
+            .iter()
+            .enumerate()
+            .filter_map(|(i, t)| t.map(|t| (i as f64 + 1.0, t)))
+            .collect();
+        let speed =
+            fitted_speed(arrivals).map_or("stalls".to_string(), |v| format!("{v:.1} blocks/1000τ"));
+        let name = if label.is_empty() {
+            wave_name(alpha)
+        } else {
+            label.clone()
+        };
+        let mut series = Series::line(format!("{name}: {speed}"), pts, style::series_color(k + 1))
+            .with_marker(markers[k % 3]);
+        if alpha < 0.0 {
+            series = series.dashed();
         }
+        spec = spec.series(series);
+        data.push(RunData::new(label, s, &run));
     }
-    Ok(charts::line_chart(&spec, 820, 560)?.pixmap)
+    Ok((charts::line_chart(&spec, 820, 560)?.pixmap, data))
 }
 
 /// Frame times of a movie: `frames` times evenly over [0, t_end].
 pub fn frame_times(t_end: f64, frames: usize) -> Vec<f64> {
-    let last = (frames - 1).max(1) as f64;
-    (0..frames).map(|k| t_end * k as f64 / last).collect()
+    crate::scene::even_times(t_end, frames)
 }
 
 /// The camera of a movie: one fixed window fitting every frame, or a window
@@ -181,45 +269,107 @@ fn movie_view(ladder: &Ladder, traj: &Trajectory, k: usize, follow: bool, aspect
     }
     let b = ladder.params.b;
     let x_span = 5.0 * b;
-    let centre_x = traj.kink_position[k].clamp(1.5, ladder.n() as f64 - 1.5) * b;
+    let centre_x = traj.kink_position[k].clamp(1.5, (ladder.n() as f64 - 1.5).max(1.5)) * b;
     let centre_y = 0.5 * (fit.y.0 + fit.y.1);
     View::centered(centre_x, centre_y, x_span, x_span * aspect)
 }
 
-/// A movie: the GIF and the kymograph PNG. Each frame shows the ladder on
-/// the left and, on the right, the kymograph of sin θ_n up to that frame.
-pub fn movie(
-    title: &str,
-    sim: &SimSpec,
-    follow: bool,
-    opts: &MovieOptions,
-) -> Result<(Vec<u8>, Vec<u8>)> {
+/// What a movie draws before any pixel: its run, its layout and the
+/// camera of every frame.
+struct MoviePlan {
+    title: String,
+    run: SceneRun,
+    ladder: Ladder,
+    layout: MovieLayout,
+    views: Vec<View>,
+}
+
+impl MoviePlan {
+    fn new(scene: &Scene, opts: &MovieOptions) -> Result<Self> {
+        let follow = matches!(
+            scene.output,
+            OutputSpec::Movie {
+                camera: Camera::Follow
+            }
+        );
+        let times = frame_times(scene.run.t_end, opts.frames);
+        let run = run::simulate(scene, &times)?;
+        let ladder = Ladder::new(scene.model.params()?);
+        let layout = MovieLayout::new(opts.width, opts.height, ladder.n());
+        let aspect = layout.ladder.w as f64 / layout.ladder.h as f64;
+        let traj = &run.trajectory;
+        let fixed = movie_view(&ladder, traj, 0, false, aspect);
+        let views = (0..traj.states.len())
+            .map(|k| {
+                if follow {
+                    movie_view(&ladder, traj, k, true, aspect)
+                } else {
+                    fixed
+                }
+            })
+            .collect();
+        Ok(Self {
+            title: describe::title(scene),
+            run,
+            ladder,
+            layout,
+            views,
+        })
+    }
+
+    fn snapshot(&self, k: usize) -> Result<Snapshot<'_>> {
+        let traj = &self.run.trajectory;
+        Ok(Snapshot::new(&self.ladder, &traj.states[k])?
+            .with_time(traj.times[k])
+            .with_view(self.views[k]))
+    }
+}
+
+/// Pixel positions of both ends of every block, one list per frame.
+pub type BlockPixels = Vec<Vec<(f32, f32)>>;
+
+/// For a test of the camera: the ladder's region of a movie frame and the
+/// pixel positions of both ends of every block at every frame, as the
+/// movie draws them.
+pub fn movie_block_pixels(scene: &Scene, opts: &MovieOptions) -> Result<(Region, BlockPixels)> {
+    let plan = MoviePlan::new(scene, &opts.validated()?)?;
+    let region = plan.layout.ladder;
+    let mut frames = Vec::new();
+    for (k, q) in plan.run.trajectory.states.iter().enumerate() {
+        let snap = plan.snapshot(k)?;
+        let px = (0..plan.ladder.n())
+            .flat_map(|i| {
+                let (a, b) = crate::model::ladder::nodes(q, i);
+                [a, b]
+            })
+            .map(|p| snapshot::pixel_of(region, &snap, p))
+            .collect();
+        frames.push(px);
+    }
+    Ok((region, frames))
+}
+
+/// A movie: the GIF, the kymograph PNG and the run's data. Each frame
+/// shows the ladder on the left and, on the right, the kymograph of
+/// sin θ_n up to that frame.
+pub fn movie(scene: &Scene, opts: &MovieOptions) -> Result<(Vec<u8>, Vec<u8>, RunData)> {
     let opts = opts.validated()?;
-    let times = frame_times(sim.t_end, opts.frames);
-    let traj = run(sim, &times)?;
-    let ladder = Ladder::new(sim.params()?);
-    let layout = MovieLayout::new(opts.width, opts.height, sim.n);
-    let aspect = layout.ladder.w as f64 / layout.ladder.h as f64;
-    let fixed = movie_view(&ladder, &traj, 0, false, aspect);
-    let heat = heat_map(&traj, ladder.n(), layout.heat)?;
+    let plan = MoviePlan::new(scene, &opts)?;
+    let traj = &plan.run.trajectory;
+    let n = plan.ladder.n();
+    let layout = &plan.layout;
+    let heat = heat_map(traj, n, layout.heat)?;
     let mut gif = GifWriter::new(opts.width, opts.height, opts.fps)?;
     let blank = || {
         style::white_pixmap(opts.width, opts.height)
-            .ok_or_else(|| Error::bad_input("the movie frame does not fit in memory"))
+            .ok_or_else(|| Error::failed("the movie frame does not fit in memory"))
     };
     // What every frame shares is drawn once; each frame starts from a copy.
     let mut background = blank()?;
-    layout.decorate(&mut background, title, sim.t_end, ladder.n());
+    layout.decorate(&mut background, &plan.title, scene.run.t_end, n);
     let mut canvas = blank()?;
-    for (k, q) in traj.states.iter().enumerate() {
-        let view = if follow {
-            movie_view(&ladder, &traj, k, true, aspect)
-        } else {
-            fixed
-        };
-        let snap = Snapshot::new(&ladder, q)?
-            .with_time(traj.times[k])
-            .with_view(view);
+    for k in 0..traj.states.len() {
+        let snap = plan.snapshot(k)?;
         canvas.data_mut().copy_from_slice(background.data());
         snapshot::draw_snapshot(&mut canvas, layout.ladder, &snap);
         layout.restore_title(&mut canvas, &background);
@@ -232,13 +382,23 @@ pub fn movie(
         gif.push_frame(&canvas)?;
     }
     let kymo = kymograph_image(
-        title,
-        &traj,
-        ladder.n(),
+        &plan.title,
+        traj,
+        n,
         opts.width.max(480),
         opts.height.max(360),
     )?;
-    Ok((gif.finish()?, png_bytes(&kymo)?))
+    let data = RunData::new("", scene, &plan.run);
+    Ok((gif.finish()?, png_bytes(&kymo)?, data))
+}
+
+/// A kymograph figure: sin θ_n of the scene's run over `frames` rows.
+pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Pixmap, RunData)> {
+    let times = frame_times(scene.run.t_end, frames);
+    let run = run::simulate(scene, &times)?;
+    let title = describe::title(scene);
+    let image = kymograph_image(&title, &run.trajectory, scene.model.n, 820, 560)?;
+    Ok((image, RunData::new("", scene, &run)))
 }
 
 /// Where a movie frame puts the title, the ladder and the live kymograph.
@@ -409,7 +569,11 @@ pub fn kymograph_image(
 ) -> Result<Pixmap> {
     let states: Vec<&[f64]> = traj.states.iter().map(|q| q.as_slice()).collect();
     let values = charts::polarisation_rows(&states);
-    let kymo_title = format!("{title}: sin θₙ");
+    let kymo_title = if title.ends_with("sin θₙ") {
+        title.to_string()
+    } else {
+        format!("{title}: sin θₙ")
+    };
     let mut k = Kymograph::new(&traj.times, &values, n);
     k.title = Some(&kymo_title);
     Ok(charts::kymograph(&k, width, height)?.pixmap)

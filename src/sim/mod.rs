@@ -1,6 +1,7 @@
 //! Time integration of the ladder: the run loop, sampling at requested
 //! times, divergence detection, and the scenes' initial conditions.
 
+pub mod auto;
 pub mod fused;
 pub mod integrators;
 pub mod observables;
@@ -83,7 +84,8 @@ pub struct Trajectory {
     pub velocities: Vec<Vec<f64>>,
     /// Kink position (blocks flipped, see `observables::kink_position`) at each sample.
     pub kink_position: Vec<f64>,
-    /// First sign change of θ_n per block, `None` where it never flipped.
+    /// Arrival time per block: the first sign change of its polarisation
+    /// sin θ_n (SPEC section 1), `None` where it never flipped.
     pub arrival_times: Vec<Option<f64>>,
     /// State at t_end.
     pub final_state: State,
@@ -92,9 +94,14 @@ pub struct Trajectory {
 }
 
 impl Trajectory {
-    /// θ_n at t_end, in degrees.
+    /// θ_n at t_end, in degrees, wrapped to (−180°, 180°] (SPEC section 1).
     pub fn final_theta_deg(&self) -> Vec<f64> {
         observables::angles_deg(&self.final_state.q)
+    }
+
+    /// θ_n at t_end, in degrees, as integrated (not wrapped).
+    pub fn final_theta_deg_unwrapped(&self) -> Vec<f64> {
+        observables::angles_deg_unwrapped(&self.final_state.q)
     }
 
     /// Records the state for every sample time not after `t` not yet recorded.

@@ -146,10 +146,24 @@ impl<const C: usize> Lanes<C> {
         self
     }
 
-    /// All-ones lanes where `self < x`.
+    /// All-ones lanes where `self ≤ x`, lane by lane.
     #[inline(always)]
-    fn lt(self, x: f64) -> Self {
-        self.compare::<_CMP_LT_OQ>(x)
+    fn le(self, x: Self) -> Self {
+        self.compare_lanes::<_CMP_LE_OQ>(x)
+    }
+
+    /// All-ones lanes where `self ≥ x`, lane by lane.
+    #[inline(always)]
+    fn ge(self, x: Self) -> Self {
+        self.compare_lanes::<_CMP_GE_OQ>(x)
+    }
+
+    #[inline(always)]
+    fn compare_lanes<const P: i32>(mut self, x: Self) -> Self {
+        for c in 0..C {
+            self.0[c] = avx!(_mm256_cmp_pd::<P>(self.0[c], x.0[c]));
+        }
+        self
     }
 
     /// All-ones lanes where `self > x` or either is NaN.
@@ -560,18 +574,24 @@ impl DriveAt<'_> {
 /// θ and θ̇ of every block at one time.
 type Angles<const C: usize> = (f64, Lanes<C>, Lanes<C>);
 
+/// Runs the exact arrival test on the candidate lanes, in block order, and
+/// returns the blocks that arrived.
 #[cold]
 #[inline(never)]
 fn record<const C: usize>(
     arrivals: &mut ArrivalDetector,
-    crossed: u64,
+    candidates: u64,
     before: Angles<C>,
     after: Angles<C>,
-) {
-    for i in (0..4 * C).filter(|i| crossed >> i & 1 == 1) {
+) -> u64 {
+    let mut arrived = 0;
+    for i in (0..4 * C).filter(|i| candidates >> i & 1 == 1) {
         let at = |(t, th, om): Angles<C>| (t, th.lane(i), om.lane(i));
-        arrivals.record(i, at(before), at(after));
+        if arrivals.try_record(i, at(before), at(after)) {
+            arrived |= 1 << i;
+        }
     }
+    arrived
 }
 
 /// The batch of `job` on `st`: load, step with the drive and the arrival
@@ -580,7 +600,10 @@ fn record<const C: usize>(
 fn run_body<const C: usize>(job: &Job, st: &mut State, arrivals: &mut ArrivalDetector) -> f64 {
     let n = st.q.len() / 3;
     let k = Constants::<C>::new(job, n);
-    let sign = Lanes::<C>::from_fn(|i| if i < n { arrivals.initial_sign(i) } else { 0.0 });
+    // Candidate windows (lo, hi) of `ArrivalDetector::is_candidate`; the
+    // padding lanes are never pending.
+    let window_lo = Lanes::<C>::from_fn(|i| if i < n { arrivals.window(i)[0] } else { 0.0 });
+    let window_hi = Lanes::<C>::from_fn(|i| if i < n { arrivals.window(i)[1] } else { 0.0 });
     let mut pending = arrivals.pending_mask();
     let mut r = Regs::<C>::load(st, n);
     let batch = job.batch;
@@ -597,11 +620,12 @@ fn run_body<const C: usize>(job: &Job, st: &mut State, arrivals: &mut ArrivalDet
         if let Some(d) = drive.as_mut() {
             d.constrain(&mut r, t_new);
         }
-        // As `ArrivalDetector::crossed`: θ · sign < 0 for a pending block.
-        let crossed = (r.q.theta * sign).lt(0.0).sign_bits() & pending;
-        if crossed != 0 {
-            record(arrivals, crossed, before, (t_new, r.q.theta, r.v.theta));
-            pending &= !crossed;
+        // As `ArrivalDetector::is_candidate`, for every pending block; the
+        // exact test (the sign of sin θ) in scalar code for candidates only.
+        let outside = r.q.theta.le(window_lo) | r.q.theta.ge(window_hi);
+        let candidates = outside.sign_bits() & pending;
+        if candidates != 0 {
+            pending &= !record(arrivals, candidates, before, (t_new, r.q.theta, r.v.theta));
         }
         t = t_new;
     }
