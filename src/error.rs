@@ -18,6 +18,10 @@ pub enum Error {
     /// cap would allow; the command line adds how to raise it.
     #[error("{0}")]
     Limit(crate::limits::LimitExceeded),
+    /// Standard output was closed by its reader (a broken pipe): the
+    /// program ends quietly with success, as Unix tools do.
+    #[error("standard output was closed")]
+    Closed,
 }
 
 pub type Result<T, E = Error> = std::result::Result<T, E>;
@@ -31,11 +35,13 @@ impl Error {
         Self::Failed(msg.into())
     }
 
-    /// Process exit code: 2 for bad input, 1 for a failed run.
+    /// Process exit code: 2 for bad input, 1 for a failed run, 0 for a closed
+    /// standard output.
     pub fn exit_code(&self) -> i32 {
         match self {
             Self::BadInput(_) | Self::Limit(_) => 2,
             Self::Failed(_) => 1,
+            Self::Closed => 0,
         }
     }
 }

@@ -78,10 +78,22 @@ pub fn simulate(scene: &Scene, samples: &[f64]) -> Result<SceneRun> {
 /// As [`simulate`], with symplectic Euler's steps taken as `stepping`
 /// says (the same numbers whatever it is; `sim::fused`).
 pub fn simulate_with(scene: &Scene, samples: &[f64], stepping: Stepping) -> Result<SceneRun> {
+    simulate_guarded(scene, samples, stepping, &sim::RunGuard::default())
+}
+
+/// As [`simulate_with`], within `guard`'s caps and reporting progress to
+/// it (a fixed-step run; `auto`'s runs use the caps in force,
+/// `limits::Limits::active`, without progress).
+pub fn simulate_guarded(
+    scene: &Scene,
+    samples: &[f64],
+    stepping: Stepping,
+    guard: &sim::RunGuard,
+) -> Result<SceneRun> {
     let scenario = scene.scenario()?;
     match scene.run.fixed_config()? {
         Some(config) => {
-            let trajectory = sim::simulate_with(&scenario, samples, &config, stepping)?;
+            let trajectory = sim::simulate_guarded(&scenario, samples, &config, stepping, guard)?;
             Ok(SceneRun {
                 integrator: fixed_report(scene, &config, &trajectory),
                 trajectory,

@@ -170,11 +170,20 @@ pub fn simulate_with(
 }
 
 /// What a run may cost ([`Limits`]) and whom it tells how far it got.
-#[derive(Default)]
 pub struct RunGuard<'a> {
+    /// The caps (default: [`Limits::active`]).
     pub limits: Limits,
     /// Called with the time reached, every few hundred steps at most.
     pub progress: Option<&'a dyn Fn(f64)>,
+}
+
+impl Default for RunGuard<'_> {
+    fn default() -> Self {
+        Self {
+            limits: Limits::active(),
+            progress: None,
+        }
+    }
 }
 
 /// The cost of a run, computed before it starts.
@@ -193,7 +202,8 @@ pub struct Cost {
 /// The cost of running `scenario` with `samples` sample times (after
 /// deduplication) and `config`: refuses, before any work, a run past
 /// `limits` (`Error::Limit`: samples × N, then steps × N) and a step that
-/// cannot advance time (`Error::BadInput`, `limits::MAX_STEPS_PER_ULP_SPAN`).
+/// cannot advance time (`Error::BadInput`, `limits::MAX_STEPS_PER_ULP_SPAN`;
+/// checked before steps × N, as no cap can allow it).
 pub fn check_cost(
     scenario: &Scenario,
     samples: usize,
@@ -219,6 +229,15 @@ pub fn check_cost(
         block_steps: steps * n as f64,
         block_samples: samples as f64 * n as f64,
     };
+    if !adaptive && t_end / config.dt > MAX_STEPS_PER_ULP_SPAN {
+        return Err(Error::bad_input(format!(
+            "dt = {} is too small for t_end = {}: each step must exceed the rounding of t \
+             a thousandfold, so dt >= {} (or a shorter t_end)",
+            num(config.dt),
+            num(t_end),
+            num(t_end / MAX_STEPS_PER_ULP_SPAN)
+        )));
+    }
     limits.check(Resource::BlockSteps, cost.block_steps, || {
         let least = if adaptive { "at least " } else { "" };
         format!(
@@ -228,15 +247,6 @@ pub fn check_cost(
             num(t_end),
         )
     })?;
-    if !adaptive && t_end / config.dt > MAX_STEPS_PER_ULP_SPAN {
-        return Err(Error::bad_input(format!(
-            "dt = {} is too small to advance time up to t_end = {}: each step must exceed the \
-             rounding of t a thousandfold (dt >= {})",
-            num(config.dt),
-            num(t_end),
-            num(t_end / MAX_STEPS_PER_ULP_SPAN)
-        )));
-    }
     Ok(cost)
 }
 

@@ -208,7 +208,8 @@ impl BandSymmetric {
             for k in i.saturating_sub(p)..i {
                 diag -= u[k * w + i - k] * u[k * w + i - k];
             }
-            if !(diag > 0.0) {
+            // NaN counts as not positive.
+            if diag.is_nan() || diag <= 0.0 {
                 return false;
             }
             let pivot = diag.sqrt();
