@@ -203,12 +203,6 @@ impl Limits {
         }
     }
 
-    /// Whether `value` of `resource` is past its default cap (the run
-    /// was allowed by a raised cap: worth a progress display).
-    pub fn past_default(resource: Resource, value: f64) -> bool {
-        value > Self::default().cap(resource)
-    }
-
     /// `Ok` if `value` (NaN counts as infinite) is within the cap on
     /// `resource`; otherwise [`LimitExceeded`] with `detail`.
     pub fn check(

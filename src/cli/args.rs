@@ -33,7 +33,7 @@ pub struct Cli {
 
 /// Caps on the cost of one command (`crate::limits`, docs/limits.md). A
 /// request past a cap is refused before any work, with the flag that
-/// raises it; a run past the default cap shows its progress.
+/// raises it.
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Limits (docs/limits.md)")]
 pub struct LimitArgs {
@@ -292,6 +292,10 @@ pub struct RenderArgs {
     /// Scene files (TOML)
     #[arg(required = true, value_name = "FILE")]
     pub files: Vec<PathBuf>,
+    /// Only read and check the files, print what each would make, and
+    /// write nothing
+    #[arg(long)]
+    pub check: bool,
     #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]

@@ -172,6 +172,20 @@ pub fn run(cli: Cli) -> Result<()> {
                 .iter()
                 .map(|f| scene::file::load(f))
                 .collect::<Result<Vec<_>>>()?;
+            if args.check {
+                for (file, s) in args.files.iter().zip(&scenes) {
+                    output::print(&format!(
+                        "{}: {} {} ({} run{}): {}\n",
+                        file.display(),
+                        s.kind().name(),
+                        s.name,
+                        s.runs().len(),
+                        if s.runs().len() == 1 { "" } else { "s" },
+                        scene::describe::parameters(s)
+                    ))?;
+                }
+                return Ok(());
+            }
             render_into(&scenes, &args.out.out, &opts, false)
         }
         Command::All(args) => {
@@ -324,19 +338,12 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
     if let Some(path) = &args.csv {
         output::check_writable(path)?;
     }
-    let bar = simulation_progress(&scene, samples.len())?;
-    let progress = bar
-        .as_ref()
-        .map(|(bar, per_tau)| move |t: f64| bar.set_position((t * per_tau) as u64));
-    let guard = sim::RunGuard {
-        progress: progress.as_ref().map(|p| p as &dyn Fn(f64)),
-        ..sim::RunGuard::default()
-    };
     let start = Instant::now();
-    let result = scenes::run::simulate_guarded(&scene, &samples, stepping, &guard);
-    if let Some((bar, _)) = &bar {
-        bar.finish_and_clear();
-    }
+    let bar = time_bar(scene.run.t_end);
+    let result = scenes::run::simulate_with(&scene, &samples, stepping, &|t| {
+        bar.set_position(bar.position().max(t as u64));
+    });
+    bar.finish_and_clear();
     let result = result?;
     let wall_seconds = start.elapsed().as_secs_f64();
     let traj = &result.trajectory;
@@ -394,28 +401,6 @@ fn csv_samples(args: &SimulateArgs, n: usize) -> Result<Vec<f64>> {
         .map_err(|_| Error::failed("not enough memory for the CSV's sample times"))?;
     times.extend((0..count as usize).map(|k| k as f64 * every));
     Ok(times)
-}
-
-/// A progress bar over the simulated time, for a fixed-step run past the
-/// default cap on steps × N (allowed by a raised cap): (bar, ticks per τ).
-fn simulation_progress(
-    scene: &Scene,
-    samples: usize,
-) -> Result<Option<(indicatif::ProgressBar, f64)>> {
-    let Some(config) = scene.run.fixed_config()? else {
-        return Ok(None);
-    };
-    let cost = sim::check_cost(&scene.scenario()?, samples, &config, &Limits::active())?;
-    if !Limits::past_default(Resource::BlockSteps, cost.block_steps) {
-        return Ok(None);
-    }
-    let per_tau = 1000.0 / scene.run.t_end.max(f64::MIN_POSITIVE);
-    let bar = progress_bar(1000, "simulating");
-    bar.set_message(format!(
-        "{} block-steps, past the default cap",
-        crate::limits::count(cost.block_steps)
-    ));
-    Ok(Some((bar, per_tau)))
 }
 
 fn simulate_table(r: &SimulateReport) -> String {
@@ -563,6 +548,23 @@ fn ticker(bar: &indicatif::ProgressBar) -> impl Fn(&str) + Sync + '_ {
     }
 }
 
+/// A progress bar over simulated time, shown only for a run long enough
+/// to wait for (over 10^5 τ of simulated time) and only on a terminal.
+fn time_bar(t_end: f64) -> indicatif::ProgressBar {
+    if t_end < 1e5 {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new(t_end as u64);
+    let style = indicatif::ProgressStyle::with_template(
+        "simulating [{bar:30}] t/τ = {pos}/{len} {elapsed} (eta {eta})",
+    )
+    .map(|s| s.progress_chars("=> "));
+    if let Ok(style) = style {
+        bar.set_style(style);
+    }
+    bar
+}
+
 fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(len);
     let style =
@@ -602,16 +604,29 @@ fn render_into(scenes: &[Scene], out: &Path, movie: &MovieOptions, index: bool) 
     }
     output::check_targets(&targets)?;
     let start = Instant::now();
-    let bar = progress_bar(scenes.len() as u64, "rendering");
+    // One movie: a bar over its frames; several scenes: over the scenes.
+    let one_movie = scenes.len() == 1 && scenes[0].kind() == Kind::Movie;
+    let bar = if one_movie {
+        progress_bar(movie.frames as u64, &format!("movie {}", scenes[0].name))
+    } else {
+        progress_bar(scenes.len() as u64, "rendering")
+    };
+    let frame_done = || {
+        if one_movie {
+            bar.inc(1);
+        }
+    };
     let written: Vec<Vec<String>> = scenes
         .par_iter()
         .map(|s| {
-            let files = scenes::render(s, movie)?;
+            let files = scenes::render_observed(s, movie, &frame_done)?;
             for (name, bytes) in &files {
                 crate::output::write_atomic(&out.join(name), bytes)?;
             }
-            bar.set_message(format!("{} {}", s.kind().name(), s.name));
-            bar.inc(1);
+            if !one_movie {
+                bar.set_message(format!("{} {}", s.kind().name(), s.name));
+                bar.inc(1);
+            }
             Ok(files.into_iter().map(|(name, _)| name).collect())
         })
         .collect::<Result<_>>()?;

@@ -45,6 +45,16 @@ pub fn file_names(scene: &Scene) -> Vec<String> {
 
 /// The files of one scene, as (file name, bytes), in [`file_names`] order.
 pub fn render(scene: &Scene, movie: &MovieOptions) -> Result<Vec<(String, Vec<u8>)>> {
+    render_observed(scene, movie, &|| {})
+}
+
+/// As [`render`], calling `frame_done` after each movie frame (for a
+/// progress bar).
+pub fn render_observed(
+    scene: &Scene,
+    movie: &MovieOptions,
+    frame_done: &(dyn Fn() + Sync),
+) -> Result<Vec<(String, Vec<u8>)>> {
     let (mut bytes, runs) = match &scene.output {
         OutputSpec::Theory(spec) => {
             let input = theory::FigureInput::new(describe::title(scene), &scene.model, spec);
@@ -66,7 +76,7 @@ pub fn render(scene: &Scene, movie: &MovieOptions) -> Result<Vec<(String, Vec<u8
             (vec![png_bytes(&image)?], vec![run])
         }
         OutputSpec::Movie { .. } => {
-            let (gif, kymo, run) = dynamic::movie(scene, movie)?;
+            let (gif, kymo, run) = dynamic::movie_observed(scene, movie, frame_done)?;
             (vec![gif, kymo], vec![run])
         }
         OutputSpec::Data => {

@@ -165,25 +165,21 @@ pub fn simulate_with(
     config: &IntegratorConfig,
     stepping: Stepping,
 ) -> Result<Trajectory> {
-    let guard = RunGuard::default();
-    simulate_guarded(scenario, sample_times, config, stepping, &guard)
+    simulate_observed(scenario, sample_times, config, stepping, &|_| {})
 }
 
-/// What a run may cost ([`Limits`]) and whom it tells how far it got.
-pub struct RunGuard<'a> {
-    /// The caps (default: [`Limits::active`]).
-    pub limits: Limits,
-    /// Called with the time reached, every few hundred steps at most.
-    pub progress: Option<&'a dyn Fn(f64)>,
-}
-
-impl Default for RunGuard<'_> {
-    fn default() -> Self {
-        Self {
-            limits: Limits::active(),
-            progress: None,
-        }
-    }
+/// As [`simulate_with`], telling `progress` the simulated time at every
+/// divergence check (every 5 τ, or 512 steps at most): for a progress bar.
+/// Within the caps in force ([`Limits::active`]).
+pub fn simulate_observed(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<Trajectory> {
+    let limits = Limits::active();
+    simulate_limited(scenario, sample_times, config, stepping, &limits, progress)
 }
 
 /// The cost of a run, computed before it starts.
@@ -250,20 +246,20 @@ pub fn check_cost(
     Ok(cost)
 }
 
-/// As [`simulate_with`], within `guard`'s limits (checked before the run
-/// by [`check_cost`], and while it runs for adaptive steps) and reporting
-/// progress to it.
-pub fn simulate_guarded(
+/// As [`simulate_observed`], within `limits` (checked before the run by
+/// [`check_cost`], and while it runs for adaptive steps).
+pub fn simulate_limited(
     scenario: &Scenario,
     sample_times: &[f64],
     config: &IntegratorConfig,
     stepping: Stepping,
-    guard: &RunGuard,
+    limits: &Limits,
+    progress: &(dyn Fn(f64) + Sync),
 ) -> Result<Trajectory> {
     let config = config.validated()?;
     let samples = sorted_samples(sample_times, scenario.t_end)?;
-    check_cost(scenario, samples.len(), &config, &guard.limits)?;
-    let max_steps = guard.limits.block_steps / scenario.ladder.n() as f64;
+    check_cost(scenario, samples.len(), &config, limits)?;
+    let max_steps = limits.block_steps / scenario.ladder.n() as f64;
     let stops = stop_times(&samples, &scenario.protocol, scenario.t_end);
     let ladder = &scenario.ladder;
     let mut rhs = Rhs::new(ladder, &scenario.protocol, &scenario.initial.q);
@@ -302,14 +298,12 @@ pub fn simulate_guarded(
             traj.steps += taken;
             if traj.steps.is_multiple_of(check_every) {
                 watch.check(&rhs, &st, t)?;
-                if let Some(progress) = guard.progress {
-                    progress(t);
-                }
+                progress(t);
                 if traj.steps as f64 > max_steps {
                     return Err(Error::Limit(crate::limits::LimitExceeded {
                         resource: Resource::BlockSteps,
                         value: traj.steps as f64 * ladder.n() as f64,
-                        cap: guard.limits.block_steps,
+                        cap: limits.block_steps,
                         detail: format!(
                             "{} steps by t = {} of t_end = {} × N = {}, and counting",
                             traj.steps,
