@@ -3,7 +3,8 @@
 use thiserror::Error;
 
 /// Every error the library reports. `exit_code` maps it to the CLI contract:
-/// 2 for bad input (the user can fix the command line), 1 for a run that failed.
+/// 2 for bad input (the user can fix the command line, or raise a cap), 1
+/// for a run that failed (a diverging integrator, a full disk).
 #[derive(Debug, Error)]
 pub enum Error {
     /// Bad input: unknown ID, a parameter out of range, an unwritable folder.
@@ -18,6 +19,14 @@ pub enum Error {
     /// step; the library knows no flag).
     #[error("{0}")]
     Diverged(Box<Divergence>),
+    /// A request past a cost cap (`crate::limits`): bad input that a raised
+    /// cap would allow; the command line adds how to raise it.
+    #[error("{0}")]
+    Limit(crate::limits::LimitExceeded),
+    /// Standard output was closed by its reader (a broken pipe): the
+    /// program ends quietly with success, as Unix tools do.
+    #[error("standard output was closed")]
+    Closed,
 }
 
 /// What the run loop knows about a diverged run (SPEC section 5).
@@ -70,17 +79,37 @@ impl Error {
         matches!(self, Self::Failed(_) | Self::Diverged(_))
     }
 
-    /// Process exit code: 2 for bad input, 1 for a failed run.
+    /// Process exit code: 2 for bad input, 1 for a failed run, 0 for a closed
+    /// standard output.
     pub fn exit_code(&self) -> i32 {
         match self {
-            Self::BadInput(_) => 2,
+            Self::BadInput(_) | Self::Limit(_) => 2,
             Self::Failed(_) | Self::Diverged(_) => 1,
+            Self::Closed => 0,
         }
+    }
+}
+
+impl From<crate::limits::LimitExceeded> for Error {
+    fn from(e: crate::limits::LimitExceeded) -> Self {
+        Self::Limit(e)
     }
 }
 
 impl From<crate::model::ParamError> for Error {
     fn from(e: crate::model::ParamError) -> Self {
         Self::BadInput(e.0)
+    }
+}
+
+/// A user's number for a message: as typed for ordinary magnitudes, in
+/// exponent form when tiny or huge (so that 1e308 does not print 309
+/// digits).
+pub fn num(x: f64) -> String {
+    let a = x.abs();
+    if x.is_finite() && a != 0.0 && !(1e-4..1e9).contains(&a) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
     }
 }

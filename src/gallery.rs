@@ -210,7 +210,7 @@ fn card(it: &Item<'_>) -> String {
     // The title is drawn at the top of the picture and listed in the
     // contents: the caption says what the picture shows instead.
     let caption = match &scene.caption {
-        Some(c) => formulas::html(&formulas::expand(c)),
+        Some(c) => crate::render::style::markup_html(&formulas::expand(c)),
         None => escape(&format!("{}.", describe::picture(scene))),
     };
     let wide = matches!(scene.output, crate::scene::OutputSpec::Filmstrip { .. });

@@ -17,12 +17,36 @@ use std::path::PathBuf;
                   integrator and a picture. The paper's figures and movies are built-in scenes \
                   (`ladder list`, `ladder scene ID`); your own ladder comes from the model flags \
                   of `movie` and `figure`, or from a TOML scene file (`ladder render FILE`; the \
-                  keys are in docs/scenes.md).",
+                  keys are in docs/scenes.md).\n\n\
+                  Limits: N up to 100000 blocks (the linear theory up to 400); a simulation \
+                  up to 1e10 steps × N and 5e7 samples × N; a movie up to 5000 frames, 4096 \
+                  pixels a side and 5e9 frames × pixels. Time and memory grow linearly in each \
+                  (docs/limits.md); the --max-* flags raise the caps.",
     allow_negative_numbers = true
 )]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
+    #[command(flatten)]
+    pub limits: LimitArgs,
+}
+
+/// Caps on the cost of one command (`crate::limits`, docs/limits.md). A
+/// request past a cap is refused before any work, with the flag that
+/// raises it.
+#[derive(Args, Debug, Clone, Default)]
+#[command(next_help_heading = "Limits (docs/limits.md)")]
+pub struct LimitArgs {
+    /// Most steps × N of one simulation (about 10 ns each) [default: 1e10]
+    #[arg(long, global = true, value_name = "X")]
+    pub max_block_steps: Option<f64>,
+    /// Most samples × N kept of one simulation (48 bytes each in memory)
+    /// [default: 5e7]
+    #[arg(long, global = true, value_name = "X")]
+    pub max_block_samples: Option<f64>,
+    /// Most frames × width × height of one movie [default: 5e9]
+    #[arg(long, global = true, value_name = "X")]
+    pub max_pixels: Option<f64>,
 }
 
 #[derive(Subcommand, Debug)]
@@ -49,7 +73,8 @@ pub enum Command {
 
 #[derive(Args, Debug, Clone)]
 pub struct OutArgs {
-    /// Output folder (created if missing)
+    /// Output folder (created if missing); files are named after the
+    /// scene, e.g. DIR/figure-3.pdf
     #[arg(long, default_value = "out", value_name = "DIR")]
     pub out: PathBuf,
     /// List every file written, one path a line on stderr, before the summary
@@ -67,10 +92,11 @@ pub struct ModelArgs {
     /// [default: 60]
     #[arg(long, value_name = "DEG")]
     pub alpha: Option<f64>,
-    /// Number of blocks N, from 2 [default: 10]
+    /// Number of blocks N, 2 to 100000 [default: 10]
     #[arg(long, value_name = "N")]
     pub n: Option<usize>,
-    /// Rest length b of the B springs, in units of the block length s [default: 1.3]
+    /// Rest length b of the B springs, in units of the block length s,
+    /// 1e-3 to 1e3 [default: 1.3]
     #[arg(long, value_name = "B")]
     pub b: Option<f64>,
     /// Damping gamma (force -gamma*dX/dt, torque -gamma*r^2*dtheta/dt) [default: 0.02]
@@ -79,7 +105,7 @@ pub struct ModelArgs {
     /// Gravity G = mg/(ks) [default: 2e-4]
     #[arg(long, value_name = "G")]
     pub gravity: Option<f64>,
-    /// Moment of inertia I of a block, in units of m s^2 [default: 0.25]
+    /// Moment of inertia I of a block, in units of m s^2, 1e-6 to 1e6 [default: 0.25]
     #[arg(long, value_name = "I")]
     pub inertia: Option<f64>,
 }
@@ -183,7 +209,7 @@ pub struct MovieFormat {
     /// Frames per movie (2..=5000)
     #[arg(long, default_value_t = 200, help_heading = "Movie format")]
     pub frames: usize,
-    /// Frame size WxH in pixels
+    /// Frame size WxH in pixels, each side 64 to 4096
     #[arg(long, default_value = "640x480", value_name = "WxH", value_parser = parse_size, help_heading = "Movie format")]
     pub size: (u32, u32),
     /// Frames per second
@@ -223,6 +249,15 @@ pub struct MovieArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub format: MovieFormat,
+    /// File formats, comma-separated: gif, mp4 (H.264; frame width and
+    /// height must be even)
+    #[arg(
+        long = "format",
+        default_value = "gif",
+        value_name = "LIST",
+        help_heading = "Movie format"
+    )]
+    pub formats: String,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -256,6 +291,49 @@ pub struct FigureArgs {
     pub run: RunArgs,
     #[command(flatten)]
     pub out: OutArgs,
+    #[command(flatten)]
+    pub figure_format: FigureFormat,
+}
+
+/// `--format` and `--scale` of figures.
+#[derive(Args, Debug, Clone)]
+pub struct FigureFormat {
+    /// File formats, comma-separated: png, svg, pdf (SVG and PDF are vector,
+    /// text as outlines; pdflatex includes the PDF)
+    #[arg(
+        long = "format",
+        default_value = "png",
+        value_name = "LIST",
+        help_heading = "Figure format"
+    )]
+    pub formats: String,
+    /// Scale of PNG figures: 2 draws the same layout with twice the pixels
+    /// each way (0.25..=8)
+    #[arg(
+        long,
+        default_value_t = 1.0,
+        value_name = "S",
+        help_heading = "Figure format"
+    )]
+    pub scale: f32,
+}
+
+/// `--format` and `--scale` of commands that write figures and movies.
+#[derive(Args, Debug, Clone)]
+pub struct MixedFormat {
+    /// File formats, comma-separated: png, svg, pdf for figures; gif, mp4
+    /// for movies (a kind left out keeps its default, png or gif)
+    #[arg(
+        long = "format",
+        default_value = "png,gif",
+        value_name = "LIST",
+        help_heading = "Format"
+    )]
+    pub formats: String,
+    /// Scale of PNG figures: 2 draws the same layout with twice the pixels
+    /// each way (0.25..=8)
+    #[arg(long, default_value_t = 1.0, value_name = "S", help_heading = "Format")]
+    pub scale: f32,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -278,6 +356,8 @@ pub struct RenderArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub format: MovieFormat,
+    #[command(flatten)]
+    pub formats: MixedFormat,
 }
 
 #[derive(Args, Debug)]
@@ -293,6 +373,8 @@ pub struct AllArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub format: MovieFormat,
+    #[command(flatten)]
+    pub formats: MixedFormat,
 }
 
 #[derive(Args, Debug)]
@@ -301,7 +383,7 @@ pub struct TheoryArgs {
     /// Equilibrium angle alpha in degrees, 0 <= |alpha| <= 90
     #[arg(long, default_value_t = 60.0, value_name = "DEG")]
     pub alpha: f64,
-    /// Rest length b of the B springs, in units of s
+    /// Rest length b of the B springs, in units of s, 1e-3 to 1e3
     #[arg(long, default_value_t = 1.3)]
     pub b: f64,
     /// Number of blocks N of the finite chain (2..=400)

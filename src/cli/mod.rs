@@ -10,8 +10,10 @@ pub use args::*;
 
 use crate::catalog::{self, Entry};
 use crate::error::{Error, Result};
+use crate::limits::{Limits, Resource};
+use crate::output;
 use crate::scene::{self, Kind, Scene};
-use crate::scenes::{self, MovieOptions};
+use crate::scenes::{self, MovieOptions, Outputs};
 use crate::sim::{self, IntegratorKind};
 use clap::Parser;
 use serde::Serialize;
@@ -24,16 +26,75 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    let cli = match Cli::try_parse_from(args) {
-        Ok(cli) => cli,
+    crate::output::temp::install_signal_cleanup();
+    let result = match Cli::try_parse_from(args) {
+        Ok(cli) => cli.limits.install().and_then(|()| run(cli)),
         Err(e) => return clap_exit(e),
     };
-    match run(cli) {
-        Ok(()) => 0,
-        Err(e) => {
-            eprintln!("ladder: {e}");
-            e.exit_code()
+    match result {
+        Ok(()) | Err(Error::Closed) => 0,
+        Err(e) => report_error(&e),
+    }
+}
+
+/// Writes the error's one line (a cap's with the flag that raises it) to
+/// standard error; returns its exit code, or 1 if standard error cannot
+/// be written (but not when its reader is gone).
+fn report_error(e: &Error) -> i32 {
+    let line = match e {
+        Error::Limit(limit) => format!("ladder: {limit}; {}\n", limit_hint(limit)),
+        _ => format!("ladder: {e}\n"),
+    };
+    match output::eprint(&line) {
+        Ok(()) | Err(Error::Closed) => e.exit_code(),
+        Err(_) => 1,
+    }
+}
+
+/// How to get past a cap: ask for less, or raise it with its flag.
+fn limit_hint(limit: &crate::limits::LimitExceeded) -> String {
+    let flag = LimitArgs::flag(limit.resource);
+    if limit.value.is_finite() {
+        let ask = format!("{:.1e}", limit.value * 1.05);
+        format!("ask for less, or raise the cap with {flag} {ask}")
+    } else {
+        "ask for less (no cap can allow it)".to_string()
+    }
+}
+
+impl LimitArgs {
+    /// The flag that sets the cap on `resource`.
+    pub fn flag(resource: Resource) -> &'static str {
+        match resource {
+            Resource::BlockSteps => "--max-block-steps",
+            Resource::BlockSamples => "--max-block-samples",
+            Resource::MoviePixels => "--max-pixels",
+            Resource::SweepRuns => "--max-runs",
         }
+    }
+
+    /// Installs the caps of the flags (the defaults where none is given)
+    /// for this process.
+    fn install(&self) -> Result<()> {
+        let mut limits = Limits::default();
+        for (resource, value) in [
+            (Resource::BlockSteps, self.max_block_steps),
+            (Resource::BlockSamples, self.max_block_samples),
+            (Resource::MoviePixels, self.max_pixels),
+        ] {
+            if let Some(v) = value {
+                if v.is_nan() || v <= 0.0 {
+                    return Err(Error::bad_input(format!(
+                        "{} must be a number > 0 (inf for no cap), got {}",
+                        Self::flag(resource),
+                        crate::error::num(v)
+                    )));
+                }
+                limits.set(resource, v);
+            }
+        }
+        limits.install();
+        Ok(())
     }
 }
 
@@ -44,20 +105,28 @@ where
 fn clap_exit(e: clap::Error) -> i32 {
     use clap::error::ErrorKind;
     match e.kind() {
-        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
-            print!("{e}");
-            0
-        }
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match output::print(&e.to_string()) {
+            Ok(()) | Err(Error::Closed) => 0,
+            Err(_) => 1,
+        },
         ErrorKind::MissingRequiredArgument
         | ErrorKind::MissingSubcommand
         | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            eprint!("{}", e.to_string().replacen("error: ", "ladder: ", 1));
-            2
+            let text = e.to_string().replacen("error: ", "ladder: ", 1);
+            exit_after(output::eprint(&text), 2)
         }
-        _ => {
-            eprintln!("ladder: {}", one_line(&e.to_string()));
-            2
-        }
+        _ => exit_after(
+            output::eprint(&format!("ladder: {}\n", one_line(&e.to_string()))),
+            2,
+        ),
+    }
+}
+
+/// `code`, or 1 if the message could not be written.
+fn exit_after(written: Result<()>, code: i32) -> i32 {
+    match written {
+        Ok(()) | Err(Error::Closed) => code,
+        Err(_) => 1,
     }
 }
 
@@ -81,32 +150,26 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Simulate(args) => simulate(&args),
         Command::Bench(args) => bench(&args),
         Command::Theory(args) => theory(&args),
-        Command::List => {
-            print!("{}", catalog::listing()?);
-            Ok(())
-        }
+        Command::List => output::print(&catalog::listing()?),
         Command::Scene(args) => {
             let entry = catalog::find_any(&args.id)?;
-            print!("{}", scene::file::to_toml(&entry.scene)?);
-            Ok(())
+            output::print(&scene::file::to_toml(&entry.scene)?)
         }
         Command::Figure(args) => {
+            let outputs = args.figure_format.outputs()?;
             let scenes = figure_scenes(&args)?;
-            render_into(
-                &scenes,
-                &args.out,
-                &MovieOptions::default(),
-                Words::Flags,
-                false,
-            )
+            let movie = MovieOptions::default();
+            render_into(&scenes, &args.out, &movie, &outputs, Words::Flags, false)
         }
         Command::Movie(args) => {
             let opts = args.format.options()?;
+            let outputs = convert::movie_outputs(&args.formats, &opts)?;
             let scenes = movie_scenes(&args)?;
-            render_into(&scenes, &args.out, &opts, Words::Flags, false)
+            render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, false)
         }
         Command::Render(args) => {
             let opts = args.format.options()?;
+            let outputs = args.formats.outputs(&opts)?;
             let scenes = args
                 .files
                 .iter()
@@ -114,27 +177,28 @@ pub fn run(cli: Cli) -> Result<()> {
                 .collect::<Result<Vec<_>>>()?;
             if args.check {
                 for (file, s) in args.files.iter().zip(&scenes) {
-                    println!(
-                        "{}: {} {} ({} run{}): {}",
+                    output::print(&format!(
+                        "{}: {} {} ({} run{}): {}\n",
                         file.display(),
                         s.kind().name(),
                         s.name,
                         s.runs().len(),
                         if s.runs().len() == 1 { "" } else { "s" },
                         scene::describe::parameters(s)
-                    );
+                    ))?;
                 }
                 return Ok(());
             }
-            render_into(&scenes, &args.out, &opts, Words::Keys, false)
+            render_into(&scenes, &args.out, &opts, &outputs, Words::Keys, false)
         }
         Command::All(args) => {
             let opts = args.format.options()?;
+            let outputs = args.formats.outputs(&opts)?;
             let scenes: Vec<Scene> = catalog::catalogue()?
                 .iter()
                 .map(|e| e.scene.clone())
                 .collect();
-            render_into(&scenes, &args.out, &opts, Words::Flags, true)
+            render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, true)
         }
     }
 }
@@ -273,10 +337,10 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         ));
     }
     let scene = convert::scene_from_flags(base, &args.model, &args.drive, &run)?;
-    let samples = csv_samples(args)?;
+    let samples = csv_samples(args, scene.model.n)?;
     let stepping = args.kernel.stepping()?;
     if let Some(path) = &args.csv {
-        crate::output::check_writable(path)?;
+        output::check_writable(path)?;
     }
     let start = Instant::now();
     let bar = time_bar(scene.run.t_end);
@@ -288,7 +352,7 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
     let wall_seconds = start.elapsed().as_secs_f64();
     let traj = &result.trajectory;
     if let Some(path) = &args.csv {
-        crate::output::write_atomic(path, csv_text(traj).as_bytes())?;
+        output::write_atomic_with(path, |f| write_csv(traj, &mut std::io::BufWriter::new(f)))?;
     }
     let params = scene.model.params()?;
     let report = SimulateReport {
@@ -314,11 +378,10 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         final_theta_deg: traj.final_theta_deg(),
     };
     if args.json {
-        println!("{}", to_json(&report)?);
+        output::print(&format!("{}\n", to_json(&report)?))
     } else {
-        print!("{}", simulate_table(&report));
+        output::print(&simulate_table(&report))
     }
-    Ok(())
 }
 
 /// How a hint names the settings: as command-line flags, or as the keys
@@ -398,23 +461,27 @@ fn short(x: f64) -> String {
     scene::describe::num((x / scale).floor() * scale)
 }
 
-fn csv_samples(args: &SimulateArgs) -> Result<Vec<f64>> {
+/// The CSV's sample times, 0, every, 2 every, ... up to --t-end, within
+/// the cap on samples × N (checked before any is made).
+fn csv_samples(args: &SimulateArgs, n: usize) -> Result<Vec<f64>> {
     if args.csv.is_none() {
         return Ok(Vec::new());
     }
     let every = args.sample_every;
     if !(every.is_finite() && every > 0.0) {
         return Err(Error::bad_input(format!(
-            "--sample-every must be a finite number > 0, got {every}"
+            "--sample-every must be a finite number > 0, got {}",
+            crate::error::num(every)
         )));
     }
-    let count = (args.t_end / every).floor();
-    if count.is_nan() || count > 10_000_000.0 {
-        return Err(Error::bad_input(
-            "--sample-every is too small for this --t-end (at most 10^7 samples)",
-        ));
-    }
-    Ok((0..=count as usize).map(|k| k as f64 * every).collect())
+    let count = (args.t_end / every).floor() + 1.0;
+    Limits::active().check_samples(count, n)?;
+    let mut times = Vec::new();
+    times
+        .try_reserve_exact(count as usize)
+        .map_err(|_| Error::failed("not enough memory for the CSV's sample times"))?;
+    times.extend((0..count as usize).map(|k| k as f64 * every));
+    Ok(times)
 }
 
 fn simulate_table(r: &SimulateReport) -> String {
@@ -437,21 +504,22 @@ fn simulate_table(r: &SimulateReport) -> String {
     s
 }
 
-fn csv_text(traj: &sim::Trajectory) -> String {
+/// The CSV of θ_n(t) in degrees, streamed row by row into `w`.
+fn write_csv(traj: &sim::Trajectory, w: &mut impl std::io::Write) -> std::io::Result<()> {
     let n = traj.final_state.q.len() / 3;
-    let mut out = String::from("t");
+    write!(w, "t")?;
     for i in 1..=n {
-        out.push_str(&format!(",theta_{i}_deg"));
+        write!(w, ",theta_{i}_deg")?;
     }
-    out.push('\n');
+    writeln!(w)?;
     for (t, q) in traj.times.iter().zip(&traj.states) {
-        out.push_str(&format!("{t}"));
+        write!(w, "{t}")?;
         for th in sim::observables::angles_deg(q) {
-            out.push_str(&format!(",{th:.6}"));
+            write!(w, ",{th:.6}")?;
         }
-        out.push('\n');
+        writeln!(w)?;
     }
-    out
+    w.flush()
 }
 
 fn bench(args: &BenchArgs) -> Result<()> {
@@ -462,7 +530,10 @@ fn bench(args: &BenchArgs) -> Result<()> {
         )));
     }
     match args.study.as_str() {
-        "work-precision" | "stability" => crate::output::ensure_dir(&args.out)?,
+        "work-precision" | "stability" => output::check_targets(&[
+            args.out.join(format!("{}.csv", args.study)),
+            args.out.join(format!("{}.png", args.study)),
+        ])?,
         "kernels" => return bench_kernels(args),
         other => {
             return Err(Error::bad_input(format!(
@@ -482,11 +553,10 @@ fn bench_kernels(args: &BenchArgs) -> Result<()> {
     let report = crate::bench::kernels(args.repeats, &ticker(&bar))?;
     bar.finish_and_clear();
     if args.json {
-        println!("{}", to_json(&report)?);
+        output::print(&format!("{}\n", to_json(&report)?))
     } else {
-        print!("{}", crate::bench::kernels_table(&report));
+        output::print(&crate::bench::kernels_table(&report))
     }
-    Ok(())
 }
 
 fn bench_work_precision(args: &BenchArgs) -> Result<()> {
@@ -524,12 +594,14 @@ fn write_study<T: Serialize>(
     crate::output::write_atomic(&csv, csv_text.as_bytes())?;
     crate::output::write_atomic(&png, &png_bytes)?;
     if args.json {
-        println!("{}", to_json(report)?);
+        output::print(&format!("{}\n", to_json(report)?))
     } else {
-        print!("{table}");
-        println!("wrote {} and {}", csv.display(), png.display());
+        output::print(&format!(
+            "{table}wrote {} and {}\n",
+            csv.display(),
+            png.display()
+        ))
     }
-    Ok(())
 }
 
 fn bench_stability(args: &BenchArgs) -> Result<()> {
@@ -592,11 +664,10 @@ fn theory(args: &TheoryArgs) -> Result<()> {
         crate::model::Params::new(args.n, args.b, args.alpha, m.gamma, m.gravity, m.inertia)?;
     let report = crate::theory::TheoryReport::compute(&params)?;
     if args.json {
-        println!("{}", to_json(&report)?);
+        output::print(&format!("{}\n", to_json(&report)?))
     } else {
-        print!("{}", report.to_table());
+        output::print(&report.to_table())
     }
-    Ok(())
 }
 
 /// Renders `scenes` into `out` in parallel (rayon), each file written
@@ -605,12 +676,23 @@ fn render_into(
     scenes: &[Scene],
     out: &OutArgs,
     movie: &MovieOptions,
+    outputs: &Outputs,
     words: Words,
     index: bool,
 ) -> Result<()> {
     let (out, verbose) = (out.out.as_path(), out.verbose);
     use rayon::prelude::*;
-    crate::output::check_writable(&out.join("index.html"))?;
+    convert::check_out_dir(out)?;
+    // Every target, index.html included, before anything is rendered.
+    let mut targets: Vec<std::path::PathBuf> = scenes
+        .iter()
+        .flat_map(|s| scenes::file_names_for(s, outputs))
+        .map(|name| out.join(name))
+        .collect();
+    if index {
+        targets.push(out.join("index.html"));
+    }
+    output::check_targets(&targets)?;
     let start = Instant::now();
     // One movie: a bar over its frames; several scenes: over the scenes.
     let one_movie = scenes.len() == 1 && scenes[0].kind() == Kind::Movie;
@@ -627,7 +709,7 @@ fn render_into(
     let written: Vec<Vec<String>> = scenes
         .par_iter()
         .map(|s| {
-            let files = scenes::render_observed(s, movie, &frame_done)
+            let files = scenes::render_with(s, movie, outputs, &frame_done)
                 .map_err(|e| with_divergence_hint(e, s, words))?;
             for (name, bytes) in &files {
                 crate::output::write_atomic(&out.join(name), bytes)?;
@@ -655,17 +737,18 @@ fn render_into(
         files.push("index.html".into());
     }
     if verbose {
-        for f in &files {
-            eprintln!("{}", out.join(f).display());
-        }
+        let list: String = files
+            .iter()
+            .map(|f| format!("{}\n", out.join(f).display()))
+            .collect();
+        output::eprint(&list)?;
     }
-    eprintln!(
-        "ladder: {} into {} in {:.2} s",
+    output::eprint(&format!(
+        "ladder: {} into {} in {:.2} s\n",
         summary(scenes, &files, index),
         out.display(),
         start.elapsed().as_secs_f64()
-    );
-    Ok(())
+    ))
 }
 
 /// "1 file", "3 files".

@@ -151,14 +151,15 @@ impl IntegratorConfig {
         if !(self.dt.is_finite() && self.dt > 0.0) {
             return Err(Error::bad_input(format!(
                 "dt must be a finite number > 0, got {}",
-                self.dt
+                crate::error::num(self.dt)
             )));
         }
         if let Some(r) = self.rtol
             && !(r.is_finite() && r > 0.0 && r < 1.0)
         {
             return Err(Error::bad_input(format!(
-                "rtol must be a number in (0, 1), got {r}"
+                "rtol must be a number in (0, 1), got {}",
+                crate::error::num(r)
             )));
         }
         Ok(self)

@@ -13,7 +13,8 @@ pub use integrators::{IntegratorConfig, IntegratorKind};
 pub use protocol::{Drive, Piece, Protocol};
 pub use rhs::{Rhs, State};
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, num};
+use crate::limits::{Limits, Resource};
 use crate::model::ladder::itheta;
 use crate::model::{Ladder, Params};
 use observables::{ArrivalDetector, kink_position};
@@ -44,7 +45,8 @@ impl Scenario {
         check_simulable(&params)?;
         if !(t_end.is_finite() && t_end >= 0.0) {
             return Err(Error::bad_input(format!(
-                "t_end must be a finite number >= 0, got {t_end}"
+                "t_end must be a finite number >= 0, got {}",
+                crate::error::num(t_end)
             )));
         }
         let ladder = Ladder::new(params);
@@ -65,7 +67,8 @@ pub fn check_simulable(params: &Params) -> Result<()> {
         Ok(())
     } else {
         Err(Error::bad_input(format!(
-            "alpha must satisfy 0 < |alpha| < 90 degrees for a simulation, got {deg}"
+            "alpha must satisfy 0 < |alpha| < 90 degrees for a simulation, got {}",
+            crate::error::num(deg)
         )))
     }
 }
@@ -167,6 +170,7 @@ pub fn simulate_with(
 
 /// As [`simulate_with`], telling `progress` the simulated time at every
 /// divergence check (every 5 τ, or 512 steps at most): for a progress bar.
+/// Within the caps in force ([`Limits::active`]).
 pub fn simulate_observed(
     scenario: &Scenario,
     sample_times: &[f64],
@@ -174,8 +178,88 @@ pub fn simulate_observed(
     stepping: Stepping,
     progress: &(dyn Fn(f64) + Sync),
 ) -> Result<Trajectory> {
+    let limits = Limits::active();
+    simulate_limited(scenario, sample_times, config, stepping, &limits, progress)
+}
+
+/// The cost of a run, computed before it starts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cost {
+    /// Steps of a fixed-step run (each interval between stops subdivided
+    /// into steps of at most dt); for adaptive dopri5, the fewest it can
+    /// take (steps of `DOPRI5_MAX_STEP`); it is bounded while it runs.
+    pub steps: f64,
+    /// Steps × N.
+    pub block_steps: f64,
+    /// Samples × N.
+    pub block_samples: f64,
+}
+
+/// The cost of running `scenario` with `samples` sample times (after
+/// deduplication) and `config`: refuses, before any work, a run past
+/// `limits` (`Error::Limit`: samples × N, then steps × N) and a step that
+/// cannot advance time (`Error::BadInput`, `limits::MAX_STEPS_PER_ULP_SPAN`;
+/// checked before steps × N, as no cap can allow it).
+pub fn check_cost(
+    scenario: &Scenario,
+    samples: usize,
+    config: &IntegratorConfig,
+    limits: &Limits,
+) -> Result<Cost> {
+    use crate::limits::{MAX_STEPS_PER_ULP_SPAN, count};
+    let config = config.validated()?;
+    let n = scenario.ladder.n();
+    let t_end = scenario.t_end;
+    limits.check_samples(samples as f64, n)?;
+    let adaptive = config.kind == IntegratorKind::Dopri5 && config.rtol.is_some();
+    let corners = scenario.protocol.drive().map_or(0, |d| d.corners().count());
+    let intervals = (samples + corners + 1) as f64;
+    let step = if adaptive {
+        integrators::DOPRI5_MAX_STEP
+    } else {
+        config.dt
+    };
+    let steps = (t_end / step).ceil() + intervals;
+    let cost = Cost {
+        steps,
+        block_steps: steps * n as f64,
+        block_samples: samples as f64 * n as f64,
+    };
+    if !adaptive && t_end / config.dt > MAX_STEPS_PER_ULP_SPAN {
+        return Err(Error::bad_input(format!(
+            "dt = {} is too small for t_end = {}: each step must exceed the rounding of t \
+             a thousandfold, so dt >= {} (or a shorter t_end)",
+            num(config.dt),
+            num(t_end),
+            num(t_end / MAX_STEPS_PER_ULP_SPAN)
+        )));
+    }
+    limits.check(Resource::BlockSteps, cost.block_steps, || {
+        let least = if adaptive { "at least " } else { "" };
+        format!(
+            "{least}{} steps of dt = {} up to t_end = {}, times N = {n}",
+            count(steps),
+            num(step),
+            num(t_end),
+        )
+    })?;
+    Ok(cost)
+}
+
+/// As [`simulate_observed`], within `limits` (checked before the run by
+/// [`check_cost`], and while it runs for adaptive steps).
+pub fn simulate_limited(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    limits: &Limits,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<Trajectory> {
     let config = config.validated()?;
     let samples = sorted_samples(sample_times, scenario.t_end)?;
+    check_cost(scenario, samples.len(), &config, limits)?;
+    let max_steps = limits.block_steps / scenario.ladder.n() as f64;
     let stops = stop_times(&samples, &scenario.protocol, scenario.t_end);
     let ladder = &scenario.ladder;
     let mut rhs = Rhs::new(ladder, &scenario.protocol, &scenario.initial.q);
@@ -203,11 +287,32 @@ pub fn simulate_observed(
             let budget = check_every - traj.steps % check_every;
             let (t_new, taken) =
                 integrator.advance_many(&mut rhs, &mut st, (t, stop), budget, &mut arrivals)?;
+            if taken > 0 && t_new <= t {
+                return Err(Error::failed(format!(
+                    "time stopped advancing at t = {} τ ({}): the step is below the rounding of t",
+                    num(t),
+                    config.describe_step()
+                )));
+            }
             t = t_new;
             traj.steps += taken;
             if traj.steps.is_multiple_of(check_every) {
                 watch.check(&rhs, &st, t)?;
                 progress(t);
+                if traj.steps as f64 > max_steps {
+                    return Err(Error::Limit(crate::limits::LimitExceeded {
+                        resource: Resource::BlockSteps,
+                        value: traj.steps as f64 * ladder.n() as f64,
+                        cap: limits.block_steps,
+                        detail: format!(
+                            "{} steps by t = {} of t_end = {} × N = {}, and counting",
+                            traj.steps,
+                            num(t),
+                            num(scenario.t_end),
+                            ladder.n()
+                        ),
+                    }));
+                }
             }
         }
         watch.check(&rhs, &st, t)?;

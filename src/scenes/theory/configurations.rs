@@ -10,21 +10,20 @@ use crate::render::charts::line_chart;
 use crate::render::compose::Panel;
 use crate::render::snapshot::{Region, Snapshot, pixel_of};
 use crate::render::style::{self, DARK};
-use crate::render::{Axis, ChartSpec, Legend, Marker, Series};
+use crate::render::{Axis, ChartSpec, Legend, Marker, Picture, Series};
 use crate::theory::figures::{gapless_configuration, zero_mode_shape};
 use crate::theory::gravity;
-use tiny_skia::Pixmap;
 
 /// Size of one full-ladder snapshot.
 const LADDER_SIZE: (u32, u32) = (200, 560);
 
 /// Fig. 2d: the ground states of both signs, and the two overlaid.
-pub fn ground_states(input: &FigureInput) -> Result<Pixmap> {
+pub fn ground_states(input: &FigureInput) -> Result<Picture> {
     let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha.abs());
     let plus = Ladder::new(input.params(n, b, alpha)?);
     let minus = Ladder::new(input.params(n, b, -alpha)?);
     let (qp, qm) = (plus.ground_state(), minus.ground_state());
-    let with_arrows = |ladder: &Ladder, q: &[f64]| -> Result<Pixmap> {
+    let with_arrows = |ladder: &Ladder, q: &[f64]| -> Result<Picture> {
         let mut p = configuration(ladder, q, None, LADDER_SIZE)?;
         orientation_arrows(&mut p, ladder, q)?;
         Ok(p)
@@ -46,7 +45,7 @@ pub fn ground_states(input: &FigureInput) -> Result<Pixmap> {
          blue B end; the arrow at its height points from B to A: its orientation, up in every \
          block of (i) and down in every block of (ii). The blocks of (i) and (ii) tilt the \
          opposite way (sin θ = ±{:.2}), while the centres coincide (iii). Both states have the \
-         same energy U_min = −2mgb per pair of blocks.",
+         same energy U_{{min}} = −2mgb per pair of blocks.",
         plus.a,
         alpha.to_radians().sin()
     );
@@ -57,10 +56,11 @@ pub fn ground_states(input: &FigureInput) -> Result<Pixmap> {
 /// to the right of the ladder at the height of the block's centre, parallel
 /// to the block and pointing from its B end to its A end (the paper's
 /// Fig. 2d: "Arrow indicates orientation of each block").
-fn orientation_arrows(p: &mut Pixmap, ladder: &Ladder, q: &[f64]) -> Result<()> {
+fn orientation_arrows(p: &mut Picture, ladder: &Ladder, q: &[f64]) -> Result<()> {
     let mut snap = Snapshot::new(ladder, q)?;
     snap.clamp = false;
-    let region = Region::full(p.width(), p.height());
+    let (w, h) = p.pixel_size();
+    let region = Region::full(w, h);
     let ends: Vec<((f32, f32), (f32, f32))> = (0..ladder.n())
         .map(|i| {
             let (a, b) = nodes(q, i);
@@ -91,7 +91,7 @@ fn orientation_arrows(p: &mut Pixmap, ladder: &Ladder, q: &[f64]) -> Result<()> 
 
 /// Fig. S3: the α = 0 configuration (b/s = 1.3, N = 10) beside its
 /// single-well U(θ) (eq:U_g with a² = b² + 4s²).
-pub fn gapless(input: &FigureInput) -> Result<Pixmap> {
+pub fn gapless(input: &FigureInput) -> Result<Picture> {
     let (n, b) = (input.model.n, input.model.b);
     let p = input.params(n, b, 0.0)?;
     let (a, q) = gapless_configuration(&p, n, b)?;
@@ -110,14 +110,14 @@ pub fn gapless(input: &FigureInput) -> Result<Pixmap> {
     let notes = format!(
         "b/s = {b}, a = √(b² + 4s²) = {a:.3} s: the A links are as long as the diagonal of a \
          pair of flat blocks, the blocks lie flat (θ = 0) and the double well of Fig. 2c \
-         degenerates into one flat-bottomed minimum (U − U_min ∝ θ⁴): the bistability and \
+         degenerates into one flat-bottomed minimum (U − U_{{min}} ∝ θ⁴): the bistability and \
          the gap ω₊(0) are lost."
     );
     frame(&input.title, &body, &notes, 760)
 }
 
 /// U(θ) for the gapless lengths with the minimum marked.
-fn gapless_potential(a: f64, b: f64) -> Result<Pixmap> {
+fn gapless_potential(a: f64, b: f64) -> Result<Picture> {
     let points: Vec<(f64, f64)> = (0..=720)
         .filter_map(|k| {
             let th = -89.75 + 179.5 * k as f64 / 720.0;
@@ -130,13 +130,13 @@ fn gapless_potential(a: f64, b: f64) -> Result<Pixmap> {
     )
     .series(Series::line("U(θ), a² = b² + 4s²", points, style::RED))
     .series(Series::scatter(
-        "U_min = −2mgb",
+        "U_{min} = −2mgb",
         vec![(0.0, gravity::u_min(b))],
         DARK,
         Marker::Circle,
     ));
     spec.legend = Legend::Auto;
-    Ok(line_chart(&spec, 560, 440)?.pixmap)
+    Ok(line_chart(&spec, 560, 440)?.into())
 }
 
 /// A residual that is zero to rounding as "< 10⁻¹²", otherwise 2 decimals.
@@ -150,7 +150,7 @@ fn tiny(x: f64) -> String {
 
 /// Fig. S4: the model's zero modes (top row, exact) and the paper's
 /// eq:zm_n shapes (bottom row) for m = 1, ε₀ = 0.1 and m = 5, ε₀ = 0.05.
-pub fn zero_modes(input: &FigureInput) -> Result<Pixmap> {
+pub fn zero_modes(input: &FigureInput) -> Result<Picture> {
     let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha);
     let p = input.params(n, b, alpha)?;
     let ladder = Ladder::new(p);
@@ -171,7 +171,7 @@ pub fn zero_modes(input: &FigureInput) -> Result<Pixmap> {
         );
         paper.push(
             Panel::new(configuration(&ladder, &z.paper, Some(&z.ground), size)?)
-                .label(format!("{primed} eq:zm_n"))
+                .label(format!("{primed} as printed"))
                 .caption(caption),
         );
         residuals.push((m, z.paper_residual, z.model_residual));
@@ -180,13 +180,13 @@ pub fn zero_modes(input: &FigureInput) -> Result<Pixmap> {
     let body = grid(&model, 4)?;
     let res: Vec<String> = residuals
         .iter()
-        .map(|(m, p, q)| format!("m = {m}: {p:.2} for eq:zm_n, {} for the model", tiny(*q)))
+        .map(|(m, p, q)| format!("m = {m}: {p:.2} as printed, {} for the model", tiny(*q)))
         .collect();
     let notes = format!(
         "N = {n}, b/s = {b}, α = {alpha}°; deformed configuration in colour, ground state in \
          grey. (a), (b): the model's true zero modes (null vectors of its compatibility \
          matrix, δv staggered, docs/paper-errata.md item 5); for m = 5 (k = π/b) the zero \
-         mode is a rigid shift along y. (a′), (b′): the paper's eq:zm_n as printed (Fig. S4), \
+         mode is a rigid shift along y. (a′), (b′): the paper's zero-mode formula as printed (Fig. S4), \
          which stretches the springs. Relative spring stretch |C δq|/|δq|: {}.",
         res.join("; ")
     );
@@ -196,6 +196,8 @@ pub fn zero_modes(input: &FigureInput) -> Result<Pixmap> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    use tiny_skia::Pixmap;
 
     /// Widest run of dark pixels in the `rows` rows from the top of the
     /// first (topmost) arrow.
@@ -223,9 +225,9 @@ mod tests {
         for alpha in [75.0, -75.0] {
             let ladder = Ladder::new(input.params(10, 1.2, alpha).unwrap());
             let q = ladder.ground_state();
-            let mut p = style::white_pixmap(LADDER_SIZE.0, LADDER_SIZE.1).unwrap();
+            let mut p = Picture::new(LADDER_SIZE.0 as f32, LADDER_SIZE.1 as f32);
             orientation_arrows(&mut p, &ladder, &q).unwrap();
-            widths.push(head_width_at_top(&p, 6));
+            widths.push(head_width_at_top(&p.to_pixmap().unwrap(), 6));
         }
         // An arrowhead at the top is wide; a shaft at the top is thin.
         assert!(widths[0] >= 6 && widths[1] <= 3, "{widths:?}");
