@@ -126,35 +126,58 @@ fn split_name(file: &str) -> (&str, &str) {
     file.rsplit_once('.').unwrap_or((file, ""))
 }
 
-/// The picture to show for each base name: a video where there is one,
-/// else an image the browser shows (GIF, PNG, SVG), in the order written.
-fn pictures(it: &Item<'_>) -> Vec<(String, bool)> {
-    let mut shown: Vec<(String, bool)> = Vec::new();
+/// What the page shows of one base name ("movie-4"): the file, whether it
+/// is a video, and for a video the image shown until it plays.
+#[derive(Debug, Clone, PartialEq)]
+struct Shown {
+    src: String,
+    video: bool,
+    poster: Option<String>,
+}
+
+/// How much the page prefers showing a file of this extension (lower
+/// first): a video, then an image the browser shows; `None` for the rest.
+fn show_rank(ext: &str) -> Option<u8> {
+    ["mp4", "gif", "png", "svg"]
+        .iter()
+        .position(|e| *e == ext)
+        .map(|p| p as u8)
+}
+
+/// The picture to show for each base name, in the order written: a video
+/// where there is one (with the base's GIF or PNG as its poster), else an
+/// image (GIF, PNG, SVG).
+fn pictures(it: &Item<'_>) -> Vec<Shown> {
+    let mut bases: Vec<(&str, Vec<&String>)> = Vec::new();
     for file in &it.files {
         let (base, ext) = split_name(file);
-        let rank = match ext {
-            "mp4" => 0,
-            "gif" => 1,
-            "png" => 2,
-            "svg" => 3,
-            _ => continue,
-        };
-        match shown.iter_mut().find(|(f, _)| split_name(f).0 == base) {
-            Some(entry) => {
-                let old = match split_name(&entry.0).1 {
-                    "mp4" => 0,
-                    "gif" => 1,
-                    "png" => 2,
-                    _ => 3,
-                };
-                if rank < old {
-                    *entry = (file.clone(), rank == 0);
-                }
-            }
-            None => shown.push((file.clone(), rank == 0)),
+        if show_rank(ext).is_none() {
+            continue;
+        }
+        match bases.iter_mut().find(|(b, _)| *b == base) {
+            Some((_, files)) => files.push(file),
+            None => bases.push((base, vec![file])),
         }
     }
-    shown
+    bases
+        .into_iter()
+        .filter_map(|(_, mut files)| {
+            files.sort_by_key(|f| show_rank(split_name(f).1));
+            let first = files.first()?;
+            let video = split_name(first).1 == "mp4";
+            let poster = files
+                .iter()
+                .skip(1)
+                .find(|f| matches!(split_name(f).1, "gif" | "png"))
+                .filter(|_| video)
+                .map(|f| f.to_string());
+            Some(Shown {
+                src: first.to_string(),
+                video,
+                poster,
+            })
+        })
+        .collect()
 }
 
 /// What a link to `file` says: "PNG", "kymograph (PNG)", "data (JSON)".
@@ -176,20 +199,26 @@ fn card(it: &Item<'_>) -> String {
     let title = describe::title(scene);
     let pictures: String = pictures(it)
         .iter()
-        .map(|(file, video)| {
-            let what = if split_name(file).0.ends_with("-kymograph") {
+        .map(|shown| {
+            let what = if split_name(&shown.src).0.ends_with("-kymograph") {
                 describe::kymograph()
             } else {
                 describe::picture(scene)
             };
             let alt = escape(&format!("{title}. {what}."));
-            let src = escape(file);
-            let template = if *video {
-                template::VIDEO
+            let src = escape(&shown.src);
+            if shown.video {
+                let poster = shown
+                    .poster
+                    .as_ref()
+                    .map_or(String::new(), |p| format!(" poster=\"{}\"", escape(p)));
+                fill(
+                    template::VIDEO,
+                    &[("src", &src), ("alt", &alt), ("poster", &poster)],
+                )
             } else {
-                template::IMAGE
-            };
-            fill(template, &[("src", &src), ("alt", &alt)])
+                fill(template::IMAGE, &[("src", &src), ("alt", &alt)])
+            }
         })
         .collect();
     let files: Vec<String> = it
@@ -303,8 +332,16 @@ mod tests {
         assert_eq!(
             pictures(&it),
             vec![
-                ("movie-4.mp4".to_string(), true),
-                ("movie-4-kymograph.png".to_string(), false)
+                Shown {
+                    src: "movie-4.mp4".into(),
+                    video: true,
+                    poster: Some("movie-4.gif".into())
+                },
+                Shown {
+                    src: "movie-4-kymograph.png".into(),
+                    video: false,
+                    poster: None
+                }
             ]
         );
         let html = card(&it);

@@ -10,12 +10,18 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-/// Renders the whole catalogue, small and fast, into a fresh folder.
-fn render_all(tag: &str) -> PathBuf {
+/// Renders the whole catalogue, small and fast, into a fresh folder, in
+/// the default formats or in `formats`.
+fn render_all(tag: &str, formats: Option<&str>) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("ladder-gallery-{tag}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
-    let out = Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args(["all", "--frames", "20", "--size", "320x240", "--out"])
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_ladder"));
+    cmd.args(["all", "--frames", "20", "--size", "320x240"]);
+    if let Some(f) = formats {
+        cmd.args(["--format", f]);
+    }
+    let out = cmd
+        .arg("--out")
         .arg(&dir)
         .output()
         .expect("the ladder binary runs");
@@ -39,7 +45,7 @@ fn attributes(html: &str, attr: &str) -> Vec<String> {
 
 #[test]
 fn every_link_and_picture_of_the_page_is_a_file_the_run_wrote() {
-    let dir = render_all("links");
+    let dir = render_all("links", None);
     let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
     let written: BTreeSet<String> = std::fs::read_dir(&dir)
         .unwrap()
@@ -250,10 +256,22 @@ fn every_image_and_video_loads_in_a_real_browser() {
         );
         return;
     };
-    let dir = render_all("browser");
+    // Every format, so that the page shows MP4 videos (with the GIF as
+    // poster) and links SVG and PDF files.
+    let formats = if cfg!(feature = "mp4") {
+        "png,svg,pdf,gif,mp4"
+    } else {
+        "png,svg,pdf,gif"
+    };
+    let dir = render_all("browser", Some(formats));
     let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
-    let expected = html.matches("<img ").count() + html.matches("<video ").count();
+    let videos = html.matches("<video ").count();
+    assert_eq!(videos, if cfg!(feature = "mp4") { 9 } else { 0 });
+    let expected = html.matches("<img ").count() + videos;
     assert!(expected >= 22, "one picture per scene at least");
+    for f in ["figure-3.svg", "figure-3.pdf"] {
+        assert!(html.contains(&format!("href=\"{f}\"")), "{f} not linked");
+    }
 
     let (media, height) = check_in_browser(&browser, &dir, &html, "check.html");
     assert_eq!(media.len(), expected, "every picture reported: {media:?}");
@@ -264,17 +282,22 @@ fn every_image_and_video_loads_in_a_real_browser() {
     std::fs::write(dir.join("corrupt.png"), b"not a png").unwrap();
     let bad = html.replacen("<img src=\"", "<img src=\"missing.png\" data-x=\"", 1);
     let bad = bad.replacen("<img src=\"figure-2b.png\"", "<img src=\"corrupt.png\"", 1);
+    let bad = bad.replacen(
+        "<video src=\"movie-3.mp4\"",
+        "<video src=\"missing.mp4\"",
+        1,
+    );
     let (media, _) = check_in_browser(&browser, &dir, &bad, "check-bad.html");
     let failed: BTreeSet<&str> = media
         .iter()
         .filter(|(_, ok)| !ok)
         .map(|(s, _)| s.as_str())
         .collect();
-    assert_eq!(
-        failed,
-        BTreeSet::from(["missing.png", "corrupt.png"]),
-        "{media:?}"
-    );
+    let mut broken = BTreeSet::from(["missing.png", "corrupt.png"]);
+    if videos > 0 {
+        broken.insert("missing.mp4");
+    }
+    assert_eq!(failed, broken, "{media:?}");
 
     // Screenshots to look at: the whole page on a wide screen, the top of
     // it on a phone-sized one.
