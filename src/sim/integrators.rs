@@ -220,7 +220,7 @@ fn subdivide(t: f64, t_stop: f64, dt: f64) -> (f64, bool) {
 /// The subdivision of the current interval [t, t_stop]: equal steps `h`,
 /// `left` of them still to take. Computed once per interval.
 #[derive(Debug, Clone, Copy, Default)]
-struct Plan {
+pub(super) struct Plan {
     t_stop: f64,
     h: f64,
     left: u64,
@@ -233,14 +233,19 @@ impl Plan {
         (h, last)
     }
 
+    /// Steps left in the current interval (0 before the first).
+    pub(super) fn left(&self) -> u64 {
+        self.left
+    }
+
     /// Returns `count` steps taken by [`Plan::take`] but not made.
-    fn give_back(&mut self, count: u64) {
+    pub(super) fn give_back(&mut self, count: u64) {
         self.left += count;
     }
 
     /// Up to `max` (≥ 1) steps towards `t_stop` from `t`: (h, how many,
     /// whether the last of them ends the interval).
-    fn take(&mut self, t: f64, t_stop: f64, dt: f64, max: u64) -> (f64, u64, bool) {
+    pub(super) fn take(&mut self, t: f64, t_stop: f64, dt: f64, max: u64) -> (f64, u64, bool) {
         if self.left == 0 || self.t_stop != t_stop {
             let span = t_stop - t;
             let n = (span / dt - 1e-6).ceil().max(1.0);
@@ -273,7 +278,7 @@ pub struct ImplicitDamping {
 impl ImplicitDamping {
     /// Recomputes the factors for step `h` in place (allocating only the
     /// first time).
-    fn set(&mut self, rhs: &Rhs, h: f64) {
+    pub(super) fn set(&mut self, rhs: &Rhs, h: f64) {
         let dof = rhs.damping_rate.len();
         self.decay.resize(dof, 0.0);
         self.kick.resize(dof, 0.0);

@@ -1,11 +1,14 @@
 //! Time integration of the ladder: the run loop, sampling at requested
 //! times, divergence detection, and the scenes' initial conditions.
 
+pub mod batch;
 pub mod fused;
 pub mod integrators;
 pub mod observables;
 pub mod protocol;
 pub mod rhs;
+#[cfg(target_arch = "x86_64")]
+mod simd;
 
 pub use fused::{Isa, Stepping};
 pub use integrators::{IntegratorConfig, IntegratorKind};
@@ -83,8 +86,11 @@ pub struct Trajectory {
     /// Arrival time per block: the first sign change of its polarisation
     /// sin θ_n (SPEC section 1), `None` where it never flipped.
     pub arrival_times: Vec<Option<f64>>,
-    /// State at t_end.
+    /// State at the end of the run: at t_end, or at `t_final` where a stop
+    /// rule ended it earlier ([`simulate_until`]).
     pub final_state: State,
+    /// The time the run reached (t_end unless a stop rule ended it).
+    pub t_final: f64,
     pub steps: u64,
     pub force_evals: u64,
 }
@@ -100,15 +106,12 @@ impl Trajectory {
         observables::angles_deg_unwrapped(&self.final_state.q)
     }
 
-    /// Records the state for every sample time not after `t` not yet recorded.
-    fn record_due(&mut self, samples: &[f64], next: &mut usize, t: f64, st: &State, alpha: f64) {
-        while *next < samples.len() && samples[*next] <= t {
-            self.times.push(samples[*next]);
-            self.states.push(st.q.clone());
-            self.velocities.push(st.v.clone());
-            self.kink_position.push(kink_position(&st.q, alpha));
-            *next += 1;
-        }
+    /// Stores a sample (the sink of [`simulate_with`]).
+    fn push(&mut self, sample: &Sample, alpha: f64) {
+        self.times.push(sample.t);
+        self.states.push(sample.q.to_vec());
+        self.velocities.push(sample.v.to_vec());
+        self.kink_position.push(kink_position(sample.q, alpha));
     }
 
     /// θ_n(t) of block `i` at every sample.
@@ -139,6 +142,27 @@ const MAX_TURNS: f64 = 4.0;
 /// Undriven energy growth, per spring, treated as a runaway.
 const MAX_UNDRIVEN_GROWTH: f64 = 1e-2;
 
+/// The state at one sample time, as the run loop hands it to a sink.
+#[derive(Debug, Clone, Copy)]
+pub struct Sample<'a> {
+    pub t: f64,
+    /// Positions, in the model's layout [X, Y, θ per block].
+    pub q: &'a [f64],
+    /// Velocities, same layout.
+    pub v: &'a [f64],
+}
+
+/// A stop rule: given the time reached and the arrival times so far, true
+/// once the run has decided what it was run for (a sweep's outcome,
+/// SPEC section 7). Asked at every divergence check (every 5 τ, at most
+/// 512 steps apart, and at every sample time and drive corner).
+pub type StopRule<'a> = dyn Fn(f64, &[Option<f64>]) -> bool + Sync + 'a;
+
+/// The stop rule that never stops a run before its t_end.
+pub fn run_to_end(_t: f64, _arrivals: &[Option<f64>]) -> bool {
+    false
+}
+
 /// Integrates `scenario` to its end, recording the state at `sample_times`
 /// (each in [0, t_end]) and observing arrival times at every step.
 /// A diverging run returns `Error::Failed` naming the integrator, its step
@@ -161,6 +185,48 @@ pub fn simulate_with(
     config: &IntegratorConfig,
     stepping: Stepping,
 ) -> Result<Trajectory> {
+    let alpha = scenario.ladder.params.alpha;
+    let mut kept = Trajectory::unsampled(State::at_rest(Vec::new()), 0.0, Vec::new(), 0, 0);
+    let mut traj = simulate_streaming(
+        scenario,
+        sample_times,
+        config,
+        stepping,
+        &run_to_end,
+        &mut |sample: &Sample| {
+            kept.push(sample, alpha);
+            Ok(())
+        },
+    )?;
+    (traj.times, traj.states, traj.velocities, traj.kink_position) =
+        (kept.times, kept.states, kept.velocities, kept.kink_position);
+    Ok(traj)
+}
+
+/// As [`simulate_with`] without samples, ending the run early once `stop`
+/// says so (t_end is then the cap): the single-run reference of
+/// [`batch::simulate_many`], which gives the same trajectories bit for bit.
+pub fn simulate_until(
+    scenario: &Scenario,
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    stop: &StopRule,
+) -> Result<Trajectory> {
+    simulate_streaming(scenario, &[], config, stepping, stop, &mut |_| Ok(()))
+}
+
+/// The run loop. Hands the state at every sample time to `sink` as it
+/// passes (memory stays proportional to N, however many samples: the
+/// returned trajectory holds none) and ends at t_end or where `stop` says.
+/// An error from `sink` ends the run with that error.
+pub fn simulate_streaming(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    stop: &StopRule,
+    sink: &mut dyn FnMut(&Sample) -> Result<()>,
+) -> Result<Trajectory> {
     let config = config.validated()?;
     let samples = sorted_samples(sample_times, scenario.t_end)?;
     let stops = stop_times(&samples, &scenario.protocol, scenario.t_end);
@@ -172,37 +238,80 @@ pub fn simulate_with(
     let mut watch = DivergenceWatch::new(ladder, &scenario.protocol, &config);
     let check_every = check_every(&config);
     let mut arrivals = ArrivalDetector::new(0.0, &st.q, &st.v);
-    let mut traj = Trajectory {
-        times: Vec::with_capacity(samples.len()),
-        states: Vec::with_capacity(samples.len()),
-        velocities: Vec::with_capacity(samples.len()),
-        kink_position: Vec::with_capacity(samples.len()),
-        arrival_times: Vec::new(),
-        final_state: st.clone(),
-        steps: 0,
-        force_evals: 0,
-    };
+    let mut steps = 0;
     let mut t = 0.0;
     let mut next_sample = 0;
-    traj.record_due(&samples, &mut next_sample, t, &st, ladder.params.alpha);
-    for &stop in &stops {
-        while t < stop {
-            let budget = check_every - traj.steps % check_every;
+    emit_due(&samples, &mut next_sample, t, &st, sink)?;
+    'run: for &stop_at in &stops {
+        while t < stop_at {
+            let budget = check_every - steps % check_every;
             let (t_new, taken) =
-                integrator.advance_many(&mut rhs, &mut st, (t, stop), budget, &mut arrivals)?;
+                integrator.advance_many(&mut rhs, &mut st, (t, stop_at), budget, &mut arrivals)?;
             t = t_new;
-            traj.steps += taken;
-            if traj.steps.is_multiple_of(check_every) {
+            steps += taken;
+            if steps.is_multiple_of(check_every) {
                 watch.check(&rhs, &st, t)?;
+                if stop(t, &arrivals.arrival) {
+                    break 'run;
+                }
             }
         }
         watch.check(&rhs, &st, t)?;
-        traj.record_due(&samples, &mut next_sample, t, &st, ladder.params.alpha);
+        emit_due(&samples, &mut next_sample, t, &st, sink)?;
+        if stop(t, &arrivals.arrival) {
+            break;
+        }
     }
-    traj.arrival_times = arrivals.arrival;
-    traj.final_state = st;
-    traj.force_evals = rhs.force_evals;
-    Ok(traj)
+    Ok(Trajectory::unsampled(
+        st,
+        t,
+        arrivals.arrival,
+        steps,
+        rhs.force_evals,
+    ))
+}
+
+impl Trajectory {
+    /// A trajectory without samples.
+    fn unsampled(
+        final_state: State,
+        t_final: f64,
+        arrival_times: Vec<Option<f64>>,
+        steps: u64,
+        force_evals: u64,
+    ) -> Self {
+        Self {
+            times: Vec::new(),
+            states: Vec::new(),
+            velocities: Vec::new(),
+            kink_position: Vec::new(),
+            arrival_times,
+            final_state,
+            t_final,
+            steps,
+            force_evals,
+        }
+    }
+}
+
+/// Hands `sink` the state for every sample time not after `t` not yet
+/// handed over.
+fn emit_due(
+    samples: &[f64],
+    next: &mut usize,
+    t: f64,
+    st: &State,
+    sink: &mut dyn FnMut(&Sample) -> Result<()>,
+) -> Result<()> {
+    while *next < samples.len() && samples[*next] <= t {
+        sink(&Sample {
+            t: samples[*next],
+            q: &st.q,
+            v: &st.v,
+        })?;
+        *next += 1;
+    }
+    Ok(())
 }
 
 /// Sample times sorted and deduplicated; each must lie in [0, t_end].
