@@ -6,6 +6,7 @@
 //! exactly on `t_stop` when the rest of the interval fits in one step; the
 //! run loop puts every sample time and every drive corner into `t_stop`.
 
+use super::chain::ChainEuler;
 use super::fused::{Batch, FusedEuler, Stepping};
 use super::observables::ArrivalDetector;
 use super::rhs::{Rhs, State};
@@ -174,6 +175,7 @@ impl IntegratorConfig {
                 let mut stepper = FixedStep::new(kind, dof, self.dt);
                 if kind == IntegratorKind::SymplecticEuler {
                     stepper.fused = FusedEuler::new(dof / 3, stepping);
+                    stepper.chain = ChainEuler::new(dof / 3, stepping);
                 }
                 Box::new(stepper)
             }
@@ -316,8 +318,10 @@ pub struct FixedStep {
     /// Symplectic Euler's factors for the last step size.
     damping: ImplicitDamping,
     plan: Plan,
-    /// Symplectic Euler's fused stepper, where available.
+    /// Symplectic Euler's fused stepper (N ≤ 32) or chain stepper
+    /// (longer ladders), where available.
     fused: Option<FusedEuler>,
+    chain: Option<ChainEuler>,
 }
 
 impl FixedStep {
@@ -332,6 +336,7 @@ impl FixedStep {
             damping: ImplicitDamping::default(),
             plan: Plan::default(),
             fused: None,
+            chain: None,
         }
     }
 
@@ -420,9 +425,9 @@ impl Integrator for FixedStep {
         max_steps: u64,
         arrivals: &mut ArrivalDetector,
     ) -> Result<(f64, u64)> {
-        let Some(fused) = self.fused else {
+        if self.fused.is_none() && self.chain.is_none() {
             return default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals);
-        };
+        }
         if max_steps == 0 || t >= t_stop {
             return Ok((t, 0));
         }
@@ -430,7 +435,7 @@ impl Integrator for FixedStep {
         self.implicit_damping(rhs, h);
         let Some(factors) = self.damping.uniform else {
             self.plan.give_back(count);
-            self.fused = None;
+            (self.fused, self.chain) = (None, None);
             return default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals);
         };
         let batch = Batch {
@@ -440,7 +445,11 @@ impl Integrator for FixedStep {
             t_stop,
             lands,
         };
-        let t_new = fused.run(rhs, st, &batch, factors, arrivals);
+        let t_new = match (self.fused, self.chain.as_mut()) {
+            (Some(fused), _) => fused.run(rhs, st, &batch, factors, arrivals),
+            (None, Some(chain)) => chain.run(rhs, st, &batch, factors, arrivals),
+            (None, None) => unreachable!("checked above"),
+        };
         Ok((t_new, count))
     }
 }

@@ -2,6 +2,7 @@
 //! times, divergence detection, and the scenes' initial conditions.
 
 pub mod batch;
+pub mod chain;
 pub mod fused;
 pub mod integrators;
 pub mod observables;

@@ -79,6 +79,7 @@ pub trait Simd:
     }
 
     /// Lane `i`.
+    #[cfg(test)]
     #[inline(always)]
     fn lane(self, i: usize) -> f64 {
         let mut out = [0.0; 16];
