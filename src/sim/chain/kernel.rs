@@ -99,7 +99,7 @@ pub trait Stepper {
 ///
 /// # Safety
 /// The CPU must support `isa`; `state` must have been made by
-/// [`ChainState::new`] for [`lanes`]`(isa)` lanes, with N ≥ 2.
+/// [`ChainState::new`] for [`lanes`]`(isa)` lanes, with N > lanes.
 pub unsafe fn run(
     isa: Isa,
     state: &mut ChainState,
@@ -110,7 +110,7 @@ pub unsafe fn run(
 ) -> f64 {
     let w = lanes(isa);
     let len = state.len();
-    assert!(state.n >= 2 && len == (state.n.div_ceil(w) + 1) * w);
+    assert!(state.n > w && len == (state.n.div_ceil(w) + 1) * w);
     assert!(
         [
             &state.y,
@@ -235,12 +235,10 @@ unsafe fn body<S: Simd>(
     t
 }
 
-/// A vector of blocks: centre, angle, r sin θ, r cos θ and both with the
-/// parity's sign.
+/// The angles of a vector of blocks: θ, r sin θ, r cos θ and both with
+/// the parity's sign.
 #[derive(Clone, Copy)]
-struct Blocks<S> {
-    x: S,
-    y: S,
+struct Angles<S> {
     theta: S,
     rs: S,
     rc: S,
@@ -248,8 +246,8 @@ struct Blocks<S> {
     rcp: S,
 }
 
-/// F_x, F_y and the torques on the lower (tu) and upper (tl) block of the
-/// springs below a vector of blocks.
+/// F_x, F_y and the torque on the lower block (tu) of the springs below a
+/// vector of blocks.
 #[derive(Clone, Copy)]
 struct Springs<S> {
     fx: S,
@@ -258,19 +256,11 @@ struct Springs<S> {
 }
 
 #[inline(always)]
-unsafe fn load<S: Simd>(m: &Mem, at: usize, parity: S) -> Blocks<S> {
+unsafe fn angles<S: Simd>(m: &Mem, at: usize, parity: S) -> Angles<S> {
     // SAFETY: the caller keeps `at` within the arrays, less a vector.
-    let (x, y, theta) = unsafe {
-        (
-            S::load(m.x.add(at)),
-            S::load(m.y.add(at)),
-            S::load(m.theta.add(at)),
-        )
-    };
+    let theta = unsafe { S::load(m.theta.add(at)) };
     let (rs, rc) = half_sin_cos(theta);
-    Blocks {
-        x,
-        y,
+    Angles {
         theta,
         rs,
         rc,
@@ -280,7 +270,8 @@ unsafe fn load<S: Simd>(m: &Mem, at: usize, parity: S) -> Blocks<S> {
 }
 
 /// One step: every vector of blocks in turn, block 1 set to `drive`
-/// ([X, Y, θ, θ̇]) if driven.
+/// ([X, Y, θ, θ̇]) if driven. The first and the last vector (where the
+/// springs end) are peeled off the loop.
 #[inline(always)]
 unsafe fn step<S: Simd>(
     m: &Mem,
@@ -292,46 +283,68 @@ unsafe fn step<S: Simd>(
 ) {
     let w = S::LANES;
     let minus_zero = S::splat(-0.0);
-    // SAFETY (every access below): vector i + 1 ≤ `vectors` lies within
-    // the arrays (one padding vector past the last).
-    let mut cur = unsafe { load(m, 0, c.parity) };
-    let mut above = Springs {
+    let above = Springs {
         fx: minus_zero,
         fy: minus_zero,
         tu: minus_zero,
     };
-    for i in 0..vectors {
-        let at = i * w;
-        let next = unsafe { load(m, at + w, c.parity) };
-        let masked = i + 1 == vectors;
-        let first = if i == 0 { drive } else { None };
-        above = unsafe { vector(m, at, &cur, &next, above, c, masked, times, stepper, first) };
+    // SAFETY (every access below): vector i + 1 ≤ `vectors` lies within
+    // the arrays (one padding vector past the last); `vectors` ≥ 2.
+    let mut cur = unsafe { angles(m, 0, c.parity) };
+    let mut next = unsafe { angles(m, w, c.parity) };
+    let mut above = match drive {
+        Some(d) => unsafe {
+            vector::<S, true, false>(m, 0, &cur, &next, above, c, times, stepper, d)
+        },
+        None => unsafe {
+            vector::<S, false, false>(m, 0, &cur, &next, above, c, times, stepper, [0.0; 4])
+        },
+    };
+    for i in 1..vectors - 1 {
         cur = next;
+        next = unsafe { angles(m, (i + 1) * w, c.parity) };
+        above = unsafe {
+            vector::<S, false, false>(m, i * w, &cur, &next, above, c, times, stepper, [0.0; 4])
+        };
     }
+    let at = (vectors - 1) * w;
+    cur = next;
+    next = unsafe { angles(m, at + w, c.parity) };
+    unsafe { vector::<S, false, true>(m, at, &cur, &next, above, c, times, stepper, [0.0; 4]) };
 }
 
-/// The springs below the blocks of `b` (at `at`), the blocks' update, store
-/// and arrival check; returns the springs.
+/// The springs below the blocks at `at` (angles `b`, the next vector's
+/// `next`), the blocks' update, store and arrival check; returns the
+/// springs. `FIRST`: block 1 is set to `drive`; `LAST`: the springs past
+/// block N are masked.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-unsafe fn vector<S: Simd>(
+unsafe fn vector<S: Simd, const FIRST: bool, const LAST: bool>(
     m: &Mem,
     at: usize,
-    b: &Blocks<S>,
-    next: &Blocks<S>,
+    b: &Angles<S>,
+    next: &Angles<S>,
     above: Springs<S>,
     c: &Consts<S>,
-    masked: bool,
     (t, t_new): (f64, f64),
     stepper: &mut dyn Stepper,
-    drive: Option<[f64; 4]>,
+    [cx, cy, th1, om1]: [f64; 4],
 ) -> Springs<S> {
     let one = S::splat(1.0);
+    // SAFETY: the caller keeps `at` within the arrays, less a vector; the
+    // blocks below (at + 1 …) are not yet stored this step.
+    let (x, y, lx, ly) = unsafe {
+        (
+            S::load(m.x.add(at)),
+            S::load(m.y.add(at)),
+            S::load(m.x.add(at + 1)),
+            S::load(m.y.add(at + 1)),
+        )
+    };
     // Each block's lower neighbour.
-    let (lx, ly) = (b.x.next(next.x), b.y.next(next.y));
     let (lrs, lrc) = (b.rs.next(next.rs), b.rc.next(next.rc));
     let (lrsp, lrcp) = (b.rsp.next(next.rsp), b.rcp.next(next.rcp));
-    let (ex, ey) = (lx - b.x, ly - b.y);
+    let (ex, ey) = (lx - x, ly - y);
     let (ux, uy) = (lrs - b.rs, lrcp - b.rcp);
     let (ax, ay, bx, by) = (ex - ux, ey - uy, ex + ux, ey + uy);
     let ka = one - c.a_rest / (ax * ax + ay * ay).sqrt();
@@ -342,7 +355,7 @@ unsafe fn vector<S: Simd>(
     let mut fy = fay + fby;
     let mut tu = dfx * lrc - dfy * lrsp;
     let mut tl = -(dfx * b.rc - dfy * b.rsp);
-    if masked {
+    if LAST {
         // Below block N: (+0, +0, −0); none on the padding blocks.
         fx = fx & c.last_springs;
         fy = fy & c.last_springs;
@@ -352,7 +365,7 @@ unsafe fn vector<S: Simd>(
     // Each block's spring above.
     let (afx, afy, atu) = (fx.prev(above.fx), fy.prev(above.fy), tu.prev(above.tu));
     let (gx, gy, gt) = ((c.minus_g + afx) - fx, afy - fy, atu + tl);
-    // SAFETY: the caller keeps `at` within the arrays.
+    // SAFETY: as above.
     let (vx0, vy0, vt0) = unsafe {
         (
             S::load(m.vx.add(at)),
@@ -363,10 +376,10 @@ unsafe fn vector<S: Simd>(
     let mut vx = vx0 * c.decay_xy - gx * c.kick_xy;
     let mut vy = vy0 * c.decay_xy - gy * c.kick_xy;
     let mut vt = vt0 * c.decay_theta - gt * c.kick_theta;
-    let mut x = b.x + vx * c.h;
-    let mut y = b.y + vy * c.h;
+    let mut x = x + vx * c.h;
+    let mut y = y + vy * c.h;
     let mut theta = b.theta + vt * c.h;
-    if let Some([cx, cy, th1, om1]) = drive {
+    if FIRST {
         let (first, zero) = (c.first, S::splat(0.0));
         x = x.select(S::splat(cx), first);
         y = y.select(S::splat(cy), first);
