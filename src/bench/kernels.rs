@@ -106,7 +106,10 @@ fn sweep_ways() -> Vec<(String, Stepping, bool)> {
         ("one-by-one".to_string(), Stepping::Fastest, false),
         ("batch".to_string(), Stepping::Fastest, true),
     ];
-    for isa in [Isa::Avx2, Isa::Avx512].into_iter().filter(|i| i.available()) {
+    for isa in [Isa::Avx2, Isa::Avx512]
+        .into_iter()
+        .filter(|i| i.available())
+    {
         ways.push((format!("batch-{}", isa.name()), Stepping::Fused(isa), true));
     }
     ways
