@@ -6,9 +6,11 @@
 //! cargo run --release --example kink_sweep -- --runs 100 [--n 10] [--t-end 4000]
 //!     [--dt 0.01] [--alpha-from 40] [--alpha-to 89.5]
 //!     [--mode batch|one-by-one|portable] [--stop never|reached]
+//!     [--integrator symplectic-euler|verlet]
 //! ```
 //!
-//! `batch` runs the runs as lanes of the batch kernel (`sim::batch`),
+//! `batch` runs the runs as lanes of the batch kernel (`sim::batch`, for
+//! symplectic Euler and velocity Verlet),
 //! `one-by-one` each with the fused kernel on every core, `portable` each
 //! on the portable path. `--stop reached` ends a run once the wave has
 //! reached block N − 1 (a crude stand-in for the sweep's outcome rule).
@@ -35,6 +37,7 @@ fn run() -> Result<(), String> {
     let (mut from, mut to) = (40.0, 89.5);
     let mut mode = "batch".to_string();
     let mut stop_rule = "never".to_string();
+    let mut integrator = "symplectic-euler".to_string();
     let args: Vec<String> = std::env::args().skip(1).collect();
     for pair in args.chunks(2) {
         let [flag, value] = pair else {
@@ -50,6 +53,7 @@ fn run() -> Result<(), String> {
             "--alpha-to" => to = num(value)?,
             "--mode" => mode = value.clone(),
             "--stop" => stop_rule = value.clone(),
+            "--integrator" => integrator = value.clone(),
             _ => return Err(format!("unknown flag {flag}")),
         }
     }
@@ -61,7 +65,10 @@ fn run() -> Result<(), String> {
         })
         .collect::<Result<_, _>>()
         .map_err(|e| e.to_string())?;
-    let config = IntegratorConfig::fixed(IntegratorKind::SymplecticEuler, dt);
+    let kind: IntegratorKind = integrator
+        .parse()
+        .map_err(|e: jacobs_ladder::Error| e.to_string())?;
+    let config = IntegratorConfig::fixed(kind, dt);
     let reached = |_t: f64, arrivals: &[Option<f64>]| {
         arrivals.len() >= 2 && arrivals[arrivals.len() - 2].is_some()
     };

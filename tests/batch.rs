@@ -153,6 +153,11 @@ fn every_run_of_a_batch_is_the_portable_run_bit_for_bit() {
     let scenarios = mixed();
     let config = IntegratorConfig::paper();
     assert_batch_matches_portable(&scenarios, &config, &sim::run_to_end);
+    // Velocity Verlet at the scenes' step (`auto`) and a finer one.
+    for dt in [0.25, 0.1] {
+        let verlet = IntegratorConfig::fixed(IntegratorKind::Verlet, dt);
+        assert_batch_matches_portable(&scenarios, &verlet, &sim::run_to_end);
+    }
     // The mix does what it is meant to: runs flip, one diverges.
     let many = batch::simulate_many(&scenarios, &config, &sim::run_to_end);
     let flipped = many
@@ -181,6 +186,8 @@ fn a_stop_rule_ends_runs_where_the_portable_path_ends_them() {
         arrivals.iter().filter(|a| a.is_some()).count() >= 5 || t > 200.0
     };
     assert_batch_matches_portable(&scenarios, &config, &stop);
+    let verlet = IntegratorConfig::fixed(IntegratorKind::Verlet, 0.25);
+    assert_batch_matches_portable(&scenarios, &verlet, &stop);
     let many = batch::simulate_many(&scenarios, &config, &stop);
     let early = many
         .iter()
@@ -202,9 +209,15 @@ fn other_steps_and_integrators_also_match() {
         let config = IntegratorConfig::fixed(IntegratorKind::SymplecticEuler, dt);
         assert_batch_matches_portable(&scenarios, &config, &sim::run_to_end);
     }
-    // Verlet goes one by one through the single-run path.
-    let config = IntegratorConfig::fixed(IntegratorKind::Verlet, 0.25);
-    assert_batch_matches_portable(&scenarios, &config, &sim::run_to_end);
+    // Verlet beyond its stability bound; RK4 goes one by one through the
+    // single-run path.
+    for config in [
+        IntegratorConfig::fixed(IntegratorKind::Verlet, 1.5),
+        IntegratorConfig::fixed(IntegratorKind::Verlet, 0.0137),
+        IntegratorConfig::fixed(IntegratorKind::Rk4, 0.25),
+    ] {
+        assert_batch_matches_portable(&scenarios, &config, &sim::run_to_end);
+    }
     // Bad input reaches every run.
     let bad = IntegratorConfig::fixed(IntegratorKind::SymplecticEuler, -1.0);
     let many = batch::simulate_many(&scenarios, &bad, &sim::run_to_end);

@@ -56,7 +56,14 @@ pub fn simulate_many_with(
 ) -> Vec<Result<Trajectory>> {
     let valid = config.validated();
     let isa = match (&valid, batch_isa(stepping)) {
-        (Ok(c), Some(isa)) if c.kind == IntegratorKind::SymplecticEuler => isa,
+        (Ok(c), Some(isa))
+            if matches!(
+                c.kind,
+                IntegratorKind::SymplecticEuler | IntegratorKind::Verlet
+            ) =>
+        {
+            isa
+        }
         _ => {
             return scenarios
                 .par_iter()
@@ -125,9 +132,11 @@ impl<'s> Job<'_, 's> {
     fn work(&self) -> Vec<(usize, Result<Trajectory>)> {
         let n = self.scenarios[self.queue[0]].ladder.n();
         let width = kernel::lanes(self.isa);
+        let mut state = kernel::LaneState::new(n, width);
+        state.verlet = self.config.kind == IntegratorKind::Verlet;
         let mut w = Worker {
             job: self,
-            state: kernel::LaneState::new(n, width),
+            state,
             lanes: (0..width).map(|_| None).collect(),
             idle: State::at_rest(self.scenarios[self.queue[0]].initial.q.clone()),
             out: Vec::new(),
@@ -194,7 +203,7 @@ impl Worker<'_, '_, '_> {
     fn fill(&mut self, lane: usize) {
         while let Some(index) = self.job.take() {
             let scenario = &self.job.scenarios[index];
-            let run = Run::start(index, scenario, &self.job.config);
+            let mut run = Run::start(index, scenario, &self.job.config);
             if run.stops.is_empty() {
                 // t_end = 0: nothing to step.
                 let st = run.start_state();
@@ -203,6 +212,18 @@ impl Worker<'_, '_, '_> {
             }
             let st = run.start_state();
             self.put(lane, &st, &run.arrivals, Some(&run));
+            if self.state.verlet {
+                // Verlet's acceleration at the start (its first step
+                // computes it; every later step reuses the last one's).
+                let mut acc = vec![0.0; st.q.len()];
+                run.rhs.conservative(&st.q, &mut acc);
+                let s = &mut self.state;
+                for i in 0..s.n {
+                    let at = i * s.lanes + lane;
+                    (s.ax[at], s.ay[at], s.atheta[at]) =
+                        (acc[3 * i], acc[3 * i + 1], acc[3 * i + 2]);
+                }
+            }
             self.lanes[lane] = Some(run);
             return;
         }
@@ -229,6 +250,7 @@ impl Worker<'_, '_, '_> {
                 None => [f64::NEG_INFINITY, f64::INFINITY],
             };
             (s.window_lo[at], s.window_hi[at]) = (lo, hi);
+            (s.ax[at], s.ay[at], s.atheta[at]) = (0.0, 0.0, 0.0);
         }
         let p = &mut s.params;
         let ladder = run.map(|r| r.rhs.ladder);
@@ -241,37 +263,47 @@ impl Worker<'_, '_, '_> {
         (p.t[lane], p.t_stop[lane], p.lands[lane]) = (0.0, 0.0, 0.0);
         (p.h[lane], p.decay_xy[lane], p.kick_xy[lane]) = (0.0, 1.0, 0.0);
         (p.decay_theta[lane], p.kick_theta[lane]) = (1.0, 0.0);
-        set_piece(
-            p,
-            lane,
-            &Piece::Hold {
-                theta: 0.0,
-                from: 0.0,
-                until: f64::INFINITY,
-            },
-        );
+        (p.half[lane], p.rate_xy[lane], p.rate_theta[lane]) = (0.0, 0.0, 0.0);
+        (p.inv_mass_xy[lane], p.inv_mass_theta[lane]) = (0.0, 0.0);
+        (p.div_xy[lane], p.div_theta[lane]) = (1.0, 1.0);
+        let hold = Piece::Hold {
+            theta: 0.0,
+            from: 0.0,
+            until: f64::INFINITY,
+        };
+        set_piece(&mut p.piece, lane, &hold);
+        set_piece(&mut p.next_piece, lane, &hold);
+        p.until[lane] = f64::INFINITY;
         (p.land_theta[lane], p.land_omega[lane]) = (0.0, 0.0);
     }
 }
 
-/// The drive piece of a lane's next steps into its parameters.
+/// A drive piece into a lane's parameters.
 #[cfg(target_arch = "x86_64")]
-fn set_piece(p: &mut kernel::LaneParams, lane: usize, piece: &Piece) {
+fn set_piece(p: &mut kernel::PieceLanes, lane: usize, piece: &Piece) {
     match *piece {
         Piece::Hold { theta, .. } => {
             p.ramp[lane] = 0.0;
             p.hold_theta[lane] = theta;
             (p.theta_start[lane], p.theta_delta[lane]) = (0.0, 0.0);
-            (p.ramp_t0[lane], p.ramp_span[lane]) = (0.0, 1.0);
+            (p.t0[lane], p.span[lane]) = (0.0, 1.0);
             p.omega[lane] = 0.0;
         }
         Piece::Ramp { start, end, slope } => {
             p.ramp[lane] = -0.0;
             p.hold_theta[lane] = 0.0;
             (p.theta_start[lane], p.theta_delta[lane]) = (start.1, end.1 - start.1);
-            (p.ramp_t0[lane], p.ramp_span[lane]) = (start.0, end.0 - start.0);
+            (p.t0[lane], p.span[lane]) = (start.0, end.0 - start.0);
             p.omega[lane] = slope;
         }
+    }
+}
+
+/// The time a drive piece ends (the next one starts).
+fn piece_end(piece: &Piece) -> f64 {
+    match *piece {
+        Piece::Hold { until, .. } => until,
+        Piece::Ramp { end, .. } => end.0,
     }
 }
 
@@ -346,24 +378,46 @@ impl<'s> Run<'s> {
         let stop_at = self.stops[self.next_stop];
         let (h, taken, lands) = self.plan.take(self.t, stop_at, config.dt, count);
         debug_assert_eq!(taken, count);
-        if h != self.damping.h {
-            self.damping.set(&self.rhs, h);
-        }
-        let (decay, kick) = self
-            .damping
-            .uniform
-            .expect("the ladder's free blocks share their damping factors");
-        debug_assert!(decay[0] == decay[1] && kick[0] == kick[1]);
         p.h[lane] = h;
-        (p.decay_xy[lane], p.kick_xy[lane]) = (decay[0], kick[0]);
-        (p.decay_theta[lane], p.kick_theta[lane]) = (decay[2], kick[2]);
+        if config.kind == IntegratorKind::Verlet {
+            // `FixedStep::verlet`'s factors, for a free block (block 1,
+            // where driven, is set by the drive).
+            let half = 0.5 * h;
+            let (rate, inv_mass) = (&self.rhs.damping_rate, self.rhs.inv_mass());
+            p.half[lane] = half;
+            (p.rate_xy[lane], p.rate_theta[lane]) = (rate[3], rate[5]);
+            (p.inv_mass_xy[lane], p.inv_mass_theta[lane]) = (inv_mass[3], inv_mass[5]);
+            p.div_xy[lane] = 1.0 + half * rate[3];
+            p.div_theta[lane] = 1.0 + half * rate[5];
+        } else {
+            if h != self.damping.h {
+                self.damping.set(&self.rhs, h);
+            }
+            let (decay, kick) = self
+                .damping
+                .uniform
+                .expect("the ladder's free blocks share their damping factors");
+            debug_assert!(decay[0] == decay[1] && kick[0] == kick[1]);
+            (p.decay_xy[lane], p.kick_xy[lane]) = (decay[0], kick[0]);
+            (p.decay_theta[lane], p.kick_theta[lane]) = (decay[2], kick[2]);
+        }
         p.t[lane] = self.t;
         p.t_stop[lane] = stop_at;
         p.lands[lane] = if lands { -0.0 } else { 0.0 };
         if let Some((drive, _)) = self.drive {
             // Every step but a landing one ends inside the interval, hence
-            // inside the piece in force just after its start.
-            set_piece(p, lane, &drive.piece(self.t + h));
+            // inside the piece in force just after its start; a landing
+            // step's t + h may fall just past its end, in the next piece.
+            let piece = drive.piece(self.t + h);
+            let until = piece_end(&piece);
+            set_piece(&mut p.piece, lane, &piece);
+            let next = if until.is_finite() {
+                drive.piece(until)
+            } else {
+                piece
+            };
+            set_piece(&mut p.next_piece, lane, &next);
+            p.until[lane] = until;
             (p.land_theta[lane], p.land_omega[lane]) = (drive.theta(stop_at), drive.omega(stop_at));
         }
     }
@@ -414,12 +468,14 @@ impl<'s> Run<'s> {
     }
 
     fn finish_ref(&mut self, st: State) -> Trajectory {
+        // One force evaluation per step, and Verlet's first acceleration.
+        let evals = self.steps + self.rhs.force_evals.min(self.steps);
         Trajectory::unsampled(
             st,
             self.t,
             std::mem::take(&mut self.arrivals.arrival),
             self.steps,
-            self.steps,
+            evals,
         )
     }
 
