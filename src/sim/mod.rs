@@ -18,6 +18,7 @@ pub use rhs::{Rhs, State};
 
 use crate::error::{Error, Result};
 use crate::model::ladder::itheta;
+use crate::model::params::M;
 use crate::model::{Ladder, Params};
 use observables::{ArrivalDetector, kink_position};
 
@@ -379,12 +380,16 @@ impl DivergenceWatch {
         if max_theta > MAX_TURNS * std::f64::consts::TAU {
             return Err(self.diverged(t, "a block turned more than four times"));
         }
-        let elastic = rhs.ladder.elastic_energy(&st.q);
+        let ladder = rhs.ladder;
+        let elastic = ladder.elastic_energy(&st.q);
         if elastic > self.max_elastic {
             return Err(self.diverged(t, "the springs stretched beyond any physical state"));
         }
         if t >= self.drive_end {
-            let e = rhs.mechanical_energy(st);
+            // `Rhs::mechanical_energy`, with the elastic part computed once.
+            let gravity: f64 = st.q.iter().step_by(3).sum();
+            let potential = elastic - M * ladder.params.gravity * gravity;
+            let e = ladder.kinetic_energy(&st.v) + potential;
             self.undriven_min = self.undriven_min.min(e);
             if e > self.undriven_min + self.max_growth {
                 return Err(self.diverged(t, "the energy grew while nothing drove the ladder"));
