@@ -45,9 +45,11 @@ pub fn simulate_many(
 }
 
 /// As [`simulate_many`], with the steps taken as `stepping` says:
-/// `Fastest` or `Fused(isa)` use the batch kernel (for that instruction
-/// set, if the CPU has it), `Portable` runs each scenario on the portable
-/// path; all give the same trajectories bit for bit.
+/// `Fused(isa)` uses the batch kernel for that instruction set (if the CPU
+/// has it), `Fastest` the one for the best set this CPU has, except for
+/// groups of N too small to fill the lanes, which run one by one with the
+/// fastest single-run kernel; `Portable` runs each scenario on the portable
+/// path. All give the same trajectories bit for bit.
 pub fn simulate_many_with(
     scenarios: &[Scenario],
     config: &IntegratorConfig,
@@ -77,9 +79,21 @@ pub fn simulate_many_with(
         groups.entry(sc.ladder.n()).or_default().push(i);
     }
     let mut results: Vec<Option<Result<Trajectory>>> = scenarios.iter().map(|_| None).collect();
+    let threads = rayon::current_num_threads();
     for queue in groups.values() {
+        if stepping == Stepping::Fastest && queue.len() < SMALL_GROUP_PER_THREAD * threads {
+            // Too few runs to fill the lanes: one by one on every core.
+            let done: Vec<_> = queue
+                .par_iter()
+                .map(|&i| (i, simulate_until(&scenarios[i], &config, stepping, stop)))
+                .collect();
+            for (i, result) in done {
+                results[i] = Some(result);
+            }
+            continue;
+        }
         let next = AtomicUsize::new(0);
-        let workers = rayon::current_num_threads().clamp(1, queue.len());
+        let workers = threads.clamp(1, queue.len());
         let job = Job {
             isa,
             config,
@@ -100,6 +114,12 @@ pub fn simulate_many_with(
         .map(|(r, sc)| r.unwrap_or_else(|| simulate_until(sc, &config, Stepping::Portable, stop)))
         .collect()
 }
+
+/// With `Stepping::Fastest`, groups of fewer runs of one N than this many
+/// per thread run one by one (`benches/kernels.rs`, `block_step_vs_runs`:
+/// a vector of lanes costs about as much per step as three single runs in
+/// the fused kernel, so it pays from about three runs per vector on).
+const SMALL_GROUP_PER_THREAD: usize = 3;
 
 /// The batch kernel's instruction set for `stepping`, if this CPU has it.
 fn batch_isa(stepping: Stepping) -> Option<Isa> {
