@@ -1,7 +1,7 @@
 //! `index.html`: every figure and movie of the catalogue with its caption,
 //! parameters and the fidelity of the model behind it.
 
-use crate::catalog::{Entry, Output};
+use crate::scene::{Kind, Scene, describe};
 
 fn escape(s: &str) -> String {
     s.replace('&', "&amp;")
@@ -10,42 +10,59 @@ fn escape(s: &str) -> String {
         .replace('"', "&quot;")
 }
 
-fn item(e: &Entry) -> String {
-    let images: String = e
-        .files()
+/// One rendered scene for the page: the scene and the files it wrote.
+pub struct Item<'a> {
+    pub scene: &'a Scene,
+    pub files: Vec<String>,
+}
+
+fn item(it: &Item<'_>) -> String {
+    let scene = it.scene;
+    let images: String = it
+        .files
         .iter()
+        .filter(|f| f.ends_with(".png") || f.ends_with(".gif"))
         .map(|f| {
             format!(
-                "<a href=\"{0}\"><img src=\"{0}\" alt=\"{0}\"></a>",
-                escape(f)
+                "<a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a>",
+                escape(f),
+                escape(&describe::title(scene))
             )
         })
         .collect();
+    let data: String = it
+        .files
+        .iter()
+        .filter(|f| f.ends_with(".json"))
+        .map(|f| format!(" <a href=\"{0}\">data</a>", escape(f)))
+        .collect();
+    let caption = scene.caption.as_deref().unwrap_or("");
     format!(
-        "<figure id=\"{kind}-{id}\">{images}<figcaption><b>{title}.</b> {caption}<br>\
-         <small>{params}</small></figcaption></figure>\n",
-        kind = if e.output == Output::Figure {
-            "figure"
-        } else {
-            "movie"
-        },
-        id = escape(e.id),
-        title = escape(e.title),
-        caption = escape(e.caption),
-        params = escape(&e.parameters()),
+        "<figure id=\"{stem}\">{images}<figcaption><b>{title}.</b> {caption}<br>\
+         <small>{params}; model: {fidelity}.{data}</small></figcaption></figure>\n",
+        stem = escape(&scene.stem()),
+        title = escape(&describe::title(scene)),
+        caption = escape(caption),
+        params = escape(&describe::parameters(scene)),
+        fidelity = scene.fidelity().name(),
     )
 }
 
-/// The gallery page for `entries` (files named as `Entry::files`).
-pub fn index_html(entries: &[&Entry]) -> String {
+/// The gallery page for `items`.
+pub fn index_html(items: &[Item<'_>]) -> String {
     let mut body = String::new();
     for (heading, kind) in [
-        ("Figures", Output::Figure),
-        ("Supplemental movies", Output::Movie),
+        ("Figures", Kind::Figure),
+        ("Supplemental movies", Kind::Movie),
+        ("Data", Kind::Data),
     ] {
+        let of_kind: Vec<&Item<'_>> = items.iter().filter(|i| i.scene.kind() == kind).collect();
+        if of_kind.is_empty() {
+            continue;
+        }
         body.push_str(&format!("<h2>{heading}</h2>\n"));
-        for e in entries.iter().filter(|e| e.output == kind) {
-            body.push_str(&item(e));
+        for it in of_kind {
+            body.push_str(&item(it));
         }
     }
     format!(

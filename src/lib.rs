@@ -22,6 +22,7 @@ pub mod bench;
 pub mod catalog;
 pub mod cli;
 pub mod output;
+pub mod scene;
 
 pub use error::{Error, Result};
 pub mod gallery;

@@ -6,26 +6,44 @@
 mod common;
 
 use common::golden::check;
-use jacobs_ladder::catalog::TheoryFigure;
+use jacobs_ladder::catalog;
 use jacobs_ladder::encode::png_bytes;
-use jacobs_ladder::scenes::theory::render;
+use jacobs_ladder::scene::{Kind, OutputSpec, TheoryFigure, describe};
+use jacobs_ladder::scenes::theory::{FigureInput, render as render_with};
+use tiny_skia::Pixmap;
 
-const ALL: [TheoryFigure; 9] = [
-    TheoryFigure::UnitSchematic,
-    TheoryFigure::GravityPotential,
-    TheoryFigure::GroundStates,
-    TheoryFigure::Gapless,
-    TheoryFigure::ZeroModes,
-    TheoryFigure::Dispersion,
-    TheoryFigure::Winding,
-    TheoryFigure::EdgeMode,
-    TheoryFigure::Barrier,
-];
+/// Every theory figure of the catalogue.
+fn all() -> Vec<TheoryFigure> {
+    catalog::entries(Kind::Figure)
+        .unwrap()
+        .into_iter()
+        .filter_map(|e| match &e.scene.output {
+            OutputSpec::Theory(t) => Some(t.figure),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The figure as the catalogue draws it.
+fn render(fig: TheoryFigure) -> jacobs_ladder::Result<Pixmap> {
+    let entry = catalog::entries(Kind::Figure)
+        .unwrap()
+        .into_iter()
+        .find(|e| matches!(&e.scene.output, OutputSpec::Theory(t) if t.figure == fig))
+        .unwrap();
+    let OutputSpec::Theory(spec) = &entry.scene.output else {
+        unreachable!()
+    };
+    let input = FigureInput::new(describe::title(&entry.scene), &entry.scene.model, spec);
+    render_with(fig, &input)
+}
 
 #[test]
 fn every_figure_renders_non_blank_and_deterministic() {
     let dir = std::env::var("LADDER_FIGURE_DIR").ok();
-    for fig in ALL {
+    let figures = all();
+    assert_eq!(figures.len(), 9);
+    for fig in figures {
         let p = render(fig).unwrap_or_else(|e| panic!("{fig:?}: {e}"));
         let (w, h) = (p.width(), p.height());
         assert!(

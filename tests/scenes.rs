@@ -1,12 +1,17 @@
-//! The paper's scenes: every catalogue entry renders; the movies show what
-//! the paper says (SPEC section 2); golden images of figure 3 and a kymograph.
+//! The paper's scenes: every catalogue entry renders, with its data file;
+//! the movies show what the paper says (SPEC section 2); a printed scene
+//! renders back to the same bytes; golden images of figure 3 and a
+//! kymograph; custom movies at N = 2, 40 and 200.
+
+#![allow(clippy::field_reassign_with_default)]
 
 mod common;
 
 use common::golden::check;
-use jacobs_ladder::catalog::{self, CATALOGUE, Content, Output, SimSpec};
+use jacobs_ladder::catalog;
 use jacobs_ladder::model::ladder::itheta;
-use jacobs_ladder::scenes::{self, MovieOptions, dynamic};
+use jacobs_ladder::scene::{self, Kind, Scene};
+use jacobs_ladder::scenes::{self, MovieOptions, dynamic, run};
 
 const SMALL: MovieOptions = MovieOptions {
     frames: 3,
@@ -16,37 +21,80 @@ const SMALL: MovieOptions = MovieOptions {
 };
 
 #[test]
-fn every_catalogue_entry_renders() {
-    for entry in CATALOGUE {
-        let files = scenes::render(entry, &SMALL)
-            .unwrap_or_else(|e| panic!("{} {}: {e}", entry.id, entry.title));
-        assert_eq!(files.len(), entry.files().len(), "{}", entry.id);
+fn every_catalogue_entry_renders_with_its_data() {
+    for entry in catalog::catalogue().unwrap() {
+        let files =
+            scenes::render(&entry.scene, &SMALL).unwrap_or_else(|e| panic!("{}: {e}", entry.id));
+        assert_eq!(files.len(), scenes::file_names(&entry.scene).len());
         for (name, bytes) in &files {
             assert!(bytes.len() > 100, "{name} is nearly empty");
             let magic: &[u8] = if name.ends_with(".gif") {
                 b"GIF89a"
+            } else if name.ends_with(".json") {
+                b"{"
             } else {
                 b"\x89PNG"
             };
             assert!(bytes.starts_with(magic), "{name}");
         }
+        let (_, json) = files.last().unwrap();
+        let v: serde_json::Value = serde_json::from_slice(json).unwrap();
+        assert_eq!(v["version"], env!("CARGO_PKG_VERSION"));
+        assert_eq!(v["scene"]["model"]["n"], entry.scene.model.n);
+        if entry.scene.fidelity() == scene::Fidelity::Simulation {
+            let runs = v["runs"].as_array().unwrap();
+            assert!(!runs.is_empty(), "{}", entry.id);
+            for r in runs {
+                let err = r["integrator"]["arrival_error"].as_f64().unwrap();
+                assert!(err <= entry.scene.run.tolerance, "{}: {err}", entry.id);
+                assert_eq!(
+                    r["arrival_times"].as_array().unwrap().len(),
+                    r["model"]["n"]
+                );
+            }
+        }
     }
 }
 
-fn movie_sim(id: &str) -> SimSpec {
-    match catalog::find(Output::Movie, id).unwrap().content {
-        Content::Movie { sim, .. } => sim,
-        _ => unreachable!("movies hold a simulation"),
+#[test]
+fn a_printed_scene_renders_to_the_same_bytes() {
+    for entry in catalog::catalogue().unwrap() {
+        let text = scene::file::to_toml(&entry.scene).unwrap();
+        let back = scene::file::parse(&text, "printed", &entry.id).unwrap();
+        assert_eq!(back, entry.scene, "{}", entry.id);
+        if entry.scene.kind() == Kind::Figure {
+            let a = scenes::render(&entry.scene, &SMALL).unwrap();
+            let b = scenes::render(&back, &SMALL).unwrap();
+            assert!(
+                a == b,
+                "{}: the printed scene renders differently",
+                entry.id
+            );
+        }
     }
+    // And one movie through the file path, byte for byte.
+    let movie = &catalog::find(Kind::Movie, "4").unwrap().scene;
+    let text = scene::file::to_toml(movie).unwrap();
+    let back = scene::file::parse(&text, "printed", "4").unwrap();
+    assert!(scenes::render(movie, &SMALL).unwrap() == scenes::render(&back, &SMALL).unwrap());
 }
 
-/// Signs of θ_n of every block at every frame of a movie.
+fn movie_scene(id: &str) -> Scene {
+    catalog::find(Kind::Movie, id).unwrap().scene.clone()
+}
+
+/// Signs of sin θ_n of every block at every frame of a movie.
 fn frame_signs(id: &str, frames: usize) -> Vec<Vec<f64>> {
-    let sim = movie_sim(id);
-    let traj = dynamic::run(&sim, &dynamic::frame_times(sim.t_end, frames)).unwrap();
-    traj.states
+    let s = movie_scene(id);
+    let r = run::simulate(&s, &dynamic::frame_times(s.run.t_end, frames)).unwrap();
+    r.trajectory
+        .states
         .iter()
-        .map(|q| (0..sim.n).map(|i| q[itheta(i)].signum()).collect())
+        .map(|q| {
+            (0..s.model.n)
+                .map(|i| q[itheta(i)].sin().signum())
+                .collect()
+        })
         .collect()
 }
 
@@ -95,18 +143,52 @@ fn fitted_speed_of_evenly_spaced_arrivals() {
 
 #[test]
 fn golden_figure_3() {
-    let entry = catalog::find(Output::Figure, "3").unwrap();
-    let Content::Strips(strips) = entry.content else {
-        unreachable!("figure 3 is strips")
-    };
-    let image = dynamic::strips_figure("Fig. 3", strips, (86, 200)).unwrap();
+    let scene = &catalog::find(Kind::Figure, "3").unwrap().scene;
+    let (image, _) = dynamic::filmstrip_figure(scene, Some((86, 200))).unwrap();
     check("figure-3-small", &image);
 }
 
 #[test]
 fn golden_kymograph_movie_7() {
-    let sim = movie_sim("7");
-    let traj = dynamic::run(&sim, &dynamic::frame_times(sim.t_end, 60)).unwrap();
-    let image = dynamic::kymograph_image("Movie 7", &traj, sim.n, 320, 240).unwrap();
+    let s = movie_scene("7");
+    let r = run::simulate(&s, &dynamic::frame_times(s.run.t_end, 60)).unwrap();
+    let image = dynamic::kymograph_image("Movie 7", &r.trajectory, s.model.n, 320, 240).unwrap();
     check("kymograph-movie-7", &image);
+}
+
+/// A custom movie at N blocks: both ends of every block stay inside the
+/// ladder's part of the frame at every frame, as the movie draws them.
+#[test]
+fn custom_movies_at_2_40_and_200_blocks_keep_every_block_in_the_frame() {
+    for (n, t_end) in [(2, 1500.0), (40, 2500.0), (200, 1500.0)] {
+        let mut s = Scene::default();
+        s.name = format!("n{n}");
+        s.model.n = n;
+        s.run.t_end = t_end;
+        let opts = MovieOptions {
+            frames: 20,
+            width: 320,
+            height: 240,
+            fps: 10.0,
+        };
+        let files = scenes::render(&s, &opts).unwrap_or_else(|e| panic!("N = {n}: {e}"));
+        assert_eq!(files[0].0, format!("movie-n{n}.gif"));
+        let v: serde_json::Value = serde_json::from_slice(&files[2].1).unwrap();
+        assert_eq!(v["runs"][0]["frames"].as_array().unwrap().len(), 20);
+        let (region, frames) = dynamic::movie_block_pixels(&s, &opts).unwrap();
+        assert_eq!(frames.len(), 20);
+        for px in frames {
+            // A folded ladder draws the block shared by two columns twice.
+            assert!(px.len() >= 2 * n, "N = {n}: {} block ends drawn", px.len());
+            for (x, y) in px {
+                assert!(
+                    x >= region.x
+                        && x <= region.x + region.w
+                        && y >= region.y
+                        && y <= region.y + region.h,
+                    "N = {n}: a block end drawn at ({x}, {y}) outside {region:?}"
+                );
+            }
+        }
+    }
 }

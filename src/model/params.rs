@@ -41,6 +41,34 @@ pub struct Params {
 pub const MAX_BLOCKS: usize = 100_000;
 
 impl Params {
+    /// Parameters from their values, validated: N blocks, rest length b
+    /// (units of s), α in degrees, damping γ, gravity G = mg/(ks) and
+    /// moment of inertia I (units of m s²).
+    pub fn new(
+        n: usize,
+        b: f64,
+        alpha_deg: f64,
+        gamma: f64,
+        gravity: f64,
+        inertia: f64,
+    ) -> Result<Self, ParamError> {
+        if !(alpha_deg.is_finite() && alpha_deg.abs() <= 90.0) {
+            // Reported as typed, not as converted back from radians.
+            return Err(ParamError(format!(
+                "alpha must be a number of degrees with |alpha| <= 90, got {alpha_deg}"
+            )));
+        }
+        Self {
+            n,
+            b,
+            alpha: alpha_deg.to_radians(),
+            inertia,
+            gamma,
+            gravity,
+        }
+        .validated()
+    }
+
     /// The paper's simulation values (supplement, "Details of numerical
     /// simulation"): N = 10, b/s = 1.3, I = m s²/4, γ = 0.02, G = 2e-4.
     pub fn paper(alpha_deg: f64) -> Result<Self, ParamError> {

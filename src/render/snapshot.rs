@@ -287,15 +287,8 @@ pub(crate) fn bad_size(width: u32, height: u32) -> Error {
 /// Draws a snapshot into `region` of `pixmap` (title band on top, time band
 /// at the bottom, ladder in between). The background is left as it is.
 pub fn draw_snapshot(pixmap: &mut Pixmap, region: Region, snap: &Snapshot<'_>) {
-    let margin = (0.03 * region.w.min(region.h)).clamp(2.0, 12.0);
-    let top = snap.title.map_or(0.0, |_| 1.5 * size::TITLE);
-    let bottom = snap.time.map_or(0.0, |_| 1.5 * size::LABEL);
-    let inner = Region {
-        x: region.x + margin,
-        y: region.y + margin + top,
-        w: (region.w - 2.0 * margin).max(1.0),
-        h: (region.h - 2.0 * margin - top - bottom).max(1.0),
-    };
+    let (margin, top, bottom) = bands(region, snap);
+    let inner = inner_region(region, snap);
     let map = Mapping::new(&snap.view(), inner);
     if let Some(g) = snap.ghost {
         draw_ladder(pixmap, &map, g, &Palette::ghost());
@@ -319,6 +312,31 @@ pub fn draw_snapshot(pixmap: &mut Pixmap, region: Region, snap: &Snapshot<'_>) {
         );
     }
     draw_labels(pixmap, region, margin, snap);
+}
+
+/// Margin, title band and time band of a snapshot drawn into `region`.
+fn bands(region: Region, snap: &Snapshot<'_>) -> (f32, f32, f32) {
+    let margin = (0.03 * region.w.min(region.h)).clamp(2.0, 12.0);
+    let top = snap.title.map_or(0.0, |_| 1.5 * size::TITLE);
+    let bottom = snap.time.map_or(0.0, |_| 1.5 * size::LABEL);
+    (margin, top, bottom)
+}
+
+/// The part of `region` the ladder is drawn in (inside the label bands).
+pub fn inner_region(region: Region, snap: &Snapshot<'_>) -> Region {
+    let (margin, top, bottom) = bands(region, snap);
+    Region {
+        x: region.x + margin,
+        y: region.y + margin + top,
+        w: (region.w - 2.0 * margin).max(1.0),
+        h: (region.h - 2.0 * margin - top - bottom).max(1.0),
+    }
+}
+
+/// Pixel (horizontal, vertical) of the model point `p` = [x, y] when
+/// `snap` is drawn into `region` by [`draw_snapshot`].
+pub fn pixel_of(region: Region, snap: &Snapshot<'_>, p: [f64; 2]) -> (f32, f32) {
+    Mapping::new(&snap.view(), inner_region(region, snap)).px(p)
 }
 
 /// Paints a white rectangle (nothing if it is empty).

@@ -1,6 +1,7 @@
 //! Time integration of the ladder: the run loop, sampling at requested
 //! times, divergence detection, and the scenes' initial conditions.
 
+pub mod auto;
 pub mod batch;
 pub mod chain;
 pub mod fused;
@@ -187,6 +188,18 @@ pub fn simulate_with(
     config: &IntegratorConfig,
     stepping: Stepping,
 ) -> Result<Trajectory> {
+    simulate_observed(scenario, sample_times, config, stepping, &|_| {})
+}
+
+/// As [`simulate_with`], telling `progress` the simulated time at every
+/// divergence check (every 5 τ, or 512 steps at most): for a progress bar.
+pub fn simulate_observed(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<Trajectory> {
     let alpha = scenario.ladder.params.alpha;
     let mut kept = Trajectory::unsampled(State::at_rest(Vec::new()), 0.0, Vec::new(), 0, 0);
     let mut traj = simulate_streaming(
@@ -194,7 +207,10 @@ pub fn simulate_with(
         sample_times,
         config,
         stepping,
-        &run_to_end,
+        &Hooks {
+            stop: &run_to_end,
+            progress,
+        },
         &mut |sample: &Sample| {
             kept.push(sample, alpha);
             Ok(())
@@ -214,19 +230,32 @@ pub fn simulate_until(
     stepping: Stepping,
     stop: &StopRule,
 ) -> Result<Trajectory> {
-    simulate_streaming(scenario, &[], config, stepping, stop, &mut |_| Ok(()))
+    let hooks = Hooks {
+        stop,
+        progress: &|_| {},
+    };
+    simulate_streaming(scenario, &[], config, stepping, &hooks, &mut |_| Ok(()))
+}
+
+/// What the run loop asks and tells at every divergence check.
+pub struct Hooks<'a> {
+    /// Ends the run once it says so (t_end is then the cap).
+    pub stop: &'a StopRule<'a>,
+    /// Told the simulated time at every check (every 5 τ, or 512 steps
+    /// at most), after the check: for a progress bar.
+    pub progress: &'a (dyn Fn(f64) + Sync),
 }
 
 /// The run loop. Hands the state at every sample time to `sink` as it
 /// passes (memory stays proportional to N, however many samples: the
-/// returned trajectory holds none) and ends at t_end or where `stop` says.
-/// An error from `sink` ends the run with that error.
+/// returned trajectory holds none) and ends at t_end or where
+/// `hooks.stop` says. An error from `sink` ends the run with that error.
 pub fn simulate_streaming(
     scenario: &Scenario,
     sample_times: &[f64],
     config: &IntegratorConfig,
     stepping: Stepping,
-    stop: &StopRule,
+    hooks: &Hooks,
     sink: &mut dyn FnMut(&Sample) -> Result<()>,
 ) -> Result<Trajectory> {
     let config = config.validated()?;
@@ -253,14 +282,15 @@ pub fn simulate_streaming(
             steps += taken;
             if steps.is_multiple_of(check_every) {
                 watch.check(&rhs, &st, t)?;
-                if stop(t, &arrivals.arrival) {
+                (hooks.progress)(t);
+                if (hooks.stop)(t, &arrivals.arrival) {
                     break 'run;
                 }
             }
         }
         watch.check(&rhs, &st, t)?;
         emit_due(&samples, &mut next_sample, t, &st, sink)?;
-        if stop(t, &arrivals.arrival) {
+        if (hooks.stop)(t, &arrivals.arrival) {
             break;
         }
     }

@@ -17,17 +17,6 @@ use nalgebra::{DVector, Vector3};
 use serde::Serialize;
 use std::f64::consts::{FRAC_PI_2, PI, SQRT_2};
 
-/// b/s of Fig. 2c and Fig. S4.
-pub const FIG_2C_B: f64 = 1.2;
-/// a/b of the U(θ) curves of Fig. 2c (a/b ≤ sqrt(1 + 4 s²/b²) ≈ 1.94).
-pub const FIG_2C_A_OVER_B: [f64; 5] = [1.05, 1.2, 1.4, 1.6, 1.8];
-/// b/s of Fig. S5.
-pub const FIG_S5_B: f64 = 1.3;
-/// α (degrees) of the dispersion curves of Fig. S5.
-pub const FIG_S5_ALPHAS: [f64; 6] = [15.0, 30.0, 45.0, 60.0, 75.0, 86.0];
-/// (mode number m, amplitude ε_0) of Fig. S4 (a) and (b).
-pub const FIG_S4_MODES: [(usize, f64); 2] = [(1, 0.1), (5, 0.05)];
-
 /// U(θ) for one a/b (eq:U_g): points (θ in degrees, U in m g s).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PotentialCurve {
@@ -287,7 +276,7 @@ mod tests {
     #[test]
     fn figure_data_has_the_expected_shape() {
         let p = Params::paper(60.0).unwrap();
-        let curves = potential_curves(FIG_2C_B, &FIG_2C_A_OVER_B, 181);
+        let curves = potential_curves(1.2, &[1.05, 1.2, 1.4, 1.6, 1.8], 181);
         assert_eq!(curves.len(), 5);
         assert!(
             curves
@@ -295,7 +284,7 @@ mod tests {
                 .all(|c| c.points.len() > 50 && c.alpha_deg.is_some())
         );
         assert_eq!(barrier_curve(1.3, 90).len(), 91);
-        let d = dispersion_curves(&p, FIG_S5_B, &FIG_S5_ALPHAS, 64).unwrap();
+        let d = dispersion_curves(&p, 1.3, &[15.0, 30.0, 45.0, 60.0, 75.0, 86.0], 64).unwrap();
         assert_eq!(d[0].samples.len(), 65);
         let l = det_loop(&p, 256).unwrap();
         assert_eq!((l.det.len(), l.winding_number), (256, Some(1)));

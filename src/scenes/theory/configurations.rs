@@ -2,62 +2,62 @@
 //! degenerate ground states), Fig. S3 (the gapless α = 0 configuration)
 //! and Fig. S4 (zero-mode shapes, eq:zm_n and the model's true zero modes).
 
-use super::{configuration, frame, grid, params, signed_deg, title};
-use crate::catalog::TheoryFigure;
+use super::{FigureInput, configuration, frame, grid, signed_deg};
 use crate::error::Result;
 use crate::model::Ladder;
 use crate::render::charts::line_chart;
 use crate::render::compose::Panel;
 use crate::render::style::{self, DARK};
 use crate::render::{Axis, ChartSpec, Legend, Marker, Series};
-use crate::theory::figures::{FIG_2C_B, FIG_S4_MODES, gapless_configuration, zero_mode_shape};
+use crate::theory::figures::{gapless_configuration, zero_mode_shape};
 use crate::theory::gravity;
 use tiny_skia::Pixmap;
 
-/// Fig. 2d: α = ±75°, N = 10, b/s = 1.2 (the b of Fig. 2c).
-const FIG_2D_ALPHA: f64 = 75.0;
 /// Size of one full-ladder snapshot.
 const LADDER_SIZE: (u32, u32) = (200, 560);
 
 /// Fig. 2d: the ground states of both signs, and the two overlaid.
-pub fn ground_states() -> Result<Pixmap> {
-    let plus = Ladder::new(params(10, FIG_2C_B, FIG_2D_ALPHA)?);
-    let minus = Ladder::new(params(10, FIG_2C_B, -FIG_2D_ALPHA)?);
+pub fn ground_states(input: &FigureInput) -> Result<Pixmap> {
+    let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha.abs());
+    let plus = Ladder::new(input.params(n, b, alpha)?);
+    let minus = Ladder::new(input.params(n, b, -alpha)?);
     let (qp, qm) = (plus.ground_state(), minus.ground_state());
     let panels = vec![
         Panel::new(configuration(&plus, &qp, None, LADDER_SIZE)?)
             .label("(i)")
-            .caption(format!("α = {}", signed_deg(FIG_2D_ALPHA))),
+            .caption(format!("α = {}", signed_deg(alpha))),
         Panel::new(configuration(&minus, &qm, None, LADDER_SIZE)?)
             .label("(ii)")
-            .caption(format!("α = {}", signed_deg(-FIG_2D_ALPHA))),
+            .caption(format!("α = {}", signed_deg(-alpha))),
         Panel::new(configuration(&plus, &qp, Some(&qm), LADDER_SIZE)?)
             .label("(iii)")
             .caption("(i) over (ii) in grey"),
     ];
     let body = grid(&panels, 3)?;
     let notes = format!(
-        "N = 10, b/s = {FIG_2C_B}, a = {:.3} s. Each block is drawn from its red A end to its \
+        "N = {n}, b/s = {b}, a = {:.3} s. Each block is drawn from its red A end to its \
          blue B end, which marks its orientation: the blocks of (i) and (ii) tilt the opposite \
          way (sin θ = ±{:.2}), while the centres coincide (iii). Both states have the same \
          energy U_min = −2mgb per pair of blocks.",
         plus.a,
-        FIG_2D_ALPHA.to_radians().sin()
+        alpha.to_radians().sin()
     );
-    frame(title(TheoryFigure::GroundStates), &body, &notes, 760)
+    frame(&input.title, &body, &notes, 760)
 }
 
 /// Fig. S3: the α = 0 configuration (b/s = 1.3, N = 10) beside its
 /// single-well U(θ) (eq:U_g with a² = b² + 4s²).
-pub fn gapless() -> Result<Pixmap> {
-    let b = 1.3;
-    let p = params(10, b, 0.0)?;
-    let (a, q) = gapless_configuration(&p, 10, b)?;
-    let ladder = Ladder::new(p.with(10, b, 0.0)?);
+pub fn gapless(input: &FigureInput) -> Result<Pixmap> {
+    let (n, b) = (input.model.n, input.model.b);
+    let p = input.params(n, b, 0.0)?;
+    let (a, q) = gapless_configuration(&p, n, b)?;
+    let ladder = Ladder::new(p);
     let snap = configuration(&ladder, &q, None, LADDER_SIZE)?;
     let chart = gapless_potential(a, b)?;
     let panels = vec![
-        Panel::new(snap).label("(a)").caption("α = 0°, N = 10"),
+        Panel::new(snap)
+            .label("(a)")
+            .caption(format!("α = 0°, N = {n}")),
         Panel::new(chart)
             .label("(b)")
             .caption("a single minimum at θ = 0"),
@@ -69,7 +69,7 @@ pub fn gapless() -> Result<Pixmap> {
          degenerates into one flat-bottomed minimum (U − U_min ∝ θ⁴): the bistability and \
          the gap ω₊(0) are lost."
     );
-    frame(title(TheoryFigure::Gapless), &body, &notes, 760)
+    frame(&input.title, &body, &notes, 760)
 }
 
 /// U(θ) for the gapless lengths with the minimum marked.
@@ -106,16 +106,19 @@ fn tiny(x: f64) -> String {
 
 /// Fig. S4: the model's zero modes (top row, exact) and the paper's
 /// eq:zm_n shapes (bottom row) for m = 1, ε₀ = 0.1 and m = 5, ε₀ = 0.05.
-pub fn zero_modes() -> Result<Pixmap> {
-    let p = params(10, FIG_2C_B, 75.0)?;
+pub fn zero_modes(input: &FigureInput) -> Result<Pixmap> {
+    let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha);
+    let p = input.params(n, b, alpha)?;
     let ladder = Ladder::new(p);
     let size = (200, 500);
     let mut model = Vec::new();
     let mut paper = Vec::new();
     let mut residuals = Vec::new();
-    for (k, &(m, eps)) in FIG_S4_MODES.iter().enumerate() {
+    for (k, mode) in input.modes.iter().enumerate() {
+        let (m, eps) = (mode.m, mode.epsilon);
         let z = zero_mode_shape(&p, m, eps);
-        let (label, primed) = [("(a)", "(a′)"), ("(b)", "(b′)")][k];
+        let letter = char::from(b'a' + (k % 26) as u8);
+        let (label, primed) = (format!("({letter})"), format!("({letter}′)"));
         let caption = format!("m = {m}, ε₀ = {eps}");
         model.push(
             Panel::new(configuration(&ladder, &z.model, Some(&z.ground), size)?)
@@ -136,12 +139,12 @@ pub fn zero_modes() -> Result<Pixmap> {
         .map(|(m, p, q)| format!("m = {m}: {p:.2} for eq:zm_n, {} for the model", tiny(*q)))
         .collect();
     let notes = format!(
-        "N = 10, b/s = {FIG_2C_B}, α = 75°; deformed configuration in colour, ground state in \
+        "N = {n}, b/s = {b}, α = {alpha}°; deformed configuration in colour, ground state in \
          grey. (a), (b): the model's true zero modes (null vectors of its compatibility \
          matrix, δv staggered, docs/paper-errata.md item 5); for m = 5 (k = π/b) the zero \
          mode is a rigid shift along y. (a′), (b′): the paper's eq:zm_n as printed (Fig. S4), \
          which stretches the springs. Relative spring stretch |C δq|/|δq|: {}.",
         res.join("; ")
     );
-    frame(title(TheoryFigure::ZeroModes), &body, &notes, 760)
+    frame(&input.title, &body, &notes, 760)
 }

@@ -11,35 +11,59 @@ mod pen;
 mod plots;
 mod schematic;
 
-use crate::catalog::{CATALOGUE, Content, TheoryFigure};
 use crate::error::{Error, Result};
 use crate::model::{Ladder, Params};
 use crate::render::compose::{self, Layout, Panel};
 use crate::render::snapshot::{self, Snapshot};
 use crate::render::style::{self, DARK, HAlign, VAlign, size};
+use crate::scene::{Model, TheoryFigure, TheorySpec, ZeroMode};
 use tiny_skia::Pixmap;
 
-/// Renders one static figure.
-pub fn render(figure: TheoryFigure) -> Result<Pixmap> {
-    match figure {
-        TheoryFigure::UnitSchematic => schematic::unit(),
-        TheoryFigure::GravityPotential => plots::gravity_potential(),
-        TheoryFigure::GroundStates => configurations::ground_states(),
-        TheoryFigure::Gapless => configurations::gapless(),
-        TheoryFigure::ZeroModes => configurations::zero_modes(),
-        TheoryFigure::Dispersion => plots::dispersion(),
-        TheoryFigure::Winding => plots::winding(),
-        TheoryFigure::EdgeMode => plots::edge_mode(),
-        TheoryFigure::Barrier => plots::barrier(),
+/// What a static figure draws: its title, the model's N, b and α, and
+/// the lists of the figure's own parameters (all scene data).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FigureInput {
+    pub title: String,
+    pub model: Model,
+    /// Angles α of the curves (Fig. S5, edge mode), degrees.
+    pub alphas: Vec<f64>,
+    /// Ratios a/b of the U(θ) curves (Fig. 2c).
+    pub a_over_b: Vec<f64>,
+    /// Zero modes (Fig. S4).
+    pub modes: Vec<ZeroMode>,
+}
+
+impl FigureInput {
+    pub fn new(title: impl Into<String>, model: &Model, spec: &TheorySpec) -> Self {
+        Self {
+            title: title.into(),
+            model: *model,
+            alphas: spec.alphas.clone(),
+            a_over_b: spec.a_over_b.clone(),
+            modes: spec.modes.clone(),
+        }
+    }
+
+    /// The scene's model with another N, b and α (degrees).
+    fn params(&self, n: usize, b: f64, alpha_deg: f64) -> Result<Params> {
+        let m = &self.model;
+        Ok(Params::new(n, b, alpha_deg, m.gamma, m.gravity, m.inertia)?)
     }
 }
 
-/// The catalogue title of a figure.
-fn title(figure: TheoryFigure) -> &'static str {
-    CATALOGUE
-        .iter()
-        .find(|e| e.content == Content::Theory(figure))
-        .map_or("", |e| e.title)
+/// Renders one static figure.
+pub fn render(figure: TheoryFigure, input: &FigureInput) -> Result<Pixmap> {
+    match figure {
+        TheoryFigure::UnitSchematic => schematic::unit(input),
+        TheoryFigure::GravityPotential => plots::gravity_potential(input),
+        TheoryFigure::GroundStates => configurations::ground_states(input),
+        TheoryFigure::Gapless => configurations::gapless(input),
+        TheoryFigure::ZeroModes => configurations::zero_modes(input),
+        TheoryFigure::Dispersion => plots::dispersion(input),
+        TheoryFigure::Winding => plots::winding(input),
+        TheoryFigure::EdgeMode => plots::edge_mode(input),
+        TheoryFigure::Barrier => plots::barrier(input),
+    }
 }
 
 /// Line height of the notes.
@@ -90,11 +114,6 @@ fn configuration(
     }
     snap.clamp = false;
     snapshot::render_snapshot(&snap, w, h)
-}
-
-/// The paper's parameters with N blocks, b and α (degrees).
-fn params(n: usize, b: f64, alpha_deg: f64) -> Result<Params> {
-    Ok(Params::paper(alpha_deg)?.with(n, b, alpha_deg)?)
 }
 
 /// "+75°", "−75°", "0°" with a true minus sign.

@@ -4,8 +4,7 @@
 //! (eq:delta_U).
 
 use super::pen;
-use super::{configuration, frame, grid, params, signed_deg, title};
-use crate::catalog::TheoryFigure;
+use super::{FigureInput, configuration, frame, grid, signed_deg};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::model::Ladder;
@@ -14,8 +13,8 @@ use crate::render::compose::Panel;
 use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign, size};
 use crate::render::{Axis, ChartSpec, Legend, Marker, Series};
 use crate::theory::figures::{
-    DispersionCurve, FIG_2C_A_OVER_B, FIG_2C_B, FIG_S5_ALPHAS, FIG_S5_B, barrier_curve, det_loop,
-    dispersion_curves, edge_mode_profile, potential_curves,
+    DispersionCurve, barrier_curve, det_loop, dispersion_curves, edge_mode_profile,
+    potential_curves,
 };
 use crate::theory::gravity;
 use std::f64::consts::PI;
@@ -29,11 +28,12 @@ fn pairs(points: &[[f64; 2]]) -> Vec<(f64, f64)> {
     points.iter().map(|p| (p[0], p[1])).collect()
 }
 
-/// Fig. 2c: U(θ) for each a/b of `FIG_2C_A_OVER_B` at b/s = 1.2, the
+/// Fig. 2c: U(θ) for each a/b of the scene at its b/s, the
 /// minima at ±α (eq:eq_alpha, U_min = −2mgb), and ladders at both minima
 /// of two of the curves beside the chart.
-pub fn gravity_potential() -> Result<Pixmap> {
-    let curves = potential_curves(FIG_2C_B, &FIG_2C_A_OVER_B, 1441);
+pub fn gravity_potential(input: &FigureInput) -> Result<Pixmap> {
+    let b = input.model.b;
+    let curves = potential_curves(b, &input.a_over_b, 1441);
     let mut spec = ChartSpec::new(
         Axis::new("θ (degrees)").range(-90.0, 90.0),
         Axis::new("U(θ) / (m g s), per pair of blocks"),
@@ -52,15 +52,19 @@ pub fn gravity_potential() -> Result<Pixmap> {
         Marker::Circle,
     ));
     let plot = chart(&spec, 620, 560)?;
-    let insets = potential_insets(&[1, 3])?;
+    let which: Vec<usize> = [1, 3]
+        .into_iter()
+        .filter(|&i| i < input.a_over_b.len())
+        .collect();
+    let insets = potential_insets(input, &which)?;
     let body = grid(&[Panel::new(plot), Panel::new(insets)], 2)?;
     let notes = format!(
-        "Linkage limit, b/s = {FIG_2C_B}: U(θ) = −mg√(2(a² + b²) − 4s²cos²θ − (a² − b²)²/(4s²cos²θ)) \
+        "Linkage limit, b/s = {b}: U(θ) = −mg√(2(a² + b²) − 4s²cos²θ − (a² − b²)²/(4s²cos²θ)) \
          (eq:U_G), a symmetric double well whose minima θ = ±α (cos α = √(a² − b²)/2s) all lie \
          at U_min = −2mgb. Right: the ladder (4 blocks) at θ = −α and θ = +α for two of the \
          curves; the two orientations are degenerate."
     );
-    frame(title(TheoryFigure::GravityPotential), &body, &notes, 900)
+    frame(&input.title, &body, &notes, 900)
 }
 
 fn curve_color(i: usize) -> Rgb {
@@ -77,15 +81,16 @@ fn color_name(i: usize) -> &'static str {
 
 /// Ground states of 4 blocks at θ = ∓α for the curves `which`, one row per
 /// curve.
-fn potential_insets(which: &[usize]) -> Result<Pixmap> {
+fn potential_insets(input: &FigureInput, which: &[usize]) -> Result<Pixmap> {
+    let b = input.model.b;
     let mut panels = Vec::new();
     for &i in which {
-        let r = FIG_2C_A_OVER_B[i];
-        let alpha = gravity::alpha_from_lengths(r * FIG_2C_B, FIG_2C_B)
+        let r = input.a_over_b[i];
+        let alpha = gravity::alpha_from_lengths(r * b, b)
             .ok_or_else(|| Error::failed(format!("a/b = {r} has no equilibrium")))?
             .to_degrees();
         for sign in [-1.0, 1.0] {
-            let l = Ladder::new(params(4, FIG_2C_B, sign * alpha)?);
+            let l = Ladder::new(input.params(4, b, sign * alpha)?);
             let q = l.ground_state();
             let mut panel = Panel::new(configuration(&l, &q, None, (120, 230))?)
                 .caption(signed_deg((sign * alpha * 10.0).round() / 10.0));
@@ -102,13 +107,14 @@ fn potential_insets(which: &[usize]) -> Result<Pixmap> {
 const LINE_SAMPLES: usize = 128;
 const DOT_SAMPLES: usize = 24;
 
-/// Fig. S5: ω±(q)/ω₀ against qb for each α of `FIG_S5_ALPHAS`, b/s = 1.3,
+/// Fig. S5: ω±(q)/ω₀ against qb for each α of the scene, at its b/s,
 /// one panel per α: eq:dispersion as printed (dashed), ×√2 (solid, errata
 /// item 9) and the model's eigenvalues (dots).
-pub fn dispersion() -> Result<Pixmap> {
-    let base = params(10, FIG_S5_B, 60.0)?;
-    let lines = dispersion_curves(&base, FIG_S5_B, &FIG_S5_ALPHAS, LINE_SAMPLES)?;
-    let dots = dispersion_curves(&base, FIG_S5_B, &FIG_S5_ALPHAS, DOT_SAMPLES)?;
+pub fn dispersion(input: &FigureInput) -> Result<Pixmap> {
+    let b = input.model.b;
+    let base = input.params(input.model.n, b, input.model.alpha)?;
+    let lines = dispersion_curves(&base, b, &input.alphas, LINE_SAMPLES)?;
+    let dots = dispersion_curves(&base, b, &input.alphas, DOT_SAMPLES)?;
     let top = lines
         .iter()
         .flat_map(|c| c.samples.iter())
@@ -127,7 +133,7 @@ pub fn dispersion() -> Result<Pixmap> {
                  eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I) \
                  as in eq:D) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \
                  of the rotational branch; ω₋ is acoustic.";
-    frame(title(TheoryFigure::Dispersion), &body, notes, 900)
+    frame(&input.title, &body, notes, 900)
 }
 
 fn dispersion_panel(lines: &DispersionCurve, dots: &DispersionCurve, y_max: f64) -> Result<Pixmap> {
@@ -205,26 +211,26 @@ fn stack(top: &Pixmap, bottom: &Pixmap) -> Result<Pixmap> {
     Ok(out)
 }
 
-/// α of the winding and edge-mode figures.
-const WINDING_ALPHA: f64 = 60.0;
-
 /// The winding figure: det C_red(q)/(e^(iqb) − 1) (a circle of radius 2|c₁|
 /// about −2c₂, errata item 8) and det C_red(q) itself (eq:det-C) over the
 /// Brillouin zone for α = ±60°, b/s = 1.3.
-pub fn winding() -> Result<Pixmap> {
+pub fn winding(input: &FigureInput) -> Result<Pixmap> {
+    let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha.abs());
     let mut panels = Vec::new();
     for sign in [1.0, -1.0] {
-        let p = params(10, 1.3, sign * WINDING_ALPHA)?;
+        let p = input.params(n, b, sign * alpha)?;
         panels.push(Panel::new(winding_panel(&p)?));
     }
     let body = grid(&panels, 2)?;
-    let notes = "b/s = 1.3. Solid: det C(q)/(e^(iqb) − 1) = 2(c₁e^(iqb) − c₂), the circle of \
+    let notes = format!(
+        "b/s = {b}. Solid: det C(q)/(e^(iqb) − 1) = 2(c₁e^(iqb) − c₂), the circle of \
                  radius 2|c₁| about −2c₂ whose winding about the origin (+) is the winding number \
                  n; dashed: det C(q) of the model's reduced chain (= eq:det-C), which passes \
                  through 0 at q = 0 (translation along x). For α > 0, |c₂| < c₁ and the loop \
                  encloses the origin (n = 1, surface zero mode at the top); for α < 0 it does not \
-                 (n = 0).";
-    frame(title(TheoryFigure::Winding), &body, notes, 900)
+                 (n = 0)."
+    );
+    frame(&input.title, &body, &notes, 900)
 }
 
 fn winding_panel(p: &crate::model::Params) -> Result<Pixmap> {
@@ -265,24 +271,29 @@ fn winding_panel(p: &crate::model::Params) -> Result<Pixmap> {
 /// The edge-mode figure: |δθ_n| of the reduced chain's null vector (dots)
 /// and |c₂/c₁|^{n−1} ∝ e^{−κ(n−1)b} (eq:2nd_sol, lines), log scale; α > 0
 /// left (top edge), α < 0 right (bottom edge).
-pub fn edge_mode() -> Result<Pixmap> {
+pub fn edge_mode(input: &FigureInput) -> Result<Pixmap> {
     let mut panels = Vec::new();
     for sign in [1.0, -1.0] {
-        panels.push(Panel::new(edge_panel(sign)?));
+        panels.push(Panel::new(edge_panel(input, sign)?));
     }
+    let (n, b) = (input.model.n, input.model.b);
     let body = grid(&panels, 2)?;
-    let notes = "N = 10, b/s = 1.3; surface zero mode of the chain with the B nodes pinned \
+    let notes = format!(
+        "N = {n}, b/s = {b}; surface zero mode of the chain with the B nodes pinned \
                  (eq:e-KL), found as the null vector of the model's compatibility matrix and \
                  normalised to max |δθ_n| = 1. κ = b⁻¹ ln|(b + 2s sin α)/(b − 2s sin α)| changes sign \
                  with α: the mode decays from the top for α > 0 (κ > 0) and from the bottom for \
                  α < 0 (κ < 0). \
-                 Beyond |α| ≈ 40.5° (b < 2s|sin α|) c₂/c₁ < 0 and δθ_n alternates in sign.";
-    frame(title(TheoryFigure::EdgeMode), &body, notes, 900)
+                 Beyond |α| ≈ {:.1}° (b < 2s|sin α|) c₂/c₁ < 0 and δθ_n alternates in sign.",
+        (0.5 * b).min(1.0).asin().to_degrees()
+    );
+    frame(&input.title, &body, &notes, 900)
 }
 
-fn edge_panel(sign: f64) -> Result<Pixmap> {
+fn edge_panel(input: &FigureInput, sign: f64) -> Result<Pixmap> {
+    let (n, b) = (input.model.n, input.model.b);
     let mut spec = ChartSpec::new(
-        Axis::new("block n").range(0.5, 10.5),
+        Axis::new("block n").range(0.5, n as f64 + 0.5),
         Axis::new("|δθ_n| / max").log(),
     )
     .title(if sign > 0.0 {
@@ -290,10 +301,13 @@ fn edge_panel(sign: f64) -> Result<Pixmap> {
     } else {
         "α < 0: localised at the bottom"
     });
-    for (k, alpha) in [25.0, 60.0].into_iter().enumerate() {
-        let e = edge_mode_profile(&params(10, 1.3, sign * alpha)?)?;
-        let color = [RED, BLUE][k];
-        let kb = e.kappa.map_or(f64::NAN, |x| x * 1.3);
+    for (k, &alpha) in input.alphas.iter().enumerate() {
+        let e = edge_mode_profile(&input.params(n, b, sign * alpha.abs())?)?;
+        let color = [RED, BLUE]
+            .get(k)
+            .copied()
+            .unwrap_or_else(|| style::series_color(k + 1));
+        let kb = e.kappa.map_or(f64::NAN, |x| x * b);
         let line = e.n.iter().map(|&n| n as f64).zip(e.formula.iter().copied());
         let dots =
             e.n.iter()
@@ -318,11 +332,11 @@ fn edge_panel(sign: f64) -> Result<Pixmap> {
 
 /// The barrier figure: ΔU(α) = U(0) − U(α) (eq:delta_U) for b/s = 1.3, and
 /// the same from the model's two-block linkage solved at θ = 0 (dots).
-pub fn barrier() -> Result<Pixmap> {
-    let b = 1.3;
+pub fn barrier(input: &FigureInput) -> Result<Pixmap> {
+    let b = input.model.b;
     let curve = pairs(&barrier_curve(b, 180));
     let dots: Vec<(f64, f64)> = (0..=18)
-        .filter_map(|k| model_barrier(b, 5.0 * k as f64).map(|du| (5.0 * k as f64, du)))
+        .filter_map(|k| model_barrier(input, 5.0 * k as f64).map(|du| (5.0 * k as f64, du)))
         .collect();
     let mut spec = ChartSpec::new(
         Axis::new("equilibrium angle α (degrees)").range(-2.0, 92.0),
@@ -337,17 +351,20 @@ pub fn barrier() -> Result<Pixmap> {
     ));
     spec.legend = Legend::UpperLeft;
     let plot = chart(&spec, 800, 500)?;
-    let notes = "b/s = 1.3. ΔU(α) = 2mgb(1 − √(1 − (s²/b²)sin⁴α)): the height of the criss-cross \
+    let notes = format!(
+        "b/s = {b}. ΔU(α) = 2mgb(1 − √(1 − (s²/b²)sin⁴α)): the height of the criss-cross \
                  configuration θ = 0 above the two minima θ = ±α of U(θ). Dots: centre spacing \
                  of the model's two-block chain with both springs at rest length, solved by \
                  Newton's method at θ = 0 and θ = α. The barrier vanishes as α → 0 (the gapless \
-                 configuration of Fig. S3) and is largest for the symmetric toy α → 90°.";
-    frame(title(TheoryFigure::Barrier), &plot, notes, 840)
+                 configuration of Fig. S3) and is largest for the symmetric toy α → 90°."
+    );
+    frame(&input.title, &plot, &notes, 840)
 }
 
 /// U(0) − U(α) from the model's two-block linkage (no closed form).
-fn model_barrier(b: f64, alpha_deg: f64) -> Option<f64> {
-    let p = params(2, b, alpha_deg).ok()?;
+fn model_barrier(input: &FigureInput, alpha_deg: f64) -> Option<f64> {
+    let b = input.model.b;
+    let p = input.params(2, b, alpha_deg).ok()?;
     let guess = [b, -p.alpha.cos().powi(2)];
     let at_zero = gravity::model_pair_spacing(&p, 0.0, guess)?;
     let at_alpha = gravity::model_pair_spacing(&p, p.alpha, [b, -p.alpha.cos()])?;

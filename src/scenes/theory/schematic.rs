@@ -5,8 +5,7 @@
 //! offsets Δx, Δy of eq:b and eq:del_y. Gravity points down the page.
 
 use super::pen::{self, Pt};
-use super::{frame, params, title};
-use crate::catalog::TheoryFigure;
+use super::{FigureInput, frame};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::model::Ladder;
@@ -14,9 +13,6 @@ use crate::model::ladder::nodes;
 use crate::render::style::{self, BLUE, DARK, GREEN, GREY, HAlign, RED, VAlign};
 use tiny_skia::Pixmap;
 
-/// b/s and θ = α (degrees) of the drawn unit.
-const B: f64 = 1.2;
-const ALPHA_DEG: f64 = 60.0;
 /// Canvas size, pixels per s and the pixel position of block n's centre.
 const W: u32 = 880;
 const H: u32 = 620;
@@ -49,8 +45,9 @@ const MIDDLE: (HAlign, VAlign) = (HAlign::Center, VAlign::Middle);
 const LEFT: (HAlign, VAlign) = (HAlign::Left, VAlign::Middle);
 
 /// The figure: drawing plus notes.
-pub fn unit() -> Result<Pixmap> {
-    let ladder = Ladder::new(params(2, B, ALPHA_DEG)?);
+pub fn unit(input: &FigureInput) -> Result<Pixmap> {
+    let (b, alpha) = (input.model.b, input.model.alpha);
+    let ladder = Ladder::new(input.params(2, b, alpha)?);
     let q = ladder.ground_state();
     let mut p = style::white_pixmap(W, H).ok_or_else(|| Error::failed("canvas"))?;
     let unit = Unit::of(&q);
@@ -60,7 +57,7 @@ pub fn unit() -> Result<Pixmap> {
     draw_offsets(&mut p, &unit);
     draw_frame_hints(&mut p);
     let notes = format!(
-        "Drawn from the model's ground state of two blocks at b/s = {B}, θ = α = {ALPHA_DEG}°, \
+        "Drawn from the model's ground state of two blocks at b/s = {b}, θ = α = {alpha}°, \
          a = √(b² + 4s²cos²α) = {:.3} s. The A link (red) joins the red A ends of the blocks, \
          the B link (green) their blue B ends. θ is measured from the transverse y axis \
          (counter-clockwise for even n, clockwise for odd n); Δx is the gap along gravity \
@@ -69,7 +66,7 @@ pub fn unit() -> Result<Pixmap> {
          (eq:min_values).",
         ladder.a
     );
-    frame(title(TheoryFigure::UnitSchematic), &p, &notes, W)
+    frame(&input.title, &p, &notes, W)
 }
 
 /// Pixel positions of the unit's nodes and centres.

@@ -1,0 +1,329 @@
+//! The low-level arguments: what clap collects, as typed by the user, with
+//! no validation beyond parsing. `convert` turns them into scenes and
+//! options; nothing here builds physics.
+
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "ladder",
+    version,
+    about = "Simulate the Jacob's-ladder toy and render the figures and movies of \
+             \"Topological antiqued mechanical toy\" (Wada, Mizobata, Ueno, Yoneda)",
+    long_about = "Simulate the Jacob's-ladder toy and render the figures and movies of \
+                  \"Topological antiqued mechanical toy\" (Wada, Mizobata, Ueno, Yoneda).\n\n\
+                  Every output is a scene: a model, a drive of block 1, a time window, an \
+                  integrator and a picture. The paper's figures and movies are built-in scenes \
+                  (`ladder list`, `ladder scene ID`); your own ladder comes from the model flags \
+                  of `movie` and `figure`, or from a TOML scene file (`ladder render FILE`; the \
+                  keys are in docs/scenes.md).",
+    allow_negative_numbers = true
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Simulate a kink (alpha > 0) or antikink (alpha < 0) driven from the top block
+    Simulate(SimulateArgs),
+    /// Render a movie: a built-in one by ID, all of them, or your own from the model flags
+    Movie(MovieArgs),
+    /// Render a figure: a built-in one by ID, all of them, or a filmstrip of your own ladder
+    Figure(FigureArgs),
+    /// Render scene files (TOML; see docs/scenes.md)
+    Render(RenderArgs),
+    /// Print a built-in scene as a TOML scene file
+    Scene(SceneArgs),
+    /// Render every figure and movie, plus OUT/index.html
+    All(AllArgs),
+    /// List the built-in figures and movies, one line each
+    List,
+    /// Linear theory of the ladder: potential, zero modes, winding, dispersion
+    Theory(TheoryArgs),
+    /// Measure the integrators: speed against accuracy, stability limits, kernels
+    Bench(BenchArgs),
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct OutArgs {
+    /// Output folder (created if missing)
+    #[arg(long, default_value = "out", value_name = "DIR")]
+    pub out: PathBuf,
+}
+
+/// The model of a scene (`[model]` of a scene file). Each flag left out
+/// keeps the base scene's value (the paper's, or the built-in scene's).
+#[derive(Args, Debug, Clone, Default)]
+#[command(next_help_heading = "Model (defaults: the paper's values)")]
+pub struct ModelArgs {
+    /// Equilibrium angle alpha in degrees, 0 < |alpha| < 90; its sign picks
+    /// the ground state (alpha > 0 launches a kink, alpha < 0 an antikink)
+    /// [default: 60]
+    #[arg(long, value_name = "DEG")]
+    pub alpha: Option<f64>,
+    /// Number of blocks N, from 2 [default: 10]
+    #[arg(long, value_name = "N")]
+    pub n: Option<usize>,
+    /// Rest length b of the B springs, in units of the block length s [default: 1.3]
+    #[arg(long, value_name = "B")]
+    pub b: Option<f64>,
+    /// Damping gamma (force -gamma*dX/dt, torque -gamma*r^2*dtheta/dt) [default: 0.02]
+    #[arg(long, value_name = "G")]
+    pub gamma: Option<f64>,
+    /// Gravity G = mg/(ks) [default: 2e-4]
+    #[arg(long, value_name = "G")]
+    pub gravity: Option<f64>,
+    /// Moment of inertia I of a block, in units of m s^2 [default: 0.25]
+    #[arg(long, value_name = "I")]
+    pub inertia: Option<f64>,
+}
+
+/// The drive of block 1 (`[drive]`).
+#[derive(Args, Debug, Clone, Default)]
+#[command(next_help_heading = "Drive of block 1")]
+pub struct DriveArgs {
+    /// Time T_d each flip of block 1 takes (alpha -> -alpha, then back) [default: 1000]
+    #[arg(long, value_name = "TD")]
+    pub drive_time: Option<f64>,
+    /// Start times of the flips of block 1, comma-separated; each flip turns
+    /// it to the other ground state over the drive time [default: 0]
+    #[arg(long, value_name = "T1,T2,..", value_delimiter = ',', num_args = 1..)]
+    pub flips: Option<Vec<f64>>,
+    /// Turn block 1 back (-alpha -> alpha) from T as well: the same as --flips 0,T
+    #[arg(long, value_name = "T", conflicts_with = "flips")]
+    pub second_flip: Option<f64>,
+}
+
+/// The window and integrator (`[run]`).
+#[derive(Args, Debug, Clone, Default)]
+#[command(next_help_heading = "Run")]
+pub struct RunArgs {
+    /// End time, in units of tau = sqrt(m/k)
+    #[arg(long, value_name = "T")]
+    pub t_end: Option<f64>,
+    /// auto (choose the method and step, then verify the arrival times to
+    /// --tolerance), explicit-euler, symplectic-euler, verlet, rk4, or dopri5
+    #[arg(long, value_name = "NAME")]
+    pub integrator: Option<String>,
+    /// Time step of a fixed-step integrator (first trial step for dopri5) [default: 0.01]
+    #[arg(long, value_name = "DT")]
+    pub dt: Option<f64>,
+    /// Error tolerance of dopri5 (relative and absolute) [default: 1e-6]
+    #[arg(long, value_name = "R")]
+    pub rtol: Option<f64>,
+    /// Largest arrival-time error auto accepts, in tau [default: 0.1]
+    #[arg(long, value_name = "T")]
+    pub tolerance: Option<f64>,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct SimulateArgs {
+    #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
+    pub drive: DriveArgs,
+    /// End time, in units of tau = sqrt(m/k)
+    #[arg(long, value_name = "T", default_value_t = 4000.0, help_heading = "Run")]
+    pub t_end: f64,
+    /// explicit-euler, symplectic-euler (the paper's), verlet, rk4, dopri5,
+    /// or auto (velocity Verlet with its step chosen and verified to
+    /// --tolerance)
+    #[arg(
+        long,
+        value_name = "NAME",
+        default_value = "symplectic-euler",
+        help_heading = "Run"
+    )]
+    pub integrator: String,
+    /// Time step (first trial step for dopri5); auto picks its own
+    #[arg(long, value_name = "DT", help_heading = "Run")]
+    pub dt: Option<f64>,
+    /// Error tolerance of dopri5 (relative and absolute) [default: 1e-6]
+    #[arg(long, value_name = "R", help_heading = "Run")]
+    pub rtol: Option<f64>,
+    /// Largest arrival-time error auto accepts, in tau [default: 0.1]
+    #[arg(long, value_name = "T", help_heading = "Run")]
+    pub tolerance: Option<f64>,
+    /// Print one JSON object instead of a table
+    #[arg(long)]
+    pub json: bool,
+    /// Write theta_n(t) in degrees (wrapped to (-180, 180]) at the sample times to this CSV file
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+    /// Interval between CSV samples, in tau
+    #[arg(long, default_value_t = 10.0, value_name = "T")]
+    pub sample_every: f64,
+    /// Code that takes symplectic Euler's steps (N <= 32; otherwise, and for
+    /// the other integrators, the portable loop): the fused kernel for the
+    /// best instruction set of this CPU, the one for a given set, or the
+    /// portable loop. All give the same numbers, bit for bit; only the time
+    /// differs
+    #[arg(long, value_enum, default_value_t = KernelArg::Fastest, value_name = "KERNEL")]
+    pub kernel: KernelArg,
+}
+
+/// `simulate --kernel`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum KernelArg {
+    Fastest,
+    Avx2,
+    Avx512,
+    Portable,
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct MovieFormat {
+    /// Frames per movie (2..=5000)
+    #[arg(long, default_value_t = 200, help_heading = "Movie format")]
+    pub frames: usize,
+    /// Frame size WxH in pixels
+    #[arg(long, default_value = "640x480", value_name = "WxH", value_parser = parse_size, help_heading = "Movie format")]
+    pub size: (u32, u32),
+    /// Frames per second
+    #[arg(long, default_value_t = 25.0, help_heading = "Movie format")]
+    pub fps: f64,
+}
+
+fn parse_size(s: &str) -> std::result::Result<(u32, u32), String> {
+    let bad = || format!("expected WxH such as 640x480, got '{s}'");
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    Ok((
+        w.trim().parse().map_err(|_| bad())?,
+        h.trim().parse().map_err(|_| bad())?,
+    ))
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct MovieArgs {
+    /// Movie ID (see `ladder list`) or all; leave it out to make your own
+    /// movie from the model flags
+    pub id: Option<String>,
+    /// Name of your movie's files: movie-NAME.gif, movie-NAME-kymograph.png,
+    /// movie-NAME.json [default: custom]
+    #[arg(long, value_name = "NAME")]
+    pub name: Option<String>,
+    /// Camera: fixed (one window for every frame) or follow (moves with the kink)
+    #[arg(long, value_name = "CAMERA")]
+    pub camera: Option<CameraArg>,
+    #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
+    pub drive: DriveArgs,
+    #[command(flatten)]
+    pub run: RunArgs,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub format: MovieFormat,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum CameraArg {
+    Fixed,
+    Follow,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct FigureArgs {
+    /// Figure ID (see `ladder list`) or all; leave it out to draw your own
+    /// ladder from the model flags
+    pub id: Option<String>,
+    /// Name of your figure's files: figure-NAME.png, figure-NAME.json [default: custom]
+    #[arg(long, value_name = "NAME")]
+    pub name: Option<String>,
+    /// What your figure shows: a filmstrip of snapshots, the kymograph of
+    /// sin theta_n, or the arrival times t_n [default: filmstrip]
+    #[arg(long, value_name = "VIEW")]
+    pub view: Option<ViewArg>,
+    /// Times of the filmstrip's snapshots, comma-separated, in tau
+    /// [default: seven times evenly over the window]
+    #[arg(long, value_name = "T1,T2,..", value_delimiter = ',', num_args = 1..)]
+    pub times: Option<Vec<f64>>,
+    #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
+    pub drive: DriveArgs,
+    #[command(flatten)]
+    pub run: RunArgs,
+    #[command(flatten)]
+    pub out: OutArgs,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ViewArg {
+    Filmstrip,
+    Kymograph,
+    Arrivals,
+}
+
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    /// Scene files (TOML)
+    #[arg(required = true, value_name = "FILE")]
+    pub files: Vec<PathBuf>,
+    /// Only read and check the files, print what each would make, and
+    /// write nothing
+    #[arg(long)]
+    pub check: bool,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub format: MovieFormat,
+}
+
+#[derive(Args, Debug)]
+pub struct SceneArgs {
+    /// Built-in figure or movie ID (see `ladder list`)
+    pub id: String,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct AllArgs {
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub format: MovieFormat,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct TheoryArgs {
+    /// Equilibrium angle alpha in degrees, 0 <= |alpha| <= 90
+    #[arg(long, default_value_t = 60.0, value_name = "DEG")]
+    pub alpha: f64,
+    /// Rest length b of the B springs, in units of s
+    #[arg(long, default_value_t = 1.3)]
+    pub b: f64,
+    /// Number of blocks N of the finite chain (2..=400)
+    #[arg(long, default_value_t = 10)]
+    pub n: usize,
+    /// Print one JSON object instead of a table
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct BenchArgs {
+    /// work-precision (error against cost), stability (critical time
+    /// steps), or kernels (the paper's run timed with each `simulate
+    /// --kernel`; prints only, writes no file)
+    #[arg(value_name = "STUDY")]
+    pub study: String,
+    /// Output folder for the chart and its CSV
+    #[arg(long, default_value = "out", value_name = "DIR")]
+    pub out: PathBuf,
+    /// Print one JSON object instead of a table
+    #[arg(long)]
+    pub json: bool,
+    /// Repeats per work-precision point, or rounds of bench kernels (the
+    /// median wall time is kept)
+    #[arg(long, default_value_t = 3)]
+    pub repeats: usize,
+}

@@ -1,0 +1,261 @@
+//! The one conversion from low-level arguments to domain objects: model,
+//! drive and run flags onto a base scene, validated by `Scene::check`, whose
+//! key paths are worded here as the flags the user typed.
+
+use super::args::{CameraArg, DriveArgs, KernelArg, ModelArgs, MovieFormat, RunArgs, ViewArg};
+use crate::error::{Error, Result};
+use crate::scene::{Camera, DriveSpec, Method, OutputSpec, Scene};
+use crate::scenes::MovieOptions;
+use crate::sim;
+
+impl ModelArgs {
+    /// Whether any model flag was given.
+    pub fn any(&self) -> bool {
+        self.alpha.is_some()
+            || self.n.is_some()
+            || self.b.is_some()
+            || self.gamma.is_some()
+            || self.gravity.is_some()
+            || self.inertia.is_some()
+    }
+
+    fn apply(&self, scene: &mut Scene) {
+        let m = &mut scene.model;
+        m.alpha = self.alpha.unwrap_or(m.alpha);
+        m.n = self.n.unwrap_or(m.n);
+        m.b = self.b.unwrap_or(m.b);
+        m.gamma = self.gamma.unwrap_or(m.gamma);
+        m.gravity = self.gravity.unwrap_or(m.gravity);
+        m.inertia = self.inertia.unwrap_or(m.inertia);
+    }
+}
+
+impl DriveArgs {
+    pub fn any(&self) -> bool {
+        self.drive_time.is_some() || self.flips.is_some() || self.second_flip.is_some()
+    }
+
+    fn apply(&self, scene: &mut Scene) {
+        if !self.any() {
+            return;
+        }
+        let duration = self
+            .drive_time
+            .or_else(|| scene.drive.flips.first().map(|f| f.duration))
+            .unwrap_or(sim::PAPER_DRIVE_TIME);
+        let starts: Vec<f64> = match (&self.flips, self.second_flip) {
+            (Some(f), _) => f.clone(),
+            (None, Some(t)) => vec![0.0, t],
+            (None, None) => scene.drive.flips.iter().map(|f| f.start).collect(),
+        };
+        scene.drive = DriveSpec::flips_at(&starts, duration);
+    }
+}
+
+impl RunArgs {
+    pub fn any(&self) -> bool {
+        self.t_end.is_some()
+            || self.integrator.is_some()
+            || self.dt.is_some()
+            || self.rtol.is_some()
+            || self.tolerance.is_some()
+    }
+
+    fn apply(&self, scene: &mut Scene) -> Result<()> {
+        let r = &mut scene.run;
+        if let Some(name) = &self.integrator {
+            r.integrator = parse_method(name)?;
+        }
+        r.t_end = self.t_end.unwrap_or(r.t_end);
+        r.dt = self.dt.or(r.dt);
+        r.rtol = self.rtol.or(r.rtol);
+        r.tolerance = self.tolerance.unwrap_or(r.tolerance);
+        Ok(())
+    }
+}
+
+/// `--integrator NAME`.
+pub fn parse_method(name: &str) -> Result<Method> {
+    name.parse()
+        .map_err(|e: Error| Error::bad_input(format!("--integrator: {e}")))
+}
+
+/// The flags applied to `base`, then validated; an error names the flag.
+pub fn scene_from_flags(
+    mut base: Scene,
+    model: &ModelArgs,
+    drive: &DriveArgs,
+    run: &RunArgs,
+) -> Result<Scene> {
+    model.apply(&mut base);
+    drive.apply(&mut base);
+    run.apply(&mut base)?;
+    checked(base)
+}
+
+/// `Scene::check`, its key path worded as the flag that sets it.
+pub fn checked(scene: Scene) -> Result<Scene> {
+    scene
+        .check()
+        .map_err(|(key, msg)| Error::bad_input(format!("{}: {msg}", flag_of(&key))))?;
+    Ok(scene)
+}
+
+/// The command-line flag that sets a scene key.
+fn flag_of(key: &str) -> String {
+    let last = key.rsplit('.').next().unwrap_or(key);
+    let flag = if key.starts_with("drive.flips") {
+        if matches!(last, "duration") {
+            "--drive-time"
+        } else {
+            "--flips"
+        }
+    } else if key.starts_with("output.times") || key.ends_with(".times") {
+        "--times"
+    } else {
+        match last {
+            "t_end" => "--t-end",
+            other => return format!("--{}", other.replace('_', "-")),
+        }
+    };
+    flag.to_string()
+}
+
+/// A custom movie: the paper's scene (or `base`) with the flags applied.
+pub fn movie_scene(
+    base: Option<Scene>,
+    name: Option<&str>,
+    camera: Option<CameraArg>,
+    model: &ModelArgs,
+    drive: &DriveArgs,
+    run: &RunArgs,
+) -> Result<Scene> {
+    let mut scene = custom_base(base, name);
+    if let Some(c) = camera {
+        scene.output = OutputSpec::Movie {
+            camera: match c {
+                CameraArg::Fixed => Camera::Fixed,
+                CameraArg::Follow => Camera::Follow,
+            },
+        };
+    }
+    scene_from_flags(scene, model, drive, run)
+}
+
+/// A custom figure: a filmstrip at `times` (or a kymograph or arrival
+/// chart) of the paper's scene (or `base`) with the flags applied.
+pub fn figure_scene(
+    base: Option<Scene>,
+    name: Option<&str>,
+    view: Option<ViewArg>,
+    times: Option<&[f64]>,
+    flags: (&ModelArgs, &DriveArgs, &RunArgs),
+) -> Result<Scene> {
+    let mut scene = custom_base(base, name);
+    let view = view.unwrap_or(ViewArg::Filmstrip);
+    if times.is_some() && view != ViewArg::Filmstrip {
+        return Err(Error::bad_input("--times applies only to --view filmstrip"));
+    }
+    match view {
+        ViewArg::Filmstrip => {
+            let keep = times.is_none() && matches!(scene.output, OutputSpec::Filmstrip { .. });
+            if !keep {
+                scene.output = OutputSpec::Filmstrip {
+                    times: times.map(<[f64]>::to_vec).unwrap_or_default(),
+                    panels: Vec::new(),
+                };
+            }
+        }
+        ViewArg::Kymograph => scene.output = OutputSpec::Kymograph,
+        ViewArg::Arrivals => scene.output = OutputSpec::Arrivals { curves: Vec::new() },
+    }
+    let (model, drive, run) = flags;
+    scene_from_flags(scene, model, drive, run)
+}
+
+/// The base of a custom scene: a built-in scene made custom (its own
+/// label and title dropped, so they are generated again), or the paper's.
+fn custom_base(base: Option<Scene>, name: Option<&str>) -> Scene {
+    let mut scene = base.unwrap_or_default();
+    scene.label = None;
+    scene.title = None;
+    scene.caption = None;
+    scene.name = name.unwrap_or("custom").to_string();
+    scene
+}
+
+impl MovieFormat {
+    pub fn options(&self) -> Result<MovieOptions> {
+        MovieOptions {
+            frames: self.frames,
+            width: self.size.0,
+            height: self.size.1,
+            fps: self.fps,
+        }
+        .validated()
+        .map_err(|e| Error::bad_input(format!("--frames/--size/--fps: {e}")))
+    }
+}
+
+impl KernelArg {
+    /// The stepping asked for, if this CPU can run it.
+    pub fn stepping(self) -> Result<sim::Stepping> {
+        let fused = |isa: sim::Isa| {
+            if isa.available() {
+                Ok(sim::Stepping::Fused(isa))
+            } else {
+                Err(Error::bad_input(format!(
+                    "--kernel {}: this CPU lacks the instruction set; use fastest or portable",
+                    isa.name()
+                )))
+            }
+        };
+        match self {
+            Self::Fastest => Ok(sim::Stepping::Fastest),
+            Self::Avx2 => fused(sim::Isa::Avx2),
+            Self::Avx512 => fused(sim::Isa::Avx512),
+            Self::Portable => Ok(sim::Stepping::Portable),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_are_worded_as_flags() {
+        assert_eq!(flag_of("model.alpha"), "--alpha");
+        assert_eq!(flag_of("run.t_end"), "--t-end");
+        assert_eq!(flag_of("drive.flips.1"), "--flips");
+        assert_eq!(flag_of("drive.flips.0.duration"), "--drive-time");
+        assert_eq!(flag_of("output.times"), "--times");
+    }
+
+    #[test]
+    fn flags_land_on_the_scene() {
+        let model = ModelArgs {
+            alpha: Some(70.0),
+            n: Some(20),
+            ..Default::default()
+        };
+        let drive = DriveArgs {
+            second_flip: Some(1500.0),
+            ..Default::default()
+        };
+        let s = movie_scene(None, Some("k70"), None, &model, &drive, &RunArgs::default()).unwrap();
+        assert_eq!(
+            (s.model.alpha, s.model.n, s.name.as_str()),
+            (70.0, 20, "k70")
+        );
+        assert_eq!(s.drive.flips.len(), 2);
+        assert_eq!(s.drive.flips[1].start, 1500.0);
+        let bad = ModelArgs {
+            alpha: Some(120.0),
+            ..Default::default()
+        };
+        let e = movie_scene(None, None, None, &bad, &drive, &RunArgs::default()).unwrap_err();
+        assert!(e.to_string().starts_with("--alpha: "), "{e}");
+        assert!(e.to_string().contains("got 120"), "{e}");
+    }
+}

@@ -1,0 +1,579 @@
+//! The command line (SPEC section 5): `args` collects the arguments (clap),
+//! `convert` turns them into scenes and options, and this module runs the
+//! library and prints or writes what it returns. No physics and no drawing
+//! here.
+
+pub mod args;
+pub mod convert;
+
+pub use args::*;
+
+use crate::catalog::{self, Entry};
+use crate::error::{Error, Result};
+use crate::scene::{self, Kind, Scene};
+use crate::scenes::{self, MovieOptions};
+use crate::sim::{self, IntegratorKind};
+use clap::Parser;
+use serde::Serialize;
+use std::ffi::OsString;
+use std::path::Path;
+use std::time::Instant;
+
+/// Runs the program on `args`; returns the process exit code.
+pub fn main_with_args<I, T>(args: I) -> i32
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(e) => return clap_exit(e),
+    };
+    match run(cli) {
+        Ok(()) => 0,
+        Err(e) => {
+            eprintln!("ladder: {e}");
+            e.exit_code()
+        }
+    }
+}
+
+/// Help and version go to stdout with exit 0. A missing argument gets
+/// clap's whole message (what is missing, the usage line, the pointer to
+/// --help); any other usage error one line, with clap's tip (the closest
+/// subcommand or flag) after it. Exit 2.
+fn clap_exit(e: clap::Error) -> i32 {
+    use clap::error::ErrorKind;
+    match e.kind() {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            print!("{e}");
+            0
+        }
+        ErrorKind::MissingRequiredArgument
+        | ErrorKind::MissingSubcommand
+        | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            eprint!("{}", e.to_string().replacen("error: ", "ladder: ", 1));
+            2
+        }
+        _ => {
+            eprintln!("ladder: {}", one_line(&e.to_string()));
+            2
+        }
+    }
+}
+
+/// clap's first line, with its tip ("a similar subcommand exists: ...")
+/// after it.
+fn one_line(text: &str) -> String {
+    let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+    let first = lines
+        .next()
+        .unwrap_or("invalid arguments")
+        .trim_start_matches("error: ")
+        .to_string();
+    match lines.find_map(|l| l.strip_prefix("tip: ")) {
+        Some(tip) => format!("{first} ({tip})"),
+        None => first,
+    }
+}
+
+pub fn run(cli: Cli) -> Result<()> {
+    match cli.command {
+        Command::Simulate(args) => simulate(&args),
+        Command::Bench(args) => bench(&args),
+        Command::Theory(args) => theory(&args),
+        Command::List => {
+            print!("{}", catalog::listing()?);
+            Ok(())
+        }
+        Command::Scene(args) => {
+            let entry = catalog::find_any(&args.id)?;
+            print!("{}", scene::file::to_toml(&entry.scene)?);
+            Ok(())
+        }
+        Command::Figure(args) => {
+            let scenes = figure_scenes(&args)?;
+            render_into(&scenes, &args.out.out, &MovieOptions::default(), false)
+        }
+        Command::Movie(args) => {
+            let opts = args.format.options()?;
+            let scenes = movie_scenes(&args)?;
+            render_into(&scenes, &args.out.out, &opts, false)
+        }
+        Command::Render(args) => {
+            let opts = args.format.options()?;
+            let scenes = args
+                .files
+                .iter()
+                .map(|f| scene::file::load(f))
+                .collect::<Result<Vec<_>>>()?;
+            if args.check {
+                for (file, s) in args.files.iter().zip(&scenes) {
+                    println!(
+                        "{}: {} {} ({} run{}): {}",
+                        file.display(),
+                        s.kind().name(),
+                        s.name,
+                        s.runs().len(),
+                        if s.runs().len() == 1 { "" } else { "s" },
+                        scene::describe::parameters(s)
+                    );
+                }
+                return Ok(());
+            }
+            render_into(&scenes, &args.out.out, &opts, false)
+        }
+        Command::All(args) => {
+            let opts = args.format.options()?;
+            let scenes: Vec<Scene> = catalog::catalogue()?
+                .iter()
+                .map(|e| e.scene.clone())
+                .collect();
+            render_into(&scenes, &args.out.out, &opts, true)
+        }
+    }
+}
+
+/// The scenes of `ladder movie`: a built-in one, all of them, or a custom
+/// one from the flags (on the paper's scene, or on the named one).
+fn movie_scenes(args: &MovieArgs) -> Result<Vec<Scene>> {
+    let flags = args.model.any() || args.drive.any() || args.run.any();
+    let custom = flags || args.name.is_some() || args.camera.is_some();
+    match args.id.as_deref() {
+        Some("all") if custom => Err(Error::bad_input(
+            "model, drive and run flags apply to one movie, not to all",
+        )),
+        Some("all") => Ok(builtin(Kind::Movie)?),
+        Some(id) => {
+            let entry = catalog::find(Kind::Movie, id)?;
+            if !custom {
+                return Ok(vec![entry.scene.clone()]);
+            }
+            Ok(vec![convert::movie_scene(
+                Some(entry.scene.clone()),
+                args.name.as_deref(),
+                args.camera,
+                &args.model,
+                &args.drive,
+                &args.run,
+            )?])
+        }
+        None => Ok(vec![convert::movie_scene(
+            None,
+            args.name.as_deref(),
+            args.camera,
+            &args.model,
+            &args.drive,
+            &args.run,
+        )?]),
+    }
+}
+
+/// The scenes of `ladder figure`, as [`movie_scenes`] for figures.
+fn figure_scenes(args: &FigureArgs) -> Result<Vec<Scene>> {
+    let flags = args.model.any() || args.drive.any() || args.run.any();
+    let custom = flags || args.name.is_some() || args.view.is_some() || args.times.is_some();
+    let make = |base: Option<Scene>| {
+        convert::figure_scene(
+            base,
+            args.name.as_deref(),
+            args.view,
+            args.times.as_deref(),
+            (&args.model, &args.drive, &args.run),
+        )
+    };
+    match args.id.as_deref() {
+        Some("all") if custom => Err(Error::bad_input(
+            "model, drive and run flags apply to one figure, not to all",
+        )),
+        Some("all") => builtin(Kind::Figure),
+        Some(id) => {
+            let entry = catalog::find(Kind::Figure, id)?;
+            if !custom {
+                return Ok(vec![entry.scene.clone()]);
+            }
+            if entry.scene.runs().len() > 1 {
+                return Err(Error::bad_input(format!(
+                    "figure {id} has several runs with parameters of their own; to change them, \
+                     print it with `ladder scene {id} > f.toml`, edit the file and `ladder render f.toml`"
+                )));
+            }
+            if let crate::scene::OutputSpec::Theory(_) = entry.scene.output {
+                let mut s = entry.scene.clone();
+                s.name = args.name.clone().unwrap_or_else(|| "custom".into());
+                return Ok(vec![convert::scene_from_flags(
+                    s,
+                    &args.model,
+                    &args.drive,
+                    &args.run,
+                )?]);
+            }
+            Ok(vec![make(Some(entry.scene.clone()))?])
+        }
+        None => Ok(vec![make(None)?]),
+    }
+}
+
+fn builtin(kind: Kind) -> Result<Vec<Scene>> {
+    Ok(catalog::entries(kind)?
+        .into_iter()
+        .map(|e: &Entry| e.scene.clone())
+        .collect())
+}
+
+/// `simulate --json` (SPEC section 5).
+#[derive(Serialize, Debug)]
+pub struct SimulateReport {
+    pub alpha_deg: f64,
+    pub n: usize,
+    pub b: f64,
+    pub a: f64,
+    pub gamma: f64,
+    pub gravity: f64,
+    pub inertia: f64,
+    /// The scheme that made the numbers below.
+    pub integrator: String,
+    /// `auto` when the program chose it.
+    pub requested_integrator: String,
+    pub dt: f64,
+    pub rtol: Option<f64>,
+    /// `auto` only: estimated largest error of the arrival times, in τ.
+    pub arrival_error: Option<f64>,
+    pub t_end: f64,
+    pub drive_time: f64,
+    pub flips: Vec<f64>,
+    pub steps: u64,
+    pub force_evals: u64,
+    pub wall_seconds: f64,
+    pub arrival_times: Vec<Option<f64>>,
+    pub final_theta_deg: Vec<f64>,
+}
+
+fn simulate(args: &SimulateArgs) -> Result<()> {
+    let run = RunArgs {
+        t_end: Some(args.t_end),
+        integrator: Some(args.integrator.clone()),
+        dt: args.dt,
+        rtol: args.rtol,
+        tolerance: args.tolerance,
+    };
+    let base = Scene {
+        output: scene::OutputSpec::Data,
+        ..Scene::default()
+    };
+    let method = convert::parse_method(&args.integrator)?;
+    if args.dt.is_some() && method == scene::Method::Auto {
+        return Err(Error::bad_input(
+            "--dt: the auto integrator picks its own step; name an integrator to set --dt",
+        ));
+    }
+    let scene = convert::scene_from_flags(base, &args.model, &args.drive, &run)?;
+    let samples = csv_samples(args)?;
+    let stepping = args.kernel.stepping()?;
+    if let Some(path) = &args.csv {
+        crate::output::check_writable(path)?;
+    }
+    let start = Instant::now();
+    let bar = time_bar(scene.run.t_end);
+    let result = scenes::run::simulate_with(&scene, &samples, stepping, &|t| {
+        bar.set_position(bar.position().max(t as u64));
+    });
+    bar.finish_and_clear();
+    let result = result?;
+    let wall_seconds = start.elapsed().as_secs_f64();
+    let traj = &result.trajectory;
+    if let Some(path) = &args.csv {
+        crate::output::write_atomic(path, csv_text(traj).as_bytes())?;
+    }
+    let params = scene.model.params()?;
+    let report = SimulateReport {
+        alpha_deg: scene.model.alpha,
+        n: params.n,
+        b: params.b,
+        a: params.a(),
+        gamma: params.gamma,
+        gravity: params.gravity,
+        inertia: params.inertia,
+        integrator: result.integrator.name.clone(),
+        requested_integrator: result.integrator.requested.clone(),
+        dt: result.integrator.dt,
+        rtol: result.integrator.rtol,
+        arrival_error: result.integrator.arrival_error,
+        t_end: scene.run.t_end,
+        drive_time: scene.drive.flips.first().map_or(0.0, |f| f.duration),
+        flips: scene.drive.flips.iter().map(|f| f.start).collect(),
+        steps: traj.steps,
+        force_evals: traj.force_evals,
+        wall_seconds,
+        arrival_times: traj.arrival_times.clone(),
+        final_theta_deg: traj.final_theta_deg(),
+    };
+    if args.json {
+        println!("{}", to_json(&report)?);
+    } else {
+        print!("{}", simulate_table(&report));
+    }
+    Ok(())
+}
+
+fn csv_samples(args: &SimulateArgs) -> Result<Vec<f64>> {
+    if args.csv.is_none() {
+        return Ok(Vec::new());
+    }
+    let every = args.sample_every;
+    if !(every.is_finite() && every > 0.0) {
+        return Err(Error::bad_input(format!(
+            "--sample-every must be a finite number > 0, got {every}"
+        )));
+    }
+    let count = (args.t_end / every).floor();
+    if count.is_nan() || count > 10_000_000.0 {
+        return Err(Error::bad_input(
+            "--sample-every is too small for this --t-end (at most 10^7 samples)",
+        ));
+    }
+    Ok((0..=count as usize).map(|k| k as f64 * every).collect())
+}
+
+fn simulate_table(r: &SimulateReport) -> String {
+    let step = r
+        .rtol
+        .map_or(format!("dt = {}", r.dt), |x| format!("rtol = {x:e}"));
+    let chosen = match (r.requested_integrator.as_str(), r.arrival_error) {
+        ("auto", Some(e)) => format!(" (chosen by auto; arrival times within about {e:.2e} τ)"),
+        _ => String::new(),
+    };
+    let mut s = format!(
+        "alpha = {}°, N = {}, b = {}, a = {:.6}; {} with {step}{chosen}; {} steps, {} force evaluations, {:.3} s\n",
+        r.alpha_deg, r.n, r.b, r.a, r.integrator, r.steps, r.force_evals, r.wall_seconds
+    );
+    s.push_str("block  arrival t/τ   final θ (deg)\n");
+    for (i, (t, th)) in r.arrival_times.iter().zip(&r.final_theta_deg).enumerate() {
+        let t = t.map_or("never".to_string(), |t| format!("{t:.2}"));
+        s.push_str(&format!("{:>5}  {:>11}   {:>13.3}\n", i + 1, t, th));
+    }
+    s
+}
+
+fn csv_text(traj: &sim::Trajectory) -> String {
+    let n = traj.final_state.q.len() / 3;
+    let mut out = String::from("t");
+    for i in 1..=n {
+        out.push_str(&format!(",theta_{i}_deg"));
+    }
+    out.push('\n');
+    for (t, q) in traj.times.iter().zip(&traj.states) {
+        out.push_str(&format!("{t}"));
+        for th in sim::observables::angles_deg(q) {
+            out.push_str(&format!(",{th:.6}"));
+        }
+        out.push('\n');
+    }
+    out
+}
+
+fn bench(args: &BenchArgs) -> Result<()> {
+    if !(1..=100).contains(&args.repeats) {
+        return Err(Error::bad_input(format!(
+            "--repeats must be between 1 and 100, got {}",
+            args.repeats
+        )));
+    }
+    match args.study.as_str() {
+        "work-precision" | "stability" => crate::output::ensure_dir(&args.out)?,
+        "kernels" => return bench_kernels(args),
+        other => {
+            return Err(Error::bad_input(format!(
+                "unknown study '{other}'; choose work-precision, stability or kernels"
+            )));
+        }
+    }
+    match args.study.as_str() {
+        "work-precision" => bench_work_precision(args),
+        _ => bench_stability(args),
+    }
+}
+
+fn bench_kernels(args: &BenchArgs) -> Result<()> {
+    let runs = args.repeats * crate::bench::kernels::kernel_count();
+    let bar = progress_bar(runs as u64, "kernels");
+    let report = crate::bench::kernels(args.repeats, &ticker(&bar))?;
+    bar.finish_and_clear();
+    if args.json {
+        println!("{}", to_json(&report)?);
+    } else {
+        print!("{}", crate::bench::kernels_table(&report));
+    }
+    Ok(())
+}
+
+fn bench_work_precision(args: &BenchArgs) -> Result<()> {
+    use crate::bench::{self, BenchScene};
+    let scenes = [BenchScene::paper(60.0)?, BenchScene::paper(-60.0)?];
+    let total: usize = scenes.len()
+        * IntegratorKind::ALL
+            .iter()
+            .map(|k| bench::default_steps(*k).len())
+            .sum::<usize>();
+    let bar = progress_bar(total as u64, "work-precision");
+    let report = bench::work_precision(&scenes, args.repeats, &ticker(&bar))?;
+    bar.finish_and_clear();
+    let chart = bench::work_precision_chart(&report)?;
+    let csv = bench::work_precision_csv(&report);
+    let table = bench::work_precision_table(&report);
+    write_study(args, "work-precision", &csv, &chart, &report, &table)
+}
+
+/// Writes a study's chart and CSV (`DIR/NAME.png`, `DIR/NAME.csv`; the PNG
+/// is encoded before anything is written) and prints its JSON or table.
+fn write_study<T: Serialize>(
+    args: &BenchArgs,
+    name: &str,
+    csv_text: &str,
+    chart: &tiny_skia::Pixmap,
+    report: &T,
+    table: &str,
+) -> Result<()> {
+    let png_bytes = crate::encode::png_bytes(chart)?;
+    let (csv, png) = (
+        args.out.join(format!("{name}.csv")),
+        args.out.join(format!("{name}.png")),
+    );
+    crate::output::write_atomic(&csv, csv_text.as_bytes())?;
+    crate::output::write_atomic(&png, &png_bytes)?;
+    if args.json {
+        println!("{}", to_json(report)?);
+    } else {
+        print!("{table}");
+        println!("wrote {} and {}", csv.display(), png.display());
+    }
+    Ok(())
+}
+
+fn bench_stability(args: &BenchArgs) -> Result<()> {
+    use crate::bench;
+    let alphas = bench::STABILITY_ALPHAS;
+    let bar = progress_bar(alphas.len() as u64, "stability");
+    let report = bench::stability(&alphas, &ticker(&bar))?;
+    bar.finish_and_clear();
+    let chart = bench::stability_chart(&report)?;
+    let csv = bench::stability_csv(&report);
+    let table = bench::stability_table(&report);
+    write_study(args, "stability", &csv, &chart, &report, &table)
+}
+
+fn to_json<T: Serialize>(value: &T) -> Result<String> {
+    serde_json::to_string(value).map_err(|e| Error::failed(format!("cannot encode JSON: {e}")))
+}
+
+/// A progress bar on stderr (hidden when stderr is not a terminal).
+/// A progress callback for a study: shows `msg` and counts one item.
+fn ticker(bar: &indicatif::ProgressBar) -> impl Fn(&str) + Sync + '_ {
+    move |msg| {
+        bar.set_message(msg.to_string());
+        bar.inc(1);
+    }
+}
+
+/// A progress bar over simulated time, shown only for a run long enough
+/// to wait for (over 10^5 τ of simulated time) and only on a terminal.
+fn time_bar(t_end: f64) -> indicatif::ProgressBar {
+    if t_end < 1e5 {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new(t_end as u64);
+    let style = indicatif::ProgressStyle::with_template(
+        "simulating [{bar:30}] t/τ = {pos}/{len} {elapsed} (eta {eta})",
+    )
+    .map(|s| s.progress_chars("=> "));
+    if let Ok(style) = style {
+        bar.set_style(style);
+    }
+    bar
+}
+
+fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(len);
+    let style =
+        indicatif::ProgressStyle::with_template("{prefix} [{bar:30}] {pos}/{len} {elapsed} {msg}")
+            .map(|s| s.progress_chars("=> "));
+    if let Ok(style) = style {
+        bar.set_style(style);
+    }
+    bar.set_prefix(what.to_string());
+    bar
+}
+
+fn theory(args: &TheoryArgs) -> Result<()> {
+    let m = scene::Model::default();
+    let params =
+        crate::model::Params::new(args.n, args.b, args.alpha, m.gamma, m.gravity, m.inertia)?;
+    let report = crate::theory::TheoryReport::compute(&params)?;
+    if args.json {
+        println!("{}", to_json(&report)?);
+    } else {
+        print!("{}", report.to_table());
+    }
+    Ok(())
+}
+
+/// Renders `scenes` into `out` in parallel (rayon), each file written
+/// atomically as soon as it is ready, with a progress bar and a summary.
+fn render_into(scenes: &[Scene], out: &Path, movie: &MovieOptions, index: bool) -> Result<()> {
+    use rayon::prelude::*;
+    crate::output::check_writable(&out.join("index.html"))?;
+    let start = Instant::now();
+    // One movie: a bar over its frames; several scenes: over the scenes.
+    let one_movie = scenes.len() == 1 && scenes[0].kind() == Kind::Movie;
+    let bar = if one_movie {
+        progress_bar(movie.frames as u64, &format!("movie {}", scenes[0].name))
+    } else {
+        progress_bar(scenes.len() as u64, "rendering")
+    };
+    let frame_done = || {
+        if one_movie {
+            bar.inc(1);
+        }
+    };
+    let written: Vec<Vec<String>> = scenes
+        .par_iter()
+        .map(|s| {
+            let files = scenes::render_observed(s, movie, &frame_done)?;
+            for (name, bytes) in &files {
+                crate::output::write_atomic(&out.join(name), bytes)?;
+            }
+            if !one_movie {
+                bar.set_message(format!("{} {}", s.kind().name(), s.name));
+                bar.inc(1);
+            }
+            Ok(files.into_iter().map(|(name, _)| name).collect())
+        })
+        .collect::<Result<_>>()?;
+    bar.finish_and_clear();
+    let mut count: usize = written.iter().map(Vec::len).sum();
+    if index {
+        let items: Vec<crate::gallery::Item<'_>> = scenes
+            .iter()
+            .zip(&written)
+            .map(|(scene, files)| crate::gallery::Item {
+                scene,
+                files: files.clone(),
+            })
+            .collect();
+        let page = crate::gallery::index_html(&items);
+        crate::output::write_atomic(&out.join("index.html"), page.as_bytes())?;
+        count += 1;
+    }
+    let what = if scenes.len() == 1 {
+        format!("{} {}", scenes[0].kind().name(), scenes[0].name)
+    } else {
+        format!("{} scenes", scenes.len())
+    };
+    eprintln!(
+        "ladder: wrote {count} {} ({what}) into {} in {:.2} s",
+        if count == 1 { "file" } else { "files" },
+        out.display(),
+        start.elapsed().as_secs_f64()
+    );
+    Ok(())
+}

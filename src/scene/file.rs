@@ -1,0 +1,264 @@
+//! Scene files: TOML in, TOML out (SPEC section 6).
+//!
+//! A file is parsed in two passes: serde reads it into a [`Scene`]
+//! (unknown keys and wrong types are caught here, with the position the
+//! TOML parser gives), then [`Scene::check`] validates the values and
+//! names the offending key, which is located in the source through
+//! toml's spanned document. Every error is one line:
+//! `FILE:LINE:COLUMN: KEY: what is wrong and what is allowed`.
+
+use super::Scene;
+use crate::error::{Error, Result};
+use std::ops::Range;
+use std::path::Path;
+use toml::Spanned;
+use toml::de::{DeTable, DeValue};
+
+/// Largest scene file read, in bytes.
+pub const MAX_FILE_BYTES: u64 = 1 << 20;
+
+/// Parses a scene from TOML `text`; `origin` names it in messages (a
+/// path, or `scene 4` for a built-in one). A scene without `name` is
+/// called `default_name`.
+pub fn parse(text: &str, origin: &str, default_name: &str) -> Result<Scene> {
+    let doc =
+        DeTable::parse(text).map_err(|e| located(text, origin, e.span(), None, e.message()))?;
+    let mut scene: Scene = toml::from_str(text).map_err(|e| {
+        let key = e.span().and_then(|s| key_at(doc.get_ref(), s.start));
+        located(text, origin, e.span(), key.as_deref(), e.message())
+    })?;
+    if !doc.get_ref().contains_key("name") {
+        scene.name = default_name.to_string();
+    }
+    scene.check().map_err(|(key, msg)| {
+        let span = span_of(doc.get_ref(), &key);
+        located(text, origin, span, Some(&key), &msg)
+    })?;
+    Ok(scene)
+}
+
+/// Reads and parses the scene file at `path`; a scene without `name` is
+/// named after the file (`k70.toml` → `k70`).
+pub fn load(path: &Path) -> Result<Scene> {
+    let shown = path.display().to_string();
+    let meta = std::fs::metadata(path)
+        .map_err(|e| Error::bad_input(format!("cannot read {shown}: {}", reason(&e))))?;
+    if !meta.is_file() {
+        return Err(Error::bad_input(format!(
+            "cannot read {shown}: not a regular file"
+        )));
+    }
+    if meta.len() > MAX_FILE_BYTES {
+        return Err(Error::bad_input(format!(
+            "{shown}: a scene file must be at most {MAX_FILE_BYTES} bytes, got {}",
+            meta.len()
+        )));
+    }
+    let bytes = std::fs::read(path)
+        .map_err(|e| Error::bad_input(format!("cannot read {shown}: {}", reason(&e))))?;
+    let text = String::from_utf8(bytes)
+        .map_err(|_| Error::bad_input(format!("{shown}: a scene file must be UTF-8 text")))?;
+    let stem = path
+        .file_stem()
+        .map(|s| sanitize(&s.to_string_lossy()))
+        .unwrap_or_else(|| "custom".into());
+    parse(&text, &shown, &stem)
+}
+
+/// The scene as TOML, every parameter written out (defaults included),
+/// without its `name` (a file takes its name from its file name).
+pub fn to_toml(scene: &Scene) -> Result<String> {
+    let mut table = toml::Table::try_from(scene)
+        .map_err(|e| Error::failed(format!("cannot write the scene as TOML: {e}")))?;
+    table.remove("name");
+    toml::to_string(&table)
+        .map_err(|e| Error::failed(format!("cannot write the scene as TOML: {e}")))
+}
+
+/// A file stem turned into a legal scene name.
+fn sanitize(stem: &str) -> String {
+    let s: String = stem
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || "-_.".contains(c) {
+                c
+            } else {
+                '_'
+            }
+        })
+        .take(64)
+        .collect();
+    let s = s.trim_start_matches('.').to_string();
+    if s.is_empty() { "custom".into() } else { s }
+}
+
+fn reason(e: &std::io::Error) -> String {
+    match e.kind() {
+        std::io::ErrorKind::NotFound => "no such file".into(),
+        std::io::ErrorKind::PermissionDenied => "permission denied".into(),
+        _ => e.to_string().to_lowercase(),
+    }
+}
+
+/// One line: `origin:line:column: key: message`.
+fn located(
+    text: &str,
+    origin: &str,
+    span: Option<Range<usize>>,
+    key: Option<&str>,
+    message: &str,
+) -> Error {
+    let at = match span {
+        Some(s) => {
+            let (line, col) = line_col(text, s.start);
+            format!("{origin}:{line}:{col}")
+        }
+        None => origin.to_string(),
+    };
+    let message: String = message
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join("; ");
+    match key {
+        Some(k) if !k.is_empty() => Error::bad_input(format!("{at}: {k}: {message}")),
+        _ => Error::bad_input(format!("{at}: {message}")),
+    }
+}
+
+/// 1-based line and column (in characters) of byte `offset`.
+fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let offset = offset.min(text.len());
+    let before = text.get(..offset).unwrap_or(text);
+    let line = before.matches('\n').count() + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, col)
+}
+
+/// The dotted key path (`model.alpha`, `drive.flips.1.start`) of the
+/// deepest key, or scalar value, whose span contains `offset`. Every
+/// table is searched: a `[table]`'s own span covers only its header.
+fn key_at(table: &DeTable<'_>, offset: usize) -> Option<String> {
+    fn inside(r: Range<usize>, offset: usize) -> bool {
+        r.start <= offset && offset < r.end.max(r.start + 1)
+    }
+    fn walk(
+        value: &DeValue<'_>,
+        offset: usize,
+        path: &mut Vec<String>,
+        best: &mut Option<Vec<String>>,
+    ) {
+        let mut visit = |name: String, span_hit: bool, child: &DeValue<'_>| {
+            path.push(name);
+            let scalar = !matches!(child, DeValue::Table(_) | DeValue::Array(_));
+            if span_hit && (scalar || best.as_ref().is_none_or(|b| b.len() < path.len())) {
+                *best = Some(path.clone());
+            }
+            walk(child, offset, path, best);
+            path.pop();
+        };
+        match value {
+            DeValue::Table(t) => {
+                for (k, v) in t.iter() {
+                    let hit = inside(k.span(), offset)
+                        || (!matches!(v.get_ref(), DeValue::Table(_)) && inside(v.span(), offset));
+                    visit(k.get_ref().to_string(), hit, v.get_ref());
+                }
+            }
+            DeValue::Array(a) => {
+                for (i, v) in a.iter().enumerate() {
+                    visit(i.to_string(), inside(v.span(), offset), v.get_ref());
+                }
+            }
+            _ => {}
+        }
+    }
+    let mut best = None;
+    walk(
+        &DeValue::Table(table.clone()),
+        offset,
+        &mut Vec::new(),
+        &mut best,
+    );
+    best.map(|p| p.join("."))
+}
+
+/// The span of the value at dotted `key`, or of its nearest ancestor
+/// present in the file (a defaulted key has no place of its own).
+fn span_of(table: &DeTable<'_>, key: &str) -> Option<Range<usize>> {
+    let mut best: Option<Range<usize>> = None;
+    let mut here: Option<&Spanned<DeValue<'_>>> = None;
+    for part in key.split('.') {
+        let next = match here {
+            None => table.get(part),
+            Some(v) => match part.parse::<usize>() {
+                Ok(i) => v.get_ref().get(i),
+                Err(_) => v.get_ref().get(part),
+            },
+        };
+        match next {
+            Some(v) => {
+                best = Some(v.span());
+                here = Some(v);
+            }
+            None => break,
+        }
+    }
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_and_column_count_characters() {
+        let t = "a = 1\nαβ = 2\n";
+        assert_eq!(line_col(t, 0), (1, 1));
+        assert_eq!(line_col(t, 6), (2, 1));
+        assert_eq!(line_col(t, t.find('=').unwrap()), (1, 3));
+        let second = t.rfind('=').unwrap();
+        assert_eq!(line_col(t, second), (2, 4));
+    }
+
+    #[test]
+    fn an_out_of_range_value_is_located() {
+        let text = "[model]\nn = 20\nalpha = 120\n";
+        let e = parse(text, "s.toml", "s").unwrap_err().to_string();
+        assert!(e.starts_with("s.toml:3:9: model.alpha: "), "{e}");
+        assert!(e.contains("120"), "{e}");
+    }
+
+    #[test]
+    fn unknown_keys_and_wrong_types_are_located() {
+        let e = parse("[model]\nalpah = 60\n", "f", "f")
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("f:2:1: model.alpah: unknown field"), "{e}");
+        let e = parse("[model]\nn = \"ten\"\n", "f", "f")
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("f:2:5: model.n: invalid type"), "{e}");
+    }
+
+    #[test]
+    fn overlapping_flips_name_the_flip() {
+        let text =
+            "[drive]\nflips = [{ start = 0, duration = 1000 }, { start = 500, duration = 1000 }]\n";
+        let e = parse(text, "f", "f").unwrap_err().to_string();
+        assert!(e.starts_with("f:2:42: drive.flips.1: "), "{e}");
+        assert!(e.contains("overlap"), "{e}");
+    }
+
+    #[test]
+    fn a_printed_scene_reads_back_equal() {
+        let mut s = Scene::default();
+        s.model.alpha = -70.5;
+        s.model.n = 20;
+        s.drive = super::super::DriveSpec::flips_at(&[0.0, 1500.0], 800.0);
+        let text = to_toml(&s).unwrap();
+        let back = parse(&text, "x", "custom").unwrap();
+        assert_eq!(back, s, "{text}");
+    }
+}
