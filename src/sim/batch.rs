@@ -158,7 +158,7 @@ impl<'s> Job<'_, 's> {
             job: self,
             state,
             lanes: (0..width).map(|_| None).collect(),
-            idle: State::at_rest(self.scenarios[self.queue[0]].initial.q.clone()),
+            idle: State::at_rest(self.scenarios[self.queue[0]].ladder.ground_state()),
             out: Vec::new(),
         };
         for lane in 0..width {
@@ -484,10 +484,11 @@ impl<'s> Run<'s> {
     fn finish_from(&mut self, state: &kernel::LaneState, lane: usize) -> Trajectory {
         gather(state, lane, &mut self.scratch);
         let st = self.scratch.clone();
-        self.finish_ref(st)
+        self.finish(st)
     }
 
-    fn finish_ref(&mut self, st: State) -> Trajectory {
+    /// The run's result, ending in `st`.
+    fn finish(&mut self, st: State) -> Trajectory {
         // One force evaluation per step, and Verlet's first acceleration.
         let evals = self.steps + self.rhs.force_evals.min(self.steps);
         Trajectory::unsampled(
@@ -497,10 +498,6 @@ impl<'s> Run<'s> {
             self.steps,
             evals,
         )
-    }
-
-    fn finish(mut self, st: State) -> Trajectory {
-        self.finish_ref(st)
     }
 }
 
