@@ -183,11 +183,11 @@ pub struct SimulateArgs {
     /// Interval between CSV samples, in tau
     #[arg(long, default_value_t = 10.0, value_name = "T")]
     pub sample_every: f64,
-    /// Code that takes symplectic Euler's steps (N <= 32; otherwise, and for
-    /// the other integrators, the portable loop): the fused kernel for the
-    /// best instruction set of this CPU, the one for a given set, or the
-    /// portable loop. All give the same numbers, bit for bit; only the time
-    /// differs
+    /// Code that takes symplectic Euler's steps (the other integrators use
+    /// the portable loop): the fused kernel (N <= 32) or the chain kernel
+    /// (longer ladders) for the best instruction set of this CPU, the one
+    /// for a given set, or the portable loop. All give the same numbers,
+    /// bit for bit; only the time differs
     #[arg(long, value_enum, default_value_t = KernelArg::Fastest, value_name = "KERNEL")]
     pub kernel: KernelArg,
 }
