@@ -73,7 +73,8 @@ pub enum Command {
 
 #[derive(Args, Debug, Clone)]
 pub struct OutArgs {
-    /// Output folder (created if missing)
+    /// Output folder (created if missing); files are named after the
+    /// scene, e.g. DIR/figure-3.pdf
     #[arg(long, default_value = "out", value_name = "DIR")]
     pub out: PathBuf,
 }
@@ -245,6 +246,15 @@ pub struct MovieArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub format: MovieFormat,
+    /// File formats, comma-separated: gif, mp4 (H.264; frame width and
+    /// height must be even)
+    #[arg(
+        long = "format",
+        default_value = "gif",
+        value_name = "LIST",
+        help_heading = "Movie format"
+    )]
+    pub formats: String,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -278,6 +288,49 @@ pub struct FigureArgs {
     pub run: RunArgs,
     #[command(flatten)]
     pub out: OutArgs,
+    #[command(flatten)]
+    pub figure_format: FigureFormat,
+}
+
+/// `--format` and `--scale` of figures.
+#[derive(Args, Debug, Clone)]
+pub struct FigureFormat {
+    /// File formats, comma-separated: png, svg, pdf (SVG and PDF are vector,
+    /// text as outlines; pdflatex includes the PDF)
+    #[arg(
+        long = "format",
+        default_value = "png",
+        value_name = "LIST",
+        help_heading = "Figure format"
+    )]
+    pub formats: String,
+    /// Scale of PNG figures: 2 draws the same layout with twice the pixels
+    /// each way (0.25..=8)
+    #[arg(
+        long,
+        default_value_t = 1.0,
+        value_name = "S",
+        help_heading = "Figure format"
+    )]
+    pub scale: f32,
+}
+
+/// `--format` and `--scale` of commands that write figures and movies.
+#[derive(Args, Debug, Clone)]
+pub struct MixedFormat {
+    /// File formats, comma-separated: png, svg, pdf for figures; gif, mp4
+    /// for movies (a kind left out keeps its default, png or gif)
+    #[arg(
+        long = "format",
+        default_value = "png,gif",
+        value_name = "LIST",
+        help_heading = "Format"
+    )]
+    pub formats: String,
+    /// Scale of PNG figures: 2 draws the same layout with twice the pixels
+    /// each way (0.25..=8)
+    #[arg(long, default_value_t = 1.0, value_name = "S", help_heading = "Format")]
+    pub scale: f32,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -300,6 +353,8 @@ pub struct RenderArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub format: MovieFormat,
+    #[command(flatten)]
+    pub formats: MixedFormat,
 }
 
 #[derive(Args, Debug)]
@@ -315,6 +370,8 @@ pub struct AllArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub format: MovieFormat,
+    #[command(flatten)]
+    pub formats: MixedFormat,
 }
 
 #[derive(Args, Debug)]

@@ -2,11 +2,16 @@
 //! drive and run flags onto a base scene, validated by `Scene::check`, whose
 //! key paths are worded here as the flags the user typed.
 
-use super::args::{CameraArg, DriveArgs, KernelArg, ModelArgs, MovieFormat, RunArgs, ViewArg};
+use super::args::{
+    CameraArg, DriveArgs, FigureFormat, KernelArg, MixedFormat, ModelArgs, MovieFormat, RunArgs,
+    ViewArg,
+};
+use crate::encode::{self, Formats, Kind as FormatKind};
 use crate::error::{Error, Result};
 use crate::scene::{Camera, DriveSpec, Method, OutputSpec, Scene};
-use crate::scenes::MovieOptions;
+use crate::scenes::{MovieOptions, Outputs};
 use crate::sim;
+use std::path::Path;
 
 impl ModelArgs {
     /// Whether any model flag was given.
@@ -201,6 +206,96 @@ impl MovieFormat {
     }
 }
 
+/// `--format` of a kind, worded as the flag.
+fn formats_of(list: &str, kind: FormatKind) -> Result<Formats> {
+    Formats::parse(list, kind).map_err(|e| Error::bad_input(format!("--format: {e}")))
+}
+
+/// `--scale`, checked.
+fn with_scale(outputs: Outputs, scale: f32) -> Result<Outputs> {
+    Outputs { scale, ..outputs }
+        .validated()
+        .map_err(|e| Error::bad_input(format!("--scale: {e}")))
+}
+
+impl FigureFormat {
+    /// The figure formats and scale of `ladder figure`.
+    pub fn outputs(&self) -> Result<Outputs> {
+        let figures = formats_of(&self.formats, FormatKind::Figure)?;
+        with_scale(
+            Outputs {
+                figures,
+                ..Outputs::default()
+            },
+            self.scale,
+        )
+    }
+}
+
+impl MixedFormat {
+    /// The figure and movie formats of `ladder all` and `ladder render`,
+    /// checked against the movie's frame size and rate.
+    pub fn outputs(&self, movie: &MovieOptions) -> Result<Outputs> {
+        let (figures, movies) = encode::parse_mixed(&self.formats)
+            .map_err(|e| Error::bad_input(format!("--format: {e}")))?;
+        let defaults = Outputs::default();
+        let outputs = Outputs {
+            figures: figures.unwrap_or(defaults.figures),
+            movies: movies.unwrap_or(defaults.movies),
+            scale: defaults.scale,
+        };
+        check_movie_formats(&outputs.movies, movie)?;
+        with_scale(outputs, self.scale)
+    }
+}
+
+/// The movie formats of `ladder movie`, checked against the frame size
+/// and rate.
+pub fn movie_outputs(list: &str, movie: &MovieOptions) -> Result<Outputs> {
+    let movies = formats_of(list, FormatKind::Movie)?;
+    check_movie_formats(&movies, movie)?;
+    Ok(Outputs {
+        movies,
+        ..Outputs::default()
+    })
+}
+
+/// Every movie format can take the frame size and rate (before any work).
+fn check_movie_formats(formats: &Formats, movie: &MovieOptions) -> Result<()> {
+    for &f in formats.as_slice() {
+        encode::check_movie_size(f, movie.width, movie.height)
+            .map_err(|e| Error::bad_input(format!("--size: {e}")))?;
+        encode::check_movie_fps(f, movie.fps)
+            .map_err(|e| Error::bad_input(format!("--fps: {e}")))?;
+    }
+    Ok(())
+}
+
+/// File extensions that make `--out` look like a file name.
+const FILE_EXTENSIONS: [&str; 8] = ["png", "svg", "pdf", "gif", "mp4", "json", "html", "toml"];
+
+/// `--out` names a folder: refuse an existing file, and a path that does
+/// not exist yet but ends like a file name (`--out x.svg`).
+pub fn check_out_dir(out: &Path) -> Result<()> {
+    let shown = out.display();
+    if out.exists() && !out.is_dir() {
+        return Err(Error::bad_input(format!(
+            "--out is a folder, and {shown} is a file; give a folder (the files are named after the scene, e.g. figure-3.png)"
+        )));
+    }
+    let ext = out
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    if let Some(ext) = ext.filter(|e| FILE_EXTENSIONS.contains(&e.as_str()))
+        && !out.exists()
+    {
+        return Err(Error::bad_input(format!(
+            "--out is a folder, not a file name: got {shown}; use --out DIR (the files are named after the scene) and --format {ext}"
+        )));
+    }
+    Ok(())
+}
+
 impl KernelArg {
     /// The stepping asked for, if this CPU can run it.
     pub fn stepping(self) -> Result<sim::Stepping> {
@@ -226,6 +321,49 @@ impl KernelArg {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn out_must_be_a_folder() {
+        assert!(check_out_dir(Path::new("some/new/dir")).is_ok());
+        let e = check_out_dir(Path::new("x.svg")).unwrap_err().to_string();
+        assert!(e.starts_with("--out is a folder"), "{e}");
+        assert!(e.contains("--format svg"), "{e}");
+        let e = check_out_dir(Path::new("Cargo.toml"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("is a file"), "{e}");
+    }
+
+    #[test]
+    fn formats_are_checked_before_work() {
+        let movie = MovieOptions::default();
+        let e = movie_outputs("pdf", &movie).unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "--format: a movie cannot be pdf; a movie can be gif, mp4"
+        );
+        let fast = MovieOptions { fps: 60.0, ..movie };
+        let e = movie_outputs("gif", &fast).unwrap_err().to_string();
+        assert!(e.starts_with("--fps: a GIF plays at most 50"), "{e}");
+        let mixed = MixedFormat {
+            formats: "pdf,gif".into(),
+            scale: 2.0,
+        };
+        let o = mixed.outputs(&movie).unwrap();
+        assert_eq!(o.figures.to_string(), "pdf");
+        assert_eq!(o.movies.to_string(), "gif");
+        assert_eq!(o.scale, 2.0);
+        let bad = MixedFormat {
+            formats: "png".into(),
+            scale: 100.0,
+        };
+        assert!(
+            bad.outputs(&movie)
+                .unwrap_err()
+                .to_string()
+                .starts_with("--scale: ")
+        );
+    }
 
     #[test]
     fn keys_are_worded_as_flags() {

@@ -13,7 +13,7 @@ use crate::error::{Error, Result};
 use crate::limits::{Limits, Resource};
 use crate::output;
 use crate::scene::{self, Kind, Scene};
-use crate::scenes::{self, MovieOptions};
+use crate::scenes::{self, MovieOptions, Outputs};
 use crate::sim::{self, IntegratorKind};
 use clap::Parser;
 use serde::Serialize;
@@ -154,16 +154,20 @@ pub fn run(cli: Cli) -> Result<()> {
             output::print(&scene::file::to_toml(&entry.scene)?)
         }
         Command::Figure(args) => {
+            let outputs = args.figure_format.outputs()?;
             let scenes = figure_scenes(&args)?;
-            render_into(&scenes, &args.out.out, &MovieOptions::default(), false)
+            let movie = MovieOptions::default();
+            render_into(&scenes, &args.out.out, &movie, &outputs, false)
         }
         Command::Movie(args) => {
             let opts = args.format.options()?;
+            let outputs = convert::movie_outputs(&args.formats, &opts)?;
             let scenes = movie_scenes(&args)?;
-            render_into(&scenes, &args.out.out, &opts, false)
+            render_into(&scenes, &args.out.out, &opts, &outputs, false)
         }
         Command::Render(args) => {
             let opts = args.format.options()?;
+            let outputs = args.formats.outputs(&opts)?;
             let scenes = args
                 .files
                 .iter()
@@ -183,15 +187,16 @@ pub fn run(cli: Cli) -> Result<()> {
                 }
                 return Ok(());
             }
-            render_into(&scenes, &args.out.out, &opts, false)
+            render_into(&scenes, &args.out.out, &opts, &outputs, false)
         }
         Command::All(args) => {
             let opts = args.format.options()?;
+            let outputs = args.formats.outputs(&opts)?;
             let scenes: Vec<Scene> = catalog::catalogue()?
                 .iter()
                 .map(|e| e.scene.clone())
                 .collect();
-            render_into(&scenes, &args.out.out, &opts, true)
+            render_into(&scenes, &args.out.out, &opts, &outputs, true)
         }
     }
 }
@@ -588,12 +593,19 @@ fn theory(args: &TheoryArgs) -> Result<()> {
 
 /// Renders `scenes` into `out` in parallel (rayon), each file written
 /// atomically as soon as it is ready, with a progress bar and a summary.
-fn render_into(scenes: &[Scene], out: &Path, movie: &MovieOptions, index: bool) -> Result<()> {
+fn render_into(
+    scenes: &[Scene],
+    out: &Path,
+    movie: &MovieOptions,
+    outputs: &Outputs,
+    index: bool,
+) -> Result<()> {
     use rayon::prelude::*;
+    convert::check_out_dir(out)?;
     // Every target, index.html included, before anything is rendered.
     let mut targets: Vec<std::path::PathBuf> = scenes
         .iter()
-        .flat_map(scenes::file_names)
+        .flat_map(|s| scenes::file_names_for(s, outputs))
         .map(|name| out.join(name))
         .collect();
     if index {
@@ -616,7 +628,7 @@ fn render_into(scenes: &[Scene], out: &Path, movie: &MovieOptions, index: bool) 
     let written: Vec<Vec<String>> = scenes
         .par_iter()
         .map(|s| {
-            let files = scenes::render_observed(s, movie, &frame_done)?;
+            let files = scenes::render_with(s, movie, outputs, &frame_done)?;
             for (name, bytes) in &files {
                 crate::output::write_atomic(&out.join(name), bytes)?;
             }

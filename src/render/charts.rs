@@ -17,12 +17,106 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters_backend::{BackendCoord, DrawingErrorKind};
 use std::ops::Range;
+use std::sync::OnceLock;
 use tiny_skia::Pixmap;
 
 /// A rendered chart: the raster image and the SVG it came from.
 pub struct Chart {
     pub pixmap: Pixmap,
     pub svg: String,
+    /// The SVG parsed with the bundled font (for drawing at other scales).
+    tree: OnceLock<Option<resvg::usvg::Tree>>,
+}
+
+impl Chart {
+    /// A chart from its SVG (text markup of [`style::runs`] typeset),
+    /// rasterised at `width × height` onto white.
+    pub fn from_svg(svg: &str, width: u32, height: u32) -> Result<Chart> {
+        let svg = typeset_svg_text(svg);
+        let tree = parse_svg(&svg)?;
+        let pixmap = rasterize_tree(&tree, width, height)?;
+        Ok(Chart {
+            pixmap,
+            svg,
+            tree: OnceLock::from(Some(tree)),
+        })
+    }
+
+    /// The parsed SVG (`None` only if it cannot be parsed).
+    pub fn tree(&self) -> Option<&resvg::usvg::Tree> {
+        self.tree.get_or_init(|| parse_svg(&self.svg).ok()).as_ref()
+    }
+}
+
+impl std::fmt::Debug for Chart {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Chart")
+            .field("width", &self.pixmap.width())
+            .field("height", &self.pixmap.height())
+            .field("svg_bytes", &self.svg.len())
+            .finish()
+    }
+}
+
+/// Rewrites the content of each `<text>` element of plotters' SVG that
+/// holds markup (`^{...}`, `_{...}`) into `<tspan>`s with a smaller size
+/// and a shifted baseline, sized from the element's `font-size`.
+pub fn typeset_svg_text(svg: &str) -> String {
+    if !svg.contains("^{") && !svg.contains("_{") {
+        return svg.to_string();
+    }
+    let mut out = String::with_capacity(svg.len() + 256);
+    let mut rest = svg;
+    while let Some(open) = rest.find("<text") {
+        let Some(tag_end) = rest[open..].find('>').map(|i| open + i + 1) else {
+            break;
+        };
+        let Some(close) = rest[tag_end..].find("</text>").map(|i| tag_end + i) else {
+            break;
+        };
+        let tag = &rest[open..tag_end];
+        let size = attribute(tag, "font-size")
+            .and_then(|v| v.parse::<f32>().ok())
+            .unwrap_or(size::TICK);
+        out.push_str(&rest[..tag_end]);
+        for (shift, run) in style::runs(&rest[tag_end..close]) {
+            match shift {
+                style::Shift::Base => out.push_str(run),
+                _ => out.push_str(&format!(
+                    "<tspan font-size=\"{:.2}\" baseline-shift=\"{:.2}\">{run}</tspan>",
+                    size * shift.scale(),
+                    size * shift.rise()
+                )),
+            }
+        }
+        rest = &rest[close..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// The value of `name="..."` in an XML start tag.
+fn attribute<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
+    let key = format!(" {name}=\"");
+    let start = tag.find(&key)? + key.len();
+    let end = tag[start..].find('"')? + start;
+    Some(&tag[start..end])
+}
+
+fn parse_svg(svg: &str) -> Result<resvg::usvg::Tree> {
+    resvg::usvg::Tree::from_str(svg, &style::usvg_options())
+        .map_err(|e| Error::failed(format!("internal SVG could not be parsed: {e}")))
+}
+
+/// Rasterises a parsed SVG onto a white `width × height` pixmap (scaled
+/// to fit).
+pub fn rasterize_tree(tree: &resvg::usvg::Tree, width: u32, height: u32) -> Result<Pixmap> {
+    let mut pixmap = style::white_pixmap(width, height)
+        .ok_or_else(|| super::snapshot::bad_size(width, height))?;
+    let s = tree.size();
+    let t = tiny_skia::Transform::from_scale(width as f32 / s.width(), height as f32 / s.height());
+    resvg::render(tree, t, &mut pixmap.as_mut());
+    Ok(pixmap)
 }
 
 /// Axis scale.
@@ -220,14 +314,7 @@ fn rgb(c: Rgb) -> RGBColor {
 /// Rasterises an SVG string with the bundled font onto a white
 /// `width × height` pixmap (the SVG is scaled to fit).
 pub fn rasterize_svg(svg: &str, width: u32, height: u32) -> Result<Pixmap> {
-    let tree = resvg::usvg::Tree::from_str(svg, &style::usvg_options())
-        .map_err(|e| Error::failed(format!("internal SVG could not be parsed: {e}")))?;
-    let mut pixmap = style::white_pixmap(width, height)
-        .ok_or_else(|| super::snapshot::bad_size(width, height))?;
-    let s = tree.size();
-    let t = tiny_skia::Transform::from_scale(width as f32 / s.width(), height as f32 / s.height());
-    resvg::render(&tree, t, &mut pixmap.as_mut());
-    Ok(pixmap)
+    rasterize_tree(&parse_svg(svg)?, width, height)
 }
 
 /// Draws `spec` as a `width × height` chart.
@@ -261,8 +348,7 @@ pub fn line_chart(spec: &ChartSpec, width: u32, height: u32) -> Result<Chart> {
         draw_any(&root, spec, pass, xr, yr)?;
         root.present().map_err(plot_error)?;
     }
-    let pixmap = rasterize_svg(&svg, width, height)?;
-    Ok(Chart { pixmap, svg })
+    Chart::from_svg(&svg, width, height)
 }
 
 fn check_size(width: u32, height: u32) -> Result<()> {
@@ -961,8 +1047,7 @@ pub fn kymograph(k: &Kymograph<'_>, width: u32, height: u32) -> Result<Chart> {
     }
     // Adjacent cells must not show anti-aliasing seams.
     let svg = svg.replace("<rect ", "<rect shape-rendering=\"crispEdges\" ");
-    let pixmap = rasterize_svg(&svg, width, height)?;
-    Ok(Chart { pixmap, svg })
+    Chart::from_svg(&svg, width, height)
 }
 
 /// Colour levels per sign in the heat map (runs of equal colour merge).
@@ -1090,5 +1175,17 @@ mod tests {
         assert_eq!(short_number(1e-6), "1×10⁻⁶");
         assert_eq!(tick_label(1e-3, Scale::Log), "10⁻³");
         assert_eq!(tick_label(100.0, Scale::Log), "10²");
+    }
+
+    #[test]
+    fn chart_text_markup_becomes_tspans() {
+        let svg = "<svg><text x=\"1\" font-size=\"10\" fill=\"#000\">e^{−κ}, x_{n}\n</text>\
+                   <text font-size=\"8\">plain</text></svg>";
+        let out = typeset_svg_text(svg);
+        assert!(
+            out.contains("e<tspan font-size=\"7.00\" baseline-shift=\"3.80\">−κ</tspan>, x<tspan"),
+            "{out}"
+        );
+        assert!(out.contains("<text font-size=\"8\">plain</text>"));
     }
 }

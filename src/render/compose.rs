@@ -2,25 +2,28 @@
 //! a common margin and title; filmstrips of snapshots side by side (paper
 //! Fig. 1c and Fig. 3).
 
+use super::canvas::Canvas;
+use super::picture::Picture;
 use super::snapshot::{self, Region, Snapshot, View};
-use super::style::{self, DARK, HAlign, VAlign, size};
+use super::style::{DARK, HAlign, VAlign, size};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use tiny_skia::{Pixmap, PixmapPaint, Transform};
 
-/// One image of a composition with an optional label above it (drawn at its
-/// top left, e.g. "(a1)") and an optional caption centred below it.
+/// One picture of a composition with an optional label above it (drawn at
+/// its top left, e.g. "(a1)") and an optional caption centred below it.
 pub struct Panel {
-    pub image: Pixmap,
+    pub image: Picture,
     pub label: Option<String>,
     pub caption: Option<String>,
 }
 
 impl Panel {
-    /// A panel without label or caption.
-    pub fn new(image: Pixmap) -> Panel {
+    /// A panel without label or caption: a [`Picture`], a chart, or a
+    /// raster image (which keeps the composition raster-only).
+    pub fn new(image: impl Into<Picture>) -> Panel {
         Panel {
-            image,
+            image: image.into(),
             label: None,
             caption: None,
         }
@@ -92,10 +95,15 @@ fn bands(panels: &[Panel]) -> (u32, u32) {
     (l, c)
 }
 
-/// Places panels in a grid (row-major). Each column is as wide as its
-/// widest image and each row as tall as its tallest; images are centred in
-/// their cells.
+/// Places panels in a grid (row-major) and rasterises the result at 100 %.
 pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
+    compose_picture(panels, layout)?.to_pixmap()
+}
+
+/// Places panels in a grid (row-major). Each column is as wide as its
+/// widest picture and each row as tall as its tallest; pictures are
+/// centred in their cells.
+pub fn compose_picture(panels: &[Panel], layout: &Layout) -> Result<Picture> {
     if panels.is_empty() || layout.columns == 0 {
         return Err(Error::bad_input(
             "a composition needs at least one panel and one column",
@@ -106,8 +114,9 @@ pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
     let mut col_w = vec![0u32; cols];
     let mut row_h = vec![0u32; rows];
     for (k, p) in panels.iter().enumerate() {
-        col_w[k % cols] = col_w[k % cols].max(p.image.width());
-        row_h[k / cols] = row_h[k / cols].max(p.image.height());
+        let (w, h) = p.image.pixel_size();
+        col_w[k % cols] = col_w[k % cols].max(w);
+        row_h[k / cols] = row_h[k / cols].max(h);
     }
     let (label_h, caption_h) = bands(panels);
     let title_h = layout
@@ -118,18 +127,13 @@ pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
     let width = 2 * m + col_w.iter().sum::<u32>() + (cols as u32 - 1) * g;
     let cells_h: u32 = row_h.iter().map(|h| h + label_h + caption_h).sum();
     let height = 2 * m + title_h + cells_h + (rows as u32 - 1) * g;
-    let mut out =
-        style::white_pixmap(width, height).ok_or_else(|| snapshot::bad_size(width, height))?;
+    if width > super::picture::MAX_RASTER_SIDE || height > super::picture::MAX_RASTER_SIDE {
+        return Err(snapshot::bad_size(width, height));
+    }
+    let mut out = Picture::new(width as f32, height as f32);
     if let Some(t) = &layout.title {
         let at = (0.5 * width as f32, m as f32);
-        style::draw_text(
-            &mut out,
-            t,
-            at,
-            size::TITLE,
-            DARK,
-            (HAlign::Center, VAlign::Top),
-        );
+        out.text(t, at, size::TITLE, DARK, (HAlign::Center, VAlign::Top));
     }
     let offsets = |sizes: &[u32], extra: u32| -> Vec<u32> {
         sizes
@@ -151,32 +155,26 @@ pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
 }
 
 fn draw_panel(
-    out: &mut Pixmap,
+    out: &mut Picture,
     p: &Panel,
     (x, y): (u32, u32),
     (cw, ih): (u32, u32),
     (lh, _ch): (u32, u32),
 ) {
-    let ix = x + (cw - p.image.width()) / 2;
-    let iy = y + lh + (ih - p.image.height()) / 2;
-    blit(out, &p.image, ix, iy);
+    let (w, h) = p.image.pixel_size();
+    let ix = x + (cw - w) / 2;
+    let iy = y + lh + (ih - h) / 2;
+    out.place(&p.image, (ix as f32, iy as f32));
     if let Some(l) = &p.label {
         let at = (x as f32 + 2.0, y as f32);
-        style::draw_text(
-            out,
-            l,
-            at,
-            size::PANEL_LABEL,
-            DARK,
-            (HAlign::Left, VAlign::Top),
-        );
+        out.text(l, at, size::PANEL_LABEL, DARK, (HAlign::Left, VAlign::Top));
     }
     if let Some(c) = &p.caption {
         let at = (
             x as f32 + 0.5 * cw as f32,
             (y + lh + ih) as f32 + 0.3 * size::LABEL,
         );
-        style::draw_text(out, c, at, size::LABEL, DARK, (HAlign::Center, VAlign::Top));
+        out.text(c, at, size::LABEL, DARK, (HAlign::Center, VAlign::Top));
     }
 }
 
@@ -214,8 +212,18 @@ pub struct FilmstripOptions {
 }
 
 /// Snapshots side by side in time order (left to right), each captioned
-/// "t/τ = …", sharing one scale.
+/// "t/τ = …", sharing one scale; rasterised at 100 %.
 pub fn filmstrip(ladder: &Ladder, frames: &[Frame<'_>], opts: &FilmstripOptions) -> Result<Pixmap> {
+    filmstrip_picture(ladder, frames, opts)?.to_pixmap()
+}
+
+/// Snapshots side by side in time order (left to right), each captioned
+/// "t/τ = …", sharing one scale.
+pub fn filmstrip_picture(
+    ladder: &Ladder,
+    frames: &[Frame<'_>],
+    opts: &FilmstripOptions,
+) -> Result<Picture> {
     if frames.is_empty() {
         return Err(Error::bad_input("a filmstrip needs at least one frame"));
     }
@@ -225,7 +233,7 @@ pub fn filmstrip(ladder: &Ladder, frames: &[Frame<'_>], opts: &FilmstripOptions)
     let mut panels = Vec::with_capacity(frames.len());
     for f in frames {
         let snap = Snapshot::new(ladder, f.q)?.with_view(view);
-        let img = snapshot::render_snapshot(&snap, w, h)?;
+        let img = snapshot::snapshot_picture(&snap, w, h)?;
         panels.push(Panel::new(img).caption(snapshot::time_label(f.time)));
     }
     let mut layout = Layout::row(panels.len());
@@ -235,17 +243,10 @@ pub fn filmstrip(ladder: &Ladder, frames: &[Frame<'_>], opts: &FilmstripOptions)
         .title
         .clone()
         .or_else(|| opts.label.as_ref().map(|_| String::new()));
-    let mut strip = compose(&panels, &layout)?;
+    let mut strip = compose_picture(&panels, &layout)?;
     if let Some(l) = &opts.label {
         let at = (layout.margin as f32, layout.margin as f32);
-        style::draw_text(
-            &mut strip,
-            l,
-            at,
-            size::PANEL_LABEL,
-            DARK,
-            (HAlign::Left, VAlign::Top),
-        );
+        strip.text(l, at, size::PANEL_LABEL, DARK, (HAlign::Left, VAlign::Top));
     }
     Ok(strip)
 }

@@ -1,15 +1,26 @@
-//! Rendering: ladder snapshots (tiny-skia), charts (plotters → SVG → resvg),
-//! compositions (panels, filmstrips) and the shared style.
+//! Rendering: ladder snapshots, charts (plotters → SVG → resvg),
+//! compositions (panels, filmstrips), the movie frame layout and the shared
+//! style.
 //!
 //! Render knows a ladder state (a `q` slice and its [`crate::model::Ladder`]),
-//! never an integrator. Every function returns a `tiny_skia::Pixmap`; turn it
-//! into bytes with [`crate::encode`] and write it with [`crate::output`].
+//! never an integrator. Drawing code is written once against [`Canvas`]:
+//! figures record a [`Picture`] (a display list) that becomes a PNG at any
+//! scale, an SVG or a PDF; movie frames draw straight onto a pixmap
+//! ([`Raster`]). Turn pixels or trees into bytes with [`crate::encode`] and
+//! write them with [`crate::output`].
 
+pub mod canvas;
 pub mod charts;
 pub mod compose;
+pub mod movie_layout;
+pub mod picture;
 pub mod snapshot;
 pub mod style;
+mod svg;
 
+pub use canvas::{Canvas, Cap, Pen, Raster};
 pub use charts::{Axis, Chart, ChartSpec, Kymograph, Legend, LineStyle, Marker, Scale, Series};
 pub use compose::{FilmstripOptions, Frame, Layout, Panel};
+pub use movie_layout::MovieLayout;
+pub use picture::{Item, Picture};
 pub use snapshot::{Region, Snapshot, View};

@@ -6,13 +6,15 @@
 //! a pin support. Model x (along gravity) points down the image, model y to
 //! the right, with equal scales.
 
+use super::canvas::{Canvas, Pen, Raster};
+use super::picture::Picture;
 use super::style::{self, DARK, GREEN, GREY, HAlign, RED, VAlign, WHITE, size};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::model::ladder::{ix, iy, nodes};
 use crate::model::params::S;
-use tiny_skia::{FillRule, LineCap, Paint, PathBuilder, Pixmap, Stroke, Transform};
+use tiny_skia::Pixmap;
 
 /// Model units added around the fitted states (room for the pin support).
 const FIT_PAD: f64 = 0.4;
@@ -270,6 +272,16 @@ pub fn render_snapshot(snap: &Snapshot<'_>, width: u32, height: u32) -> Result<P
     Ok(p)
 }
 
+/// A snapshot as a `width × height` picture (vector).
+pub fn snapshot_picture(snap: &Snapshot<'_>, width: u32, height: u32) -> Result<Picture> {
+    if width == 0 || height == 0 {
+        return Err(bad_size(width, height));
+    }
+    let mut p = Picture::new(width as f32, height as f32);
+    draw_snapshot_on(&mut p, Region::full(width, height), snap);
+    Ok(p)
+}
+
 /// Clears `pixmap` to white and renders a snapshot over all of it (reuses
 /// the allocation: the per-frame path of movies).
 pub fn render_snapshot_into(pixmap: &mut Pixmap, snap: &Snapshot<'_>) {
@@ -284,34 +296,39 @@ pub(crate) fn bad_size(width: u32, height: u32) -> Error {
     ))
 }
 
-/// Draws a snapshot into `region` of `pixmap` (title band on top, time band
-/// at the bottom, ladder in between). The background is left as it is.
+/// Draws a snapshot into `region` of `pixmap` at 100 %.
 pub fn draw_snapshot(pixmap: &mut Pixmap, region: Region, snap: &Snapshot<'_>) {
+    draw_snapshot_on(&mut Raster::new(pixmap), region, snap);
+}
+
+/// Draws a snapshot into `region` of `canvas` (title band on top, time band
+/// at the bottom, ladder in between). The background is left as it is.
+pub fn draw_snapshot_on(canvas: &mut impl Canvas, region: Region, snap: &Snapshot<'_>) {
     let (margin, top, bottom) = bands(region, snap);
     let inner = inner_region(region, snap);
     let map = Mapping::new(&snap.view(), inner);
     if let Some(g) = snap.ghost {
-        draw_ladder(pixmap, &map, g, &Palette::ghost());
+        draw_ladder(canvas, &map, g, &Palette::ghost());
     }
     if snap.clamp && snap.q.len() >= 3 {
-        draw_clamp(pixmap, &map, [snap.q[ix(0)], snap.q[iy(0)]]);
+        draw_clamp(canvas, &map, [snap.q[ix(0)], snap.q[iy(0)]]);
     }
-    draw_ladder(pixmap, &map, snap.q, &Palette::live());
+    draw_ladder(canvas, &map, snap.q, &Palette::live());
     if snap.clamp && snap.q.len() >= 3 {
-        draw_pivot(pixmap, &map, [snap.q[ix(0)], snap.q[iy(0)]]);
+        draw_pivot(canvas, &map, [snap.q[ix(0)], snap.q[iy(0)]]);
     }
     // A fixed window (a camera) may cut the ladder: clear the label bands.
     if snap.view.is_some() {
-        clear_band(pixmap, region.x, region.y, region.w, margin + top);
-        clear_band(
-            pixmap,
+        canvas.rect(region.x, region.y, region.w, margin + top, WHITE);
+        canvas.rect(
             region.x,
             inner.y + inner.h,
             region.w,
             margin + bottom,
+            WHITE,
         );
     }
-    draw_labels(pixmap, region, margin, snap);
+    draw_labels(canvas, region, margin, snap);
 }
 
 /// Margin, title band and time band of a snapshot drawn into `region`.
@@ -339,34 +356,17 @@ pub fn pixel_of(region: Region, snap: &Snapshot<'_>, p: [f64; 2]) -> (f32, f32) 
     Mapping::new(&snap.view(), inner_region(region, snap)).px(p)
 }
 
-/// Paints a white rectangle (nothing if it is empty).
-fn clear_band(pixmap: &mut Pixmap, x: f32, y: f32, w: f32, h: f32) {
-    if let Some(rect) = tiny_skia::Rect::from_xywh(x, y, w, h) {
-        let mut paint = Paint::default();
-        paint.set_color(style::color(WHITE));
-        pixmap.fill_rect(rect, &paint, Transform::identity(), None);
-    }
-}
-
-fn draw_labels(pixmap: &mut Pixmap, region: Region, margin: f32, snap: &Snapshot<'_>) {
+fn draw_labels(canvas: &mut impl Canvas, region: Region, margin: f32, snap: &Snapshot<'_>) {
     if let Some(title) = snap.title {
         let at = (region.x + 0.5 * region.w, region.y + margin);
-        style::draw_text(
-            pixmap,
-            title,
-            at,
-            size::TITLE,
-            DARK,
-            (HAlign::Center, VAlign::Top),
-        );
+        canvas.text(title, at, size::TITLE, DARK, (HAlign::Center, VAlign::Top));
     }
     if let Some(t) = snap.time {
         // Centred under the ladder: in movies the changed rectangle of each
         // frame then stays narrow (see `encode::GifWriter`).
         let at = (region.x + 0.5 * region.w, region.y + region.h - margin);
         let label = time_label(t);
-        style::draw_text(
-            pixmap,
+        canvas.text(
             &label,
             at,
             size::LABEL,
@@ -408,87 +408,64 @@ impl Palette {
     }
 }
 
-fn paint(c: Rgb) -> Paint<'static> {
-    let mut p = Paint::default();
-    p.set_color(style::color(c));
-    p.anti_alias = true;
-    p
-}
-
-fn stroke_line(pixmap: &mut Pixmap, a: (f32, f32), b: (f32, f32), width: f32, c: Rgb) {
-    let mut pb = PathBuilder::new();
-    pb.move_to(a.0, a.1);
-    pb.line_to(b.0, b.1);
-    let Some(path) = pb.finish() else { return };
-    let stroke = Stroke {
-        width,
-        line_cap: LineCap::Butt,
-        ..Stroke::default()
-    };
-    pixmap.stroke_path(&path, &paint(c), &stroke, Transform::identity(), None);
-}
-
 /// Springs first, then the blocks on top of them.
-fn draw_ladder(pixmap: &mut Pixmap, map: &Mapping, q: &[f64], pal: &Palette) {
+fn draw_ladder(canvas: &mut impl Canvas, map: &Mapping, q: &[f64], pal: &Palette) {
     let n = q.len() / 3;
     let spring_w = map.len(0.045, 1.0, 4.0);
     let block_w = map.len(0.16, 2.5, 14.0);
-    let ends: Vec<_> = (0..n).map(|i| nodes(q, i)).collect();
-    for pair in ends.windows(2) {
-        let ((a0, b0), (a1, b1)) = (pair[0], pair[1]);
-        stroke_line(pixmap, map.px(a0), map.px(a1), spring_w, pal.a_spring);
-        stroke_line(pixmap, map.px(b0), map.px(b1), spring_w, pal.b_spring);
+    let (a_pen, b_pen) = (
+        Pen::new(spring_w, pal.a_spring),
+        Pen::new(spring_w, pal.b_spring),
+    );
+    let mut prev = None;
+    for i in 0..n {
+        let (a1, b1) = nodes(q, i);
+        if let Some((a0, b0)) = prev {
+            canvas.line(map.px(a0), map.px(a1), &a_pen);
+            canvas.line(map.px(b0), map.px(b1), &b_pen);
+        }
+        prev = Some((a1, b1));
     }
-    for &(a, b) in &ends {
-        draw_block(pixmap, map, a, b, block_w, pal);
+    for i in 0..n {
+        let (a, b) = nodes(q, i);
+        draw_block(canvas, map, a, b, block_w, pal);
     }
 }
 
 /// A bar from the A node to the B node, the last quarter at each end
 /// coloured by the node it carries.
-fn draw_block(pixmap: &mut Pixmap, map: &Mapping, a: [f64; 2], b: [f64; 2], w: f32, pal: &Palette) {
+fn draw_block(
+    canvas: &mut impl Canvas,
+    map: &Mapping,
+    a: [f64; 2],
+    b: [f64; 2],
+    w: f32,
+    pal: &Palette,
+) {
     let at = |f: f64| map.px([a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f]);
-    stroke_line(pixmap, at(0.0), at(1.0), w, pal.block);
-    stroke_line(pixmap, at(0.0), at(0.25), w, pal.a_end);
-    stroke_line(pixmap, at(0.75), at(1.0), w, pal.b_end);
+    canvas.line(at(0.0), at(1.0), &Pen::new(w, pal.block));
+    canvas.line(at(0.0), at(0.25), &Pen::new(w, pal.a_end));
+    canvas.line(at(0.75), at(1.0), &Pen::new(w, pal.b_end));
 }
 
 /// A dark triangle from a base line above block 1 down to its centre.
-fn draw_clamp(pixmap: &mut Pixmap, map: &Mapping, centre: [f64; 2]) {
+fn draw_clamp(canvas: &mut impl Canvas, map: &Mapping, centre: [f64; 2]) {
     let h = CLAMP_HEIGHT * S;
     let apex = map.px(centre);
     let l = map.px([centre[0] - h, centre[1] - 0.22 * S]);
     let r = map.px([centre[0] - h, centre[1] + 0.22 * S]);
-    let mut pb = PathBuilder::new();
-    pb.move_to(apex.0, apex.1);
-    pb.line_to(l.0, l.1);
-    pb.line_to(r.0, r.1);
-    pb.close();
-    if let Some(path) = pb.finish() {
-        let p = paint(style::mix(WHITE, DARK, 0.55));
-        pixmap.fill_path(&path, &p, FillRule::Winding, Transform::identity(), None);
-    }
+    canvas.polygon(&[apex, l, r], style::mix(WHITE, DARK, 0.55));
     let wl = map.px([centre[0] - h, centre[1] - 0.32 * S]);
     let wr = map.px([centre[0] - h, centre[1] + 0.32 * S]);
-    stroke_line(pixmap, wl, wr, map.len(0.06, 1.5, 4.0), DARK);
+    canvas.line(wl, wr, &Pen::new(map.len(0.06, 1.5, 4.0), DARK));
 }
 
 /// A white pin with a dark rim at the centre of block 1.
-fn draw_pivot(pixmap: &mut Pixmap, map: &Mapping, centre: [f64; 2]) {
+fn draw_pivot(canvas: &mut impl Canvas, map: &Mapping, centre: [f64; 2]) {
     let (x, y) = map.px(centre);
     let r = map.len(0.06, 1.5, 6.0);
-    if let Some(path) = PathBuilder::from_circle(x, y, r) {
-        pixmap.fill_path(
-            &path,
-            &paint(WHITE),
-            FillRule::Winding,
-            Transform::identity(),
-            None,
-        );
-        let stroke = Stroke {
-            width: (0.5 * r).max(1.0),
-            ..Stroke::default()
-        };
-        pixmap.stroke_path(&path, &paint(DARK), &stroke, Transform::identity(), None);
+    if let Some(path) = tiny_skia::PathBuilder::from_circle(x, y, r) {
+        canvas.fill(&path, WHITE);
+        canvas.stroke(&path, &Pen::new((0.5 * r).max(1.0), DARK));
     }
 }

@@ -166,9 +166,103 @@ fn px_scale(font: &FontRef<'_>, size: f32) -> PxScale {
     PxScale::from(size * font.height_unscaled() / upem)
 }
 
-/// Width in pixels of `text` at font size `size` (with kerning).
-pub fn text_width(text: &str, size: f32) -> f32 {
-    let Some(font) = font() else { return 0.0 };
+/// Where a run of text sits relative to the baseline.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shift {
+    /// On the baseline, full size.
+    Base,
+    /// Raised and smaller: `^{...}` in markup.
+    Super,
+    /// Lowered and smaller: `_{...}` in markup.
+    Sub,
+}
+
+impl Shift {
+    /// Font size of the run relative to the text's size.
+    pub fn scale(self) -> f32 {
+        match self {
+            Shift::Base => 1.0,
+            Shift::Super | Shift::Sub => SCRIPT_SCALE,
+        }
+    }
+
+    /// How far the run's baseline sits above the text's baseline, in units
+    /// of the text's size (negative: below).
+    pub fn rise(self) -> f32 {
+        match self {
+            Shift::Base => 0.0,
+            Shift::Super => SUPER_RISE,
+            Shift::Sub => -SUB_DROP,
+        }
+    }
+}
+
+/// Size of super- and subscripts relative to the text.
+pub const SCRIPT_SCALE: f32 = 0.7;
+/// Rise of a superscript's baseline, in units of the text's size.
+pub const SUPER_RISE: f32 = 0.38;
+/// Drop of a subscript's baseline, in units of the text's size.
+pub const SUB_DROP: f32 = 0.16;
+
+/// Splits typeset text into runs. Markup: `^{...}` is a superscript and
+/// `_{...}` a subscript (e.g. "e^{−κ(n−1)b}", "δθ_{n}"); anything else,
+/// including a `^` or `_` not followed by `{`, is literal text. An
+/// unclosed brace makes the rest of the text literal.
+pub fn runs(text: &str) -> Vec<(Shift, &str)> {
+    let mut out = Vec::new();
+    let mut rest = text;
+    while !rest.is_empty() {
+        let next = rest
+            .match_indices(['^', '_'])
+            .find(|(i, _)| rest[i + 1..].starts_with('{') && rest[i + 2..].contains('}'));
+        let Some((i, mark)) = next else {
+            out.push((Shift::Base, rest));
+            break;
+        };
+        if i > 0 {
+            out.push((Shift::Base, &rest[..i]));
+        }
+        let body = &rest[i + 2..];
+        let close = body.find('}').unwrap_or(body.len());
+        let shift = if mark == "^" {
+            Shift::Super
+        } else {
+            Shift::Sub
+        };
+        if close > 0 {
+            out.push((shift, &body[..close]));
+        }
+        rest = &body[(close + 1).min(body.len())..];
+    }
+    out
+}
+
+/// The text without markup (what a reader would type), e.g. for HTML
+/// attributes and searching.
+pub fn plain_text(text: &str) -> String {
+    runs(text).into_iter().map(|(_, t)| t).collect()
+}
+
+/// The text as HTML: markup to `<sup>`/`<sub>`, `&`, `<`, `>` escaped.
+pub fn markup_html(text: &str) -> String {
+    let esc = |t: &str| {
+        t.replace('&', "&amp;")
+            .replace('<', "&lt;")
+            .replace('>', "&gt;")
+    };
+    runs(text)
+        .into_iter()
+        .map(|(shift, t)| match shift {
+            Shift::Base => esc(t),
+            Shift::Super => format!("<sup>{}</sup>", esc(t)),
+            Shift::Sub => format!("<sub>{}</sub>", esc(t)),
+        })
+        .collect()
+}
+
+/// Width in pixels of plain `text` (no markup) at font size `size`, with
+/// kerning.
+fn plain_width(font: &FontRef<'_>, text: &str, size: f32) -> f32 {
     let sf = font.as_scaled(px_scale(font, size));
     let mut prev = None;
     let mut w = 0.0;
@@ -183,49 +277,79 @@ pub fn text_width(text: &str, size: f32) -> f32 {
     w
 }
 
-/// Draws `text` onto `pixmap` anti-aliased, anchored at (`x`, `y`) pixels.
-pub fn draw_text(
-    pixmap: &mut Pixmap,
-    text: &str,
+/// Width in pixels of typeset `text` (see [`runs`]) at font size `size`.
+pub fn text_width(text: &str, size: f32) -> f32 {
+    let Some(font) = font() else { return 0.0 };
+    runs(text)
+        .into_iter()
+        .map(|(shift, t)| plain_width(font, t, size * shift.scale()))
+        .sum()
+}
+
+/// The font's ascent at font size `size` (top of the em box to baseline).
+pub fn ascent(size: f32) -> f32 {
+    font().map_or(0.8 * size, |f| f.as_scaled(px_scale(f, size)).ascent())
+}
+
+/// Left end and baseline of text of width `width` anchored at (`x`, `y`)
+/// with `align`: shared by every backend so that they place text alike.
+pub fn text_origin(
     (x, y): (f32, f32),
+    width: f32,
     size: f32,
-    rgb: Rgb,
     (h, v): (HAlign, VAlign),
-) {
-    let Some(font) = font() else { return };
-    let sf = font.as_scaled(px_scale(font, size));
-    let width = text_width(text, size);
-    let mut pen = match h {
+) -> (f32, f32) {
+    let left = match h {
         HAlign::Left => x,
         HAlign::Center => x - 0.5 * width,
         HAlign::Right => x - width,
     };
     let baseline = match v {
-        VAlign::Top => y + sf.ascent(),
+        VAlign::Top => y + ascent(size),
         VAlign::Middle => y + 0.36 * size,
         VAlign::Baseline => y,
     };
-    let mut prev = None;
-    for ch in text.chars() {
-        let id = sf.glyph_id(ch);
-        if let Some(p) = prev {
-            pen += sf.kern(p, id);
+    (left, baseline)
+}
+
+/// Draws typeset `text` (see [`runs`]) onto `pixmap` anti-aliased,
+/// anchored at (`x`, `y`) pixels.
+pub fn draw_text(
+    pixmap: &mut Pixmap,
+    text: &str,
+    at: (f32, f32),
+    size: f32,
+    rgb: Rgb,
+    align: (HAlign, VAlign),
+) {
+    let Some(font) = font() else { return };
+    let (mut pen, baseline) = text_origin(at, text_width(text, size), size, align);
+    for (shift, run) in runs(text) {
+        let run_size = size * shift.scale();
+        let sf = font.as_scaled(px_scale(font, run_size));
+        let y = baseline - shift.rise() * size;
+        let mut prev = None;
+        for ch in run.chars() {
+            let id = sf.glyph_id(ch);
+            if let Some(p) = prev {
+                pen += sf.kern(p, id);
+            }
+            let glyph = id.with_scale_and_position(sf.scale(), point(pen, y));
+            if let Some(outline) = font.outline_glyph(glyph) {
+                let b = outline.px_bounds();
+                outline.draw(|gx, gy, cov| {
+                    blend(
+                        pixmap,
+                        b.min.x as i32 + gx as i32,
+                        b.min.y as i32 + gy as i32,
+                        rgb,
+                        cov,
+                    );
+                });
+            }
+            pen += sf.h_advance(id);
+            prev = Some(id);
         }
-        let glyph = id.with_scale_and_position(sf.scale(), point(pen, baseline));
-        if let Some(outline) = font.outline_glyph(glyph) {
-            let b = outline.px_bounds();
-            outline.draw(|gx, gy, cov| {
-                blend(
-                    pixmap,
-                    b.min.x as i32 + gx as i32,
-                    b.min.y as i32 + gy as i32,
-                    rgb,
-                    cov,
-                );
-            });
-        }
-        pen += sf.h_advance(id);
-        prev = Some(id);
     }
 }
 
@@ -253,12 +377,13 @@ pub fn white_pixmap(width: u32, height: u32) -> Option<Pixmap> {
 }
 
 /// Greedy word wrap: the words of `text` (paragraphs split at newlines) in
-/// lines at most `width` pixels wide at font `size`.
+/// lines at most `width` pixels wide at font `size`. Spaces inside markup
+/// braces (`^{...}`) do not break a line.
 pub fn wrap_text(text: &str, width: f32, size: f32) -> Vec<String> {
     let mut lines = Vec::new();
     for paragraph in text.split('\n') {
         let mut line = String::new();
-        for word in paragraph.split_whitespace() {
+        for word in words(paragraph) {
             let candidate = if line.is_empty() {
                 word.to_string()
             } else {
@@ -273,6 +398,30 @@ pub fn wrap_text(text: &str, width: f32, size: f32) -> Vec<String> {
         lines.push(line);
     }
     lines
+}
+
+/// Words separated by whitespace outside braces.
+fn words(text: &str) -> Vec<&str> {
+    let mut out = Vec::new();
+    let (mut depth, mut start) = (0i32, None);
+    for (i, c) in text.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => depth = (depth - 1).max(0),
+            _ => {}
+        }
+        if c.is_whitespace() && depth == 0 {
+            if let Some(s) = start.take() {
+                out.push(&text[s..i]);
+            }
+        } else if start.is_none() {
+            start = Some(i);
+        }
+    }
+    if let Some(s) = start {
+        out.push(&text[s..]);
+    }
+    out
 }
 
 #[cfg(test)]
@@ -292,6 +441,28 @@ mod tests {
         );
         assert!(p.pixels().iter().any(|c| c.red() < 100));
         assert!(text_width("θ", 14.0) > 3.0);
+    }
+
+    #[test]
+    fn markup_runs() {
+        assert_eq!(
+            runs("e^{−κ(n−1)b}, κb"),
+            vec![
+                (Shift::Base, "e"),
+                (Shift::Super, "−κ(n−1)b"),
+                (Shift::Base, ", κb")
+            ]
+        );
+        assert_eq!(runs("a_b ^x"), vec![(Shift::Base, "a_b ^x")]);
+        assert_eq!(runs("δθ_{n}"), vec![(Shift::Base, "δθ"), (Shift::Sub, "n")]);
+        assert_eq!(plain_text("10^{−3} s"), "10−3 s");
+        assert_eq!(markup_html("x^{2} < y"), "x<sup>2</sup> &lt; y");
+        assert!(text_width("e^{−κ}", 14.0) < text_width("e−κ", 14.0));
+        assert_eq!(
+            wrap_text("aa e^{−κ n b} bb", 1000.0, 14.0),
+            vec!["aa e^{−κ n b} bb"]
+        );
+        assert_eq!(words(" a^{x y}  b "), vec!["a^{x y}", "b"]);
     }
 
     #[test]

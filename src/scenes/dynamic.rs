@@ -3,13 +3,13 @@
 //! only to its last frame and is sampled only at the times drawn.
 
 use super::run::{self, IntegratorReport, SceneRun};
-use crate::encode::{GifWriter, png_bytes};
+use crate::encode::{Format, MovieWriter, png_bytes};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::charts::{self, Axis, ChartSpec, Kymograph, Marker, Series};
 use crate::render::compose::{self, FilmstripOptions, Frame, Layout, Panel};
 use crate::render::snapshot::{self, Region, Snapshot, View};
-use crate::render::style;
+use crate::render::{MovieLayout, Picture, style};
 use crate::scene::{Camera, DriveSpec, MIN_BLOCK_PIXELS, Model, OutputSpec, Scene, describe};
 use crate::sim::{self, Trajectory};
 use serde::Serialize;
@@ -146,7 +146,7 @@ fn strip_image(
     scene: &Scene,
     times: &[f64],
     frame: Option<(u32, u32)>,
-) -> Result<(Pixmap, RunData)> {
+) -> Result<(Picture, RunData)> {
     let run = run::simulate(scene, times)?;
     let ladder = Ladder::new(scene.model.params()?);
     let traj = &run.trajectory;
@@ -163,7 +163,7 @@ fn strip_image(
         label: None,
         view: None,
     };
-    let image = compose::filmstrip(&ladder, &frames, &opts)?;
+    let image = compose::filmstrip_picture(&ladder, &frames, &opts)?;
     Ok((image, RunData::new(label, scene, &run)))
 }
 
@@ -173,7 +173,7 @@ fn strip_image(
 pub fn filmstrip_figure(
     scene: &Scene,
     frame: Option<(u32, u32)>,
-) -> Result<(Pixmap, Vec<RunData>)> {
+) -> Result<(Picture, Vec<RunData>)> {
     let labels = panel_labels(scene);
     let runs = scene.runs();
     let strips = runs
@@ -185,7 +185,7 @@ pub fn filmstrip_figure(
         strips.into_iter().map(|(p, d)| (Panel::new(p), d)).unzip();
     let layout =
         Layout::columns(if panels.len() > 2 { 2 } else { 1 }).title(describe::title(scene));
-    Ok((compose::compose(&panels, &layout)?, data))
+    Ok((compose::compose_picture(&panels, &layout)?, data))
 }
 
 fn panel_labels(scene: &Scene) -> Vec<String> {
@@ -208,7 +208,7 @@ pub fn fitted_speed(arrivals: &[Option<f64>]) -> Option<f64> {
 
 /// The arrival-time chart (figure S6): t_n against n for each curve; one
 /// colour and marker per |α|, antikinks dashed.
-pub fn arrivals_figure(scene: &Scene) -> Result<(Pixmap, Vec<RunData>)> {
+pub fn arrivals_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     let runs = scene.runs();
     let labels = panel_labels(scene);
     let n_max = runs.iter().map(|(s, _)| s.model.n).max().unwrap_or(10);
@@ -251,7 +251,7 @@ pub fn arrivals_figure(scene: &Scene) -> Result<(Pixmap, Vec<RunData>)> {
         spec = spec.series(series);
         data.push(RunData::new(label, s, &run));
     }
-    Ok((charts::line_chart(&spec, 820, 560)?.pixmap, data))
+    Ok((charts::line_chart(&spec, 820, 560)?.into(), data))
 }
 
 /// Frame times of a movie: `frames` times evenly over [0, t_end].
@@ -384,7 +384,7 @@ impl MoviePlan {
         let ladder = Ladder::new(scene.model.params()?);
         let layout = MovieLayout::new(opts.width, opts.height, ladder.n());
         let region = layout.ladder;
-        let aspect = region.w as f64 / region.h as f64;
+        let aspect = layout.ladder_aspect();
         let traj = &run.trajectory;
         let all: Vec<&[f64]> = traj.states.iter().map(|q| q.as_slice()).collect();
         let fixed = View::fit(&all);
@@ -445,22 +445,28 @@ impl MoviePlan {
         Ok(snap)
     }
 
-    /// Draws frame `k`'s ladder (every column, and the time label of a
-    /// folded ladder).
-    fn draw(&self, canvas: &mut Pixmap, k: usize) -> Result<()> {
-        for c in &self.columns {
-            snapshot::draw_snapshot(canvas, c.region, &self.snapshot(c, k)?);
-        }
-        if let Some(band) = self.time_band {
-            style::draw_text(
-                canvas,
-                &snapshot::time_label(self.run.trajectory.times[k]),
-                (band.x + 0.5 * band.w, band.y + 0.5 * band.h),
-                style::size::LABEL,
-                style::DARK,
-                (style::HAlign::Center, style::VAlign::Middle),
-            );
-        }
+    /// Frame `k` into `canvas`: the background, every column's snapshot
+    /// (and the time label of a folded ladder), and the top `fraction` of
+    /// the live kymograph `heat`.
+    fn draw_frame(
+        &self,
+        canvas: &mut Pixmap,
+        background: &Pixmap,
+        heat: &Pixmap,
+        k: usize,
+        fraction: f32,
+    ) -> Result<()> {
+        let snaps = self
+            .columns
+            .iter()
+            .map(|c| Ok((c.region, self.snapshot(c, k)?)))
+            .collect::<Result<Vec<_>>>()?;
+        let label = self
+            .time_band
+            .map(|band| (band, snapshot::time_label(self.run.trajectory.times[k])));
+        let label = label.as_ref().map(|(band, text)| (*band, text.as_str()));
+        self.layout
+            .draw_frame(canvas, background, &snaps, label, heat, fraction);
         Ok(())
     }
 }
@@ -489,45 +495,36 @@ pub fn movie_block_pixels(scene: &Scene, opts: &MovieOptions) -> Result<(Region,
     Ok((plan.layout.ladder, frames))
 }
 
-/// A movie: the GIF, the kymograph PNG and the run's data. Each frame
-/// shows the ladder on the left and, on the right, the kymograph of
-/// sin θ_n up to that frame.
-pub fn movie(scene: &Scene, opts: &MovieOptions) -> Result<(Vec<u8>, Vec<u8>, RunData)> {
-    movie_observed(scene, opts, &|| {})
-}
+/// A movie's files: its bytes in each format, the kymograph PNG, its data.
+pub type MovieFiles = (Vec<(Format, Vec<u8>)>, Vec<u8>, RunData);
 
-/// As [`movie`], calling `frame_done` after each frame is encoded.
-pub fn movie_observed(
+/// A movie: its bytes in each of `formats` (GIF, MP4: the same frames),
+/// the kymograph PNG and the run's data. Each frame shows the ladder on
+/// the left and, on the right, the kymograph of sin θ_n up to that frame;
+/// the layout scales with the frame size (`render::MovieLayout`);
+/// `frame_done` is called after each frame (for a progress bar).
+pub fn movie(
     scene: &Scene,
     opts: &MovieOptions,
+    formats: &[Format],
     frame_done: &(dyn Fn() + Sync),
-) -> Result<(Vec<u8>, Vec<u8>, RunData)> {
+) -> Result<MovieFiles> {
     let opts = opts.validated()?;
+    let mut writer = MovieWriter::new(formats, opts.width, opts.height, opts.fps)?;
     let plan = MoviePlan::new(scene, &opts)?;
     let traj = &plan.run.trajectory;
     let n = plan.ladder.n();
     let layout = &plan.layout;
-    let heat = heat_map(traj, n, layout.heat)?;
-    let mut gif = GifWriter::new(opts.width, opts.height, opts.fps)?;
-    let blank = || {
-        style::white_pixmap(opts.width, opts.height)
-            .ok_or_else(|| Error::failed("the movie frame does not fit in memory"))
-    };
+    let heat = layout.heat_map(&traj.states, n)?;
     // What every frame shares is drawn once; each frame starts from a copy.
-    let mut background = blank()?;
-    layout.decorate(&mut background, &plan.title, scene.run.t_end, n);
-    let mut canvas = blank()?;
-    for k in 0..traj.states.len() {
-        canvas.data_mut().copy_from_slice(background.data());
-        plan.draw(&mut canvas, k)?;
-        layout.restore_title(&mut canvas, &background);
-        reveal_rows(
-            &mut canvas,
-            &heat,
-            layout.heat,
-            (k + 1) as f32 / traj.states.len() as f32,
-        );
-        gif.push_frame(&canvas)?;
+    let background = layout.background(&plan.title, scene.run.t_end, n)?;
+    let mut canvas = style::white_pixmap(opts.width, opts.height)
+        .ok_or_else(|| Error::failed("the movie frame does not fit in memory"))?;
+    let frames = traj.states.len();
+    for k in 0..frames {
+        let shown = (k + 1) as f32 / frames as f32;
+        plan.draw_frame(&mut canvas, &background, &heat, k, shown)?;
+        writer.push_frame(&canvas)?;
         frame_done();
     }
     let kymo = kymograph_image(
@@ -538,177 +535,44 @@ pub fn movie_observed(
         opts.height.max(360),
     )?;
     let data = RunData::new("", scene, &plan.run);
-    Ok((gif.finish()?, png_bytes(&kymo)?, data))
+    Ok((writer.finish()?, png_bytes(&kymo)?, data))
+}
+
+/// Frame `k` of a movie exactly as [`movie`] draws it (for tests and
+/// thumbnails).
+pub fn movie_frame(scene: &Scene, opts: &MovieOptions, k: usize) -> Result<Pixmap> {
+    let opts = opts.validated()?;
+    let plan = MoviePlan::new(scene, &opts)?;
+    let traj = &plan.run.trajectory;
+    let frames = traj.states.len();
+    if k >= frames {
+        return Err(Error::bad_input(format!(
+            "the movie has {frames} frames, no frame {k}"
+        )));
+    }
+    let n = plan.ladder.n();
+    let layout = &plan.layout;
+    let heat = layout.heat_map(&traj.states, n)?;
+    let background = layout.background(&plan.title, scene.run.t_end, n)?;
+    let mut canvas = background.clone();
+    let shown = (k + 1) as f32 / frames as f32;
+    plan.draw_frame(&mut canvas, &background, &heat, k, shown)?;
+    Ok(canvas)
 }
 
 /// A kymograph figure: sin θ_n of the scene's run over `frames` rows.
-pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Pixmap, RunData)> {
+pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Picture, RunData)> {
     let times = frame_times(scene.run.t_end, frames);
     let run = run::simulate(scene, &times)?;
     let title = describe::title(scene);
-    let image = kymograph_image(&title, &run.trajectory, scene.model.n, 820, 560)?;
-    Ok((image, RunData::new("", scene, &run)))
+    let image = kymograph_chart(&title, &run.trajectory, scene.model.n, 820, 560)?;
+    Ok((image.into(), RunData::new("", scene, &run)))
 }
 
-/// Where a movie frame puts the title, the ladder and the live kymograph.
-struct MovieLayout {
-    width: f32,
-    ladder: Region,
-    heat: Region,
-}
-
-impl MovieLayout {
-    /// Width of one block's column of the live kymograph, in pixels: a
-    /// narrow panel keeps the changed rectangle of each GIF frame small.
-    const COLUMN: f32 = 20.0;
-
-    fn new(width: u32, height: u32, n: usize) -> Self {
-        let (w, h) = (width as f32, height as f32);
-        let top = (1.8 * style::size::TITLE).min(0.2 * h);
-        let split = (0.45 * w).round();
-        let heat_x = split + (0.1 * w).min(56.0);
-        let bottom = (2.6 * style::size::TICK).min(0.15 * h);
-        Self {
-            width: w,
-            ladder: Region {
-                x: 0.0,
-                y: top,
-                w: split,
-                h: (h - top).max(1.0),
-            },
-            heat: Region {
-                x: heat_x.round(),
-                y: (top + 0.8 * style::size::TICK).round(),
-                w: (w - heat_x - 0.04 * w)
-                    .min((Self::COLUMN * n as f32).max(0.25 * w))
-                    .max(1.0)
-                    .round(),
-                h: (h - top - bottom - 0.8 * style::size::TICK)
-                    .max(1.0)
-                    .round(),
-            },
-        }
-    }
-
-    /// Copies the title band back from `background` (a camera window may
-    /// draw the ladder over it).
-    fn restore_title(&self, canvas: &mut Pixmap, background: &Pixmap) {
-        let bytes = 4 * canvas.width() as usize * self.ladder.y as usize;
-        canvas.data_mut()[..bytes].copy_from_slice(&background.data()[..bytes]);
-    }
-
-    /// Title across the frame; time axis and block labels of the kymograph.
-    fn decorate(&self, canvas: &mut Pixmap, title: &str, t_end: f64, n: usize) {
-        use style::{DARK, HAlign, VAlign, draw_text, size};
-        let tick = size::TICK;
-        draw_text(
-            canvas,
-            title,
-            (0.5 * self.width, 6.0),
-            size::TITLE,
-            DARK,
-            (HAlign::Center, VAlign::Top),
-        );
-        let r = self.heat;
-        let left = r.x - 4.0;
-        draw_text(
-            canvas,
-            "t/τ = 0",
-            (left, r.y),
-            tick,
-            DARK,
-            (HAlign::Right, VAlign::Top),
-        );
-        let end = format!("{t_end:.0}");
-        draw_text(
-            canvas,
-            &end,
-            (left, r.y + r.h),
-            tick,
-            DARK,
-            (HAlign::Right, VAlign::Baseline),
-        );
-        let below = r.y + r.h + 4.0;
-        draw_text(
-            canvas,
-            "block 1",
-            (r.x, below),
-            tick,
-            DARK,
-            (HAlign::Left, VAlign::Top),
-        );
-        let last = format!("{n}");
-        draw_text(
-            canvas,
-            &last,
-            (r.x + r.w, below),
-            tick,
-            DARK,
-            (HAlign::Right, VAlign::Top),
-        );
-        let legend = "sin θₙ: red +1, blue −1";
-        let mid = (r.x + 0.5 * r.w, below + 1.3 * tick);
-        draw_text(
-            canvas,
-            legend,
-            mid,
-            tick,
-            DARK,
-            (HAlign::Center, VAlign::Top),
-        );
-    }
-}
-
-/// The whole kymograph as a `region`-sized image: one row per frame, one
-/// column per block, sin θ_n in the diverging map (no anti-aliasing).
-fn heat_map(traj: &Trajectory, n: usize, region: Region) -> Result<Pixmap> {
-    let (w, h) = (region.w as u32, region.h as u32);
-    let mut map = style::white_pixmap(w, h)
-        .ok_or_else(|| Error::bad_input("the movie frame is too small"))?;
-    let rows = traj.states.len();
-    let mut paint = tiny_skia::Paint {
-        anti_alias: false,
-        ..Default::default()
-    };
-    for (k, q) in traj.states.iter().enumerate() {
-        let (y0, y1) = (
-            k as f32 * h as f32 / rows as f32,
-            (k + 1) as f32 * h as f32 / rows as f32,
-        );
-        for j in 0..n {
-            let (x0, x1) = (
-                j as f32 * w as f32 / n as f32,
-                (j + 1) as f32 * w as f32 / n as f32,
-            );
-            let v = q[crate::model::ladder::itheta(j)].sin();
-            paint.set_color(style::color(style::diverging(v)));
-            if let Some(rect) =
-                tiny_skia::Rect::from_ltrb(x0.floor(), y0.floor(), x1.ceil(), y1.ceil())
-            {
-                map.fill_rect(rect, &paint, tiny_skia::Transform::identity(), None);
-            }
-        }
-    }
-    Ok(map)
-}
-
-/// Copies the top `fraction` of `heat` into `canvas` at `region`.
-fn reveal_rows(canvas: &mut Pixmap, heat: &Pixmap, region: Region, fraction: f32) {
-    let rows = ((fraction * heat.height() as f32).round() as u32).min(heat.height());
-    let (cw, hw) = (canvas.width() as usize, heat.width() as usize);
-    let (x0, y0) = (region.x as usize, region.y as usize);
-    let src = heat.data();
-    let dst = canvas.data_mut();
-    for y in 0..rows as usize {
-        let from = &src[4 * y * hw..4 * (y + 1) * hw];
-        let start = 4 * ((y0 + y) * cw + x0);
-        if let Some(to) = dst.get_mut(start..start + from.len()) {
-            to.copy_from_slice(from);
-        }
-    }
-}
-
-/// The kymograph of sin θ_n of `traj`: blocks across, time down.
+/// The kymograph of sin θ_n of `traj`: blocks across, time down, as a
+/// `width × height` image. Above 640 × 480 the chart is laid out at the
+/// size of the movie layout's design frame and drawn scaled up, so its
+/// text and lines grow with the image as the movie's do.
 pub fn kymograph_image(
     title: &str,
     traj: &Trajectory,
@@ -716,6 +580,26 @@ pub fn kymograph_image(
     width: u32,
     height: u32,
 ) -> Result<Pixmap> {
+    let scale = MovieLayout::new(width, height, n).scale.max(1.0);
+    if scale <= 1.0 {
+        return Ok(kymograph_chart(title, traj, n, width, height)?.pixmap);
+    }
+    let design = |v: u32| ((v as f32 / scale).round() as u32).max(60);
+    let chart = kymograph_chart(title, traj, n, design(width), design(height))?;
+    let tree = chart
+        .tree()
+        .ok_or_else(|| Error::failed("the kymograph's SVG could not be parsed"))?;
+    charts::rasterize_tree(tree, width, height)
+}
+
+/// The kymograph chart (SVG and raster) of sin θ_n of `traj`.
+fn kymograph_chart(
+    title: &str,
+    traj: &Trajectory,
+    n: usize,
+    width: u32,
+    height: u32,
+) -> Result<charts::Chart> {
     let states: Vec<&[f64]> = traj.states.iter().map(|q| q.as_slice()).collect();
     let values = charts::polarisation_rows(&states);
     let kymo_title = if title.ends_with("sin θₙ") {
@@ -725,5 +609,5 @@ pub fn kymograph_image(
     };
     let mut k = Kymograph::new(&traj.times, &values, n);
     k.title = Some(&kymo_title);
-    Ok(charts::kymograph(&k, width, height)?.pixmap)
+    charts::kymograph(&k, width, height)
 }

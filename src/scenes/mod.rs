@@ -7,11 +7,52 @@ pub mod dynamic;
 pub mod run;
 pub mod theory;
 
-use crate::encode::png_bytes;
+use crate::encode::{self, Format, Formats, Kind as FormatKind, png_bytes};
 use crate::error::{Error, Result};
+use crate::render::Picture;
 use crate::scene::{OutputSpec, Scene, describe};
 pub use dynamic::{MovieOptions, RunData};
 use serde::Serialize;
+
+/// Which files each scene writes (`--format`, `--scale`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outputs {
+    /// Formats of figures (and of nothing else). Default: PNG.
+    pub figures: Formats,
+    /// Formats of movies. Default: GIF. A movie's kymograph is a PNG.
+    pub movies: Formats,
+    /// Pixels per design pixel of PNG figures: 2 gives the same layout
+    /// with twice the pixels each way. SVG and PDF are vector and keep the
+    /// design size (PDF: 0.75 pt per design pixel). Default: 1.
+    pub scale: f32,
+}
+
+impl Default for Outputs {
+    fn default() -> Self {
+        Self {
+            figures: Formats::default_for(FormatKind::Figure),
+            movies: Formats::default_for(FormatKind::Movie),
+            scale: 1.0,
+        }
+    }
+}
+
+/// Largest and smallest `Outputs::scale`.
+pub const SCALE_RANGE: (f32, f32) = (0.25, 8.0);
+
+impl Outputs {
+    /// Checks the scale (the formats were checked when parsed).
+    pub fn validated(self) -> Result<Self> {
+        let (lo, hi) = SCALE_RANGE;
+        if !(self.scale.is_finite() && (lo..=hi).contains(&self.scale)) {
+            return Err(Error::bad_input(format!(
+                "the figure scale must be between {lo} and {hi}, got {}",
+                self.scale
+            )));
+        }
+        Ok(self)
+    }
+}
 
 /// Number of kymograph rows of a kymograph figure.
 const KYMOGRAPH_ROWS: usize = 400;
@@ -31,60 +72,119 @@ pub struct DataFile<'a> {
     pub runs: Vec<RunData>,
 }
 
-/// The file names a scene writes, data file last.
+/// The file names a scene writes in the default formats, data file last.
 pub fn file_names(scene: &Scene) -> Vec<String> {
+    file_names_for(scene, &Outputs::default())
+}
+
+/// The file names a scene writes in `outputs`' formats, data file last.
+pub fn file_names_for(scene: &Scene, outputs: &Outputs) -> Vec<String> {
     let stem = scene.stem();
-    let mut names = match scene.output {
-        OutputSpec::Movie { .. } => vec![format!("{stem}.gif"), format!("{stem}-kymograph.png")],
+    let mut names: Vec<String> = match scene.output {
+        OutputSpec::Movie { .. } => {
+            let mut v: Vec<String> = outputs
+                .movies
+                .as_slice()
+                .iter()
+                .map(|f| format!("{stem}.{}", f.extension()))
+                .collect();
+            v.push(format!("{stem}-kymograph.png"));
+            v
+        }
         OutputSpec::Data => vec![],
-        _ => vec![format!("{stem}.png")],
+        _ => outputs
+            .figures
+            .as_slice()
+            .iter()
+            .map(|f| format!("{stem}.{}", f.extension()))
+            .collect(),
     };
     names.push(format!("{stem}.json"));
     names
 }
 
-/// The files of one scene, as (file name, bytes), in [`file_names`] order.
+/// The files of one scene in the default formats, as (file name, bytes),
+/// in [`file_names`] order.
 pub fn render(scene: &Scene, movie: &MovieOptions) -> Result<Vec<(String, Vec<u8>)>> {
-    render_observed(scene, movie, &|| {})
+    render_with(scene, movie, &Outputs::default(), &|| {})
 }
 
-/// As [`render`], calling `frame_done` after each movie frame (for a
-/// progress bar).
-pub fn render_observed(
+/// The bytes of a figure in each of `formats`: PNG at `scale`; SVG and PDF
+/// from one parse of the picture's vector form.
+pub fn figure_bytes(picture: &Picture, formats: &Formats, scale: f32) -> Result<Vec<Vec<u8>>> {
+    let tree = if formats.any_vector() {
+        Some(picture.to_tree(1.0)?)
+    } else {
+        None
+    };
+    formats
+        .as_slice()
+        .iter()
+        .map(|f| match (f, &tree) {
+            (Format::Png, _) => png_bytes(&picture.rasterize(scale)?),
+            (Format::Svg, Some(t)) => Ok(encode::svg_bytes(t)),
+            (Format::Pdf, Some(t)) => encode::pdf_bytes(t),
+            _ => Err(Error::failed(format!("a figure cannot be written as {f}"))),
+        })
+        .collect()
+}
+
+/// A figure scene drawn once, as a picture (the vector description every
+/// figure format is made from), with the runs it simulated. Movie and data
+/// scenes have no picture.
+pub fn figure_picture(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+    match &scene.output {
+        OutputSpec::Theory(spec) => {
+            let input = theory::FigureInput::new(describe::title(scene), &scene.model, spec);
+            Ok((theory::picture(spec.figure, &input)?, vec![]))
+        }
+        OutputSpec::Filmstrip { .. } => dynamic::filmstrip_figure(scene, None),
+        OutputSpec::Arrivals { .. } => dynamic::arrivals_figure(scene),
+        OutputSpec::Kymograph => {
+            let (picture, run) = dynamic::kymograph_figure(scene, KYMOGRAPH_ROWS)?;
+            Ok((picture, vec![run]))
+        }
+        OutputSpec::Movie { .. } | OutputSpec::Data => Err(Error::bad_input(format!(
+            "{} {} is not a figure",
+            scene.kind().name(),
+            scene.name
+        ))),
+    }
+}
+
+/// The files of one scene in `outputs`' formats, as (file name, bytes), in
+/// [`file_names_for`] order; `frame_done` is called after each movie frame
+/// (for a progress bar).
+pub fn render_with(
     scene: &Scene,
     movie: &MovieOptions,
+    outputs: &Outputs,
     frame_done: &(dyn Fn() + Sync),
 ) -> Result<Vec<(String, Vec<u8>)>> {
     let (mut bytes, runs) = match &scene.output {
-        OutputSpec::Theory(spec) => {
-            let input = theory::FigureInput::new(describe::title(scene), &scene.model, spec);
+        OutputSpec::Theory(_)
+        | OutputSpec::Filmstrip { .. }
+        | OutputSpec::Arrivals { .. }
+        | OutputSpec::Kymograph => {
+            let (picture, runs) = figure_picture(scene)?;
             (
-                vec![png_bytes(&theory::render(spec.figure, &input)?)?],
-                vec![],
+                figure_bytes(&picture, &outputs.figures, outputs.scale)?,
+                runs,
             )
         }
-        OutputSpec::Filmstrip { .. } => {
-            let (image, runs) = dynamic::filmstrip_figure(scene, None)?;
-            (vec![png_bytes(&image)?], runs)
-        }
-        OutputSpec::Arrivals { .. } => {
-            let (image, runs) = dynamic::arrivals_figure(scene)?;
-            (vec![png_bytes(&image)?], runs)
-        }
-        OutputSpec::Kymograph => {
-            let (image, run) = dynamic::kymograph_figure(scene, KYMOGRAPH_ROWS)?;
-            (vec![png_bytes(&image)?], vec![run])
-        }
         OutputSpec::Movie { .. } => {
-            let (gif, kymo, run) = dynamic::movie_observed(scene, movie, frame_done)?;
-            (vec![gif, kymo], vec![run])
+            let (movies, kymo, run) =
+                dynamic::movie(scene, movie, outputs.movies.as_slice(), frame_done)?;
+            let mut v: Vec<Vec<u8>> = movies.into_iter().map(|(_, b)| b).collect();
+            v.push(kymo);
+            (v, vec![run])
         }
         OutputSpec::Data => {
             let run = run::simulate(scene, &[])?;
             (vec![], vec![RunData::from_run(scene, &run)])
         }
     };
-    let names = file_names(scene);
+    let names = file_names_for(scene, outputs);
     let data = DataFile {
         program: "ladder",
         version: env!("CARGO_PKG_VERSION"),

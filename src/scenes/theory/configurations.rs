@@ -8,16 +8,15 @@ use crate::model::Ladder;
 use crate::render::charts::line_chart;
 use crate::render::compose::Panel;
 use crate::render::style::{self, DARK};
-use crate::render::{Axis, ChartSpec, Legend, Marker, Series};
+use crate::render::{Axis, ChartSpec, Legend, Marker, Picture, Series};
 use crate::theory::figures::{gapless_configuration, zero_mode_shape};
 use crate::theory::gravity;
-use tiny_skia::Pixmap;
 
 /// Size of one full-ladder snapshot.
 const LADDER_SIZE: (u32, u32) = (200, 560);
 
 /// Fig. 2d: the ground states of both signs, and the two overlaid.
-pub fn ground_states(input: &FigureInput) -> Result<Pixmap> {
+pub fn ground_states(input: &FigureInput) -> Result<Picture> {
     let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha.abs());
     let plus = Ladder::new(input.params(n, b, alpha)?);
     let minus = Ladder::new(input.params(n, b, -alpha)?);
@@ -38,7 +37,7 @@ pub fn ground_states(input: &FigureInput) -> Result<Pixmap> {
         "N = {n}, b/s = {b}, a = {:.3} s. Each block is drawn from its red A end to its \
          blue B end, which marks its orientation: the blocks of (i) and (ii) tilt the opposite \
          way (sin θ = ±{:.2}), while the centres coincide (iii). Both states have the same \
-         energy U_min = −2mgb per pair of blocks.",
+         energy U_{{min}} = −2mgb per pair of blocks.",
         plus.a,
         alpha.to_radians().sin()
     );
@@ -47,7 +46,7 @@ pub fn ground_states(input: &FigureInput) -> Result<Pixmap> {
 
 /// Fig. S3: the α = 0 configuration (b/s = 1.3, N = 10) beside its
 /// single-well U(θ) (eq:U_g with a² = b² + 4s²).
-pub fn gapless(input: &FigureInput) -> Result<Pixmap> {
+pub fn gapless(input: &FigureInput) -> Result<Picture> {
     let (n, b) = (input.model.n, input.model.b);
     let p = input.params(n, b, 0.0)?;
     let (a, q) = gapless_configuration(&p, n, b)?;
@@ -66,14 +65,14 @@ pub fn gapless(input: &FigureInput) -> Result<Pixmap> {
     let notes = format!(
         "b/s = {b}, a = √(b² + 4s²) = {a:.3} s: the A links are as long as the diagonal of a \
          pair of flat blocks, the blocks lie flat (θ = 0) and the double well of Fig. 2c \
-         degenerates into one flat-bottomed minimum (U − U_min ∝ θ⁴): the bistability and \
+         degenerates into one flat-bottomed minimum (U − U_{{min}} ∝ θ⁴): the bistability and \
          the gap ω₊(0) are lost."
     );
     frame(&input.title, &body, &notes, 760)
 }
 
 /// U(θ) for the gapless lengths with the minimum marked.
-fn gapless_potential(a: f64, b: f64) -> Result<Pixmap> {
+fn gapless_potential(a: f64, b: f64) -> Result<Picture> {
     let points: Vec<(f64, f64)> = (0..=720)
         .filter_map(|k| {
             let th = -89.75 + 179.5 * k as f64 / 720.0;
@@ -86,13 +85,13 @@ fn gapless_potential(a: f64, b: f64) -> Result<Pixmap> {
     )
     .series(Series::line("U(θ), a² = b² + 4s²", points, style::RED))
     .series(Series::scatter(
-        "U_min = −2mgb",
+        "U_{min} = −2mgb",
         vec![(0.0, gravity::u_min(b))],
         DARK,
         Marker::Circle,
     ));
     spec.legend = Legend::Auto;
-    Ok(line_chart(&spec, 560, 440)?.pixmap)
+    Ok(line_chart(&spec, 560, 440)?.into())
 }
 
 /// A residual that is zero to rounding as "< 10⁻¹²", otherwise 2 decimals.
@@ -106,7 +105,7 @@ fn tiny(x: f64) -> String {
 
 /// Fig. S4: the model's zero modes (top row, exact) and the paper's
 /// eq:zm_n shapes (bottom row) for m = 1, ε₀ = 0.1 and m = 5, ε₀ = 0.05.
-pub fn zero_modes(input: &FigureInput) -> Result<Pixmap> {
+pub fn zero_modes(input: &FigureInput) -> Result<Picture> {
     let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha);
     let p = input.params(n, b, alpha)?;
     let ladder = Ladder::new(p);
@@ -127,7 +126,7 @@ pub fn zero_modes(input: &FigureInput) -> Result<Pixmap> {
         );
         paper.push(
             Panel::new(configuration(&ladder, &z.paper, Some(&z.ground), size)?)
-                .label(format!("{primed} eq:zm_n"))
+                .label(format!("{primed} as printed"))
                 .caption(caption),
         );
         residuals.push((m, z.paper_residual, z.model_residual));
@@ -136,13 +135,13 @@ pub fn zero_modes(input: &FigureInput) -> Result<Pixmap> {
     let body = grid(&model, 4)?;
     let res: Vec<String> = residuals
         .iter()
-        .map(|(m, p, q)| format!("m = {m}: {p:.2} for eq:zm_n, {} for the model", tiny(*q)))
+        .map(|(m, p, q)| format!("m = {m}: {p:.2} as printed, {} for the model", tiny(*q)))
         .collect();
     let notes = format!(
         "N = {n}, b/s = {b}, α = {alpha}°; deformed configuration in colour, ground state in \
          grey. (a), (b): the model's true zero modes (null vectors of its compatibility \
          matrix, δv staggered, docs/paper-errata.md item 5); for m = 5 (k = π/b) the zero \
-         mode is a rigid shift along y. (a′), (b′): the paper's eq:zm_n as printed (Fig. S4), \
+         mode is a rigid shift along y. (a′), (b′): the paper's zero-mode formula as printed (Fig. S4), \
          which stretches the springs. Relative spring stretch |C δq|/|δq|: {}.",
         res.join("; ")
     );

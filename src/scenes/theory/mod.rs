@@ -11,11 +11,12 @@ mod pen;
 mod plots;
 mod schematic;
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::model::{Ladder, Params};
 use crate::render::compose::{self, Layout, Panel};
 use crate::render::snapshot::{self, Snapshot};
 use crate::render::style::{self, DARK, HAlign, VAlign, size};
+use crate::render::{Canvas, Picture};
 use crate::scene::{Model, TheoryFigure, TheorySpec, ZeroMode};
 use tiny_skia::Pixmap;
 
@@ -51,8 +52,13 @@ impl FigureInput {
     }
 }
 
-/// Renders one static figure.
+/// Renders one static figure at 100 %.
 pub fn render(figure: TheoryFigure, input: &FigureInput) -> Result<Pixmap> {
+    picture(figure, input)?.to_pixmap()
+}
+
+/// One static figure as a picture (PNG at any scale, SVG, PDF).
+pub fn picture(figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {
     match figure {
         TheoryFigure::UnitSchematic => schematic::unit(input),
         TheoryFigure::GravityPotential => plots::gravity_potential(input),
@@ -70,24 +76,24 @@ pub fn render(figure: TheoryFigure, input: &FigureInput) -> Result<Pixmap> {
 const NOTE_LINE: f32 = 1.35 * size::LABEL;
 
 /// Puts `body` under a centred title with wrapped `notes` below it, on a
-/// white canvas at least `min_width` pixels wide.
-fn frame(title: &str, body: &Pixmap, notes: &str, min_width: u32) -> Result<Pixmap> {
+/// white page at least `min_width` pixels wide.
+fn frame(title: &str, body: &Picture, notes: &str, min_width: u32) -> Result<Picture> {
     let m = size::MARGIN;
-    let width = (body.width() + 2 * m).max(min_width);
+    let (bw, bh) = body.pixel_size();
+    let width = (bw + 2 * m).max(min_width);
     let lines = style::wrap_text(notes, (width - 2 * m) as f32, size::LABEL);
     let title_h = (1.8 * size::TITLE) as u32;
     let notes_h = (lines.len() as f32 * NOTE_LINE + 0.5 * size::LABEL) as u32;
-    let height = m + title_h + body.height() + notes_h + m;
-    let mut out = style::white_pixmap(width, height)
-        .ok_or_else(|| Error::failed(format!("cannot allocate a {width}x{height} figure")))?;
+    let height = m + title_h + bh + notes_h + m;
+    let mut out = Picture::new(width as f32, height as f32);
     let centre = 0.5 * width as f32;
     let top = (centre, m as f32);
-    style::draw_text(&mut out, title, top, size::TITLE, DARK, TOP_CENTRE);
-    compose::blit(&mut out, body, (width - body.width()) / 2, m + title_h);
-    let y0 = (m + title_h + body.height()) as f32 + 0.4 * size::LABEL;
+    out.text(title, top, size::TITLE, DARK, TOP_CENTRE);
+    out.place(body, (((width - bw) / 2) as f32, (m + title_h) as f32));
+    let y0 = (m + title_h + bh) as f32 + 0.4 * size::LABEL;
     for (k, l) in lines.iter().enumerate() {
         let at = (m as f32, y0 + k as f32 * NOTE_LINE);
-        style::draw_text(&mut out, l, at, size::LABEL, DARK, TOP_LEFT);
+        out.text(l, at, size::LABEL, DARK, TOP_LEFT);
     }
     Ok(out)
 }
@@ -96,8 +102,8 @@ const TOP_CENTRE: (HAlign, VAlign) = (HAlign::Center, VAlign::Top);
 const TOP_LEFT: (HAlign, VAlign) = (HAlign::Left, VAlign::Top);
 
 /// Panels in a grid without a title (the figure frame carries it).
-fn grid(panels: &[Panel], columns: usize) -> Result<Pixmap> {
-    compose::compose(panels, &Layout::columns(columns))
+fn grid(panels: &[Panel], columns: usize) -> Result<Picture> {
+    compose::compose_picture(panels, &Layout::columns(columns))
 }
 
 /// A snapshot of `q` on `ladder` without the pin support of block 1 (these
@@ -107,13 +113,13 @@ fn configuration(
     q: &[f64],
     ghost: Option<&[f64]>,
     (w, h): (u32, u32),
-) -> Result<Pixmap> {
+) -> Result<Picture> {
     let mut snap = Snapshot::new(ladder, q)?;
     if let Some(g) = ghost {
         snap = snap.with_ghost(ladder, g)?;
     }
     snap.clamp = false;
-    snapshot::render_snapshot(&snap, w, h)
+    snapshot::snapshot_picture(&snap, w, h)
 }
 
 /// "+75°", "−75°", "0°" with a true minus sign.

@@ -11,17 +11,16 @@ use crate::model::Ladder;
 use crate::render::charts::{line_chart, short_number};
 use crate::render::compose::Panel;
 use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign, size};
-use crate::render::{Axis, ChartSpec, Legend, Marker, Series};
+use crate::render::{Axis, Canvas, ChartSpec, Legend, Marker, Picture, Series};
 use crate::theory::figures::{
     DispersionCurve, barrier_curve, det_loop, dispersion_curves, edge_mode_profile,
     potential_curves,
 };
 use crate::theory::gravity;
 use std::f64::consts::PI;
-use tiny_skia::Pixmap;
 
-fn chart(spec: &ChartSpec, w: u32, h: u32) -> Result<Pixmap> {
-    Ok(line_chart(spec, w, h)?.pixmap)
+fn chart(spec: &ChartSpec, w: u32, h: u32) -> Result<Picture> {
+    Ok(line_chart(spec, w, h)?.into())
 }
 
 fn pairs(points: &[[f64; 2]]) -> Vec<(f64, f64)> {
@@ -31,7 +30,7 @@ fn pairs(points: &[[f64; 2]]) -> Vec<(f64, f64)> {
 /// Fig. 2c: U(θ) for each a/b of the scene at its b/s, the
 /// minima at ±α (eq:eq_alpha, U_min = −2mgb), and ladders at both minima
 /// of two of the curves beside the chart.
-pub fn gravity_potential(input: &FigureInput) -> Result<Pixmap> {
+pub fn gravity_potential(input: &FigureInput) -> Result<Picture> {
     let b = input.model.b;
     let curves = potential_curves(b, &input.a_over_b, 1441);
     let mut spec = ChartSpec::new(
@@ -59,9 +58,9 @@ pub fn gravity_potential(input: &FigureInput) -> Result<Pixmap> {
     let insets = potential_insets(input, &which)?;
     let body = grid(&[Panel::new(plot), Panel::new(insets)], 2)?;
     let notes = format!(
-        "Linkage limit, b/s = {b}: U(θ) = −mg√(2(a² + b²) − 4s²cos²θ − (a² − b²)²/(4s²cos²θ)) \
-         (eq:U_G), a symmetric double well whose minima θ = ±α (cos α = √(a² − b²)/2s) all lie \
-         at U_min = −2mgb. Right: the ladder (4 blocks) at θ = −α and θ = +α for two of the \
+        "Linkage limit, b/s = {b}: U(θ) = −mg√(2(a² + b²) − 4s²cos²θ − (a² − b²)²/(4s²cos²θ)), \
+         a symmetric double well whose minima θ = ±α (cos α = √(a² − b²)/2s) all lie \
+         at U_{{min}} = −2mgb. Right: the ladder (4 blocks) at θ = −α and θ = +α for two of the \
          curves; the two orientations are degenerate."
     );
     frame(&input.title, &body, &notes, 900)
@@ -81,7 +80,7 @@ fn color_name(i: usize) -> &'static str {
 
 /// Ground states of 4 blocks at θ = ∓α for the curves `which`, one row per
 /// curve.
-fn potential_insets(input: &FigureInput, which: &[usize]) -> Result<Pixmap> {
+fn potential_insets(input: &FigureInput, which: &[usize]) -> Result<Picture> {
     let b = input.model.b;
     let mut panels = Vec::new();
     for &i in which {
@@ -110,7 +109,7 @@ const DOT_SAMPLES: usize = 24;
 /// Fig. S5: ω±(q)/ω₀ against qb for each α of the scene, at its b/s,
 /// one panel per α: eq:dispersion as printed (dashed), ×√2 (solid, errata
 /// item 9) and the model's eigenvalues (dots).
-pub fn dispersion(input: &FigureInput) -> Result<Pixmap> {
+pub fn dispersion(input: &FigureInput) -> Result<Picture> {
     let b = input.model.b;
     let base = input.params(input.model.n, b, input.model.alpha)?;
     let lines = dispersion_curves(&base, b, &input.alphas, LINE_SAMPLES)?;
@@ -126,17 +125,20 @@ pub fn dispersion(input: &FigureInput) -> Result<Pixmap> {
         panels.push(Panel::new(dispersion_panel(l, d, y_max)?));
     }
     let mut body = grid(&panels, 3)?;
-    body = stack(&body, &dispersion_key(body.width())?)?;
-    let notes = "ω₀ = √(k/m) = 1/τ, I = ms²/4, constraint δv_n = (−1)ⁿ(s/2) sin α δθ_n \
-                 (eq:constraint_Y). The printed closed form is √2 too small for this ω₀ \
+    body = stack(&body, &dispersion_key(body.pixel_size().0)?);
+    let notes = "ω₀ = √(k/m) = 1/τ, I = ms²/4, constraint δv_{n} = (−1)ⁿ(s/2) sin α δθ_{n}. The printed closed form is √2 too small for this ω₀ \
                  (docs/paper-errata.md item 9): it is exact if ω₀ is read as √(2k/m). The \
-                 eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I) \
-                 as in eq:D) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \
+                 eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I), \
+                 as in the paper) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \
                  of the rotational branch; ω₋ is acoustic.";
     frame(&input.title, &body, notes, 900)
 }
 
-fn dispersion_panel(lines: &DispersionCurve, dots: &DispersionCurve, y_max: f64) -> Result<Pixmap> {
+fn dispersion_panel(
+    lines: &DispersionCurve,
+    dots: &DispersionCurve,
+    y_max: f64,
+) -> Result<Picture> {
     let mut spec = ChartSpec::new(
         Axis::new("qb").range(-PI, PI),
         Axis::new("ω/ω₀").range(0.0, y_max),
@@ -165,13 +167,13 @@ fn dispersion_panel(lines: &DispersionCurve, dots: &DispersionCurve, y_max: f64)
 }
 
 /// The shared key of the dispersion panels, drawn as one row.
-fn dispersion_key(width: u32) -> Result<Pixmap> {
-    let mut p = style::white_pixmap(width, 34).ok_or_else(|| Error::failed("canvas"))?;
+fn dispersion_key(width: u32) -> Result<Picture> {
+    let mut p = Picture::new(width as f32, 34.0);
     let entries: [(&str, Rgb, u8); 6] = [
-        ("ω₊ eq:dispersion × √2", RED, 0),
+        ("ω₊ closed form × √2", RED, 0),
         ("ω₊ as printed", RED, 1),
         ("ω₊ model", RED, 2),
-        ("ω₋ × √2", BLUE, 0),
+        ("ω₋ closed form × √2", BLUE, 0),
         ("ω₋ as printed", BLUE, 1),
         ("ω₋ model", BLUE, 2),
     ];
@@ -188,33 +190,27 @@ fn dispersion_key(width: u32) -> Result<Pixmap> {
             _ => pen::dot(&mut p, (x + 13.0, y), 3.5, e.1),
         }
         let at = (x + 34.0, y);
-        style::draw_text(
-            &mut p,
-            e.0,
-            at,
-            size::TICK,
-            DARK,
-            (HAlign::Left, VAlign::Middle),
-        );
+        p.text(e.0, at, size::TICK, DARK, (HAlign::Left, VAlign::Middle));
         x += w;
     }
     Ok(p)
 }
 
 /// `top` above `bottom`, centred, on white.
-fn stack(top: &Pixmap, bottom: &Pixmap) -> Result<Pixmap> {
-    let w = top.width().max(bottom.width());
-    let mut out = style::white_pixmap(w, top.height() + bottom.height())
-        .ok_or_else(|| Error::failed("canvas"))?;
-    crate::render::compose::blit(&mut out, top, (w - top.width()) / 2, 0);
-    crate::render::compose::blit(&mut out, bottom, (w - bottom.width()) / 2, top.height());
-    Ok(out)
+fn stack(top: &Picture, bottom: &Picture) -> Picture {
+    let (tw, th) = top.pixel_size();
+    let (bw, bh) = bottom.pixel_size();
+    let w = tw.max(bw);
+    let mut out = Picture::new(w as f32, (th + bh) as f32);
+    out.place(top, (((w - tw) / 2) as f32, 0.0));
+    out.place(bottom, (((w - bw) / 2) as f32, th as f32));
+    out
 }
 
 /// The winding figure: det C_red(q)/(e^(iqb) − 1) (a circle of radius 2|c₁|
 /// about −2c₂, errata item 8) and det C_red(q) itself (eq:det-C) over the
 /// Brillouin zone for α = ±60°, b/s = 1.3.
-pub fn winding(input: &FigureInput) -> Result<Pixmap> {
+pub fn winding(input: &FigureInput) -> Result<Picture> {
     let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha.abs());
     let mut panels = Vec::new();
     for sign in [1.0, -1.0] {
@@ -223,9 +219,9 @@ pub fn winding(input: &FigureInput) -> Result<Pixmap> {
     }
     let body = grid(&panels, 2)?;
     let notes = format!(
-        "b/s = {b}. Solid: det C(q)/(e^(iqb) − 1) = 2(c₁e^(iqb) − c₂), the circle of \
+        "b/s = {b}. Solid: det C(q)/(e^{{iqb}} − 1) = 2(c₁e^{{iqb}} − c₂), the circle of \
                  radius 2|c₁| about −2c₂ whose winding about the origin (+) is the winding number \
-                 n; dashed: det C(q) of the model's reduced chain (= eq:det-C), which passes \
+                 n; dashed: det C(q) of the model's reduced chain (the paper's det C), which passes \
                  through 0 at q = 0 (translation along x). For α > 0, |c₂| < c₁ and the loop \
                  encloses the origin (n = 1, surface zero mode at the top); for α < 0 it does not \
                  (n = 0)."
@@ -233,7 +229,7 @@ pub fn winding(input: &FigureInput) -> Result<Pixmap> {
     frame(&input.title, &body, &notes, 900)
 }
 
-fn winding_panel(p: &crate::model::Params) -> Result<Pixmap> {
+fn winding_panel(p: &crate::model::Params) -> Result<Picture> {
     let l = det_loop(p, 720)?;
     let n = l
         .winding_number
@@ -249,7 +245,7 @@ fn winding_panel(p: &crate::model::Params) -> Result<Pixmap> {
     let mut spec = ChartSpec::new(Axis::new("Re det C"), Axis::new("Im det C"))
         .title(format!("α = {}: n = {n}", signed_deg(l.alpha_deg)))
         .series(Series::line(
-            "det C / (e^(iqb) − 1)",
+            "det C / (e^{iqb} − 1)",
             closed(&l.reduced),
             color,
         ))
@@ -271,7 +267,7 @@ fn winding_panel(p: &crate::model::Params) -> Result<Pixmap> {
 /// The edge-mode figure: |δθ_n| of the reduced chain's null vector (dots)
 /// and |c₂/c₁|^{n−1} ∝ e^{−κ(n−1)b} (eq:2nd_sol, lines), log scale; α > 0
 /// left (top edge), α < 0 right (bottom edge).
-pub fn edge_mode(input: &FigureInput) -> Result<Pixmap> {
+pub fn edge_mode(input: &FigureInput) -> Result<Picture> {
     let mut panels = Vec::new();
     for sign in [1.0, -1.0] {
         panels.push(Panel::new(edge_panel(input, sign)?));
@@ -280,21 +276,21 @@ pub fn edge_mode(input: &FigureInput) -> Result<Pixmap> {
     let body = grid(&panels, 2)?;
     let notes = format!(
         "N = {n}, b/s = {b}; surface zero mode of the chain with the B nodes pinned \
-                 (eq:e-KL), found as the null vector of the model's compatibility matrix and \
-                 normalised to max |δθ_n| = 1. κ = b⁻¹ ln|(b + 2s sin α)/(b − 2s sin α)| changes sign \
+                 (the paper's edge mode), found as the null vector of the model's compatibility \
+                 matrix and normalised to max |δθ_{{n}}| = 1. κ = b⁻¹ ln|(b + 2s sin α)/(b − 2s sin α)| changes sign \
                  with α: the mode decays from the top for α > 0 (κ > 0) and from the bottom for \
                  α < 0 (κ < 0). \
-                 Beyond |α| ≈ {:.1}° (b < 2s|sin α|) c₂/c₁ < 0 and δθ_n alternates in sign.",
+                 Beyond |α| ≈ {:.1}° (b < 2s|sin α|) c₂/c₁ < 0 and δθ_{{n}} alternates in sign.",
         (0.5 * b).min(1.0).asin().to_degrees()
     );
     frame(&input.title, &body, &notes, 900)
 }
 
-fn edge_panel(input: &FigureInput, sign: f64) -> Result<Pixmap> {
+fn edge_panel(input: &FigureInput, sign: f64) -> Result<Picture> {
     let (n, b) = (input.model.n, input.model.b);
     let mut spec = ChartSpec::new(
         Axis::new("block n").range(0.5, n as f64 + 0.5),
-        Axis::new("|δθ_n| / max").log(),
+        Axis::new("|δθ_{n}| / max").log(),
     )
     .title(if sign > 0.0 {
         "α > 0: localised at the top"
@@ -315,7 +311,10 @@ fn edge_panel(input: &FigureInput, sign: f64) -> Result<Pixmap> {
                 .zip(e.numerical.iter().copied());
         spec = spec
             .series(Series::line(
-                format!("e^(−κ(n−1)b), κb = {kb:.2}"),
+                format!(
+                    "e^{{−κ(n−1)b}}, κb = {}",
+                    format!("{kb:.2}").replace('-', "−")
+                ),
                 line.collect(),
                 color,
             ))
@@ -332,7 +331,7 @@ fn edge_panel(input: &FigureInput, sign: f64) -> Result<Pixmap> {
 
 /// The barrier figure: ΔU(α) = U(0) − U(α) (eq:delta_U) for b/s = 1.3, and
 /// the same from the model's two-block linkage solved at θ = 0 (dots).
-pub fn barrier(input: &FigureInput) -> Result<Pixmap> {
+pub fn barrier(input: &FigureInput) -> Result<Picture> {
     let b = input.model.b;
     let curve = pairs(&barrier_curve(b, 180));
     let dots: Vec<(f64, f64)> = (0..=18)
@@ -342,7 +341,7 @@ pub fn barrier(input: &FigureInput) -> Result<Pixmap> {
         Axis::new("equilibrium angle α (degrees)").range(-2.0, 92.0),
         Axis::new("ΔU / (m g s), per pair of blocks"),
     )
-    .series(Series::line("eq:delta_U", curve, RED))
+    .series(Series::line("ΔU(α), closed form", curve, RED))
     .series(Series::scatter(
         "model linkage, U(0) − U(α)",
         dots,

@@ -7,11 +7,11 @@
 use super::pen::{self, Pt};
 use super::{FigureInput, frame};
 use crate::encode::Rgb;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::model::Ladder;
 use crate::model::ladder::nodes;
 use crate::render::style::{self, BLUE, DARK, GREEN, GREY, HAlign, RED, VAlign};
-use tiny_skia::Pixmap;
+use crate::render::{Canvas, Picture};
 
 /// Canvas size, pixels per s and the pixel position of block n's centre.
 const W: u32 = 880;
@@ -37,19 +37,19 @@ fn mid(a: Pt, b: Pt) -> Pt {
     (0.5 * (a.0 + b.0), 0.5 * (a.1 + b.1))
 }
 
-fn text(p: &mut Pixmap, s: &str, at: Pt, c: Rgb, align: (HAlign, VAlign)) {
-    style::draw_text(p, s, at, TEXT, c, align);
+fn text(p: &mut Picture, s: &str, at: Pt, c: Rgb, align: (HAlign, VAlign)) {
+    p.text(s, at, TEXT, c, align);
 }
 
 const MIDDLE: (HAlign, VAlign) = (HAlign::Center, VAlign::Middle);
 const LEFT: (HAlign, VAlign) = (HAlign::Left, VAlign::Middle);
 
 /// The figure: drawing plus notes.
-pub fn unit(input: &FigureInput) -> Result<Pixmap> {
+pub fn unit(input: &FigureInput) -> Result<Picture> {
     let (b, alpha) = (input.model.b, input.model.alpha);
     let ladder = Ladder::new(input.params(2, b, alpha)?);
     let q = ladder.ground_state();
-    let mut p = style::white_pixmap(W, H).ok_or_else(|| Error::failed("canvas"))?;
+    let mut p = Picture::new(W as f32, H as f32);
     let unit = Unit::of(&q);
     draw_links_and_blocks(&mut p, &unit);
     draw_theta(&mut p, &unit);
@@ -61,9 +61,8 @@ pub fn unit(input: &FigureInput) -> Result<Pixmap> {
          a = √(b² + 4s²cos²α) = {:.3} s. The A link (red) joins the red A ends of the blocks, \
          the B link (green) their blue B ends. θ is measured from the transverse y axis \
          (counter-clockwise for even n, clockwise for odd n); Δx is the gap along gravity \
-         between the facing ends, Δy the transverse offset of the centres (eq:b). \
-         At θ = α: Δx = b − s sin α, Δy = s cos α, and the B link hangs straight down \
-         (eq:min_values).",
+         between the facing ends, Δy the transverse offset of the centres. \
+         At θ = α: Δx = b − s sin α, Δy = s cos α, and the B link hangs straight down.",
         ladder.a
     );
     frame(&input.title, &p, &notes, W)
@@ -95,7 +94,7 @@ impl Unit {
     }
 }
 
-fn draw_links_and_blocks(p: &mut Pixmap, u: &Unit) {
+fn draw_links_and_blocks(p: &mut Picture, u: &Unit) {
     pen::line(p, u.a1, u.a2, 3.5, RED);
     pen::line(p, u.b1, u.b2, 3.5, GREEN);
     for (a, b) in [(u.a1, u.b1), (u.a2, u.b2)] {
@@ -120,7 +119,7 @@ fn draw_links_and_blocks(p: &mut Pixmap, u: &Unit) {
 
 /// θ between the transverse axis (dashed, through block n's centre) and
 /// the upper half of block n.
-fn draw_theta(p: &mut Pixmap, u: &Unit) {
+fn draw_theta(p: &mut Picture, u: &Unit) {
     let r = 0.36 * SCALE as f32;
     pen::dashed(p, u.c1, add(u.c1, (1.35 * r, 0.0)), 1.3, GREY);
     let up = ((u.a1.1 - u.c1.1).atan2(u.a1.0 - u.c1.0), 0.0);
@@ -131,7 +130,7 @@ fn draw_theta(p: &mut Pixmap, u: &Unit) {
 }
 
 /// The block length s as a dimension line beside block n + 1.
-fn draw_s(p: &mut Pixmap, u: &Unit) {
+fn draw_s(p: &mut Picture, u: &Unit) {
     let (dx, dy) = (u.b2.0 - u.a2.0, u.b2.1 - u.a2.1);
     let l = (dx * dx + dy * dy).sqrt();
     // The side of block n + 1 away from the links: left and down.
@@ -146,7 +145,7 @@ fn draw_s(p: &mut Pixmap, u: &Unit) {
 
 /// Δx (gap along gravity between the facing block ends) to the right, Δy
 /// (transverse offset of the centres) below the unit.
-fn draw_offsets(p: &mut Pixmap, u: &Unit) {
+fn draw_offsets(p: &mut Picture, u: &Unit) {
     let right = u.c1.0 + (0.62 * SCALE) as f32;
     let (top, bottom) = (u.b1.1, u.a2.1);
     pen::dashed(p, u.b1, (right + 12.0, top), 1.2, GREY);
@@ -161,7 +160,7 @@ fn draw_offsets(p: &mut Pixmap, u: &Unit) {
 }
 
 /// Axes (x down along gravity, y across) and the gravity arrow, top left.
-fn draw_frame_hints(p: &mut Pixmap) {
+fn draw_frame_hints(p: &mut Picture) {
     let o = (60.0, 40.0);
     pen::arrow(p, o, (o.0, o.1 + 70.0), 1.6, DARK);
     pen::arrow(p, o, (o.0 + 70.0, o.1), 1.6, DARK);

@@ -1,40 +1,15 @@
-//! PNG and GIF bytes from pixels. Knows nothing else of the project.
-//!
-//! Frames are opaque `tiny_skia::Pixmap`s (the renderers fill a white
-//! background first). PNG goes through the `image` crate; GIF through the
-//! `gif` crate with one fixed global palette made for our scenes (ramps from
-//! the white background to each drawing colour), mapped by a 32×32×32 lookup
-//! table, so no per-frame quantiser runs and the output is deterministic.
-//! Each GIF frame after the first encodes only the bounding box of the pixels
-//! that changed, with unchanged pixels inside that box transparent.
+//! GIF bytes from pixels, with one fixed global palette made for our scenes
+//! (ramps from the white background to each drawing colour), mapped by a
+//! 32×32×32 lookup table, so no per-frame quantiser runs and the output is
+//! deterministic. Each frame after the first encodes only the bounding box
+//! of the pixels that changed, with unchanged pixels inside that box
+//! transparent.
 
+use super::{PALETTE_ANCHORS, PALETTE_EXTRAS, Rgb, WHITE};
 use crate::error::{Error, Result};
 use std::borrow::Cow;
 use std::sync::OnceLock;
 use tiny_skia::Pixmap;
-
-/// An sRGB colour without alpha.
-pub type Rgb = [u8; 3];
-
-/// Background of every scene.
-pub const WHITE: Rgb = [255, 255, 255];
-
-/// Colours the scene palette ramps to from white: dark grey (blocks, text,
-/// axes), red (A springs, A ends), blue (B ends), green (B springs), and the
-/// two ends of the kymograph's diverging map. `render::style` uses exactly
-/// these values.
-pub const PALETTE_ANCHORS: [Rgb; 6] = [
-    [34, 34, 34],
-    [214, 39, 40],
-    [31, 119, 180],
-    [44, 160, 44],
-    [33, 102, 172],
-    [178, 24, 43],
-];
-
-/// Colours added to the palette verbatim (not ramps): mid grey for the
-/// ground state underneath, and pure black.
-pub const PALETTE_EXTRAS: [Rgb; 2] = [[150, 150, 150], [0, 0, 0]];
 
 /// Ramp steps from white to each anchor (the anchor itself is the last step).
 const RAMP_STEPS: usize = 42;
@@ -154,21 +129,6 @@ fn nearest(colors: &[Rgb], c: [i32; 3]) -> u8 {
     best as u8
 }
 
-/// PNG bytes of an opaque or translucent pixmap (alpha is demultiplied).
-pub fn png_bytes(pixmap: &Pixmap) -> Result<Vec<u8>> {
-    let (w, h) = (pixmap.width(), pixmap.height());
-    let mut rgba = Vec::with_capacity((w * h * 4) as usize);
-    for p in pixmap.pixels() {
-        let c = p.demultiply();
-        rgba.extend_from_slice(&[c.red(), c.green(), c.blue(), c.alpha()]);
-    }
-    let mut out = Vec::new();
-    let encoder = image::codecs::png::PngEncoder::new(&mut out);
-    image::ImageEncoder::write_image(encoder, &rgba, w, h, image::ExtendedColorType::Rgba8)
-        .map_err(|e| Error::failed(format!("PNG encoding failed: {e}")))?;
-    Ok(out)
-}
-
 /// Streaming GIF encoder: push frames, then `finish` for the bytes.
 ///
 /// Infinite loop, one global palette, per-frame delays from `fps` (rounded so
@@ -241,11 +201,7 @@ impl GifWriter {
         palette: &'static Palette,
     ) -> Result<Self> {
         check_gif_size(width, height)?;
-        if !(fps.is_finite() && fps > 0.0 && fps <= 100.0) {
-            return Err(Error::bad_input(format!(
-                "fps must be a number in (0, 100], got {fps}"
-            )));
-        }
+        check_gif_fps(fps)?;
         let table = palette.gif_table();
         let mut encoder = gif::Encoder::new(Vec::new(), width as u16, height as u16, &table)
             .map_err(gif_error)?;
@@ -400,7 +356,29 @@ fn changed_rect(prev: &[u8], cur: &[u8], w: usize) -> Option<Rect> {
     })
 }
 
-fn check_gif_size(width: u32, height: u32) -> Result<()> {
+/// Highest frame rate a GIF plays at its real speed: delays are whole
+/// hundredths of a second, and browsers show delays of 10 ms or less at
+/// 100 ms, so 2/100 s (50 frames per second) is the shortest delay that
+/// plays as written. Faster movies are refused, not slowed down or thinned.
+pub const GIF_MAX_FPS: f64 = 50.0;
+
+/// Refuses frame rates a GIF cannot play at their real speed.
+pub(crate) fn check_gif_fps(fps: f64) -> Result<()> {
+    if !(fps.is_finite() && fps > 0.0) {
+        return Err(Error::bad_input(format!(
+            "the frame rate must be a number above 0, got {fps}"
+        )));
+    }
+    if fps > GIF_MAX_FPS {
+        return Err(Error::bad_input(format!(
+            "a GIF plays at most {GIF_MAX_FPS} frames per second (browsers slow shorter frame \
+             delays down to 10 per second), got {fps}; ask for {GIF_MAX_FPS} or fewer, or for MP4"
+        )));
+    }
+    Ok(())
+}
+
+pub(crate) fn check_gif_size(width: u32, height: u32) -> Result<()> {
     let ok = |v: u32| (1..=u16::MAX as u32).contains(&v);
     if ok(width) && ok(height) {
         Ok(())

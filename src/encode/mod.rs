@@ -1,0 +1,56 @@
+//! Bytes from pictures. Knows nothing else of the project.
+//!
+//! Raster: PNG ([`png_bytes`]) and GIF ([`GifWriter`]) from
+//! `tiny_skia::Pixmap`s, and MP4 (H.264, [`Mp4Writer`], cargo feature
+//! `mp4`). Vector: SVG ([`svg_bytes`]) and PDF ([`pdf_bytes`]) from a parsed
+//! SVG tree (`usvg::Tree`), the form in which the renderer hands over the
+//! vector description of a picture. [`Format`] names the file formats and
+//! checks what each can hold.
+
+mod format;
+mod gif;
+mod isobmff;
+mod movie;
+#[cfg(feature = "mp4")]
+mod mp4;
+mod pdf;
+mod png;
+mod svg;
+mod yuv;
+
+pub use format::{
+    Format, FormatError, Formats, Kind, MP4_MAX, check_movie_fps, check_movie_frame,
+    check_movie_size, parse_mixed,
+};
+pub use gif::{GIF_MAX_FPS, GifWriter, Palette, TRANSPARENT_INDEX};
+pub use isobmff::{Mp4Track, mp4_file};
+pub use movie::MovieWriter;
+#[cfg(feature = "mp4")]
+pub use mp4::Mp4Writer;
+pub use pdf::pdf_bytes;
+pub use png::png_bytes;
+pub use svg::svg_bytes;
+pub use yuv::{Yuv420, rgba_to_yuv420};
+
+/// An sRGB colour without alpha.
+pub type Rgb = [u8; 3];
+
+/// Background of every scene.
+pub const WHITE: Rgb = [255, 255, 255];
+
+/// Colours the scene palette ramps to from white: dark grey (blocks, text,
+/// axes), red (A springs, A ends), blue (B ends), green (B springs), and the
+/// two ends of the kymograph's diverging map. `render::style` uses exactly
+/// these values.
+pub const PALETTE_ANCHORS: [Rgb; 6] = [
+    [34, 34, 34],
+    [214, 39, 40],
+    [31, 119, 180],
+    [44, 160, 44],
+    [33, 102, 172],
+    [178, 24, 43],
+];
+
+/// Colours added to the palette verbatim (not ramps): mid grey for the
+/// ground state underneath, and pure black.
+pub const PALETTE_EXTRAS: [Rgb; 2] = [[150, 150, 150], [0, 0, 0]];

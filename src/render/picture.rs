@@ -1,0 +1,281 @@
+//! The vector description of a picture: a small display list of fills,
+//! strokes, typeset text, embedded charts (their SVG) and groups with
+//! transforms, on a white page of a design size in pixels.
+//!
+//! Figures are drawn once into a [`Picture`] (it is a [`Canvas`]); then
+//! [`Picture::rasterize`] paints it at any scale with tiny-skia (PNG), and
+//! [`Picture::to_svg`] / [`Picture::to_tree`] write it as SVG, from which
+//! `encode` makes the SVG and PDF files. At scale 1 the raster is the same,
+//! pixel for pixel, as drawing straight onto a pixmap with [`Raster`].
+
+use super::canvas::{Canvas, Pen, Raster};
+use super::charts::Chart;
+use super::style::{self, HAlign, VAlign};
+use crate::encode::Rgb;
+use crate::error::{Error, Result};
+use std::sync::Arc;
+use tiny_skia::{Path, Pixmap, Transform};
+
+/// One element of a picture.
+#[derive(Clone, Debug)]
+pub enum Item {
+    Fill {
+        path: Path,
+        color: Rgb,
+    },
+    Stroke {
+        path: Path,
+        pen: Pen,
+    },
+    /// Typeset text (markup of [`style::runs`]).
+    Text {
+        text: String,
+        at: (f32, f32),
+        size: f32,
+        color: Rgb,
+        align: (HAlign, VAlign),
+    },
+    Chart {
+        chart: Arc<Chart>,
+        at: (f32, f32),
+    },
+    /// Raster-only content; a picture holding one has no vector form.
+    Image {
+        image: Arc<Pixmap>,
+        at: (f32, f32),
+    },
+    Group {
+        transform: Transform,
+        items: Vec<Item>,
+    },
+}
+
+/// A picture: design size in pixels and the items drawn on white, in
+/// order.
+#[derive(Clone, Debug)]
+pub struct Picture {
+    width: f32,
+    height: f32,
+    items: Vec<Item>,
+    /// Groups being recorded (their transform and items so far).
+    open: Vec<(Transform, Vec<Item>)>,
+}
+
+/// Largest side of a raster, in pixels.
+pub const MAX_RASTER_SIDE: u32 = 8192;
+
+impl Picture {
+    /// An empty white picture of `width × height` design pixels.
+    pub fn new(width: f32, height: f32) -> Picture {
+        Picture {
+            width: width.max(1.0),
+            height: height.max(1.0),
+            items: Vec::new(),
+            open: Vec::new(),
+        }
+    }
+
+    /// Design width in pixels.
+    pub fn width(&self) -> f32 {
+        self.width
+    }
+
+    /// Design height in pixels.
+    pub fn height(&self) -> f32 {
+        self.height
+    }
+
+    /// Design size rounded up to whole pixels.
+    pub fn pixel_size(&self) -> (u32, u32) {
+        (self.width.ceil() as u32, self.height.ceil() as u32)
+    }
+
+    /// The items drawn (groups still open are not included).
+    pub fn items(&self) -> &[Item] {
+        &self.items
+    }
+
+    /// Whether the picture holds raster images (then it has no vector form).
+    pub fn has_images(&self) -> bool {
+        fn any(items: &[Item]) -> bool {
+            items.iter().any(|i| match i {
+                Item::Image { .. } => true,
+                Item::Group { items, .. } => any(items),
+                _ => false,
+            })
+        }
+        any(&self.items)
+    }
+
+    fn current(&mut self) -> &mut Vec<Item> {
+        match self.open.last_mut() {
+            Some((_, items)) => items,
+            None => &mut self.items,
+        }
+    }
+
+    /// Replays the picture's items onto `canvas` (without the white page).
+    pub fn draw(&self, canvas: &mut impl Canvas) {
+        draw_items(&self.items, canvas);
+    }
+
+    /// Draws `other` with its top left at `at` (its items are copied).
+    pub fn place(&mut self, other: &Picture, at: (f32, f32)) {
+        self.push(Transform::from_translate(at.0, at.1));
+        other.draw(self);
+        self.pop();
+    }
+
+    /// The picture at 100 %: `pixel_size()` pixels.
+    pub fn to_pixmap(&self) -> Result<Pixmap> {
+        self.rasterize(1.0)
+    }
+
+    /// The picture scaled by `scale` (e.g. 2 for a sharper PNG of the same
+    /// layout): the design size times `scale`, rounded up.
+    pub fn rasterize(&self, scale: f32) -> Result<Pixmap> {
+        let (w, h) = self.scaled_size(scale)?;
+        let mut pixmap = style::white_pixmap(w, h)
+            .ok_or_else(|| Error::bad_input(format!("a {w}x{h} image does not fit in memory")))?;
+        let ts = if scale == 1.0 {
+            Transform::identity()
+        } else {
+            Transform::from_scale(scale, scale)
+        };
+        self.draw(&mut Raster::with_transform(&mut pixmap, ts));
+        Ok(pixmap)
+    }
+
+    /// The raster size at `scale`, checked against [`MAX_RASTER_SIDE`].
+    pub fn scaled_size(&self, scale: f32) -> Result<(u32, u32)> {
+        if !(scale.is_finite() && scale > 0.0) {
+            return Err(Error::bad_input(format!(
+                "the scale must be a number above 0, got {scale}"
+            )));
+        }
+        let (w, h) = (
+            (self.width * scale).ceil().max(1.0),
+            (self.height * scale).ceil().max(1.0),
+        );
+        let max = MAX_RASTER_SIDE as f32;
+        if w > max || h > max {
+            return Err(Error::bad_input(format!(
+                "at scale {scale} the image would be {w}x{h} pixels, more than \
+                 {MAX_RASTER_SIDE} on a side"
+            )));
+        }
+        Ok((w as u32, h as u32))
+    }
+
+    /// An SVG document of the picture, `scale` times the design size (text
+    /// as `<text>` in the bundled font's family).
+    pub fn to_svg(&self, scale: f32) -> Result<String> {
+        super::svg::document(self, scale)
+    }
+
+    /// The picture parsed as an SVG tree with the bundled font: the input
+    /// of `encode::svg_bytes` and `encode::pdf_bytes`.
+    pub fn to_tree(&self, scale: f32) -> Result<resvg::usvg::Tree> {
+        let svg = self.to_svg(scale)?;
+        resvg::usvg::Tree::from_str(&svg, &style::usvg_options())
+            .map_err(|e| Error::failed(format!("internal SVG could not be parsed: {e}")))
+    }
+}
+
+fn draw_items(items: &[Item], canvas: &mut impl Canvas) {
+    for item in items {
+        match item {
+            Item::Fill { path, color } => canvas.fill(path, *color),
+            Item::Stroke { path, pen } => canvas.stroke(path, pen),
+            Item::Text {
+                text,
+                at,
+                size,
+                color,
+                align,
+            } => canvas.text(text, *at, *size, *color, *align),
+            Item::Chart { chart, at } => canvas.chart(chart, *at),
+            Item::Image { image, at } => canvas.image(image, *at),
+            Item::Group { transform, items } => {
+                canvas.push(*transform);
+                draw_items(items, canvas);
+                canvas.pop();
+            }
+        }
+    }
+}
+
+impl Canvas for Picture {
+    fn fill(&mut self, path: &Path, color: Rgb) {
+        self.current().push(Item::Fill {
+            path: path.clone(),
+            color,
+        });
+    }
+
+    fn stroke(&mut self, path: &Path, pen: &Pen) {
+        self.current().push(Item::Stroke {
+            path: path.clone(),
+            pen: *pen,
+        });
+    }
+
+    fn text(&mut self, text: &str, at: (f32, f32), size: f32, color: Rgb, align: (HAlign, VAlign)) {
+        if text.is_empty() {
+            return;
+        }
+        self.current().push(Item::Text {
+            text: text.to_string(),
+            at,
+            size,
+            color,
+            align,
+        });
+    }
+
+    fn chart(&mut self, chart: &Arc<Chart>, at: (f32, f32)) {
+        self.current().push(Item::Chart {
+            chart: chart.clone(),
+            at,
+        });
+    }
+
+    fn image(&mut self, image: &Arc<Pixmap>, at: (f32, f32)) {
+        self.current().push(Item::Image {
+            image: image.clone(),
+            at,
+        });
+    }
+
+    fn push(&mut self, transform: Transform) {
+        self.open.push((transform, Vec::new()));
+    }
+
+    fn pop(&mut self) {
+        if let Some((transform, items)) = self.open.pop()
+            && !items.is_empty()
+        {
+            self.current().push(Item::Group { transform, items });
+        }
+    }
+}
+
+impl From<Chart> for Picture {
+    /// A picture of the chart's size holding the chart.
+    fn from(chart: Chart) -> Picture {
+        let (w, h) = (chart.pixmap.width() as f32, chart.pixmap.height() as f32);
+        let mut p = Picture::new(w, h);
+        p.chart(&Arc::new(chart), (0.0, 0.0));
+        p
+    }
+}
+
+impl From<Pixmap> for Picture {
+    /// A raster-only picture of the image's size.
+    fn from(image: Pixmap) -> Picture {
+        let (w, h) = (image.width() as f32, image.height() as f32);
+        let mut p = Picture::new(w, h);
+        p.image(&Arc::new(image), (0.0, 0.0));
+        p
+    }
+}

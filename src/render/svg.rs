@@ -1,0 +1,234 @@
+//! The SVG backend of [`Picture`]: one `<path>` per fill or stroke, `<text>`
+//! in the bundled font with `<tspan>`s for super- and subscripts, charts
+//! inlined from their own SVG, groups as `<g transform>`. Text is placed
+//! with the same metrics as the raster backend ([`style::text_origin`]),
+//! so the two agree.
+
+use super::canvas::{Cap, Pen};
+use super::picture::{Item, Picture};
+use super::style::{self, FONT_FAMILY, Shift};
+use crate::encode::Rgb;
+use crate::error::{Error, Result};
+use std::fmt::Write;
+use tiny_skia::{Path, PathSegment, Transform};
+
+/// The SVG document of `picture` at `scale` times its design size.
+pub fn document(picture: &Picture, scale: f32) -> Result<String> {
+    if picture.has_images() {
+        return Err(Error::failed(
+            "this picture holds a raster image and has no vector form",
+        ));
+    }
+    let (w, h) = (picture.width(), picture.height());
+    let mut out = String::with_capacity(64 * 1024);
+    let _ = write!(
+        out,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" \
+         viewBox=\"0 0 {} {}\">\n<rect width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>\n",
+        num(w * scale),
+        num(h * scale),
+        num(w),
+        num(h),
+        num(w),
+        num(h)
+    );
+    items(&mut out, picture.items());
+    out.push_str("</svg>\n");
+    Ok(out)
+}
+
+fn items(out: &mut String, list: &[Item]) {
+    for item in list {
+        match item {
+            Item::Fill { path, color } => {
+                let _ = writeln!(
+                    out,
+                    "<path d=\"{}\" fill=\"{}\"/>",
+                    path_data(path),
+                    style::hex(*color)
+                );
+            }
+            Item::Stroke { path, pen } => {
+                let _ = writeln!(
+                    out,
+                    "<path d=\"{}\" {}/>",
+                    path_data(path),
+                    stroke_attrs(pen)
+                );
+            }
+            Item::Text {
+                text,
+                at,
+                size,
+                color,
+                align,
+            } => text_element(out, text, *at, *size, *color, *align),
+            Item::Chart { chart, at } => {
+                let _ = writeln!(
+                    out,
+                    "<g transform=\"translate({} {})\">",
+                    num(at.0),
+                    num(at.1)
+                );
+                out.push_str(svg_body(&chart.svg));
+                out.push_str("\n</g>\n");
+            }
+            // Refused by `document`.
+            Item::Image { .. } => {}
+            Item::Group {
+                transform,
+                items: inner,
+            } => {
+                let _ = writeln!(out, "<g transform=\"{}\">", matrix(*transform));
+                items(out, inner);
+                out.push_str("</g>\n");
+            }
+        }
+    }
+}
+
+/// What lies between a document's `<svg ...>` tag and its `</svg>`.
+fn svg_body(svg: &str) -> &str {
+    let start = svg
+        .find("<svg")
+        .and_then(|i| svg[i..].find('>').map(|j| i + j + 1))
+        .unwrap_or(0);
+    let end = svg.rfind("</svg>").unwrap_or(svg.len()).max(start);
+    &svg[start..end]
+}
+
+fn stroke_attrs(pen: &Pen) -> String {
+    let mut s = format!(
+        "fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"",
+        style::hex(pen.color),
+        num(pen.width)
+    );
+    match pen.cap {
+        Cap::Butt => {}
+        Cap::Round => s.push_str(" stroke-linecap=\"round\""),
+        Cap::Square => s.push_str(" stroke-linecap=\"square\""),
+    }
+    if let Some([on, off]) = pen.dash {
+        let _ = write!(s, " stroke-dasharray=\"{} {}\"", num(on), num(off));
+    }
+    s
+}
+
+fn text_element(
+    out: &mut String,
+    text: &str,
+    at: (f32, f32),
+    size: f32,
+    color: Rgb,
+    align: (style::HAlign, style::VAlign),
+) {
+    let width = style::text_width(text, size);
+    let (left, baseline) = style::text_origin(at, width, size, align);
+    let _ = write!(
+        out,
+        "<text x=\"{}\" y=\"{}\" font-family=\"{FONT_FAMILY}\" font-size=\"{}\" fill=\"{}\" \
+         xml:space=\"preserve\">",
+        num(left),
+        num(baseline),
+        num(size),
+        style::hex(color)
+    );
+    for (shift, run) in style::runs(text) {
+        match shift {
+            Shift::Base => out.push_str(&escape(run)),
+            _ => {
+                let _ = write!(
+                    out,
+                    "<tspan font-size=\"{}\" baseline-shift=\"{}\">{}</tspan>",
+                    num(size * shift.scale()),
+                    num(size * shift.rise()),
+                    escape(run)
+                );
+            }
+        }
+    }
+    out.push_str("</text>\n");
+}
+
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// `d` of a path, coordinates to 1/1000 pixel.
+fn path_data(path: &Path) -> String {
+    let mut d = String::new();
+    for seg in path.segments() {
+        let _ = match seg {
+            PathSegment::MoveTo(p) => write!(d, "M{} {}", num(p.x), num(p.y)),
+            PathSegment::LineTo(p) => write!(d, "L{} {}", num(p.x), num(p.y)),
+            PathSegment::QuadTo(c, p) => {
+                write!(d, "Q{} {} {} {}", num(c.x), num(c.y), num(p.x), num(p.y))
+            }
+            PathSegment::CubicTo(c1, c2, p) => write!(
+                d,
+                "C{} {} {} {} {} {}",
+                num(c1.x),
+                num(c1.y),
+                num(c2.x),
+                num(c2.y),
+                num(p.x),
+                num(p.y)
+            ),
+            PathSegment::Close => write!(d, "Z"),
+        };
+    }
+    d
+}
+
+fn matrix(t: Transform) -> String {
+    let n = |v: f32| {
+        let s = format!("{v:.6}");
+        let s = s.trim_end_matches('0').trim_end_matches('.');
+        if s == "-0" || s.is_empty() {
+            "0".to_string()
+        } else {
+            s.to_string()
+        }
+    };
+    format!(
+        "matrix({} {} {} {} {} {})",
+        n(t.sx),
+        n(t.ky),
+        n(t.kx),
+        n(t.sy),
+        n(t.tx),
+        n(t.ty)
+    )
+}
+
+/// A number with at most three decimals and no trailing zeros.
+fn num(v: f32) -> String {
+    let s = format!("{:.3}", v);
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" || s.is_empty() {
+        "0".into()
+    } else {
+        s.into()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers() {
+        assert_eq!(num(1.0), "1");
+        assert_eq!(num(-0.0001), "0");
+        assert_eq!(num(2.5), "2.5");
+        assert_eq!(num(1.23456), "1.235");
+    }
+
+    #[test]
+    fn body_of_a_document() {
+        let svg = "<?xml version=\"1.0\"?>\n<svg width=\"2\" a=\"b\">\n<rect/>\n</svg>\n";
+        assert_eq!(svg_body(svg), "\n<rect/>\n");
+    }
+}

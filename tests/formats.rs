@@ -1,0 +1,427 @@
+//! Output formats (SPEC section 8): every figure as PNG, SVG and PDF that
+//! look alike; PDFs that hold vector drawing and no page-sized raster; MP4s
+//! that an independent reader parses and that decode back to the GIF's
+//! frames; movie layouts that scale with the frame.
+//!
+//! `LADDER_FORMATS_DIR=DIR` also writes every file made here to DIR for
+//! inspection (`pdftoppm`, a browser, a video player).
+
+mod common;
+
+use common::golden::check;
+use jacobs_ladder::catalog;
+use jacobs_ladder::encode::{self, Format};
+use jacobs_ladder::render::Picture;
+use jacobs_ladder::scene;
+use jacobs_ladder::scenes;
+use std::sync::OnceLock;
+use tiny_skia::Pixmap;
+
+fn dump(name: &str, bytes: &[u8]) {
+    if let Ok(dir) = std::env::var("LADDER_FORMATS_DIR") {
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(format!("{dir}/{name}"), bytes).unwrap();
+    }
+}
+
+/// Every figure of the catalogue, drawn once (shared by the tests).
+fn figures() -> &'static [(String, Picture)] {
+    static ALL: OnceLock<Vec<(String, Picture)>> = OnceLock::new();
+    ALL.get_or_init(|| {
+        let entries = catalog::entries(scene::Kind::Figure).unwrap();
+        let all: Vec<(String, Picture)> = entries
+            .iter()
+            .map(|e| {
+                let (p, _) = scenes::figure_picture(&e.scene)
+                    .unwrap_or_else(|err| panic!("{}: {err}", e.id));
+                (e.scene.stem(), p)
+            })
+            .collect();
+        assert_eq!(all.len(), 13, "every figure of the catalogue");
+        all
+    })
+}
+
+/// Rasterises SVG bytes (text already outlines: no fonts given) onto white.
+fn rasterize_svg_file(svg: &[u8], width: u32, height: u32) -> Pixmap {
+    let tree = resvg::usvg::Tree::from_data(svg, &resvg::usvg::Options::default()).unwrap();
+    let mut p = Pixmap::new(width, height).unwrap();
+    p.fill(tiny_skia::Color::WHITE);
+    let s = tree.size();
+    let t = tiny_skia::Transform::from_scale(width as f32 / s.width(), height as f32 / s.height());
+    resvg::render(&tree, t, &mut p.as_mut());
+    p
+}
+
+/// Mean absolute difference per channel (0–255) and the fraction of pixels
+/// where some channel differs by more than `big`.
+fn difference(a: &Pixmap, b: &Pixmap, big: u8) -> (f64, f64) {
+    assert_eq!((a.width(), a.height()), (b.width(), b.height()));
+    let (mut sum, mut bad) = (0u64, 0usize);
+    for (p, q) in a.data().chunks_exact(4).zip(b.data().chunks_exact(4)) {
+        let d: Vec<u8> = (0..3).map(|k| p[k].abs_diff(q[k])).collect();
+        sum += d.iter().map(|&v| v as u64).sum::<u64>();
+        if d.iter().any(|&v| v > big) {
+            bad += 1;
+        }
+    }
+    let n = (a.width() * a.height()) as f64;
+    (sum as f64 / (3.0 * n), bad as f64 / n)
+}
+
+#[test]
+fn svg_of_every_figure_matches_its_png() {
+    for (name, pic) in figures() {
+        let png = pic.to_pixmap().unwrap();
+        let tree = pic.to_tree(1.0).unwrap();
+        let svg = encode::svg_bytes(&tree);
+        assert!(
+            !String::from_utf8_lossy(&svg).contains("<text"),
+            "{name}: SVG text should be outlines"
+        );
+        dump(&format!("{name}.svg"), &svg);
+        dump(&format!("{name}.png"), &encode::png_bytes(&png).unwrap());
+        let back = rasterize_svg_file(&svg, png.width(), png.height());
+        dump(
+            &format!("{name}-from-svg.png"),
+            &encode::png_bytes(&back).unwrap(),
+        );
+        let (mean, frac) = difference(&png, &back, 64);
+        eprintln!(
+            "{name}: mean {mean:.3}, {:.3} % of pixels off by > 64",
+            100.0 * frac
+        );
+        assert!(
+            mean < 1.0 && frac < 0.01,
+            "{name}: mean {mean}, fraction {frac}"
+        );
+    }
+}
+
+/// Operators of a PDF content stream, in order.
+fn pdf_operators(doc: &lopdf::Document) -> Vec<String> {
+    let mut ops = Vec::new();
+    for (_, page) in doc.get_pages() {
+        let content = doc.get_page_content(page);
+        let parsed = lopdf::content::Content::decode(&content).expect("content parses");
+        ops.extend(parsed.operations.into_iter().map(|o| o.operator));
+    }
+    ops
+}
+
+#[test]
+fn pdf_of_every_figure_is_vector() {
+    for (name, pic) in figures() {
+        let tree = pic.to_tree(1.0).unwrap();
+        let pdf = encode::pdf_bytes(&tree).unwrap();
+        dump(&format!("{name}.pdf"), &pdf);
+        assert!(pdf.starts_with(b"%PDF-1."), "{name}");
+        let doc = lopdf::Document::load_mem(&pdf).unwrap();
+        assert_eq!(doc.get_pages().len(), 1, "{name}");
+        let ops = pdf_operators(&doc);
+        let count = |op: &str| ops.iter().filter(|o| *o == op).count();
+        // Paths (m, l, c), fills (f) and strokes (S): the drawing is vector.
+        assert!(
+            count("m") > 100 && count("l") > 100,
+            "{name}: too few path operators"
+        );
+        assert!(count("c") > 100, "{name}: no curves (glyph outlines)");
+        assert!(
+            count("f") >= 10 && count("S") >= 10,
+            "{name}: fills {} strokes {}",
+            count("f"),
+            count("S")
+        );
+        // No images at all: nothing is drawn as a raster (`Do` paints XObjects).
+        assert_eq!(count("Do"), 0, "{name}: draws an XObject");
+        assert_eq!(count("BI"), 0, "{name}: has an inline image");
+        for (_, obj) in doc.objects.iter() {
+            if let Ok(stream) = obj.as_stream() {
+                let subtype = stream.dict.get(b"Subtype").and_then(|s| s.as_name()).ok();
+                assert!(
+                    subtype != Some(b"Image".as_slice()),
+                    "{name}: image XObject"
+                );
+            }
+        }
+        // The page is the picture's size at 96 px per inch.
+        let (_, page) = doc.get_pages().into_iter().next().unwrap();
+        let media = doc
+            .get_dictionary(page)
+            .unwrap()
+            .get(b"MediaBox")
+            .unwrap()
+            .as_array()
+            .unwrap()
+            .clone();
+        let w = media[2].as_float().unwrap();
+        assert!((w - 0.75 * pic.width()).abs() < 0.01, "{name}: width {w}");
+    }
+}
+
+// ---------------------------------------------------------------- movies
+
+fn movie_scene(id: &str) -> scene::Scene {
+    catalog::find(scene::Kind::Movie, id).unwrap().scene.clone()
+}
+
+/// Every frame of a GIF, composited (disposal "keep", transparent index
+/// leaves the pixel as it was), as RGB.
+fn gif_frames(bytes: &[u8]) -> (usize, usize, Vec<Vec<u8>>) {
+    let mut opts = gif::DecodeOptions::new();
+    opts.set_color_output(gif::ColorOutput::Indexed);
+    let mut d = opts.read_info(bytes).unwrap();
+    let (w, h) = (d.width() as usize, d.height() as usize);
+    let global = d.global_palette().unwrap().to_vec();
+    let mut screen = vec![255u8; w * h * 3];
+    let mut out = Vec::new();
+    while let Some(f) = d.read_next_frame().unwrap() {
+        let pal = f.palette.clone().unwrap_or_else(|| global.clone());
+        for y in 0..f.height as usize {
+            for x in 0..f.width as usize {
+                let i = f.buffer[y * f.width as usize + x];
+                if Some(i) == f.transparent {
+                    continue;
+                }
+                let at = 3 * ((f.top as usize + y) * w + f.left as usize + x);
+                screen[at..at + 3].copy_from_slice(&pal[3 * i as usize..3 * i as usize + 3]);
+            }
+        }
+        out.push(screen.clone());
+    }
+    (w, h, out)
+}
+
+/// Peak signal-to-noise ratio of two RGB buffers, dB.
+fn psnr(a: &[u8], b: &[u8]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    let mse = a
+        .iter()
+        .zip(b)
+        .map(|(&x, &y)| (x as f64 - y as f64).powi(2))
+        .sum::<f64>()
+        / a.len() as f64;
+    10.0 * (255.0f64 * 255.0 / mse.max(1e-12)).log10()
+}
+
+/// The top-level boxes of an MP4: (type, offset, size).
+fn top_boxes(bytes: &[u8]) -> Vec<(String, usize, usize)> {
+    let mut out = Vec::new();
+    let mut at = 0;
+    while at + 8 <= bytes.len() {
+        let size = u32::from_be_bytes(bytes[at..at + 4].try_into().unwrap()) as usize;
+        let kind = String::from_utf8_lossy(&bytes[at + 4..at + 8]).into_owned();
+        assert!(size >= 8 && at + size <= bytes.len(), "box {kind} at {at}");
+        out.push((kind, at, size));
+        at += size;
+    }
+    assert_eq!(at, bytes.len(), "boxes cover the file");
+    out
+}
+
+#[cfg(feature = "mp4")]
+#[test]
+fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
+    use jacobs_ladder::encode::Yuv420;
+    use openh264::formats::YUVSource;
+    let scene = movie_scene("4");
+    let opts = scenes::MovieOptions {
+        frames: 24,
+        width: 320,
+        height: 240,
+        fps: 12.0,
+    };
+    let (movies, _, _) =
+        scenes::dynamic::movie(&scene, &opts, &[Format::Gif, Format::Mp4], &|| {}).unwrap();
+    let (gif, mp4) = (&movies[0].1, &movies[1].1);
+    assert_eq!((movies[0].0, movies[1].0), (Format::Gif, Format::Mp4));
+    dump("movie-4.mp4", mp4);
+    dump("movie-4.gif", gif);
+
+    // Container, read by an independent parser.
+    let kinds: Vec<String> = top_boxes(mp4).into_iter().map(|b| b.0).collect();
+    assert_eq!(
+        kinds,
+        ["ftyp", "moov", "mdat"],
+        "the index comes before the frames"
+    );
+    let mut reader =
+        mp4::Mp4Reader::read_header(std::io::Cursor::new(mp4.as_slice()), mp4.len() as u64)
+            .unwrap();
+    assert_eq!(reader.tracks().len(), 1);
+    let track = reader.tracks().values().next().unwrap();
+    let id = track.track_id();
+    assert_eq!(track.media_type().unwrap(), mp4::MediaType::H264);
+    assert_eq!((track.width(), track.height()), (320, 240));
+    assert_eq!(track.sample_count(), 24);
+    assert!(
+        (track.frame_rate() - 12.0).abs() < 1e-6,
+        "{}",
+        track.frame_rate()
+    );
+    assert!((reader.duration().as_secs_f64() - 2.0).abs() < 0.01);
+    let sps = track.sequence_parameter_set().unwrap().to_vec();
+    let pps = track.picture_parameter_set().unwrap().to_vec();
+
+    // Decoded back with OpenH264's decoder: frame k is the GIF's frame k.
+    let (gw, gh, gif_rgb) = gif_frames(gif);
+    assert_eq!((gw, gh, gif_rgb.len()), (320, 240, 24));
+    let mut decoder = openh264::decoder::Decoder::new().unwrap();
+    let start = |v: &mut Vec<u8>, nal: &[u8]| {
+        v.extend_from_slice(&[0, 0, 0, 1]);
+        v.extend_from_slice(nal);
+    };
+    let mut head = Vec::new();
+    start(&mut head, &sps);
+    start(&mut head, &pps);
+    let _ = decoder.decode(&head);
+    let mut total = 0usize;
+    for k in 0..24u32 {
+        let sample = reader.read_sample(id, k + 1).unwrap().unwrap();
+        assert_eq!(
+            sample.is_sync,
+            k == 0,
+            "key frames: the first only (5 s period)"
+        );
+        assert_eq!(sample.duration, 1000, "constant frame duration");
+        total += sample.bytes.len();
+        let mut annex_b = Vec::new();
+        let mut rest = &sample.bytes[..];
+        while rest.len() >= 4 {
+            let n = u32::from_be_bytes(rest[..4].try_into().unwrap()) as usize;
+            start(&mut annex_b, &rest[4..4 + n]);
+            rest = &rest[4 + n..];
+        }
+        assert!(rest.is_empty(), "sample {k} is whole NAL units");
+        let yuv = decoder
+            .decode(&annex_b)
+            .unwrap()
+            .unwrap_or_else(|| panic!("frame {k} decodes"));
+        let (w, h) = yuv.dimensions();
+        assert_eq!((w, h), (320, 240));
+        let (ys, us, vs) = yuv.strides();
+        let rows = |plane: &[u8], stride: usize, width: usize, height: usize| -> Vec<u8> {
+            (0..height)
+                .flat_map(|r| plane[r * stride..r * stride + width].to_vec())
+                .collect()
+        };
+        let ours = Yuv420 {
+            width: w,
+            height: h,
+            y: rows(yuv.y(), ys, w, h),
+            u: rows(yuv.u(), us, w / 2, h / 2),
+            v: rows(yuv.v(), vs, w / 2, h / 2),
+        };
+        let p = psnr(&ours.to_rgb(), &gif_rgb[k as usize]);
+        assert!(p >= 30.0, "frame {k}: PSNR {p:.1} dB");
+        if k % 8 == 0 {
+            eprintln!("frame {k}: PSNR {p:.1} dB against the GIF");
+        }
+    }
+    let mdat = top_boxes(mp4).into_iter().find(|b| b.0 == "mdat").unwrap();
+    assert_eq!(total, mdat.2 - 8, "the samples fill mdat");
+}
+
+#[test]
+fn movie_layout_scales_with_the_frame() {
+    let scene = movie_scene("4");
+    let frame = |w: u32, h: u32| {
+        let opts = scenes::MovieOptions {
+            frames: 10,
+            width: w,
+            height: h,
+            fps: 10.0,
+        };
+        scenes::dynamic::movie_frame(&scene, &opts, 6).unwrap()
+    };
+    let small = frame(640, 360);
+    let big = frame(1920, 1080);
+    dump("frame-640x360.png", &encode::png_bytes(&small).unwrap());
+    dump("frame-1920x1080.png", &encode::png_bytes(&big).unwrap());
+    // 3 × 3 box average of the big frame.
+    let mut down = Pixmap::new(640, 360).unwrap();
+    {
+        let (src, dst) = (big.data(), down.data_mut());
+        for y in 0..360 {
+            for x in 0..640 {
+                for c in 0..4 {
+                    let mut s = 0u32;
+                    for dy in 0..3 {
+                        for dx in 0..3 {
+                            s += src[4 * ((3 * y + dy) * 1920 + 3 * x + dx) + c] as u32;
+                        }
+                    }
+                    dst[4 * (y * 640 + x) + c] = ((s + 4) / 9) as u8;
+                }
+            }
+        }
+    }
+    dump(
+        "frame-1920x1080-down.png",
+        &encode::png_bytes(&down).unwrap(),
+    );
+    let (mean, frac) = difference(&small, &down, 96);
+    eprintln!(
+        "1920x1080 scaled down vs 640x360: mean {mean:.2}, {:.2} % off by > 96",
+        100.0 * frac
+    );
+    assert!(mean < 3.0 && frac < 0.02, "mean {mean}, fraction {frac}");
+}
+
+#[test]
+fn nothing_is_cut_from_320x240_to_3840x2160() {
+    let scene = movie_scene("4");
+    for (w, h) in [
+        (320, 240),
+        (640, 360),
+        (640, 480),
+        (1280, 720),
+        (3840, 2160),
+        (480, 1080),
+    ] {
+        let opts = scenes::MovieOptions {
+            frames: 4,
+            width: w,
+            height: h,
+            fps: 10.0,
+        };
+        let f = scenes::dynamic::movie_frame(&scene, &opts, 3).unwrap();
+        // The outermost rows and columns stay white: no text or ladder runs
+        // off the frame.
+        let px = |x: u32, y: u32| {
+            let i = 4 * (y * w + x) as usize;
+            [f.data()[i], f.data()[i + 1], f.data()[i + 2]]
+        };
+        let edge = (w as f32 / 320.0).ceil() as u32;
+        for x in 0..w {
+            for y in (0..edge).chain(h - edge..h) {
+                assert_eq!(px(x, y), [255; 3], "{w}x{h}: ink at ({x}, {y})");
+            }
+        }
+        for y in 0..h {
+            for x in (0..edge).chain(w - edge..w) {
+                assert_eq!(px(x, y), [255; 3], "{w}x{h}: ink at ({x}, {y})");
+            }
+        }
+        if w == 320 || w == 480 {
+            dump(
+                &format!("frame-{w}x{h}.png"),
+                &encode::png_bytes(&f).unwrap(),
+            );
+        }
+    }
+}
+
+/// A golden image of a vector output: the SVG file of the edge-mode figure
+/// (superscripts and subscripts in chart legends, axis labels and notes)
+/// rasterised by resvg.
+#[test]
+fn golden_rasterised_svg() {
+    let (_, pic) = figures()
+        .iter()
+        .find(|(n, _)| n == "figure-edge-mode")
+        .unwrap();
+    let svg = encode::svg_bytes(&pic.to_tree(1.0).unwrap());
+    let (w, h) = pic.pixel_size();
+    check("svg-figure-edge-mode", &rasterize_svg_file(&svg, w, h));
+}
