@@ -66,14 +66,15 @@ impl Scenario {
 }
 
 /// `simulate` needs 0 < |α| < 90° (SPEC section 5).
+/// α is read to 1e-9° (`Params::alpha_deg`), so a smaller |α| counts as 0.
 pub fn check_simulable(params: &Params) -> Result<()> {
     let deg = params.alpha_deg();
     if deg.is_finite() && deg.abs() > 0.0 && deg.abs() < 90.0 {
         Ok(())
     } else {
         Err(Error::bad_input(format!(
-            "alpha must satisfy 0 < |alpha| < 90 degrees for a simulation, got {}",
-            crate::error::num(deg)
+            "alpha must satisfy 1e-9 <= |alpha| < 90 degrees for a simulation, got {}",
+            crate::error::num(params.alpha.to_degrees())
         )))
     }
 }
