@@ -5,6 +5,7 @@
 //! never an integrator. Every function returns a `tiny_skia::Pixmap`; turn it
 //! into bytes with [`crate::encode`] and write it with [`crate::output`].
 
+pub mod cells;
 pub mod charts;
 pub mod compose;
 pub mod snapshot;

@@ -37,6 +37,7 @@ pub fn file_names(scene: &Scene) -> Vec<String> {
     let mut names = match scene.output {
         OutputSpec::Movie { .. } => vec![format!("{stem}.gif"), format!("{stem}-kymograph.png")],
         OutputSpec::Data => vec![],
+        OutputSpec::Sweep(_) => vec![format!("{stem}.png"), format!("{stem}.csv")],
         _ => vec![format!("{stem}.png")],
     };
     names.push(format!("{stem}.json"));
@@ -45,6 +46,10 @@ pub fn file_names(scene: &Scene) -> Vec<String> {
 
 /// The files of one scene, as (file name, bytes), in [`file_names`] order.
 pub fn render(scene: &Scene, movie: &MovieOptions) -> Result<Vec<(String, Vec<u8>)>> {
+    if let OutputSpec::Sweep(_) = scene.output {
+        // Its own data file: the sweep's JSON (crate::sweep::results).
+        return crate::sweep::render(scene);
+    }
     let (mut bytes, runs) = match &scene.output {
         OutputSpec::Theory(spec) => {
             let input = theory::FigureInput::new(describe::title(scene), &scene.model, spec);
@@ -73,6 +78,7 @@ pub fn render(scene: &Scene, movie: &MovieOptions) -> Result<Vec<(String, Vec<u8
             let run = run::simulate(scene, &[])?;
             (vec![], vec![RunData::from_run(scene, &run)])
         }
+        OutputSpec::Sweep(_) => return crate::sweep::render(scene),
     };
     let names = file_names(scene);
     let data = DataFile {

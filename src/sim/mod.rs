@@ -7,11 +7,13 @@ pub mod integrators;
 pub mod observables;
 pub mod protocol;
 pub mod rhs;
+mod until;
 
 pub use fused::{Isa, Stepping};
 pub use integrators::{IntegratorConfig, IntegratorKind};
 pub use protocol::{Drive, Piece, Protocol};
 pub use rhs::{Rhs, State};
+pub use until::{StopRule, simulate_until};
 
 use crate::error::{Error, Result};
 use crate::model::ladder::itheta;
