@@ -5,6 +5,7 @@
 
 pub mod args;
 pub mod convert;
+pub mod sweep;
 
 pub use args::*;
 
@@ -82,6 +83,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Simulate(args) => simulate(&args),
         Command::Bench(args) => bench(&args),
         Command::Theory(args) => theory(&args),
+        Command::Sweep(args) => sweep::sweep(&args),
         Command::List => {
             print!("{}", catalog::listing()?);
             Ok(())

@@ -76,6 +76,19 @@ impl Param {
         }
     }
 
+    /// The symbol: α, N, b/s, γ, G, I, T_d.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Self::Alpha => "α",
+            Self::N => "N",
+            Self::B => "b/s",
+            Self::Gamma => "γ",
+            Self::Gravity => "G",
+            Self::Inertia => "I",
+            Self::DriveTime => "T_d",
+        }
+    }
+
     pub fn from_name(s: &str) -> Option<Param> {
         Self::ALL.into_iter().find(|p| p.name() == s)
     }
@@ -526,6 +539,56 @@ impl SweepSpec {
             }
         }
         Ok(())
+    }
+}
+
+impl SweepSpec {
+    /// "α = 40:89.5:0.5, −40:−89.5:−0.5; γ = 0.01, 0.02".
+    pub fn describe_grid(&self) -> String {
+        let axes: Vec<String> = self
+            .grid
+            .0
+            .iter()
+            .map(|(p, v)| {
+                let pieces: Vec<String> = v
+                    .0
+                    .iter()
+                    .map(|piece| match piece {
+                        Piece::Range { text } => text.replace('-', "−"),
+                        Piece::Value(x) => super::describe::num(*x),
+                    })
+                    .collect();
+                format!("{} = {}", p.symbol(), pieces.join(", "))
+            })
+            .collect();
+        axes.join("; ")
+    }
+
+    /// A title made from the grid: "outcome against α, N = 10" or
+    /// "phase diagram over α and γ".
+    pub fn title(&self, m: &Model) -> String {
+        let varied: Vec<&'static str> = self
+            .axes()
+            .map(|a| {
+                a.iter()
+                    .filter(|(_, v)| v.len() > 1)
+                    .map(|(p, _)| p.symbol())
+                    .collect()
+            })
+            .unwrap_or_default();
+        let fixed = if self.grid.0.iter().any(|(p, _)| *p == Param::N) {
+            format!("b/s = {}", super::describe::num(m.b))
+        } else {
+            format!("N = {}, b/s = {}", m.n, super::describe::num(m.b))
+        };
+        match varied.len() {
+            0 | 1 => format!(
+                "what the wave does against {}, {fixed}",
+                varied.first().copied().unwrap_or("nothing")
+            ),
+            2 => format!("phase diagram over {} and {}, {fixed}", varied[0], varied[1]),
+            _ => format!("sweep over {}, {fixed}", varied.join(", ")),
+        }
     }
 }
 

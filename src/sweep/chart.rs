@@ -106,6 +106,14 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
         if fold { v.abs() } else { v }
     };
     let x_label = if fold { "|α| (°)" } else { param.label() };
+    // One horizontal range for every panel, so that they line up.
+    let (x_lo, x_hi) = records.iter().map(x_of).fold(
+        (f64::INFINITY, f64::NEG_INFINITY),
+        |(a, b), v| (a.min(v), b.max(v)),
+    );
+    let pad = if x_hi > x_lo { 0.04 * (x_hi - x_lo) } else { 0.5 * x_lo.abs().max(1.0) };
+    let x_range = (x_lo - pad, x_hi + pad);
+    let x_axis = || Axis::new(x_label).range(x_range.0, x_range.1);
     let n_max = records
         .iter()
         .map(|r| r.result.arrival_times.len())
@@ -129,7 +137,7 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
         vec![("", Marker::Circle, Box::new(|_: &Record| true))]
     };
     let mut front = ChartSpec::new(
-        Axis::new(x_label),
+        x_axis(),
         Axis::new("front: last block reached").range(-0.3, n_max as f64 + 0.6),
     )
     .title(title);
@@ -151,12 +159,12 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
             front = front.series(Series::scatter(label, pts, outcome_color(o), *marker));
         }
     }
-    let mut speed = ChartSpec::new(Axis::new(x_label), Axis::new("speed (blocks/τ)"));
+    let mut speed = ChartSpec::new(x_axis(), Axis::new("speed (10⁻³ blocks/τ)"));
     for (i, (wave, marker, keep)) in waves.iter().enumerate() {
         let mut pts: Vec<(f64, f64)> = records
             .iter()
             .filter(|r| keep(r))
-            .map(|r| (x_of(r), r.result.speed.unwrap_or(f64::NAN)))
+            .map(|r| (x_of(r), r.result.speed.map_or(f64::NAN, |v| 1e3 * v)))
             .collect();
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
         let color = style::series_color(if fold { 2 * i + 1 } else { 2 });
@@ -178,7 +186,7 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
     }
     let mut panels = vec![(line_chart(&front, WIDTH, 300)?, 300), (line_chart(&speed, WIDTH, 260)?, 260)];
     if param == Param::Alpha && plan.spec.charts.theory {
-        panels.push((theory_panel(plan, x_label, fold, None)?, 240));
+        panels.push((theory_panel(plan, x_label, fold, Some((WIDTH, x_range)))?, 240));
     }
     stack(&panels)
 }
@@ -212,9 +220,18 @@ fn theory_panel(
         }
         None => WIDTH,
     };
-    let spec = ChartSpec::new(xa, Axis::new("linear theory"))
+    // Headroom above the curves for the legend, so that the plot keeps the
+    // full width and its α axis lines up with the panels above.
+    let top = gap
+        .iter()
+        .chain(&barrier)
+        .map(|p| p.1)
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max);
+    let mut spec = ChartSpec::new(xa, Axis::new("linear theory").range(0.0, 1.45 * top.max(1e-3)))
         .series(Series::line("gap ω₊(0) τ", gap, style::BLUE))
-        .series(Series::line("barrier ΔU / mgs", barrier, style::RED).dashed());
+        .series(Series::line("barrier ΔU / mgs (per pair)", barrier, style::RED).dashed());
+    spec.legend = crate::render::charts::Legend::UpperMiddle;
     line_chart(&spec, width, 240)
 }
 
@@ -235,7 +252,11 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
         s
     };
     let (xs, ys) = (sorted(xs), sorted(ys));
-    let speeds: Vec<f64> = records.iter().filter_map(|r| r.result.speed).collect();
+    let speeds: Vec<f64> = records
+        .iter()
+        .filter(|r| r.result.outcome == Outcome::Propagated)
+        .filter_map(|r| r.result.speed)
+        .collect();
     let (lo, hi) = speeds
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {

@@ -161,6 +161,7 @@ pub fn write(dir: &Path, name: &str, file: &ShardFile) -> Result<PathBuf> {
 /// record in grid order. Refuses a folder without shards, shards of two
 /// sweeps, and a sweep with a shard missing or unfinished (naming it).
 pub fn gather(dir: &Path) -> Result<(Scene, String, Vec<Record>)> {
+    // (the sweep scene, the shards' fingerprint, the records)
     let sdir = shards_dir(dir);
     let entries = std::fs::read_dir(&sdir).map_err(|_| {
         Error::bad_input(format!(
@@ -224,9 +225,11 @@ pub fn gather(dir: &Path) -> Result<(Scene, String, Vec<Record>)> {
             total,
         )));
     }
-    let name = first.scene.name.clone();
-    let scene = first.scene.clone();
-    Ok((scene, name, by_run.into_values().collect()))
+    Ok((
+        first.scene.clone(),
+        first.fingerprint.clone(),
+        by_run.into_values().collect(),
+    ))
 }
 
 /// Which shard is missing or unfinished.
