@@ -55,7 +55,11 @@ pub fn sweep(args: &SweepArgs) -> Result<()> {
         .filter(|i| done.binary_search_by_key(i, |r| r.run).is_err())
         .collect();
     run_in_chunks(&plan, shard, out, &todo, &mut done)?;
-    let path = shard::write(out, &plan.scene.name, &ShardFile::new(&plan, shard, done.clone()))?;
+    let path = shard::write(
+        out,
+        &plan.scene.name,
+        &ShardFile::new(&plan, shard, done.clone()),
+    )?;
     if args.shard.is_some() {
         eprintln!(
             "ladder: shard {}/{} of sweep {}: {} runs ({} new) in {:.2} s → {}; when every shard is done: ladder sweep gather {}",
@@ -94,7 +98,11 @@ fn run_in_chunks(
         done.sort_by_key(|r| r.run);
         at = end;
         if at < todo.len() {
-            shard::write(out, &plan.scene.name, &ShardFile::new(plan, shard, done.clone()))?;
+            shard::write(
+                out,
+                &plan.scene.name,
+                &ShardFile::new(plan, shard, done.clone()),
+            )?;
             // Chunks of a few seconds: frequent checkpoints, few rewrites.
             if t0.elapsed() < Duration::from_secs(2) {
                 chunk = (2 * chunk).min(4096);
@@ -138,8 +146,7 @@ fn write_outputs(plan: &Plan, records: &[Record], out: &Path, start: Instant) ->
 fn gather(dir: &Path) -> Result<()> {
     let start = Instant::now();
     let (scene, first, records) = shard::gather(dir)?;
-    let plan = Plan::new(&scene, usize::MAX)?
-        .map_err(|e| Error::bad_input(format!("{e}")))?;
+    let plan = Plan::new(&scene, usize::MAX)?.map_err(|e| Error::bad_input(format!("{e}")))?;
     if first != plan.fingerprint {
         return Err(Error::bad_input(format!(
             "the shards in {} were made by another version of ladder (fingerprint {first}, this one computes {}); rerun them with this version",

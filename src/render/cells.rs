@@ -151,8 +151,11 @@ fn draw_legend(area: &Area<'_>, c: &CellChart) -> Result<()> {
     let text = font(size::TICK).into_font().color(&rgb(DARK));
     let mut y = 30;
     for (label, color) in &c.legend {
-        area.draw(&Rectangle::new([(8, y), (26, y + 18)], rgb(*color).filled()))
-            .map_err(plot_error)?;
+        area.draw(&Rectangle::new(
+            [(8, y), (26, y + 18)],
+            rgb(*color).filled(),
+        ))
+        .map_err(plot_error)?;
         area.draw(&Text::new(label.clone(), (32, y + 2), text.clone()))
             .map_err(plot_error)?;
         y += 26;

@@ -149,7 +149,9 @@ pub const MAX_AXIS_VALUES: usize = 1_000_000;
 pub enum Piece {
     /// `start:stop:step`, inclusive of `stop` when the steps land on it;
     /// kept as typed, so that values are rounded to the decimals written.
-    Range { text: String },
+    Range {
+        text: String,
+    },
     Value(f64),
 }
 
@@ -190,9 +192,7 @@ impl Values {
                 Piece::Value(v) => return Err(format!("{v} is not a finite number")),
             }
             if out.len() > MAX_AXIS_VALUES {
-                return Err(format!(
-                    "more than {MAX_AXIS_VALUES} values on one axis"
-                ));
+                return Err(format!("more than {MAX_AXIS_VALUES} values on one axis"));
             }
         }
         if out.is_empty() {
@@ -292,10 +292,12 @@ impl<'de> Deserialize<'de> for Values {
         impl<'de> Visitor<'de> for V {
             type Value = Values;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("a range \"start:stop:step\", a number, or a list of numbers and ranges")
+                f.write_str(
+                    "a range \"start:stop:step\", a number, or a list of numbers and ranges",
+                )
             }
             fn visit_str<E: de::Error>(self, v: &str) -> Result<Values, E> {
-                range_values(v).map_err(E::custom)?;
+                // Checked by `SweepSpec::check`, which names the key.
                 Ok(Values(vec![Piece::Range { text: v.into() }]))
             }
             fn visit_f64<E: de::Error>(self, v: f64) -> Result<Values, E> {
@@ -319,9 +321,18 @@ impl<'de> Deserialize<'de> for Values {
     }
 }
 
-/// The axes of a grid, in order: the first varies slowest.
+/// The axes of a grid, in order: the first varies slowest. Keys that name
+/// no parameter are kept aside (second field) for [`SweepSpec::check`] to
+/// report with their place in the file (the TOML parser cannot locate an
+/// error inside an `[output]` table).
 #[derive(Debug, Clone, Default, PartialEq)]
-pub struct Grid(pub Vec<(Param, Values)>);
+pub struct Grid(pub Vec<(Param, Values)>, pub Vec<String>);
+
+impl Grid {
+    pub fn new(axes: Vec<(Param, Values)>) -> Self {
+        Self(axes, Vec::new())
+    }
+}
 
 impl Serialize for Grid {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
@@ -342,18 +353,20 @@ impl<'de> Deserialize<'de> for Grid {
                 f.write_str("a table of parameters (alpha, n, b, gamma, gravity, inertia, drive_time) and their values")
             }
             fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Grid, A::Error> {
-                let mut axes: Vec<(Param, Values)> = Vec::new();
+                let mut grid = Grid::default();
                 while let Some(key) = map.next_key::<String>()? {
-                    let param = Param::from_name(&key).ok_or_else(|| {
-                        de::Error::custom(format!(
-                            "unknown parameter '{key}'; a sweep varies {}",
-                            Param::names()
-                        ))
-                    })?;
-                    let values: Values = map.next_value()?;
-                    axes.push((param, values));
+                    match Param::from_name(&key) {
+                        Some(param) => {
+                            let values: Values = map.next_value()?;
+                            grid.0.push((param, values));
+                        }
+                        None => {
+                            map.next_value::<de::IgnoredAny>()?;
+                            grid.1.push(key);
+                        }
+                    }
                 }
-                Ok(Grid(axes))
+                Ok(grid)
             }
         }
         d.deserialize_map(G)
@@ -461,7 +474,9 @@ impl SweepSpec {
     /// The points of the grid in order (the last axis varies fastest).
     pub fn points(&self) -> Result<Vec<Point>, (String, String)> {
         let axes = self.axes()?;
-        let count = axes.iter().fold(1usize, |n, (_, v)| n.saturating_mul(v.len()));
+        let count = axes
+            .iter()
+            .fold(1usize, |n, (_, v)| n.saturating_mul(v.len()));
         Ok((0..count)
             .map(|mut i| {
                 let mut p = vec![0.0; axes.len()];
@@ -494,10 +509,22 @@ impl SweepSpec {
         check_point: impl Fn(&Scene) -> Result<(), (String, String)>,
         base: &Scene,
     ) -> Result<(), (String, String)> {
+        if let Some(key) = self.grid.1.first() {
+            return Err((
+                format!("output.grid.{key}"),
+                format!(
+                    "unknown parameter '{key}'; a sweep varies {}",
+                    Param::names()
+                ),
+            ));
+        }
         if self.grid.0.is_empty() {
             return Err((
                 "output.grid".into(),
-                format!("a sweep needs at least one parameter to vary: {}", Param::names()),
+                format!(
+                    "a sweep needs at least one parameter to vary: {}",
+                    Param::names()
+                ),
             ));
         }
         if !(self.quiet.is_finite() && self.quiet >= 1.0 && self.quiet <= 1000.0) {
@@ -525,7 +552,10 @@ impl SweepSpec {
                 param.set(&mut s, *v);
                 s.output = super::OutputSpec::Data;
                 check_point(&s).map_err(|(_, msg)| {
-                    (key.clone(), format!("the value {v} makes a bad scene: {msg}"))
+                    (
+                        key.clone(),
+                        format!("the value {v} makes a bad scene: {msg}"),
+                    )
                 })?;
                 if s.model.n < MIN_SWEEP_BLOCKS {
                     return Err((
@@ -550,14 +580,13 @@ impl SweepSpec {
             .0
             .iter()
             .map(|(p, v)| {
-                let pieces: Vec<String> = v
-                    .0
-                    .iter()
-                    .map(|piece| match piece {
-                        Piece::Range { text } => text.replace('-', "−"),
-                        Piece::Value(x) => super::describe::num(*x),
-                    })
-                    .collect();
+                let pieces: Vec<String> =
+                    v.0.iter()
+                        .map(|piece| match piece {
+                            Piece::Range { text } => text.replace('-', "−"),
+                            Piece::Value(x) => super::describe::num(*x),
+                        })
+                        .collect();
                 format!("{} = {}", p.symbol(), pieces.join(", "))
             })
             .collect();
@@ -586,7 +615,10 @@ impl SweepSpec {
                 "what the wave does against {}, {fixed}",
                 varied.first().copied().unwrap_or("nothing")
             ),
-            2 => format!("phase diagram over {} and {}, {fixed}", varied[0], varied[1]),
+            2 => format!(
+                "phase diagram over {} and {}, {fixed}",
+                varied[0], varied[1]
+            ),
             _ => format!("sweep over {}, {fixed}", varied.join(", ")),
         }
     }
@@ -603,20 +635,41 @@ mod tests {
 
     #[test]
     fn ranges_are_inclusive_and_rounded() {
-        assert_eq!(range_values("-45:-47:-0.5").unwrap(), vec![-45.0, -45.5, -46.0, -46.5, -47.0]);
-        assert_eq!(range_values("0.01:0.05:0.01").unwrap(), vec![0.01, 0.02, 0.03, 0.04, 0.05]);
+        assert_eq!(
+            range_values("-45:-47:-0.5").unwrap(),
+            vec![-45.0, -45.5, -46.0, -46.5, -47.0]
+        );
+        assert_eq!(
+            range_values("0.01:0.05:0.01").unwrap(),
+            vec![0.01, 0.02, 0.03, 0.04, 0.05]
+        );
         assert_eq!(range_values("1:2:0.3").unwrap(), vec![1.0, 1.3, 1.6, 1.9]);
         assert_eq!(range_values("5:5:1").unwrap(), vec![5.0]);
-        assert_eq!(range_values("1e-4:3e-4:1e-4").unwrap(), vec![1e-4, 2e-4, 3e-4]);
+        assert_eq!(
+            range_values("1e-4:3e-4:1e-4").unwrap(),
+            vec![1e-4, 2e-4, 3e-4]
+        );
     }
 
     #[test]
     fn malformed_ranges_say_why() {
         assert!(range_values("1:2:0").unwrap_err().contains("must not be 0"));
-        assert!(range_values("1:2:-1").unwrap_err().contains("never reaches"));
-        assert!(range_values("1:NaN:1").unwrap_err().contains("not a finite number"));
+        assert!(
+            range_values("1:2:-1")
+                .unwrap_err()
+                .contains("never reaches")
+        );
+        assert!(
+            range_values("1:NaN:1")
+                .unwrap_err()
+                .contains("not a finite number")
+        );
         assert!(range_values("1:2").unwrap_err().contains("three numbers"));
-        assert!(range_values("0:1e9:1e-3").unwrap_err().contains("more than"));
+        assert!(
+            range_values("0:1e9:1e-3")
+                .unwrap_err()
+                .contains("more than")
+        );
     }
 
     #[test]
@@ -634,7 +687,7 @@ mod tests {
     #[test]
     fn points_run_the_last_axis_fastest() {
         let spec = SweepSpec {
-            grid: Grid(vec![
+            grid: Grid::new(vec![
                 (Param::Alpha, Values::parse("1,2").unwrap()),
                 (Param::Gamma, Values::parse("0.1,0.2,0.3").unwrap()),
             ]),

@@ -7,8 +7,7 @@
 
 use super::observables::ArrivalDetector;
 use super::{
-    DivergenceWatch, IntegratorConfig, Rhs, Scenario, Stepping, Trajectory, check_every,
-    stop_times,
+    DivergenceWatch, IntegratorConfig, Rhs, Scenario, Stepping, Trajectory, check_every, stop_times,
 };
 use crate::error::Result;
 

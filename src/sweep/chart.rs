@@ -107,11 +107,17 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
     };
     let x_label = if fold { "|α| (°)" } else { param.label() };
     // One horizontal range for every panel, so that they line up.
-    let (x_lo, x_hi) = records.iter().map(x_of).fold(
-        (f64::INFINITY, f64::NEG_INFINITY),
-        |(a, b), v| (a.min(v), b.max(v)),
-    );
-    let pad = if x_hi > x_lo { 0.04 * (x_hi - x_lo) } else { 0.5 * x_lo.abs().max(1.0) };
+    let (x_lo, x_hi) = records
+        .iter()
+        .map(x_of)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    let pad = if x_hi > x_lo {
+        0.04 * (x_hi - x_lo)
+    } else {
+        0.5 * x_lo.abs().max(1.0)
+    };
     let x_range = (x_lo - pad, x_hi + pad);
     let x_axis = || Axis::new(x_label).range(x_range.0, x_range.1);
     let n_max = records
@@ -184,9 +190,15 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
         speed.series.clear();
         speed.title = Some("no run propagated far enough to measure a speed".into());
     }
-    let mut panels = vec![(line_chart(&front, WIDTH, 300)?, 300), (line_chart(&speed, WIDTH, 260)?, 260)];
+    let mut panels = vec![
+        (line_chart(&front, WIDTH, 300)?, 300),
+        (line_chart(&speed, WIDTH, 260)?, 260),
+    ];
     if param == Param::Alpha && plan.spec.charts.theory {
-        panels.push((theory_panel(plan, x_label, fold, Some((WIDTH, x_range)))?, 240));
+        panels.push((
+            theory_panel(plan, x_label, fold, Some((WIDTH, x_range)))?,
+            240,
+        ));
     }
     stack(&panels)
 }
@@ -228,9 +240,12 @@ fn theory_panel(
         .map(|p| p.1)
         .filter(|v| v.is_finite())
         .fold(0.0, f64::max);
-    let mut spec = ChartSpec::new(xa, Axis::new("linear theory").range(0.0, 1.45 * top.max(1e-3)))
-        .series(Series::line("gap ω₊(0) τ", gap, style::BLUE))
-        .series(Series::line("barrier ΔU / mgs (per pair)", barrier, style::RED).dashed());
+    let mut spec = ChartSpec::new(
+        xa,
+        Axis::new("linear theory").range(0.0, 1.45 * top.max(1e-3)),
+    )
+    .series(Series::line("gap ω₊(0) τ", gap, style::BLUE))
+    .series(Series::line("barrier ΔU / mgs (per pair)", barrier, style::RED).dashed());
     spec.legend = crate::render::charts::Legend::UpperMiddle;
     line_chart(&spec, width, 240)
 }
@@ -307,9 +322,9 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
     let main = cell_chart(&chart, WIDTH, 480)?;
     let mut panels = vec![(main, 480)];
     if px == Param::Alpha && plan.spec.charts.theory {
-        let even = xs.windows(2).all(|w| {
-            (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs())
-        });
+        let even = xs
+            .windows(2)
+            .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
         let range = if even && xs.len() > 1 {
             let h = 0.5 * (xs[1] - xs[0]);
             Some((WIDTH - 190, (xs[0] - h, xs[xs.len() - 1] + h)))

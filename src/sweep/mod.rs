@@ -189,8 +189,14 @@ pub fn outputs(plan: &Plan, records: &[Record], stem: &str) -> Result<Vec<(Strin
     if let Some(c) = chart {
         files.push((names[0].clone(), crate::encode::png_bytes(&c.pixmap)?));
     }
-    files.push((format!("{stem}.csv"), results::csv(plan, records).into_bytes()));
-    files.push((format!("{stem}.json"), results::json(plan, records, &names)?));
+    files.push((
+        format!("{stem}.csv"),
+        results::csv(plan, records).into_bytes(),
+    ));
+    files.push((
+        format!("{stem}.json"),
+        results::json(plan, records, &names)?,
+    ));
     Ok(files)
 }
 

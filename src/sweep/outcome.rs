@@ -232,7 +232,7 @@ mod tests {
             *slot = Some(t);
         }
         // At every moment before t_9 the rule has not fired.
-        for k in 0..=400 {
+        for k in 0..400 {
             let now = k as f64 * (t / 400.0);
             let seen: Vec<Option<f64>> = a.iter().map(|x| x.filter(|&v| v <= now)).collect();
             assert_eq!(rule().decide(&seen, now), None, "at t = {now}");
@@ -275,7 +275,10 @@ mod tests {
         assert_eq!(d.outcome, Outcome::Pinned);
         assert_eq!(d.t_decided, 6000.0);
         // A short quiet time is held up to the nominal window.
-        let short = Rule { quiet: 1.0, ..rule() };
+        let short = Rule {
+            quiet: 1.0,
+            ..rule()
+        };
         assert_eq!(short.decide(&a, 10_000.0).unwrap().t_decided, 4000.0);
     }
 
@@ -290,7 +293,10 @@ mod tests {
 
     #[test]
     fn undecided_at_the_cap() {
-        let r = Rule { cap: 5000.0, ..rule() };
+        let r = Rule {
+            cap: 5000.0,
+            ..rule()
+        };
         let a = arr(&[Some(500.0), Some(943.0), None, None, None]);
         assert_eq!(r.decide(&a, 4999.0), None);
         let d = r.decide(&a, 5000.0).unwrap();
@@ -300,7 +306,14 @@ mod tests {
 
     #[test]
     fn front_speed_and_counts() {
-        let a = arr(&[Some(500.0), Some(900.0), Some(1000.0), Some(1100.0), Some(1200.0), None]);
+        let a = arr(&[
+            Some(500.0),
+            Some(900.0),
+            Some(1000.0),
+            Some(1100.0),
+            Some(1200.0),
+            None,
+        ]);
         assert_eq!(front(&a), 5);
         assert_eq!(blocks_flipped(&a), 5);
         // Blocks 3, 4, 5 one per 100 τ.

@@ -42,7 +42,8 @@ pub fn csv(plan: &Plan, records: &[Record]) -> String {
             res.outcome,
             res.blocks_flipped,
             res.front,
-            res.speed.map_or(String::new(), |v| format!("{}", sig(v, 6))),
+            res.speed
+                .map_or(String::new(), |v| format!("{}", sig(v, 6))),
             res.t_decided
                 .map_or(String::new(), |t| format!("{}", sig(t, 9)))
         );
@@ -64,7 +65,12 @@ pub fn sig(x: f64, digits: usize) -> f64 {
 pub fn counts(records: &[Record]) -> Vec<(Outcome, usize)> {
     Outcome::ALL
         .iter()
-        .map(|o| (*o, records.iter().filter(|r| r.result.outcome == *o).count()))
+        .map(|o| {
+            (
+                *o,
+                records.iter().filter(|r| r.result.outcome == *o).count(),
+            )
+        })
         .filter(|(_, c)| *c > 0)
         .collect()
 }
