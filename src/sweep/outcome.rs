@@ -1,16 +1,21 @@
 //! What the wave of one run did, decided from its arrival times alone
 //! (SPEC section 7; the rule is documented in docs/sweeps.md).
 //!
-//! - **propagated**: block N − 1 flipped (the free bottom block N is left
-//!   out: it turns its own way). Decided at t_{N−1}.
+//! - **propagated**: the wave's front reached block N − 1: blocks 1 to
+//!   N − 1 have all flipped (the free bottom block N is left out: it turns
+//!   its own way). Decided when the last of them flipped.
 //! - otherwise the wave has **stopped** once it has not moved (no new
 //!   arrival) for `quiet` times its longest inter-arrival gap, counted
 //!   from its last arrival or from the end of the drive, whichever is
 //!   later, and not before the scene's nominal t_end. The gaps are those
 //!   of the sorted arrival times, the first counted from the start of the
 //!   first flip (so a wave that only ever moved with the drive waits
-//!   `quiet` × t_1). A stopped wave is **pinned** if no block past block 2
-//!   ever flipped, **stalled** otherwise.
+//!   `quiet` × t_1). A stopped wave is **pinned** if its front never got
+//!   past block 2, **stalled** otherwise. The front is the last block n
+//!   such that blocks 1..=n have all flipped: a block that flips on its
+//!   own ahead of the wave (the free end of a kink's chain at α ≤ 46° does,
+//!   within a few hundred τ) counts as motion but not as the wave's
+//!   progress; `blocks_flipped` > `front` shows it.
 //! - a run that reaches the cap without either is **undecided**; one whose
 //!   integration blew up is **diverged** (decided by the run loop).
 //!
@@ -26,11 +31,11 @@ use std::fmt;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Outcome {
-    /// The wave reached block N − 1.
+    /// The wave's front reached block N − 1.
     Propagated,
-    /// The wave stopped in the bulk, past block 2.
+    /// The wave stopped in the bulk, its front past block 2.
     Stalled,
-    /// No block past block 2 ever flipped.
+    /// The wave's front never got past block 2.
     Pinned,
     /// The integration blew up.
     Diverged,
@@ -98,8 +103,14 @@ impl Rule {
     /// `t` is before the cap. Arrivals later than `t` are ignored.
     pub fn decide(&self, arrivals: &[Option<f64>], t: f64) -> Option<Decision> {
         let n = arrivals.len();
+        // The front reached block N − 1 when the last of blocks 1..N−1 flipped.
+        let reached = arrivals[..n.saturating_sub(1)]
+            .iter()
+            .try_fold(f64::NEG_INFINITY, |m, a| {
+                a.filter(|&a| a <= t).map(|a| m.max(a))
+            });
         if n >= 2
-            && let Some(t_prop) = arrivals[n - 2].filter(|&a| a <= t)
+            && let Some(t_prop) = reached
         {
             // The wave may have stopped before it got there.
             if let Some(d) = self.stopped_before(arrivals, t_prop) {
@@ -130,12 +141,13 @@ impl Rule {
         times.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         let mut last = self.drive_start;
         let mut longest_gap: f64 = 0.0;
-        let mut past_two = false;
+        let mut flipped = vec![false; arrivals.len()];
         // Before the k-th arrival (k = 0..=len): the history so far.
         for k in 0..=times.len() {
             let stop_at = self.quiet_end(last, longest_gap);
             let next = times.get(k).map_or(f64::INFINITY, |a| a.0);
             if stop_at < next && stop_at <= t && stop_at <= self.cap {
+                let past_two = flipped.iter().take_while(|f| **f).count() > 2;
                 return Some(Decision {
                     outcome: if past_two {
                         Outcome::Stalled
@@ -148,7 +160,7 @@ impl Rule {
             if let Some(&(a, block)) = times.get(k) {
                 longest_gap = longest_gap.max(a - last);
                 last = last.max(a);
-                past_two |= block >= 2;
+                flipped[block] = true;
             }
         }
         None
@@ -289,6 +301,23 @@ mod tests {
         let a = arr(&[Some(500.0), Some(943.0), Some(6002.0), Some(6003.0), None]);
         let d = rule().decide(&a, 6005.0).unwrap();
         assert_eq!(d.outcome, Outcome::Pinned);
+    }
+
+    #[test]
+    fn a_block_flipping_ahead_of_the_wave_is_not_propagation() {
+        // Block 4 of 5 (N − 1) flips on its own at 200 τ, before the wave.
+        let a = arr(&[Some(500.0), Some(900.0), None, Some(200.0), None]);
+        assert_eq!(rule().decide(&a, 1000.0), None);
+        let b = arr(&[Some(500.0), Some(900.0), Some(1300.0), Some(200.0), None]);
+        let d = rule().decide(&b, 1300.0).unwrap();
+        assert_eq!(d.outcome, Outcome::Propagated);
+        assert_eq!(d.t_decided, 1300.0);
+        // Held at block 2 with a stray flip far ahead: pinned.
+        let c = arr(&[Some(500.0), Some(900.0), None, Some(200.0), None]);
+        assert_eq!(
+            rule().decide(&c, 50_000.0).unwrap().outcome,
+            Outcome::Pinned
+        );
     }
 
     #[test]
