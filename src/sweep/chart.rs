@@ -147,12 +147,15 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
         Axis::new("front: last block reached").range(-0.3, n_max as f64 + 0.6),
     )
     .title(title);
-    for (wave, marker, keep) in &waves {
+    // Kinks drawn a little above, antikinks a little below their front,
+    // so that neither hides the other.
+    let offsets = if fold { [0.18, -0.18] } else { [0.0, 0.0] };
+    for ((wave, marker, keep), dy) in waves.iter().zip(offsets) {
         for o in Outcome::ALL {
             let pts: Vec<(f64, f64)> = records
                 .iter()
                 .filter(|r| keep(r) && r.result.outcome == o)
-                .map(|r| (x_of(r), r.result.front as f64))
+                .map(|r| (x_of(r), r.result.front as f64 + dy))
                 .collect();
             if pts.is_empty() {
                 continue;
@@ -165,12 +168,12 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
             front = front.series(Series::scatter(label, pts, outcome_color(o), *marker));
         }
     }
-    let mut speed = ChartSpec::new(x_axis(), Axis::new("speed (10⁻³ blocks/τ)"));
+    let mut speed = ChartSpec::new(x_axis(), Axis::new("speed (blocks/τ)").log());
     for (i, (wave, marker, keep)) in waves.iter().enumerate() {
         let mut pts: Vec<(f64, f64)> = records
             .iter()
             .filter(|r| keep(r))
-            .map(|r| (x_of(r), r.result.speed.map_or(f64::NAN, |v| 1e3 * v)))
+            .map(|r| (x_of(r), r.result.speed.unwrap_or(f64::NAN)))
             .collect();
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
         let color = style::series_color(if fold { 2 * i + 1 } else { 2 });
@@ -186,7 +189,7 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
         .iter()
         .all(|s| s.points.iter().all(|p| !p.1.is_finite()))
     {
-        speed.y = speed.y.range(0.0, 1.0);
+        speed.y = speed.y.range(1e-4, 1.0);
         speed.series.clear();
         speed.title = Some("no run propagated far enough to measure a speed".into());
     }
