@@ -476,3 +476,31 @@ fn the_slurm_array_script_runs_its_shard() {
     );
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// The supplement's 3D-printed linkage model (a = 7 cm, b = 6 cm, s = 5 cm,
+/// 8 blocks, α ≈ 69°): the paper says the antikink "stops halfway". In the
+/// model of SPEC §1 it reaches block N − 1, at the paper's γ and G, with
+/// little damping and with a stiffer chain (docs/paper-errata.md).
+#[test]
+fn the_printed_linkage_model_does_not_stop_halfway() {
+    let (b, a) = (6.0 / 5.0, 7.0 / 5.0);
+    let alpha = ((a * a - b * b) as f64).sqrt() / 2.0;
+    let alpha = alpha.acos().to_degrees();
+    assert!((alpha - 68.87).abs() < 0.01, "{alpha}");
+    for (gamma, gravity) in [(0.02, 2e-4), (0.005, 2e-4), (0.02, 5e-5), (0.16, 8e-4)] {
+        for sign in [-1.0, 1.0] {
+            let (mut s, spec) = scene_at(sign * alpha);
+            s.model.n = 8;
+            s.model.b = b;
+            s.model.gamma = gamma;
+            s.model.gravity = gravity;
+            let r = run_point(&s, &spec).unwrap();
+            assert_eq!(
+                (r.outcome, r.front),
+                (Outcome::Propagated, 7),
+                "α = {}, γ = {gamma}, G = {gravity}: {r:?}",
+                sign * alpha
+            );
+        }
+    }
+}
