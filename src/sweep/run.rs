@@ -149,10 +149,23 @@ fn diverged(scenario: &Scenario, config: &IntegratorConfig, msg: String, evals: 
     }
 }
 
-/// `auto`: velocity Verlet from the step ω_max allows, halved until two
-/// successive runs agree (`sim::auto`'s rule, with the stop rule).
+/// Largest first step of a sweep's `auto`, τ: twice a single scene's
+/// (`IntegratorConfig::auto`), since the check at half of it guards the
+/// result; the returned run is at ≤ 0.25 τ, verified against 0.5 τ.
+pub const SWEEP_AUTO_DT: f64 = 0.5;
+/// Fraction of the stability bound 2/ω_max the first step may reach.
+pub const SWEEP_AUTO_STABILITY_FRACTION: f64 = 0.8;
+
+/// `auto`: velocity Verlet from [`SWEEP_AUTO_DT`] (or less, as ω_max
+/// allows), halved until two successive runs agree (`sim::auto`'s rule,
+/// with the stop rule).
 fn verified(scenario: &Scenario, omega_max: f64, tolerance: f64, rule: &Rule) -> Result<RunResult> {
-    let mut dt = IntegratorConfig::auto(omega_max).dt;
+    let bound = SWEEP_AUTO_STABILITY_FRACTION * 2.0 / omega_max;
+    let mut dt = if bound.is_finite() && bound > 0.0 {
+        SWEEP_AUTO_DT.min(bound)
+    } else {
+        IntegratorConfig::auto(omega_max).dt
+    };
     let mut total = 0;
     let mut last_error = String::new();
     let mut coarse = match until_decided(scenario, &verlet(dt), rule)? {
