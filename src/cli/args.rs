@@ -271,6 +271,10 @@ pub struct RenderArgs {
     /// Scene files (TOML)
     #[arg(required = true, value_name = "FILE")]
     pub files: Vec<PathBuf>,
+    /// Only read and check the files, print what each would make, and
+    /// write nothing
+    #[arg(long)]
+    pub check: bool,
     #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]

@@ -109,6 +109,20 @@ pub fn run(cli: Cli) -> Result<()> {
                 .iter()
                 .map(|f| scene::file::load(f))
                 .collect::<Result<Vec<_>>>()?;
+            if args.check {
+                for (file, s) in args.files.iter().zip(&scenes) {
+                    println!(
+                        "{}: {} {} ({} run{}): {}",
+                        file.display(),
+                        s.kind().name(),
+                        s.name,
+                        s.runs().len(),
+                        if s.runs().len() == 1 { "" } else { "s" },
+                        scene::describe::parameters(s)
+                    );
+                }
+                return Ok(());
+            }
             render_into(&scenes, &args.out.out, &opts, false)
         }
         Command::All(args) => {
@@ -262,7 +276,12 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         crate::output::check_writable(path)?;
     }
     let start = Instant::now();
-    let result = scenes::run::simulate_with(&scene, &samples, stepping)?;
+    let bar = time_bar(scene.run.t_end);
+    let result = scenes::run::simulate_with(&scene, &samples, stepping, &|t| {
+        bar.set_position(bar.position().max(t as u64));
+    });
+    bar.finish_and_clear();
+    let result = result?;
     let wall_seconds = start.elapsed().as_secs_f64();
     let traj = &result.trajectory;
     if let Some(path) = &args.csv {
@@ -458,6 +477,23 @@ fn ticker(bar: &indicatif::ProgressBar) -> impl Fn(&str) + Sync + '_ {
     }
 }
 
+/// A progress bar over simulated time, shown only for a run long enough
+/// to wait for (over 10^5 τ of simulated time) and only on a terminal.
+fn time_bar(t_end: f64) -> indicatif::ProgressBar {
+    if t_end < 1e5 {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new(t_end as u64);
+    let style = indicatif::ProgressStyle::with_template(
+        "simulating [{bar:30}] t/τ = {pos}/{len} {elapsed} (eta {eta})",
+    )
+    .map(|s| s.progress_chars("=> "));
+    if let Ok(style) = style {
+        bar.set_style(style);
+    }
+    bar
+}
+
 fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(len);
     let style =
@@ -489,16 +525,29 @@ fn render_into(scenes: &[Scene], out: &Path, movie: &MovieOptions, index: bool) 
     use rayon::prelude::*;
     crate::output::check_writable(&out.join("index.html"))?;
     let start = Instant::now();
-    let bar = progress_bar(scenes.len() as u64, "rendering");
+    // One movie: a bar over its frames; several scenes: over the scenes.
+    let one_movie = scenes.len() == 1 && scenes[0].kind() == Kind::Movie;
+    let bar = if one_movie {
+        progress_bar(movie.frames as u64, &format!("movie {}", scenes[0].name))
+    } else {
+        progress_bar(scenes.len() as u64, "rendering")
+    };
+    let frame_done = || {
+        if one_movie {
+            bar.inc(1);
+        }
+    };
     let written: Vec<Vec<String>> = scenes
         .par_iter()
         .map(|s| {
-            let files = scenes::render(s, movie)?;
+            let files = scenes::render_observed(s, movie, &frame_done)?;
             for (name, bytes) in &files {
                 crate::output::write_atomic(&out.join(name), bytes)?;
             }
-            bar.set_message(format!("{} {}", s.kind().name(), s.name));
-            bar.inc(1);
+            if !one_movie {
+                bar.set_message(format!("{} {}", s.kind().name(), s.name));
+                bar.inc(1);
+            }
             Ok(files.into_iter().map(|(name, _)| name).collect())
         })
         .collect::<Result<_>>()?;

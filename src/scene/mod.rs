@@ -383,8 +383,10 @@ pub enum OutputSpec {
     /// A GIF of the ladder beside its live kymograph, plus the kymograph
     /// PNG (`movie-NAME.gif`, `movie-NAME-kymograph.png`).
     Movie {
-        /// `fixed` (one window that fits every frame) or `follow` (moves
-        /// with the kink, movie 3). Default fixed.
+        /// `auto` (default: `fixed` when the whole ladder fits the frame
+        /// with blocks large enough to see, otherwise `follow`), `fixed`
+        /// (one window that fits every frame) or `follow` (a window that
+        /// moves with the kink, movie 3).
         #[serde(default)]
         camera: Camera,
     },
@@ -423,7 +425,7 @@ pub enum OutputSpec {
 impl Default for OutputSpec {
     fn default() -> Self {
         Self::Movie {
-            camera: Camera::Fixed,
+            camera: Camera::Auto,
         }
     }
 }
@@ -432,7 +434,11 @@ impl Default for OutputSpec {
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Camera {
+    /// Fixed when the whole ladder fits with blocks of at least
+    /// [`MIN_BLOCK_PIXELS`], following the kink otherwise.
     #[default]
+    Auto,
+    /// One window that fits every frame.
     Fixed,
     /// A window that moves with the kink (movie 3).
     Follow,
@@ -567,6 +573,10 @@ impl Kind {
         }
     }
 }
+
+/// Smallest length, in pixels, of a block (s) in a movie frame before an
+/// `auto` camera follows the kink instead of showing the whole ladder.
+pub const MIN_BLOCK_PIXELS: f64 = 14.0;
 
 /// Largest number of flips of block 1.
 pub const MAX_FLIPS: usize = 1000;

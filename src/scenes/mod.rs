@@ -46,6 +46,16 @@ pub fn file_names(scene: &Scene) -> Vec<String> {
 
 /// The files of one scene, as (file name, bytes), in [`file_names`] order.
 pub fn render(scene: &Scene, movie: &MovieOptions) -> Result<Vec<(String, Vec<u8>)>> {
+    render_observed(scene, movie, &|| {})
+}
+
+/// As [`render`], calling `frame_done` after each movie frame (for a
+/// progress bar).
+pub fn render_observed(
+    scene: &Scene,
+    movie: &MovieOptions,
+    frame_done: &(dyn Fn() + Sync),
+) -> Result<Vec<(String, Vec<u8>)>> {
     if let OutputSpec::Sweep(_) = scene.output {
         // Its own data file: the sweep's JSON (crate::sweep::results).
         return crate::sweep::render(scene);
@@ -71,7 +81,7 @@ pub fn render(scene: &Scene, movie: &MovieOptions) -> Result<Vec<(String, Vec<u8
             (vec![png_bytes(&image)?], vec![run])
         }
         OutputSpec::Movie { .. } => {
-            let (gif, kymo, run) = dynamic::movie(scene, movie)?;
+            let (gif, kymo, run) = dynamic::movie_observed(scene, movie, frame_done)?;
             (vec![gif, kymo], vec![run])
         }
         OutputSpec::Data => {

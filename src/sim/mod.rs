@@ -164,6 +164,18 @@ pub fn simulate_with(
     config: &IntegratorConfig,
     stepping: Stepping,
 ) -> Result<Trajectory> {
+    simulate_observed(scenario, sample_times, config, stepping, &|_| {})
+}
+
+/// As [`simulate_with`], telling `progress` the simulated time at every
+/// divergence check (every 5 τ, or 512 steps at most): for a progress bar.
+pub fn simulate_observed(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<Trajectory> {
     let config = config.validated()?;
     let samples = sorted_samples(sample_times, scenario.t_end)?;
     let stops = stop_times(&samples, &scenario.protocol, scenario.t_end);
@@ -197,6 +209,7 @@ pub fn simulate_with(
             traj.steps += taken;
             if traj.steps.is_multiple_of(check_every) {
                 watch.check(&rhs, &st, t)?;
+                progress(t);
             }
         }
         watch.check(&rhs, &st, t)?;
