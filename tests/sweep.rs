@@ -483,9 +483,8 @@ fn the_slurm_array_script_runs_its_shard() {
 /// little damping and with a stiffer chain (docs/paper-errata.md).
 #[test]
 fn the_printed_linkage_model_does_not_stop_halfway() {
-    let (b, a) = (6.0 / 5.0, 7.0 / 5.0);
-    let alpha = ((a * a - b * b) as f64).sqrt() / 2.0;
-    let alpha = alpha.acos().to_degrees();
+    let (b, a): (f64, f64) = (6.0 / 5.0, 7.0 / 5.0);
+    let alpha = ((a * a - b * b).sqrt() / 2.0).acos().to_degrees();
     assert!((alpha - 68.87).abs() < 0.01, "{alpha}");
     for (gamma, gravity) in [(0.02, 2e-4), (0.005, 2e-4), (0.02, 5e-5), (0.16, 8e-4)] {
         for sign in [-1.0, 1.0] {

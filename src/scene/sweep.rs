@@ -442,12 +442,15 @@ pub const MAX_CAP: f64 = 1e8;
 /// Default largest number of runs of one sweep.
 pub const DEFAULT_MAX_RUNS: usize = 100_000;
 
+/// An axis with its values.
+pub type Axis = (Param, Vec<f64>);
+
 /// One point of the grid: a value of each axis, in the axes' order.
 pub type Point = Vec<f64>;
 
 impl SweepSpec {
     /// Each axis with its values.
-    pub fn axes(&self) -> Result<Vec<(Param, Vec<f64>)>, (String, String)> {
+    pub fn axes(&self) -> Result<Vec<Axis>, (String, String)> {
         let mut seen = Vec::new();
         self.grid
             .0

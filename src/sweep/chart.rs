@@ -99,6 +99,9 @@ fn x_axis(plan: &Plan) -> (Param, usize, bool) {
     (p, k, fold)
 }
 
+/// A wave drawn as its own series: name, marker, which records.
+type Wave<'a> = (&'static str, Marker, Box<dyn Fn(&Record) -> bool + 'a>);
+
 fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
     let (param, k, fold) = x_axis(plan);
     let x_of = |r: &Record| {
@@ -126,7 +129,7 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
         .max()
         .unwrap_or(plan.scene.model.n);
     // Which waves: kinks and antikinks apart when folded.
-    let waves: Vec<(&str, Marker, Box<dyn Fn(&Record) -> bool>)> = if fold {
+    let waves: Vec<Wave> = if fold {
         vec![
             (
                 "kink",
