@@ -171,12 +171,26 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
             front = front.series(Series::scatter(label, pts, outcome_color(o), *marker));
         }
     }
-    let mut speed = ChartSpec::new(x_axis(), Axis::new("speed (blocks/τ)").log());
+    // A log axis when the speeds span more than a decade (near 90° the
+    // whole chain flips at once), else linear, so that ticks show.
+    let (s_lo, s_hi) = records
+        .iter()
+        .filter_map(|r| r.result.speed)
+        .fold((f64::INFINITY, 0.0f64), |(a, b), v| (a.min(v), b.max(v)));
+    let log = s_hi > 10.0 * s_lo;
+    // Linear speeds in 10⁻³ blocks/τ, so that tick labels stay short.
+    let unit = if log { 1.0 } else { 1e3 };
+    let speed_axis = if log {
+        Axis::new("speed (blocks/τ)").log()
+    } else {
+        Axis::new("speed (10⁻³ blocks/τ)")
+    };
+    let mut speed = ChartSpec::new(x_axis(), speed_axis);
     for (i, (wave, marker, keep)) in waves.iter().enumerate() {
         let mut pts: Vec<(f64, f64)> = records
             .iter()
             .filter(|r| keep(r))
-            .map(|r| (x_of(r), r.result.speed.unwrap_or(f64::NAN)))
+            .map(|r| (x_of(r), r.result.speed.map_or(f64::NAN, |v| unit * v)))
             .collect();
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
         let color = style::series_color(if fold { 2 * i + 1 } else { 2 });
