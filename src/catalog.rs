@@ -32,6 +32,18 @@ pub const FILES: &[(&str, &str)] = &[
         "figure-barrier",
         include_str!("../assets/scenes/figure-barrier.toml"),
     ),
+    (
+        "figure-pinning",
+        include_str!("../assets/scenes/figure-pinning.toml"),
+    ),
+    (
+        "figure-phase",
+        include_str!("../assets/scenes/figure-phase.toml"),
+    ),
+    (
+        "figure-chain-length",
+        include_str!("../assets/scenes/figure-chain-length.toml"),
+    ),
     ("movie-3", include_str!("../assets/scenes/movie-3.toml")),
     ("movie-4", include_str!("../assets/scenes/movie-4.toml")),
     ("movie-5", include_str!("../assets/scenes/movie-5.toml")),
@@ -296,10 +308,12 @@ pub fn absent_summary() -> Result<String> {
 
 /// `ladder list`: one line per entry.
 pub fn listing() -> Result<String> {
+    let all = catalogue()?;
+    let width = all.iter().map(|e| e.id.chars().count()).max().unwrap_or(0);
     let mut s = String::new();
-    for e in catalogue()? {
+    for e in all {
         s.push_str(&format!(
-            "{:<6} {:<9} {:<14} {}\n",
+            "{:<6} {:<width$} {:<14} {}\n",
             e.kind().name(),
             e.id,
             e.scene.fidelity().name(),

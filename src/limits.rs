@@ -15,10 +15,10 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::sync::RwLock;
 
-/// Largest number of blocks N of a simulation. Memory is about 1 kB per
-/// block (state, forces, scratch), and `--integrator auto` finds ω_max by
-/// Lanczos in O(N) per iteration, so N = 100,000 takes ~100 MB and a few
-/// seconds per thousand steps.
+/// Largest number of blocks N of a simulation. Memory is about 0.4 kB per
+/// block (state, forces, scratch), and `--integrator auto` finds ω_max from
+/// the band Hessian in O(N), so N = 100,000 takes ~44 MB and about 4 s per
+/// thousand steps.
 pub const MAX_BLOCKS: usize = 100_000;
 
 /// Largest N of the linear theory (`ladder theory`): its dense SVDs and
@@ -56,8 +56,9 @@ pub const MAX_STEPS_PER_ULP_SPAN: f64 = 1.0 / (1000.0 * f64::EPSILON);
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct Limits {
-    /// Steps × N of one simulation (block-steps). Default 1e10: about 2
-    /// minutes of symplectic Euler (~10 ns per block-step). The paper's run
+    /// Steps × N of one simulation (block-steps). Default 1e10: a few
+    /// minutes (26 ns per block-step at N = 1000, 42 ns at N = 100,000;
+    /// docs/limits.md). The paper's run
     /// is 4 × 10^6; N = 1000 for 2 × 10^5 steps is 2 × 10^8; N = 100,000
     /// for 5000 steps is 5 × 10^8.
     pub block_steps: f64,
@@ -66,7 +67,8 @@ pub struct Limits {
     /// 5e7: 2.4 GB in memory. A 1000-frame movie of N = 10,000 is 10^7.
     pub block_samples: f64,
     /// Frames × width × height of one movie. Default 5e9: a 1920 × 1080
-    /// movie of 1000 frames is 2.1 × 10^9 (a few minutes of drawing).
+    /// movie of 1000 frames is 2.1 × 10^9 (about 30 s of drawing at
+    /// ~14 ns per pixel).
     pub movie_pixels: f64,
     /// Runs of one sweep. Default 10^5: a 10,000-run sweep passes.
     pub sweep_runs: f64,

@@ -140,9 +140,33 @@ fn every_kernel_gives_the_portable_trajectory() {
         assert!(k.same_as_portable, "{}", k.kernel);
         assert!(k.median_ms > 0.0 && k.speedup.is_finite(), "{k:?}");
     }
+    // The sweep (batch kernel) and the chain (chain kernel), each way.
+    let sweep: Vec<_> = report
+        .sweep
+        .kernels
+        .iter()
+        .map(|k| k.kernel.as_str())
+        .collect();
+    assert!(
+        sweep.starts_with(&["portable", "one-by-one", "batch"]),
+        "{sweep:?}"
+    );
+    assert_eq!(report.sweep.runs, bench::kernels::SWEEP_RUNS);
+    assert_eq!(report.chain.n, bench::kernels::CHAIN_N);
+    for w in [&report.sweep, &report.chain] {
+        assert!(w.block_steps > 0);
+        for k in &w.kernels {
+            assert!(k.same_as_portable, "{}: {}", w.what, k.kernel);
+            assert!(k.ns_per_block_step > 0.0 && k.speedup.is_finite(), "{k:?}");
+        }
+    }
     let table = bench::kernels_table(&report);
     assert!(
         table.contains("bit for bit") && !table.contains("NO"),
+        "{table}"
+    );
+    assert!(
+        table.contains("a sweep") && table.contains("a long chain"),
         "{table}"
     );
 }

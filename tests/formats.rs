@@ -29,8 +29,10 @@ fn figures() -> &'static [(String, Picture)] {
     static ALL: OnceLock<Vec<(String, Picture)>> = OnceLock::new();
     ALL.get_or_init(|| {
         let entries = catalog::entries(scene::Kind::Figure).unwrap();
+        // The sweep figures are charts of a sweep's results, PNG only.
         let all: Vec<(String, Picture)> = entries
             .iter()
+            .filter(|e| !matches!(e.scene.output, scene::OutputSpec::Sweep(_)))
             .map(|e| {
                 let (p, _) = scenes::figure_picture(&e.scene)
                     .unwrap_or_else(|err| panic!("{}: {err}", e.id));

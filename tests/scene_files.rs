@@ -82,7 +82,7 @@ const BAD_FILES: &[(&str, &str)] = &[
     ("[model]\nn = \"ten\"\n", ":2:5: model.n: invalid type"),
     (
         "[model]\nb = -1.3\n",
-        ":2:5: model.b: must be a finite length > 0",
+        ":2:5: model.b: must be a length from 1e-3 to 1e3, got -1.3",
     ),
     (
         "[drive]\nflips = [{ start = 0, duration = 1000 }, { start = 500, duration = 1000 }]\n",

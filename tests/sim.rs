@@ -367,6 +367,48 @@ fn fused_stepper_matches_the_portable_path_bit_for_bit() {
 }
 
 #[test]
+fn chain_stepper_matches_the_portable_path_bit_for_bit() {
+    let Some(kernels) = fused_kernels("chain_stepper_matches_the_portable_path_bit_for_bit") else {
+        return;
+    };
+    // N > 32: one to many vectors, every remainder of the last vector,
+    // both signs of α, a kink that arrives inside the run.
+    for (n, alpha) in [
+        (33, 60.0),
+        (34, -60.0),
+        (39, 86.0),
+        (40, 60.0),
+        (47, -50.0),
+        (64, 60.0),
+        (100, -86.0),
+        (257, 60.0),
+        (1000, 60.0),
+    ] {
+        let params = Params::paper(alpha).unwrap().with(n, 1.3, alpha).unwrap();
+        let scenario = Scenario::single_flip(params, 100.0, 300.0).unwrap();
+        let samples: Vec<f64> = (0..=30).map(|k| 10.0 * k as f64).collect();
+        assert_fused_matches_portable(
+            &kernels,
+            &scenario,
+            &samples,
+            &format!("N = {n}, α = {alpha}"),
+        );
+    }
+    let params = Params::paper(60.0).unwrap().with(50, 1.3, 60.0).unwrap();
+    let drive = Drive::two_flips(params.alpha, 50.0, 120.0).unwrap();
+    let two = Scenario::with_drive(params, drive, 300.0).unwrap();
+    assert_fused_matches_portable(&kernels, &two, &[33.3, 120.0, 299.99], "N = 50, two flips");
+    let mut rng = Lcg(9);
+    let mut free = Scenario::single_flip(params, 100.0, 50.0).unwrap();
+    free.protocol = Protocol::Free;
+    free.initial = State {
+        q: perturbed(&free.initial.q, &mut rng, 0.05),
+        v: perturbed(&vec![0.0; free.initial.v.len()], &mut rng, 0.02),
+    };
+    assert_fused_matches_portable(&kernels, &free, &[1.0, 25.0], "N = 50, free ladder");
+}
+
+#[test]
 fn fused_stepper_matches_with_two_flips_and_without_a_drive() {
     let Some(kernels) = fused_kernels("fused_stepper_matches_with_two_flips_and_without_a_drive")
     else {
@@ -392,19 +434,26 @@ fn fused_stepper_reports_the_same_divergence() {
     let Some(kernels) = fused_kernels("fused_stepper_reports_the_same_divergence") else {
         return;
     };
-    // Symplectic Euler far beyond its stability bound (2/ω_max ≈ 0.79).
-    let params = Params::paper(60.0).unwrap();
-    let scenario = Scenario::single_flip(params, 1000.0, 4000.0).unwrap();
-    let config = IntegratorConfig::fixed(IntegratorKind::SymplecticEuler, 1.5);
-    let portable = sim::simulate_with(&scenario, &[], &config, Stepping::Portable).unwrap_err();
-    for &stepping in &kernels {
-        let fused = sim::simulate_with(&scenario, &[], &config, stepping).unwrap_err();
-        assert_eq!(fused.to_string(), portable.to_string(), "{stepping:?}");
+    // Symplectic Euler far beyond its stability bound (2/ω_max ≈ 0.79),
+    // in registers (N = 10) and along a chain (N = 70).
+    for n in [10, 70] {
+        let params = Params::paper(60.0).unwrap().with(n, 1.3, 60.0).unwrap();
+        let scenario = Scenario::single_flip(params, 1000.0, 4000.0).unwrap();
+        let config = IntegratorConfig::fixed(IntegratorKind::SymplecticEuler, 1.5);
+        let portable = sim::simulate_with(&scenario, &[], &config, Stepping::Portable).unwrap_err();
+        for &stepping in &kernels {
+            let fused = sim::simulate_with(&scenario, &[], &config, stepping).unwrap_err();
+            assert_eq!(
+                fused.to_string(),
+                portable.to_string(),
+                "N = {n}, {stepping:?}"
+            );
+        }
+        assert!(
+            portable.to_string().contains("diverged at t = "),
+            "{portable}"
+        );
     }
-    assert!(
-        portable.to_string().contains("diverged at t = "),
-        "{portable}"
-    );
 }
 
 /// Near α = 90° whole groups of blocks turn the other way round, through

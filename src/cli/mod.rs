@@ -5,6 +5,7 @@
 
 pub mod args;
 pub mod convert;
+pub mod sweep;
 
 pub use args::*;
 
@@ -45,10 +46,7 @@ fn report_error(e: &Error) -> i32 {
         Error::Limit(limit) => format!("ladder: {limit}; {}\n", limit_hint(limit)),
         _ => format!("ladder: {e}\n"),
     };
-    match output::eprint(&line) {
-        Ok(()) | Err(Error::Closed) => e.exit_code(),
-        Err(_) => 1,
-    }
+    exit_after(output::eprint(&line), e.exit_code())
 }
 
 /// How to get past a cap: ask for less, or raise it with its flag.
@@ -105,10 +103,9 @@ impl LimitArgs {
 fn clap_exit(e: clap::Error) -> i32 {
     use clap::error::ErrorKind;
     match e.kind() {
-        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match output::print(&e.to_string()) {
-            Ok(()) | Err(Error::Closed) => 0,
-            Err(_) => 1,
-        },
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            exit_after(output::print(&e.to_string()), 0)
+        }
         ErrorKind::MissingRequiredArgument
         | ErrorKind::MissingSubcommand
         | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
@@ -122,7 +119,8 @@ fn clap_exit(e: clap::Error) -> i32 {
     }
 }
 
-/// `code`, or 1 if the message could not be written.
+/// `code`, or 1 if the message could not be written (a closed pipe is
+/// not a failure).
 fn exit_after(written: Result<()>, code: i32) -> i32 {
     match written {
         Ok(()) | Err(Error::Closed) => code,
@@ -150,6 +148,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Simulate(args) => simulate(&args),
         Command::Bench(args) => bench(&args),
         Command::Theory(args) => theory(&args),
+        Command::Sweep(args) => sweep::sweep(&args),
         Command::List => output::print(&catalog::listing()?),
         Command::Scene(args) => {
             let entry = catalog::find_any(&args.id)?;

@@ -57,6 +57,7 @@ pub fn generated_title(scene: &Scene) -> String {
         } => format!("{t}, camera following the kink"),
         OutputSpec::Arrivals { .. } => format!("arrival times, {t}"),
         OutputSpec::Kymograph => format!("{t}: sin θₙ"),
+        OutputSpec::Sweep(sw) => sw.title(m),
         _ => t,
     }
 }
@@ -116,6 +117,14 @@ pub fn parameters(scene: &Scene) -> String {
             }
             s
         }
+        OutputSpec::Sweep(sw) => format!(
+            "{}; {}; window {} τ, continued until decided (at most {} τ); grid: {}",
+            model(&scene.model),
+            drive(&scene.drive),
+            num(scene.run.t_end),
+            num(sw.cap),
+            sw.describe_grid()
+        ),
         _ => {
             let runs = scene.runs();
             let base = format!(
@@ -218,6 +227,10 @@ pub fn picture(scene: &Scene) -> String {
             }
         ),
         OutputSpec::Data => "No picture: the run's numbers only".into(),
+        OutputSpec::Sweep(sw) => format!(
+            "Chart of the outcome of every run of a sweep over {}",
+            sw.describe_grid()
+        ),
         OutputSpec::Theory(t) => match t.figure {
             TheoryFigure::UnitSchematic => "Drawing of two blocks of length s joined by an A \
                                             link (a) and a B link (b), with θ, Δx and Δy marked"

@@ -12,6 +12,7 @@
 
 pub mod describe;
 pub mod file;
+pub mod sweep;
 
 use crate::error::{Error, Result};
 use crate::model::Params;
@@ -251,6 +252,20 @@ impl DriveSpec {
                     format!("duration must be a finite time > 0, got {}", f.duration),
                 ));
             }
+            // The end must be a finite time after the start in floating
+            // point too (start + duration can round to start, or overflow).
+            if !(f.end().is_finite() && f.end() > f.start) {
+                return Err((
+                    k,
+                    format!(
+                        "a flip from {} for {} ends at {}: the duration must be finite and \
+                         not lost in the rounding of the start",
+                        crate::error::num(f.start),
+                        crate::error::num(f.duration),
+                        crate::error::num(f.end())
+                    ),
+                ));
+            }
             if k > 0 && f.start < prev_end {
                 return Err((
                     k,
@@ -414,6 +429,11 @@ pub enum OutputSpec {
     Data,
     /// A figure of the linear theory or a drawing (`figure-NAME.png`).
     Theory(TheorySpec),
+    /// The scene run over a grid of parameters, each run's outcome
+    /// decided, charted (`figure-NAME.png`) and tabulated
+    /// (`figure-NAME.csv`); `ladder sweep` writes `sweep-NAME.*`
+    /// (SPEC section 7, `sweep::SweepSpec`).
+    Sweep(sweep::SweepSpec),
 }
 
 impl Default for OutputSpec {
@@ -780,6 +800,7 @@ impl Scene {
             }
             OutputSpec::Arrivals { curves } => check_panels("output.curves", curves),
             OutputSpec::Theory(t) => check_theory(t),
+            OutputSpec::Sweep(spec) => spec.check(Scene::check, self),
             _ => Ok(()),
         }
     }
@@ -809,8 +830,15 @@ fn check_model(key: &str, m: &Model, simulated: bool) -> std::result::Result<(),
             ),
         );
     }
-    if !(m.b.is_finite() && m.b > 0.0) {
-        return at("b", format!("must be a finite length > 0, got {}", m.b));
+    use crate::limits::{MAX_INERTIA, MAX_LENGTH, MIN_INERTIA, MIN_LENGTH};
+    if !(m.b.is_finite() && (MIN_LENGTH..=MAX_LENGTH).contains(&m.b)) {
+        return at(
+            "b",
+            format!(
+                "must be a length from {MIN_LENGTH:e} to {MAX_LENGTH:e}, got {}",
+                crate::error::num(m.b)
+            ),
+        );
     }
     if !(m.gamma.is_finite() && m.gamma >= 0.0) {
         return at(
@@ -824,14 +852,24 @@ fn check_model(key: &str, m: &Model, simulated: bool) -> std::result::Result<(),
             format!("must be a finite number >= 0, got {}", m.gravity),
         );
     }
-    if !(m.inertia.is_finite() && m.inertia > 0.0) {
+    if !(m.inertia.is_finite() && (MIN_INERTIA..=MAX_INERTIA).contains(&m.inertia)) {
         return at(
             "inertia",
-            format!("must be a finite number > 0, got {}", m.inertia),
+            format!(
+                "must be a number from {MIN_INERTIA:e} to {MAX_INERTIA:e}, got {}",
+                crate::error::num(m.inertia)
+            ),
         );
     }
-    if let Err(e) = m.params() {
-        return at("alpha", e.to_string());
+    match m.params() {
+        Err(e) => return at("alpha", e.to_string()),
+        // What a run will ask (e.g. |alpha| >= 1e-9°), asked here.
+        Ok(p) if simulated => {
+            if let Err(e) = crate::sim::check_simulable(&p) {
+                return at("alpha", e.to_string());
+            }
+        }
+        Ok(_) => {}
     }
     Ok(())
 }

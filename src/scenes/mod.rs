@@ -92,6 +92,7 @@ pub fn file_names_for(scene: &Scene, outputs: &Outputs) -> Vec<String> {
             v
         }
         OutputSpec::Data => vec![],
+        OutputSpec::Sweep(_) => vec![format!("{stem}.png"), format!("{stem}.csv")],
         _ => outputs
             .figures
             .as_slice()
@@ -144,11 +145,13 @@ pub fn figure_picture(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
             let (picture, run) = dynamic::kymograph_figure(scene, KYMOGRAPH_ROWS)?;
             Ok((picture, vec![run]))
         }
-        OutputSpec::Movie { .. } | OutputSpec::Data => Err(Error::bad_input(format!(
-            "{} {} is not a figure",
-            scene.kind().name(),
-            scene.name
-        ))),
+        OutputSpec::Movie { .. } | OutputSpec::Data | OutputSpec::Sweep(_) => {
+            Err(Error::bad_input(format!(
+                "{} {} is not a figure",
+                scene.kind().name(),
+                scene.name
+            )))
+        }
     }
 }
 
@@ -161,6 +164,10 @@ pub fn render_with(
     outputs: &Outputs,
     frame_done: &(dyn Fn() + Sync),
 ) -> Result<Vec<(String, Vec<u8>)>> {
+    if let OutputSpec::Sweep(_) = scene.output {
+        // Its own data file: the sweep's JSON (crate::sweep::results).
+        return crate::sweep::render(scene);
+    }
     let (mut bytes, runs) = match &scene.output {
         OutputSpec::Theory(_)
         | OutputSpec::Filmstrip { .. }
@@ -183,6 +190,7 @@ pub fn render_with(
             let run = run::simulate(scene, &[])?;
             (vec![], vec![RunData::from_run(scene, &run)])
         }
+        OutputSpec::Sweep(_) => return crate::sweep::render(scene),
     };
     let names = file_names_for(scene, outputs);
     let data = DataFile {

@@ -6,6 +6,7 @@
 //! exactly on `t_stop` when the rest of the interval fits in one step; the
 //! run loop puts every sample time and every drive corner into `t_stop`.
 
+use super::chain::ChainEuler;
 use super::fused::{Batch, FusedEuler, Stepping};
 use super::observables::ArrivalDetector;
 use super::rhs::{Rhs, State};
@@ -175,6 +176,7 @@ impl IntegratorConfig {
                 let mut stepper = FixedStep::new(kind, dof, self.dt);
                 if kind == IntegratorKind::SymplecticEuler {
                     stepper.fused = FusedEuler::new(dof / 3, stepping);
+                    stepper.chain = ChainEuler::new(dof / 3, stepping);
                 }
                 Box::new(stepper)
             }
@@ -221,7 +223,7 @@ fn subdivide(t: f64, t_stop: f64, dt: f64) -> (f64, bool) {
 /// The subdivision of the current interval [t, t_stop]: equal steps `h`,
 /// `left` of them still to take. Computed once per interval.
 #[derive(Debug, Clone, Copy, Default)]
-struct Plan {
+pub(super) struct Plan {
     t_stop: f64,
     h: f64,
     left: u64,
@@ -234,14 +236,19 @@ impl Plan {
         (h, last)
     }
 
+    /// Steps left in the current interval (0 before the first).
+    pub(super) fn left(&self) -> u64 {
+        self.left
+    }
+
     /// Returns `count` steps taken by [`Plan::take`] but not made.
-    fn give_back(&mut self, count: u64) {
+    pub(super) fn give_back(&mut self, count: u64) {
         self.left += count;
     }
 
     /// Up to `max` (≥ 1) steps towards `t_stop` from `t`: (h, how many,
     /// whether the last of them ends the interval).
-    fn take(&mut self, t: f64, t_stop: f64, dt: f64, max: u64) -> (f64, u64, bool) {
+    pub(super) fn take(&mut self, t: f64, t_stop: f64, dt: f64, max: u64) -> (f64, u64, bool) {
         if self.left == 0 || self.t_stop != t_stop {
             let span = t_stop - t;
             let n = (span / dt - 1e-6).ceil().max(1.0);
@@ -274,7 +281,7 @@ pub struct ImplicitDamping {
 impl ImplicitDamping {
     /// Recomputes the factors for step `h` in place (allocating only the
     /// first time).
-    fn set(&mut self, rhs: &Rhs, h: f64) {
+    pub(super) fn set(&mut self, rhs: &Rhs, h: f64) {
         let dof = rhs.damping_rate.len();
         self.decay.resize(dof, 0.0);
         self.kick.resize(dof, 0.0);
@@ -312,8 +319,10 @@ pub struct FixedStep {
     /// Symplectic Euler's factors for the last step size.
     damping: ImplicitDamping,
     plan: Plan,
-    /// Symplectic Euler's fused stepper, where available.
+    /// Symplectic Euler's fused stepper (N ≤ 32) or chain stepper
+    /// (longer ladders), where available.
     fused: Option<FusedEuler>,
+    chain: Option<ChainEuler>,
 }
 
 impl FixedStep {
@@ -328,6 +337,7 @@ impl FixedStep {
             damping: ImplicitDamping::default(),
             plan: Plan::default(),
             fused: None,
+            chain: None,
         }
     }
 
@@ -416,9 +426,9 @@ impl Integrator for FixedStep {
         max_steps: u64,
         arrivals: &mut ArrivalDetector,
     ) -> Result<(f64, u64)> {
-        let Some(fused) = self.fused else {
+        if self.fused.is_none() && self.chain.is_none() {
             return default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals);
-        };
+        }
         if max_steps == 0 || t >= t_stop {
             return Ok((t, 0));
         }
@@ -426,7 +436,7 @@ impl Integrator for FixedStep {
         self.implicit_damping(rhs, h);
         let Some(factors) = self.damping.uniform else {
             self.plan.give_back(count);
-            self.fused = None;
+            (self.fused, self.chain) = (None, None);
             return default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals);
         };
         let batch = Batch {
@@ -436,7 +446,11 @@ impl Integrator for FixedStep {
             t_stop,
             lands,
         };
-        let t_new = fused.run(rhs, st, &batch, factors, arrivals);
+        let t_new = match (self.fused, self.chain.as_mut()) {
+            (Some(fused), _) => fused.run(rhs, st, &batch, factors, arrivals),
+            (None, Some(chain)) => chain.run(rhs, st, &batch, factors, arrivals),
+            (None, None) => unreachable!("checked above"),
+        };
         Ok((t_new, count))
     }
 }

@@ -2,11 +2,15 @@
 //! times, divergence detection, and the scenes' initial conditions.
 
 pub mod auto;
+pub mod batch;
+pub mod chain;
 pub mod fused;
 pub mod integrators;
 pub mod observables;
 pub mod protocol;
 pub mod rhs;
+#[cfg(target_arch = "x86_64")]
+mod simd;
 
 pub use fused::{Isa, Stepping};
 pub use integrators::{IntegratorConfig, IntegratorKind};
@@ -16,6 +20,7 @@ pub use rhs::{Rhs, State};
 use crate::error::{Error, Result, num};
 use crate::limits::{Limits, Resource};
 use crate::model::ladder::itheta;
+use crate::model::params::M;
 use crate::model::{Ladder, Params};
 use observables::{ArrivalDetector, kink_position};
 
@@ -61,14 +66,15 @@ impl Scenario {
 }
 
 /// `simulate` needs 0 < |α| < 90° (SPEC section 5).
+/// α is read to 1e-9° (`Params::alpha_deg`), so a smaller |α| counts as 0.
 pub fn check_simulable(params: &Params) -> Result<()> {
     let deg = params.alpha_deg();
     if deg.is_finite() && deg.abs() > 0.0 && deg.abs() < 90.0 {
         Ok(())
     } else {
         Err(Error::bad_input(format!(
-            "alpha must satisfy 0 < |alpha| < 90 degrees for a simulation, got {}",
-            crate::error::num(deg)
+            "alpha must satisfy 1e-9 <= |alpha| < 90 degrees for a simulation, got {}",
+            crate::error::num(params.alpha.to_degrees())
         )))
     }
 }
@@ -87,8 +93,11 @@ pub struct Trajectory {
     /// Arrival time per block: the first sign change of its polarisation
     /// sin θ_n (SPEC section 1), `None` where it never flipped.
     pub arrival_times: Vec<Option<f64>>,
-    /// State at t_end.
+    /// State at the end of the run: at t_end, or at `t_final` where a stop
+    /// rule ended it earlier ([`simulate_until`]).
     pub final_state: State,
+    /// The time the run reached (t_end unless a stop rule ended it).
+    pub t_final: f64,
     pub steps: u64,
     pub force_evals: u64,
 }
@@ -104,15 +113,12 @@ impl Trajectory {
         observables::angles_deg_unwrapped(&self.final_state.q)
     }
 
-    /// Records the state for every sample time not after `t` not yet recorded.
-    fn record_due(&mut self, samples: &[f64], next: &mut usize, t: f64, st: &State, alpha: f64) {
-        while *next < samples.len() && samples[*next] <= t {
-            self.times.push(samples[*next]);
-            self.states.push(st.q.clone());
-            self.velocities.push(st.v.clone());
-            self.kink_position.push(kink_position(&st.q, alpha));
-            *next += 1;
-        }
+    /// Stores a sample (the sink of [`simulate_with`]).
+    fn push(&mut self, sample: &Sample, alpha: f64) {
+        self.times.push(sample.t);
+        self.states.push(sample.q.to_vec());
+        self.velocities.push(sample.v.to_vec());
+        self.kink_position.push(kink_position(sample.q, alpha));
     }
 
     /// θ_n(t) of block `i` at every sample.
@@ -142,6 +148,27 @@ fn check_every(config: &IntegratorConfig) -> u64 {
 const MAX_TURNS: f64 = 4.0;
 /// Undriven energy growth, per spring, treated as a runaway.
 const MAX_UNDRIVEN_GROWTH: f64 = 1e-2;
+
+/// The state at one sample time, as the run loop hands it to a sink.
+#[derive(Debug, Clone, Copy)]
+pub struct Sample<'a> {
+    pub t: f64,
+    /// Positions, in the model's layout [X, Y, θ per block].
+    pub q: &'a [f64],
+    /// Velocities, same layout.
+    pub v: &'a [f64],
+}
+
+/// A stop rule: given the time reached and the arrival times so far, true
+/// once the run has decided what it was run for (a sweep's outcome,
+/// SPEC section 7). Asked at every divergence check (every 5 τ, at most
+/// 512 steps apart, and at every sample time and drive corner).
+pub type StopRule<'a> = dyn Fn(f64, &[Option<f64>]) -> bool + Sync + 'a;
+
+/// The stop rule that never stops a run before its t_end.
+pub fn run_to_end(_t: f64, _arrivals: &[Option<f64>]) -> bool {
+    false
+}
 
 /// Integrates `scenario` to its end, recording the state at `sample_times`
 /// (each in [0, t_end]) and observing arrival times at every step.
@@ -247,7 +274,7 @@ pub fn check_cost(
 }
 
 /// As [`simulate_observed`], within `limits` (checked before the run by
-/// [`check_cost`], and while it runs for adaptive steps).
+/// [`check_cost`], and while it runs).
 pub fn simulate_limited(
     scenario: &Scenario,
     sample_times: &[f64],
@@ -256,8 +283,72 @@ pub fn simulate_limited(
     limits: &Limits,
     progress: &(dyn Fn(f64) + Sync),
 ) -> Result<Trajectory> {
+    let alpha = scenario.ladder.params.alpha;
+    let mut kept = Trajectory::unsampled(State::at_rest(Vec::new()), 0.0, Vec::new(), 0, 0);
+    let mut traj = simulate_streaming(
+        scenario,
+        sample_times,
+        config,
+        stepping,
+        &Hooks {
+            stop: &run_to_end,
+            progress,
+            limits,
+        },
+        &mut |sample: &Sample| {
+            kept.push(sample, alpha);
+            Ok(())
+        },
+    )?;
+    (traj.times, traj.states, traj.velocities, traj.kink_position) =
+        (kept.times, kept.states, kept.velocities, kept.kink_position);
+    Ok(traj)
+}
+
+/// As [`simulate_with`] without samples, ending the run early once `stop`
+/// says so (t_end is then the cap): the single-run reference of
+/// [`batch::simulate_many`], which gives the same trajectories bit for bit.
+pub fn simulate_until(
+    scenario: &Scenario,
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    stop: &StopRule,
+) -> Result<Trajectory> {
+    let limits = Limits::active();
+    let hooks = Hooks {
+        stop,
+        progress: &|_| {},
+        limits: &limits,
+    };
+    simulate_streaming(scenario, &[], config, stepping, &hooks, &mut |_| Ok(()))
+}
+
+/// What the run loop asks and tells at every divergence check.
+pub struct Hooks<'a> {
+    /// Ends the run once it says so (t_end is then the cap).
+    pub stop: &'a StopRule<'a>,
+    /// Told the simulated time at every check (every 5 τ, or 512 steps
+    /// at most), after the check: for a progress bar.
+    pub progress: &'a (dyn Fn(f64) + Sync),
+    /// The caps the run must stay within (`limits`).
+    pub limits: &'a Limits,
+}
+
+/// The run loop. Hands the state at every sample time to `sink` as it
+/// passes (memory stays proportional to N, however many samples: the
+/// returned trajectory holds none) and ends at t_end or where
+/// `hooks.stop` says. An error from `sink` ends the run with that error.
+pub fn simulate_streaming(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    hooks: &Hooks,
+    sink: &mut dyn FnMut(&Sample) -> Result<()>,
+) -> Result<Trajectory> {
     let config = config.validated()?;
     let samples = sorted_samples(sample_times, scenario.t_end)?;
+    let limits = hooks.limits;
     check_cost(scenario, samples.len(), &config, limits)?;
     let max_steps = limits.block_steps / scenario.ladder.n() as f64;
     let stops = stop_times(&samples, &scenario.protocol, scenario.t_end);
@@ -269,24 +360,15 @@ pub fn simulate_limited(
     let mut watch = DivergenceWatch::new(ladder, &scenario.protocol, &config);
     let check_every = check_every(&config);
     let mut arrivals = ArrivalDetector::new(0.0, &st.q, &st.v);
-    let mut traj = Trajectory {
-        times: Vec::with_capacity(samples.len()),
-        states: Vec::with_capacity(samples.len()),
-        velocities: Vec::with_capacity(samples.len()),
-        kink_position: Vec::with_capacity(samples.len()),
-        arrival_times: Vec::new(),
-        final_state: st.clone(),
-        steps: 0,
-        force_evals: 0,
-    };
+    let mut steps = 0;
     let mut t = 0.0;
     let mut next_sample = 0;
-    traj.record_due(&samples, &mut next_sample, t, &st, ladder.params.alpha);
-    for &stop in &stops {
-        while t < stop {
-            let budget = check_every - traj.steps % check_every;
+    emit_due(&samples, &mut next_sample, t, &st, sink)?;
+    'run: for &stop_at in &stops {
+        while t < stop_at {
+            let budget = check_every - steps % check_every;
             let (t_new, taken) =
-                integrator.advance_many(&mut rhs, &mut st, (t, stop), budget, &mut arrivals)?;
+                integrator.advance_many(&mut rhs, &mut st, (t, stop_at), budget, &mut arrivals)?;
             if taken > 0 && t_new <= t {
                 return Err(Error::failed(format!(
                     "time stopped advancing at t = {} τ ({}): the step is below the rounding of t",
@@ -295,33 +377,85 @@ pub fn simulate_limited(
                 )));
             }
             t = t_new;
-            traj.steps += taken;
-            if traj.steps.is_multiple_of(check_every) {
+            steps += taken;
+            if steps.is_multiple_of(check_every) {
                 watch.check(&rhs, &st, t)?;
-                progress(t);
-                if traj.steps as f64 > max_steps {
+                (hooks.progress)(t);
+                if steps as f64 > max_steps {
                     return Err(Error::Limit(crate::limits::LimitExceeded {
                         resource: Resource::BlockSteps,
-                        value: traj.steps as f64 * ladder.n() as f64,
+                        value: steps as f64 * ladder.n() as f64,
                         cap: limits.block_steps,
                         detail: format!(
                             "{} steps by t = {} of t_end = {} × N = {}, and counting",
-                            traj.steps,
+                            steps,
                             num(t),
                             num(scenario.t_end),
                             ladder.n()
                         ),
                     }));
                 }
+                if (hooks.stop)(t, &arrivals.arrival) {
+                    break 'run;
+                }
             }
         }
         watch.check(&rhs, &st, t)?;
-        traj.record_due(&samples, &mut next_sample, t, &st, ladder.params.alpha);
+        emit_due(&samples, &mut next_sample, t, &st, sink)?;
+        if (hooks.stop)(t, &arrivals.arrival) {
+            break;
+        }
     }
-    traj.arrival_times = arrivals.arrival;
-    traj.final_state = st;
-    traj.force_evals = rhs.force_evals;
-    Ok(traj)
+    Ok(Trajectory::unsampled(
+        st,
+        t,
+        arrivals.arrival,
+        steps,
+        rhs.force_evals,
+    ))
+}
+
+impl Trajectory {
+    /// A trajectory without samples.
+    fn unsampled(
+        final_state: State,
+        t_final: f64,
+        arrival_times: Vec<Option<f64>>,
+        steps: u64,
+        force_evals: u64,
+    ) -> Self {
+        Self {
+            times: Vec::new(),
+            states: Vec::new(),
+            velocities: Vec::new(),
+            kink_position: Vec::new(),
+            arrival_times,
+            final_state,
+            t_final,
+            steps,
+            force_evals,
+        }
+    }
+}
+
+/// Hands `sink` the state for every sample time not after `t` not yet
+/// handed over.
+fn emit_due(
+    samples: &[f64],
+    next: &mut usize,
+    t: f64,
+    st: &State,
+    sink: &mut dyn FnMut(&Sample) -> Result<()>,
+) -> Result<()> {
+    while *next < samples.len() && samples[*next] <= t {
+        sink(&Sample {
+            t: samples[*next],
+            q: &st.q,
+            v: &st.v,
+        })?;
+        *next += 1;
+    }
+    Ok(())
 }
 
 /// Sample times sorted and deduplicated; each must lie in [0, t_end].
@@ -388,12 +522,16 @@ impl DivergenceWatch {
         if max_theta > MAX_TURNS * std::f64::consts::TAU {
             return Err(self.diverged(t, "a block turned more than four times"));
         }
-        let elastic = rhs.ladder.elastic_energy(&st.q);
+        let ladder = rhs.ladder;
+        let elastic = ladder.elastic_energy(&st.q);
         if elastic > self.max_elastic {
             return Err(self.diverged(t, "the springs stretched beyond any physical state"));
         }
         if t >= self.drive_end {
-            let e = rhs.mechanical_energy(st);
+            // `Rhs::mechanical_energy`, with the elastic part computed once.
+            let gravity: f64 = st.q.iter().step_by(3).sum();
+            let potential = elastic - M * ladder.params.gravity * gravity;
+            let e = ladder.kinetic_energy(&st.v) + potential;
             self.undriven_min = self.undriven_min.min(e);
             if e > self.undriven_min + self.max_growth {
                 return Err(self.diverged(t, "the energy grew while nothing drove the ladder"));
