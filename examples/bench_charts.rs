@@ -8,10 +8,10 @@ use jacobs_ladder::bench::{self, StabilityReport, WorkPrecisionReport};
 use jacobs_ladder::{encode, output};
 use std::path::PathBuf;
 
-fn main() -> anyhow::Result<()> {
+fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let [wp, st, out] = args.as_slice() else {
-        anyhow::bail!("usage: bench_charts WORK_PRECISION.json STABILITY.json OUT_DIR");
+        return Err("usage: bench_charts WORK_PRECISION.json STABILITY.json OUT_DIR".into());
     };
     let out = PathBuf::from(out);
     output::ensure_dir(&out)?;

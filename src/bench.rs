@@ -196,7 +196,7 @@ fn measure(
         let run = scene.run(&config);
         times.push(start.elapsed().as_secs_f64());
         match run {
-            Err(Error::Failed(_)) => {
+            Err(e) if e.is_failed_run() => {
                 outcome = None;
                 break;
             }
@@ -334,7 +334,7 @@ pub fn is_stable(scene: &BenchScene, kind: IntegratorKind, dt: f64) -> Result<bo
     let config = IntegratorConfig::fixed(kind, dt);
     match sim::simulate(&scene.scenario()?, &[], &config) {
         Ok(_) => Ok(true),
-        Err(Error::Failed(_)) => Ok(false),
+        Err(e) if e.is_failed_run() => Ok(false),
         Err(e) => Err(e),
     }
 }

@@ -98,32 +98,212 @@ pub fn entries(kind: Kind) -> Result<Vec<&'static Entry>> {
     Ok(catalogue()?.iter().filter(|e| e.kind() == kind).collect())
 }
 
-/// The entry of `kind` with this ID.
+/// The entry of `kind` with this ID; case does not matter (`s5` is S5).
+/// An unknown ID is bad input whose message names the closest IDs, or
+/// says that the paper's item is a photograph or recording.
 pub fn find(kind: Kind, id: &str) -> Result<&'static Entry> {
-    let all = entries(kind)?;
-    all.iter().copied().find(|e| e.id == id).ok_or_else(|| {
-        let ids: Vec<&str> = all.iter().map(|e| e.id.as_str()).collect();
-        Error::bad_input(format!(
-            "unknown {} '{id}'; choose one of {} or all",
-            kind.name(),
-            ids.join(", ")
-        ))
-    })
+    entries(kind)?
+        .into_iter()
+        .find(|e| e.id.eq_ignore_ascii_case(id))
+        .ok_or_else(|| unknown(Some(kind), id))
 }
 
 /// The entry with this ID, figure or movie (figures first).
 pub fn find_any(id: &str) -> Result<&'static Entry> {
     find(Kind::Figure, id)
         .or_else(|_| find(Kind::Movie, id))
-        .map_err(|_| {
-            let ids: Vec<String> = catalogue()
-                .map(|c| c.iter().map(|e| e.id.clone()).collect())
+        .map_err(|_| unknown(None, id))
+}
+
+/// "figures 1c, 2b, 2c or all": the IDs of one kind.
+fn id_list(kind: Kind) -> String {
+    let ids: Vec<String> = entries(kind)
+        .map(|all| all.iter().map(|e| e.id.clone()).collect())
+        .unwrap_or_default();
+    format!(
+        "{}s {}",
+        kind.name(),
+        or_list(&ids).replace(" or ", " and ")
+    )
+}
+
+/// The message for an ID that is not in the catalogue (of `kind`, or of
+/// either kind): what the paper's item is if the program does not make
+/// it, else the closest IDs, then what there is.
+fn unknown(kind: Option<Kind>, id: &str) -> Error {
+    let kinds: Vec<Kind> = kind.map_or(vec![Kind::Figure, Kind::Movie], |k| vec![k]);
+    let what = kind.map_or("scene", Kind::name);
+    let makes = format!(
+        "It makes {}, and {}",
+        id_list(Kind::Figure),
+        id_list(Kind::Movie)
+    );
+    if let Some(a) = absent()
+        .unwrap_or_default()
+        .iter()
+        .find(|a| kinds.contains(&a.kind) && a.id.eq_ignore_ascii_case(id))
+    {
+        let nearest = a
+            .nearest
+            .as_ref()
+            .map_or(String::new(), |n| format!(" (the nearest it makes: {n})"));
+        return Error::bad_input(format!(
+            "{} {} of the paper is {}; this program does not make it: it simulates and draws \
+             the paper's model, and makes no photographs or recordings of real toys{nearest}. \
+             {makes} (`ladder list`)",
+            a.kind.name(),
+            a.id,
+            a.what
+        ));
+    }
+    let close = closest(kind, id);
+    let hint = if close.is_empty() {
+        String::new()
+    } else {
+        format!("; did you mean {}?", or_list(&close))
+    };
+    let choose = match kind {
+        Some(k) => {
+            let ids: Vec<String> = entries(k)
+                .map(|all| all.iter().map(|e| e.id.clone()).collect())
                 .unwrap_or_default();
-            Error::bad_input(format!(
-                "unknown scene '{id}'; choose one of {}",
-                ids.join(", ")
-            ))
+            format!("choose one of {} or all", ids.join(", "))
+        }
+        None => format!(
+            "choose one of {} or {}",
+            id_list(Kind::Figure),
+            id_list(Kind::Movie)
+        ),
+    };
+    Error::bad_input(format!("unknown {what} '{id}'{hint} ({choose})"))
+}
+
+/// "a, b or c".
+fn or_list(items: &[String]) -> String {
+    match items {
+        [] => String::new(),
+        [one] => one.clone(),
+        [init @ .., last] => format!("{} or {last}", init.join(", ")),
+    }
+}
+
+/// The catalogue's IDs closest to `id`, as "figure S6" or, when `kind` is
+/// given, the bare ID of that kind: IDs that start with what was typed,
+/// else those at the smallest edit distance (at most 2, and less than the
+/// length of what was typed). An ID of the other kind that matches exactly
+/// ("figure 4" → "movie 4") is named too.
+fn closest(kind: Option<Kind>, id: &str) -> Vec<String> {
+    let typed = id.to_lowercase();
+    let Ok(all) = catalogue() else {
+        return Vec::new();
+    };
+    let name = |e: &Entry| match kind {
+        Some(k) if e.kind() == k => e.id.clone(),
+        _ => format!("{} {}", e.kind().name(), e.id),
+    };
+    let own: Vec<&Entry> = all
+        .iter()
+        .filter(|e| kind.is_none_or(|k| e.kind() == k))
+        .collect();
+    let mut close: Vec<String> = own
+        .iter()
+        .filter(|e| !typed.is_empty() && e.id.to_lowercase().starts_with(&typed))
+        .map(|e| name(e))
+        .collect();
+    if close.is_empty() {
+        let distance = |e: &&Entry| strsim::levenshtein(&typed, &e.id.to_lowercase());
+        if let Some(best) = own.iter().map(distance).min()
+            && best <= 2
+            && best < typed.chars().count()
+        {
+            close = own
+                .iter()
+                .filter(|e| distance(e) == best)
+                .map(|e| name(e))
+                .collect();
+        }
+    }
+    if kind.is_some() {
+        close.extend(
+            all.iter()
+                .filter(|e| kind != Some(e.kind()) && e.id.eq_ignore_ascii_case(id))
+                .map(name),
+        );
+    }
+    close
+}
+
+/// An item of the paper that the program does not make: a photograph or
+/// a recording of a real toy or experiment (`assets/not-made.toml`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Absent {
+    pub kind: Kind,
+    /// The paper's number: "1a", "S2", "12".
+    pub id: String,
+    /// What it shows: "a photograph of ...".
+    pub what: String,
+    /// The built-in output closest to it ("figure 2b"), if any.
+    pub nearest: Option<String>,
+}
+
+/// `assets/not-made.toml`: the items of the paper the program does not make.
+pub const ABSENT_FILE: &str = include_str!("../assets/not-made.toml");
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AbsentFile {
+    figure: Vec<AbsentEntry>,
+    movie: Vec<AbsentEntry>,
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AbsentEntry {
+    id: String,
+    what: String,
+    nearest: Option<String>,
+}
+
+/// The paper's items the program does not make, figures first, parsed once.
+pub fn absent() -> Result<&'static [Absent]> {
+    static ABSENT: OnceLock<std::result::Result<Vec<Absent>, String>> = OnceLock::new();
+    ABSENT
+        .get_or_init(|| {
+            let file: AbsentFile =
+                toml::from_str(ABSENT_FILE).map_err(|e| format!("assets/not-made.toml: {e}"))?;
+            let tagged = |kind: Kind, list: Vec<AbsentEntry>| {
+                list.into_iter().map(move |a| Absent {
+                    kind,
+                    id: a.id,
+                    what: a.what,
+                    nearest: a.nearest,
+                })
+            };
+            Ok(tagged(Kind::Figure, file.figure)
+                .chain(tagged(Kind::Movie, file.movie))
+                .collect())
         })
+        .as_deref()
+        .map_err(|e| Error::failed(format!("a built-in file is broken: {e}")))
+}
+
+/// One sentence for the gallery: what of the paper is not made, and why.
+pub fn absent_summary() -> Result<String> {
+    let ids = |kind: Kind| -> Result<Vec<String>> {
+        Ok(absent()?
+            .iter()
+            .filter(|a| a.kind == kind)
+            .map(|a| a.id.clone())
+            .collect())
+    };
+    Ok(format!(
+        "Not made here: figures {} and movies {} of the paper. They are photographs and \
+         recordings of real toys and experiments, and this program simulates the model; where \
+         the paper shows an experiment that the model describes (figures 1c, 4a and S6, movies \
+         3, 10 and 11), the page shows its simulated analogue.",
+        or_list(&ids(Kind::Figure)?).replace(" or ", " and "),
+        or_list(&ids(Kind::Movie)?).replace(" or ", " and ")
+    ))
 }
 
 /// `ladder list`: one line per entry.
@@ -139,4 +319,44 @@ pub fn listing() -> Result<String> {
         ));
     }
     Ok(s)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn what_is_not_made_is_not_in_the_catalogue_and_points_at_what_is() {
+        let absent = absent().unwrap();
+        assert_eq!(absent.len(), 9, "six figures and three movies");
+        for a in absent {
+            assert!(
+                find(a.kind, &a.id).is_err(),
+                "{} {} is made",
+                a.kind.name(),
+                a.id
+            );
+            if let Some(n) = &a.nearest {
+                let (kind, id) = n.split_once(' ').unwrap();
+                let kind = if kind == "figure" {
+                    Kind::Figure
+                } else {
+                    Kind::Movie
+                };
+                assert!(
+                    find(kind, id).is_ok(),
+                    "nearest {n} is not in the catalogue"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn closest_ids() {
+        assert_eq!(closest(Some(Kind::Figure), "s6"), ["S6"]);
+        assert_eq!(closest(Some(Kind::Figure), "edge"), ["edge-mode"]);
+        assert_eq!(closest(Some(Kind::Movie), "3"), ["3", "figure 3"]);
+        assert!(closest(Some(Kind::Movie), "qqq").is_empty());
+        assert_eq!(or_list(&["a".into(), "b".into(), "c".into()]), "a, b or c");
+    }
 }

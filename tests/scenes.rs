@@ -202,3 +202,27 @@ fn custom_movies_at_2_40_and_200_blocks_keep_every_block_in_the_frame() {
         }
     }
 }
+
+/// Movie 3's camera follows the kink but stays on the ladder: at the last
+/// frame the bottom block sits at the bottom of the window, whole, with no
+/// empty band below it.
+#[test]
+fn movie_3_keeps_the_ladder_filling_the_window_to_the_end() {
+    let entry = jacobs_ladder::catalog::find(jacobs_ladder::scene::Kind::Movie, "3").unwrap();
+    let opts = MovieOptions {
+        frames: 12,
+        width: 320,
+        height: 240,
+        fps: 10.0,
+    };
+    let (region, frames) = dynamic::movie_block_pixels(&entry.scene, &opts).unwrap();
+    // The window's bottom: above the snapshot's time band and margin.
+    let margin = (0.03 * region.w.min(region.h)).clamp(2.0, 12.0);
+    let bottom = region.y + region.h - margin - 1.5 * jacobs_ladder::render::style::size::LABEL;
+    let last = frames.last().unwrap();
+    let lowest = last.iter().map(|p| p.1).fold(f32::MIN, f32::max);
+    assert!(
+        lowest <= bottom && lowest >= bottom - 0.08 * region.h,
+        "lowest block end at {lowest}, window bottom {bottom}, {region:?}"
+    );
+}

@@ -81,6 +81,9 @@ pub struct OutArgs {
     /// scene, e.g. DIR/figure-3.pdf
     #[arg(long, default_value = "out", value_name = "DIR")]
     pub out: PathBuf,
+    /// List every file written, one path a line on stderr, before the summary
+    #[arg(short, long)]
+    pub verbose: bool,
 }
 
 /// The model of a scene (`[model]` of a scene file). Each flag left out

@@ -19,7 +19,6 @@ use crate::sim::{self, IntegratorKind};
 use clap::Parser;
 use serde::Serialize;
 use std::ffi::OsString;
-use std::path::Path;
 use std::time::Instant;
 
 /// Runs the program on `args`; returns the process exit code.
@@ -159,13 +158,13 @@ pub fn run(cli: Cli) -> Result<()> {
             let outputs = args.figure_format.outputs()?;
             let scenes = figure_scenes(&args)?;
             let movie = MovieOptions::default();
-            render_into(&scenes, &args.out.out, &movie, &outputs, false)
+            render_into(&scenes, &args.out, &movie, &outputs, Words::Flags, false)
         }
         Command::Movie(args) => {
             let opts = args.format.options()?;
             let outputs = convert::movie_outputs(&args.formats, &opts)?;
             let scenes = movie_scenes(&args)?;
-            render_into(&scenes, &args.out.out, &opts, &outputs, false)
+            render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, false)
         }
         Command::Render(args) => {
             let opts = args.format.options()?;
@@ -189,7 +188,7 @@ pub fn run(cli: Cli) -> Result<()> {
                 }
                 return Ok(());
             }
-            render_into(&scenes, &args.out.out, &opts, &outputs, false)
+            render_into(&scenes, &args.out, &opts, &outputs, Words::Keys, false)
         }
         Command::All(args) => {
             let opts = args.format.options()?;
@@ -198,7 +197,7 @@ pub fn run(cli: Cli) -> Result<()> {
                 .iter()
                 .map(|e| e.scene.clone())
                 .collect();
-            render_into(&scenes, &args.out.out, &opts, &outputs, true)
+            render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, true)
         }
     }
 }
@@ -348,7 +347,7 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         bar.set_position(bar.position().max(t as u64));
     });
     bar.finish_and_clear();
-    let result = result?;
+    let result = result.map_err(|e| with_divergence_hint(e, &scene, Words::Flags))?;
     let wall_seconds = start.elapsed().as_secs_f64();
     let traj = &result.trajectory;
     if let Some(path) = &args.csv {
@@ -382,6 +381,83 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
     } else {
         output::print(&simulate_table(&report))
     }
+}
+
+/// How a hint names the settings: as command-line flags, or as the keys
+/// of a scene file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Words {
+    Flags,
+    Keys,
+}
+
+impl Words {
+    fn dt(self) -> &'static str {
+        match self {
+            Self::Flags => "--dt",
+            Self::Keys => "[run] dt",
+        }
+    }
+
+    fn rtol(self) -> &'static str {
+        match self {
+            Self::Flags => "--rtol",
+            Self::Keys => "[run] rtol",
+        }
+    }
+
+    fn auto(self) -> &'static str {
+        match self {
+            Self::Flags => "--integrator auto",
+            Self::Keys => "[run] integrator = \"auto\"",
+        }
+    }
+}
+
+/// A diverged run's message with a hint in the user's terms: the largest
+/// step at which this scene stays bounded with the integrator that failed
+/// (measured by bisection, or the linear prediction where measuring would
+/// take long), or the auto integrator. Other errors pass unchanged.
+fn with_divergence_hint(e: Error, scene: &Scene, words: Words) -> Error {
+    let Error::Diverged(d) = &e else {
+        return e;
+    };
+    let scene::Method::Fixed(kind) = scene.run.integrator else {
+        return e;
+    };
+    let auto = words.auto();
+    let hint = if kind == IntegratorKind::Dopri5 && scene.run.rtol.is_some() {
+        format!("use a smaller {}, or {auto}", words.rtol())
+    } else {
+        let dt = words.dt();
+        match scenes::run::critical_step(scene, kind) {
+            Ok(scenes::run::CriticalStep {
+                measured: Some(c),
+                predicted,
+            }) => format!(
+                "on this scene {kind} stays bounded up to dt ≈ {} τ (measured; the linear theory \
+                 predicts {}): use {dt} below that, or {auto}, which picks a step and checks it",
+                short(c),
+                short(predicted)
+            ),
+            Ok(scenes::run::CriticalStep { predicted, .. }) if predicted.is_finite() => format!(
+                "the linear theory puts the stable step of {kind} on this scene near dt ≈ {} τ: \
+                 use {dt} well below that, or {auto}, which picks a step and checks it",
+                short(predicted)
+            ),
+            _ => format!("use a smaller {dt}, or {auto}, which picks a step and checks it"),
+        }
+    };
+    Error::failed(format!("{}; hint: {hint}", d.facts()))
+}
+
+/// `x` to two significant digits, as a reader writes it.
+fn short(x: f64) -> String {
+    if !(x.is_finite() && x > 0.0) {
+        return format!("{x}");
+    }
+    let scale = 10f64.powf(x.log10().floor() - 1.0);
+    scene::describe::num((x / scale).floor() * scale)
 }
 
 /// The CSV's sample times, 0, every, 2 every, ... up to --t-end, within
@@ -597,11 +673,13 @@ fn theory(args: &TheoryArgs) -> Result<()> {
 /// atomically as soon as it is ready, with a progress bar and a summary.
 fn render_into(
     scenes: &[Scene],
-    out: &Path,
+    out: &OutArgs,
     movie: &MovieOptions,
     outputs: &Outputs,
+    words: Words,
     index: bool,
 ) -> Result<()> {
+    let (out, verbose) = (out.out.as_path(), out.verbose);
     use rayon::prelude::*;
     convert::check_out_dir(out)?;
     // Every target, index.html included, before anything is rendered.
@@ -630,7 +708,8 @@ fn render_into(
     let written: Vec<Vec<String>> = scenes
         .par_iter()
         .map(|s| {
-            let files = scenes::render_with(s, movie, outputs, &frame_done)?;
+            let files = scenes::render_with(s, movie, outputs, &frame_done)
+                .map_err(|e| with_divergence_hint(e, s, words))?;
             for (name, bytes) in &files {
                 crate::output::write_atomic(&out.join(name), bytes)?;
             }
@@ -642,7 +721,7 @@ fn render_into(
         })
         .collect::<Result<_>>()?;
     bar.finish_and_clear();
-    let mut count: usize = written.iter().map(Vec::len).sum();
+    let mut files: Vec<String> = written.iter().flatten().cloned().collect();
     if index {
         let items: Vec<crate::gallery::Item<'_>> = scenes
             .iter()
@@ -652,19 +731,99 @@ fn render_into(
                 files: files.clone(),
             })
             .collect();
-        let page = crate::gallery::index_html(&items);
+        let page = crate::gallery::index_html(&items)?;
         crate::output::write_atomic(&out.join("index.html"), page.as_bytes())?;
-        count += 1;
+        files.push("index.html".into());
     }
-    let what = if scenes.len() == 1 {
-        format!("{} {}", scenes[0].kind().name(), scenes[0].name)
-    } else {
-        format!("{} scenes", scenes.len())
-    };
+    if verbose {
+        let list: String = files
+            .iter()
+            .map(|f| format!("{}\n", out.join(f).display()))
+            .collect();
+        output::eprint(&list)?;
+    }
     output::eprint(&format!(
-        "ladder: wrote {count} {} ({what}) into {} in {:.2} s\n",
-        if count == 1 { "file" } else { "files" },
+        "ladder: {} into {} in {:.2} s\n",
+        summary(scenes, &files, index),
         out.display(),
         start.elapsed().as_secs_f64()
     ))
+}
+
+/// "1 file", "3 files".
+fn count(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
+/// What a render wrote, in words: the files by name for one scene
+/// ("wrote figure-3.png and figure-3.json (figure 3)"), else the count of
+/// each kind ("wrote 13 figures and 9 movies, each with its data file, and
+/// index.html (54 files)").
+fn summary(scenes: &[Scene], files: &[String], index: bool) -> String {
+    let and_list = |items: &[String]| match items {
+        [] => String::new(),
+        [one] => one.clone(),
+        [init @ .., last] => format!("{} and {last}", init.join(", ")),
+    };
+    if let [one] = scenes {
+        return format!(
+            "wrote {} ({} {})",
+            and_list(files),
+            one.kind().name(),
+            one.name
+        );
+    }
+    let mut parts = Vec::new();
+    for (kind, one, many) in [
+        (Kind::Figure, "figure", "figures"),
+        (Kind::Movie, "movie", "movies"),
+        (Kind::Data, "data run", "data runs"),
+    ] {
+        let n = scenes.iter().filter(|s| s.kind() == kind).count();
+        if n > 0 {
+            parts.push(count(n, one, many));
+        }
+    }
+    let page = if index { ", and index.html" } else { "" };
+    format!(
+        "wrote {}, each with its data file{page} ({})",
+        and_list(&parts),
+        count(files.len(), "file", "files")
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_summary_names_what_was_written() {
+        let fig = catalog::find(Kind::Figure, "3").unwrap().scene.clone();
+        let movie = catalog::find(Kind::Movie, "4").unwrap().scene.clone();
+        let names = |s: &Scene| scenes::file_names(s);
+        assert_eq!(
+            summary(std::slice::from_ref(&fig), &names(&fig), false),
+            "wrote figure-3.png and figure-3.json (figure 3)"
+        );
+        assert_eq!(
+            summary(std::slice::from_ref(&movie), &names(&movie), false),
+            "wrote movie-4.gif, movie-4-kymograph.png and movie-4.json (movie 4)"
+        );
+        let both = [fig.clone(), movie.clone()];
+        let mut files = [names(&fig), names(&movie)].concat();
+        files.push("index.html".into());
+        assert_eq!(
+            summary(&both, &files, true),
+            "wrote 1 figure and 1 movie, each with its data file, and index.html (6 files)"
+        );
+        assert_eq!(count(1, "file", "files"), "1 file");
+        assert_eq!(count(0, "file", "files"), "0 files");
+    }
+
+    #[test]
+    fn short_numbers_round_down_to_two_digits() {
+        assert_eq!(short(0.7512), "0.75");
+        assert_eq!(short(0.0056789), "0.0056");
+        assert_eq!(short(12.9), "12");
+    }
 }

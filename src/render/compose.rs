@@ -209,6 +209,69 @@ pub struct FilmstripOptions {
     /// A fixed window; by default one window fits every frame, so all
     /// snapshots share one scale.
     pub view: Option<View>,
+    /// Marks beside each snapshot (`marks[k]` for frame k; none if absent),
+    /// such as the kink and the antikink of Fig. 4a.
+    pub marks: Vec<Vec<ChainMark>>,
+}
+
+/// A labelled pointer beside a filmstrip snapshot at a point of the chain.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ChainMark {
+    /// Where along the chain, in blocks: 1 is the centre of block 1, 2.5
+    /// halfway between the centres of blocks 2 and 3.
+    pub at: f64,
+    pub label: String,
+    pub color: crate::encode::Rgb,
+    /// The side of the ladder the pointer and its label go on (`Left` or
+    /// `Right`).
+    pub side: HAlign,
+}
+
+/// Font size of a [`ChainMark`]'s label.
+const MARK_TEXT: f32 = 11.0;
+
+/// Draws `mark` onto a snapshot picture of `snap` (drawn over all of it):
+/// a triangle pointing at the chain, its label beyond it.
+fn draw_mark(canvas: &mut Picture, ladder: &Ladder, snap: &Snapshot<'_>, mark: &ChainMark) {
+    use crate::model::ladder::{ix, iy, nodes};
+    let n = ladder.n();
+    let q = snap.q;
+    let at = mark.at.clamp(1.0, n as f64);
+    let i = (at.floor() as usize).clamp(1, n) - 1;
+    let j = (i + 1).min(n - 1);
+    let f = at - (i + 1) as f64;
+    let point = [
+        q[ix(i)] + f * (q[ix(j)] - q[ix(i)]),
+        q[iy(i)] + f * (q[iy(j)] - q[iy(i)]),
+    ];
+    let (w, h) = canvas.pixel_size();
+    let region = Region::full(w, h);
+    let (x, y) = snapshot::pixel_of(region, snap, point);
+    // Clear of the chain: beyond the farthest node of the two blocks.
+    let reach = [i, j]
+        .iter()
+        .flat_map(|&k| {
+            let (a, b) = nodes(q, k);
+            [a, b]
+        })
+        .map(|p| (snapshot::pixel_of(region, snap, p).0 - x).abs())
+        .fold(0.0f32, f32::max);
+    let dir = if mark.side == HAlign::Left { -1.0 } else { 1.0 };
+    let tip = x + dir * (reach + 3.0);
+    let base = tip + dir * 7.0;
+    canvas.polygon(&[(tip, y), (base, y - 4.5), (base, y + 4.5)], mark.color);
+    let align = if mark.side == HAlign::Left {
+        HAlign::Right
+    } else {
+        HAlign::Left
+    };
+    canvas.text(
+        &mark.label,
+        (base + dir * 2.0, y),
+        MARK_TEXT,
+        mark.color,
+        (align, VAlign::Middle),
+    );
 }
 
 /// Snapshots side by side in time order (left to right), each captioned
@@ -231,9 +294,12 @@ pub fn filmstrip_picture(
     let states: Vec<&[f64]> = frames.iter().map(|f| f.q).collect();
     let view = opts.view.unwrap_or_else(|| View::fit(&states));
     let mut panels = Vec::with_capacity(frames.len());
-    for f in frames {
+    for (k, f) in frames.iter().enumerate() {
         let snap = Snapshot::new(ladder, f.q)?.with_view(view);
-        let img = snapshot::snapshot_picture(&snap, w, h)?;
+        let mut img = snapshot::snapshot_picture(&snap, w, h)?;
+        for mark in opts.marks.get(k).into_iter().flatten() {
+            draw_mark(&mut img, ladder, &snap, mark);
+        }
         panels.push(Panel::new(img).caption(snapshot::time_label(f.time)));
     }
     let mut layout = Layout::row(panels.len());

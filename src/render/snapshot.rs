@@ -193,6 +193,11 @@ pub struct Snapshot<'a> {
     pub view: Option<View>,
     /// Draw the pin support of the driven block 1.
     pub clamp: bool,
+    /// A scale fixed in the lab behind the ladder: a faint line across the
+    /// window at each of these positions along the ladder (model x),
+    /// numbered 1, 2, ... at the left edge. Under a moving camera (movie 3)
+    /// it scrolls through the frame and shows the camera's motion.
+    pub lab_scale: Option<&'a [f64]>,
 }
 
 impl<'a> Snapshot<'a> {
@@ -206,6 +211,7 @@ impl<'a> Snapshot<'a> {
             title: None,
             view: None,
             clamp: true,
+            lab_scale: None,
         })
     }
 
@@ -307,6 +313,9 @@ pub fn draw_snapshot_on(canvas: &mut impl Canvas, region: Region, snap: &Snapsho
     let (margin, top, bottom) = bands(region, snap);
     let inner = inner_region(region, snap);
     let map = Mapping::new(&snap.view(), inner);
+    if let Some(xs) = snap.lab_scale {
+        draw_lab_scale(canvas, &map, inner, xs);
+    }
     if let Some(g) = snap.ghost {
         draw_ladder(canvas, &map, g, &Palette::ghost());
     }
@@ -329,6 +338,31 @@ pub fn draw_snapshot_on(canvas: &mut impl Canvas, region: Region, snap: &Snapsho
         );
     }
     draw_labels(canvas, region, margin, snap);
+}
+
+/// The lines and numbers of [`Snapshot::lab_scale`] inside `inner`.
+fn draw_lab_scale(canvas: &mut impl Canvas, map: &Mapping, inner: Region, xs: &[f64]) {
+    let line = Pen::new(1.0, style::mix(GREY, WHITE, 0.55));
+    let number = style::mix(GREY, DARK, 0.3);
+    let label_size = 0.8 * size::TICK;
+    for (i, &x) in xs.iter().enumerate() {
+        let (_, py) = map.px([x, map.y_mid]);
+        if py < inner.y || py > inner.y + inner.h {
+            continue;
+        }
+        canvas.line(
+            (inner.x + 1.4 * label_size, py),
+            (inner.x + inner.w, py),
+            &line,
+        );
+        canvas.text(
+            &format!("{}", i + 1),
+            (inner.x + 1.1 * label_size, py),
+            label_size,
+            number,
+            (HAlign::Right, VAlign::Middle),
+        );
+    }
 }
 
 /// Margin, title band and time band of a snapshot drawn into `region`.

@@ -1,8 +1,10 @@
 //! Words for a scene, generated from its fields (never retyped): the
-//! title drawn on a picture and the parameter line of the gallery and of
-//! `ladder list`.
+//! title drawn on a picture, the parameter line of the gallery and of
+//! `ladder list`, the sentence that says which level of the model made a
+//! picture, and the text that describes a picture to a reader who cannot
+//! see it.
 
-use super::{Camera, DriveSpec, Model, OutputSpec, Scene};
+use super::{Camera, DriveSpec, Fidelity, Method, Model, OutputSpec, Scene, TheoryFigure};
 
 /// A number as a reader writes it: 60, 1.3, 0.0002 → 2e-4, with a
 /// typographic minus sign.
@@ -141,6 +143,134 @@ pub fn parameters(scene: &Scene) -> String {
             format!("{base}; variants: {}", variants.join(" | "))
         }
     }
+}
+
+/// Which level of the model made the scene's picture, in a sentence
+/// (the gallery's line under each caption).
+pub fn model_level(scene: &Scene) -> String {
+    match scene.fidelity() {
+        Fidelity::Drawing => "Drawn from the ladder's geometry alone: no forces or motion are \
+                              computed."
+            .into(),
+        Fidelity::Formula => "Plotted from closed-form expressions of the model; nothing is \
+                              simulated."
+            .into(),
+        Fidelity::LinearTheory => "Computed from the linear theory of the model: small \
+                                   deformations about the ground state, from its compatibility \
+                                   matrix and stiffness."
+            .into(),
+        Fidelity::Simulation => {
+            let how = match scene.run.integrator {
+                Method::Auto => format!(
+                    "with a step chosen by the program and checked so that every arrival \
+                     time is within {} τ",
+                    num(scene.run.tolerance)
+                ),
+                Method::Fixed(kind) => match (scene.run.rtol, scene.run.dt) {
+                    (Some(r), _) => format!("with {} at tolerance {}", kind.name(), num(r)),
+                    (None, dt) => format!(
+                        "with {} at dt = {} τ",
+                        kind.name(),
+                        num(dt.unwrap_or(super::DEFAULT_DT))
+                    ),
+                },
+            };
+            format!(
+                "Simulated: the full nonlinear equations of motion of the blocks, integrated \
+                 in time {how}; the data file gives the integrator used and its accuracy."
+            )
+        }
+    }
+}
+
+/// What the picture shows, for a reader who cannot see it (the gallery's
+/// alt text, after the title).
+pub fn picture(scene: &Scene) -> String {
+    let n = scene.model.n;
+    match &scene.output {
+        OutputSpec::Movie { camera } => {
+            let follow = match camera {
+                Camera::Follow => ", the camera moving with the kink",
+                Camera::Fixed | Camera::Auto => "",
+            };
+            format!(
+                "Animation of the {n} blocks from 0 to {} τ{follow}, with the kymograph of \
+                 sin θₙ growing beside it",
+                num(scene.run.t_end)
+            )
+        }
+        OutputSpec::Filmstrip { times, panels } => {
+            if panels.len() > 1 {
+                let labels: Vec<&str> = panels.iter().map(|p| p.label.as_str()).collect();
+                format!(
+                    "{} rows of snapshots of the {n} blocks, one row per run ({}), time \
+                     running from left to right",
+                    panels.len(),
+                    labels.join(", ")
+                )
+            } else if times.is_empty() {
+                format!("Snapshots of the {n} blocks, time running from left to right")
+            } else {
+                let list: Vec<String> = times.iter().map(|t| num(*t)).collect();
+                format!(
+                    "Snapshots of the {n} blocks at t/τ = {}, from left to right",
+                    list.join(", ")
+                )
+            }
+        }
+        OutputSpec::Kymograph => kymograph(),
+        OutputSpec::Arrivals { curves } => format!(
+            "Chart of the arrival time tₙ against block n, {} with its fitted speed",
+            match curves.len() {
+                0 | 1 => "one line".to_string(),
+                k => format!("{k} lines, each"),
+            }
+        ),
+        OutputSpec::Data => "No picture: the run's numbers only".into(),
+        OutputSpec::Sweep(_) => format!(
+            "Charts of a sweep of the {n}-block ladder: how far the wave got and how fast,              coloured by its outcome, against the parameters swept"
+        ),
+        OutputSpec::Theory(t) => match t.figure {
+            TheoryFigure::UnitSchematic => "Drawing of two blocks of length s joined by an A \
+                                            link (a) and a B link (b), with θ, Δx and Δy marked"
+                .into(),
+            TheoryFigure::GravityPotential => "Chart of the potential U against θ, one curve \
+                                               per ratio a/b, with the ladder at its minimum as \
+                                               an inset"
+                .into(),
+            TheoryFigure::GroundStates => format!(
+                "Two drawings of the {n}-block ladder at rest, with its blocks tilted at +α and \
+                 at −α, an arrow on each block for its orientation"
+            ),
+            TheoryFigure::Gapless => {
+                format!("Drawing of the {n}-block ladder at rest with horizontal blocks")
+            }
+            TheoryFigure::ZeroModes => {
+                "Drawings of the ladder deformed along its zero modes, over the ground state in \
+                 grey"
+                    .into()
+            }
+            TheoryFigure::Dispersion => {
+                "Chart of the phonon frequencies ω₊ and ω₋ against qb, one pair of curves per α"
+                    .into()
+            }
+            TheoryFigure::Winding => {
+                "Closed curves of det C(q) in the complex plane, one for α > 0 and one for α < 0"
+                    .into()
+            }
+            TheoryFigure::EdgeMode => "Chart of the zero mode's amplitude |δθₙ| against block \
+                                       n on a logarithmic scale, dots against a line"
+                .into(),
+            TheoryFigure::Barrier => "Chart of the energy barrier ΔU against α".into(),
+        },
+    }
+}
+
+/// The words for a kymograph picture.
+pub fn kymograph() -> String {
+    "Kymograph: sin θₙ of each block n (across) against time (down), red for +1 and blue \
+     for −1"
+        .into()
 }
 
 /// The fields of `m` that differ from `base`, e.g. "α = −60°, to 3700 τ".

@@ -7,7 +7,7 @@ use crate::encode::{Format, MovieWriter, png_bytes};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::charts::{self, Axis, ChartSpec, Kymograph, Marker, Series};
-use crate::render::compose::{self, FilmstripOptions, Frame, Layout, Panel};
+use crate::render::compose::{self, ChainMark, FilmstripOptions, Frame, Layout, Panel};
 use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::{MovieLayout, Picture, style};
 use crate::scene::{Camera, DriveSpec, MIN_BLOCK_PIXELS, Model, OutputSpec, Scene, describe};
@@ -139,6 +139,73 @@ pub fn strip_frame(n: usize) -> (u32, u32) {
     (96, h)
 }
 
+/// Width of a filmstrip frame with [`wall_marks`]: room for "antikink"
+/// beside the chain.
+const MARKED_FRAME_WIDTH: u32 = 170;
+
+/// A domain wall of the chain: where the polarisation sin θₙ changes sign
+/// between two neighbouring blocks, at `at` blocks (linear between their
+/// centres). A kink has sin θ < 0 above and > 0 below (the flip of
+/// α > 0 → −α at the top); an antikink the reverse.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Wall {
+    pub at: f64,
+    pub kink: bool,
+}
+
+/// The domain walls of state `q`, top to bottom.
+pub fn walls(q: &[f64]) -> Vec<Wall> {
+    let p = sim::observables::polarisation(q);
+    p.windows(2)
+        .enumerate()
+        .filter(|(_, w)| w[0] * w[1] < 0.0)
+        .map(|(i, w)| Wall {
+            at: (i + 1) as f64 + w[0] / (w[0] - w[1]),
+            kink: w[0] < 0.0,
+        })
+        .collect()
+}
+
+/// Walls of opposite kinds closer than this, in blocks, are colliding.
+const COLLISION_BLOCKS: f64 = 1.0;
+
+/// The marks of a snapshot: "kink" on the left of the chain, "antikink" on
+/// the right, and "collision" where a kink and an antikink are less than
+/// [`COLLISION_BLOCKS`] apart (paper Fig. 4a).
+fn wall_marks(q: &[f64]) -> Vec<ChainMark> {
+    let w = walls(q);
+    let mut marks = Vec::new();
+    let mut k = 0;
+    while k < w.len() {
+        if let Some(next) = w.get(k + 1)
+            && next.kink != w[k].kink
+            && next.at - w[k].at < COLLISION_BLOCKS
+        {
+            marks.push(ChainMark {
+                at: 0.5 * (w[k].at + next.at),
+                label: "collision".into(),
+                color: style::DARK,
+                side: style::HAlign::Right,
+            });
+            k += 2;
+            continue;
+        }
+        let (label, color, side) = if w[k].kink {
+            ("kink", style::SERIES_EXTRA[0], style::HAlign::Left)
+        } else {
+            ("antikink", style::SERIES_EXTRA[1], style::HAlign::Right)
+        };
+        marks.push(ChainMark {
+            at: w[k].at,
+            label: label.into(),
+            color,
+            side,
+        });
+        k += 1;
+    }
+    marks
+}
+
 /// One filmstrip: snapshots of a single-run scene at `times`, sharing one
 /// scale.
 fn strip_image(
@@ -157,11 +224,24 @@ fn strip_image(
         .map(|(&time, q)| Frame { time, q })
         .collect();
     let title = (!label.is_empty()).then(|| format!("{label}  {}", wave_name(scene.model.alpha)));
+    // Several flips put a kink and an antikink on the chain at once: mark
+    // them (and where they meet) in wider frames that leave room for words.
+    let marked = scene.drive.flips.len() > 1;
+    let marks: Vec<Vec<ChainMark>> = if marked {
+        traj.states.iter().map(|q| wall_marks(q)).collect()
+    } else {
+        Vec::new()
+    };
+    let mut size = frame.unwrap_or_else(|| strip_frame(scene.model.n));
+    if marked {
+        size.0 = size.0.max(MARKED_FRAME_WIDTH);
+    }
     let opts = FilmstripOptions {
-        frame_size: Some(frame.unwrap_or_else(|| strip_frame(scene.model.n))),
+        frame_size: Some(size),
         title,
         label: None,
         view: None,
+        marks,
     };
     let image = compose::filmstrip_picture(&ladder, &frames, &opts)?;
     Ok((image, RunData::new(label, scene, &run)))
@@ -261,7 +341,8 @@ pub fn frame_times(t_end: f64, frames: usize) -> Vec<f64> {
 
 /// A window that follows the kink: `x_span` long (along the ladder),
 /// as wide as the frame's `aspect` allows, centred on the kink of frame
-/// `k` and kept inside the ladder `fit`.
+/// `k` and kept inside `fit` (every block of every frame), so that the
+/// ladder fills the window from the first frame to the last.
 fn follow_view(
     ladder: &Ladder,
     traj: &Trajectory,
@@ -271,15 +352,14 @@ fn follow_view(
     aspect: f64,
 ) -> View {
     let b = ladder.params.b;
-    let half = 0.5 * x_span / b;
-    let last = (ladder.n() as f64 - 1.0).max(0.0);
-    let centre_blocks = if last > 2.0 * half {
-        traj.kink_position[k].clamp(half, last - half)
+    let half = 0.5 * x_span;
+    let centre_x = if fit.x.1 - fit.x.0 > x_span {
+        (traj.kink_position[k] * b).clamp(fit.x.0 + half, fit.x.1 - half)
     } else {
-        0.5 * last
+        0.5 * (fit.x.0 + fit.x.1)
     };
     let centre_y = 0.5 * (fit.y.0 + fit.y.1);
-    View::centered(centre_blocks * b, centre_y, x_span, x_span * aspect)
+    View::centered(centre_x, centre_y, x_span, x_span * aspect)
 }
 
 /// One column of a movie's ladder: blocks `start..start + len` drawn into
@@ -371,6 +451,9 @@ struct MoviePlan {
     columns: Vec<Column>,
     /// Where the time label goes when the ladder is folded.
     time_band: Option<Region>,
+    /// A following camera's reference fixed in the lab: the rest position
+    /// X_n of every block, drawn as a scale behind the ladder.
+    lab_scale: Option<Vec<f64>>,
 }
 
 impl MoviePlan {
@@ -423,6 +506,10 @@ impl MoviePlan {
                 (fold(&ladder, &traj.states, inner)?, Some(time))
             }
         };
+        let lab_scale = (camera == Camera::Follow).then(|| {
+            let rest = ladder.ground_state();
+            (0..ladder.n()).map(|i| rest[3 * i]).collect()
+        });
         Ok(Self {
             title: describe::title(scene),
             run,
@@ -430,6 +517,7 @@ impl MoviePlan {
             layout,
             columns,
             time_band,
+            lab_scale,
         })
     }
 
@@ -442,6 +530,7 @@ impl MoviePlan {
             snap = snap.with_time(traj.times[k]);
         }
         snap.clamp = c.start == 0;
+        snap.lab_scale = self.lab_scale.as_deref();
         Ok(snap)
     }
 
@@ -610,4 +699,45 @@ fn kymograph_chart(
     let mut k = Kymograph::new(&traj.times, &values, n);
     k.title = Some(&kymo_title);
     charts::kymograph(&k, width, height)
+}
+
+#[cfg(test)]
+mod wall_tests {
+    use super::*;
+
+    /// A state with these block angles (degrees); centres unused.
+    fn state(theta_deg: &[f64]) -> Vec<f64> {
+        theta_deg
+            .iter()
+            .flat_map(|t| [0.0, 0.0, t.to_radians()])
+            .collect()
+    }
+
+    #[test]
+    fn walls_are_sign_changes_of_the_polarisation() {
+        // −α above +α: a kink between blocks 2 and 3; back to −α: an
+        // antikink between blocks 5 and 6, nearer block 6.
+        let q = state(&[-60.0, -60.0, 60.0, 60.0, 60.0, -10.0, -60.0]);
+        let w = walls(&q);
+        assert_eq!(w.len(), 2);
+        assert!(w[0].kink && (w[0].at - 2.5).abs() < 1e-12, "{w:?}");
+        assert!(!w[1].kink && w[1].at > 5.5 && w[1].at < 6.0, "{w:?}");
+        let marks = wall_marks(&q);
+        assert_eq!(marks.len(), 2);
+        assert!(marks[0].label == "kink" && marks[0].side == style::HAlign::Left);
+        assert!(marks[1].label == "antikink" && marks[1].side == style::HAlign::Right);
+        assert!(
+            walls(&state(&[60.0; 5])).is_empty(),
+            "a ground state has none"
+        );
+    }
+
+    #[test]
+    fn walls_less_than_a_block_apart_are_a_collision() {
+        let q = state(&[-60.0, -60.0, -20.0, 5.0, -20.0, -60.0]);
+        let marks = wall_marks(&q);
+        assert_eq!(marks.len(), 1, "{marks:?}");
+        assert_eq!(marks[0].label, "collision");
+        assert!((marks[0].at - 4.0).abs() < 1e-9);
+    }
 }

@@ -137,3 +137,107 @@ fn fixed_report(scene: &Scene, config: &IntegratorConfig, t: &Trajectory) -> Int
         total_force_evals: t.force_evals,
     }
 }
+
+/// Largest cost of [`critical_step`]'s trial runs, in block-steps (steps
+/// times blocks): under a second.
+const CRITICAL_STEP_BUDGET: f64 = 2e7;
+
+/// The largest fixed step of `kind` at which every run of `scene` stays
+/// bounded, measured by bisection to 5 % (as `bench stability` does for
+/// the paper's scene), starting from the linear prediction (2/ω_max for
+/// symplectic Euler and Verlet, SPEC section 5). `None` where measuring
+/// would cost more than [`CRITICAL_STEP_BUDGET`], or no step down to a
+/// thousandth of the prediction stays bounded; `predicted` is returned
+/// either way.
+pub fn critical_step(scene: &Scene, kind: sim::IntegratorKind) -> Result<CriticalStep> {
+    let runs: Vec<Scene> = match scene.runs() {
+        r if r.is_empty() => vec![scene.clone()],
+        r => r.into_iter().map(|(s, _)| s).collect(),
+    };
+    let mut predicted = f64::INFINITY;
+    let mut scenarios = Vec::new();
+    for s in &runs {
+        let params = s.model.params()?;
+        let omega_max = crate::theory::dispersion::omega_max_clamped(&params)?;
+        let damping = crate::bench::damping_rate(&params);
+        predicted = predicted.min(crate::bench::predicted_dt(kind, omega_max, damping));
+        scenarios.push(s.scenario()?);
+    }
+    let bounded = |dt: f64| -> Result<bool> {
+        let config = IntegratorConfig::fixed(kind, dt);
+        for sc in &scenarios {
+            match sim::simulate(sc, &[], &config) {
+                Ok(_) => {}
+                Err(e) if e.is_failed_run() => return Ok(false),
+                Err(e) => return Err(e),
+            }
+        }
+        Ok(true)
+    };
+    let cost_per_unit_step: f64 = runs.iter().map(|s| s.run.t_end * s.model.n as f64).sum();
+    let mut spent = 0.0;
+    let mut affordable = |dt: f64| {
+        spent += cost_per_unit_step / dt;
+        spent <= CRITICAL_STEP_BUDGET
+    };
+    let unmeasured = CriticalStep {
+        measured: None,
+        predicted,
+    };
+    if !predicted.is_finite() || predicted <= 0.0 {
+        return Ok(unmeasured);
+    }
+    // Bracket [lo, hi]: lo bounded, hi not.
+    let (mut lo, mut hi) = (predicted, predicted);
+    loop {
+        if !affordable(lo) {
+            return Ok(unmeasured);
+        }
+        if bounded(lo)? {
+            break;
+        }
+        hi = lo;
+        lo *= 0.5;
+        if lo < 1e-3 * predicted {
+            return Ok(unmeasured);
+        }
+    }
+    if hi == lo {
+        loop {
+            hi *= 2.0;
+            if !affordable(hi) {
+                return Ok(unmeasured);
+            }
+            if !bounded(hi)? {
+                break;
+            }
+            lo = hi;
+            if hi > 1e3 * predicted {
+                return Ok(unmeasured);
+            }
+        }
+    }
+    while hi / lo > 1.05 {
+        let mid = (lo * hi).sqrt();
+        if !affordable(mid) {
+            break;
+        }
+        if bounded(mid)? {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(CriticalStep {
+        measured: Some(lo),
+        predicted,
+    })
+}
+
+/// The stable step of a scene: measured (the largest step found bounded)
+/// and predicted by the linear theory, in τ.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CriticalStep {
+    pub measured: Option<f64>,
+    pub predicted: f64,
+}

@@ -66,7 +66,7 @@ pub fn simulate_verified_observed(
     );
     let mut coarse = match first_coarse {
         Ok(t) => Some(t),
-        Err(Error::Failed(_)) => None,
+        Err(e) if e.is_failed_run() => None,
         Err(e) => return Err(e),
     };
     if let Some(c) = &coarse {
@@ -82,7 +82,7 @@ pub fn simulate_verified_observed(
         };
         let fine = match run {
             Ok(t) => t,
-            Err(Error::Failed(_)) => {
+            Err(e) if e.is_failed_run() => {
                 dt *= 0.5;
                 coarse = None;
                 continue;

@@ -172,8 +172,8 @@ pub fn run_to_end(_t: f64, _arrivals: &[Option<f64>]) -> bool {
 
 /// Integrates `scenario` to its end, recording the state at `sample_times`
 /// (each in [0, t_end]) and observing arrival times at every step.
-/// A diverging run returns `Error::Failed` naming the integrator, its step
-/// and the time; no partial result escapes.
+/// A diverging run returns `Error::Diverged` naming the integrator, its
+/// step and the time; no partial result escapes.
 pub fn simulate(
     scenario: &Scenario,
     sample_times: &[f64],
@@ -540,11 +540,12 @@ impl DivergenceWatch {
         Ok(())
     }
 
-    fn diverged(&self, t: f64, what: &str) -> Error {
-        Error::failed(format!(
-            "{} diverged at t = {t:.2} τ ({}): {what}; hint: use a smaller --dt or a stable \
-             integrator such as symplectic-euler, verlet or dopri5",
-            self.name, self.step
-        ))
+    fn diverged(&self, t: f64, what: &'static str) -> Error {
+        Error::Diverged(Box::new(crate::error::Divergence {
+            integrator: self.name,
+            step: self.step.clone(),
+            t,
+            what,
+        }))
     }
 }

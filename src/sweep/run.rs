@@ -93,6 +93,7 @@ fn until_decided(scenario: &Scenario, config: &IntegratorConfig, rule: &Rule) ->
             Ok(Ok((d, traj)))
         }
         Err(Error::Failed(msg)) => Ok(Err(msg)),
+        Err(Error::Diverged(d)) => Ok(Err(d.to_string())),
         Err(e) => Err(e),
     }
 }

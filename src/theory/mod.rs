@@ -10,6 +10,7 @@ pub mod compatibility;
 pub mod dispersion;
 pub mod edge;
 pub mod figures;
+pub mod formulas;
 pub mod gravity;
 pub mod linalg;
 pub mod report;

@@ -2,11 +2,13 @@
 //! degenerate ground states), Fig. S3 (the gapless α = 0 configuration)
 //! and Fig. S4 (zero-mode shapes, eq:zm_n and the model's true zero modes).
 
-use super::{FigureInput, configuration, frame, grid, signed_deg};
+use super::{FigureInput, configuration, frame, grid, pen, signed_deg};
 use crate::error::Result;
 use crate::model::Ladder;
+use crate::model::ladder::nodes;
 use crate::render::charts::line_chart;
 use crate::render::compose::Panel;
+use crate::render::snapshot::{Region, Snapshot, pixel_of};
 use crate::render::style::{self, DARK};
 use crate::render::{Axis, ChartSpec, Legend, Marker, Picture, Series};
 use crate::theory::figures::{gapless_configuration, zero_mode_shape};
@@ -21,11 +23,16 @@ pub fn ground_states(input: &FigureInput) -> Result<Picture> {
     let plus = Ladder::new(input.params(n, b, alpha)?);
     let minus = Ladder::new(input.params(n, b, -alpha)?);
     let (qp, qm) = (plus.ground_state(), minus.ground_state());
+    let with_arrows = |ladder: &Ladder, q: &[f64]| -> Result<Picture> {
+        let mut p = configuration(ladder, q, None, LADDER_SIZE)?;
+        orientation_arrows(&mut p, ladder, q)?;
+        Ok(p)
+    };
     let panels = vec![
-        Panel::new(configuration(&plus, &qp, None, LADDER_SIZE)?)
+        Panel::new(with_arrows(&plus, &qp)?)
             .label("(i)")
             .caption(format!("α = {}", signed_deg(alpha))),
-        Panel::new(configuration(&minus, &qm, None, LADDER_SIZE)?)
+        Panel::new(with_arrows(&minus, &qm)?)
             .label("(ii)")
             .caption(format!("α = {}", signed_deg(-alpha))),
         Panel::new(configuration(&plus, &qp, Some(&qm), LADDER_SIZE)?)
@@ -35,13 +42,51 @@ pub fn ground_states(input: &FigureInput) -> Result<Picture> {
     let body = grid(&panels, 3)?;
     let notes = format!(
         "N = {n}, b/s = {b}, a = {:.3} s. Each block is drawn from its red A end to its \
-         blue B end, which marks its orientation: the blocks of (i) and (ii) tilt the opposite \
-         way (sin θ = ±{:.2}), while the centres coincide (iii). Both states have the same \
-         energy U_{{min}} = −2mgb per pair of blocks.",
+         blue B end; the arrow at its height points from B to A: its orientation, up in every \
+         block of (i) and down in every block of (ii). The blocks of (i) and (ii) tilt the \
+         opposite way (sin θ = ±{:.2}), while the centres coincide (iii). Both states have the \
+         same energy U_{{min}} = −2mgb per pair of blocks.",
         plus.a,
         alpha.to_radians().sin()
     );
     frame(&input.title, &body, &notes, 760)
+}
+
+/// An arrow beside each block of a [`configuration`] picture, in a column
+/// to the right of the ladder at the height of the block's centre, parallel
+/// to the block and pointing from its B end to its A end (the paper's
+/// Fig. 2d: "Arrow indicates orientation of each block").
+fn orientation_arrows(p: &mut Picture, ladder: &Ladder, q: &[f64]) -> Result<()> {
+    let mut snap = Snapshot::new(ladder, q)?;
+    snap.clamp = false;
+    let (w, h) = p.pixel_size();
+    let region = Region::full(w, h);
+    let ends: Vec<((f32, f32), (f32, f32))> = (0..ladder.n())
+        .map(|i| {
+            let (a, b) = nodes(q, i);
+            (pixel_of(region, &snap, a), pixel_of(region, &snap, b))
+        })
+        .collect();
+    let right = ends
+        .iter()
+        .flat_map(|(a, b)| [a.0, b.0])
+        .fold(f32::MIN, f32::max);
+    let column = right + 16.0;
+    for (pa, pb) in ends {
+        let (dx, dy) = (pa.0 - pb.0, pa.1 - pb.1);
+        let len = (dx * dx + dy * dy).sqrt().max(1e-3);
+        let (ux, uy) = (dx / len, dy / len);
+        let half = 0.4 * len;
+        let mid = (column, 0.5 * (pa.1 + pb.1));
+        pen::arrow(
+            p,
+            (mid.0 - half * ux, mid.1 - half * uy),
+            (mid.0 + half * ux, mid.1 + half * uy),
+            1.6,
+            DARK,
+        );
+    }
+    Ok(())
 }
 
 /// Fig. S3: the α = 0 configuration (b/s = 1.3, N = 10) beside its
@@ -146,4 +191,45 @@ pub fn zero_modes(input: &FigureInput) -> Result<Picture> {
         res.join("; ")
     );
     frame(&input.title, &body, &notes, 760)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    use tiny_skia::Pixmap;
+
+    /// Widest run of dark pixels in the `rows` rows from the top of the
+    /// first (topmost) arrow.
+    fn head_width_at_top(p: &Pixmap, rows: u32) -> u32 {
+        let dark = |x: u32, y: u32| p.pixel(x, y).is_some_and(|c| c.red() < 128);
+        let top = (0..p.height())
+            .find(|&y| (0..p.width()).any(|x| dark(x, y)))
+            .expect("an arrow was drawn");
+        (top..top + rows)
+            .map(|y| (0..p.width()).filter(|&x| dark(x, y)).count() as u32)
+            .max()
+            .unwrap_or(0)
+    }
+
+    #[test]
+    fn arrows_point_up_in_one_ground_state_and_down_in_the_other() {
+        let input = FigureInput {
+            title: String::new(),
+            model: crate::scene::Model::default(),
+            alphas: vec![],
+            a_over_b: vec![],
+            modes: vec![],
+        };
+        let mut widths = Vec::new();
+        for alpha in [75.0, -75.0] {
+            let ladder = Ladder::new(input.params(10, 1.2, alpha).unwrap());
+            let q = ladder.ground_state();
+            let mut p = Picture::new(LADDER_SIZE.0 as f32, LADDER_SIZE.1 as f32);
+            orientation_arrows(&mut p, &ladder, &q).unwrap();
+            widths.push(head_width_at_top(&p.to_pixmap().unwrap(), 6));
+        }
+        // An arrowhead at the top is wide; a shaft at the top is thin.
+        assert!(widths[0] >= 6 && widths[1] <= 3, "{widths:?}");
+    }
 }

@@ -66,16 +66,24 @@ pub fn gravity_potential(input: &FigureInput) -> Result<Picture> {
     frame(&input.title, &body, &notes, 900)
 }
 
+/// The U(θ) curves' colours, with their names for the inset labels: none
+/// is red, green or blue, the colours of the A springs, the B springs and
+/// the block ends drawn in the insets.
+const CURVE_COLORS: [(Rgb, &str); 5] = [
+    (DARK, "black"),
+    (style::SERIES_EXTRA[1], "purple"),
+    (style::SERIES_EXTRA[2], "brown"),
+    (style::SERIES_EXTRA[0], "orange"),
+    (style::SERIES_EXTRA[3], "pink"),
+];
+
 fn curve_color(i: usize) -> Rgb {
-    style::series_color(i + 1)
+    CURVE_COLORS[i % CURVE_COLORS.len()].0
 }
 
 /// The name of `curve_color(i)`, for the inset labels.
 fn color_name(i: usize) -> &'static str {
-    ["red", "blue", "green", "orange", "purple"]
-        .get(i)
-        .copied()
-        .unwrap_or("")
+    CURVE_COLORS.get(i).map_or("", |c| c.1)
 }
 
 /// Ground states of 4 blocks at θ = ∓α for the curves `which`, one row per
@@ -312,7 +320,8 @@ fn edge_panel(input: &FigureInput, sign: f64) -> Result<Picture> {
         spec = spec
             .series(Series::line(
                 format!(
-                    "e^{{−κ(n−1)b}}, κb = {}",
+                    "{}, κb = {}",
+                    crate::theory::formulas::EDGE_DECAY,
                     format!("{kb:.2}").replace('-', "−")
                 ),
                 line.collect(),
@@ -368,4 +377,19 @@ fn model_barrier(input: &FigureInput, alpha_deg: f64) -> Option<f64> {
     let at_zero = gravity::model_pair_spacing(&p, 0.0, guess)?;
     let at_alpha = gravity::model_pair_spacing(&p, p.alpha, [b, -p.alpha.cos()])?;
     Some(2.0 * (at_alpha[0] - at_zero[0]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn u_curves_avoid_the_spring_and_block_end_colours() {
+        for (c, name) in CURVE_COLORS {
+            for taken in [RED, BLUE, style::GREEN] {
+                let d: i32 = (0..3).map(|k| (c[k] as i32 - taken[k] as i32).abs()).sum();
+                assert!(d > 120, "{name} is too close to {taken:?}");
+            }
+        }
+    }
 }

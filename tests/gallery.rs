@@ -1,0 +1,308 @@
+//! The gallery page `index.html` as a reader meets it: every file it names
+//! exists, every picture has one caption and words for its alt text, and,
+//! in a real browser (Debian's `chromium`, headless), every image and
+//! video loads. The browser test saves screenshots under
+//! `target/tmp/gallery/` to look at; it is skipped, with a message, where no
+//! chromium is installed (`.ci/run` installs it).
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// Renders the whole catalogue, small and fast, into a fresh folder.
+fn render_all(tag: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("ladder-gallery-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(["all", "--frames", "20", "--size", "320x240", "--out"])
+        .arg(&dir)
+        .output()
+        .expect("the ladder binary runs");
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    dir
+}
+
+/// The values of attribute `attr` (`src="..."`) in `html`, unescaped.
+fn attributes(html: &str, attr: &str) -> Vec<String> {
+    let key = format!(" {attr}=\"");
+    html.split(&key)
+        .skip(1)
+        .filter_map(|s| s.split_once('"').map(|(v, _)| v.replace("&amp;", "&")))
+        .collect()
+}
+
+#[test]
+fn every_link_and_picture_of_the_page_is_a_file_the_run_wrote() {
+    let dir = render_all("links");
+    let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
+    let written: BTreeSet<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|f| f != "index.html")
+        .collect();
+    let linked: BTreeSet<String> = attributes(&html, "href")
+        .into_iter()
+        .chain(attributes(&html, "src"))
+        .filter(|h| !h.starts_with('#'))
+        .collect();
+    for f in &linked {
+        assert!(
+            written.contains(f),
+            "the page names {f}, which is not written"
+        );
+    }
+    for f in &written {
+        assert!(
+            linked.contains(f),
+            "{f} was written but the page does not link it"
+        );
+    }
+    // One card per scene, each with exactly one caption, and alt text in words.
+    let cards = html.matches("<figure class=\"card").count();
+    assert_eq!(cards, 25, "16 figures (3 of them sweeps) and 9 movies");
+    assert_eq!(html.matches("<figcaption>").count(), cards);
+    for alt in attributes(&html, "alt") {
+        assert!(
+            alt.len() > 40 && !alt.contains(".png") && !alt.contains(".gif"),
+            "alt text should describe the picture: {alt}"
+        );
+    }
+    // The model level is a sentence, never a bare word.
+    for level in html.split("<p class=\"level\">").skip(1) {
+        let sentence = level.split("</p>").next().unwrap();
+        assert!(
+            sentence.split_whitespace().count() > 6 && sentence.ends_with('.'),
+            "{sentence}"
+        );
+    }
+    // A movie's title is drawn in its picture and listed in the contents,
+    // not repeated in its caption.
+    let movie4 = html.split("id=\"movie-4\"").nth(1).unwrap();
+    let caption = movie4
+        .split("<figcaption>")
+        .nth(1)
+        .and_then(|c| c.split("</figcaption>").next())
+        .unwrap();
+    assert!(!caption.contains("kink, α = 60°"), "{caption}");
+    assert!(html.contains("Not made here: figures 1a, 1b, 2a, 4b, S1 and S2"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The browser: `LADDER_CHROMIUM`, else the first of chromium,
+/// chromium-browser, google-chrome on the PATH.
+fn browser() -> Option<PathBuf> {
+    if let Some(p) = std::env::var_os("LADDER_CHROMIUM") {
+        return Some(PathBuf::from(p));
+    }
+    let path = std::env::var_os("PATH")?;
+    ["chromium", "chromium-browser", "google-chrome"]
+        .iter()
+        .flat_map(|name| std::env::split_paths(&path).map(move |d| d.join(name)))
+        .find(|p| p.is_file())
+}
+
+/// Runs headless chromium on `page` with `extra` flags; returns stdout.
+/// Killed after two minutes: a hung browser fails the test, never hangs it.
+fn chromium(browser: &Path, profile: &Path, extra: &[String], page: &Path) -> String {
+    let _ = std::fs::remove_dir_all(profile);
+    let mut child = Command::new(browser)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--hide-scrollbars",
+        ])
+        .arg(format!("--user-data-dir={}", profile.display()))
+        .args(extra)
+        .arg(format!("file://{}", page.display()))
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("chromium starts");
+    let mut stdout = child.stdout.take().unwrap();
+    let reader = std::thread::spawn(move || {
+        let mut s = String::new();
+        std::io::Read::read_to_string(&mut stdout, &mut s).ok();
+        s
+    });
+    let start = Instant::now();
+    loop {
+        if child.try_wait().unwrap().is_some() {
+            break;
+        }
+        if start.elapsed() > Duration::from_secs(120) {
+            child.kill().ok();
+            child.wait().ok();
+            panic!("chromium did not finish within two minutes");
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    reader.join().unwrap()
+}
+
+/// A page script that waits for every image and video of the page to load
+/// or fail (lazy images made eager), then writes the outcome, and the
+/// page's height, into the DOM as JSON in `<pre id="check">`.
+const CHECK_SCRIPT: &str = r#"<script>
+window.addEventListener('load', () => {
+  const media = [...document.querySelectorAll('img, video')];
+  const report = { height: 0, media: [] };
+  let pending = media.length;
+  const finish = () => {
+    report.height = document.documentElement.scrollHeight;
+    const pre = document.createElement('pre');
+    pre.id = 'check';
+    pre.textContent = JSON.stringify(report);
+    document.body.appendChild(pre);
+  };
+  const done = (el, ok) => {
+    report.media.push({ src: el.getAttribute('src'), ok });
+    if (--pending === 0) finish();
+  };
+  if (pending === 0) finish();
+  for (const el of media) {
+    if (el.tagName === 'IMG') {
+      el.loading = 'eager';
+      if (el.complete) { done(el, el.naturalWidth > 0); continue; }
+      el.addEventListener('load', () => done(el, el.naturalWidth > 0), { once: true });
+      el.addEventListener('error', () => done(el, false), { once: true });
+    } else {
+      if (el.readyState >= 1) { done(el, true); continue; }
+      el.addEventListener('loadedmetadata', () => done(el, el.videoWidth > 0), { once: true });
+      el.addEventListener('error', () => done(el, false), { once: true });
+      el.load();
+    }
+  }
+});
+</script>"#;
+
+/// What the check script found: (src, loaded) per image and video, and the
+/// page's height in pixels.
+fn check_in_browser(
+    browser: &Path,
+    dir: &Path,
+    page_html: &str,
+    name: &str,
+) -> (Vec<(String, bool)>, u32) {
+    let page = dir.join(name);
+    std::fs::write(
+        &page,
+        page_html.replace("</body>", &format!("{CHECK_SCRIPT}</body>")),
+    )
+    .unwrap();
+    let dom = chromium(
+        browser,
+        &dir.join("profile-check"),
+        &[
+            "--virtual-time-budget=20000".into(),
+            "--window-size=1400,1000".into(),
+            "--dump-dom".into(),
+        ],
+        &page,
+    );
+    let json = dom
+        .split("<pre id=\"check\">")
+        .nth(1)
+        .and_then(|s| s.split("</pre>").next())
+        .unwrap_or_else(|| panic!("the page's check did not finish; DOM tail: {}", tail(&dom)))
+        .replace("&quot;", "\"")
+        .replace("&amp;", "&");
+    let v: serde_json::Value = serde_json::from_str(&json).expect("the check writes JSON");
+    let media = v["media"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| {
+            (
+                m["src"].as_str().unwrap_or("").to_string(),
+                m["ok"].as_bool().unwrap(),
+            )
+        })
+        .collect();
+    (media, v["height"].as_u64().unwrap_or(0) as u32)
+}
+
+fn tail(s: &str) -> &str {
+    let start = s.len().saturating_sub(400);
+    let start = (start..s.len())
+        .find(|&i| s.is_char_boundary(i))
+        .unwrap_or(0);
+    &s[start..]
+}
+
+#[test]
+fn every_image_and_video_loads_in_a_real_browser() {
+    let Some(browser) = browser() else {
+        eprintln!(
+            "SKIPPED: no chromium found (set LADDER_CHROMIUM or install Debian's chromium; \
+             .ci/run installs it)"
+        );
+        return;
+    };
+    let dir = render_all("browser");
+    let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
+    let expected = html.matches("<img ").count() + html.matches("<video ").count();
+    assert!(expected >= 22, "one picture per scene at least");
+
+    let (media, height) = check_in_browser(&browser, &dir, &html, "check.html");
+    assert_eq!(media.len(), expected, "every picture reported: {media:?}");
+    let broken: Vec<&String> = media.iter().filter(|(_, ok)| !ok).map(|(s, _)| s).collect();
+    assert!(broken.is_empty(), "broken in the browser: {broken:?}");
+
+    // The check can fail: a page with a missing and a corrupt picture.
+    std::fs::write(dir.join("corrupt.png"), b"not a png").unwrap();
+    let bad = html.replacen("<img src=\"", "<img src=\"missing.png\" data-x=\"", 1);
+    let bad = bad.replacen("<img src=\"figure-2b.png\"", "<img src=\"corrupt.png\"", 1);
+    let (media, _) = check_in_browser(&browser, &dir, &bad, "check-bad.html");
+    let failed: BTreeSet<&str> = media
+        .iter()
+        .filter(|(_, ok)| !ok)
+        .map(|(s, _)| s.as_str())
+        .collect();
+    assert_eq!(
+        failed,
+        BTreeSet::from(["missing.png", "corrupt.png"]),
+        "{media:?}"
+    );
+
+    // Screenshots to look at: the whole page on a wide screen, the top of
+    // it on a phone-sized one.
+    let shots = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("gallery");
+    std::fs::create_dir_all(&shots).unwrap();
+    let index = dir.join("index.html");
+    for (file, width, h) in [
+        ("index-1400.png", 1400, height.clamp(600, 16_000)),
+        ("index-420.png", 420, 2400),
+    ] {
+        let shot = shots.join(file);
+        let _ = std::fs::remove_file(&shot);
+        chromium(
+            &browser,
+            &dir.join("profile-shot"),
+            &[
+                format!("--window-size={width},{h}"),
+                "--virtual-time-budget=20000".into(),
+                format!("--screenshot={}", shot.display()),
+            ],
+            &index,
+        );
+        let meta = std::fs::metadata(&shot).expect("chromium saved the screenshot");
+        assert!(meta.len() > 10_000, "{} is nearly empty", shot.display());
+        eprintln!("screenshot: {}", shot.display());
+    }
+    // A wide screen shows more than one card per row: the page is a grid,
+    // not one tall column.
+    assert!(height < 12_000, "page height {height} px at 1400 px wide");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,0 +1,219 @@
+//! What the user reads: IDs in any case, the closest ID or subcommand for a
+//! typo, the paper's photographs and recordings named as such, clap's
+//! whole message for a missing argument, a divergence hint that names a
+//! step that works, and a summary line that says what was written.
+
+use std::process::{Command, Output};
+
+fn ladder(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(args)
+        .output()
+        .expect("the ladder binary runs")
+}
+
+fn temp_dir(tag: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("ladder-msg-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+/// Exit 2, one line on stderr containing every needle, nothing on stdout.
+fn bad_input(args: &[&str], needles: &[&str]) -> String {
+    let out = ladder(args);
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{args:?}: one line: {stderr}");
+    for n in needles {
+        assert!(stderr.contains(n), "{args:?}: '{n}' not in {stderr}");
+    }
+    assert!(out.stdout.is_empty());
+    stderr
+}
+
+#[test]
+fn ids_are_case_insensitive() {
+    let dir = temp_dir("case");
+    let out = ladder(&["figure", "s5", "--out", dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    assert!(dir.join("figure-S5.png").is_file());
+    let scene = ladder(&["scene", "s6"]);
+    assert_eq!(scene.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&scene.stdout).contains("label = \"Fig. S6\""));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn an_unknown_id_suggests_the_closest() {
+    bad_input(
+        &["figure", "S7"],
+        &["unknown figure 'S7'", "did you mean S3, S4, S5 or S6?"],
+    );
+    bad_input(&["figure", "edge"], &["did you mean edge-mode?"]);
+    bad_input(&["figure", "windng"], &["did you mean winding?"]);
+    bad_input(&["figure", "4"], &["did you mean 4a or movie 4?"]);
+    bad_input(&["movie", "13"], &["did you mean 3, 10 or 11?"]);
+    let far = bad_input(
+        &["movie", "zzz"],
+        &["unknown movie 'zzz'", "choose one of 3, 4"],
+    );
+    assert!(!far.contains("did you mean"), "{far}");
+    bad_input(&["scene", "S9"], &["unknown scene 'S9'", "figure S3"]);
+}
+
+#[test]
+fn a_mistyped_subcommand_suggests_the_closest() {
+    bad_input(&["simulat"], &["'simulat'", "'simulate'"]);
+    bad_input(&["figures", "3"], &["'figures'", "'figure'"]);
+}
+
+#[test]
+fn photographs_and_recordings_are_named_as_such() {
+    for (kind, id, what) in [
+        ("movie", "1", "recording"),
+        ("movie", "2", "recording"),
+        ("movie", "12", "recording"),
+        ("figure", "1a", "photograph"),
+        ("figure", "1b", "photograph"),
+        ("figure", "2A", "photograph"),
+        ("figure", "4b", "photograph"),
+        ("figure", "S1", "photograph"),
+        ("figure", "s2", "drawing of the 3D-printed"),
+    ] {
+        let line = bad_input(
+            &[kind, id],
+            &[
+                what,
+                "this program does not make it",
+                "no photographs or recordings of real toys",
+                "figures 1c, 2b",
+                "movies 3, 4",
+            ],
+        );
+        assert!(
+            line.contains(&format!("{kind} {}", id.to_lowercase()))
+                || line.contains(&format!("{kind} {}", id.to_uppercase()))
+        );
+    }
+    bad_input(&["figure", "2a"], &["the nearest it makes: figure 2b"]);
+    bad_input(&["scene", "12"], &["movie 12 of the paper"]);
+}
+
+#[test]
+fn a_missing_argument_gets_clap_s_whole_message() {
+    for (args, arg) in [(&["bench"][..], "<STUDY>"), (&["render"][..], "<FILE>")] {
+        let out = ladder(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(
+            stderr.starts_with("ladder: the following required arguments were not provided:"),
+            "{stderr}"
+        );
+        for needle in [arg, "Usage: ladder", "--help"] {
+            assert!(stderr.contains(needle), "'{needle}' not in {stderr}");
+        }
+    }
+}
+
+#[test]
+fn a_diverged_run_hints_a_step_that_works() {
+    let out = ladder(&["simulate", "--dt", "2", "--t-end", "1500"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("symplectic-euler diverged at t = ")
+            && stderr.contains("--integrator auto"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("such as symplectic-euler"), "{stderr}");
+    // The measured step is a step at which the same run stays bounded.
+    let marker = "stays bounded up to dt ≈ ";
+    let critical: f64 = stderr
+        .split(marker)
+        .nth(1)
+        .and_then(|s| s.split(' ').next())
+        .and_then(|x| x.parse().ok())
+        .unwrap_or_else(|| panic!("no measured step in {stderr}"));
+    assert!(critical > 0.1 && critical < 2.0, "{critical}");
+    let at = critical.to_string();
+    let ok = ladder(&["simulate", "--dt", &at, "--t-end", "1500"]);
+    assert_eq!(
+        ok.status.code(),
+        Some(0),
+        "--dt {at}: {}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
+    let over = (critical * 1.3).to_string();
+    let fails = ladder(&["simulate", "--dt", &over, "--t-end", "1500"]);
+    assert_eq!(fails.status.code(), Some(1), "--dt {over} should diverge");
+}
+
+#[test]
+fn a_scene_file_s_hint_names_its_keys() {
+    let dir = temp_dir("keys");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("fast.toml");
+    std::fs::write(
+        &file,
+        "name = \"fast\"\n[run]\nt_end = 1200.0\nintegrator = \"verlet\"\ndt = 2.0\n\
+         [output]\nkind = \"kymograph\"\n",
+    )
+    .unwrap();
+    let out = ladder(&[
+        "render",
+        file.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("verlet diverged")
+            && stderr.contains("[run] dt below that")
+            && stderr.contains("[run] integrator = \"auto\""),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("--dt"), "{stderr}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn values_are_reported_as_typed() {
+    bad_input(&["simulate", "--alpha", "120"], &["--alpha", "got 120"]);
+}
+
+#[test]
+fn the_summary_names_what_was_written() {
+    let dir = temp_dir("summary");
+    let d = dir.to_str().unwrap();
+    let out = ladder(&["figure", "2d", "--out", d]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.starts_with("ladder: wrote figure-2d.png and figure-2d.json (figure 2d) into "),
+        "{stderr}"
+    );
+    let out = ladder(&[
+        "movie",
+        "7",
+        "--frames",
+        "4",
+        "--size",
+        "160x120",
+        "--out",
+        d,
+        "--verbose",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let lines: Vec<&str> = stderr.lines().collect();
+    assert_eq!(lines.len(), 4, "{stderr}");
+    for (line, f) in lines
+        .iter()
+        .zip(["movie-7.gif", "movie-7-kymograph.png", "movie-7.json"])
+    {
+        assert_eq!(*line, dir.join(f).display().to_string());
+        assert!(dir.join(f).is_file());
+    }
+    assert!(lines[3].contains("wrote movie-7.gif, movie-7-kymograph.png and movie-7.json"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
