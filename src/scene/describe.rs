@@ -228,7 +228,8 @@ pub fn picture(scene: &Scene) -> String {
         ),
         OutputSpec::Data => "No picture: the run's numbers only".into(),
         OutputSpec::Sweep(sw) => format!(
-            "Chart of the outcome of every run of a sweep over {}",
+            "Charts of a sweep of the {n}-block ladder over {}: how far the wave got and \
+             how fast, coloured by its outcome, against the parameters swept",
             sw.describe_grid()
         ),
         OutputSpec::Theory(t) => match t.figure {
