@@ -18,16 +18,39 @@ pub struct Item<'a> {
 
 fn item(it: &Item<'_>) -> String {
     let scene = it.scene;
+    let has = |ext: &str| it.files.iter().any(|f| f.ends_with(ext));
+    let alt = escape(&crate::render::style::plain_text(&describe::title(scene)));
     let images: String = it
         .files
         .iter()
-        .filter(|f| f.ends_with(".png") || f.ends_with(".gif"))
+        .filter_map(|f| {
+            let f = escape(f);
+            // One picture per figure (PNG, else SVG) and per movie (MP4,
+            // else GIF); the other formats as links.
+            if f.ends_with(".png") || (f.ends_with(".svg") && !has(".png")) {
+                Some(format!("<a href=\"{f}\"><img src=\"{f}\" alt=\"{alt}\"></a>"))
+            } else if f.ends_with(".gif") && !has(".mp4") {
+                Some(format!("<a href=\"{f}\"><img src=\"{f}\" alt=\"{alt}\"></a>"))
+            } else if f.ends_with(".mp4") {
+                Some(format!(
+                    "<video src=\"{f}\" controls loop muted playsinline title=\"{alt}\"></video>"
+                ))
+            } else {
+                None
+            }
+        })
+        .collect();
+    let other: String = it
+        .files
+        .iter()
+        .filter(|f| {
+            f.ends_with(".pdf")
+                || (f.ends_with(".svg") && has(".png"))
+                || (f.ends_with(".gif") && has(".mp4"))
+        })
         .map(|f| {
-            format!(
-                "<a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a>",
-                escape(f),
-                escape(&describe::title(scene))
-            )
+            let ext = f.rsplit('.').next().unwrap_or("").to_uppercase();
+            format!(" <a href=\"{0}\">{ext}</a>", escape(f))
         })
         .collect();
     let data: String = it
@@ -35,14 +58,15 @@ fn item(it: &Item<'_>) -> String {
         .iter()
         .filter(|f| f.ends_with(".json"))
         .map(|f| format!(" <a href=\"{0}\">data</a>", escape(f)))
-        .collect();
+        .collect::<String>()
+        + &other;
     let caption = scene.caption.as_deref().unwrap_or("");
     format!(
         "<figure id=\"{stem}\">{images}<figcaption><b>{title}.</b> {caption}<br>\
          <small>{params}; model: {fidelity}.{data}</small></figcaption></figure>\n",
         stem = escape(&scene.stem()),
         title = escape(&describe::title(scene)),
-        caption = escape(caption),
+        caption = crate::render::style::markup_html(caption),
         params = escape(&describe::parameters(scene)),
         fidelity = scene.fidelity().name(),
     )
@@ -71,7 +95,7 @@ pub fn index_html(items: &[Item<'_>]) -> String {
          body{{font-family:'DejaVu Sans',sans-serif;max-width:1400px;margin:auto;padding:1em}}\
          figure{{display:inline-block;vertical-align:top;max-width:100%;margin:1em 0;\
          border-top:1px solid #ccc;padding-top:.5em}}\
-         img{{max-width:100%;margin-right:.5em;vertical-align:top}}\
+         img,video{{max-width:100%;margin-right:.5em;vertical-align:top}}\
          figcaption{{max-width:900px}}</style></head><body>\n\
          <h1>Topological antiqued mechanical toy</h1>\n\
          <p>Figures and supplemental movies of Wada, Mizobata, Ueno and Yoneda, \
