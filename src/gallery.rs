@@ -27,10 +27,13 @@ fn item(it: &Item<'_>) -> String {
             let f = escape(f);
             // One picture per figure (PNG, else SVG) and per movie (MP4,
             // else GIF); the other formats as links.
-            if f.ends_with(".png") || (f.ends_with(".svg") && !has(".png")) {
-                Some(format!("<a href=\"{f}\"><img src=\"{f}\" alt=\"{alt}\"></a>"))
-            } else if f.ends_with(".gif") && !has(".mp4") {
-                Some(format!("<a href=\"{f}\"><img src=\"{f}\" alt=\"{alt}\"></a>"))
+            let picture = f.ends_with(".png")
+                || (f.ends_with(".svg") && !has(".png"))
+                || (f.ends_with(".gif") && !has(".mp4"));
+            if picture {
+                Some(format!(
+                    "<a href=\"{f}\"><img src=\"{f}\" alt=\"{alt}\"></a>"
+                ))
             } else if f.ends_with(".mp4") {
                 Some(format!(
                     "<video src=\"{f}\" controls loop muted playsinline title=\"{alt}\"></video>"

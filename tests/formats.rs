@@ -10,7 +10,7 @@ mod common;
 
 use common::golden::check;
 use jacobs_ladder::catalog;
-use jacobs_ladder::encode::{self, Format, Formats, Kind};
+use jacobs_ladder::encode::{self, Format};
 use jacobs_ladder::render::Picture;
 use jacobs_ladder::scene;
 use jacobs_ladder::scenes;
@@ -82,10 +82,19 @@ fn svg_of_every_figure_matches_its_png() {
         dump(&format!("{name}.svg"), &svg);
         dump(&format!("{name}.png"), &encode::png_bytes(&png).unwrap());
         let back = rasterize_svg_file(&svg, png.width(), png.height());
-        dump(&format!("{name}-from-svg.png"), &encode::png_bytes(&back).unwrap());
+        dump(
+            &format!("{name}-from-svg.png"),
+            &encode::png_bytes(&back).unwrap(),
+        );
         let (mean, frac) = difference(&png, &back, 64);
-        eprintln!("{name}: mean {mean:.3}, {:.3} % of pixels off by > 64", 100.0 * frac);
-        assert!(mean < 1.0 && frac < 0.01, "{name}: mean {mean}, fraction {frac}");
+        eprintln!(
+            "{name}: mean {mean:.3}, {:.3} % of pixels off by > 64",
+            100.0 * frac
+        );
+        assert!(
+            mean < 1.0 && frac < 0.01,
+            "{name}: mean {mean}, fraction {frac}"
+        );
     }
 }
 
@@ -112,21 +121,39 @@ fn pdf_of_every_figure_is_vector() {
         let ops = pdf_operators(&doc);
         let count = |op: &str| ops.iter().filter(|o| *o == op).count();
         // Paths (m, l, c), fills (f) and strokes (S): the drawing is vector.
-        assert!(count("m") > 100 && count("l") > 100, "{name}: too few path operators");
+        assert!(
+            count("m") > 100 && count("l") > 100,
+            "{name}: too few path operators"
+        );
         assert!(count("c") > 100, "{name}: no curves (glyph outlines)");
-        assert!(count("f") >= 10 && count("S") >= 10, "{name}: fills {} strokes {}", count("f"), count("S"));
+        assert!(
+            count("f") >= 10 && count("S") >= 10,
+            "{name}: fills {} strokes {}",
+            count("f"),
+            count("S")
+        );
         // No images at all: nothing is drawn as a raster (`Do` paints XObjects).
         assert_eq!(count("Do"), 0, "{name}: draws an XObject");
         assert_eq!(count("BI"), 0, "{name}: has an inline image");
         for (_, obj) in doc.objects.iter() {
             if let Ok(stream) = obj.as_stream() {
                 let subtype = stream.dict.get(b"Subtype").and_then(|s| s.as_name()).ok();
-                assert!(subtype != Some(b"Image".as_slice()), "{name}: image XObject");
+                assert!(
+                    subtype != Some(b"Image".as_slice()),
+                    "{name}: image XObject"
+                );
             }
         }
         // The page is the picture's size at 96 px per inch.
         let (_, page) = doc.get_pages().into_iter().next().unwrap();
-        let media = doc.get_dictionary(page).unwrap().get(b"MediaBox").unwrap().as_array().unwrap().clone();
+        let media = doc
+            .get_dictionary(page)
+            .unwrap()
+            .get(b"MediaBox")
+            .unwrap()
+            .as_array()
+            .unwrap()
+            .clone();
         let w = media[2].as_float().unwrap();
         assert!((w - 0.75 * pic.width()).abs() < 0.01, "{name}: width {w}");
     }
@@ -213,7 +240,11 @@ fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
 
     // Container, read by an independent parser.
     let kinds: Vec<String> = top_boxes(mp4).into_iter().map(|b| b.0).collect();
-    assert_eq!(kinds, ["ftyp", "moov", "mdat"], "the index comes before the frames");
+    assert_eq!(
+        kinds,
+        ["ftyp", "moov", "mdat"],
+        "the index comes before the frames"
+    );
     let mut reader =
         mp4::Mp4Reader::read_header(std::io::Cursor::new(mp4.as_slice()), mp4.len() as u64)
             .unwrap();
@@ -223,7 +254,11 @@ fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
     assert_eq!(track.media_type().unwrap(), mp4::MediaType::H264);
     assert_eq!((track.width(), track.height()), (320, 240));
     assert_eq!(track.sample_count(), 24);
-    assert!((track.frame_rate() - 12.0).abs() < 1e-6, "{}", track.frame_rate());
+    assert!(
+        (track.frame_rate() - 12.0).abs() < 1e-6,
+        "{}",
+        track.frame_rate()
+    );
     assert!((reader.duration().as_secs_f64() - 2.0).abs() < 0.01);
     let sps = track.sequence_parameter_set().unwrap().to_vec();
     let pps = track.picture_parameter_set().unwrap().to_vec();
@@ -243,7 +278,11 @@ fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
     let mut total = 0usize;
     for k in 0..24u32 {
         let sample = reader.read_sample(id, k + 1).unwrap().unwrap();
-        assert_eq!(sample.is_sync, k == 0, "key frames: the first only (5 s period)");
+        assert_eq!(
+            sample.is_sync,
+            k == 0,
+            "key frames: the first only (5 s period)"
+        );
         assert_eq!(sample.duration, 1000, "constant frame duration");
         total += sample.bytes.len();
         let mut annex_b = Vec::new();
@@ -317,16 +356,29 @@ fn movie_layout_scales_with_the_frame() {
             }
         }
     }
-    dump("frame-1920x1080-down.png", &encode::png_bytes(&down).unwrap());
+    dump(
+        "frame-1920x1080-down.png",
+        &encode::png_bytes(&down).unwrap(),
+    );
     let (mean, frac) = difference(&small, &down, 96);
-    eprintln!("1920x1080 scaled down vs 640x360: mean {mean:.2}, {:.2} % off by > 96", 100.0 * frac);
+    eprintln!(
+        "1920x1080 scaled down vs 640x360: mean {mean:.2}, {:.2} % off by > 96",
+        100.0 * frac
+    );
     assert!(mean < 3.0 && frac < 0.02, "mean {mean}, fraction {frac}");
 }
 
 #[test]
 fn nothing_is_cut_from_320x240_to_3840x2160() {
     let scene = movie_scene("4");
-    for (w, h) in [(320, 240), (640, 360), (640, 480), (1280, 720), (3840, 2160), (480, 1080)] {
+    for (w, h) in [
+        (320, 240),
+        (640, 360),
+        (640, 480),
+        (1280, 720),
+        (3840, 2160),
+        (480, 1080),
+    ] {
         let opts = scenes::MovieOptions {
             frames: 4,
             width: w,
@@ -352,7 +404,10 @@ fn nothing_is_cut_from_320x240_to_3840x2160() {
             }
         }
         if w == 320 || w == 480 {
-            dump(&format!("frame-{w}x{h}.png"), &encode::png_bytes(&f).unwrap());
+            dump(
+                &format!("frame-{w}x{h}.png"),
+                &encode::png_bytes(&f).unwrap(),
+            );
         }
     }
 }
@@ -369,4 +424,95 @@ fn golden_rasterised_svg() {
     let svg = encode::svg_bytes(&pic.to_tree(1.0).unwrap());
     let (w, h) = pic.pixel_size();
     check("svg-figure-edge-mode", &rasterize_svg_file(&svg, w, h));
+}
+
+// ------------------------------------------------------------ command line
+
+fn ladder(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("ladder-formats-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+#[test]
+fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
+    let out = scratch("bad");
+    let o = out.to_str().unwrap();
+    let cases: [(&[&str], &str); 9] = [
+        (
+            &["figure", "3", "--format", "jpg", "--out", o],
+            "--format: unknown format 'jpg'",
+        ),
+        (
+            &["movie", "4", "--format", "pdf", "--out", o],
+            "--format: a movie cannot be pdf",
+        ),
+        (
+            &["all", "--format", "png,webm", "--out", o],
+            "--format: unknown format 'webm'",
+        ),
+        (
+            &["movie", "4", "--format", "gif", "--fps", "60", "--out", o],
+            "--fps: a GIF plays at most 50",
+        ),
+        (
+            &[
+                "movie", "4", "--format", "mp4", "--size", "641x480", "--out", o,
+            ],
+            "try 642x480",
+        ),
+        (
+            &["movie", "4", "--size", "9000x480", "--out", o],
+            "between 64 and 4096",
+        ),
+        (&["figure", "2b", "--scale", "100", "--out", o], "--scale:"),
+        (&["figure", "3", "--out", "x.svg"], "--out is a folder"),
+        (&["figure", "3", "--out", "Cargo.toml"], "--out is a folder"),
+    ];
+    for (args, expected) in cases {
+        let r = ladder(args);
+        let err = String::from_utf8_lossy(&r.stderr);
+        assert_eq!(r.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(expected), "{args:?}: {err}");
+    }
+    assert!(!out.exists(), "nothing written on bad input");
+    assert!(!std::path::Path::new("x.svg").exists());
+}
+
+#[test]
+fn figure_in_every_format_and_scale() {
+    let out = scratch("figure");
+    let o = out.to_str().unwrap();
+    let r = ladder(&[
+        "figure",
+        "2d",
+        "--format",
+        "pdf,svg,png",
+        "--scale",
+        "2",
+        "--out",
+        o,
+    ]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let png = std::fs::read(out.join("figure-2d.png")).unwrap();
+    let svg = std::fs::read(out.join("figure-2d.svg")).unwrap();
+    let pdf = std::fs::read(out.join("figure-2d.pdf")).unwrap();
+    assert!(pdf.starts_with(b"%PDF-") && svg.starts_with(b"<svg"));
+    let (w, h) = image::image_dimensions(out.join("figure-2d.png")).unwrap();
+    let pic = &figures().iter().find(|(n, _)| n == "figure-2d").unwrap().1;
+    assert_eq!(
+        (w, h),
+        pic.scaled_size(2.0).unwrap(),
+        "--scale 2 doubles the pixels"
+    );
+    assert!(png.len() > 1000);
+    let _ = std::fs::remove_dir_all(&out);
 }

@@ -223,7 +223,12 @@ pub struct MovieArgs {
     pub format: MovieFormat,
     /// File formats, comma-separated: gif, mp4 (H.264; frame width and
     /// height must be even)
-    #[arg(long = "format", default_value = "gif", value_name = "LIST", help_heading = "Movie format")]
+    #[arg(
+        long = "format",
+        default_value = "gif",
+        value_name = "LIST",
+        help_heading = "Movie format"
+    )]
     pub formats: String,
 }
 
@@ -267,11 +272,21 @@ pub struct FigureArgs {
 pub struct FigureFormat {
     /// File formats, comma-separated: png, svg, pdf (SVG and PDF are vector,
     /// text as outlines; pdflatex includes the PDF)
-    #[arg(long = "format", default_value = "png", value_name = "LIST", help_heading = "Figure format")]
+    #[arg(
+        long = "format",
+        default_value = "png",
+        value_name = "LIST",
+        help_heading = "Figure format"
+    )]
     pub formats: String,
     /// Scale of PNG figures: 2 draws the same layout with twice the pixels
     /// each way (0.25..=8)
-    #[arg(long, default_value_t = 1.0, value_name = "S", help_heading = "Figure format")]
+    #[arg(
+        long,
+        default_value_t = 1.0,
+        value_name = "S",
+        help_heading = "Figure format"
+    )]
     pub scale: f32,
 }
 
@@ -280,7 +295,12 @@ pub struct FigureFormat {
 pub struct MixedFormat {
     /// File formats, comma-separated: png, svg, pdf for figures; gif, mp4
     /// for movies (a kind left out keeps its default, png or gif)
-    #[arg(long = "format", default_value = "png,gif", value_name = "LIST", help_heading = "Format")]
+    #[arg(
+        long = "format",
+        default_value = "png,gif",
+        value_name = "LIST",
+        help_heading = "Format"
+    )]
     pub formats: String,
     /// Scale of PNG figures: 2 draws the same layout with twice the pixels
     /// each way (0.25..=8)

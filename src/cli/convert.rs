@@ -282,12 +282,13 @@ pub fn check_out_dir(out: &Path) -> Result<()> {
     let ext = out
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    if let Some(ext) = ext.filter(|e| FILE_EXTENSIONS.contains(&e.as_str())) {
-        if !out.exists() {
-            return Err(Error::bad_input(format!(
-                "--out is a folder, not a file name: got {shown}; use --out DIR (the files are named after the scene) and --format {ext}"
-            )));
-        }
+    if let Some(ext) = ext.filter(|e| FILE_EXTENSIONS.contains(&e.as_str()))
+        && !out.exists()
+    {
+        return Err(Error::bad_input(format!(
+            "--out is a folder, not a file name: got {shown}; use --out DIR (the files are \
+             named after the scene) and --format {ext}"
+        )));
     }
     Ok(())
 }
@@ -324,7 +325,9 @@ mod tests {
         let e = check_out_dir(Path::new("x.svg")).unwrap_err().to_string();
         assert!(e.starts_with("--out is a folder"), "{e}");
         assert!(e.contains("--format svg"), "{e}");
-        let e = check_out_dir(Path::new("Cargo.toml")).unwrap_err().to_string();
+        let e = check_out_dir(Path::new("Cargo.toml"))
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("is a file"), "{e}");
     }
 
@@ -332,11 +335,11 @@ mod tests {
     fn formats_are_checked_before_work() {
         let movie = MovieOptions::default();
         let e = movie_outputs("pdf", &movie).unwrap_err().to_string();
-        assert_eq!(e, "--format: a movie cannot be pdf; a movie can be gif, mp4");
-        let fast = MovieOptions {
-            fps: 60.0,
-            ..movie
-        };
+        assert_eq!(
+            e,
+            "--format: a movie cannot be pdf; a movie can be gif, mp4"
+        );
+        let fast = MovieOptions { fps: 60.0, ..movie };
         let e = movie_outputs("gif", &fast).unwrap_err().to_string();
         assert!(e.starts_with("--fps: a GIF plays at most 50"), "{e}");
         let mixed = MixedFormat {
@@ -351,7 +354,12 @@ mod tests {
             formats: "png".into(),
             scale: 100.0,
         };
-        assert!(bad.outputs(&movie).unwrap_err().to_string().starts_with("--scale: "));
+        assert!(
+            bad.outputs(&movie)
+                .unwrap_err()
+                .to_string()
+                .starts_with("--scale: ")
+        );
     }
 
     #[test]

@@ -134,7 +134,10 @@ pub enum FormatError {
 impl fmt::Display for FormatError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            FormatError::Unknown { name, kind: Some(k) } => write!(
+            FormatError::Unknown {
+                name,
+                kind: Some(k),
+            } => write!(
                 f,
                 "unknown format '{name}'; a {} can be {}",
                 k.name(),
@@ -149,7 +152,12 @@ impl fmt::Display for FormatError {
                 }
             }
             FormatError::Empty { kind } => {
-                write!(f, "no format given; a {} can be {}", kind.name(), kind.list())
+                write!(
+                    f,
+                    "no format given; a {} can be {}",
+                    kind.name(),
+                    kind.list()
+                )
             }
             FormatError::WrongKind { format, kind } => write!(
                 f,
@@ -385,9 +393,15 @@ mod tests {
     #[test]
     fn refuses_bad_lists() {
         let e = Formats::parse("png,jpg", Kind::Figure).unwrap_err();
-        assert_eq!(e.to_string(), "unknown format 'jpg'; a figure can be png, svg, pdf");
+        assert_eq!(
+            e.to_string(),
+            "unknown format 'jpg'; a figure can be png, svg, pdf"
+        );
         let e = Formats::parse("pdf", Kind::Movie).unwrap_err();
-        assert_eq!(e.to_string(), "a movie cannot be pdf; a movie can be gif, mp4");
+        assert_eq!(
+            e.to_string(),
+            "a movie cannot be pdf; a movie can be gif, mp4"
+        );
         assert!(matches!(
             Formats::parse(" , ", Kind::Movie),
             Err(FormatError::Empty { .. })

@@ -10,9 +10,9 @@
 mod format;
 mod gif;
 mod isobmff;
+mod movie;
 #[cfg(feature = "mp4")]
 mod mp4;
-mod movie;
 mod pdf;
 mod png;
 mod svg;

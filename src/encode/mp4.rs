@@ -74,8 +74,7 @@ impl Mp4Writer {
             fps,
             ..Mp4Track::default()
         };
-        let done =
-            std::thread::spawn(move || encode_all(encoder, track, inbox, give_back));
+        let done = std::thread::spawn(move || encode_all(encoder, track, inbox, give_back));
         Ok(Self {
             width,
             height,
@@ -156,7 +155,9 @@ fn encode_all(
         let key = stream.frame_type() == FrameType::IDR;
         sample.clear();
         for l in 0..stream.num_layers() {
-            let Some(layer) = stream.layer(l) else { continue };
+            let Some(layer) = stream.layer(l) else {
+                continue;
+            };
             for n in 0..layer.nal_count() {
                 let Some(bytes) = layer.nal_unit(n) else {
                     continue;

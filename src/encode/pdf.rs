@@ -32,7 +32,8 @@ pub fn pdf_bytes(tree: &usvg::Tree) -> Result<Vec<u8>> {
     let content = page.content.finish();
     let compressed = miniz_oxide::deflate::compress_to_vec_zlib(content.as_slice(), 6);
 
-    let (catalog, pages, page_id, content_id) = (Ref::new(1), Ref::new(2), Ref::new(3), Ref::new(4));
+    let (catalog, pages, page_id, content_id) =
+        (Ref::new(1), Ref::new(2), Ref::new(3), Ref::new(4));
     let mut next = 5;
     let mut pdf = Pdf::new();
     pdf.catalog(catalog).pages(pages);
@@ -153,11 +154,9 @@ impl PageWriter {
             self.content.rect(0.0, 0.0, 0.0, 0.0).clip_nonzero();
         }
         self.content.end_path();
-        if !t.is_identity() {
-            if let Some(inv) = t.invert() {
-                self.content
-                    .transform([inv.sx, inv.ky, inv.kx, inv.sy, inv.tx, inv.ty]);
-            }
+        if let Some(inv) = t.invert().filter(|_| !t.is_identity()) {
+            self.content
+                .transform([inv.sx, inv.ky, inv.kx, inv.sy, inv.tx, inv.ty]);
         }
         Ok(())
     }
@@ -177,9 +176,9 @@ impl PageWriter {
         if !p.is_visible() {
             return Ok(());
         }
-        let fill = p.fill().map(|f| -> Result<_> {
-            Ok((color(f.paint())?, f.opacity().get(), f.rule()))
-        });
+        let fill = p
+            .fill()
+            .map(|f| -> Result<_> { Ok((color(f.paint())?, f.opacity().get(), f.rule())) });
         let stroke = p.stroke();
         let fill = fill.transpose()?;
         if fill.is_none() && stroke.is_none() {
@@ -266,7 +265,10 @@ impl PageWriter {
                 PathSegment::QuadTo(c, p) => {
                     // The same curve as a cubic: control points 2/3 of the
                     // way from each end to the quadratic's control point.
-                    let c1 = (last.0 + 2.0 / 3.0 * (c.x - last.0), last.1 + 2.0 / 3.0 * (c.y - last.1));
+                    let c1 = (
+                        last.0 + 2.0 / 3.0 * (c.x - last.0),
+                        last.1 + 2.0 / 3.0 * (c.y - last.1),
+                    );
                     let c2 = (p.x + 2.0 / 3.0 * (c.x - p.x), p.y + 2.0 / 3.0 * (c.y - p.y));
                     self.content.cubic_to(c1.0, c1.1, c2.0, c2.1, p.x, p.y);
                     last = (p.x, p.y);

@@ -205,7 +205,14 @@ impl Canvas for Raster<'_> {
         let mut q = [p];
         self.ts.map_points(&mut q);
         let scale = self.ts.sx.hypot(self.ts.ky);
-        style::draw_text(self.pixmap, text, (q[0].x, q[0].y), size * scale, color, align);
+        style::draw_text(
+            self.pixmap,
+            text,
+            (q[0].x, q[0].y),
+            size * scale,
+            color,
+            align,
+        );
     }
 
     fn chart(&mut self, chart: &Arc<Chart>, at: (f32, f32)) {

@@ -44,9 +44,7 @@ impl Chart {
 
     /// The parsed SVG (`None` only if it cannot be parsed).
     pub fn tree(&self) -> Option<&resvg::usvg::Tree> {
-        self.tree
-            .get_or_init(|| parse_svg(&self.svg).ok())
-            .as_ref()
+        self.tree.get_or_init(|| parse_svg(&self.svg).ok()).as_ref()
     }
 }
 
@@ -1184,9 +1182,10 @@ mod tests {
         let svg = "<svg><text x=\"1\" font-size=\"10\" fill=\"#000\">e^{−κ}, x_{n}\n</text>\
                    <text font-size=\"8\">plain</text></svg>";
         let out = typeset_svg_text(svg);
-        assert!(out.contains(
-            "e<tspan font-size=\"7.00\" baseline-shift=\"3.80\">−κ</tspan>, x<tspan"
-        ), "{out}");
+        assert!(
+            out.contains("e<tspan font-size=\"7.00\" baseline-shift=\"3.80\">−κ</tspan>, x<tspan"),
+            "{out}"
+        );
         assert!(out.contains("<text font-size=\"8\">plain</text>"));
     }
 }

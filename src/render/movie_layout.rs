@@ -91,7 +91,12 @@ impl MovieLayout {
         let y0 = (self.heat.y * s).round() as u32;
         let x1 = (((self.heat.x + self.heat.w) * s).round() as u32).min(self.width);
         let y1 = (((self.heat.y + self.heat.h) * s).round() as u32).min(self.height);
-        (x0, y0, x1.saturating_sub(x0).max(1), y1.saturating_sub(y0).max(1))
+        (
+            x0,
+            y0,
+            x1.saturating_sub(x0).max(1),
+            y1.saturating_sub(y0).max(1),
+        )
     }
 
     /// Rows of pixels the title band covers.
@@ -115,14 +120,32 @@ impl MovieLayout {
         c.text(title, (0.5 * self.design.0, 6.0), size::TITLE, DARK, top);
         let r = self.heat;
         let left = r.x - 4.0;
-        c.text("t/τ = 0", (left, r.y), tick, DARK, (HAlign::Right, VAlign::Top));
+        c.text(
+            "t/τ = 0",
+            (left, r.y),
+            tick,
+            DARK,
+            (HAlign::Right, VAlign::Top),
+        );
         let end = format!("{t_end:.0}");
         let bottom_right = (HAlign::Right, VAlign::Baseline);
         c.text(&end, (left, r.y + r.h), tick, DARK, bottom_right);
         let below = r.y + r.h + 4.0;
-        c.text("block 1", (r.x, below), tick, DARK, (HAlign::Left, VAlign::Top));
+        c.text(
+            "block 1",
+            (r.x, below),
+            tick,
+            DARK,
+            (HAlign::Left, VAlign::Top),
+        );
         let last = format!("{n}");
-        c.text(&last, (r.x + r.w, below), tick, DARK, (HAlign::Right, VAlign::Top));
+        c.text(
+            &last,
+            (r.x + r.w, below),
+            tick,
+            DARK,
+            (HAlign::Right, VAlign::Top),
+        );
         let legend = "sin θ_{n}: red +1, blue −1";
         let mid = (r.x + 0.5 * r.w, below + 1.3 * tick);
         c.text(legend, mid, tick, DARK, top);

@@ -135,9 +135,8 @@ impl Picture {
     /// layout): the design size times `scale`, rounded up.
     pub fn rasterize(&self, scale: f32) -> Result<Pixmap> {
         let (w, h) = self.scaled_size(scale)?;
-        let mut pixmap = style::white_pixmap(w, h).ok_or_else(|| {
-            Error::bad_input(format!("a {w}x{h} image does not fit in memory"))
-        })?;
+        let mut pixmap = style::white_pixmap(w, h)
+            .ok_or_else(|| Error::bad_input(format!("a {w}x{h} image does not fit in memory")))?;
         let ts = if scale == 1.0 {
             Transform::identity()
         } else {
@@ -253,10 +252,10 @@ impl Canvas for Picture {
     }
 
     fn pop(&mut self) {
-        if let Some((transform, items)) = self.open.pop() {
-            if !items.is_empty() {
-                self.current().push(Item::Group { transform, items });
-            }
+        if let Some((transform, items)) = self.open.pop()
+            && !items.is_empty()
+        {
+            self.current().push(Item::Group { transform, items });
         }
     }
 }

@@ -359,13 +359,7 @@ pub fn pixel_of(region: Region, snap: &Snapshot<'_>, p: [f64; 2]) -> (f32, f32) 
 fn draw_labels(canvas: &mut impl Canvas, region: Region, margin: f32, snap: &Snapshot<'_>) {
     if let Some(title) = snap.title {
         let at = (region.x + 0.5 * region.w, region.y + margin);
-        canvas.text(
-            title,
-            at,
-            size::TITLE,
-            DARK,
-            (HAlign::Center, VAlign::Top),
-        );
+        canvas.text(title, at, size::TITLE, DARK, (HAlign::Center, VAlign::Top));
     }
     if let Some(t) = snap.time {
         // Centred under the ladder: in movies the changed rectangle of each
@@ -419,7 +413,10 @@ fn draw_ladder(canvas: &mut impl Canvas, map: &Mapping, q: &[f64], pal: &Palette
     let n = q.len() / 3;
     let spring_w = map.len(0.045, 1.0, 4.0);
     let block_w = map.len(0.16, 2.5, 14.0);
-    let (a_pen, b_pen) = (Pen::new(spring_w, pal.a_spring), Pen::new(spring_w, pal.b_spring));
+    let (a_pen, b_pen) = (
+        Pen::new(spring_w, pal.a_spring),
+        Pen::new(spring_w, pal.b_spring),
+    );
     let mut prev = None;
     for i in 0..n {
         let (a1, b1) = nodes(q, i);

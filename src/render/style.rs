@@ -224,7 +224,11 @@ pub fn runs(text: &str) -> Vec<(Shift, &str)> {
         }
         let body = &rest[i + 2..];
         let close = body.find('}').unwrap_or(body.len());
-        let shift = if mark == "^" { Shift::Super } else { Shift::Sub };
+        let shift = if mark == "^" {
+            Shift::Super
+        } else {
+            Shift::Sub
+        };
         if close > 0 {
             out.push((shift, &body[..close]));
         }

@@ -41,10 +41,20 @@ fn items(out: &mut String, list: &[Item]) {
     for item in list {
         match item {
             Item::Fill { path, color } => {
-                let _ = writeln!(out, "<path d=\"{}\" fill=\"{}\"/>", path_data(path), style::hex(*color));
+                let _ = writeln!(
+                    out,
+                    "<path d=\"{}\" fill=\"{}\"/>",
+                    path_data(path),
+                    style::hex(*color)
+                );
             }
             Item::Stroke { path, pen } => {
-                let _ = writeln!(out, "<path d=\"{}\" {}/>", path_data(path), stroke_attrs(pen));
+                let _ = writeln!(
+                    out,
+                    "<path d=\"{}\" {}/>",
+                    path_data(path),
+                    stroke_attrs(pen)
+                );
             }
             Item::Text {
                 text,
@@ -54,13 +64,21 @@ fn items(out: &mut String, list: &[Item]) {
                 align,
             } => text_element(out, text, *at, *size, *color, *align),
             Item::Chart { chart, at } => {
-                let _ = writeln!(out, "<g transform=\"translate({} {})\">", num(at.0), num(at.1));
+                let _ = writeln!(
+                    out,
+                    "<g transform=\"translate({} {})\">",
+                    num(at.0),
+                    num(at.1)
+                );
                 out.push_str(svg_body(&chart.svg));
                 out.push_str("\n</g>\n");
             }
             // Refused by `document`.
             Item::Image { .. } => {}
-            Item::Group { transform, items: inner } => {
+            Item::Group {
+                transform,
+                items: inner,
+            } => {
                 let _ = writeln!(out, "<g transform=\"{}\">", matrix(*transform));
                 items(out, inner);
                 out.push_str("</g>\n");

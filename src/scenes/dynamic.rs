@@ -349,15 +349,15 @@ pub fn movie_block_pixels(scene: &Scene, opts: &MovieOptions) -> Result<(Region,
     Ok((region, frames))
 }
 
+/// A movie's files: the bytes in each movie format, the kymograph PNG and
+/// the run's data.
+pub type MovieFiles = (Vec<(Format, Vec<u8>)>, Vec<u8>, RunData);
+
 /// A movie: its bytes in each of `formats` (GIF, MP4: the same frames),
 /// the kymograph PNG and the run's data. Each frame shows the ladder on
 /// the left and, on the right, the kymograph of sin θ_n up to that frame;
 /// the layout scales with the frame size (`render::MovieLayout`).
-pub fn movie(
-    scene: &Scene,
-    opts: &MovieOptions,
-    formats: &[Format],
-) -> Result<(Vec<(Format, Vec<u8>)>, Vec<u8>, RunData)> {
+pub fn movie(scene: &Scene, opts: &MovieOptions, formats: &[Format]) -> Result<MovieFiles> {
     let opts = opts.validated()?;
     let mut writer = MovieWriter::new(formats, opts.width, opts.height, opts.fps)?;
     let plan = MoviePlan::new(scene, &opts)?;

@@ -165,7 +165,10 @@ pub fn render_with(
         | OutputSpec::Arrivals { .. }
         | OutputSpec::Kymograph => {
             let (picture, runs) = figure_picture(scene)?;
-            (figure_bytes(&picture, &outputs.figures, outputs.scale)?, runs)
+            (
+                figure_bytes(&picture, &outputs.figures, outputs.scale)?,
+                runs,
+            )
         }
         OutputSpec::Movie { .. } => {
             let (movies, kymo, run) = dynamic::movie(scene, movie, outputs.movies.as_slice())?;

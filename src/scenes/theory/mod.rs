@@ -16,8 +16,8 @@ use crate::model::{Ladder, Params};
 use crate::render::compose::{self, Layout, Panel};
 use crate::render::snapshot::{self, Snapshot};
 use crate::render::style::{self, DARK, HAlign, VAlign, size};
-use crate::scene::{Model, TheoryFigure, TheorySpec, ZeroMode};
 use crate::render::{Canvas, Picture};
+use crate::scene::{Model, TheoryFigure, TheorySpec, ZeroMode};
 use tiny_skia::Pixmap;
 
 /// What a static figure draws: its title, the model's N, b and α, and

@@ -134,7 +134,11 @@ pub fn dispersion(input: &FigureInput) -> Result<Picture> {
     frame(&input.title, &body, notes, 900)
 }
 
-fn dispersion_panel(lines: &DispersionCurve, dots: &DispersionCurve, y_max: f64) -> Result<Picture> {
+fn dispersion_panel(
+    lines: &DispersionCurve,
+    dots: &DispersionCurve,
+    y_max: f64,
+) -> Result<Picture> {
     let mut spec = ChartSpec::new(
         Axis::new("qb").range(-PI, PI),
         Axis::new("ω/ω₀").range(0.0, y_max),
@@ -307,7 +311,10 @@ fn edge_panel(input: &FigureInput, sign: f64) -> Result<Picture> {
                 .zip(e.numerical.iter().copied());
         spec = spec
             .series(Series::line(
-                format!("e^{{−κ(n−1)b}}, κb = {}", format!("{kb:.2}").replace('-', "−")),
+                format!(
+                    "e^{{−κ(n−1)b}}, κb = {}",
+                    format!("{kb:.2}").replace('-', "−")
+                ),
                 line.collect(),
                 color,
             ))
