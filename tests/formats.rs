@@ -10,7 +10,7 @@ mod common;
 
 use common::golden::check;
 use jacobs_ladder::catalog;
-use jacobs_ladder::encode::{self, Format};
+use jacobs_ladder::encode;
 use jacobs_ladder::render::Picture;
 use jacobs_ladder::scene;
 use jacobs_ladder::scenes;
@@ -165,6 +165,7 @@ fn movie_scene(id: &str) -> scene::Scene {
     catalog::find(scene::Kind::Movie, id).unwrap().scene.clone()
 }
 
+#[cfg(feature = "mp4")]
 /// Every frame of a GIF, composited (disposal "keep", transparent index
 /// leaves the pixel as it was), as RGB.
 fn gif_frames(bytes: &[u8]) -> (usize, usize, Vec<Vec<u8>>) {
@@ -192,6 +193,7 @@ fn gif_frames(bytes: &[u8]) -> (usize, usize, Vec<Vec<u8>>) {
     (w, h, out)
 }
 
+#[cfg(feature = "mp4")]
 /// Peak signal-to-noise ratio of two RGB buffers, dB.
 fn psnr(a: &[u8], b: &[u8]) -> f64 {
     assert_eq!(a.len(), b.len());
@@ -204,6 +206,7 @@ fn psnr(a: &[u8], b: &[u8]) -> f64 {
     10.0 * (255.0f64 * 255.0 / mse.max(1e-12)).log10()
 }
 
+#[cfg(feature = "mp4")]
 /// The top-level boxes of an MP4: (type, offset, size).
 fn top_boxes(bytes: &[u8]) -> Vec<(String, usize, usize)> {
     let mut out = Vec::new();
@@ -222,7 +225,7 @@ fn top_boxes(bytes: &[u8]) -> Vec<(String, usize, usize)> {
 #[cfg(feature = "mp4")]
 #[test]
 fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
-    use jacobs_ladder::encode::Yuv420;
+    use jacobs_ladder::encode::{Format, Yuv420};
     use openh264::formats::YUVSource;
     let scene = movie_scene("4");
     let opts = scenes::MovieOptions {
@@ -466,7 +469,11 @@ fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
             &[
                 "movie", "4", "--format", "mp4", "--size", "641x480", "--out", o,
             ],
-            "try 642x480",
+            if cfg!(feature = "mp4") {
+                "try 642x480"
+            } else {
+                "without the cargo feature 'mp4'"
+            },
         ),
         (
             &["movie", "4", "--size", "9000x480", "--out", o],
