@@ -7,6 +7,7 @@
 
 use crate::error::{Error, Result};
 use crate::model::Params;
+use crate::scene::Scene;
 use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Trajectory};
 use nalgebra::Complex;
 use serde::{Deserialize, Serialize};
@@ -27,13 +28,15 @@ pub fn median(mut values: Vec<f64>) -> f64 {
 /// Tolerance of the reference solution.
 pub const REFERENCE_RTOL: f64 = 1e-11;
 
-/// A scene of the work-precision study: the paper's single flip at `alpha_deg`.
+/// A scene of the work-precision and stability studies: a single-run
+/// [`Scene`] (the paper's single flip by default) and the times at which θ
+/// is compared with the reference.
 #[derive(Debug, Clone)]
 pub struct BenchScene {
     pub name: String,
+    pub scene: Scene,
     pub alpha_deg: f64,
     pub params: Params,
-    pub drive_time: f64,
     pub t_end: f64,
     /// Times at which θ is compared with the reference.
     pub frames: Vec<f64>,
@@ -43,27 +46,39 @@ impl BenchScene {
     /// The paper's kink (α > 0) or antikink (α < 0) scene, N = 10, b = 1.3,
     /// T_d = 1000, t_end = 4000, compared every 20 τ.
     pub fn paper(alpha_deg: f64) -> Result<Self> {
-        let params = Params::paper(alpha_deg)?;
-        Self::new(params, sim::PAPER_DRIVE_TIME, 4000.0, 200)
+        let mut scene = Scene::default();
+        scene.model.alpha = alpha_deg;
+        Self::from_scene(
+            Scene {
+                run: crate::scene::Run {
+                    t_end: 4000.0,
+                    ..scene.run
+                },
+                ..scene
+            },
+            200,
+        )
     }
 
-    pub fn new(params: Params, drive_time: f64, t_end: f64, frames: usize) -> Result<Self> {
-        let alpha_deg = params.alpha_deg();
-        let kind = if alpha_deg > 0.0 { "kink" } else { "antikink" };
+    /// A study scene from any single-run scene, compared at `frames` + 1
+    /// evenly spaced times.
+    pub fn from_scene(scene: Scene, frames: usize) -> Result<Self> {
+        let params = scene.model.params()?;
+        let t_end = scene.run.t_end;
         Ok(Self {
-            name: format!("{kind} α = {alpha_deg}°"),
-            alpha_deg,
+            name: crate::scene::describe::wave(&scene.model).replace(", ", " "),
+            alpha_deg: scene.model.alpha,
             params,
-            drive_time,
             t_end,
-            frames: (0..=frames)
-                .map(|k| t_end * k as f64 / frames as f64)
+            frames: (0..=frames.max(1))
+                .map(|k| t_end * k as f64 / frames.max(1) as f64)
                 .collect(),
+            scene,
         })
     }
 
     pub fn scenario(&self) -> Result<Scenario> {
-        Scenario::single_flip(self.params, self.drive_time, self.t_end)
+        self.scene.scenario()
     }
 
     /// Runs the scene with `config`, sampled at the frames.

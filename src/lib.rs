@@ -13,6 +13,7 @@
 
 pub mod encode;
 pub mod error;
+pub mod limits;
 pub mod model;
 pub mod render;
 pub mod sim;

@@ -1,13 +1,23 @@
 //! Work-precision and stability machinery (issue: speed against accuracy).
 
+#![allow(clippy::field_reassign_with_default)]
+
 use jacobs_ladder::bench::{self, BenchScene};
-use jacobs_ladder::model::Params;
+use jacobs_ladder::scene::{DriveSpec, Scene};
 use jacobs_ladder::sim::IntegratorKind;
+
+/// The paper's scene with N = 4 and a drive of 20 τ, to `t_end`.
+fn small(t_end: f64) -> Scene {
+    let mut scene = Scene::default();
+    scene.model.n = 4;
+    scene.drive = DriveSpec::flips_at(&[0.0], 20.0);
+    scene.run.t_end = t_end;
+    scene
+}
 
 /// A tiny scene: N = 4, a short drive, 60 τ.
 fn tiny() -> BenchScene {
-    let params = Params::paper(60.0).unwrap().with(4, 1.3, 60.0).unwrap();
-    BenchScene::new(params, 20.0, 60.0, 30).unwrap()
+    BenchScene::from_scene(small(60.0), 30).unwrap()
 }
 
 #[test]
@@ -54,9 +64,8 @@ fn sweep_error_falls_monotonically_for_convergent_methods() {
 
 #[test]
 fn stability_bisection_matches_the_linear_bound_for_symplectic_euler() {
-    let params = Params::paper(60.0).unwrap().with(4, 1.3, 60.0).unwrap();
-    let scene = BenchScene::new(params, 20.0, 200.0, 10).unwrap();
-    let omega_max = jacobs_ladder::theory::dispersion::omega_max_clamped(&params).unwrap();
+    let scene = BenchScene::from_scene(small(200.0), 10).unwrap();
+    let omega_max = jacobs_ladder::theory::dispersion::omega_max_clamped(&scene.params).unwrap();
     let predicted = bench::predicted_dt(IntegratorKind::SymplecticEuler, omega_max, 0.02);
     let critical = bench::critical_dt(
         &scene,
@@ -131,9 +140,33 @@ fn every_kernel_gives_the_portable_trajectory() {
         assert!(k.same_as_portable, "{}", k.kernel);
         assert!(k.median_ms > 0.0 && k.speedup.is_finite(), "{k:?}");
     }
+    // The sweep (batch kernel) and the chain (chain kernel), each way.
+    let sweep: Vec<_> = report
+        .sweep
+        .kernels
+        .iter()
+        .map(|k| k.kernel.as_str())
+        .collect();
+    assert!(
+        sweep.starts_with(&["portable", "one-by-one", "batch"]),
+        "{sweep:?}"
+    );
+    assert_eq!(report.sweep.runs, bench::kernels::SWEEP_RUNS);
+    assert_eq!(report.chain.n, bench::kernels::CHAIN_N);
+    for w in [&report.sweep, &report.chain] {
+        assert!(w.block_steps > 0);
+        for k in &w.kernels {
+            assert!(k.same_as_portable, "{}: {}", w.what, k.kernel);
+            assert!(k.ns_per_block_step > 0.0 && k.speedup.is_finite(), "{k:?}");
+        }
+    }
     let table = bench::kernels_table(&report);
     assert!(
         table.contains("bit for bit") && !table.contains("NO"),
+        "{table}"
+    );
+    assert!(
+        table.contains("a sweep") && table.contains("a long chain"),
         "{table}"
     );
 }

@@ -235,7 +235,7 @@ fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
         fps: 12.0,
     };
     let (movies, _, _) =
-        scenes::dynamic::movie(&scene, &opts, &[Format::Gif, Format::Mp4]).unwrap();
+        scenes::dynamic::movie(&scene, &opts, &[Format::Gif, Format::Mp4], &|| {}).unwrap();
     let (gif, mp4) = (&movies[0].1, &movies[1].1);
     assert_eq!((movies[0].0, movies[1].0), (Format::Gif, Format::Mp4));
     dump("movie-4.mp4", mp4);

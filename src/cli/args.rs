@@ -17,12 +17,36 @@ use std::path::PathBuf;
                   integrator and a picture. The paper's figures and movies are built-in scenes \
                   (`ladder list`, `ladder scene ID`); your own ladder comes from the model flags \
                   of `movie` and `figure`, or from a TOML scene file (`ladder render FILE`; the \
-                  keys are in docs/scenes.md).",
+                  keys are in docs/scenes.md).\n\n\
+                  Limits: N up to 100000 blocks (the linear theory up to 400); a simulation \
+                  up to 1e10 steps × N and 5e7 samples × N; a movie up to 5000 frames, 4096 \
+                  pixels a side and 5e9 frames × pixels. Time and memory grow linearly in each \
+                  (docs/limits.md); the --max-* flags raise the caps.",
     allow_negative_numbers = true
 )]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
+    #[command(flatten)]
+    pub limits: LimitArgs,
+}
+
+/// Caps on the cost of one command (`crate::limits`, docs/limits.md). A
+/// request past a cap is refused before any work, with the flag that
+/// raises it.
+#[derive(Args, Debug, Clone, Default)]
+#[command(next_help_heading = "Limits (docs/limits.md)")]
+pub struct LimitArgs {
+    /// Most steps × N of one simulation (about 10 ns each) [default: 1e10]
+    #[arg(long, global = true, value_name = "X")]
+    pub max_block_steps: Option<f64>,
+    /// Most samples × N kept of one simulation (48 bytes each in memory)
+    /// [default: 5e7]
+    #[arg(long, global = true, value_name = "X")]
+    pub max_block_samples: Option<f64>,
+    /// Most frames × width × height of one movie [default: 5e9]
+    #[arg(long, global = true, value_name = "X")]
+    pub max_pixels: Option<f64>,
 }
 
 #[derive(Subcommand, Debug)]
@@ -65,10 +89,11 @@ pub struct ModelArgs {
     /// [default: 60]
     #[arg(long, value_name = "DEG")]
     pub alpha: Option<f64>,
-    /// Number of blocks N, from 2 [default: 10]
+    /// Number of blocks N, 2 to 100000 [default: 10]
     #[arg(long, value_name = "N")]
     pub n: Option<usize>,
-    /// Rest length b of the B springs, in units of the block length s [default: 1.3]
+    /// Rest length b of the B springs, in units of the block length s,
+    /// 1e-3 to 1e3 [default: 1.3]
     #[arg(long, value_name = "B")]
     pub b: Option<f64>,
     /// Damping gamma (force -gamma*dX/dt, torque -gamma*r^2*dtheta/dt) [default: 0.02]
@@ -77,7 +102,7 @@ pub struct ModelArgs {
     /// Gravity G = mg/(ks) [default: 2e-4]
     #[arg(long, value_name = "G")]
     pub gravity: Option<f64>,
-    /// Moment of inertia I of a block, in units of m s^2 [default: 0.25]
+    /// Moment of inertia I of a block, in units of m s^2, 1e-6 to 1e6 [default: 0.25]
     #[arg(long, value_name = "I")]
     pub inertia: Option<f64>,
 }
@@ -158,11 +183,11 @@ pub struct SimulateArgs {
     /// Interval between CSV samples, in tau
     #[arg(long, default_value_t = 10.0, value_name = "T")]
     pub sample_every: f64,
-    /// Code that takes symplectic Euler's steps (N <= 32; otherwise, and for
-    /// the other integrators, the portable loop): the fused kernel for the
-    /// best instruction set of this CPU, the one for a given set, or the
-    /// portable loop. All give the same numbers, bit for bit; only the time
-    /// differs
+    /// Code that takes symplectic Euler's steps (the other integrators use
+    /// the portable loop): the fused kernel (N <= 32) or the chain kernel
+    /// (longer ladders) for the best instruction set of this CPU, the one
+    /// for a given set, or the portable loop. All give the same numbers,
+    /// bit for bit; only the time differs
     #[arg(long, value_enum, default_value_t = KernelArg::Fastest, value_name = "KERNEL")]
     pub kernel: KernelArg,
 }
@@ -181,7 +206,7 @@ pub struct MovieFormat {
     /// Frames per movie (2..=5000)
     #[arg(long, default_value_t = 200, help_heading = "Movie format")]
     pub frames: usize,
-    /// Frame size WxH in pixels
+    /// Frame size WxH in pixels, each side 64 to 4096
     #[arg(long, default_value = "640x480", value_name = "WxH", value_parser = parse_size, help_heading = "Movie format")]
     pub size: (u32, u32),
     /// Frames per second
@@ -320,6 +345,10 @@ pub struct RenderArgs {
     /// Scene files (TOML)
     #[arg(required = true, value_name = "FILE")]
     pub files: Vec<PathBuf>,
+    /// Only read and check the files, print what each would make, and
+    /// write nothing
+    #[arg(long)]
+    pub check: bool,
     #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]
@@ -351,7 +380,7 @@ pub struct TheoryArgs {
     /// Equilibrium angle alpha in degrees, 0 <= |alpha| <= 90
     #[arg(long, default_value_t = 60.0, value_name = "DEG")]
     pub alpha: f64,
-    /// Rest length b of the B springs, in units of s
+    /// Rest length b of the B springs, in units of s, 1e-3 to 1e3
     #[arg(long, default_value_t = 1.3)]
     pub b: f64,
     /// Number of blocks N of the finite chain (2..=400)

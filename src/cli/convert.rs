@@ -190,15 +190,19 @@ fn custom_base(base: Option<Scene>, name: Option<&str>) -> Scene {
 }
 
 impl MovieFormat {
+    /// The movie options, validated, within the cap on frames × pixels
+    /// (`limits::Limits::active`).
     pub fn options(&self) -> Result<MovieOptions> {
-        MovieOptions {
+        let opts = MovieOptions {
             frames: self.frames,
             width: self.size.0,
             height: self.size.1,
             fps: self.fps,
         }
         .validated()
-        .map_err(|e| Error::bad_input(format!("--frames/--size/--fps: {e}")))
+        .map_err(|e| Error::bad_input(format!("--frames/--size/--fps: {e}")))?;
+        crate::limits::Limits::active().check_movie(opts.frames, opts.width, opts.height)?;
+        Ok(opts)
     }
 }
 

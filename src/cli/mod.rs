@@ -10,6 +10,8 @@ pub use args::*;
 
 use crate::catalog::{self, Entry};
 use crate::error::{Error, Result};
+use crate::limits::{Limits, Resource};
+use crate::output;
 use crate::scene::{self, Kind, Scene};
 use crate::scenes::{self, MovieOptions, Outputs};
 use crate::sim::{self, IntegratorKind};
@@ -25,16 +27,72 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    let cli = match Cli::try_parse_from(args) {
-        Ok(cli) => cli,
+    crate::output::temp::install_signal_cleanup();
+    let result = match Cli::try_parse_from(args) {
+        Ok(cli) => cli.limits.install().and_then(|()| run(cli)),
         Err(e) => return clap_exit(e),
     };
-    match run(cli) {
-        Ok(()) => 0,
-        Err(e) => {
-            eprintln!("ladder: {e}");
-            e.exit_code()
+    match result {
+        Ok(()) | Err(Error::Closed) => 0,
+        Err(e) => report_error(&e),
+    }
+}
+
+/// Writes the error's one line (a cap's with the flag that raises it) to
+/// standard error; returns its exit code, or 1 if standard error cannot
+/// be written (but not when its reader is gone).
+fn report_error(e: &Error) -> i32 {
+    let line = match e {
+        Error::Limit(limit) => format!("ladder: {limit}; {}\n", limit_hint(limit)),
+        _ => format!("ladder: {e}\n"),
+    };
+    exit_after(output::eprint(&line), e.exit_code())
+}
+
+/// How to get past a cap: ask for less, or raise it with its flag.
+fn limit_hint(limit: &crate::limits::LimitExceeded) -> String {
+    let flag = LimitArgs::flag(limit.resource);
+    if limit.value.is_finite() {
+        let ask = format!("{:.1e}", limit.value * 1.05);
+        format!("ask for less, or raise the cap with {flag} {ask}")
+    } else {
+        "ask for less (no cap can allow it)".to_string()
+    }
+}
+
+impl LimitArgs {
+    /// The flag that sets the cap on `resource`.
+    pub fn flag(resource: Resource) -> &'static str {
+        match resource {
+            Resource::BlockSteps => "--max-block-steps",
+            Resource::BlockSamples => "--max-block-samples",
+            Resource::MoviePixels => "--max-pixels",
+            Resource::SweepRuns => "--max-runs",
         }
+    }
+
+    /// Installs the caps of the flags (the defaults where none is given)
+    /// for this process.
+    fn install(&self) -> Result<()> {
+        let mut limits = Limits::default();
+        for (resource, value) in [
+            (Resource::BlockSteps, self.max_block_steps),
+            (Resource::BlockSamples, self.max_block_samples),
+            (Resource::MoviePixels, self.max_pixels),
+        ] {
+            if let Some(v) = value {
+                if v.is_nan() || v <= 0.0 {
+                    return Err(Error::bad_input(format!(
+                        "{} must be a number > 0 (inf for no cap), got {}",
+                        Self::flag(resource),
+                        crate::error::num(v)
+                    )));
+                }
+                limits.set(resource, v);
+            }
+        }
+        limits.install();
+        Ok(())
     }
 }
 
@@ -46,19 +104,27 @@ fn clap_exit(e: clap::Error) -> i32 {
     use clap::error::ErrorKind;
     match e.kind() {
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
-            print!("{e}");
-            0
+            exit_after(output::print(&e.to_string()), 0)
         }
         ErrorKind::MissingRequiredArgument
         | ErrorKind::MissingSubcommand
         | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            eprint!("{}", e.to_string().replacen("error: ", "ladder: ", 1));
-            2
+            let text = e.to_string().replacen("error: ", "ladder: ", 1);
+            exit_after(output::eprint(&text), 2)
         }
-        _ => {
-            eprintln!("ladder: {}", one_line(&e.to_string()));
-            2
-        }
+        _ => exit_after(
+            output::eprint(&format!("ladder: {}\n", one_line(&e.to_string()))),
+            2,
+        ),
+    }
+}
+
+/// `code`, or 1 if the message could not be written (a closed pipe is
+/// not a failure).
+fn exit_after(written: Result<()>, code: i32) -> i32 {
+    match written {
+        Ok(()) | Err(Error::Closed) => code,
+        Err(_) => 1,
     }
 }
 
@@ -82,14 +148,10 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Simulate(args) => simulate(&args),
         Command::Bench(args) => bench(&args),
         Command::Theory(args) => theory(&args),
-        Command::List => {
-            print!("{}", catalog::listing()?);
-            Ok(())
-        }
+        Command::List => output::print(&catalog::listing()?),
         Command::Scene(args) => {
             let entry = catalog::find_any(&args.id)?;
-            print!("{}", scene::file::to_toml(&entry.scene)?);
-            Ok(())
+            output::print(&scene::file::to_toml(&entry.scene)?)
         }
         Command::Figure(args) => {
             let outputs = args.figure_format.outputs()?;
@@ -111,6 +173,20 @@ pub fn run(cli: Cli) -> Result<()> {
                 .iter()
                 .map(|f| scene::file::load(f))
                 .collect::<Result<Vec<_>>>()?;
+            if args.check {
+                for (file, s) in args.files.iter().zip(&scenes) {
+                    output::print(&format!(
+                        "{}: {} {} ({} run{}): {}\n",
+                        file.display(),
+                        s.kind().name(),
+                        s.name,
+                        s.runs().len(),
+                        if s.runs().len() == 1 { "" } else { "s" },
+                        scene::describe::parameters(s)
+                    ))?;
+                }
+                return Ok(());
+            }
             render_into(&scenes, &args.out.out, &opts, &outputs, false)
         }
         Command::All(args) => {
@@ -259,17 +335,22 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         ));
     }
     let scene = convert::scene_from_flags(base, &args.model, &args.drive, &run)?;
-    let samples = csv_samples(args)?;
+    let samples = csv_samples(args, scene.model.n)?;
     let stepping = args.kernel.stepping()?;
     if let Some(path) = &args.csv {
-        crate::output::check_writable(path)?;
+        output::check_writable(path)?;
     }
     let start = Instant::now();
-    let result = scenes::run::simulate_with(&scene, &samples, stepping)?;
+    let bar = time_bar(scene.run.t_end);
+    let result = scenes::run::simulate_with(&scene, &samples, stepping, &|t| {
+        bar.set_position(bar.position().max(t as u64));
+    });
+    bar.finish_and_clear();
+    let result = result?;
     let wall_seconds = start.elapsed().as_secs_f64();
     let traj = &result.trajectory;
     if let Some(path) = &args.csv {
-        crate::output::write_atomic(path, csv_text(traj).as_bytes())?;
+        output::write_atomic_with(path, |f| write_csv(traj, &mut std::io::BufWriter::new(f)))?;
     }
     let params = scene.model.params()?;
     let report = SimulateReport {
@@ -295,30 +376,33 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         final_theta_deg: traj.final_theta_deg(),
     };
     if args.json {
-        println!("{}", to_json(&report)?);
+        output::print(&format!("{}\n", to_json(&report)?))
     } else {
-        print!("{}", simulate_table(&report));
+        output::print(&simulate_table(&report))
     }
-    Ok(())
 }
 
-fn csv_samples(args: &SimulateArgs) -> Result<Vec<f64>> {
+/// The CSV's sample times, 0, every, 2 every, ... up to --t-end, within
+/// the cap on samples × N (checked before any is made).
+fn csv_samples(args: &SimulateArgs, n: usize) -> Result<Vec<f64>> {
     if args.csv.is_none() {
         return Ok(Vec::new());
     }
     let every = args.sample_every;
     if !(every.is_finite() && every > 0.0) {
         return Err(Error::bad_input(format!(
-            "--sample-every must be a finite number > 0, got {every}"
+            "--sample-every must be a finite number > 0, got {}",
+            crate::error::num(every)
         )));
     }
-    let count = (args.t_end / every).floor();
-    if count.is_nan() || count > 10_000_000.0 {
-        return Err(Error::bad_input(
-            "--sample-every is too small for this --t-end (at most 10^7 samples)",
-        ));
-    }
-    Ok((0..=count as usize).map(|k| k as f64 * every).collect())
+    let count = (args.t_end / every).floor() + 1.0;
+    Limits::active().check_samples(count, n)?;
+    let mut times = Vec::new();
+    times
+        .try_reserve_exact(count as usize)
+        .map_err(|_| Error::failed("not enough memory for the CSV's sample times"))?;
+    times.extend((0..count as usize).map(|k| k as f64 * every));
+    Ok(times)
 }
 
 fn simulate_table(r: &SimulateReport) -> String {
@@ -341,21 +425,22 @@ fn simulate_table(r: &SimulateReport) -> String {
     s
 }
 
-fn csv_text(traj: &sim::Trajectory) -> String {
+/// The CSV of θ_n(t) in degrees, streamed row by row into `w`.
+fn write_csv(traj: &sim::Trajectory, w: &mut impl std::io::Write) -> std::io::Result<()> {
     let n = traj.final_state.q.len() / 3;
-    let mut out = String::from("t");
+    write!(w, "t")?;
     for i in 1..=n {
-        out.push_str(&format!(",theta_{i}_deg"));
+        write!(w, ",theta_{i}_deg")?;
     }
-    out.push('\n');
+    writeln!(w)?;
     for (t, q) in traj.times.iter().zip(&traj.states) {
-        out.push_str(&format!("{t}"));
+        write!(w, "{t}")?;
         for th in sim::observables::angles_deg(q) {
-            out.push_str(&format!(",{th:.6}"));
+            write!(w, ",{th:.6}")?;
         }
-        out.push('\n');
+        writeln!(w)?;
     }
-    out
+    w.flush()
 }
 
 fn bench(args: &BenchArgs) -> Result<()> {
@@ -366,7 +451,10 @@ fn bench(args: &BenchArgs) -> Result<()> {
         )));
     }
     match args.study.as_str() {
-        "work-precision" | "stability" => crate::output::ensure_dir(&args.out)?,
+        "work-precision" | "stability" => output::check_targets(&[
+            args.out.join(format!("{}.csv", args.study)),
+            args.out.join(format!("{}.png", args.study)),
+        ])?,
         "kernels" => return bench_kernels(args),
         other => {
             return Err(Error::bad_input(format!(
@@ -386,11 +474,10 @@ fn bench_kernels(args: &BenchArgs) -> Result<()> {
     let report = crate::bench::kernels(args.repeats, &ticker(&bar))?;
     bar.finish_and_clear();
     if args.json {
-        println!("{}", to_json(&report)?);
+        output::print(&format!("{}\n", to_json(&report)?))
     } else {
-        print!("{}", crate::bench::kernels_table(&report));
+        output::print(&crate::bench::kernels_table(&report))
     }
-    Ok(())
 }
 
 fn bench_work_precision(args: &BenchArgs) -> Result<()> {
@@ -428,12 +515,14 @@ fn write_study<T: Serialize>(
     crate::output::write_atomic(&csv, csv_text.as_bytes())?;
     crate::output::write_atomic(&png, &png_bytes)?;
     if args.json {
-        println!("{}", to_json(report)?);
+        output::print(&format!("{}\n", to_json(report)?))
     } else {
-        print!("{table}");
-        println!("wrote {} and {}", csv.display(), png.display());
+        output::print(&format!(
+            "{table}wrote {} and {}\n",
+            csv.display(),
+            png.display()
+        ))
     }
-    Ok(())
 }
 
 fn bench_stability(args: &BenchArgs) -> Result<()> {
@@ -461,6 +550,23 @@ fn ticker(bar: &indicatif::ProgressBar) -> impl Fn(&str) + Sync + '_ {
     }
 }
 
+/// A progress bar over simulated time, shown only for a run long enough
+/// to wait for (over 10^5 τ of simulated time) and only on a terminal.
+fn time_bar(t_end: f64) -> indicatif::ProgressBar {
+    if t_end < 1e5 {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new(t_end as u64);
+    let style = indicatif::ProgressStyle::with_template(
+        "simulating [{bar:30}] t/τ = {pos}/{len} {elapsed} (eta {eta})",
+    )
+    .map(|s| s.progress_chars("=> "));
+    if let Ok(style) = style {
+        bar.set_style(style);
+    }
+    bar
+}
+
 fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(len);
     let style =
@@ -479,11 +585,10 @@ fn theory(args: &TheoryArgs) -> Result<()> {
         crate::model::Params::new(args.n, args.b, args.alpha, m.gamma, m.gravity, m.inertia)?;
     let report = crate::theory::TheoryReport::compute(&params)?;
     if args.json {
-        println!("{}", to_json(&report)?);
+        output::print(&format!("{}\n", to_json(&report)?))
     } else {
-        print!("{}", report.to_table());
+        output::print(&report.to_table())
     }
-    Ok(())
 }
 
 /// Renders `scenes` into `out` in parallel (rayon), each file written
@@ -497,18 +602,40 @@ fn render_into(
 ) -> Result<()> {
     use rayon::prelude::*;
     convert::check_out_dir(out)?;
-    crate::output::check_writable(&out.join("index.html"))?;
+    // Every target, index.html included, before anything is rendered.
+    let mut targets: Vec<std::path::PathBuf> = scenes
+        .iter()
+        .flat_map(|s| scenes::file_names_for(s, outputs))
+        .map(|name| out.join(name))
+        .collect();
+    if index {
+        targets.push(out.join("index.html"));
+    }
+    output::check_targets(&targets)?;
     let start = Instant::now();
-    let bar = progress_bar(scenes.len() as u64, "rendering");
+    // One movie: a bar over its frames; several scenes: over the scenes.
+    let one_movie = scenes.len() == 1 && scenes[0].kind() == Kind::Movie;
+    let bar = if one_movie {
+        progress_bar(movie.frames as u64, &format!("movie {}", scenes[0].name))
+    } else {
+        progress_bar(scenes.len() as u64, "rendering")
+    };
+    let frame_done = || {
+        if one_movie {
+            bar.inc(1);
+        }
+    };
     let written: Vec<Vec<String>> = scenes
         .par_iter()
         .map(|s| {
-            let files = scenes::render_with(s, movie, outputs)?;
+            let files = scenes::render_with(s, movie, outputs, &frame_done)?;
             for (name, bytes) in &files {
                 crate::output::write_atomic(&out.join(name), bytes)?;
             }
-            bar.set_message(format!("{} {}", s.kind().name(), s.name));
-            bar.inc(1);
+            if !one_movie {
+                bar.set_message(format!("{} {}", s.kind().name(), s.name));
+                bar.inc(1);
+            }
             Ok(files.into_iter().map(|(name, _)| name).collect())
         })
         .collect::<Result<_>>()?;
@@ -532,11 +659,10 @@ fn render_into(
     } else {
         format!("{} scenes", scenes.len())
     };
-    eprintln!(
-        "ladder: wrote {count} {} ({what}) into {} in {:.2} s",
+    output::eprint(&format!(
+        "ladder: wrote {count} {} ({what}) into {} in {:.2} s\n",
         if count == 1 { "file" } else { "files" },
         out.display(),
         start.elapsed().as_secs_f64()
-    );
-    Ok(())
+    ))
 }

@@ -157,24 +157,41 @@ impl Ladder {
     pub fn spring_length_jacobian(&self, q: &[f64]) -> DMatrix<f64> {
         let n = self.n();
         let mut c = DMatrix::zeros(2 * (n - 1), 3 * n);
+        for (row, g) in self.spring_length_gradients(q).iter().enumerate() {
+            let i = row / 2;
+            for (k, x) in g.iter().enumerate() {
+                c[(row, 3 * i + k)] = *x;
+            }
+        }
+        c
+    }
+
+    /// The non-zero entries of [`Ladder::spring_length_jacobian`], row by
+    /// row ([A_1, B_1, A_2, ...]): spring n joins blocks n and n + 1, and
+    /// its row holds ∂L/∂(X_n, Y_n, θ_n, X_{n+1}, Y_{n+1}, θ_{n+1}). O(N)
+    /// memory, where the dense matrix takes O(N²).
+    pub fn spring_length_gradients(&self, q: &[f64]) -> Vec<[f64; 6]> {
+        let n = self.n();
+        let mut rows = Vec::with_capacity(2 * (n - 1));
         for i in 0..n - 1 {
             let f0 = BlockFrame::new(q, i);
             let f1 = BlockFrame::new(q, i + 1);
-            for (row_off, sign) in [(0, -1.0), (1, 1.0)] {
+            for sign in [-1.0, 1.0] {
                 let dx = (f1.x + sign * R * f1.t[0]) - (f0.x + sign * R * f0.t[0]);
                 let dy = (f1.y + sign * R * f1.t[1]) - (f0.y + sign * R * f0.t[1]);
                 let len = (dx * dx + dy * dy).sqrt();
                 let (ux, uy) = (dx / len, dy / len);
-                let row = 2 * i + row_off;
-                c[(row, ix(i + 1))] = ux;
-                c[(row, iy(i + 1))] = uy;
-                c[(row, ix(i))] = -ux;
-                c[(row, iy(i))] = -uy;
-                c[(row, itheta(i + 1))] = sign * R * (ux * f1.dt[0] + uy * f1.dt[1]);
-                c[(row, itheta(i))] = -sign * R * (ux * f0.dt[0] + uy * f0.dt[1]);
+                rows.push([
+                    -ux,
+                    -uy,
+                    -sign * R * (ux * f0.dt[0] + uy * f0.dt[1]),
+                    ux,
+                    uy,
+                    sign * R * (ux * f1.dt[0] + uy * f1.dt[1]),
+                ]);
             }
         }
-        c
+        rows
     }
 }
 

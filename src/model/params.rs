@@ -37,8 +37,9 @@ pub struct Params {
     pub gravity: f64,
 }
 
-/// Largest N accepted: far beyond any scene, small enough to bound memory.
-pub const MAX_BLOCKS: usize = 100_000;
+/// Largest N accepted: far beyond any scene, small enough to bound memory
+/// (`crate::limits::MAX_BLOCKS`).
+pub const MAX_BLOCKS: usize = crate::limits::MAX_BLOCKS;
 
 impl Params {
     /// Parameters from their values, validated: N blocks, rest length b
@@ -101,7 +102,8 @@ impl Params {
         let deg = self.alpha.to_degrees();
         if !self.alpha.is_finite() || deg.abs() > 90.0 + 1e-9 {
             return Err(ParamError(format!(
-                "alpha must be a number of degrees with |alpha| <= 90, got {deg}"
+                "alpha must be a number of degrees with |alpha| <= 90, got {}",
+                crate::error::num(deg)
             )));
         }
         if self.n < 2 || self.n > MAX_BLOCKS {
@@ -110,8 +112,17 @@ impl Params {
                 self.n
             )));
         }
-        positive("b (rest length of the B springs)", self.b)?;
-        positive("the moment of inertia I", self.inertia)?;
+        use crate::limits::{MAX_INERTIA, MAX_LENGTH, MIN_INERTIA, MIN_LENGTH};
+        within(
+            "b (rest length of the B springs, in units of s)",
+            self.b,
+            (MIN_LENGTH, MAX_LENGTH),
+        )?;
+        within(
+            "the moment of inertia I (in units of m s²)",
+            self.inertia,
+            (MIN_INERTIA, MAX_INERTIA),
+        )?;
         non_negative("the damping gamma", self.gamma)?;
         non_negative("the gravity G", self.gravity)?;
         Ok(self)
@@ -135,12 +146,15 @@ impl Params {
     }
 }
 
-fn positive(name: &str, x: f64) -> Result<(), ParamError> {
-    if x.is_finite() && x > 0.0 {
+/// `x` within [lo, hi] (`crate::limits`: outside, the linear algebra
+/// cannot converge or the numbers overflow).
+fn within(name: &str, x: f64, (lo, hi): (f64, f64)) -> Result<(), ParamError> {
+    if x.is_finite() && (lo..=hi).contains(&x) {
         Ok(())
     } else {
         Err(ParamError(format!(
-            "{name} must be a finite number > 0, got {x}"
+            "{name} must be a number between {lo:e} and {hi:e}, got {}",
+            crate::error::num(x)
         )))
     }
 }
@@ -150,7 +164,8 @@ fn non_negative(name: &str, x: f64) -> Result<(), ParamError> {
         Ok(())
     } else {
         Err(ParamError(format!(
-            "{name} must be a finite number >= 0, got {x}"
+            "{name} must be a finite number >= 0, got {}",
+            crate::error::num(x)
         )))
     }
 }
@@ -175,6 +190,10 @@ mod tests {
         assert!(p.with(1, 1.3, 60.0).is_err());
         assert!(p.with(10, 0.0, 60.0).is_err());
         assert!(p.with(10, f64::INFINITY, 60.0).is_err());
+        for b in [1e-17, 5e-324, 1e308, 1e-4, 1e4] {
+            assert!(p.with(10, b, 60.0).is_err(), "b = {b}");
+        }
+        assert!(p.with(10, 1e-3, 60.0).is_ok() && p.with(10, 1e3, 60.0).is_ok());
         let neg = Params { gamma: -1.0, ..p };
         assert!(neg.validated().is_err());
     }

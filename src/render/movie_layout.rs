@@ -65,8 +65,10 @@ impl MovieLayout {
             heat: Region {
                 x: heat_x.round(),
                 y: heat_y,
+                // At least a quarter of the frame, so that a short chain's
+                // labels ("block 1", "2") do not run into each other.
                 w: (w - heat_x - 0.04 * w)
-                    .min(Self::COLUMN * n.max(1) as f32)
+                    .min((Self::COLUMN * n.max(1) as f32).max(0.25 * w))
                     .max(1.0)
                     .round(),
                 h: (h - heat_y - bottom).max(1.0).round(),
@@ -151,21 +153,31 @@ impl MovieLayout {
         c.text(legend, mid, tick, DARK, top);
     }
 
-    /// One frame into `canvas`: a copy of `background`, the snapshot in the
-    /// ladder's region (the title band kept clear of a camera's ladder), and
-    /// the top `fraction` of `heat` revealed.
+    /// One frame into `canvas`: a copy of `background`, each snapshot in
+    /// its region (the ladder's region, or the columns of a folded ladder;
+    /// design pixels), an optional time label centred in its band, the
+    /// title band kept clear of a camera's ladder, and the top `fraction`
+    /// of `heat` revealed.
     pub fn draw_frame(
         &self,
         canvas: &mut Pixmap,
         background: &Pixmap,
-        snap: &Snapshot<'_>,
+        snaps: &[(Region, Snapshot<'_>)],
+        time_label: Option<(Region, &str)>,
         heat: &Pixmap,
         fraction: f32,
     ) {
         canvas.data_mut().copy_from_slice(background.data());
         {
             let mut c = Raster::with_transform(canvas, self.transform());
-            snapshot::draw_snapshot_on(&mut c, self.ladder, snap);
+            for (region, snap) in snaps {
+                snapshot::draw_snapshot_on(&mut c, *region, snap);
+            }
+            if let Some((band, text)) = time_label {
+                let centre = (band.x + 0.5 * band.w, band.y + 0.5 * band.h);
+                let middle = (HAlign::Center, VAlign::Middle);
+                c.text(text, centre, size::LABEL, DARK, middle);
+            }
         }
         let bytes = 4 * canvas.width() as usize * self.title_rows();
         canvas.data_mut()[..bytes].copy_from_slice(&background.data()[..bytes]);

@@ -251,6 +251,20 @@ impl DriveSpec {
                     format!("duration must be a finite time > 0, got {}", f.duration),
                 ));
             }
+            // The end must be a finite time after the start in floating
+            // point too (start + duration can round to start, or overflow).
+            if !(f.end().is_finite() && f.end() > f.start) {
+                return Err((
+                    k,
+                    format!(
+                        "a flip from {} for {} ends at {}: the duration must be finite and \
+                         not lost in the rounding of the start",
+                        crate::error::num(f.start),
+                        crate::error::num(f.duration),
+                        crate::error::num(f.end())
+                    ),
+                ));
+            }
             if k > 0 && f.start < prev_end {
                 return Err((
                     k,
@@ -382,8 +396,10 @@ pub enum OutputSpec {
     /// A GIF of the ladder beside its live kymograph, plus the kymograph
     /// PNG (`movie-NAME.gif`, `movie-NAME-kymograph.png`).
     Movie {
-        /// `fixed` (one window that fits every frame) or `follow` (moves
-        /// with the kink, movie 3). Default fixed.
+        /// `auto` (default: `fixed` when the whole ladder fits the frame
+        /// with blocks large enough to see, otherwise `follow`), `fixed`
+        /// (one window that fits every frame) or `follow` (a window that
+        /// moves with the kink, movie 3).
         #[serde(default)]
         camera: Camera,
     },
@@ -417,7 +433,7 @@ pub enum OutputSpec {
 impl Default for OutputSpec {
     fn default() -> Self {
         Self::Movie {
-            camera: Camera::Fixed,
+            camera: Camera::Auto,
         }
     }
 }
@@ -426,7 +442,11 @@ impl Default for OutputSpec {
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Camera {
+    /// Fixed when the whole ladder fits with blocks of at least
+    /// [`MIN_BLOCK_PIXELS`], following the kink otherwise.
     #[default]
+    Auto,
+    /// One window that fits every frame.
     Fixed,
     /// A window that moves with the kink (movie 3).
     Follow,
@@ -561,6 +581,10 @@ impl Kind {
         }
     }
 }
+
+/// Smallest length, in pixels, of a block (s) in a movie frame before an
+/// `auto` camera follows the kink instead of showing the whole ladder.
+pub const MIN_BLOCK_PIXELS: f64 = 14.0;
 
 /// Largest number of flips of block 1.
 pub const MAX_FLIPS: usize = 1000;
@@ -799,8 +823,15 @@ fn check_model(key: &str, m: &Model, simulated: bool) -> std::result::Result<(),
             ),
         );
     }
-    if !(m.b.is_finite() && m.b > 0.0) {
-        return at("b", format!("must be a finite length > 0, got {}", m.b));
+    use crate::limits::{MAX_INERTIA, MAX_LENGTH, MIN_INERTIA, MIN_LENGTH};
+    if !(m.b.is_finite() && (MIN_LENGTH..=MAX_LENGTH).contains(&m.b)) {
+        return at(
+            "b",
+            format!(
+                "must be a length from {MIN_LENGTH:e} to {MAX_LENGTH:e}, got {}",
+                crate::error::num(m.b)
+            ),
+        );
     }
     if !(m.gamma.is_finite() && m.gamma >= 0.0) {
         return at(
@@ -814,14 +845,24 @@ fn check_model(key: &str, m: &Model, simulated: bool) -> std::result::Result<(),
             format!("must be a finite number >= 0, got {}", m.gravity),
         );
     }
-    if !(m.inertia.is_finite() && m.inertia > 0.0) {
+    if !(m.inertia.is_finite() && (MIN_INERTIA..=MAX_INERTIA).contains(&m.inertia)) {
         return at(
             "inertia",
-            format!("must be a finite number > 0, got {}", m.inertia),
+            format!(
+                "must be a number from {MIN_INERTIA:e} to {MAX_INERTIA:e}, got {}",
+                crate::error::num(m.inertia)
+            ),
         );
     }
-    if let Err(e) = m.params() {
-        return at("alpha", e.to_string());
+    match m.params() {
+        Err(e) => return at("alpha", e.to_string()),
+        // What a run will ask (e.g. |alpha| >= 1e-9°), asked here.
+        Ok(p) if simulated => {
+            if let Err(e) = crate::sim::check_simulable(&p) {
+                return at("alpha", e.to_string());
+            }
+        }
+        Ok(_) => {}
     }
     Ok(())
 }

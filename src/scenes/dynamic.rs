@@ -10,7 +10,7 @@ use crate::render::charts::{self, Axis, ChartSpec, Kymograph, Marker, Series};
 use crate::render::compose::{self, FilmstripOptions, Frame, Layout, Panel};
 use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::{MovieLayout, Picture, style};
-use crate::scene::{Camera, DriveSpec, Model, OutputSpec, Scene, describe};
+use crate::scene::{Camera, DriveSpec, MIN_BLOCK_PIXELS, Model, OutputSpec, Scene, describe};
 use crate::sim::{self, Trajectory};
 use serde::Serialize;
 use tiny_skia::Pixmap;
@@ -259,69 +259,215 @@ pub fn frame_times(t_end: f64, frames: usize) -> Vec<f64> {
     crate::scene::even_times(t_end, frames)
 }
 
-/// The camera of a movie: one fixed window fitting every frame, or a window
-/// that follows the kink (movie 3), `blocks` blocks tall.
-fn movie_view(ladder: &Ladder, traj: &Trajectory, k: usize, follow: bool, aspect: f64) -> View {
-    let all: Vec<&[f64]> = traj.states.iter().map(|q| q.as_slice()).collect();
-    let fit = View::fit(&all);
-    if !follow {
-        return fit;
-    }
+/// A window that follows the kink: `x_span` long (along the ladder),
+/// as wide as the frame's `aspect` allows, centred on the kink of frame
+/// `k` and kept inside the ladder `fit`.
+fn follow_view(
+    ladder: &Ladder,
+    traj: &Trajectory,
+    fit: View,
+    k: usize,
+    x_span: f64,
+    aspect: f64,
+) -> View {
     let b = ladder.params.b;
-    let x_span = 5.0 * b;
-    let centre_x = traj.kink_position[k].clamp(1.5, (ladder.n() as f64 - 1.5).max(1.5)) * b;
+    let half = 0.5 * x_span / b;
+    let last = (ladder.n() as f64 - 1.0).max(0.0);
+    let centre_blocks = if last > 2.0 * half {
+        traj.kink_position[k].clamp(half, last - half)
+    } else {
+        0.5 * last
+    };
     let centre_y = 0.5 * (fit.y.0 + fit.y.1);
-    View::centered(centre_x, centre_y, x_span, x_span * aspect)
+    View::centered(centre_blocks * b, centre_y, x_span, x_span * aspect)
+}
+
+/// One column of a movie's ladder: blocks `start..start + len` drawn into
+/// `region`, through one window (`views` of length 1) or one per frame.
+struct Column {
+    start: usize,
+    ladder: Ladder,
+    region: Region,
+    views: Vec<View>,
+}
+
+impl Column {
+    fn view(&self, k: usize) -> View {
+        self.views[k.min(self.views.len() - 1)]
+    }
+
+    fn len(&self) -> usize {
+        self.ladder.n()
+    }
+}
+
+/// Gap between the columns of a folded ladder, pixels.
+const COLUMN_GAP: f32 = 8.0;
+
+/// A long ladder folded into columns side by side, like lines of text,
+/// so that every block stays in the frame and at least as large as the
+/// frame allows: segments start at even blocks (the parity of t_n is
+/// kept) and overlap by one block, so every spring is drawn. The number of
+/// columns is the one that draws the blocks largest.
+fn fold(ladder: &Ladder, states: &[Vec<f64>], region: Region) -> Result<Vec<Column>> {
+    let n = ladder.n();
+    let b = ladder.params.b;
+    let all: Vec<&[f64]> = states.iter().map(|q| q.as_slice()).collect();
+    let whole = View::fit(&all);
+    let across = (whole.y.1 - whole.y.0).max(1e-9);
+    let columns_of = |stride: usize| (n - 1).div_ceil(stride).max(1);
+    let scale_of = |stride: usize| {
+        let cols = columns_of(stride) as f32;
+        let w = (region.w - COLUMN_GAP * (cols - 1.0)) / cols;
+        let along = stride as f64 * b + 2.0;
+        (region.h as f64 / along).min(w as f64 / across)
+    };
+    let stride = (2..n)
+        .step_by(2)
+        .max_by(|&p, &q| scale_of(p).total_cmp(&scale_of(q)))
+        .unwrap_or(n);
+    let cols = columns_of(stride);
+    let w = (region.w - COLUMN_GAP * (cols as f32 - 1.0)) / cols as f32;
+    let mut out = Vec::with_capacity(cols);
+    for j in 0..cols {
+        let start = j * stride;
+        let end = (start + stride + 1).min(n);
+        let seg: Vec<&[f64]> = states.iter().map(|q| &q[3 * start..3 * end]).collect();
+        let fit = View::fit(&seg);
+        let along = stride as f64 * b + 2.0;
+        // Every column at one scale (the same spans), its first block at
+        // the top, like lines of text.
+        let y_mid = 0.5 * (whole.y.0 + whole.y.1);
+        let view = View::window(
+            (fit.x.0, fit.x.0 + along),
+            (y_mid - 0.5 * across, y_mid + 0.5 * across),
+        );
+        let params = crate::model::Params {
+            n: end - start,
+            ..ladder.params
+        };
+        out.push(Column {
+            start,
+            ladder: Ladder::new(params),
+            region: Region {
+                x: (region.x + j as f32 * (w + COLUMN_GAP)).round(),
+                y: region.y,
+                w: w.floor().max(1.0),
+                h: region.h,
+            },
+            views: vec![view],
+        });
+    }
+    Ok(out)
 }
 
 /// What a movie draws before any pixel: its run, its layout and the
-/// camera of every frame.
+/// columns of its ladder with their cameras.
 struct MoviePlan {
     title: String,
     run: SceneRun,
     ladder: Ladder,
     layout: MovieLayout,
-    views: Vec<View>,
+    columns: Vec<Column>,
+    /// Where the time label goes when the ladder is folded.
+    time_band: Option<Region>,
 }
 
 impl MoviePlan {
     fn new(scene: &Scene, opts: &MovieOptions) -> Result<Self> {
-        let follow = matches!(
-            scene.output,
-            OutputSpec::Movie {
-                camera: Camera::Follow
-            }
-        );
+        let camera = match scene.output {
+            OutputSpec::Movie { camera } => camera,
+            _ => Camera::Fixed,
+        };
         let times = frame_times(scene.run.t_end, opts.frames);
         let run = run::simulate(scene, &times)?;
         let ladder = Ladder::new(scene.model.params()?);
         let layout = MovieLayout::new(opts.width, opts.height, ladder.n());
+        let region = layout.ladder;
         let aspect = layout.ladder_aspect();
         let traj = &run.trajectory;
-        let fixed = movie_view(&ladder, traj, 0, false, aspect);
-        let views = (0..traj.states.len())
-            .map(|k| {
-                if follow {
-                    movie_view(&ladder, traj, k, true, aspect)
-                } else {
-                    fixed
-                }
-            })
-            .collect();
+        let all: Vec<&[f64]> = traj.states.iter().map(|q| q.as_slice()).collect();
+        let fixed = View::fit(&all);
+        // Pixels per s when the whole ladder is shown (it runs down the
+        // frame: its length against the region's height).
+        let along = fixed.x.1 - fixed.x.0;
+        let across = fixed.y.1 - fixed.y.0;
+        let scale = (region.h as f64 / along).min(region.w as f64 / across);
+        let whole = |views: Vec<View>| Column {
+            start: 0,
+            ladder,
+            region,
+            views,
+        };
+        let (columns, time_band) = match camera {
+            Camera::Fixed => (vec![whole(vec![fixed])], None),
+            Camera::Auto if scale >= MIN_BLOCK_PIXELS => (vec![whole(vec![fixed])], None),
+            Camera::Follow => {
+                let span = 5.0 * ladder.params.b;
+                let views = (0..traj.states.len())
+                    .map(|k| follow_view(&ladder, traj, fixed, k, span, aspect))
+                    .collect();
+                (vec![whole(views)], None)
+            }
+            Camera::Auto => {
+                let band = 1.6 * style::size::LABEL;
+                let inner = Region {
+                    h: (region.h - band).max(1.0),
+                    ..region
+                };
+                let time = Region {
+                    y: region.y + region.h - band,
+                    h: band,
+                    ..region
+                };
+                (fold(&ladder, &traj.states, inner)?, Some(time))
+            }
+        };
         Ok(Self {
             title: describe::title(scene),
             run,
             ladder,
             layout,
-            views,
+            columns,
+            time_band,
         })
     }
 
-    fn snapshot(&self, k: usize) -> Result<Snapshot<'_>> {
+    /// The snapshot of column `c` at frame `k`.
+    fn snapshot(&self, c: &Column, k: usize) -> Result<Snapshot<'_>> {
         let traj = &self.run.trajectory;
-        Ok(Snapshot::new(&self.ladder, &traj.states[k])?
-            .with_time(traj.times[k])
-            .with_view(self.views[k]))
+        let q = &traj.states[k][3 * c.start..3 * (c.start + c.len())];
+        let mut snap = Snapshot::new(&c.ladder, q)?.with_view(c.view(k));
+        if self.time_band.is_none() {
+            snap = snap.with_time(traj.times[k]);
+        }
+        snap.clamp = c.start == 0;
+        Ok(snap)
+    }
+
+    /// Frame `k` into `canvas`: the background, every column's snapshot
+    /// (and the time label of a folded ladder), and the top `fraction` of
+    /// the live kymograph `heat`.
+    fn draw_frame(
+        &self,
+        canvas: &mut Pixmap,
+        background: &Pixmap,
+        heat: &Pixmap,
+        k: usize,
+        fraction: f32,
+    ) -> Result<()> {
+        let snaps = self
+            .columns
+            .iter()
+            .map(|c| Ok((c.region, self.snapshot(c, k)?)))
+            .collect::<Result<Vec<_>>>()?;
+        let label = self
+            .time_band
+            .map(|band| (band, snapshot::time_label(self.run.trajectory.times[k])));
+        let label = label.as_ref().map(|(band, text)| (*band, text.as_str()));
+        self.layout
+            .draw_frame(canvas, background, &snaps, label, heat, fraction);
+        Ok(())
     }
 }
 
@@ -330,34 +476,39 @@ pub type BlockPixels = Vec<Vec<(f32, f32)>>;
 
 /// For a test of the camera: the ladder's region of a movie frame and the
 /// pixel positions of both ends of every block at every frame, as the
-/// movie draws them.
+/// movie draws them (a block in two columns of a folded ladder twice).
 pub fn movie_block_pixels(scene: &Scene, opts: &MovieOptions) -> Result<(Region, BlockPixels)> {
     let plan = MoviePlan::new(scene, &opts.validated()?)?;
-    let region = plan.layout.ladder;
     let mut frames = Vec::new();
-    for (k, q) in plan.run.trajectory.states.iter().enumerate() {
-        let snap = plan.snapshot(k)?;
-        let px = (0..plan.ladder.n())
-            .flat_map(|i| {
-                let (a, b) = crate::model::ladder::nodes(q, i);
-                [a, b]
-            })
-            .map(|p| snapshot::pixel_of(region, &snap, p))
-            .collect();
+    for k in 0..plan.run.trajectory.states.len() {
+        let mut px = Vec::new();
+        for c in &plan.columns {
+            let snap = plan.snapshot(c, k)?;
+            for i in 0..c.len() {
+                let (a, b) = crate::model::ladder::nodes(snap.q, i);
+                px.push(snapshot::pixel_of(c.region, &snap, a));
+                px.push(snapshot::pixel_of(c.region, &snap, b));
+            }
+        }
         frames.push(px);
     }
-    Ok((region, frames))
+    Ok((plan.layout.ladder, frames))
 }
 
-/// A movie's files: the bytes in each movie format, the kymograph PNG and
-/// the run's data.
+/// A movie's files: its bytes in each format, the kymograph PNG, its data.
 pub type MovieFiles = (Vec<(Format, Vec<u8>)>, Vec<u8>, RunData);
 
 /// A movie: its bytes in each of `formats` (GIF, MP4: the same frames),
 /// the kymograph PNG and the run's data. Each frame shows the ladder on
 /// the left and, on the right, the kymograph of sin θ_n up to that frame;
-/// the layout scales with the frame size (`render::MovieLayout`).
-pub fn movie(scene: &Scene, opts: &MovieOptions, formats: &[Format]) -> Result<MovieFiles> {
+/// the layout scales with the frame size (`render::MovieLayout`);
+/// `frame_done` is called after each frame (for a progress bar).
+pub fn movie(
+    scene: &Scene,
+    opts: &MovieOptions,
+    formats: &[Format],
+    frame_done: &(dyn Fn() + Sync),
+) -> Result<MovieFiles> {
     let opts = opts.validated()?;
     let mut writer = MovieWriter::new(formats, opts.width, opts.height, opts.fps)?;
     let plan = MoviePlan::new(scene, &opts)?;
@@ -371,10 +522,10 @@ pub fn movie(scene: &Scene, opts: &MovieOptions, formats: &[Format]) -> Result<M
         .ok_or_else(|| Error::failed("the movie frame does not fit in memory"))?;
     let frames = traj.states.len();
     for k in 0..frames {
-        let snap = plan.snapshot(k)?;
         let shown = (k + 1) as f32 / frames as f32;
-        layout.draw_frame(&mut canvas, &background, &snap, &heat, shown);
+        plan.draw_frame(&mut canvas, &background, &heat, k, shown)?;
         writer.push_frame(&canvas)?;
+        frame_done();
     }
     let kymo = kymograph_image(
         &plan.title,
@@ -405,7 +556,7 @@ pub fn movie_frame(scene: &Scene, opts: &MovieOptions, k: usize) -> Result<Pixma
     let background = layout.background(&plan.title, scene.run.t_end, n)?;
     let mut canvas = background.clone();
     let shown = (k + 1) as f32 / frames as f32;
-    layout.draw_frame(&mut canvas, &background, &plan.snapshot(k)?, &heat, shown);
+    plan.draw_frame(&mut canvas, &background, &heat, k, shown)?;
     Ok(canvas)
 }
 

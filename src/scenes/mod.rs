@@ -106,7 +106,7 @@ pub fn file_names_for(scene: &Scene, outputs: &Outputs) -> Vec<String> {
 /// The files of one scene in the default formats, as (file name, bytes),
 /// in [`file_names`] order.
 pub fn render(scene: &Scene, movie: &MovieOptions) -> Result<Vec<(String, Vec<u8>)>> {
-    render_with(scene, movie, &Outputs::default())
+    render_with(scene, movie, &Outputs::default(), &|| {})
 }
 
 /// The bytes of a figure in each of `formats`: PNG at `scale`; SVG and PDF
@@ -153,11 +153,13 @@ pub fn figure_picture(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
 }
 
 /// The files of one scene in `outputs`' formats, as (file name, bytes), in
-/// [`file_names_for`] order.
+/// [`file_names_for`] order; `frame_done` is called after each movie frame
+/// (for a progress bar).
 pub fn render_with(
     scene: &Scene,
     movie: &MovieOptions,
     outputs: &Outputs,
+    frame_done: &(dyn Fn() + Sync),
 ) -> Result<Vec<(String, Vec<u8>)>> {
     let (mut bytes, runs) = match &scene.output {
         OutputSpec::Theory(_)
@@ -171,7 +173,8 @@ pub fn render_with(
             )
         }
         OutputSpec::Movie { .. } => {
-            let (movies, kymo, run) = dynamic::movie(scene, movie, outputs.movies.as_slice())?;
+            let (movies, kymo, run) =
+                dynamic::movie(scene, movie, outputs.movies.as_slice(), frame_done)?;
             let mut v: Vec<Vec<u8>> = movies.into_iter().map(|(_, b)| b).collect();
             v.push(kymo);
             (v, vec![run])

@@ -72,16 +72,23 @@ fn short(x: f64) -> String {
 
 /// Runs a single-run scene, recording the state at `samples`.
 pub fn simulate(scene: &Scene, samples: &[f64]) -> Result<SceneRun> {
-    simulate_with(scene, samples, Stepping::Fastest)
+    simulate_with(scene, samples, Stepping::Fastest, &|_| {})
 }
 
 /// As [`simulate`], with symplectic Euler's steps taken as `stepping`
-/// says (the same numbers whatever it is; `sim::fused`).
-pub fn simulate_with(scene: &Scene, samples: &[f64], stepping: Stepping) -> Result<SceneRun> {
+/// says (the same numbers whatever it is; `sim::fused`), telling
+/// `progress` the simulated time as the runs go.
+pub fn simulate_with(
+    scene: &Scene,
+    samples: &[f64],
+    stepping: Stepping,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<SceneRun> {
     let scenario = scene.scenario()?;
     match scene.run.fixed_config()? {
         Some(config) => {
-            let trajectory = sim::simulate_with(&scenario, samples, &config, stepping)?;
+            let trajectory =
+                sim::simulate_observed(&scenario, samples, &config, stepping, progress)?;
             Ok(SceneRun {
                 integrator: fixed_report(scene, &config, &trajectory),
                 trajectory,
@@ -90,8 +97,13 @@ pub fn simulate_with(scene: &Scene, samples: &[f64], stepping: Stepping) -> Resu
         None => {
             let params = scene.model.params()?;
             let omega_max = crate::theory::dispersion::omega_max_clamped(&params)?;
-            let v =
-                sim::auto::simulate_verified(&scenario, samples, scene.run.tolerance, omega_max)?;
+            let v = sim::auto::simulate_verified_observed(
+                &scenario,
+                samples,
+                scene.run.tolerance,
+                omega_max,
+                progress,
+            )?;
             Ok(SceneRun {
                 integrator: IntegratorReport {
                     requested: Method::Auto.to_string(),

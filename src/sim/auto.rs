@@ -10,7 +10,7 @@
 //! of at most the tolerance keeps the returned run's arrival times within
 //! about a third of it; that estimate is what is reported.
 
-use super::{IntegratorConfig, IntegratorKind, Scenario, Trajectory, simulate};
+use super::{IntegratorConfig, IntegratorKind, Scenario, Stepping, Trajectory, simulate_observed};
 use crate::error::{Error, Result};
 
 /// Most halvings of the step before `auto` gives up (dt / 2^10).
@@ -42,9 +42,29 @@ pub fn simulate_verified(
     tolerance: f64,
     omega_max: f64,
 ) -> Result<Verified> {
+    simulate_verified_observed(scenario, sample_times, tolerance, omega_max, &|_| {})
+}
+
+/// As [`simulate_verified`], telling `progress` the simulated time of the
+/// runs as they go (for a progress bar).
+pub fn simulate_verified_observed(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    tolerance: f64,
+    omega_max: f64,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<Verified> {
+    let simulate = |scenario: &Scenario, samples: &[f64], config: &IntegratorConfig| {
+        simulate_observed(scenario, samples, config, Stepping::Fastest, progress)
+    };
     let mut dt = IntegratorConfig::auto(omega_max).dt;
     let mut total = 0;
-    let mut coarse = match simulate(scenario, &[], &verlet(dt)) {
+    // The first pair of runs is independent: both cores take one each.
+    let (first_coarse, first_fine) = rayon::join(
+        || simulate(scenario, &[], &verlet(dt)),
+        || simulate(scenario, sample_times, &verlet(0.5 * dt)),
+    );
+    let mut coarse = match first_coarse {
         Ok(t) => Some(t),
         Err(Error::Failed(_)) => None,
         Err(e) => return Err(e),
@@ -52,10 +72,15 @@ pub fn simulate_verified(
     if let Some(c) = &coarse {
         total += c.force_evals;
     }
+    let mut first_fine = Some(first_fine);
     let mut last_difference = f64::INFINITY;
     for _ in 0..MAX_HALVINGS {
         let config = verlet(0.5 * dt);
-        let fine = match simulate(scenario, sample_times, &config) {
+        let run = match first_fine.take() {
+            Some(r) => r,
+            None => simulate(scenario, sample_times, &config),
+        };
+        let fine = match run {
             Ok(t) => t,
             Err(Error::Failed(_)) => {
                 dt *= 0.5;

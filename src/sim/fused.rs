@@ -29,7 +29,7 @@ use super::rhs::{Rhs, State};
 mod kernel;
 
 /// Largest N the fused stepper takes (eight registers of four blocks);
-/// longer ladders use the portable path.
+/// longer ladders use the chain stepper (`sim::chain`).
 pub const MAX_BLOCKS: usize = 32;
 
 /// A batch of equal steps: `count` steps of size `h` from `t`; if `lands`,
@@ -46,7 +46,7 @@ pub struct Batch {
 impl Batch {
     /// Time at the end of step `k` (0-based), given the time before it.
     #[inline(always)]
-    fn after(&self, k: u64, t: f64) -> f64 {
+    pub(crate) fn after(&self, k: u64, t: f64) -> f64 {
         if self.lands && k + 1 == self.count {
             self.t_stop
         } else {

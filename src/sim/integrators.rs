@@ -6,6 +6,7 @@
 //! exactly on `t_stop` when the rest of the interval fits in one step; the
 //! run loop puts every sample time and every drive corner into `t_stop`.
 
+use super::chain::ChainEuler;
 use super::fused::{Batch, FusedEuler, Stepping};
 use super::observables::ArrivalDetector;
 use super::rhs::{Rhs, State};
@@ -151,14 +152,15 @@ impl IntegratorConfig {
         if !(self.dt.is_finite() && self.dt > 0.0) {
             return Err(Error::bad_input(format!(
                 "dt must be a finite number > 0, got {}",
-                self.dt
+                crate::error::num(self.dt)
             )));
         }
         if let Some(r) = self.rtol
             && !(r.is_finite() && r > 0.0 && r < 1.0)
         {
             return Err(Error::bad_input(format!(
-                "rtol must be a number in (0, 1), got {r}"
+                "rtol must be a number in (0, 1), got {}",
+                crate::error::num(r)
             )));
         }
         Ok(self)
@@ -174,6 +176,7 @@ impl IntegratorConfig {
                 let mut stepper = FixedStep::new(kind, dof, self.dt);
                 if kind == IntegratorKind::SymplecticEuler {
                     stepper.fused = FusedEuler::new(dof / 3, stepping);
+                    stepper.chain = ChainEuler::new(dof / 3, stepping);
                 }
                 Box::new(stepper)
             }
@@ -220,7 +223,7 @@ fn subdivide(t: f64, t_stop: f64, dt: f64) -> (f64, bool) {
 /// The subdivision of the current interval [t, t_stop]: equal steps `h`,
 /// `left` of them still to take. Computed once per interval.
 #[derive(Debug, Clone, Copy, Default)]
-struct Plan {
+pub(super) struct Plan {
     t_stop: f64,
     h: f64,
     left: u64,
@@ -233,14 +236,19 @@ impl Plan {
         (h, last)
     }
 
+    /// Steps left in the current interval (0 before the first).
+    pub(super) fn left(&self) -> u64 {
+        self.left
+    }
+
     /// Returns `count` steps taken by [`Plan::take`] but not made.
-    fn give_back(&mut self, count: u64) {
+    pub(super) fn give_back(&mut self, count: u64) {
         self.left += count;
     }
 
     /// Up to `max` (≥ 1) steps towards `t_stop` from `t`: (h, how many,
     /// whether the last of them ends the interval).
-    fn take(&mut self, t: f64, t_stop: f64, dt: f64, max: u64) -> (f64, u64, bool) {
+    pub(super) fn take(&mut self, t: f64, t_stop: f64, dt: f64, max: u64) -> (f64, u64, bool) {
         if self.left == 0 || self.t_stop != t_stop {
             let span = t_stop - t;
             let n = (span / dt - 1e-6).ceil().max(1.0);
@@ -273,7 +281,7 @@ pub struct ImplicitDamping {
 impl ImplicitDamping {
     /// Recomputes the factors for step `h` in place (allocating only the
     /// first time).
-    fn set(&mut self, rhs: &Rhs, h: f64) {
+    pub(super) fn set(&mut self, rhs: &Rhs, h: f64) {
         let dof = rhs.damping_rate.len();
         self.decay.resize(dof, 0.0);
         self.kick.resize(dof, 0.0);
@@ -311,8 +319,10 @@ pub struct FixedStep {
     /// Symplectic Euler's factors for the last step size.
     damping: ImplicitDamping,
     plan: Plan,
-    /// Symplectic Euler's fused stepper, where available.
+    /// Symplectic Euler's fused stepper (N ≤ 32) or chain stepper
+    /// (longer ladders), where available.
     fused: Option<FusedEuler>,
+    chain: Option<ChainEuler>,
 }
 
 impl FixedStep {
@@ -327,6 +337,7 @@ impl FixedStep {
             damping: ImplicitDamping::default(),
             plan: Plan::default(),
             fused: None,
+            chain: None,
         }
     }
 
@@ -415,9 +426,9 @@ impl Integrator for FixedStep {
         max_steps: u64,
         arrivals: &mut ArrivalDetector,
     ) -> Result<(f64, u64)> {
-        let Some(fused) = self.fused else {
+        if self.fused.is_none() && self.chain.is_none() {
             return default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals);
-        };
+        }
         if max_steps == 0 || t >= t_stop {
             return Ok((t, 0));
         }
@@ -425,7 +436,7 @@ impl Integrator for FixedStep {
         self.implicit_damping(rhs, h);
         let Some(factors) = self.damping.uniform else {
             self.plan.give_back(count);
-            self.fused = None;
+            (self.fused, self.chain) = (None, None);
             return default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals);
         };
         let batch = Batch {
@@ -435,7 +446,11 @@ impl Integrator for FixedStep {
             t_stop,
             lands,
         };
-        let t_new = fused.run(rhs, st, &batch, factors, arrivals);
+        let t_new = match (self.fused, self.chain.as_mut()) {
+            (Some(fused), _) => fused.run(rhs, st, &batch, factors, arrivals),
+            (None, Some(chain)) => chain.run(rhs, st, &batch, factors, arrivals),
+            (None, None) => unreachable!("checked above"),
+        };
         Ok((t_new, count))
     }
 }

@@ -2,19 +2,25 @@
 //! times, divergence detection, and the scenes' initial conditions.
 
 pub mod auto;
+pub mod batch;
+pub mod chain;
 pub mod fused;
 pub mod integrators;
 pub mod observables;
 pub mod protocol;
 pub mod rhs;
+#[cfg(target_arch = "x86_64")]
+mod simd;
 
 pub use fused::{Isa, Stepping};
 pub use integrators::{IntegratorConfig, IntegratorKind};
 pub use protocol::{Drive, Piece, Protocol};
 pub use rhs::{Rhs, State};
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, num};
+use crate::limits::{Limits, Resource};
 use crate::model::ladder::itheta;
+use crate::model::params::M;
 use crate::model::{Ladder, Params};
 use observables::{ArrivalDetector, kink_position};
 
@@ -44,7 +50,8 @@ impl Scenario {
         check_simulable(&params)?;
         if !(t_end.is_finite() && t_end >= 0.0) {
             return Err(Error::bad_input(format!(
-                "t_end must be a finite number >= 0, got {t_end}"
+                "t_end must be a finite number >= 0, got {}",
+                crate::error::num(t_end)
             )));
         }
         let ladder = Ladder::new(params);
@@ -59,13 +66,15 @@ impl Scenario {
 }
 
 /// `simulate` needs 0 < |α| < 90° (SPEC section 5).
+/// α is read to 1e-9° (`Params::alpha_deg`), so a smaller |α| counts as 0.
 pub fn check_simulable(params: &Params) -> Result<()> {
     let deg = params.alpha_deg();
     if deg.is_finite() && deg.abs() > 0.0 && deg.abs() < 90.0 {
         Ok(())
     } else {
         Err(Error::bad_input(format!(
-            "alpha must satisfy 0 < |alpha| < 90 degrees for a simulation, got {deg}"
+            "alpha must satisfy 1e-9 <= |alpha| < 90 degrees for a simulation, got {}",
+            crate::error::num(params.alpha.to_degrees())
         )))
     }
 }
@@ -84,8 +93,11 @@ pub struct Trajectory {
     /// Arrival time per block: the first sign change of its polarisation
     /// sin θ_n (SPEC section 1), `None` where it never flipped.
     pub arrival_times: Vec<Option<f64>>,
-    /// State at t_end.
+    /// State at the end of the run: at t_end, or at `t_final` where a stop
+    /// rule ended it earlier ([`simulate_until`]).
     pub final_state: State,
+    /// The time the run reached (t_end unless a stop rule ended it).
+    pub t_final: f64,
     pub steps: u64,
     pub force_evals: u64,
 }
@@ -101,15 +113,12 @@ impl Trajectory {
         observables::angles_deg_unwrapped(&self.final_state.q)
     }
 
-    /// Records the state for every sample time not after `t` not yet recorded.
-    fn record_due(&mut self, samples: &[f64], next: &mut usize, t: f64, st: &State, alpha: f64) {
-        while *next < samples.len() && samples[*next] <= t {
-            self.times.push(samples[*next]);
-            self.states.push(st.q.clone());
-            self.velocities.push(st.v.clone());
-            self.kink_position.push(kink_position(&st.q, alpha));
-            *next += 1;
-        }
+    /// Stores a sample (the sink of [`simulate_with`]).
+    fn push(&mut self, sample: &Sample, alpha: f64) {
+        self.times.push(sample.t);
+        self.states.push(sample.q.to_vec());
+        self.velocities.push(sample.v.to_vec());
+        self.kink_position.push(kink_position(sample.q, alpha));
     }
 
     /// θ_n(t) of block `i` at every sample.
@@ -140,6 +149,27 @@ const MAX_TURNS: f64 = 4.0;
 /// Undriven energy growth, per spring, treated as a runaway.
 const MAX_UNDRIVEN_GROWTH: f64 = 1e-2;
 
+/// The state at one sample time, as the run loop hands it to a sink.
+#[derive(Debug, Clone, Copy)]
+pub struct Sample<'a> {
+    pub t: f64,
+    /// Positions, in the model's layout [X, Y, θ per block].
+    pub q: &'a [f64],
+    /// Velocities, same layout.
+    pub v: &'a [f64],
+}
+
+/// A stop rule: given the time reached and the arrival times so far, true
+/// once the run has decided what it was run for (a sweep's outcome,
+/// SPEC section 7). Asked at every divergence check (every 5 τ, at most
+/// 512 steps apart, and at every sample time and drive corner).
+pub type StopRule<'a> = dyn Fn(f64, &[Option<f64>]) -> bool + Sync + 'a;
+
+/// The stop rule that never stops a run before its t_end.
+pub fn run_to_end(_t: f64, _arrivals: &[Option<f64>]) -> bool {
+    false
+}
+
 /// Integrates `scenario` to its end, recording the state at `sample_times`
 /// (each in [0, t_end]) and observing arrival times at every step.
 /// A diverging run returns `Error::Failed` naming the integrator, its step
@@ -162,8 +192,165 @@ pub fn simulate_with(
     config: &IntegratorConfig,
     stepping: Stepping,
 ) -> Result<Trajectory> {
+    simulate_observed(scenario, sample_times, config, stepping, &|_| {})
+}
+
+/// As [`simulate_with`], telling `progress` the simulated time at every
+/// divergence check (every 5 τ, or 512 steps at most): for a progress bar.
+/// Within the caps in force ([`Limits::active`]).
+pub fn simulate_observed(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<Trajectory> {
+    let limits = Limits::active();
+    simulate_limited(scenario, sample_times, config, stepping, &limits, progress)
+}
+
+/// The cost of a run, computed before it starts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cost {
+    /// Steps of a fixed-step run (each interval between stops subdivided
+    /// into steps of at most dt); for adaptive dopri5, the fewest it can
+    /// take (steps of `DOPRI5_MAX_STEP`); it is bounded while it runs.
+    pub steps: f64,
+    /// Steps × N.
+    pub block_steps: f64,
+    /// Samples × N.
+    pub block_samples: f64,
+}
+
+/// The cost of running `scenario` with `samples` sample times (after
+/// deduplication) and `config`: refuses, before any work, a run past
+/// `limits` (`Error::Limit`: samples × N, then steps × N) and a step that
+/// cannot advance time (`Error::BadInput`, `limits::MAX_STEPS_PER_ULP_SPAN`;
+/// checked before steps × N, as no cap can allow it).
+pub fn check_cost(
+    scenario: &Scenario,
+    samples: usize,
+    config: &IntegratorConfig,
+    limits: &Limits,
+) -> Result<Cost> {
+    use crate::limits::{MAX_STEPS_PER_ULP_SPAN, count};
+    let config = config.validated()?;
+    let n = scenario.ladder.n();
+    let t_end = scenario.t_end;
+    limits.check_samples(samples as f64, n)?;
+    let adaptive = config.kind == IntegratorKind::Dopri5 && config.rtol.is_some();
+    let corners = scenario.protocol.drive().map_or(0, |d| d.corners().count());
+    let intervals = (samples + corners + 1) as f64;
+    let step = if adaptive {
+        integrators::DOPRI5_MAX_STEP
+    } else {
+        config.dt
+    };
+    let steps = (t_end / step).ceil() + intervals;
+    let cost = Cost {
+        steps,
+        block_steps: steps * n as f64,
+        block_samples: samples as f64 * n as f64,
+    };
+    if !adaptive && t_end / config.dt > MAX_STEPS_PER_ULP_SPAN {
+        return Err(Error::bad_input(format!(
+            "dt = {} is too small for t_end = {}: each step must exceed the rounding of t \
+             a thousandfold, so dt >= {} (or a shorter t_end)",
+            num(config.dt),
+            num(t_end),
+            num(t_end / MAX_STEPS_PER_ULP_SPAN)
+        )));
+    }
+    limits.check(Resource::BlockSteps, cost.block_steps, || {
+        let least = if adaptive { "at least " } else { "" };
+        format!(
+            "{least}{} steps of dt = {} up to t_end = {}, times N = {n}",
+            count(steps),
+            num(step),
+            num(t_end),
+        )
+    })?;
+    Ok(cost)
+}
+
+/// As [`simulate_observed`], within `limits` (checked before the run by
+/// [`check_cost`], and while it runs).
+pub fn simulate_limited(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    limits: &Limits,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<Trajectory> {
+    let alpha = scenario.ladder.params.alpha;
+    let mut kept = Trajectory::unsampled(State::at_rest(Vec::new()), 0.0, Vec::new(), 0, 0);
+    let mut traj = simulate_streaming(
+        scenario,
+        sample_times,
+        config,
+        stepping,
+        &Hooks {
+            stop: &run_to_end,
+            progress,
+            limits,
+        },
+        &mut |sample: &Sample| {
+            kept.push(sample, alpha);
+            Ok(())
+        },
+    )?;
+    (traj.times, traj.states, traj.velocities, traj.kink_position) =
+        (kept.times, kept.states, kept.velocities, kept.kink_position);
+    Ok(traj)
+}
+
+/// As [`simulate_with`] without samples, ending the run early once `stop`
+/// says so (t_end is then the cap): the single-run reference of
+/// [`batch::simulate_many`], which gives the same trajectories bit for bit.
+pub fn simulate_until(
+    scenario: &Scenario,
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    stop: &StopRule,
+) -> Result<Trajectory> {
+    let limits = Limits::active();
+    let hooks = Hooks {
+        stop,
+        progress: &|_| {},
+        limits: &limits,
+    };
+    simulate_streaming(scenario, &[], config, stepping, &hooks, &mut |_| Ok(()))
+}
+
+/// What the run loop asks and tells at every divergence check.
+pub struct Hooks<'a> {
+    /// Ends the run once it says so (t_end is then the cap).
+    pub stop: &'a StopRule<'a>,
+    /// Told the simulated time at every check (every 5 τ, or 512 steps
+    /// at most), after the check: for a progress bar.
+    pub progress: &'a (dyn Fn(f64) + Sync),
+    /// The caps the run must stay within (`limits`).
+    pub limits: &'a Limits,
+}
+
+/// The run loop. Hands the state at every sample time to `sink` as it
+/// passes (memory stays proportional to N, however many samples: the
+/// returned trajectory holds none) and ends at t_end or where
+/// `hooks.stop` says. An error from `sink` ends the run with that error.
+pub fn simulate_streaming(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    config: &IntegratorConfig,
+    stepping: Stepping,
+    hooks: &Hooks,
+    sink: &mut dyn FnMut(&Sample) -> Result<()>,
+) -> Result<Trajectory> {
     let config = config.validated()?;
     let samples = sorted_samples(sample_times, scenario.t_end)?;
+    let limits = hooks.limits;
+    check_cost(scenario, samples.len(), &config, limits)?;
+    let max_steps = limits.block_steps / scenario.ladder.n() as f64;
     let stops = stop_times(&samples, &scenario.protocol, scenario.t_end);
     let ladder = &scenario.ladder;
     let mut rhs = Rhs::new(ladder, &scenario.protocol, &scenario.initial.q);
@@ -173,37 +360,102 @@ pub fn simulate_with(
     let mut watch = DivergenceWatch::new(ladder, &scenario.protocol, &config);
     let check_every = check_every(&config);
     let mut arrivals = ArrivalDetector::new(0.0, &st.q, &st.v);
-    let mut traj = Trajectory {
-        times: Vec::with_capacity(samples.len()),
-        states: Vec::with_capacity(samples.len()),
-        velocities: Vec::with_capacity(samples.len()),
-        kink_position: Vec::with_capacity(samples.len()),
-        arrival_times: Vec::new(),
-        final_state: st.clone(),
-        steps: 0,
-        force_evals: 0,
-    };
+    let mut steps = 0;
     let mut t = 0.0;
     let mut next_sample = 0;
-    traj.record_due(&samples, &mut next_sample, t, &st, ladder.params.alpha);
-    for &stop in &stops {
-        while t < stop {
-            let budget = check_every - traj.steps % check_every;
+    emit_due(&samples, &mut next_sample, t, &st, sink)?;
+    'run: for &stop_at in &stops {
+        while t < stop_at {
+            let budget = check_every - steps % check_every;
             let (t_new, taken) =
-                integrator.advance_many(&mut rhs, &mut st, (t, stop), budget, &mut arrivals)?;
+                integrator.advance_many(&mut rhs, &mut st, (t, stop_at), budget, &mut arrivals)?;
+            if taken > 0 && t_new <= t {
+                return Err(Error::failed(format!(
+                    "time stopped advancing at t = {} τ ({}): the step is below the rounding of t",
+                    num(t),
+                    config.describe_step()
+                )));
+            }
             t = t_new;
-            traj.steps += taken;
-            if traj.steps.is_multiple_of(check_every) {
+            steps += taken;
+            if steps.is_multiple_of(check_every) {
                 watch.check(&rhs, &st, t)?;
+                (hooks.progress)(t);
+                if steps as f64 > max_steps {
+                    return Err(Error::Limit(crate::limits::LimitExceeded {
+                        resource: Resource::BlockSteps,
+                        value: steps as f64 * ladder.n() as f64,
+                        cap: limits.block_steps,
+                        detail: format!(
+                            "{} steps by t = {} of t_end = {} × N = {}, and counting",
+                            steps,
+                            num(t),
+                            num(scenario.t_end),
+                            ladder.n()
+                        ),
+                    }));
+                }
+                if (hooks.stop)(t, &arrivals.arrival) {
+                    break 'run;
+                }
             }
         }
         watch.check(&rhs, &st, t)?;
-        traj.record_due(&samples, &mut next_sample, t, &st, ladder.params.alpha);
+        emit_due(&samples, &mut next_sample, t, &st, sink)?;
+        if (hooks.stop)(t, &arrivals.arrival) {
+            break;
+        }
     }
-    traj.arrival_times = arrivals.arrival;
-    traj.final_state = st;
-    traj.force_evals = rhs.force_evals;
-    Ok(traj)
+    Ok(Trajectory::unsampled(
+        st,
+        t,
+        arrivals.arrival,
+        steps,
+        rhs.force_evals,
+    ))
+}
+
+impl Trajectory {
+    /// A trajectory without samples.
+    fn unsampled(
+        final_state: State,
+        t_final: f64,
+        arrival_times: Vec<Option<f64>>,
+        steps: u64,
+        force_evals: u64,
+    ) -> Self {
+        Self {
+            times: Vec::new(),
+            states: Vec::new(),
+            velocities: Vec::new(),
+            kink_position: Vec::new(),
+            arrival_times,
+            final_state,
+            t_final,
+            steps,
+            force_evals,
+        }
+    }
+}
+
+/// Hands `sink` the state for every sample time not after `t` not yet
+/// handed over.
+fn emit_due(
+    samples: &[f64],
+    next: &mut usize,
+    t: f64,
+    st: &State,
+    sink: &mut dyn FnMut(&Sample) -> Result<()>,
+) -> Result<()> {
+    while *next < samples.len() && samples[*next] <= t {
+        sink(&Sample {
+            t: samples[*next],
+            q: &st.q,
+            v: &st.v,
+        })?;
+        *next += 1;
+    }
+    Ok(())
 }
 
 /// Sample times sorted and deduplicated; each must lie in [0, t_end].
@@ -270,12 +522,16 @@ impl DivergenceWatch {
         if max_theta > MAX_TURNS * std::f64::consts::TAU {
             return Err(self.diverged(t, "a block turned more than four times"));
         }
-        let elastic = rhs.ladder.elastic_energy(&st.q);
+        let ladder = rhs.ladder;
+        let elastic = ladder.elastic_energy(&st.q);
         if elastic > self.max_elastic {
             return Err(self.diverged(t, "the springs stretched beyond any physical state"));
         }
         if t >= self.drive_end {
-            let e = rhs.mechanical_energy(st);
+            // `Rhs::mechanical_energy`, with the elastic part computed once.
+            let gravity: f64 = st.q.iter().step_by(3).sum();
+            let potential = elastic - M * ladder.params.gravity * gravity;
+            let e = ladder.kinetic_energy(&st.v) + potential;
             self.undriven_min = self.undriven_min.min(e);
             if e > self.undriven_min + self.max_growth {
                 return Err(self.diverged(t, "the energy grew while nothing drove the ladder"));

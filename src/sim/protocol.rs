@@ -47,7 +47,8 @@ impl Drive {
         positive_time("the drive time T_d", t_d)?;
         if !(t_second.is_finite() && t_second > t_d) {
             return Err(Error::bad_input(format!(
-                "the second flip must start after the first ends (T_d = {t_d}), got {t_second}"
+                "the second flip must start after the first ends (T_d = {t_d}), got {}",
+                crate::error::num(t_second)
             )));
         }
         Self::new(vec![
@@ -155,7 +156,8 @@ fn positive_time(name: &str, t: f64) -> Result<()> {
         Ok(())
     } else {
         Err(Error::bad_input(format!(
-            "{name} must be a finite number > 0, got {t}"
+            "{name} must be a finite number > 0, got {}",
+            crate::error::num(t)
         )))
     }
 }

@@ -93,7 +93,7 @@ impl<'a> Rhs<'a> {
     }
 
     /// Block 1's drive and where its centre is clamped, if driven.
-    pub fn drive(&self) -> Option<(&Drive, [f64; 2])> {
+    pub fn drive(&self) -> Option<(&'a Drive, [f64; 2])> {
         self.protocol.drive().map(|d| (d, self.clamp))
     }
 

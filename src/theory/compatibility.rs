@@ -50,9 +50,9 @@ pub struct IndexCount {
 }
 
 impl IndexCount {
-    fn of(boundary: Boundary, blocks: usize, c: &DMatrix<f64>) -> Self {
-        let rank = linalg::rank(c);
-        Self {
+    fn of(boundary: Boundary, blocks: usize, c: &DMatrix<f64>) -> Result<Self> {
+        let rank = linalg::rank(c)?;
+        Ok(Self {
             boundary,
             blocks,
             dof: c.ncols(),
@@ -61,7 +61,7 @@ impl IndexCount {
             zero_modes: c.ncols() - rank,
             self_stress: c.nrows() - rank,
             maxwell_index: c.ncols() as i64 - c.nrows() as i64,
-        }
+        })
     }
 }
 
@@ -96,7 +96,7 @@ pub fn compatibility_matrix(params: &Params, boundary: Boundary) -> Result<DMatr
 /// "Calladine–Maxwell" count).
 pub fn index_count(params: &Params, boundary: Boundary) -> Result<IndexCount> {
     let c = compatibility_matrix(params, boundary)?;
-    Ok(IndexCount::of(boundary, params.n, &c))
+    IndexCount::of(boundary, params.n, &c)
 }
 
 /// Projection (δu_n, δθ_n) ↦ (δu_n, (−1)^n (s/2) sin α δθ_n, δθ_n) of the
@@ -117,7 +117,7 @@ pub fn transverse_constraint(params: &Params) -> DMatrix<f64> {
 /// (main text before eq:C_red): 2N columns (δu_n, δθ_n), 2(N − 1) springs.
 /// The paper expects ν = 2 and N_0 = 2: translation along x and the surface
 /// zero mode.
-pub fn constrained_index_count(params: &Params) -> IndexCount {
+pub fn constrained_index_count(params: &Params) -> Result<IndexCount> {
     let ladder = Ladder::new(*params);
     let c = ladder.spring_length_jacobian(&ladder.ground_state()) * transverse_constraint(params);
     IndexCount::of(Boundary::Free, params.n, &c)

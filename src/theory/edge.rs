@@ -90,7 +90,7 @@ pub fn surface_zero_mode(params: &Params) -> Result<SurfaceMode> {
     let ratio_formula = zero_mode_ratio(params.b, params.alpha)
         .ok_or_else(|| Error::bad_input("no single surface zero mode for a = b (alpha = 90)"))?;
     let c = reduced_chain_matrix(params);
-    let v = linalg::null_vector(&c);
+    let v = linalg::null_vector(&c)?;
     let big = v
         .iter()
         .copied()
@@ -103,7 +103,7 @@ pub fn surface_zero_mode(params: &Params) -> Result<SurfaceMode> {
         theta,
         ratios,
         ratio_formula,
-        zero_modes: params.n - linalg::rank(&c),
+        zero_modes: params.n - linalg::rank(&c)?,
         edge,
     })
 }

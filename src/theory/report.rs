@@ -68,7 +68,7 @@ pub struct TheoryReport {
 
 /// Largest N for the linear theory: the dense SVDs and eigen-decompositions
 /// cost O(N³) (N = 200 takes about 0.5 s, N = 400 about 4 s).
-pub const MAX_THEORY_BLOCKS: usize = 400;
+pub const MAX_THEORY_BLOCKS: usize = crate::limits::MAX_THEORY_BLOCKS;
 
 impl TheoryReport {
     /// Every quantity for `params` (0 ≤ |α| ≤ 90°, 2 ≤ N ≤ `MAX_THEORY_BLOCKS`).

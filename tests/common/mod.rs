@@ -3,3 +3,4 @@
 
 pub mod golden;
 pub mod scenes;
+pub mod tempdir;

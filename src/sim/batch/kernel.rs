@@ -1,0 +1,764 @@
+//! The batch step: symplectic Euler for a vector of runs of the same N,
+//! one run per lane, all in lockstep.
+//!
+//! Memory holds every block's X, Y, θ, their velocities and the arrival
+//! windows as [block][lane]; a step walks down the ladder once, block by
+//! block: load block j + 1, its sine and cosine, spring j, block j's
+//! gradient from springs j − 1 and j, its update, the store and the arrival
+//! check, then move down one. The springs and the sine and cosine are
+//! computed once per block, in registers, and every load and store is a
+//! whole vector. Lanes never talk to each other, so a lane's numbers are
+//! the portable path's for its run, operation for operation
+//! (`Ladder::gradient_with` with r = s/2 folded into sine and cosine, as in
+//! `sim::fused`; no fused multiply-adds).
+//!
+//! Each lane has its own step h, damping factors, drive piece and time; the
+//! last step of a call may land a lane on its stop time (`lands`), as the
+//! portable plan's last step of an interval does.
+
+use super::super::simd::{F64x4, F64x8, Pack, Simd, half_sin_cos};
+use crate::sim::Isa;
+
+/// The most lanes of any instruction set's batch.
+pub const MAX_LANES: usize = 16;
+
+/// The lanes of a batch for `isa`.
+pub fn lanes(isa: Isa) -> usize {
+    match isa {
+        Isa::Avx2 => <Avx2Batch as Simd>::LANES,
+        Isa::Avx512 => <Avx512Batch as Simd>::LANES,
+    }
+}
+
+/// The vector of runs for each instruction set: two registers of four
+/// lanes for AVX2 (two independent streams), one of eight for AVX-512.
+type Avx2Batch = Pack<F64x4, 2>;
+type Avx512Batch = F64x8;
+
+/// A lane's scalars, one array entry per lane.
+#[derive(Debug, Clone, Default)]
+pub struct LaneParams {
+    /// Rest lengths a and b, and −m G.
+    pub a_rest: [f64; MAX_LANES],
+    pub b_rest: [f64; MAX_LANES],
+    pub minus_g: [f64; MAX_LANES],
+    /// This call's step, and symplectic Euler's decay and kick for X and Y
+    /// (the same) and for θ.
+    pub h: [f64; MAX_LANES],
+    pub decay_xy: [f64; MAX_LANES],
+    pub kick_xy: [f64; MAX_LANES],
+    pub decay_theta: [f64; MAX_LANES],
+    pub kick_theta: [f64; MAX_LANES],
+    /// The lane's time (read and written by the kernel).
+    pub t: [f64; MAX_LANES],
+    /// −0.0 where the call's last step lands on `t_stop`, else +0.0.
+    pub lands: [f64; MAX_LANES],
+    pub t_stop: [f64; MAX_LANES],
+    /// Block 1's angle and rate where it lands (the drive's next piece).
+    pub land_theta: [f64; MAX_LANES],
+    pub land_omega: [f64; MAX_LANES],
+    /// −0.0 where block 1 is driven, else +0.0; its clamped centre.
+    pub driven: [f64; MAX_LANES],
+    pub clamp_x: [f64; MAX_LANES],
+    pub clamp_y: [f64; MAX_LANES],
+    /// The drive's piece for the call's steps, and the one after it, in
+    /// force from `until` on.
+    pub piece: PieceLanes,
+    pub next_piece: PieceLanes,
+    pub until: [f64; MAX_LANES],
+    /// Velocity Verlet's h/2, damping rates c, M⁻¹ and divisors 1 + c h/2,
+    /// for X and Y (the same) and θ.
+    pub half: [f64; MAX_LANES],
+    pub rate_xy: [f64; MAX_LANES],
+    pub rate_theta: [f64; MAX_LANES],
+    pub inv_mass_xy: [f64; MAX_LANES],
+    pub inv_mass_theta: [f64; MAX_LANES],
+    pub div_xy: [f64; MAX_LANES],
+    pub div_theta: [f64; MAX_LANES],
+}
+
+/// A drive piece per lane: −0.0 in `ramp` for a ramp
+/// θ_s + (Δθ (t − t_0)) / T, +0.0 for a hold at `hold_theta`; rate ω.
+#[derive(Debug, Clone, Default)]
+pub struct PieceLanes {
+    pub ramp: [f64; MAX_LANES],
+    pub theta_start: [f64; MAX_LANES],
+    pub theta_delta: [f64; MAX_LANES],
+    pub t0: [f64; MAX_LANES],
+    pub span: [f64; MAX_LANES],
+    pub hold_theta: [f64; MAX_LANES],
+    pub omega: [f64; MAX_LANES],
+}
+
+/// The lanes' state, [block][lane]: `lanes` values per block.
+#[derive(Debug, Clone)]
+pub struct LaneState {
+    pub n: usize,
+    pub lanes: usize,
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+    pub theta: Vec<f64>,
+    pub vx: Vec<f64>,
+    pub vy: Vec<f64>,
+    pub vtheta: Vec<f64>,
+    /// Arrival candidate windows (`ArrivalDetector::window`); (−∞, +∞)
+    /// where nothing is pending.
+    pub window_lo: Vec<f64>,
+    pub window_hi: Vec<f64>,
+    /// Velocity Verlet's accelerations at the current positions.
+    pub ax: Vec<f64>,
+    pub ay: Vec<f64>,
+    pub atheta: Vec<f64>,
+    /// Velocity Verlet's steps, not symplectic Euler's.
+    pub verlet: bool,
+    pub params: LaneParams,
+}
+
+impl LaneState {
+    pub fn new(n: usize, lanes: usize) -> Self {
+        let zeros = vec![0.0; n * lanes];
+        Self {
+            n,
+            lanes,
+            x: zeros.clone(),
+            y: zeros.clone(),
+            theta: zeros.clone(),
+            vx: zeros.clone(),
+            vy: zeros.clone(),
+            vtheta: zeros.clone(),
+            window_lo: vec![f64::NEG_INFINITY; n * lanes],
+            window_hi: vec![f64::INFINITY; n * lanes],
+            ax: zeros.clone(),
+            ay: zeros.clone(),
+            atheta: zeros,
+            verlet: false,
+            params: LaneParams::default(),
+        }
+    }
+}
+
+/// The exact arrival test of a lane's run (`ArrivalDetector::try_record`).
+pub trait Recorder {
+    fn try_record(
+        &mut self,
+        lane: usize,
+        block: usize,
+        before: (f64, f64, f64),
+        after: (f64, f64, f64),
+    ) -> bool;
+}
+
+/// Takes `count` steps of every lane.
+///
+/// # Safety
+/// The CPU must support `isa`; `state.lanes` must be [`lanes`]`(isa)` and
+/// `state.n` ≥ 2.
+pub unsafe fn run(isa: Isa, state: &mut LaneState, count: u64, rec: &mut dyn Recorder) {
+    let len = state.n * state.lanes;
+    assert!(state.n >= 2 && state.lanes == lanes(isa));
+    assert!(
+        [
+            &state.x,
+            &state.y,
+            &state.theta,
+            &state.vx,
+            &state.vy,
+            &state.vtheta,
+            &state.window_lo,
+            &state.window_hi,
+            &state.ax,
+            &state.ay,
+            &state.atheta,
+        ]
+        .iter()
+        .all(|v| v.len() == len)
+    );
+    // SAFETY: the caller guarantees the instruction set; the sizes are
+    // checked above.
+    unsafe {
+        match isa {
+            Isa::Avx2 => run_avx2(state, count, rec),
+            Isa::Avx512 => run_avx512(state, count, rec),
+        }
+    }
+}
+
+#[target_feature(enable = "avx2")]
+unsafe fn run_avx2(state: &mut LaneState, count: u64, rec: &mut dyn Recorder) {
+    // SAFETY: as `run`.
+    unsafe { body::<Avx2Batch>(state, count, rec) }
+}
+
+#[target_feature(enable = "avx2,avx512f")]
+unsafe fn run_avx512(state: &mut LaneState, count: u64, rec: &mut dyn Recorder) {
+    // SAFETY: as `run`.
+    unsafe { body::<Avx512Batch>(state, count, rec) }
+}
+
+/// The lanes' constants of one call, in registers.
+struct Consts<S> {
+    a_rest: S,
+    b_rest: S,
+    minus_g: S,
+    h: S,
+    decay_xy: S,
+    kick_xy: S,
+    decay_theta: S,
+    kick_theta: S,
+    driven: S,
+    clamp_x: S,
+    clamp_y: S,
+}
+
+/// Raw pointers to the lanes' arrays.
+struct Mem {
+    x: *mut f64,
+    y: *mut f64,
+    theta: *mut f64,
+    vx: *mut f64,
+    vy: *mut f64,
+    vtheta: *mut f64,
+    window_lo: *mut f64,
+    window_hi: *mut f64,
+    ax: *mut f64,
+    ay: *mut f64,
+    atheta: *mut f64,
+}
+
+/// Loads a parameter array into a vector.
+macro_rules! param {
+    ($p:expr, $($field:ident).+) => {
+        // SAFETY: every parameter array holds MAX_LANES ≥ LANES values.
+        unsafe { S::load($p.$($field).+.as_ptr()) }
+    };
+}
+
+/// A drive piece in registers.
+#[derive(Clone, Copy)]
+struct PieceVecs<S> {
+    ramp: S,
+    theta_start: S,
+    theta_delta: S,
+    t0: S,
+    span: S,
+    hold_theta: S,
+    omega: S,
+}
+
+impl<S: Simd> PieceVecs<S> {
+    #[inline(always)]
+    fn load(p: &PieceLanes) -> Self {
+        Self {
+            ramp: param!(p, ramp),
+            theta_start: param!(p, theta_start),
+            theta_delta: param!(p, theta_delta),
+            t0: param!(p, t0),
+            span: param!(p, span),
+            hold_theta: param!(p, hold_theta),
+            omega: param!(p, omega),
+        }
+    }
+
+    /// Block 1's angle and rate at `t` (`Piece::theta`, operation for
+    /// operation, and `Piece::omega`).
+    #[inline(always)]
+    fn at(&self, t: S) -> (S, S) {
+        let ramp_theta = self.theta_start + (self.theta_delta * (t - self.t0)) / self.span;
+        (self.hold_theta.select(ramp_theta, self.ramp), self.omega)
+    }
+}
+
+#[inline(always)]
+unsafe fn body<S: Simd>(state: &mut LaneState, count: u64, rec: &mut dyn Recorder) {
+    let n = state.n;
+    let p = &state.params;
+    let c = Consts::<S> {
+        a_rest: param!(p, a_rest),
+        b_rest: param!(p, b_rest),
+        minus_g: param!(p, minus_g),
+        h: param!(p, h),
+        decay_xy: param!(p, decay_xy),
+        kick_xy: param!(p, kick_xy),
+        decay_theta: param!(p, decay_theta),
+        kick_theta: param!(p, kick_theta),
+        driven: param!(p, driven),
+        clamp_x: param!(p, clamp_x),
+        clamp_y: param!(p, clamp_y),
+    };
+    let (lands, t_stop) = (param!(p, lands), param!(p, t_stop));
+    let (land_theta, land_omega) = (param!(p, land_theta), param!(p, land_omega));
+    let piece = PieceVecs::<S>::load(&p.piece);
+    let mut t = param!(p, t);
+    let mem = Mem {
+        x: state.x.as_mut_ptr(),
+        y: state.y.as_mut_ptr(),
+        theta: state.theta.as_mut_ptr(),
+        vx: state.vx.as_mut_ptr(),
+        vy: state.vy.as_mut_ptr(),
+        vtheta: state.vtheta.as_mut_ptr(),
+        window_lo: state.window_lo.as_mut_ptr(),
+        window_hi: state.window_hi.as_mut_ptr(),
+        ax: state.ax.as_mut_ptr(),
+        ay: state.ay.as_mut_ptr(),
+        atheta: state.atheta.as_mut_ptr(),
+    };
+    if state.verlet {
+        let v = VerletConsts {
+            half: param!(p, half),
+            rate_xy: param!(p, rate_xy),
+            rate_theta: param!(p, rate_theta),
+            inv_mass_xy: param!(p, inv_mass_xy),
+            inv_mass_theta: param!(p, inv_mass_theta),
+            div_xy: param!(p, div_xy),
+            div_theta: param!(p, div_theta),
+        };
+        let next = PieceVecs::<S>::load(&p.next_piece);
+        let until = param!(p, until);
+        for k in 0..count {
+            // Block 1 where the forces are evaluated (t + h) and where the
+            // step ends (t_new, which differs only on landing).
+            let t_h = t + c.h;
+            let past = t_h.ge_bits(until);
+            let drive_h = if past == 0 {
+                piece.at(t_h)
+            } else {
+                blend_lanes(past, piece.at(t_h), next.at(t_h))
+            };
+            let (mut t_new, mut drive_new) = (t_h, drive_h);
+            if k + 1 == count {
+                t_new = t_h.select(t_stop, lands);
+                drive_new = (
+                    drive_h.0.select(land_theta, lands),
+                    drive_h.1.select(land_omega, lands),
+                );
+            }
+            // SAFETY: `run` checked the sizes of the arrays behind `mem`.
+            unsafe { step_verlet(&mem, n, &c, &v, (t, t_new), (drive_h, drive_new), rec) };
+            t = t_new;
+        }
+        // SAFETY: as `param!`.
+        unsafe { t.store(state.params.t.as_mut_ptr()) };
+        return;
+    }
+    for k in 0..count {
+        let mut t_new = t + c.h;
+        // Block 1's drive at t_new.
+        let (mut theta1, mut omega1) = piece.at(t_new);
+        if k + 1 == count {
+            t_new = t_new.select(t_stop, lands);
+            theta1 = theta1.select(land_theta, lands);
+            omega1 = omega1.select(land_omega, lands);
+        }
+        // SAFETY: `run` checked the sizes of the arrays behind `mem`.
+        unsafe { step(&mem, n, &c, (t, t_new), (theta1, omega1), rec) };
+        t = t_new;
+    }
+    // SAFETY: as `param!`.
+    unsafe { t.store(state.params.t.as_mut_ptr()) };
+}
+
+/// One block's centre and angle, and r sin θ, r cos θ and the parity sign.
+#[derive(Clone, Copy)]
+struct Block<S> {
+    x: S,
+    y: S,
+    theta: S,
+    rs: S,
+    rc: S,
+    /// −0.0 where (−1)^n = −1, else +0.0.
+    parity: S,
+}
+
+/// The forces of the spring pair below a block: net force on the lower
+/// block, torques on the lower (tu) and upper (tl) block.
+#[derive(Clone, Copy)]
+struct Spring<S> {
+    fx: S,
+    fy: S,
+    tu: S,
+    tl: S,
+}
+
+#[inline(always)]
+unsafe fn load_block<S: Simd>(m: &Mem, j: usize, parity: S) -> Block<S> {
+    let at = j * S::LANES;
+    // SAFETY: the caller keeps j < n.
+    let (x, y, theta) = unsafe {
+        (
+            S::load(m.x.add(at)),
+            S::load(m.y.add(at)),
+            S::load(m.theta.add(at)),
+        )
+    };
+    let (rs, rc) = half_sin_cos(theta);
+    Block {
+        x,
+        y,
+        theta,
+        rs,
+        rc,
+        parity,
+    }
+}
+
+/// Spring pair j between blocks `u` (j) and `l` (j + 1):
+/// `Ladder::gradient_with`'s loop body.
+#[inline(always)]
+fn spring<S: Simd>(u: &Block<S>, l: &Block<S>, c: &Consts<S>) -> Spring<S> {
+    let one = S::splat(1.0);
+    let (ex, ey) = (l.x - u.x, l.y - u.y);
+    let (ux, uy) = (l.rs - u.rs, (l.rc ^ l.parity) - (u.rc ^ u.parity));
+    let (ax, ay, bx, by) = (ex - ux, ey - uy, ex + ux, ey + uy);
+    let ka = one - c.a_rest / (ax * ax + ay * ay).sqrt();
+    let kb = one - c.b_rest / (bx * bx + by * by).sqrt();
+    let (fax, fay, fbx, fby) = (ka * ax, ka * ay, kb * bx, kb * by);
+    let (dfx, dfy) = (fbx - fax, fby - fay);
+    Spring {
+        fx: fax + fbx,
+        fy: fay + fby,
+        tu: dfx * l.rc - (dfy ^ l.parity) * l.rs,
+        tl: -(dfx * u.rc - (dfy ^ u.parity) * u.rs),
+    }
+}
+
+/// One step of every lane: symplectic Euler on every block, block 1
+/// constrained where driven, arrival checks.
+#[inline(always)]
+unsafe fn step<S: Simd>(
+    m: &Mem,
+    n: usize,
+    c: &Consts<S>,
+    times: (S, S),
+    drive: (S, S),
+    rec: &mut dyn Recorder,
+) {
+    let flip = S::splat(-0.0);
+    // SAFETY (every block access below): j < n, n ≥ 2.
+    let mut upper = unsafe { load_block(m, 0, flip) };
+    let mut lower = unsafe { load_block(m, 1, S::splat(0.0)) };
+    let mut s = spring(&upper, &lower, c);
+    let g = (c.minus_g - s.fx, -s.fy, s.tl);
+    unsafe { update::<S, true>(m, 0, &upper, g, c, times, drive, rec) };
+    for j in 1..n - 1 {
+        let above = s;
+        upper = lower;
+        lower = unsafe { load_block(m, j + 1, upper.parity ^ flip) };
+        s = spring(&upper, &lower, c);
+        let g = (
+            (c.minus_g + above.fx) - s.fx,
+            above.fy - s.fy,
+            above.tu + s.tl,
+        );
+        unsafe { update::<S, false>(m, j, &upper, g, c, times, drive, rec) };
+    }
+    let g = (c.minus_g + s.fx, s.fy, s.tu);
+    unsafe { update::<S, false>(m, n - 1, &lower, g, c, times, drive, rec) };
+}
+
+/// Block j's update from its gradient `g`: v ← v d − g k, q ← q + h v;
+/// block 1 (`FIRST`) set to the drive where driven; then the arrival check.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn update<S: Simd, const FIRST: bool>(
+    m: &Mem,
+    j: usize,
+    b: &Block<S>,
+    (gx, gy, gtheta): (S, S, S),
+    c: &Consts<S>,
+    (t, t_new): (S, S),
+    (theta1, omega1): (S, S),
+    rec: &mut dyn Recorder,
+) {
+    let at = j * S::LANES;
+    // SAFETY: the caller keeps j < n.
+    let (vx0, vy0, vt0) = unsafe {
+        (
+            S::load(m.vx.add(at)),
+            S::load(m.vy.add(at)),
+            S::load(m.vtheta.add(at)),
+        )
+    };
+    let mut vx = vx0 * c.decay_xy - gx * c.kick_xy;
+    let mut vy = vy0 * c.decay_xy - gy * c.kick_xy;
+    let mut vt = vt0 * c.decay_theta - gtheta * c.kick_theta;
+    let mut x = b.x + vx * c.h;
+    let mut y = b.y + vy * c.h;
+    let mut theta = b.theta + vt * c.h;
+    if FIRST {
+        let zero = S::splat(0.0);
+        x = x.select(c.clamp_x, c.driven);
+        y = y.select(c.clamp_y, c.driven);
+        theta = theta.select(theta1, c.driven);
+        vx = vx.select(zero, c.driven);
+        vy = vy.select(zero, c.driven);
+        vt = vt.select(omega1, c.driven);
+    }
+    // SAFETY: as above.
+    let (lo, hi) = unsafe {
+        x.store(m.x.add(at));
+        y.store(m.y.add(at));
+        theta.store(m.theta.add(at));
+        vx.store(m.vx.add(at));
+        vy.store(m.vy.add(at));
+        vt.store(m.vtheta.add(at));
+        (S::load(m.window_lo.add(at)), S::load(m.window_hi.add(at)))
+    };
+    let candidates = theta.le_bits(lo) | theta.ge_bits(hi);
+    if candidates != 0 {
+        // SAFETY: as above.
+        unsafe { candidates_found(m, j, candidates, (t, b.theta, vt0), (t_new, theta, vt), rec) };
+    }
+}
+
+/// Hands the candidate lanes of block `j` to [`record`] with their angles
+/// and rates before and after the step.
+#[inline(always)]
+unsafe fn candidates_found<S: Simd>(
+    m: &Mem,
+    j: usize,
+    candidates: u64,
+    before: (S, S, S),
+    after: (S, S, S),
+    rec: &mut dyn Recorder,
+) {
+    let at = j * S::LANES;
+    let lanes = |v: S| {
+        let mut a = [0.0; MAX_LANES];
+        // SAFETY: LANES ≤ MAX_LANES.
+        unsafe { v.store(a.as_mut_ptr()) };
+        a
+    };
+    let before = [lanes(before.0), lanes(before.1), lanes(before.2)];
+    let after = [lanes(after.0), lanes(after.1), lanes(after.2)];
+    // SAFETY: the caller keeps j < n.
+    let windows = unsafe {
+        (
+            std::slice::from_raw_parts_mut(m.window_lo.add(at), S::LANES),
+            std::slice::from_raw_parts_mut(m.window_hi.add(at), S::LANES),
+        )
+    };
+    record(rec, j, candidates, &before, &after, windows);
+}
+
+/// The exact arrival test on the candidate lanes of block `j`; closes the
+/// windows of the blocks that arrived.
+#[cold]
+#[inline(never)]
+fn record(
+    rec: &mut dyn Recorder,
+    j: usize,
+    candidates: u64,
+    before: &[[f64; MAX_LANES]; 3],
+    after: &[[f64; MAX_LANES]; 3],
+    (lo, hi): (&mut [f64], &mut [f64]),
+) {
+    for lane in (0..lo.len()).filter(|l| candidates >> l & 1 == 1) {
+        let at = |v: &[[f64; MAX_LANES]; 3]| (v[0][lane], v[1][lane], v[2][lane]);
+        if rec.try_record(lane, j, at(before), at(after)) {
+            (lo[lane], hi[lane]) = (f64::NEG_INFINITY, f64::INFINITY);
+        }
+    }
+}
+
+/// Lanes of `b` where `mask` has a bit, else of `a` (rare: a drive corner
+/// crossed inside a step).
+#[cold]
+#[inline(never)]
+fn blend_lanes<S: Simd>(mask: u64, a: (S, S), b: (S, S)) -> (S, S) {
+    let lanes = |v: S| {
+        let mut out = [0.0; MAX_LANES];
+        // SAFETY: LANES ≤ MAX_LANES.
+        unsafe { v.store(out.as_mut_ptr()) };
+        out
+    };
+    let pick = |x: S, y: S| {
+        let (x, y) = (lanes(x), lanes(y));
+        S::from_fn(|l| if mask >> l & 1 == 1 { y[l] } else { x[l] })
+    };
+    (pick(a.0, b.0), pick(a.1, b.1))
+}
+
+/// Velocity Verlet's per-lane constants.
+struct VerletConsts<S> {
+    half: S,
+    rate_xy: S,
+    rate_theta: S,
+    inv_mass_xy: S,
+    inv_mass_theta: S,
+    div_xy: S,
+    div_theta: S,
+}
+
+/// A block after Verlet's first half kick and drift: new position and
+/// half-step velocity, with the angle and rate it started the step with.
+#[derive(Clone, Copy)]
+struct Drifted<S> {
+    block: Block<S>,
+    vx: S,
+    vy: S,
+    vt: S,
+    theta0: S,
+    vt0: S,
+}
+
+/// Block j's first half kick and drift (`FixedStep::verlet`'s first loop:
+/// v += h/2 (a − c v), q += h v); block 1 (`FIRST`) then set to the drive
+/// at t + h where driven.
+#[inline(always)]
+unsafe fn drift<S: Simd, const FIRST: bool>(
+    m: &Mem,
+    j: usize,
+    parity: S,
+    c: &Consts<S>,
+    v: &VerletConsts<S>,
+    (theta_h, omega_h): (S, S),
+) -> Drifted<S> {
+    let at = j * S::LANES;
+    // SAFETY: the caller keeps j < n.
+    let (x, y, theta0, vx0, vy0, vt0, ax, ay, at_) = unsafe {
+        (
+            S::load(m.x.add(at)),
+            S::load(m.y.add(at)),
+            S::load(m.theta.add(at)),
+            S::load(m.vx.add(at)),
+            S::load(m.vy.add(at)),
+            S::load(m.vtheta.add(at)),
+            S::load(m.ax.add(at)),
+            S::load(m.ay.add(at)),
+            S::load(m.atheta.add(at)),
+        )
+    };
+    let mut vx = vx0 + v.half * (ax - v.rate_xy * vx0);
+    let mut vy = vy0 + v.half * (ay - v.rate_xy * vy0);
+    let mut vt = vt0 + v.half * (at_ - v.rate_theta * vt0);
+    let mut x = x + c.h * vx;
+    let mut y = y + c.h * vy;
+    let mut theta = theta0 + c.h * vt;
+    if FIRST {
+        let zero = S::splat(0.0);
+        x = x.select(c.clamp_x, c.driven);
+        y = y.select(c.clamp_y, c.driven);
+        theta = theta.select(theta_h, c.driven);
+        vx = vx.select(zero, c.driven);
+        vy = vy.select(zero, c.driven);
+        vt = vt.select(omega_h, c.driven);
+    }
+    let (rs, rc) = half_sin_cos(theta);
+    Drifted {
+        block: Block {
+            x,
+            y,
+            theta,
+            rs,
+            rc,
+            parity,
+        },
+        vx,
+        vy,
+        vt,
+        theta0,
+        vt0,
+    }
+}
+
+/// One velocity Verlet step of every lane (`FixedStep::verlet` and the
+/// run loop's constraint after it): drift every block, forces at the new
+/// positions with block 1 at the drive's t + h, the second half kick
+/// v ← (v + h/2 a) / (1 + c h/2), block 1 set to the drive at t_new where
+/// driven, arrival checks.
+#[inline(always)]
+unsafe fn step_verlet<S: Simd>(
+    m: &Mem,
+    n: usize,
+    c: &Consts<S>,
+    v: &VerletConsts<S>,
+    times: (S, S),
+    (drive_h, drive_new): ((S, S), (S, S)),
+    rec: &mut dyn Recorder,
+) {
+    let flip = S::splat(-0.0);
+    // SAFETY (every block access below): j < n, n ≥ 2.
+    let mut upper = unsafe { drift::<S, true>(m, 0, flip, c, v, drive_h) };
+    let mut lower = unsafe { drift::<S, false>(m, 1, S::splat(0.0), c, v, drive_h) };
+    let mut s = spring(&upper.block, &lower.block, c);
+    let g = (c.minus_g - s.fx, -s.fy, s.tl);
+    unsafe { kick::<S, true>(m, 0, &upper, g, c, v, times, drive_new, rec) };
+    for j in 1..n - 1 {
+        let above = s;
+        upper = lower;
+        lower = unsafe { drift::<S, false>(m, j + 1, upper.block.parity ^ flip, c, v, drive_h) };
+        s = spring(&upper.block, &lower.block, c);
+        let g = (
+            (c.minus_g + above.fx) - s.fx,
+            above.fy - s.fy,
+            above.tu + s.tl,
+        );
+        unsafe { kick::<S, false>(m, j, &upper, g, c, v, times, drive_new, rec) };
+    }
+    let g = (c.minus_g + s.fx, s.fy, s.tu);
+    unsafe { kick::<S, false>(m, n - 1, &lower, g, c, v, times, drive_new, rec) };
+}
+
+/// Block j's acceleration a = −∂E/∂q M⁻¹ from its gradient `g`, second
+/// half kick, block 1 (`FIRST`) set to the drive at t_new where driven,
+/// store and arrival check.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn kick<S: Simd, const FIRST: bool>(
+    m: &Mem,
+    j: usize,
+    d: &Drifted<S>,
+    (gx, gy, gtheta): (S, S, S),
+    c: &Consts<S>,
+    v: &VerletConsts<S>,
+    (t, t_new): (S, S),
+    (theta1, omega1): (S, S),
+    rec: &mut dyn Recorder,
+) {
+    let at = j * S::LANES;
+    let (ax, ay, at_) = (
+        (-gx) * v.inv_mass_xy,
+        (-gy) * v.inv_mass_xy,
+        (-gtheta) * v.inv_mass_theta,
+    );
+    let mut vx = (d.vx + v.half * ax) / v.div_xy;
+    let mut vy = (d.vy + v.half * ay) / v.div_xy;
+    let mut vt = (d.vt + v.half * at_) / v.div_theta;
+    let (mut x, mut y, mut theta) = (d.block.x, d.block.y, d.block.theta);
+    if FIRST {
+        let zero = S::splat(0.0);
+        x = x.select(c.clamp_x, c.driven);
+        y = y.select(c.clamp_y, c.driven);
+        theta = theta.select(theta1, c.driven);
+        vx = vx.select(zero, c.driven);
+        vy = vy.select(zero, c.driven);
+        vt = vt.select(omega1, c.driven);
+    }
+    // SAFETY: the caller keeps j < n.
+    let (lo, hi) = unsafe {
+        x.store(m.x.add(at));
+        y.store(m.y.add(at));
+        theta.store(m.theta.add(at));
+        vx.store(m.vx.add(at));
+        vy.store(m.vy.add(at));
+        vt.store(m.vtheta.add(at));
+        ax.store(m.ax.add(at));
+        ay.store(m.ay.add(at));
+        at_.store(m.atheta.add(at));
+        (S::load(m.window_lo.add(at)), S::load(m.window_hi.add(at)))
+    };
+    let candidates = theta.le_bits(lo) | theta.ge_bits(hi);
+    if candidates != 0 {
+        // SAFETY: as above.
+        unsafe {
+            candidates_found(
+                m,
+                j,
+                candidates,
+                (t, d.theta0, d.vt0),
+                (t_new, theta, vt),
+                rec,
+            )
+        };
+    }
+}

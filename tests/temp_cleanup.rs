@@ -1,0 +1,40 @@
+//! The work of the SIGINT/SIGTERM handler (`output::temp`), without the
+//! signal: every live temporary file is removed, and none can be created
+//! or renamed into place afterwards. In a test binary of its own, since it
+//! leaves this process "terminating". (`tests/reliability.rs` sends the
+//! real signals to the binary.)
+
+mod common;
+
+use jacobs_ladder::output::temp::{TempFile, remove_all_live, temp_path};
+use std::io::Write;
+
+#[test]
+fn the_handler_removes_every_live_temporary_file_and_stops_new_ones() {
+    let dir = common::tempdir::TempDir::new("live");
+    let targets: Vec<_> = ["a.png", "b.gif", "c.csv"]
+        .iter()
+        .map(|n| dir.join(n))
+        .collect();
+    let mut live: Vec<TempFile> = targets
+        .iter()
+        .map(|t| TempFile::create(t).unwrap())
+        .collect();
+    for f in &mut live {
+        f.file().write_all(b"half a file").unwrap();
+    }
+    for t in &targets {
+        assert!(temp_path(t).is_file());
+    }
+    assert_eq!(remove_all_live(), 3);
+    for t in &targets {
+        assert!(!temp_path(t).exists(), "{} left", temp_path(t).display());
+    }
+    // No new file, and no rename of a file written before the signal.
+    assert!(TempFile::create(&dir.join("d.png")).is_err());
+    let last = live.pop().unwrap();
+    assert!(last.persist(&targets[2]).is_err());
+    assert!(!targets[2].exists());
+    drop(live);
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
+}
