@@ -315,7 +315,19 @@ fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
             u: rows(yuv.u(), us, w / 2, h / 2),
             v: rows(yuv.v(), vs, w / 2, h / 2),
         };
-        let p = psnr(&ours.to_rgb(), &gif_rgb[k as usize]);
+        let rgb = ours.to_rgb();
+        if k == 16 {
+            let rgba: Vec<u8> = rgb
+                .chunks_exact(3)
+                .flat_map(|c| [c[0], c[1], c[2], 255])
+                .collect();
+            let img = image::RgbaImage::from_raw(w as u32, h as u32, rgba).unwrap();
+            let mut png = Vec::new();
+            img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+                .unwrap();
+            dump("movie-4-mp4-frame-16.png", &png);
+        }
+        let p = psnr(&rgb, &gif_rgb[k as usize]);
         assert!(p >= 30.0, "frame {k}: PSNR {p:.1} dB");
         if k % 8 == 0 {
             eprintln!("frame {k}: PSNR {p:.1} dB against the GIF");
