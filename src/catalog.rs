@@ -32,6 +32,18 @@ pub const FILES: &[(&str, &str)] = &[
         "figure-barrier",
         include_str!("../assets/scenes/figure-barrier.toml"),
     ),
+    (
+        "figure-pinning",
+        include_str!("../assets/scenes/figure-pinning.toml"),
+    ),
+    (
+        "figure-phase",
+        include_str!("../assets/scenes/figure-phase.toml"),
+    ),
+    (
+        "figure-chain-length",
+        include_str!("../assets/scenes/figure-chain-length.toml"),
+    ),
     ("movie-3", include_str!("../assets/scenes/movie-3.toml")),
     ("movie-4", include_str!("../assets/scenes/movie-4.toml")),
     ("movie-5", include_str!("../assets/scenes/movie-5.toml")),

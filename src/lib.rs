@@ -24,6 +24,7 @@ pub mod catalog;
 pub mod cli;
 pub mod output;
 pub mod scene;
+pub mod sweep;
 
 pub use error::{Error, Result};
 pub mod gallery;

@@ -144,8 +144,9 @@ fn list_names_every_scene() {
     let out = ladder(&["list"]);
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8_lossy(&out.stdout);
-    assert_eq!(text.lines().count(), 22);
+    assert_eq!(text.lines().count(), 25);
     assert!(text.contains("movie  11") && text.contains("figure S6"));
+    assert!(text.contains("figure pinning") && text.contains("figure chain-length"));
 }
 
 #[test]

@@ -29,8 +29,11 @@ fn figures() -> &'static [(String, Picture)] {
     static ALL: OnceLock<Vec<(String, Picture)>> = OnceLock::new();
     ALL.get_or_init(|| {
         let entries = catalog::entries(scene::Kind::Figure).unwrap();
+        // The sweep figures (charts of many runs) are checked by
+        // `sweep_chart_in_every_format` below, on a small grid.
         let all: Vec<(String, Picture)> = entries
             .iter()
+            .filter(|e| !matches!(e.scene.output, scene::OutputSpec::Sweep(_)))
             .map(|e| {
                 let (p, _) = scenes::figure_picture(&e.scene)
                     .unwrap_or_else(|err| panic!("{}: {err}", e.id));
@@ -533,5 +536,42 @@ fn figure_in_every_format_and_scale() {
         "--scale 2 doubles the pixels"
     );
     assert!(png.len() > 1000);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn sweep_chart_in_every_format() {
+    let out = scratch("sweep");
+    let o = out.to_str().unwrap();
+    let r = ladder(&[
+        "sweep",
+        "--alpha",
+        "50,60",
+        "--t-end",
+        "3000",
+        "--name",
+        "tiny",
+        "--format",
+        "svg,pdf,png",
+        "--out",
+        o,
+    ]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    for ext in ["svg", "pdf", "png", "csv", "json"] {
+        let f = out.join(format!("sweep-tiny.{ext}"));
+        assert!(f.exists(), "{} missing", f.display());
+    }
+    let pdf = std::fs::read(out.join("sweep-tiny.pdf")).unwrap();
+    let doc = lopdf::Document::load_mem(&pdf).unwrap();
+    let ops = pdf_operators(&doc);
+    assert!(
+        ops.iter().filter(|o| *o == "c").count() > 100,
+        "vector chart"
+    );
+    let json = std::fs::read_to_string(out.join("sweep-tiny.json")).unwrap();
+    assert!(
+        json.contains("sweep-tiny.pdf"),
+        "the data file lists the chart files"
+    );
     let _ = std::fs::remove_dir_all(&out);
 }

@@ -32,6 +32,8 @@ fn every_catalogue_entry_renders_with_its_data() {
                 b"GIF89a"
             } else if name.ends_with(".json") {
                 b"{"
+            } else if name.ends_with(".csv") {
+                b"run,"
             } else {
                 b"\x89PNG"
             };
@@ -41,7 +43,15 @@ fn every_catalogue_entry_renders_with_its_data() {
         let v: serde_json::Value = serde_json::from_slice(json).unwrap();
         assert_eq!(v["version"], env!("CARGO_PKG_VERSION"));
         assert_eq!(v["scene"]["model"]["n"], entry.scene.model.n);
-        if entry.scene.fidelity() == scene::Fidelity::Simulation {
+        if let scene::OutputSpec::Sweep(_) = entry.scene.output {
+            // A sweep's data file: every run with its point and arrivals.
+            let runs = v["runs"].as_array().unwrap();
+            assert!(runs.len() > 5, "{}", entry.id);
+            for r in runs {
+                assert!(r["outcome"].is_string(), "{}", entry.id);
+                assert!(r["arrival_times"].as_array().unwrap().len() >= 4);
+            }
+        } else if entry.scene.fidelity() == scene::Fidelity::Simulation {
             let runs = v["runs"].as_array().unwrap();
             assert!(!runs.is_empty(), "{}", entry.id);
             for r in runs {

@@ -3,11 +3,12 @@
 //! key paths are worded here as the flags the user typed.
 
 use super::args::{
-    CameraArg, DriveArgs, FigureFormat, KernelArg, MixedFormat, ModelArgs, MovieFormat, RunArgs,
-    ViewArg,
+    CameraArg, DriveArgs, FigureFormat, GridArgs, KernelArg, MixedFormat, ModelArgs, MovieFormat,
+    RunArgs, SweepArgs, ViewArg,
 };
 use crate::encode::{self, Formats, Kind as FormatKind};
 use crate::error::{Error, Result};
+use crate::scene::sweep::{Param, SweepSpec, Values};
 use crate::scene::{Camera, DriveSpec, Method, OutputSpec, Scene};
 use crate::scenes::{MovieOptions, Outputs};
 use crate::sim;
@@ -124,6 +125,84 @@ fn flag_of(key: &str) -> String {
         }
     };
     flag.to_string()
+}
+
+impl GridArgs {
+    /// The grid flags given, in the order of [`Param::ALL`].
+    pub fn given(&self) -> Vec<(Param, &str)> {
+        [
+            (Param::Alpha, &self.alpha),
+            (Param::N, &self.n),
+            (Param::B, &self.b),
+            (Param::Gamma, &self.gamma),
+            (Param::Gravity, &self.gravity),
+            (Param::Inertia, &self.inertia),
+            (Param::DriveTime, &self.drive_time),
+        ]
+        .into_iter()
+        .filter_map(|(p, v)| v.as_deref().map(|v| (p, v)))
+        .collect()
+    }
+}
+
+/// The sweep scene of `ladder sweep`: the sweep file (or the paper's
+/// scene), its grid extended or replaced by the grid flags, the run and
+/// outcome flags applied, validated; an error names the flag.
+pub fn sweep_scene(args: &SweepArgs) -> Result<Scene> {
+    let grid = args.grid.given();
+    let mut scene = match &args.file {
+        Some(path) => {
+            let s = crate::scene::file::load(path)?;
+            if !matches!(s.output, OutputSpec::Sweep(_)) {
+                return Err(Error::bad_input(format!(
+                    "{}: not a sweep file: its [output] kind must be \"sweep\" with the grid in [output.grid] (docs/sweeps.md)",
+                    path.display()
+                )));
+            }
+            s
+        }
+        None if grid.is_empty() => {
+            return Err(Error::bad_input(format!(
+                "ladder sweep needs a sweep file or at least one grid flag: --{} (e.g. --alpha=-45:-60:-0.5)",
+                Param::ALL.map(|p| p.name().replace('_', "-")).join(", --")
+            )));
+        }
+        None => Scene {
+            output: OutputSpec::Sweep(SweepSpec::default()),
+            ..Scene::default()
+        },
+    };
+    if let Some(name) = &args.name {
+        scene.name = name.clone();
+    }
+    let OutputSpec::Sweep(spec) = &mut scene.output else {
+        unreachable!("checked above")
+    };
+    for (param, text) in grid {
+        let flag = format!("--{}", param.name().replace('_', "-"));
+        let values = Values::parse(text).map_err(|m| Error::bad_input(format!("{flag}: {m}")))?;
+        values
+            .expand(param)
+            .map_err(|m| Error::bad_input(format!("{flag}: {m}")))?;
+        match spec.grid.0.iter_mut().find(|(p, _)| *p == param) {
+            Some(axis) => axis.1 = values,
+            None => spec.grid.0.push((param, values)),
+        }
+    }
+    if let Some(cap) = args.cap {
+        spec.cap = cap;
+    }
+    if let Some(quiet) = args.quiet {
+        spec.quiet = quiet;
+    }
+    args.run.apply(&mut scene)?;
+    if args.run.t_end.is_some()
+        && args.cap.is_none()
+        && let OutputSpec::Sweep(spec) = &mut scene.output
+    {
+        spec.cap = spec.cap.max(scene.run.t_end);
+    }
+    checked(scene)
 }
 
 /// A custom movie: the paper's scene (or `base`) with the flags applied.
@@ -364,6 +443,13 @@ mod tests {
                 .to_string()
                 .starts_with("--scale: ")
         );
+    }
+
+    #[test]
+    fn sweep_keys_are_worded_as_flags() {
+        assert_eq!(flag_of("output.grid.alpha"), "--alpha");
+        assert_eq!(flag_of("output.grid.drive_time"), "--drive-time");
+        assert_eq!(flag_of("output.cap"), "--cap");
     }
 
     #[test]

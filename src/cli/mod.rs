@@ -5,6 +5,7 @@
 
 pub mod args;
 pub mod convert;
+pub mod sweep;
 
 pub use args::*;
 
@@ -148,6 +149,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Simulate(args) => simulate(&args),
         Command::Bench(args) => bench(&args),
         Command::Theory(args) => theory(&args),
+        Command::Sweep(args) => sweep::sweep(&args),
         Command::List => output::print(&catalog::listing()?),
         Command::Scene(args) => {
             let entry = catalog::find_any(&args.id)?;

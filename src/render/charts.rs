@@ -29,6 +29,15 @@ pub struct Chart {
 }
 
 impl Chart {
+    /// A chart already rasterised (`pixmap`) from its `svg`.
+    pub fn new(pixmap: Pixmap, svg: String) -> Chart {
+        Chart {
+            pixmap,
+            svg,
+            tree: OnceLock::new(),
+        }
+    }
+
     /// A chart from its SVG (text markup of [`style::runs`] typeset),
     /// rasterised at `width × height` onto white.
     pub fn from_svg(svg: &str, width: u32, height: u32) -> Result<Chart> {

@@ -10,6 +10,7 @@
 //! write them with [`crate::output`].
 
 pub mod canvas;
+pub mod cells;
 pub mod charts;
 pub mod compose;
 pub mod movie_layout;

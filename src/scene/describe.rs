@@ -55,6 +55,7 @@ pub fn generated_title(scene: &Scene) -> String {
         } => format!("{t}, camera following the kink"),
         OutputSpec::Arrivals { .. } => format!("arrival times, {t}"),
         OutputSpec::Kymograph => format!("{t}: sin θₙ"),
+        OutputSpec::Sweep(sw) => sw.title(m),
         _ => t,
     }
 }
@@ -114,6 +115,14 @@ pub fn parameters(scene: &Scene) -> String {
             }
             s
         }
+        OutputSpec::Sweep(sw) => format!(
+            "{}; {}; window {} τ, continued until decided (at most {} τ); grid: {}",
+            model(&scene.model),
+            drive(&scene.drive),
+            num(scene.run.t_end),
+            num(sw.cap),
+            sw.describe_grid()
+        ),
         _ => {
             let runs = scene.runs();
             let base = format!(

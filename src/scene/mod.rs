@@ -12,6 +12,7 @@
 
 pub mod describe;
 pub mod file;
+pub mod sweep;
 
 use crate::error::{Error, Result};
 use crate::model::Params;
@@ -428,6 +429,11 @@ pub enum OutputSpec {
     Data,
     /// A figure of the linear theory or a drawing (`figure-NAME.png`).
     Theory(TheorySpec),
+    /// The scene run over a grid of parameters, each run's outcome
+    /// decided, charted (`figure-NAME.png`) and tabulated
+    /// (`figure-NAME.csv`); `ladder sweep` writes `sweep-NAME.*`
+    /// (SPEC section 7, `sweep::SweepSpec`).
+    Sweep(sweep::SweepSpec),
 }
 
 impl Default for OutputSpec {
@@ -794,6 +800,7 @@ impl Scene {
             }
             OutputSpec::Arrivals { curves } => check_panels("output.curves", curves),
             OutputSpec::Theory(t) => check_theory(t),
+            OutputSpec::Sweep(spec) => spec.check(Scene::check, self),
             _ => Ok(()),
         }
     }

@@ -1,0 +1,168 @@
+//! `ladder sweep` (SPEC section 7): run a sweep, or one shard of it, with
+//! resume; `ladder sweep gather DIR` merges the shards. Everything the
+//! user typed is validated before anything is written.
+
+use super::args::{SweepArgs, SweepCommand};
+use super::convert;
+use crate::error::{Error, Result};
+use crate::scenes::Outputs;
+use crate::sweep::shard::{self, Earlier, Shard, ShardFile};
+use crate::sweep::{Plan, Record};
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+pub fn sweep(args: &SweepArgs) -> Result<()> {
+    if let Some(SweepCommand::Gather { dir, figure_format }) = &args.command {
+        return gather(dir, &figure_format.outputs()?);
+    }
+    let outputs = args.figure_format.outputs()?;
+    let scene = convert::sweep_scene(args)?;
+    let plan = Plan::new(&scene, args.max_runs)?.map_err(|e| {
+        Error::bad_input(format!(
+            "{e}; ask for fewer, or raise the cap with --max-runs {}",
+            e.runs
+        ))
+    })?;
+    let shard = match &args.shard {
+        Some(s) => Shard::parse(s).map_err(|m| Error::bad_input(format!("--shard: {m}")))?,
+        None => Shard::WHOLE,
+    };
+    let out = &args.out.out;
+    let sdir = shard::shards_dir(out);
+    crate::output::check_writable(&sdir.join(shard.file_name(&plan.scene.name)))?;
+    let mine = shard.indices(plan.len());
+    let mut done: Vec<Record> = match shard::earlier(&plan, shard, out) {
+        Earlier::None => Vec::new(),
+        Earlier::Resumed(r) => {
+            if !r.is_empty() {
+                eprintln!(
+                    "ladder: resuming shard {}/{}: {} of {} runs already done",
+                    shard.k,
+                    shard.n,
+                    r.len(),
+                    mine.len()
+                );
+            }
+            r
+        }
+        Earlier::Stale(why) => {
+            eprintln!("ladder: {why}");
+            Vec::new()
+        }
+    };
+    let start = Instant::now();
+    let todo: Vec<usize> = mine
+        .iter()
+        .copied()
+        .filter(|i| done.binary_search_by_key(i, |r| r.run).is_err())
+        .collect();
+    run_in_chunks(&plan, shard, out, &todo, &mut done)?;
+    let path = shard::write(
+        out,
+        &plan.scene.name,
+        &ShardFile::new(&plan, shard, done.clone()),
+    )?;
+    if args.shard.is_some() {
+        eprintln!(
+            "ladder: shard {}/{} of sweep {}: {} runs ({} new) in {:.2} s → {}; when every shard is done: ladder sweep gather {}",
+            shard.k,
+            shard.n,
+            plan.scene.name,
+            mine.len(),
+            todo.len(),
+            start.elapsed().as_secs_f64(),
+            path.display(),
+            out.display()
+        );
+        return Ok(());
+    }
+    write_outputs(&plan, &done, out, &outputs, start)
+}
+
+/// Runs `todo` in chunks, rewriting the shard file after each (so that a
+/// killed run loses at most one chunk), with a progress bar.
+fn run_in_chunks(
+    plan: &Plan,
+    shard: Shard,
+    out: &Path,
+    todo: &[usize],
+    done: &mut Vec<Record>,
+) -> Result<()> {
+    let bar = super::progress_bar(todo.len() as u64, "sweep");
+    let threads = rayon::current_num_threads().max(1);
+    let mut chunk = (8 * threads).max(16);
+    let mut at = 0;
+    while at < todo.len() {
+        let end = (at + chunk).min(todo.len());
+        let t0 = Instant::now();
+        let records = plan.run(&todo[at..end], &|| bar.inc(1))?;
+        done.extend(records);
+        done.sort_by_key(|r| r.run);
+        at = end;
+        if at < todo.len() {
+            shard::write(
+                out,
+                &plan.scene.name,
+                &ShardFile::new(plan, shard, done.clone()),
+            )?;
+            // Chunks of a few seconds: frequent checkpoints, few rewrites.
+            if t0.elapsed() < Duration::from_secs(2) {
+                chunk = (2 * chunk).min(4096);
+            }
+        }
+    }
+    bar.finish_and_clear();
+    Ok(())
+}
+
+/// `sweep-NAME.png` (or .svg, .pdf: one or two varied parameters), `.csv`,
+/// `.json`.
+fn write_outputs(
+    plan: &Plan,
+    records: &[Record],
+    out: &Path,
+    outputs: &Outputs,
+    start: Instant,
+) -> Result<()> {
+    let stem = format!("sweep-{}", plan.scene.name);
+    let files = crate::sweep::outputs(plan, records, &stem, &outputs.figures, outputs.scale)?;
+    for (name, bytes) in &files {
+        crate::output::write_atomic(&out.join(name), bytes)?;
+    }
+    let counts: Vec<String> = crate::sweep::results::counts(records)
+        .iter()
+        .map(|(o, c)| format!("{c} {o}"))
+        .collect();
+    let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
+    eprintln!(
+        "ladder: sweep {}: {} runs ({}) in {:.2} s; wrote {} into {}",
+        plan.scene.name,
+        records.len(),
+        counts.join(", "),
+        start.elapsed().as_secs_f64(),
+        names.join(", "),
+        out.display()
+    );
+    if plan.varied().len() > 2 {
+        eprintln!(
+            "ladder: no chart: {} parameters vary (a chart shows one or two)",
+            plan.varied().len()
+        );
+    }
+    Ok(())
+}
+
+/// `ladder sweep gather DIR`.
+fn gather(dir: &Path, outputs: &Outputs) -> Result<()> {
+    let start = Instant::now();
+    let (scene, first, records) = shard::gather(dir)?;
+    let plan = Plan::new(&scene, usize::MAX)?.map_err(|e| Error::bad_input(format!("{e}")))?;
+    if first != plan.fingerprint {
+        return Err(Error::bad_input(format!(
+            "the shards in {} were made by another version of ladder (fingerprint {first}, this one computes {}); rerun them with this version",
+            shard::shards_dir(dir).display(),
+            plan.fingerprint
+        )));
+    }
+    write_outputs(&plan, &records, dir, outputs, start)
+}

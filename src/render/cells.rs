@@ -1,0 +1,198 @@
+//! A chart of coloured cells on a grid of two parameters (a sweep's phase
+//! diagram, SPEC section 7): one cell per grid point, its colour given,
+//! a legend of the colours and, optionally, a shade bar. Cells sit at
+//! their index along each axis (uneven spacings such as 0.005, 0.01, 0.02
+//! get equal cells), ticks name the values. Drawn like the other charts:
+//! plotters writes an SVG with the bundled font, resvg rasterises it.
+
+use super::charts::{Chart, rasterize_svg, short_number};
+use super::style::{self, DARK, FONT_FAMILY, size};
+use crate::encode::Rgb;
+use crate::error::{Error, Result};
+use plotters::prelude::*;
+
+/// One cell: its column and row (indices into the axes' values) and colour.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cell {
+    pub col: usize,
+    pub row: usize,
+    pub color: Rgb,
+}
+
+/// A shade bar beside the legend: `label`, from `lo` (colour `from`) to
+/// `hi` (colour `to`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShadeBar {
+    pub label: String,
+    pub lo: f64,
+    pub hi: f64,
+    pub from: Rgb,
+    pub to: Rgb,
+}
+
+/// The chart: axes' values (cell centres, in order), cells, legend.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CellChart {
+    pub title: Option<String>,
+    pub x_label: String,
+    pub y_label: String,
+    pub xs: Vec<f64>,
+    pub ys: Vec<f64>,
+    pub cells: Vec<Cell>,
+    /// (label, colour) of each colour used.
+    pub legend: Vec<(String, Rgb)>,
+    pub shade: Option<ShadeBar>,
+}
+
+/// Width of the legend column, pixels.
+const LEGEND_W: u32 = 190;
+
+fn font(px: f32) -> (&'static str, f64) {
+    (FONT_FAMILY, f64::from(px) * 1.24)
+}
+
+fn rgb(c: Rgb) -> RGBColor {
+    RGBColor(c[0], c[1], c[2])
+}
+
+fn plot_error<E: std::fmt::Debug>(e: E) -> Error {
+    Error::failed(format!("chart drawing failed: {e:?}"))
+}
+
+/// Draws `c` as a `width × height` chart.
+pub fn cell_chart(c: &CellChart, width: u32, height: u32) -> Result<Chart> {
+    if !((200..=8192).contains(&width) && (120..=8192).contains(&height)) {
+        return Err(Error::bad_input(format!(
+            "chart size must be between 200x120 and 8192x8192 pixels, got {width}x{height}"
+        )));
+    }
+    if c.xs.is_empty() || c.ys.is_empty() {
+        return Err(Error::bad_input("a cell chart needs values on both axes"));
+    }
+    style::register_plotters_font();
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_error)?;
+        let root = match &c.title {
+            Some(t) => root
+                .titled(t, font(size::TITLE).into_font().color(&rgb(DARK)))
+                .map_err(plot_error)?,
+            None => root,
+        };
+        let (main, side) = root.split_horizontally(width.saturating_sub(LEGEND_W));
+        draw_cells(&main, c)?;
+        draw_legend(&side, c)?;
+        root.present().map_err(plot_error)?;
+    }
+    let svg = svg.replace("<rect ", "<rect shape-rendering=\"crispEdges\" ");
+    let pixmap = rasterize_svg(&svg, width, height)?;
+    Ok(Chart::new(pixmap, svg))
+}
+
+type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
+
+fn draw_cells(area: &Area<'_>, c: &CellChart) -> Result<()> {
+    let (nx, ny) = (c.xs.len() as f64, c.ys.len() as f64);
+    let mut chart = ChartBuilder::on(area)
+        .margin(14)
+        .margin_right(6)
+        .x_label_area_size(50)
+        .y_label_area_size(64)
+        .build_cartesian_2d(-0.5..nx - 0.5, -0.5..ny - 0.5)
+        .map_err(plot_error)?;
+    chart
+        .draw_series(c.cells.iter().map(|cell| {
+            let (x, y) = (cell.col as f64, cell.row as f64);
+            Rectangle::new(
+                [(x - 0.5, y - 0.5), (x + 0.5, y + 0.5)],
+                rgb(cell.color).filled(),
+            )
+        }))
+        .map_err(plot_error)?;
+    let label_at = |values: &[f64], v: f64| -> String {
+        let i = v.round();
+        if (v - i).abs() > 1e-6 || i < 0.0 || i as usize >= values.len() {
+            return String::new();
+        }
+        short_number(values[i as usize])
+    };
+    let xf = |v: &f64| label_at(&c.xs, *v);
+    let yf = |v: &f64| label_at(&c.ys, *v);
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc(c.x_label.as_str())
+        .y_desc(c.y_label.as_str())
+        .x_labels(ticks(c.xs.len(), 10))
+        .y_labels(ticks(c.ys.len(), 10))
+        .x_label_formatter(&xf)
+        .y_label_formatter(&yf)
+        .label_style(font(size::TICK).into_font().color(&rgb(DARK)))
+        .axis_desc_style(font(size::LABEL).into_font().color(&rgb(DARK)))
+        .axis_style(rgb(DARK).stroke_width(1))
+        .draw()
+        .map_err(plot_error)
+}
+
+/// Tick count that lands on whole cell indices: the number of cells when
+/// few, else about `most`.
+fn ticks(cells: usize, most: usize) -> usize {
+    if cells <= most {
+        return cells.max(2);
+    }
+    // plotters spaces labels evenly over the range; pick a count whose
+    // spacing is a whole number of cells.
+    let step = cells.div_ceil(most);
+    (cells - 1) / step + 1
+}
+
+fn draw_legend(area: &Area<'_>, c: &CellChart) -> Result<()> {
+    let text = font(size::TICK).into_font().color(&rgb(DARK));
+    let mut y = 30;
+    for (label, color) in &c.legend {
+        area.draw(&Rectangle::new(
+            [(8, y), (26, y + 18)],
+            rgb(*color).filled(),
+        ))
+        .map_err(plot_error)?;
+        area.draw(&Text::new(label.clone(), (32, y + 2), text.clone()))
+            .map_err(plot_error)?;
+        y += 26;
+    }
+    if let Some(bar) = &c.shade {
+        y += 14;
+        area.draw(&Text::new(bar.label.clone(), (8, y), text.clone()))
+            .map_err(plot_error)?;
+        y += 22;
+        let steps = 32;
+        let (h, w) = (140, 18);
+        for i in 0..steps {
+            let f = i as f64 / (steps - 1) as f64;
+            let y0 = y + h - (i + 1) * h / steps;
+            let y1 = y + h - i * h / steps;
+            area.draw(&Rectangle::new(
+                [(8, y0), (8 + w, y1)],
+                rgb(style::mix(bar.from, bar.to, f)).filled(),
+            ))
+            .map_err(plot_error)?;
+        }
+        area.draw(&Text::new(short_number(bar.hi), (32, y), text.clone()))
+            .map_err(plot_error)?;
+        area.draw(&Text::new(short_number(bar.lo), (32, y + h - 14), text))
+            .map_err(plot_error)?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ticks_land_on_cells() {
+        assert_eq!(ticks(5, 10), 5);
+        assert_eq!(ticks(31, 10), 8);
+        assert_eq!(ticks(1, 10), 2);
+    }
+}

@@ -1,0 +1,705 @@
+//! A sweep: one scene run over a grid of parameters (SPEC section 7), as
+//! data. `[output] kind = "sweep"` names the grid in `[output.grid]`, one
+//! key per varied parameter, in the order the file gives them (the first
+//! varies slowest), each a range `"start:stop:step"` (inclusive), a list
+//! of numbers, or a list mixing both:
+//!
+//! ```toml
+//! [output]
+//! kind = "sweep"
+//! [output.grid]
+//! alpha = ["40:89.5:0.5", "-40:-89.5:-0.5"]
+//! gamma = [0.01, 0.02, 0.04]
+//! ```
+//!
+//! Running it is `crate::sweep`'s job; this module parses and checks.
+
+use super::{DriveSpec, Model, Scene};
+use serde::de::{self, MapAccess, SeqAccess, Visitor};
+use serde::ser::{SerializeMap, SerializeSeq};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+use std::fmt;
+
+/// A parameter a sweep can vary.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Param {
+    /// α in degrees (`[model] alpha`).
+    Alpha,
+    /// N (`[model] n`).
+    N,
+    /// b/s (`[model] b`).
+    B,
+    /// γ (`[model] gamma`).
+    Gamma,
+    /// G (`[model] gravity`).
+    Gravity,
+    /// I in m s² (`[model] inertia`).
+    Inertia,
+    /// T_d, the duration of every flip of block 1 (`[drive] flips`).
+    DriveTime,
+}
+
+impl Param {
+    pub const ALL: [Param; 7] = [
+        Self::Alpha,
+        Self::N,
+        Self::B,
+        Self::Gamma,
+        Self::Gravity,
+        Self::Inertia,
+        Self::DriveTime,
+    ];
+
+    /// The key in a sweep file and the CSV column: `alpha`, `drive_time`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Alpha => "alpha",
+            Self::N => "n",
+            Self::B => "b",
+            Self::Gamma => "gamma",
+            Self::Gravity => "gravity",
+            Self::Inertia => "inertia",
+            Self::DriveTime => "drive_time",
+        }
+    }
+
+    /// The symbol with its unit, for chart axes: "α (°)", "T_d / τ".
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Alpha => "α (°)",
+            Self::N => "number of blocks N",
+            Self::B => "b / s",
+            Self::Gamma => "damping γ",
+            Self::Gravity => "gravity G = mg/(ks)",
+            Self::Inertia => "moment of inertia I / ms²",
+            Self::DriveTime => "drive time T_d / τ",
+        }
+    }
+
+    /// The symbol: α, N, b/s, γ, G, I, T_d.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Self::Alpha => "α",
+            Self::N => "N",
+            Self::B => "b/s",
+            Self::Gamma => "γ",
+            Self::Gravity => "G",
+            Self::Inertia => "I",
+            Self::DriveTime => "T_d",
+        }
+    }
+
+    pub fn from_name(s: &str) -> Option<Param> {
+        Self::ALL.into_iter().find(|p| p.name() == s)
+    }
+
+    /// The names, for messages: "alpha, n, b, gamma, gravity, inertia or drive_time".
+    pub fn names() -> String {
+        let names: Vec<&str> = Self::ALL.iter().map(|p| p.name()).collect();
+        format!(
+            "{} or {}",
+            names[..names.len() - 1].join(", "),
+            names[names.len() - 1]
+        )
+    }
+
+    /// The parameter's value in `scene`.
+    pub fn get(self, scene: &Scene) -> f64 {
+        let m = &scene.model;
+        match self {
+            Self::Alpha => m.alpha,
+            Self::N => m.n as f64,
+            Self::B => m.b,
+            Self::Gamma => m.gamma,
+            Self::Gravity => m.gravity,
+            Self::Inertia => m.inertia,
+            Self::DriveTime => scene
+                .drive
+                .flips
+                .first()
+                .map_or(crate::sim::PAPER_DRIVE_TIME, |f| f.duration),
+        }
+    }
+
+    /// Sets the parameter to `v` in `scene` (N must be a whole number,
+    /// checked by [`Values::expand`]). T_d sets the duration of every flip,
+    /// keeping each flip's start.
+    pub fn set(self, scene: &mut Scene, v: f64) {
+        let m: &mut Model = &mut scene.model;
+        match self {
+            Self::Alpha => m.alpha = v,
+            Self::N => m.n = v as usize,
+            Self::B => m.b = v,
+            Self::Gamma => m.gamma = v,
+            Self::Gravity => m.gravity = v,
+            Self::Inertia => m.inertia = v,
+            Self::DriveTime => {
+                let starts: Vec<f64> = scene.drive.flips.iter().map(|f| f.start).collect();
+                scene.drive = DriveSpec::flips_at(&starts, v);
+            }
+        }
+    }
+}
+
+/// Largest number of values of one axis (the run cap bounds the product).
+pub const MAX_AXIS_VALUES: usize = 1_000_000;
+
+/// One piece of an axis: an inclusive range or a single number.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Piece {
+    /// `start:stop:step`, inclusive of `stop` when the steps land on it;
+    /// kept as typed, so that values are rounded to the decimals written.
+    Range {
+        text: String,
+    },
+    Value(f64),
+}
+
+/// The values of one axis: pieces, concatenated in order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Values(pub Vec<Piece>);
+
+impl Values {
+    /// Parses a command-line value: `start:stop:step`, or a comma list of
+    /// numbers and ranges (`0.01,0.02` or `40:89:1,-40:-89:-1`).
+    pub fn parse(text: &str) -> Result<Values, String> {
+        let mut pieces = Vec::new();
+        for part in text.split(',') {
+            let part = part.trim();
+            if part.contains(':') {
+                range_values(part)?;
+                pieces.push(Piece::Range { text: part.into() });
+            } else {
+                let v: f64 = part
+                    .parse()
+                    .map_err(|_| format!("'{part}' is not a number or a range start:stop:step"))?;
+                if !v.is_finite() {
+                    return Err(format!("'{part}' is not a finite number"));
+                }
+                pieces.push(Piece::Value(v));
+            }
+        }
+        Ok(Values(pieces))
+    }
+
+    /// The values, in order; an error names the malformed piece.
+    pub fn expand(&self, param: Param) -> Result<Vec<f64>, String> {
+        let mut out = Vec::new();
+        for p in &self.0 {
+            match p {
+                Piece::Range { text } => out.extend(range_values(text)?),
+                Piece::Value(v) if v.is_finite() => out.push(*v),
+                Piece::Value(v) => return Err(format!("{v} is not a finite number")),
+            }
+            if out.len() > MAX_AXIS_VALUES {
+                return Err(format!("more than {MAX_AXIS_VALUES} values on one axis"));
+            }
+        }
+        if out.is_empty() {
+            return Err("needs at least one value".into());
+        }
+        if param == Param::N
+            && let Some(v) = out.iter().find(|v| v.fract() != 0.0 || **v < 0.0)
+        {
+            return Err(format!("n takes whole numbers of blocks, got {v}"));
+        }
+        Ok(out)
+    }
+}
+
+/// The values of `start:stop:step`, inclusive: start, start + step, ...
+/// up to stop (within a millionth of a step), each rounded to the decimals
+/// written in the range, so that `0.01:0.05:0.01` gives 0.03, not
+/// 0.030000000000000002.
+pub fn range_values(text: &str) -> Result<Vec<f64>, String> {
+    let parts: Vec<&str> = text.split(':').map(str::trim).collect();
+    let [start, stop, step] = parts[..] else {
+        return Err(format!(
+            "'{text}' is not a range start:stop:step (three numbers)"
+        ));
+    };
+    let num = |s: &str| -> Result<f64, String> {
+        let v: f64 = s
+            .parse()
+            .map_err(|_| format!("range '{text}': '{s}' is not a number"))?;
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(format!("range '{text}': '{s}' is not a finite number"))
+        }
+    };
+    let (a, b, h) = (num(start)?, num(stop)?, num(step)?);
+    if h == 0.0 {
+        return Err(format!("range '{text}': the step must not be 0"));
+    }
+    if (b - a) * h < 0.0 {
+        return Err(format!(
+            "range '{text}': a step of {step} never reaches {stop} from {start}; use a step of sign {}",
+            if b > a { "+" } else { "-" }
+        ));
+    }
+    let count = ((b - a) / h + 1e-6).floor() + 1.0;
+    if !(count.is_finite() && count <= MAX_AXIS_VALUES as f64) {
+        return Err(format!(
+            "range '{text}' has more than {MAX_AXIS_VALUES} values"
+        ));
+    }
+    let decimals = [start, stop, step]
+        .iter()
+        .map(|s| decimals_of(s))
+        .max()
+        .unwrap_or(0);
+    let scale = 10f64.powi(decimals.min(15) as i32);
+    Ok((0..count as usize)
+        .map(|k| {
+            let v = a + k as f64 * h;
+            let r = (v * scale).round() / scale;
+            if r == 0.0 { 0.0 } else { r }
+        })
+        .collect())
+}
+
+/// Decimals a number is written with ("0.005" → 3, "1e-4" → 4, "45" → 0).
+fn decimals_of(s: &str) -> u32 {
+    let s = s.trim_start_matches(['+', '-']);
+    let (mantissa, exp) = match s.split_once(['e', 'E']) {
+        Some((m, e)) => (m, e.parse::<i32>().unwrap_or(0)),
+        None => (s, 0),
+    };
+    let frac = mantissa.split_once('.').map_or(0, |(_, f)| f.len()) as i32;
+    (frac - exp).max(0) as u32
+}
+
+impl Serialize for Values {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        if let [Piece::Range { text }] = &self.0[..] {
+            return s.serialize_str(text);
+        }
+        let mut seq = s.serialize_seq(Some(self.0.len()))?;
+        for p in &self.0 {
+            match p {
+                Piece::Range { text } => seq.serialize_element(text)?,
+                Piece::Value(v) => seq.serialize_element(v)?,
+            }
+        }
+        seq.end()
+    }
+}
+
+impl<'de> Deserialize<'de> for Values {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = Values;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str(
+                    "a range \"start:stop:step\", a number, or a list of numbers and ranges",
+                )
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<Values, E> {
+                // Checked by `SweepSpec::check`, which names the key.
+                Ok(Values(vec![Piece::Range { text: v.into() }]))
+            }
+            fn visit_f64<E: de::Error>(self, v: f64) -> Result<Values, E> {
+                Ok(Values(vec![Piece::Value(v)]))
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Values, E> {
+                Ok(Values(vec![Piece::Value(v as f64)]))
+            }
+            fn visit_u64<E: de::Error>(self, v: u64) -> Result<Values, E> {
+                Ok(Values(vec![Piece::Value(v as f64)]))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Values, A::Error> {
+                let mut pieces = Vec::new();
+                while let Some(one) = seq.next_element::<Values>()? {
+                    pieces.extend(one.0);
+                }
+                Ok(Values(pieces))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// The axes of a grid, in order: the first varies slowest. Keys that name
+/// no parameter are kept aside (second field) for [`SweepSpec::check`] to
+/// report with their place in the file (the TOML parser cannot locate an
+/// error inside an `[output]` table).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Grid(pub Vec<(Param, Values)>, pub Vec<String>);
+
+impl Grid {
+    pub fn new(axes: Vec<(Param, Values)>) -> Self {
+        Self(axes, Vec::new())
+    }
+}
+
+impl Serialize for Grid {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut map = s.serialize_map(Some(self.0.len()))?;
+        for (p, v) in &self.0 {
+            map.serialize_entry(p.name(), v)?;
+        }
+        map.end()
+    }
+}
+
+impl<'de> Deserialize<'de> for Grid {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct G;
+        impl<'de> Visitor<'de> for G {
+            type Value = Grid;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a table of parameters (alpha, n, b, gamma, gravity, inertia, drive_time) and their values")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Grid, A::Error> {
+                let mut grid = Grid::default();
+                while let Some(key) = map.next_key::<String>()? {
+                    match Param::from_name(&key) {
+                        Some(param) => {
+                            let values: Values = map.next_value()?;
+                            grid.0.push((param, values));
+                        }
+                        None => {
+                            map.next_value::<de::IgnoredAny>()?;
+                            grid.1.push(key);
+                        }
+                    }
+                }
+                Ok(grid)
+            }
+        }
+        d.deserialize_map(G)
+    }
+}
+
+/// Which charts a sweep draws beside its results.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SweepCharts {
+    /// With α on the horizontal axis, a panel of the linear-theory
+    /// quantities the paper uses to explain pinning (the gap ω₊(0) and
+    /// the barrier ΔU) on the same axis. Default true.
+    pub theory: bool,
+    /// A 1-D sweep over α of both signs plotted against |α|, kinks and
+    /// antikinks as two series. Default true.
+    pub fold_alpha: bool,
+}
+
+impl Default for SweepCharts {
+    fn default() -> Self {
+        Self {
+            theory: true,
+            fold_alpha: true,
+        }
+    }
+}
+
+/// A sweep (`[output] kind = "sweep"`): the grid, the rule that decides
+/// each run's outcome, and the charts.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepSpec {
+    /// The varied parameters and their values; every other parameter is
+    /// the scene's.
+    pub grid: Grid,
+    /// A run whose wave has not moved (no new arrival) for this many times
+    /// its longest inter-arrival gap, counted from its last arrival or
+    /// the drive's end, whichever is later, has stopped for good
+    /// (docs/sweeps.md). Default 10.
+    #[serde(default = "default_quiet")]
+    pub quiet: f64,
+    /// The latest time a run may reach while its outcome is undecided, τ.
+    /// Default 100 000 (25 times the paper's 4000 τ).
+    #[serde(default = "default_cap")]
+    pub cap: f64,
+    /// Charts drawn from the results.
+    #[serde(default)]
+    pub charts: SweepCharts,
+}
+
+fn default_quiet() -> f64 {
+    10.0
+}
+
+fn default_cap() -> f64 {
+    100_000.0
+}
+
+impl Default for SweepSpec {
+    fn default() -> Self {
+        Self {
+            grid: Grid::default(),
+            quiet: default_quiet(),
+            cap: default_cap(),
+            charts: SweepCharts::default(),
+        }
+    }
+}
+
+/// Largest cap on a run's time, τ.
+pub const MAX_CAP: f64 = 1e8;
+/// Default largest number of runs of one sweep.
+pub const DEFAULT_MAX_RUNS: usize = 100_000;
+
+/// An axis with its values.
+pub type Axis = (Param, Vec<f64>);
+
+/// One point of the grid: a value of each axis, in the axes' order.
+pub type Point = Vec<f64>;
+
+impl SweepSpec {
+    /// Each axis with its values.
+    pub fn axes(&self) -> Result<Vec<Axis>, (String, String)> {
+        let mut seen = Vec::new();
+        self.grid
+            .0
+            .iter()
+            .map(|(p, v)| {
+                let key = format!("output.grid.{}", p.name());
+                if seen.contains(p) {
+                    return Err((key, "is given twice".to_string()));
+                }
+                seen.push(*p);
+                v.expand(*p).map(|vals| (*p, vals)).map_err(|m| (key, m))
+            })
+            .collect()
+    }
+
+    /// Number of runs: the product of the axes' lengths (saturating).
+    pub fn run_count(&self) -> Result<usize, (String, String)> {
+        Ok(self
+            .axes()?
+            .iter()
+            .fold(1usize, |n, (_, v)| n.saturating_mul(v.len())))
+    }
+
+    /// The points of the grid in order (the last axis varies fastest).
+    pub fn points(&self) -> Result<Vec<Point>, (String, String)> {
+        let axes = self.axes()?;
+        let count = axes
+            .iter()
+            .fold(1usize, |n, (_, v)| n.saturating_mul(v.len()));
+        Ok((0..count)
+            .map(|mut i| {
+                let mut p = vec![0.0; axes.len()];
+                for (k, (_, vals)) in axes.iter().enumerate().rev() {
+                    p[k] = vals[i % vals.len()];
+                    i /= vals.len();
+                }
+                p
+            })
+            .collect())
+    }
+
+    /// The single-run scene of `point` on `base`.
+    pub fn scene_at(&self, base: &Scene, point: &[f64]) -> Scene {
+        let mut s = base.clone();
+        for ((p, _), v) in self.grid.0.iter().zip(point) {
+            p.set(&mut s, *v);
+        }
+        s.output = super::OutputSpec::Data;
+        s.label = None;
+        s.title = None;
+        s.caption = None;
+        s
+    }
+
+    /// Checks the grid and the rule; every point of the grid must make a
+    /// valid simulation (`check_point` checks one). `Err((key, message))`.
+    pub fn check(
+        &self,
+        check_point: impl Fn(&Scene) -> Result<(), (String, String)>,
+        base: &Scene,
+    ) -> Result<(), (String, String)> {
+        if let Some(key) = self.grid.1.first() {
+            return Err((
+                format!("output.grid.{key}"),
+                format!(
+                    "unknown parameter '{key}'; a sweep varies {}",
+                    Param::names()
+                ),
+            ));
+        }
+        if self.grid.0.is_empty() {
+            return Err((
+                "output.grid".into(),
+                format!(
+                    "a sweep needs at least one parameter to vary: {}",
+                    Param::names()
+                ),
+            ));
+        }
+        if !(self.quiet.is_finite() && self.quiet >= 1.0 && self.quiet <= 1000.0) {
+            return Err((
+                "output.quiet".into(),
+                format!("must be a number of gaps in [1, 1000], got {}", self.quiet),
+            ));
+        }
+        if !(self.cap.is_finite() && self.cap >= base.run.t_end && self.cap <= MAX_CAP) {
+            return Err((
+                "output.cap".into(),
+                format!(
+                    "must be a time from t_end = {} to {MAX_CAP} τ, got {}",
+                    base.run.t_end, self.cap
+                ),
+            ));
+        }
+        let axes = self.axes()?;
+        // Each axis's values one at a time on the base: the model's ranges
+        // are per parameter, so this checks every point, and names the axis.
+        for (param, vals) in &axes {
+            let key = format!("output.grid.{}", param.name());
+            for v in vals {
+                let mut s = base.clone();
+                param.set(&mut s, *v);
+                s.output = super::OutputSpec::Data;
+                check_point(&s).map_err(|(_, msg)| {
+                    (
+                        key.clone(),
+                        format!("the value {v} makes a bad scene: {msg}"),
+                    )
+                })?;
+                if s.model.n < MIN_SWEEP_BLOCKS {
+                    return Err((
+                        key.clone(),
+                        format!(
+                            "a sweep needs N >= {MIN_SWEEP_BLOCKS} (so that reaching block N - 1 and passing block 2 differ), got {}",
+                            s.model.n
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+impl SweepSpec {
+    /// "α = 40:89.5:0.5, −40:−89.5:−0.5; γ = 0.01, 0.02".
+    pub fn describe_grid(&self) -> String {
+        let axes: Vec<String> = self
+            .grid
+            .0
+            .iter()
+            .map(|(p, v)| {
+                let pieces: Vec<String> =
+                    v.0.iter()
+                        .map(|piece| match piece {
+                            Piece::Range { text } => text.replace('-', "−"),
+                            Piece::Value(x) => super::describe::num(*x),
+                        })
+                        .collect();
+                format!("{} = {}", p.symbol(), pieces.join(", "))
+            })
+            .collect();
+        axes.join("; ")
+    }
+
+    /// A title made from the grid: "outcome against α, N = 10" or
+    /// "phase diagram over α and γ".
+    pub fn title(&self, m: &Model) -> String {
+        let varied: Vec<&'static str> = self
+            .axes()
+            .map(|a| {
+                a.iter()
+                    .filter(|(_, v)| v.len() > 1)
+                    .map(|(p, _)| p.symbol())
+                    .collect()
+            })
+            .unwrap_or_default();
+        let fixed = if self.grid.0.iter().any(|(p, _)| *p == Param::N) {
+            format!("b/s = {}", super::describe::num(m.b))
+        } else {
+            format!("N = {}, b/s = {}", m.n, super::describe::num(m.b))
+        };
+        match varied.len() {
+            0 | 1 => format!(
+                "what the wave does against {}, {fixed}",
+                varied.first().copied().unwrap_or("nothing")
+            ),
+            2 => format!(
+                "phase diagram over {} and {}, {fixed}",
+                varied[0], varied[1]
+            ),
+            _ => format!("sweep over {}, {fixed}", varied.join(", ")),
+        }
+    }
+}
+
+/// Fewest blocks of a swept ladder: with N ≥ 4, "the wave reached block
+/// N − 1" (propagated) and "no block past block 2 flipped" (pinned) are
+/// different events.
+pub const MIN_SWEEP_BLOCKS: usize = 4;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_are_inclusive_and_rounded() {
+        assert_eq!(
+            range_values("-45:-47:-0.5").unwrap(),
+            vec![-45.0, -45.5, -46.0, -46.5, -47.0]
+        );
+        assert_eq!(
+            range_values("0.01:0.05:0.01").unwrap(),
+            vec![0.01, 0.02, 0.03, 0.04, 0.05]
+        );
+        assert_eq!(range_values("1:2:0.3").unwrap(), vec![1.0, 1.3, 1.6, 1.9]);
+        assert_eq!(range_values("5:5:1").unwrap(), vec![5.0]);
+        assert_eq!(
+            range_values("1e-4:3e-4:1e-4").unwrap(),
+            vec![1e-4, 2e-4, 3e-4]
+        );
+    }
+
+    #[test]
+    fn malformed_ranges_say_why() {
+        assert!(range_values("1:2:0").unwrap_err().contains("must not be 0"));
+        assert!(
+            range_values("1:2:-1")
+                .unwrap_err()
+                .contains("never reaches")
+        );
+        assert!(
+            range_values("1:NaN:1")
+                .unwrap_err()
+                .contains("not a finite number")
+        );
+        assert!(range_values("1:2").unwrap_err().contains("three numbers"));
+        assert!(
+            range_values("0:1e9:1e-3")
+                .unwrap_err()
+                .contains("more than")
+        );
+    }
+
+    #[test]
+    fn lists_mix_numbers_and_ranges() {
+        let v = Values::parse("40:42:1,-40:-42:-1,7").unwrap();
+        assert_eq!(
+            v.expand(Param::Alpha).unwrap(),
+            vec![40.0, 41.0, 42.0, -40.0, -41.0, -42.0, 7.0]
+        );
+        assert!(Values::parse("1,x").is_err());
+        assert!(Values::parse("1,nan").is_err());
+        assert!(Values::parse("10.5").unwrap().expand(Param::N).is_err());
+    }
+
+    #[test]
+    fn points_run_the_last_axis_fastest() {
+        let spec = SweepSpec {
+            grid: Grid::new(vec![
+                (Param::Alpha, Values::parse("1,2").unwrap()),
+                (Param::Gamma, Values::parse("0.1,0.2,0.3").unwrap()),
+            ]),
+            ..SweepSpec::default()
+        };
+        let p = spec.points().unwrap();
+        assert_eq!(p.len(), 6);
+        assert_eq!(p[0], vec![1.0, 0.1]);
+        assert_eq!(p[1], vec![1.0, 0.2]);
+        assert_eq!(p[3], vec![2.0, 0.1]);
+    }
+}

@@ -1,0 +1,444 @@
+//! Charts drawn from a sweep's results (SPEC section 7):
+//!
+//! - one varied parameter: how far the wave got (front, coloured by
+//!   outcome) and its speed against the parameter; a sweep over α of both
+//!   signs is folded onto |α| with kinks and antikinks as two series;
+//! - two: a phase diagram, outcome as colour, speed as shade;
+//! - with α on the horizontal axis, a panel of the linear-theory
+//!   quantities the paper uses to explain pinning, the gap ω₊(0) and the
+//!   barrier ΔU, on the same axis.
+//!
+//! Every panel is a `render` chart (an SVG drawn with the bundled font);
+//! the panels are stacked into one SVG and rasterised.
+
+use super::outcome::Outcome;
+use super::{Plan, Record};
+use crate::encode::Rgb;
+use crate::error::{Error, Result};
+use crate::render::cells::{Cell, CellChart, ShadeBar, cell_chart};
+use crate::render::charts::{Axis, Chart, ChartSpec, Marker, Series, line_chart, rasterize_svg};
+use crate::render::style;
+use crate::scene::describe;
+use crate::scene::sweep::Param;
+use serde::Serialize;
+
+/// Width of a sweep chart, pixels.
+pub const WIDTH: u32 = 820;
+
+/// The colour of each outcome.
+pub fn outcome_color(o: Outcome) -> Rgb {
+    match o {
+        Outcome::Propagated => style::GREEN,
+        Outcome::Stalled => style::SERIES_EXTRA[0],
+        Outcome::Pinned => style::RED,
+        Outcome::Diverged => style::DARK,
+        Outcome::Undecided => style::GREY,
+    }
+}
+
+/// The linear theory at one α: gap ω₊(0) (1/τ) and barrier ΔU per pair
+/// of blocks (m g s), for the base scene's b and I.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TheoryPoint {
+    pub alpha: f64,
+    pub gap_omega_plus_q0: Option<f64>,
+    pub barrier: Option<f64>,
+}
+
+/// The theory at every distinct |α| of the grid's α axis (empty when α is
+/// not an axis), ascending.
+pub fn theory_points(plan: &Plan) -> Vec<TheoryPoint> {
+    let Some((_, alphas)) = plan.axes.iter().find(|(p, _)| *p == Param::Alpha) else {
+        return Vec::new();
+    };
+    let mut values: Vec<f64> = alphas.to_vec();
+    values.sort_by(f64::total_cmp);
+    values.dedup();
+    let m = plan.scene.model;
+    values
+        .into_iter()
+        .map(|alpha| {
+            let params = crate::model::Params::new(m.n, m.b, alpha, m.gamma, m.gravity, m.inertia);
+            let gap = params.as_ref().ok().and_then(|p| {
+                crate::theory::bloch::BlochChain::new(p)
+                    .ok()
+                    .map(|c| c.gap(crate::theory::dispersion::KineticMetric::Paper))
+            });
+            TheoryPoint {
+                alpha,
+                gap_omega_plus_q0: gap.filter(|g| g.is_finite()),
+                barrier: crate::theory::gravity::barrier(m.b, alpha.to_radians()),
+            }
+        })
+        .collect()
+}
+
+/// The chart of a sweep, or `None` when it varies more than two
+/// parameters (the CSV and JSON hold the results).
+pub fn chart(plan: &Plan, records: &[Record]) -> Result<Option<Chart>> {
+    let varied = plan.varied();
+    let title = describe::title(&plan.scene);
+    match varied.len() {
+        0 | 1 => one_parameter(plan, records, &title).map(Some),
+        2 => phase(plan, records, &title).map(Some),
+        _ => Ok(None),
+    }
+}
+
+/// The horizontal axis of a 1-D sweep: (param, axis index, folded onto |α|).
+fn x_axis(plan: &Plan) -> (Param, usize, bool) {
+    let (k, p) = plan
+        .varied()
+        .first()
+        .map_or((0, plan.axes[0].0), |(k, p, _)| (*k, *p));
+    let vals = &plan.axes[k].1;
+    let fold = p == Param::Alpha
+        && plan.spec.charts.fold_alpha
+        && vals.iter().any(|v| *v > 0.0)
+        && vals.iter().any(|v| *v < 0.0);
+    (p, k, fold)
+}
+
+/// A wave drawn as its own series: name, marker, which records.
+type Wave<'a> = (&'static str, Marker, Box<dyn Fn(&Record) -> bool + 'a>);
+
+fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
+    let (param, k, fold) = x_axis(plan);
+    let x_of = |r: &Record| {
+        let v = plan.points[r.run][k];
+        if fold { v.abs() } else { v }
+    };
+    let x_label = if fold { "|α| (°)" } else { param.label() };
+    // One horizontal range for every panel, so that they line up.
+    let (x_lo, x_hi) = records
+        .iter()
+        .map(x_of)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    let pad = if x_hi > x_lo {
+        0.04 * (x_hi - x_lo)
+    } else {
+        0.5 * x_lo.abs().max(1.0)
+    };
+    let x_range = (x_lo - pad, x_hi + pad);
+    let x_axis = || Axis::new(x_label).range(x_range.0, x_range.1);
+    let n_max = records
+        .iter()
+        .map(|r| r.result.arrival_times.len())
+        .max()
+        .unwrap_or(plan.scene.model.n);
+    // Which waves: kinks and antikinks apart when folded.
+    let waves: Vec<Wave> = if fold {
+        vec![
+            (
+                "kink",
+                Marker::Circle,
+                Box::new(|r: &Record| plan.points[r.run][k] > 0.0),
+            ),
+            (
+                "antikink",
+                Marker::Square,
+                Box::new(|r: &Record| plan.points[r.run][k] < 0.0),
+            ),
+        ]
+    } else {
+        vec![("", Marker::Circle, Box::new(|_: &Record| true))]
+    };
+    let mut front = ChartSpec::new(
+        x_axis(),
+        Axis::new("front: last block reached").range(-0.3, n_max as f64 + 0.6),
+    )
+    .title(title);
+    // Kinks drawn a little above, antikinks a little below their front,
+    // so that neither hides the other.
+    let offsets = if fold { [0.18, -0.18] } else { [0.0, 0.0] };
+    for ((wave, marker, keep), dy) in waves.iter().zip(offsets) {
+        for o in Outcome::ALL {
+            let pts: Vec<(f64, f64)> = records
+                .iter()
+                .filter(|r| keep(r) && r.result.outcome == o)
+                .map(|r| (x_of(r), r.result.front as f64 + dy))
+                .collect();
+            if pts.is_empty() {
+                continue;
+            }
+            let label = if wave.is_empty() {
+                o.name().to_string()
+            } else {
+                format!("{wave}: {o}")
+            };
+            front = front.series(Series::scatter(label, pts, outcome_color(o), *marker));
+        }
+    }
+    // A log axis when the speeds span more than a decade (near 90° the
+    // whole chain flips at once), else linear, so that ticks show.
+    let (s_lo, s_hi) = records
+        .iter()
+        .filter_map(|r| r.result.speed)
+        .fold((f64::INFINITY, 0.0f64), |(a, b), v| (a.min(v), b.max(v)));
+    let log = s_hi > 10.0 * s_lo;
+    // Linear speeds in 10⁻³ blocks/τ, so that tick labels stay short.
+    let unit = if log { 1.0 } else { 1e3 };
+    let speed_axis = if log {
+        Axis::new("speed (blocks/τ)").log()
+    } else {
+        Axis::new("speed (10⁻³ blocks/τ)")
+    };
+    let mut speed = ChartSpec::new(x_axis(), speed_axis);
+    for (i, (wave, marker, keep)) in waves.iter().enumerate() {
+        let mut pts: Vec<(f64, f64)> = records
+            .iter()
+            .filter(|r| keep(r))
+            .map(|r| (x_of(r), r.result.speed.map_or(f64::NAN, |v| unit * v)))
+            .collect();
+        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let color = style::series_color(if fold { 2 * i + 1 } else { 2 });
+        let label = if wave.is_empty() { "speed" } else { wave };
+        let mut s = Series::line(label, pts, color).with_marker(*marker);
+        if i == 1 {
+            s = s.dashed();
+        }
+        speed = speed.series(s);
+    }
+    if speed
+        .series
+        .iter()
+        .all(|s| s.points.iter().all(|p| !p.1.is_finite()))
+    {
+        speed.y = speed.y.range(1e-4, 1.0);
+        speed.series.clear();
+        speed.title = Some("no run propagated far enough to measure a speed".into());
+    }
+    let mut panels = vec![
+        (line_chart(&front, WIDTH, 300)?, 300),
+        (line_chart(&speed, WIDTH, 260)?, 260),
+    ];
+    if param == Param::Alpha && plan.spec.charts.theory {
+        panels.push((
+            theory_panel(plan, x_label, fold, Some((WIDTH, x_range)))?,
+            240,
+        ));
+    }
+    stack(&panels)
+}
+
+/// ω₊(0) and ΔU against α (or |α|); `x_range` pins the axis.
+fn theory_panel(
+    plan: &Plan,
+    x_label: &str,
+    fold: bool,
+    width_range: Option<(u32, (f64, f64))>,
+) -> Result<Chart> {
+    let pts = theory_points(plan);
+    let x = |a: f64| if fold { a.abs() } else { a };
+    let mut gap: Vec<(f64, f64)> = pts
+        .iter()
+        .map(|p| (x(p.alpha), p.gap_omega_plus_q0.unwrap_or(f64::NAN)))
+        .collect();
+    let mut barrier: Vec<(f64, f64)> = pts
+        .iter()
+        .map(|p| (x(p.alpha), p.barrier.unwrap_or(f64::NAN)))
+        .collect();
+    gap.sort_by(|a, b| a.0.total_cmp(&b.0));
+    gap.dedup_by(|a, b| a.0 == b.0);
+    barrier.sort_by(|a, b| a.0.total_cmp(&b.0));
+    barrier.dedup_by(|a, b| a.0 == b.0);
+    let mut xa = Axis::new(x_label);
+    let width = match width_range {
+        Some((w, (lo, hi))) => {
+            xa = xa.range(lo, hi);
+            w
+        }
+        None => WIDTH,
+    };
+    // Headroom above the curves for the legend, so that the plot keeps the
+    // full width and its α axis lines up with the panels above.
+    let top = gap
+        .iter()
+        .chain(&barrier)
+        .map(|p| p.1)
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max);
+    let mut spec = ChartSpec::new(
+        xa,
+        Axis::new("linear theory").range(0.0, 1.45 * top.max(1e-3)),
+    )
+    .series(Series::line("gap ω₊(0) τ", gap, style::BLUE))
+    .series(Series::line("barrier ΔU / mgs (per pair)", barrier, style::RED).dashed());
+    spec.legend = crate::render::charts::Legend::UpperMiddle;
+    line_chart(&spec, width, 240)
+}
+
+fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
+    let varied = plan.varied();
+    // α across when it is one of the two.
+    let (ix, iy) = if varied[1].1 == Param::Alpha {
+        (1, 0)
+    } else {
+        (0, 1)
+    };
+    let (kx, px, xs) = varied[ix];
+    let (ky, py, ys) = varied[iy];
+    let sorted = |v: &[f64]| {
+        let mut s = v.to_vec();
+        s.sort_by(f64::total_cmp);
+        s.dedup();
+        s
+    };
+    let (xs, ys) = (sorted(xs), sorted(ys));
+    let speeds: Vec<f64> = records
+        .iter()
+        .filter(|r| r.result.outcome == Outcome::Propagated)
+        .filter_map(|r| r.result.speed)
+        .collect();
+    let (lo, hi) = speeds
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(*v), b.max(*v))
+        });
+    let pale = |c: Rgb| style::mix(style::WHITE, c, 0.35);
+    let shade = |o: Outcome, v: Option<f64>| -> Rgb {
+        let c = outcome_color(o);
+        match v {
+            Some(v) if o == Outcome::Propagated && hi > lo => {
+                style::mix(pale(c), c, (v - lo) / (hi - lo))
+            }
+            _ => c,
+        }
+    };
+    let index = |vals: &[f64], v: f64| vals.iter().position(|x| *x == v).unwrap_or(0);
+    let cells = records
+        .iter()
+        .map(|r| Cell {
+            col: index(&xs, plan.points[r.run][kx]),
+            row: index(&ys, plan.points[r.run][ky]),
+            color: shade(r.result.outcome, r.result.speed),
+        })
+        .collect();
+    let present: Vec<Outcome> = Outcome::ALL
+        .into_iter()
+        .filter(|o| records.iter().any(|r| r.result.outcome == *o))
+        .collect();
+    let chart = CellChart {
+        title: Some(title.to_string()),
+        x_label: px.label().into(),
+        y_label: py.label().into(),
+        xs: xs.clone(),
+        ys,
+        cells,
+        legend: present
+            .iter()
+            .map(|o| (o.name().to_string(), outcome_color(*o)))
+            .collect(),
+        shade: (hi > lo).then(|| ShadeBar {
+            label: "speed, blocks/τ".into(),
+            lo,
+            hi,
+            from: pale(outcome_color(Outcome::Propagated)),
+            to: outcome_color(Outcome::Propagated),
+        }),
+    };
+    let main = cell_chart(&chart, WIDTH, 480)?;
+    let mut panels = vec![(main, 480)];
+    if px == Param::Alpha && plan.spec.charts.theory {
+        let even = xs
+            .windows(2)
+            .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
+        let range = if even && xs.len() > 1 {
+            let h = 0.5 * (xs[1] - xs[0]);
+            Some((WIDTH - 190, (xs[0] - h, xs[xs.len() - 1] + h)))
+        } else {
+            None
+        };
+        panels.push((theory_panel(plan, px.label(), false, range)?, 240));
+    }
+    stack(&panels)
+}
+
+/// Panels stacked top to bottom into one SVG (nested `<svg>` elements),
+/// rasterised at their own size.
+fn stack(panels: &[(Chart, u32)]) -> Result<Chart> {
+    let height: u32 = panels.iter().map(|(_, h)| *h).sum();
+    let mut svg = format!(
+        "<svg width=\"{WIDTH}\" height=\"{height}\" viewBox=\"0 0 {WIDTH} {height}\" \
+         xmlns=\"http://www.w3.org/2000/svg\">\n<rect x=\"0\" y=\"0\" width=\"{WIDTH}\" \
+         height=\"{height}\" fill=\"#ffffff\"/>\n"
+    );
+    let mut y = 0;
+    for (chart, h) in panels {
+        let inner = strip_prolog(&chart.svg);
+        let placed = inner.replacen("<svg ", &format!("<svg x=\"0\" y=\"{y}\" "), 1);
+        svg.push_str(&placed);
+        svg.push('\n');
+        y += h;
+    }
+    svg.push_str("</svg>\n");
+    let pixmap = rasterize_svg(&svg, WIDTH, height)?;
+    Ok(Chart::new(pixmap, svg))
+}
+
+fn strip_prolog(svg: &str) -> &str {
+    match svg.find("<svg") {
+        Some(i) => &svg[i..],
+        None => svg,
+    }
+}
+
+/// A short account of a 1-D sweep over α, measured: where each wave stops
+/// propagating (for the captions and the report). `None` when α is not
+/// the one varied parameter.
+pub fn transitions(plan: &Plan, records: &[Record]) -> Vec<String> {
+    let (param, k, _) = x_axis(plan);
+    if plan.varied().len() != 1 {
+        return Vec::new();
+    }
+    let mut out = Vec::new();
+    for sign in [1.0, -1.0] {
+        let mut rs: Vec<(f64, &Record)> = records
+            .iter()
+            .map(|r| (plan.points[r.run][k], r))
+            .filter(|(v, _)| param != Param::Alpha || v * sign > 0.0)
+            .collect();
+        if rs.is_empty() {
+            continue;
+        }
+        rs.sort_by(|a, b| a.0.abs().total_cmp(&b.0.abs()));
+        let wave = if param != Param::Alpha {
+            String::new()
+        } else if sign > 0.0 {
+            "kink: ".into()
+        } else {
+            "antikink: ".into()
+        };
+        let mut changes = Vec::new();
+        for w in rs.windows(2) {
+            let (a, b) = (w[0].1.result.outcome, w[1].1.result.outcome);
+            if a != b {
+                changes.push(format!(
+                    "{a} at {} → {b} at {}",
+                    describe::num(w[0].0),
+                    describe::num(w[1].0)
+                ));
+            }
+        }
+        if changes.is_empty() {
+            changes.push(format!("all {}", rs[0].1.result.outcome));
+        }
+        out.push(format!("{wave}{}", changes.join("; ")));
+        if param != Param::Alpha {
+            break;
+        }
+    }
+    out
+}
+
+/// An error for a chart asked of a sweep that varies more than two
+/// parameters.
+pub fn too_many_axes(plan: &Plan) -> Error {
+    Error::bad_input(format!(
+        "sweep {} varies {} parameters; its chart needs one or two (the CSV and JSON hold every run)",
+        plan.scene.name,
+        plan.varied().len()
+    ))
+}

@@ -1,0 +1,232 @@
+//! Sweeps (SPEC section 7): a scene run over a grid of parameters, every
+//! run until its outcome is decided, on every core, results in grid order.
+//!
+//! - `scene::sweep` holds the data (grid, rule, charts) of a scene whose
+//!   `[output] kind = "sweep"`;
+//! - [`outcome`] decides what a run's wave did from its arrival times;
+//! - [`run`] runs one point with the scene's integrator (`auto` verified);
+//! - [`results`] writes the CSV and JSON, byte-identical between runs;
+//! - [`shard`] splits a sweep over processes or machines, resumes, gathers;
+//! - [`chart`] draws the results.
+//!
+//! Floors: this module knows scenes, the simulation, the theory and the
+//! charts; it knows no command-line flag.
+
+pub mod chart;
+pub mod outcome;
+pub mod results;
+pub mod run;
+pub mod shard;
+
+use crate::error::{Error, Result};
+use crate::scene::sweep::{Param, Point, SweepSpec};
+use crate::scene::{OutputSpec, Scene};
+use rayon::prelude::*;
+pub use run::RunResult;
+use serde::{Deserialize, Serialize};
+use std::fmt;
+
+/// A sweep ready to run: its scene, its axes and points, its fingerprint.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    /// The sweep scene (its output is the sweep).
+    pub scene: Scene,
+    pub spec: SweepSpec,
+    pub axes: Vec<(Param, Vec<f64>)>,
+    pub points: Vec<Point>,
+    /// A hash of everything that decides the results: the program's
+    /// version, the base scene's model, drive and run, the grid's values
+    /// and the rule.
+    pub fingerprint: String,
+}
+
+/// The result of one point, with its index in the grid.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Record {
+    pub run: usize,
+    #[serde(flatten)]
+    pub result: RunResult,
+}
+
+/// A grid with more runs than the cap allows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TooManyRuns {
+    pub runs: usize,
+    pub cap: usize,
+}
+
+impl fmt::Display for TooManyRuns {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "this sweep has {} runs, past the cap of {} runs",
+            self.runs, self.cap
+        )
+    }
+}
+
+impl Plan {
+    /// The plan of a sweep scene, refused past `max_runs` runs. The scene
+    /// must have passed `Scene::check`.
+    pub fn new(scene: &Scene, max_runs: usize) -> Result<std::result::Result<Plan, TooManyRuns>> {
+        let OutputSpec::Sweep(spec) = &scene.output else {
+            return Err(Error::bad_input(format!(
+                "scene {} is not a sweep ([output] kind = \"sweep\")",
+                scene.name
+            )));
+        };
+        scene
+            .check()
+            .map_err(|(k, m)| Error::bad_input(format!("{k}: {m}")))?;
+        let axes = spec
+            .axes()
+            .map_err(|(k, m)| Error::bad_input(format!("{k}: {m}")))?;
+        let runs = axes
+            .iter()
+            .fold(1usize, |n, (_, v)| n.saturating_mul(v.len()));
+        if runs > max_runs {
+            return Ok(Err(TooManyRuns {
+                runs,
+                cap: max_runs,
+            }));
+        }
+        let points = spec
+            .points()
+            .map_err(|(k, m)| Error::bad_input(format!("{k}: {m}")))?;
+        let fingerprint = fingerprint(scene, spec, &axes)?;
+        Ok(Ok(Plan {
+            scene: scene.clone(),
+            spec: spec.clone(),
+            axes,
+            points,
+            fingerprint,
+        }))
+    }
+
+    pub fn len(&self) -> usize {
+        self.points.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.points.is_empty()
+    }
+
+    /// The single-run scene of run `i`.
+    pub fn scene_at(&self, i: usize) -> Scene {
+        self.spec.scene_at(&self.scene, &self.points[i])
+    }
+
+    /// The axes with more than one value (what the charts vary).
+    pub fn varied(&self) -> Vec<(usize, Param, &[f64])> {
+        self.axes
+            .iter()
+            .enumerate()
+            .filter(|(_, (_, v))| v.len() > 1)
+            .map(|(k, (p, v))| (k, *p, v.as_slice()))
+            .collect()
+    }
+
+    /// Runs the points `indices` on every core; results in the order of
+    /// `indices`. `done` is called once per finished run (progress).
+    pub fn run(&self, indices: &[usize], done: &(dyn Fn() + Sync)) -> Result<Vec<Record>> {
+        indices
+            .par_iter()
+            .with_max_len(1)
+            .map(|&i| {
+                let r = run::run_point(&self.scene_at(i), &self.spec)?;
+                done();
+                Ok(Record { run: i, result: r })
+            })
+            .collect()
+    }
+}
+
+/// What a sweep's results depend on, hashed (FNV-1a, 64 bits, hex).
+fn fingerprint(scene: &Scene, spec: &SweepSpec, axes: &[(Param, Vec<f64>)]) -> Result<String> {
+    #[derive(Serialize)]
+    struct Key<'a> {
+        version: &'static str,
+        model: &'a crate::scene::Model,
+        drive: &'a crate::scene::DriveSpec,
+        run: &'a crate::scene::Run,
+        axes: Vec<(&'static str, &'a [f64])>,
+        quiet: f64,
+        cap: f64,
+    }
+    let key = Key {
+        version: env!("CARGO_PKG_VERSION"),
+        model: &scene.model,
+        drive: &scene.drive,
+        run: &scene.run,
+        axes: axes.iter().map(|(p, v)| (p.name(), v.as_slice())).collect(),
+        quiet: spec.quiet,
+        cap: spec.cap,
+    };
+    let text = serde_json::to_string(&key)
+        .map_err(|e| Error::failed(format!("cannot encode the sweep's fingerprint: {e}")))?;
+    Ok(format!("{:016x}", fnv1a(text.as_bytes())))
+}
+
+/// FNV-1a, 64 bits.
+fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+/// The files of a sweep's results under `stem` (`sweep-NAME` or
+/// `figure-NAME`), as (file name, bytes): the chart in each of `formats`
+/// (when one or two parameters vary; PNG at `scale`), the CSV and the
+/// JSON, in that order.
+pub fn outputs(
+    plan: &Plan,
+    records: &[Record],
+    stem: &str,
+    formats: &crate::encode::Formats,
+    scale: f32,
+) -> Result<Vec<(String, Vec<u8>)>> {
+    let chart = chart::chart(plan, records)?;
+    let mut names = Vec::new();
+    let mut files = Vec::with_capacity(formats.as_slice().len() + 2);
+    if let Some(c) = chart {
+        let picture = crate::render::Picture::from(c);
+        for (f, bytes) in formats
+            .as_slice()
+            .iter()
+            .zip(picture.encode(formats, scale)?)
+        {
+            let name = format!("{stem}.{}", f.extension());
+            names.push(name.clone());
+            files.push((name, bytes));
+        }
+    }
+    names.push(format!("{stem}.csv"));
+    names.push(format!("{stem}.json"));
+    files.push((
+        format!("{stem}.csv"),
+        results::csv(plan, records).into_bytes(),
+    ));
+    files.push((
+        format!("{stem}.json"),
+        results::json(plan, records, &names)?,
+    ));
+    Ok(files)
+}
+
+/// Runs a whole sweep scene in this process (no shards, no resume) and
+/// returns its files under `figure-NAME` (a catalogue figure), the chart
+/// in each of `formats`.
+pub fn render(
+    scene: &Scene,
+    formats: &crate::encode::Formats,
+    scale: f32,
+) -> Result<Vec<(String, Vec<u8>)>> {
+    let plan = Plan::new(scene, crate::scene::sweep::DEFAULT_MAX_RUNS)?.map_err(|e| {
+        Error::bad_input(format!(
+            "{e}; run it with `ladder sweep FILE --max-runs N` to raise the cap"
+        ))
+    })?;
+    let all: Vec<usize> = (0..plan.len()).collect();
+    let records = plan.run(&all, &|| {})?;
+    outputs(&plan, &records, &scene.stem(), formats, scale)
+}
