@@ -10,7 +10,7 @@ mod common;
 
 use common::golden::check;
 use jacobs_ladder::catalog;
-use jacobs_ladder::encode::{self, Format};
+use jacobs_ladder::encode;
 use jacobs_ladder::render::Picture;
 use jacobs_ladder::scene;
 use jacobs_ladder::scenes;
@@ -29,7 +29,8 @@ fn figures() -> &'static [(String, Picture)] {
     static ALL: OnceLock<Vec<(String, Picture)>> = OnceLock::new();
     ALL.get_or_init(|| {
         let entries = catalog::entries(scene::Kind::Figure).unwrap();
-        // The sweep figures are charts of a sweep's results, PNG only.
+        // The sweep figures (charts of many runs) are checked by
+        // `sweep_chart_in_every_format` below, on a small grid.
         let all: Vec<(String, Picture)> = entries
             .iter()
             .filter(|e| !matches!(e.scene.output, scene::OutputSpec::Sweep(_)))
@@ -167,6 +168,7 @@ fn movie_scene(id: &str) -> scene::Scene {
     catalog::find(scene::Kind::Movie, id).unwrap().scene.clone()
 }
 
+#[cfg(feature = "mp4")]
 /// Every frame of a GIF, composited (disposal "keep", transparent index
 /// leaves the pixel as it was), as RGB.
 fn gif_frames(bytes: &[u8]) -> (usize, usize, Vec<Vec<u8>>) {
@@ -194,6 +196,7 @@ fn gif_frames(bytes: &[u8]) -> (usize, usize, Vec<Vec<u8>>) {
     (w, h, out)
 }
 
+#[cfg(feature = "mp4")]
 /// Peak signal-to-noise ratio of two RGB buffers, dB.
 fn psnr(a: &[u8], b: &[u8]) -> f64 {
     assert_eq!(a.len(), b.len());
@@ -206,6 +209,7 @@ fn psnr(a: &[u8], b: &[u8]) -> f64 {
     10.0 * (255.0f64 * 255.0 / mse.max(1e-12)).log10()
 }
 
+#[cfg(feature = "mp4")]
 /// The top-level boxes of an MP4: (type, offset, size).
 fn top_boxes(bytes: &[u8]) -> Vec<(String, usize, usize)> {
     let mut out = Vec::new();
@@ -224,7 +228,7 @@ fn top_boxes(bytes: &[u8]) -> Vec<(String, usize, usize)> {
 #[cfg(feature = "mp4")]
 #[test]
 fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
-    use jacobs_ladder::encode::Yuv420;
+    use jacobs_ladder::encode::{Format, Yuv420};
     use openh264::formats::YUVSource;
     let scene = movie_scene("4");
     let opts = scenes::MovieOptions {
@@ -314,7 +318,19 @@ fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
             u: rows(yuv.u(), us, w / 2, h / 2),
             v: rows(yuv.v(), vs, w / 2, h / 2),
         };
-        let p = psnr(&ours.to_rgb(), &gif_rgb[k as usize]);
+        let rgb = ours.to_rgb();
+        if k == 16 {
+            let rgba: Vec<u8> = rgb
+                .chunks_exact(3)
+                .flat_map(|c| [c[0], c[1], c[2], 255])
+                .collect();
+            let img = image::RgbaImage::from_raw(w as u32, h as u32, rgba).unwrap();
+            let mut png = Vec::new();
+            img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+                .unwrap();
+            dump("movie-4-mp4-frame-16.png", &png);
+        }
+        let p = psnr(&rgb, &gif_rgb[k as usize]);
         assert!(p >= 30.0, "frame {k}: PSNR {p:.1} dB");
         if k % 8 == 0 {
             eprintln!("frame {k}: PSNR {p:.1} dB against the GIF");
@@ -426,4 +442,136 @@ fn golden_rasterised_svg() {
     let svg = encode::svg_bytes(&pic.to_tree(1.0).unwrap());
     let (w, h) = pic.pixel_size();
     check("svg-figure-edge-mode", &rasterize_svg_file(&svg, w, h));
+}
+
+// ------------------------------------------------------------ command line
+
+fn ladder(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("ladder-formats-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+#[test]
+fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
+    let out = scratch("bad");
+    let o = out.to_str().unwrap();
+    let cases: [(&[&str], &str); 9] = [
+        (
+            &["figure", "3", "--format", "jpg", "--out", o],
+            "--format: unknown format 'jpg'",
+        ),
+        (
+            &["movie", "4", "--format", "pdf", "--out", o],
+            "--format: a movie cannot be pdf",
+        ),
+        (
+            &["all", "--format", "png,webm", "--out", o],
+            "--format: unknown format 'webm'",
+        ),
+        (
+            &["movie", "4", "--format", "gif", "--fps", "60", "--out", o],
+            "--fps: a GIF plays at most 50",
+        ),
+        (
+            &[
+                "movie", "4", "--format", "mp4", "--size", "641x480", "--out", o,
+            ],
+            if cfg!(feature = "mp4") {
+                "try 642x480"
+            } else {
+                "without the cargo feature 'mp4'"
+            },
+        ),
+        (
+            &["movie", "4", "--size", "9000x480", "--out", o],
+            "between 64 and 4096",
+        ),
+        (&["figure", "2b", "--scale", "100", "--out", o], "--scale:"),
+        (&["figure", "3", "--out", "x.svg"], "--out is a folder"),
+        (&["figure", "3", "--out", "Cargo.toml"], "--out is a folder"),
+    ];
+    for (args, expected) in cases {
+        let r = ladder(args);
+        let err = String::from_utf8_lossy(&r.stderr);
+        assert_eq!(r.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(expected), "{args:?}: {err}");
+    }
+    assert!(!out.exists(), "nothing written on bad input");
+    assert!(!std::path::Path::new("x.svg").exists());
+}
+
+#[test]
+fn figure_in_every_format_and_scale() {
+    let out = scratch("figure");
+    let o = out.to_str().unwrap();
+    let r = ladder(&[
+        "figure",
+        "2d",
+        "--format",
+        "pdf,svg,png",
+        "--scale",
+        "2",
+        "--out",
+        o,
+    ]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let png = std::fs::read(out.join("figure-2d.png")).unwrap();
+    let svg = std::fs::read(out.join("figure-2d.svg")).unwrap();
+    let pdf = std::fs::read(out.join("figure-2d.pdf")).unwrap();
+    assert!(pdf.starts_with(b"%PDF-") && svg.starts_with(b"<svg"));
+    let (w, h) = image::image_dimensions(out.join("figure-2d.png")).unwrap();
+    let pic = &figures().iter().find(|(n, _)| n == "figure-2d").unwrap().1;
+    assert_eq!(
+        (w, h),
+        pic.scaled_size(2.0).unwrap(),
+        "--scale 2 doubles the pixels"
+    );
+    assert!(png.len() > 1000);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn sweep_chart_in_every_format() {
+    let out = scratch("sweep");
+    let o = out.to_str().unwrap();
+    let r = ladder(&[
+        "sweep",
+        "--alpha",
+        "50,60",
+        "--t-end",
+        "3000",
+        "--name",
+        "tiny",
+        "--format",
+        "svg,pdf,png",
+        "--out",
+        o,
+    ]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    for ext in ["svg", "pdf", "png", "csv", "json"] {
+        let f = out.join(format!("sweep-tiny.{ext}"));
+        assert!(f.exists(), "{} missing", f.display());
+    }
+    let pdf = std::fs::read(out.join("sweep-tiny.pdf")).unwrap();
+    let doc = lopdf::Document::load_mem(&pdf).unwrap();
+    let ops = pdf_operators(&doc);
+    assert!(
+        ops.iter().filter(|o| *o == "c").count() > 100,
+        "vector chart"
+    );
+    let json = std::fs::read_to_string(out.join("sweep-tiny.json")).unwrap();
+    assert!(
+        json.contains("sweep-tiny.pdf"),
+        "the data file lists the chart files"
+    );
+    let _ = std::fs::remove_dir_all(&out);
 }

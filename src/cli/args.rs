@@ -424,7 +424,7 @@ pub struct BenchArgs {
     allow_negative_numbers = true,
     after_help = "Ranges are START:STOP:STEP, inclusive (--alpha=-45:-60:-0.5), or comma lists \
                   of numbers and ranges (--gamma 0.01,0.02,0.04). Writes OUT/sweep-NAME.csv, \
-                  OUT/sweep-NAME.json and OUT/sweep-NAME.png, and keeps the runs done in \
+                  OUT/sweep-NAME.json and OUT/sweep-NAME.png (or --format svg,pdf), and keeps the runs done in \
                   OUT/shards/ so that a rerun resumes. With --shard K/N only shard K is run; \
                   `ladder sweep gather OUT` merges the shards (docs/cluster.md)."
 )]
@@ -459,6 +459,8 @@ pub struct SweepArgs {
     /// Largest number of runs accepted
     #[arg(long, value_name = "N", default_value_t = crate::scene::sweep::DEFAULT_MAX_RUNS)]
     pub max_runs: usize,
+    #[command(flatten)]
+    pub figure_format: FigureFormat,
 }
 
 #[derive(Subcommand, Debug)]
@@ -468,6 +470,8 @@ pub enum SweepCommand {
         /// The folder the shards were written to (their --out)
         #[arg(value_name = "DIR")]
         dir: PathBuf,
+        #[command(flatten)]
+        figure_format: FigureFormat,
     },
 }
 

@@ -369,7 +369,8 @@ pub fn check_out_dir(out: &Path) -> Result<()> {
         && !out.exists()
     {
         return Err(Error::bad_input(format!(
-            "--out is a folder, not a file name: got {shown}; use --out DIR (the files are named after the scene) and --format {ext}"
+            "--out is a folder, not a file name: got {shown}; use --out DIR (the files are \
+             named after the scene) and --format {ext}"
         )));
     }
     Ok(())

@@ -5,15 +5,17 @@
 use super::args::{SweepArgs, SweepCommand};
 use super::convert;
 use crate::error::{Error, Result};
+use crate::scenes::Outputs;
 use crate::sweep::shard::{self, Earlier, Shard, ShardFile};
 use crate::sweep::{Plan, Record};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
 pub fn sweep(args: &SweepArgs) -> Result<()> {
-    if let Some(SweepCommand::Gather { dir }) = &args.command {
-        return gather(dir);
+    if let Some(SweepCommand::Gather { dir, figure_format }) = &args.command {
+        return gather(dir, &figure_format.outputs()?);
     }
+    let outputs = args.figure_format.outputs()?;
     let scene = convert::sweep_scene(args)?;
     let plan = Plan::new(&scene, args.max_runs)?.map_err(|e| {
         Error::bad_input(format!(
@@ -74,7 +76,7 @@ pub fn sweep(args: &SweepArgs) -> Result<()> {
         );
         return Ok(());
     }
-    write_outputs(&plan, &done, out, start)
+    write_outputs(&plan, &done, out, &outputs, start)
 }
 
 /// Runs `todo` in chunks, rewriting the shard file after each (so that a
@@ -113,9 +115,17 @@ fn run_in_chunks(
     Ok(())
 }
 
-/// `sweep-NAME.png` (one or two varied parameters), `.csv`, `.json`.
-fn write_outputs(plan: &Plan, records: &[Record], out: &Path, start: Instant) -> Result<()> {
-    let files = crate::sweep::outputs(plan, records, &format!("sweep-{}", plan.scene.name))?;
+/// `sweep-NAME.png` (or .svg, .pdf: one or two varied parameters), `.csv`,
+/// `.json`.
+fn write_outputs(
+    plan: &Plan,
+    records: &[Record],
+    out: &Path,
+    outputs: &Outputs,
+    start: Instant,
+) -> Result<()> {
+    let stem = format!("sweep-{}", plan.scene.name);
+    let files = crate::sweep::outputs(plan, records, &stem, &outputs.figures, outputs.scale)?;
     for (name, bytes) in &files {
         crate::output::write_atomic(&out.join(name), bytes)?;
     }
@@ -143,7 +153,7 @@ fn write_outputs(plan: &Plan, records: &[Record], out: &Path, start: Instant) ->
 }
 
 /// `ladder sweep gather DIR`.
-fn gather(dir: &Path) -> Result<()> {
+fn gather(dir: &Path, outputs: &Outputs) -> Result<()> {
     let start = Instant::now();
     let (scene, first, records) = shard::gather(dir)?;
     let plan = Plan::new(&scene, usize::MAX)?.map_err(|e| Error::bad_input(format!("{e}")))?;
@@ -154,5 +164,5 @@ fn gather(dir: &Path) -> Result<()> {
             plan.fingerprint
         )));
     }
-    write_outputs(&plan, &records, dir, start)
+    write_outputs(&plan, &records, dir, outputs, start)
 }

@@ -100,10 +100,7 @@ impl Format {
 
     /// Whether this build can write the format (MP4 needs the `mp4` feature).
     pub fn is_built(self) -> bool {
-        match self {
-            Format::Mp4 => cfg!(feature = "mp4"),
-            _ => true,
-        }
+        self != Format::Mp4 || cfg!(feature = "mp4")
     }
 
     /// SVG and PDF: drawn from the vector description of a picture.

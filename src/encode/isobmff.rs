@@ -292,8 +292,8 @@ fn stsd(b: &mut Boxes, t: &Mp4Track, w: u16, h: u16) {
 }
 
 /// Splits an Annex B byte stream (NAL units after 00 00 01 or 00 00 00 01
-/// start codes) into its NAL units.
-pub(crate) fn annex_b_units(stream: &[u8]) -> Vec<&[u8]> {
+/// start codes) into its NAL units (the form H.264 encoders hand out).
+pub fn annex_b_units(stream: &[u8]) -> Vec<&[u8]> {
     let mut starts = Vec::new();
     let mut i = 0;
     while i + 3 <= stream.len() {

@@ -23,7 +23,7 @@ pub use format::{
     check_movie_size, parse_mixed,
 };
 pub use gif::{GIF_MAX_FPS, GifWriter, Palette, TRANSPARENT_INDEX};
-pub use isobmff::{Mp4Track, mp4_file};
+pub use isobmff::{Mp4Track, annex_b_units, mp4_file};
 pub use movie::MovieWriter;
 #[cfg(feature = "mp4")]
 pub use mp4::Mp4Writer;

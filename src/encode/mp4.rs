@@ -53,6 +53,12 @@ impl Mp4Writer {
             .skip_frames(false)
             .max_frame_rate(FrameRate::from_hz(fps as f32))
             .complexity(Complexity::Low)
+            // Each of these costs time and saves no bytes at a fixed
+            // quantiser on drawn frames (measured: background detection
+            // alone is 30 % of the encoder's time at 1280 × 720).
+            .background_detection(false)
+            .scene_change_detect(false)
+            .adaptive_quantization(false)
             .num_threads(1)
             .intra_frame_period(IntraFramePeriod::from_num_frames(
                 (KEY_FRAME_SECONDS * fps).round().max(1.0) as u32,

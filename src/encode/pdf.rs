@@ -154,9 +154,7 @@ impl PageWriter {
             self.content.rect(0.0, 0.0, 0.0, 0.0).clip_nonzero();
         }
         self.content.end_path();
-        if !t.is_identity()
-            && let Some(inv) = t.invert()
-        {
+        if let Some(inv) = t.invert().filter(|_| !t.is_identity()) {
             self.content
                 .transform([inv.sx, inv.ky, inv.kx, inv.sy, inv.tx, inv.ty]);
         }

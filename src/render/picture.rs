@@ -11,7 +11,7 @@
 use super::canvas::{Canvas, Pen, Raster};
 use super::charts::Chart;
 use super::style::{self, HAlign, VAlign};
-use crate::encode::Rgb;
+use crate::encode::{self, Format, Formats, Rgb};
 use crate::error::{Error, Result};
 use std::sync::Arc;
 use tiny_skia::{Path, Pixmap, Transform};
@@ -171,6 +171,27 @@ impl Picture {
     /// as `<text>` in the bundled font's family).
     pub fn to_svg(&self, scale: f32) -> Result<String> {
         super::svg::document(self, scale)
+    }
+
+    /// The bytes of the picture in each figure format of `formats`, in
+    /// order: PNG at `scale`; SVG and PDF (vector, design size) from one
+    /// parse of [`Picture::to_tree`].
+    pub fn encode(&self, formats: &Formats, scale: f32) -> Result<Vec<Vec<u8>>> {
+        let tree = if formats.any_vector() {
+            Some(self.to_tree(1.0)?)
+        } else {
+            None
+        };
+        formats
+            .as_slice()
+            .iter()
+            .map(|f| match (f, &tree) {
+                (Format::Png, _) => encode::png_bytes(&self.rasterize(scale)?),
+                (Format::Svg, Some(t)) => Ok(encode::svg_bytes(t)),
+                (Format::Pdf, Some(t)) => encode::pdf_bytes(t),
+                _ => Err(Error::failed(format!("a figure cannot be written as {f}"))),
+            })
+            .collect()
     }
 
     /// The picture parsed as an SVG tree with the bundled font: the input

@@ -7,7 +7,7 @@ pub mod dynamic;
 pub mod run;
 pub mod theory;
 
-use crate::encode::{self, Format, Formats, Kind as FormatKind, png_bytes};
+use crate::encode::{Formats, Kind as FormatKind};
 use crate::error::{Error, Result};
 use crate::render::Picture;
 use crate::scene::{OutputSpec, Scene, describe};
@@ -92,7 +92,16 @@ pub fn file_names_for(scene: &Scene, outputs: &Outputs) -> Vec<String> {
             v
         }
         OutputSpec::Data => vec![],
-        OutputSpec::Sweep(_) => vec![format!("{stem}.png"), format!("{stem}.csv")],
+        OutputSpec::Sweep(_) => {
+            let mut v: Vec<String> = outputs
+                .figures
+                .as_slice()
+                .iter()
+                .map(|f| format!("{stem}.{}", f.extension()))
+                .collect();
+            v.push(format!("{stem}.csv"));
+            v
+        }
         _ => outputs
             .figures
             .as_slice()
@@ -110,24 +119,9 @@ pub fn render(scene: &Scene, movie: &MovieOptions) -> Result<Vec<(String, Vec<u8
     render_with(scene, movie, &Outputs::default(), &|| {})
 }
 
-/// The bytes of a figure in each of `formats`: PNG at `scale`; SVG and PDF
-/// from one parse of the picture's vector form.
+/// The bytes of a figure in each of `formats` (see [`Picture::encode`]).
 pub fn figure_bytes(picture: &Picture, formats: &Formats, scale: f32) -> Result<Vec<Vec<u8>>> {
-    let tree = if formats.any_vector() {
-        Some(picture.to_tree(1.0)?)
-    } else {
-        None
-    };
-    formats
-        .as_slice()
-        .iter()
-        .map(|f| match (f, &tree) {
-            (Format::Png, _) => png_bytes(&picture.rasterize(scale)?),
-            (Format::Svg, Some(t)) => Ok(encode::svg_bytes(t)),
-            (Format::Pdf, Some(t)) => encode::pdf_bytes(t),
-            _ => Err(Error::failed(format!("a figure cannot be written as {f}"))),
-        })
-        .collect()
+    picture.encode(formats, scale)
 }
 
 /// A figure scene drawn once, as a picture (the vector description every
@@ -166,7 +160,7 @@ pub fn render_with(
 ) -> Result<Vec<(String, Vec<u8>)>> {
     if let OutputSpec::Sweep(_) = scene.output {
         // Its own data file: the sweep's JSON (crate::sweep::results).
-        return crate::sweep::render(scene);
+        return crate::sweep::render(scene, &outputs.figures, outputs.scale);
     }
     let (mut bytes, runs) = match &scene.output {
         OutputSpec::Theory(_)
@@ -190,7 +184,9 @@ pub fn render_with(
             let run = run::simulate(scene, &[])?;
             (vec![], vec![RunData::from_run(scene, &run)])
         }
-        OutputSpec::Sweep(_) => return crate::sweep::render(scene),
+        OutputSpec::Sweep(_) => {
+            return crate::sweep::render(scene, &outputs.figures, outputs.scale);
+        }
     };
     let names = file_names_for(scene, outputs);
     let data = DataFile {

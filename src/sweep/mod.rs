@@ -175,20 +175,33 @@ fn fnv1a(bytes: &[u8]) -> u64 {
 }
 
 /// The files of a sweep's results under `stem` (`sweep-NAME` or
-/// `figure-NAME`), as (file name, bytes): the chart (when one or two
-/// parameters vary), the CSV and the JSON, in that order.
-pub fn outputs(plan: &Plan, records: &[Record], stem: &str) -> Result<Vec<(String, Vec<u8>)>> {
+/// `figure-NAME`), as (file name, bytes): the chart in each of `formats`
+/// (when one or two parameters vary; PNG at `scale`), the CSV and the
+/// JSON, in that order.
+pub fn outputs(
+    plan: &Plan,
+    records: &[Record],
+    stem: &str,
+    formats: &crate::encode::Formats,
+    scale: f32,
+) -> Result<Vec<(String, Vec<u8>)>> {
     let chart = chart::chart(plan, records)?;
     let mut names = Vec::new();
-    if chart.is_some() {
-        names.push(format!("{stem}.png"));
+    let mut files = Vec::with_capacity(formats.as_slice().len() + 2);
+    if let Some(c) = chart {
+        let picture = crate::render::Picture::from(c);
+        for (f, bytes) in formats
+            .as_slice()
+            .iter()
+            .zip(picture.encode(formats, scale)?)
+        {
+            let name = format!("{stem}.{}", f.extension());
+            names.push(name.clone());
+            files.push((name, bytes));
+        }
     }
     names.push(format!("{stem}.csv"));
     names.push(format!("{stem}.json"));
-    let mut files = Vec::with_capacity(3);
-    if let Some(c) = chart {
-        files.push((names[0].clone(), crate::encode::png_bytes(&c.pixmap)?));
-    }
     files.push((
         format!("{stem}.csv"),
         results::csv(plan, records).into_bytes(),
@@ -201,8 +214,13 @@ pub fn outputs(plan: &Plan, records: &[Record], stem: &str) -> Result<Vec<(Strin
 }
 
 /// Runs a whole sweep scene in this process (no shards, no resume) and
-/// returns its files under `figure-NAME` (a catalogue figure).
-pub fn render(scene: &Scene) -> Result<Vec<(String, Vec<u8>)>> {
+/// returns its files under `figure-NAME` (a catalogue figure), the chart
+/// in each of `formats`.
+pub fn render(
+    scene: &Scene,
+    formats: &crate::encode::Formats,
+    scale: f32,
+) -> Result<Vec<(String, Vec<u8>)>> {
     let plan = Plan::new(scene, crate::scene::sweep::DEFAULT_MAX_RUNS)?.map_err(|e| {
         Error::bad_input(format!(
             "{e}; run it with `ladder sweep FILE --max-runs N` to raise the cap"
@@ -210,5 +228,5 @@ pub fn render(scene: &Scene) -> Result<Vec<(String, Vec<u8>)>> {
     })?;
     let all: Vec<usize> = (0..plan.len()).collect();
     let records = plan.run(&all, &|| {})?;
-    outputs(&plan, &records, &scene.stem())
+    outputs(&plan, &records, &scene.stem(), formats, scale)
 }
