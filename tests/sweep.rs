@@ -5,7 +5,7 @@
 use jacobs_ladder::scene::sweep::{Grid, Param, SweepSpec, Values};
 use jacobs_ladder::scene::{OutputSpec, Scene};
 use jacobs_ladder::sweep::outcome::Outcome;
-use jacobs_ladder::sweep::run::run_point;
+use jacobs_ladder::sweep::run::{run_point, run_points};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -334,6 +334,86 @@ fn slow_and_stopped_waves_are_told_apart_on_real_runs() {
     assert_eq!(r.outcome, Outcome::Propagated);
     assert!(r.t_decided.unwrap() < 4000.0, "stopped early: {r:?}");
     assert!(r.arrival_error.unwrap() <= 0.1 / 3.0 + 1e-12);
+}
+
+/// Many points at once (`run_points`: rounds through the batch kernel)
+/// give every point exactly what running it alone gives (`run_point`),
+/// bit for bit: kinks and antikinks that propagate, stall and stay pinned,
+/// two chain lengths, two drive times (two stop rules), a fixed Verlet
+/// step, a diverging fixed step, and points still undecided at a low cap.
+#[test]
+fn many_points_at_once_equal_each_point_alone() {
+    use jacobs_ladder::scene::Method;
+    use jacobs_ladder::sim::IntegratorKind;
+    let (_, spec) = scene_at(60.0);
+    let mut scenes = Vec::new();
+    for alpha in [
+        -40.0, -50.0, -52.0, -52.5, -55.0, -60.0, -75.0, -89.0, 40.0, 52.0, 60.0, 75.0, 89.0,
+    ] {
+        let (s, _) = scene_at(alpha);
+        scenes.push(s);
+    }
+    for (alpha, n) in [
+        (60.0, 12),
+        (-60.0, 12),
+        (65.0, 12),
+        (70.0, 12),
+        (-70.0, 12),
+        (80.0, 12),
+    ] {
+        let (mut s, _) = scene_at(alpha);
+        s.model.n = n;
+        scenes.push(s);
+    }
+    for t_d in [200.0, 200.0, 200.0, 200.0, 200.0, 200.0, 500.0] {
+        let (mut s, _) = scene_at(65.0);
+        s.drive.flips[0].duration = t_d;
+        scenes.push(s);
+    }
+    for (kind, dt, alpha) in [
+        (IntegratorKind::Verlet, 0.25, 60.0),
+        (IntegratorKind::Verlet, 0.25, -60.0),
+        (IntegratorKind::SymplecticEuler, 0.95, 60.0),
+        (IntegratorKind::SymplecticEuler, 0.95, 70.0),
+    ] {
+        let (mut s, _) = scene_at(alpha);
+        s.run.integrator = Method::Fixed(kind);
+        s.run.dt = Some(dt);
+        scenes.push(s);
+    }
+    let alone: Vec<_> = scenes
+        .iter()
+        .map(|s| run_point(s, &spec).unwrap())
+        .collect();
+    let together = run_points(&scenes, &spec).unwrap();
+    assert_eq!(together.len(), alone.len());
+    for (k, (a, b)) in alone.iter().zip(&together).enumerate() {
+        assert_eq!(
+            a, b,
+            "point {k} ({} at alpha {})",
+            scenes[k].name, scenes[k].model.alpha
+        );
+    }
+    let outcomes: std::collections::BTreeSet<_> = alone.iter().map(|r| r.outcome.name()).collect();
+    for o in ["propagated", "stalled", "pinned", "diverged"] {
+        assert!(outcomes.contains(o), "the set covers {o}: {outcomes:?}");
+    }
+
+    // A cap below the slow antikinks' decision: undecided, alike.
+    let low = SweepSpec {
+        cap: 3000.0,
+        ..spec.clone()
+    };
+    let slow: Vec<Scene> = [-52.0, -52.5, -53.0, -54.0, -60.0, -70.0, -80.0]
+        .iter()
+        .map(|&a| scene_at(a).0)
+        .collect();
+    let alone: Vec<_> = slow.iter().map(|s| run_point(s, &low).unwrap()).collect();
+    assert_eq!(run_points(&slow, &low).unwrap(), alone);
+    assert!(
+        alone.iter().any(|r| r.outcome == Outcome::Undecided),
+        "{alone:?}"
+    );
 }
 
 #[test]
