@@ -583,3 +583,64 @@ fn the_printed_linkage_model_does_not_stop_halfway() {
         }
     }
 }
+
+/// The catalogue's `friction` figure, and what its caption says the data
+/// show: friction against gravity sets the antikink's speed where γ is
+/// large against G (equal G/γ, equal speed; speed ∝ G/γ), and not at low
+/// damping.
+#[test]
+fn the_friction_figure_shows_what_its_caption_says() {
+    use jacobs_ladder::sweep::Plan;
+    let entry = jacobs_ladder::catalog::find_any("friction").unwrap();
+    let plan = Plan::new(&entry.scene, 1000).unwrap().unwrap();
+    let all: Vec<usize> = (0..plan.len()).collect();
+    let records = plan.run(&all, &|| {}).unwrap();
+    assert_eq!(records.len(), 25);
+    let (kg, kgamma) = (
+        plan.axes
+            .iter()
+            .position(|(p, _)| *p == Param::Gravity)
+            .unwrap(),
+        plan.axes
+            .iter()
+            .position(|(p, _)| *p == Param::Gamma)
+            .unwrap(),
+    );
+    // Speeds by G/γ (rounded to 1e-9 to group equal ratios).
+    let mut by_ratio: std::collections::BTreeMap<i64, Vec<f64>> = Default::default();
+    for r in &records {
+        assert_eq!(r.result.outcome, Outcome::Propagated, "{r:?}");
+        let p = &plan.points[r.run];
+        let ratio = p[kg] / p[kgamma];
+        by_ratio
+            .entry((ratio * 1e9).round() as i64)
+            .or_default()
+            .push(r.result.speed.unwrap());
+    }
+    let spread = |v: &[f64]| {
+        let (lo, hi) = v
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(a, b), x| (a.min(*x), b.max(*x)));
+        hi / lo - 1.0
+    };
+    for (&key, speeds) in &by_ratio {
+        let ratio = key as f64 * 1e-9;
+        let mean = speeds.iter().sum::<f64>() / speeds.len() as f64;
+        if ratio <= 0.005 + 1e-12 {
+            assert!(spread(speeds) <= 0.06, "G/γ = {ratio}: {speeds:?}");
+            // About 0.30 G/γ blocks per τ.
+            assert!((mean / ratio - 0.30).abs() < 0.015, "G/γ = {ratio}: {mean}");
+        }
+        if (ratio - 0.02).abs() < 1e-12 {
+            assert!(spread(speeds) > 0.3, "inertia at low damping: {speeds:?}");
+            assert!(
+                mean < 0.9 * 0.30 * ratio,
+                "below the proportional law: {mean}"
+            );
+        }
+        if (ratio - 0.01).abs() < 1e-12 {
+            let s = spread(speeds);
+            assert!((0.15..0.25).contains(&s), "the paper's G/γ: {speeds:?}");
+        }
+    }
+}
