@@ -100,56 +100,89 @@ pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
     compose_picture(panels, layout)?.to_pixmap()
 }
 
+/// Where a grid puts its panels: the picture's size, the title band's
+/// height, and for each panel its cell's top left corner and size.
+struct Grid {
+    width: u32,
+    height: u32,
+    cells: Vec<((u32, u32), (u32, u32))>,
+    bands: (u32, u32),
+}
+
+impl Grid {
+    fn new(panels: &[Panel], layout: &Layout) -> Result<Grid> {
+        if panels.is_empty() || layout.columns == 0 {
+            return Err(Error::bad_input(
+                "a composition needs at least one panel and one column",
+            ));
+        }
+        let cols = layout.columns.min(panels.len());
+        let rows = panels.len().div_ceil(cols);
+        let mut col_w = vec![0u32; cols];
+        let mut row_h = vec![0u32; rows];
+        for (k, p) in panels.iter().enumerate() {
+            let (w, h) = p.image.pixel_size();
+            col_w[k % cols] = col_w[k % cols].max(w);
+            row_h[k / cols] = row_h[k / cols].max(h);
+        }
+        let (label_h, caption_h) = bands(panels);
+        let title_h = layout
+            .title
+            .as_ref()
+            .map_or(0, |_| (size::TITLE * 1.8) as u32);
+        let (m, g) = (layout.margin, layout.gap);
+        let width = 2 * m + col_w.iter().sum::<u32>() + (cols as u32 - 1) * g;
+        let cells_h: u32 = row_h.iter().map(|h| h + label_h + caption_h).sum();
+        let height = 2 * m + title_h + cells_h + (rows as u32 - 1) * g;
+        if width > super::picture::MAX_RASTER_SIDE || height > super::picture::MAX_RASTER_SIDE {
+            return Err(snapshot::bad_size(width, height));
+        }
+        let offsets = |sizes: &[u32], extra: u32| -> Vec<u32> {
+            sizes
+                .iter()
+                .scan(0, |acc, s| {
+                    let at = *acc;
+                    *acc += s + extra + g;
+                    Some(at)
+                })
+                .collect()
+        };
+        let (xs, ys) = (offsets(&col_w, 0), offsets(&row_h, label_h + caption_h));
+        let cells = (0..panels.len())
+            .map(|k| {
+                let (c, r) = (k % cols, k / cols);
+                ((m + xs[c], m + title_h + ys[r]), (col_w[c], row_h[r]))
+            })
+            .collect();
+        Ok(Grid {
+            width,
+            height,
+            cells,
+            bands: (label_h, caption_h),
+        })
+    }
+
+    /// Top left corner of panel `k`'s image, centred in its cell.
+    fn image_origin(&self, k: usize, image: (u32, u32)) -> (u32, u32) {
+        let ((x, y), (cw, ih)) = self.cells[k];
+        (x + (cw - image.0) / 2, y + self.bands.0 + (ih - image.1) / 2)
+    }
+}
+
 /// Places panels in a grid (row-major). Each column is as wide as its
 /// widest picture and each row as tall as its tallest; pictures are
 /// centred in their cells.
 pub fn compose_picture(panels: &[Panel], layout: &Layout) -> Result<Picture> {
-    if panels.is_empty() || layout.columns == 0 {
-        return Err(Error::bad_input(
-            "a composition needs at least one panel and one column",
-        ));
-    }
-    let cols = layout.columns.min(panels.len());
-    let rows = panels.len().div_ceil(cols);
-    let mut col_w = vec![0u32; cols];
-    let mut row_h = vec![0u32; rows];
-    for (k, p) in panels.iter().enumerate() {
-        let (w, h) = p.image.pixel_size();
-        col_w[k % cols] = col_w[k % cols].max(w);
-        row_h[k / cols] = row_h[k / cols].max(h);
-    }
-    let (label_h, caption_h) = bands(panels);
-    let title_h = layout
-        .title
-        .as_ref()
-        .map_or(0, |_| (size::TITLE * 1.8) as u32);
-    let (m, g) = (layout.margin, layout.gap);
-    let width = 2 * m + col_w.iter().sum::<u32>() + (cols as u32 - 1) * g;
-    let cells_h: u32 = row_h.iter().map(|h| h + label_h + caption_h).sum();
-    let height = 2 * m + title_h + cells_h + (rows as u32 - 1) * g;
-    if width > super::picture::MAX_RASTER_SIDE || height > super::picture::MAX_RASTER_SIDE {
-        return Err(snapshot::bad_size(width, height));
-    }
-    let mut out = Picture::new(width as f32, height as f32);
+    let grid = Grid::new(panels, layout)?;
+    let (width, m) = (grid.width, layout.margin);
+    let mut out = Picture::new(width as f32, grid.height as f32);
     if let Some(t) = &layout.title {
         let at = (0.5 * width as f32, m as f32);
         out.text(t, at, size::TITLE, DARK, (HAlign::Center, VAlign::Top));
     }
-    let offsets = |sizes: &[u32], extra: u32| -> Vec<u32> {
-        sizes
-            .iter()
-            .scan(0, |acc, s| {
-                let at = *acc;
-                *acc += s + extra + g;
-                Some(at)
-            })
-            .collect()
-    };
-    let (xs, ys) = (offsets(&col_w, 0), offsets(&row_h, label_h + caption_h));
     for (k, p) in panels.iter().enumerate() {
-        let (c, r) = (k % cols, k / cols);
-        let at = (m + xs[c], m + title_h + ys[r]);
-        draw_panel(&mut out, p, at, (col_w[c], row_h[r]), (label_h, caption_h));
+        let at = grid.image_origin(k, p.image.pixel_size());
+        draw_panel(&mut out, p, at, grid.cells[k], grid.bands);
     }
     Ok(out)
 }
@@ -157,13 +190,10 @@ pub fn compose_picture(panels: &[Panel], layout: &Layout) -> Result<Picture> {
 fn draw_panel(
     out: &mut Picture,
     p: &Panel,
-    (x, y): (u32, u32),
-    (cw, ih): (u32, u32),
+    (ix, iy): (u32, u32),
+    ((x, y), (cw, ih)): ((u32, u32), (u32, u32)),
     (lh, _ch): (u32, u32),
 ) {
-    let (w, h) = p.image.pixel_size();
-    let ix = x + (cw - w) / 2;
-    let iy = y + lh + (ih - h) / 2;
     out.place(&p.image, (ix as f32, iy as f32));
     if let Some(l) = &p.label {
         let at = (x as f32 + 2.0, y as f32);

@@ -8,6 +8,7 @@ use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::charts::{self, Axis, ChartSpec, Kymograph, Marker, Series};
 use crate::render::compose::{self, ChainMark, FilmstripOptions, Frame, Layout, Panel};
+use crate::render::fold::{self, Fold};
 use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::{MovieLayout, Picture, style};
 use crate::scene::{Camera, DriveSpec, MIN_BLOCK_PIXELS, Model, OutputSpec, Scene, describe};
@@ -381,64 +382,23 @@ impl Column {
     }
 }
 
-/// Gap between the columns of a folded ladder, pixels.
-const COLUMN_GAP: f32 = 8.0;
-
-/// A long ladder folded into columns side by side, like lines of text,
-/// so that every block stays in the frame and at least as large as the
-/// frame allows: segments start at even blocks (the parity of t_n is
-/// kept) and overlap by one block, so every spring is drawn. The number of
-/// columns is the one that draws the blocks largest.
-fn fold(ladder: &Ladder, states: &[Vec<f64>], region: Region) -> Result<Vec<Column>> {
-    let n = ladder.n();
-    let b = ladder.params.b;
+/// A long ladder folded into columns side by side (`render::fold`): the
+/// number of columns is the one that draws the blocks largest in `region`.
+fn folded_columns(ladder: &Ladder, states: &[Vec<f64>], region: Region) -> Vec<Column> {
     let all: Vec<&[f64]> = states.iter().map(|q| q.as_slice()).collect();
-    let whole = View::fit(&all);
-    let across = (whole.y.1 - whole.y.0).max(1e-9);
-    let columns_of = |stride: usize| (n - 1).div_ceil(stride).max(1);
-    let scale_of = |stride: usize| {
-        let cols = columns_of(stride) as f32;
-        let w = (region.w - COLUMN_GAP * (cols - 1.0)) / cols;
-        let along = stride as f64 * b + 2.0;
-        (region.h as f64 / along).min(w as f64 / across)
-    };
-    let stride = (2..n)
-        .step_by(2)
-        .max_by(|&p, &q| scale_of(p).total_cmp(&scale_of(q)))
-        .unwrap_or(n);
-    let cols = columns_of(stride);
-    let w = (region.w - COLUMN_GAP * (cols as f32 - 1.0)) / cols as f32;
-    let mut out = Vec::with_capacity(cols);
-    for j in 0..cols {
-        let start = j * stride;
-        let end = (start + stride + 1).min(n);
-        let seg: Vec<&[f64]> = states.iter().map(|q| &q[3 * start..3 * end]).collect();
-        let fit = View::fit(&seg);
-        let along = stride as f64 * b + 2.0;
-        // Every column at one scale (the same spans), its first block at
-        // the top, like lines of text.
-        let y_mid = 0.5 * (whole.y.0 + whole.y.1);
-        let view = View::window(
-            (fit.x.0, fit.x.0 + along),
-            (y_mid - 0.5 * across, y_mid + 0.5 * across),
-        );
-        let params = crate::model::Params {
-            n: end - start,
-            ..ladder.params
-        };
-        out.push(Column {
-            start,
-            ladder: Ladder::new(params),
-            region: Region {
-                x: (region.x + j as f32 * (w + COLUMN_GAP)).round(),
-                y: region.y,
-                w: w.floor().max(1.0),
-                h: region.h,
-            },
-            views: vec![view],
-        });
-    }
-    Ok(out)
+    let folded = Fold::best_in(ladder, &all, region, fold::COLUMN_GAP);
+    let regions = folded.regions(region, fold::COLUMN_GAP);
+    folded
+        .segments
+        .into_iter()
+        .zip(regions)
+        .map(|(s, region)| Column {
+            start: s.start,
+            ladder: s.ladder,
+            region,
+            views: vec![s.view],
+        })
+        .collect()
 }
 
 /// What a movie draws before any pixel: its run, its layout and the
@@ -503,7 +463,7 @@ impl MoviePlan {
                     h: band,
                     ..region
                 };
-                (fold(&ladder, &traj.states, inner)?, Some(time))
+                (folded_columns(&ladder, &traj.states, inner), Some(time))
             }
         };
         let lab_scale = (camera == Camera::Follow).then(|| {
