@@ -3,9 +3,9 @@
 //! Fig. 1c and Fig. 3).
 
 use super::canvas::{Canvas, Pen};
+use super::fold::{self, Fold};
 use super::picture::Picture;
 use super::snapshot::{self, Region, Snapshot, View};
-use super::fold::{self, Fold};
 use super::style::{self, DARK, HAlign, VAlign, size};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
@@ -166,7 +166,10 @@ impl Grid {
     /// Top left corner of panel `k`'s image, centred in its cell.
     fn image_origin(&self, k: usize, image: (u32, u32)) -> (u32, u32) {
         let ((x, y), (cw, ih)) = self.cells[k];
-        (x + (cw - image.0) / 2, y + self.bands.0 + (ih - image.1) / 2)
+        (
+            x + (cw - image.0) / 2,
+            y + self.bands.0 + (ih - image.1) / 2,
+        )
     }
 }
 
@@ -505,7 +508,12 @@ impl StripPlan {
         }
         // A light frame holds each snapshot's columns together.
         let (w, h) = (w as f32, h as f32);
-        let corners = [(0.5, 0.5), (w - 0.5, 0.5), (w - 0.5, h - 0.5), (0.5, h - 0.5)];
+        let corners = [
+            (0.5, 0.5),
+            (w - 0.5, 0.5),
+            (w - 0.5, h - 0.5),
+            (0.5, h - 0.5),
+        ];
         if let Some(path) = super::canvas::polyline_path(&corners, true) {
             let pen = Pen::new(1.0, style::mix(style::WHITE, style::GREY, 0.45));
             img.stroke(&path, &pen);

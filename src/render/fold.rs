@@ -109,7 +109,10 @@ fn estimated_along(lo: &[f64], hi: &[f64], stride: usize) -> f64 {
     for j in 0..cols {
         let (start, end) = (j * stride, (j * stride + stride + 1).min(n));
         let l = lo[start..end].iter().copied().fold(f64::INFINITY, f64::min);
-        let h = hi[start..end].iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let h = hi[start..end]
+            .iter()
+            .copied()
+            .fold(f64::NEG_INFINITY, f64::max);
         if h >= l {
             along = along.max(h - l);
         }
@@ -269,7 +272,10 @@ mod tests {
         assert_eq!(candidates(2, 10), vec![(2, 1)]);
         let c = candidates(200, 50);
         assert_eq!(c[0], (200, 1));
-        assert!(c.iter().all(|&(s, cols)| s % 2 == 0 && (cols - 1) * s < 199));
+        assert!(
+            c.iter()
+                .all(|&(s, cols)| s % 2 == 0 && (cols - 1) * s < 199)
+        );
         assert!(c.windows(2).all(|w| w[1].1 > w[0].1 && w[1].0 < w[0].0));
         assert!(candidates(200, 3).iter().all(|&(_, cols)| cols <= 3));
     }

@@ -315,10 +315,7 @@ pub fn filmstrip_figure(
 
 /// For a test of the filmstrips: where [`filmstrip_figure`] draws every
 /// block, one [`StripGeometry`] per strip in the figure's pixels.
-pub fn filmstrip_geometry(
-    scene: &Scene,
-    frame: Option<(u32, u32)>,
-) -> Result<Vec<StripGeometry>> {
+pub fn filmstrip_geometry(scene: &Scene, frame: Option<(u32, u32)>) -> Result<Vec<StripGeometry>> {
     let strips = strips(scene, frame)?;
     let panels = strips
         .iter()
