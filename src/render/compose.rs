@@ -647,9 +647,12 @@ pub fn filmstrip_geometry(
     Ok(out)
 }
 
+/// A composition's size and the top left corner of each panel's image.
+pub type Placement = ((u32, u32), Vec<(u32, u32)>);
+
 /// The top left corners of `panels` composed with `layout`, and the size
 /// of the composition (see [`compose_picture`]).
-pub fn panel_origins(panels: &[Panel], layout: &Layout) -> Result<((u32, u32), Vec<(u32, u32)>)> {
+pub fn panel_origins(panels: &[Panel], layout: &Layout) -> Result<Placement> {
     let grid = Grid::new(panels, layout)?;
     let origins = panels
         .iter()
