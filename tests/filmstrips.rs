@@ -200,3 +200,18 @@ fn catalogue_filmstrips_are_not_folded() {
         }
     }
 }
+
+/// The most snapshots a strip may have, of a long ladder: the rows widen
+/// rather than the strip grow taller than a picture may be.
+#[test]
+fn many_snapshots_of_a_long_ladder_fit_one_picture() {
+    let mut s = strip_scene(300, "[run]\nt_end = 2000\n");
+    if let scene::OutputSpec::Filmstrip { times, .. } = &mut s.output {
+        *times = scene::even_times(2000.0, scene::MAX_TIMES);
+    }
+    let (picture, _) = dynamic::filmstrip_figure(&s, None).unwrap();
+    let g = &dynamic::filmstrip_geometry(&s, None).unwrap()[0];
+    assert_eq!(g.snapshots.len(), scene::MAX_TIMES);
+    assert_eq!(g.size, picture.pixel_size());
+    check_geometry("64 snapshots, N = 300", g, 300);
+}

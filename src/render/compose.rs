@@ -341,6 +341,9 @@ const MAX_FOLDED_WIDTH: f32 = 4000.0;
 /// Widest row of folded snapshots, in pixels; further snapshots wrap to
 /// the next row.
 const MAX_FOLDED_ROW: u32 = 1800;
+/// Tallest strip of folded snapshots, in pixels: below
+/// [`super::picture::MAX_RASTER_SIDE`] with room for a figure's title.
+const MAX_FOLDED_HEIGHT: u32 = 7600;
 /// Gap between the snapshots of a strip, in pixels: folded snapshots get
 /// more, so that their columns group visibly.
 const SNAPSHOT_GAP: u32 = 6;
@@ -468,7 +471,11 @@ impl StripPlan {
         let width = (left + cols * column_w + (cols - 1.0) * gap + right).ceil() as u32;
         let row = MAX_FOLDED_ROW - 2 * size::MARGIN;
         let fits = ((row + FOLDED_SNAPSHOT_GAP) / (width + FOLDED_SNAPSHOT_GAP)).max(1) as usize;
-        let rows = frames.len().div_ceil(fits);
+        // Many snapshots: rows wider than MAX_FOLDED_ROW rather than a
+        // strip taller than a picture may be.
+        let row_h = h + (size::LABEL * 1.7) as u32 + FOLDED_SNAPSHOT_GAP;
+        let max_rows = (MAX_FOLDED_HEIGHT / row_h).max(1) as usize;
+        let rows = frames.len().div_ceil(fits).min(max_rows);
         Ok(StripPlan {
             size: (width, h),
             columns,

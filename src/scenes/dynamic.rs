@@ -284,7 +284,8 @@ fn strips(scene: &Scene, frame: Option<(u32, u32)>) -> Result<Vec<(Strip, RunDat
 const MAX_STRIP_ROW: u32 = 2000;
 
 /// The figure's layout of `panels`: two strips a row when there are more
-/// than two and they fit, with the scene's title.
+/// than two and they fit (more when one or two a row would be too tall),
+/// with the scene's title.
 fn strips_layout(scene: &Scene, panels: &[Panel]) -> Layout {
     let widest = panels
         .iter()
@@ -292,7 +293,14 @@ fn strips_layout(scene: &Scene, panels: &[Panel]) -> Layout {
         .max()
         .unwrap_or(0);
     let two = panels.len() > 2 && 2 * widest <= MAX_STRIP_ROW;
-    Layout::columns(if two { 2 } else { 1 }).title(describe::title(scene))
+    let layout = |columns| Layout::columns(columns).title(describe::title(scene));
+    // Tall strips (of folded ladders) go side by side rather than make a
+    // figure taller than a picture may be.
+    let first = if two { 2 } else { 1 };
+    (first..=panels.len().max(first))
+        .map(layout)
+        .find(|l| compose::panel_origins(panels, l).is_ok())
+        .unwrap_or_else(|| layout(first))
 }
 
 /// A filmstrip figure (figures 1c, 3 and 4a): one strip per panel, two
