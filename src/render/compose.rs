@@ -2,10 +2,11 @@
 //! a common margin and title; filmstrips of snapshots side by side (paper
 //! Fig. 1c and Fig. 3).
 
-use super::canvas::Canvas;
+use super::canvas::{Canvas, Pen};
+use super::fold::{self, Fold};
 use super::picture::Picture;
 use super::snapshot::{self, Region, Snapshot, View};
-use super::style::{DARK, HAlign, VAlign, size};
+use super::style::{self, DARK, HAlign, VAlign, size};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use tiny_skia::{Pixmap, PixmapPaint, Transform};
@@ -100,56 +101,92 @@ pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
     compose_picture(panels, layout)?.to_pixmap()
 }
 
+/// Where a grid puts its panels: the picture's size, the title band's
+/// height, and for each panel its cell's top left corner and size.
+struct Grid {
+    width: u32,
+    height: u32,
+    cells: Vec<((u32, u32), (u32, u32))>,
+    bands: (u32, u32),
+}
+
+impl Grid {
+    fn new(panels: &[Panel], layout: &Layout) -> Result<Grid> {
+        if panels.is_empty() || layout.columns == 0 {
+            return Err(Error::bad_input(
+                "a composition needs at least one panel and one column",
+            ));
+        }
+        let cols = layout.columns.min(panels.len());
+        let rows = panels.len().div_ceil(cols);
+        let mut col_w = vec![0u32; cols];
+        let mut row_h = vec![0u32; rows];
+        for (k, p) in panels.iter().enumerate() {
+            let (w, h) = p.image.pixel_size();
+            col_w[k % cols] = col_w[k % cols].max(w);
+            row_h[k / cols] = row_h[k / cols].max(h);
+        }
+        let (label_h, caption_h) = bands(panels);
+        let title_h = layout
+            .title
+            .as_ref()
+            .map_or(0, |_| (size::TITLE * 1.8) as u32);
+        let (m, g) = (layout.margin, layout.gap);
+        let width = 2 * m + col_w.iter().sum::<u32>() + (cols as u32 - 1) * g;
+        let cells_h: u32 = row_h.iter().map(|h| h + label_h + caption_h).sum();
+        let height = 2 * m + title_h + cells_h + (rows as u32 - 1) * g;
+        if width > super::picture::MAX_RASTER_SIDE || height > super::picture::MAX_RASTER_SIDE {
+            return Err(snapshot::bad_size(width, height));
+        }
+        let offsets = |sizes: &[u32], extra: u32| -> Vec<u32> {
+            sizes
+                .iter()
+                .scan(0, |acc, s| {
+                    let at = *acc;
+                    *acc += s + extra + g;
+                    Some(at)
+                })
+                .collect()
+        };
+        let (xs, ys) = (offsets(&col_w, 0), offsets(&row_h, label_h + caption_h));
+        let cells = (0..panels.len())
+            .map(|k| {
+                let (c, r) = (k % cols, k / cols);
+                ((m + xs[c], m + title_h + ys[r]), (col_w[c], row_h[r]))
+            })
+            .collect();
+        Ok(Grid {
+            width,
+            height,
+            cells,
+            bands: (label_h, caption_h),
+        })
+    }
+
+    /// Top left corner of panel `k`'s image, centred in its cell.
+    fn image_origin(&self, k: usize, image: (u32, u32)) -> (u32, u32) {
+        let ((x, y), (cw, ih)) = self.cells[k];
+        (
+            x + (cw - image.0) / 2,
+            y + self.bands.0 + (ih - image.1) / 2,
+        )
+    }
+}
+
 /// Places panels in a grid (row-major). Each column is as wide as its
 /// widest picture and each row as tall as its tallest; pictures are
 /// centred in their cells.
 pub fn compose_picture(panels: &[Panel], layout: &Layout) -> Result<Picture> {
-    if panels.is_empty() || layout.columns == 0 {
-        return Err(Error::bad_input(
-            "a composition needs at least one panel and one column",
-        ));
-    }
-    let cols = layout.columns.min(panels.len());
-    let rows = panels.len().div_ceil(cols);
-    let mut col_w = vec![0u32; cols];
-    let mut row_h = vec![0u32; rows];
-    for (k, p) in panels.iter().enumerate() {
-        let (w, h) = p.image.pixel_size();
-        col_w[k % cols] = col_w[k % cols].max(w);
-        row_h[k / cols] = row_h[k / cols].max(h);
-    }
-    let (label_h, caption_h) = bands(panels);
-    let title_h = layout
-        .title
-        .as_ref()
-        .map_or(0, |_| (size::TITLE * 1.8) as u32);
-    let (m, g) = (layout.margin, layout.gap);
-    let width = 2 * m + col_w.iter().sum::<u32>() + (cols as u32 - 1) * g;
-    let cells_h: u32 = row_h.iter().map(|h| h + label_h + caption_h).sum();
-    let height = 2 * m + title_h + cells_h + (rows as u32 - 1) * g;
-    if width > super::picture::MAX_RASTER_SIDE || height > super::picture::MAX_RASTER_SIDE {
-        return Err(snapshot::bad_size(width, height));
-    }
-    let mut out = Picture::new(width as f32, height as f32);
+    let grid = Grid::new(panels, layout)?;
+    let (width, m) = (grid.width, layout.margin);
+    let mut out = Picture::new(width as f32, grid.height as f32);
     if let Some(t) = &layout.title {
         let at = (0.5 * width as f32, m as f32);
         out.text(t, at, size::TITLE, DARK, (HAlign::Center, VAlign::Top));
     }
-    let offsets = |sizes: &[u32], extra: u32| -> Vec<u32> {
-        sizes
-            .iter()
-            .scan(0, |acc, s| {
-                let at = *acc;
-                *acc += s + extra + g;
-                Some(at)
-            })
-            .collect()
-    };
-    let (xs, ys) = (offsets(&col_w, 0), offsets(&row_h, label_h + caption_h));
     for (k, p) in panels.iter().enumerate() {
-        let (c, r) = (k % cols, k / cols);
-        let at = (m + xs[c], m + title_h + ys[r]);
-        draw_panel(&mut out, p, at, (col_w[c], row_h[r]), (label_h, caption_h));
+        let at = grid.image_origin(k, p.image.pixel_size());
+        draw_panel(&mut out, p, at, grid.cells[k], grid.bands);
     }
     Ok(out)
 }
@@ -157,13 +194,10 @@ pub fn compose_picture(panels: &[Panel], layout: &Layout) -> Result<Picture> {
 fn draw_panel(
     out: &mut Picture,
     p: &Panel,
-    (x, y): (u32, u32),
-    (cw, ih): (u32, u32),
+    (ix, iy): (u32, u32),
+    ((x, y), (cw, ih)): ((u32, u32), (u32, u32)),
     (lh, _ch): (u32, u32),
 ) {
-    let (w, h) = p.image.pixel_size();
-    let ix = x + (cw - w) / 2;
-    let iy = y + lh + (ih - h) / 2;
     out.place(&p.image, (ix as f32, iy as f32));
     if let Some(l) = &p.label {
         let at = (x as f32 + 2.0, y as f32);
@@ -212,6 +246,12 @@ pub struct FilmstripOptions {
     /// Marks beside each snapshot (`marks[k]` for frame k; none if absent),
     /// such as the kink and the antikink of Fig. 4a.
     pub marks: Vec<Vec<ChainMark>>,
+    /// The shortest a block (s) may be drawn, in pixels (default: none).
+    /// A ladder too long to show so in one `frame_size` snapshot is folded
+    /// into columns side by side ([`super::fold`]), each snapshot as wide
+    /// as its columns need and as tall as `frame_size`, and the snapshots
+    /// wrap into rows. Ignored with a fixed `view`.
+    pub min_block_pixels: Option<f32>,
 }
 
 /// A labelled pointer beside a filmstrip snapshot at a point of the chain.
@@ -229,10 +269,26 @@ pub struct ChainMark {
 
 /// Font size of a [`ChainMark`]'s label.
 const MARK_TEXT: f32 = 11.0;
+/// Pixels from the chain to a mark's tip, of its triangle, and from the
+/// triangle to the label.
+const MARK_CLEAR: f32 = 3.0;
+const MARK_ARROW: f32 = 7.0;
+const MARK_SPACE: f32 = 2.0;
 
-/// Draws `mark` onto a snapshot picture of `snap` (drawn over all of it):
-/// a triangle pointing at the chain, its label beyond it.
-fn draw_mark(canvas: &mut Picture, ladder: &Ladder, snap: &Snapshot<'_>, mark: &ChainMark) {
+/// Draws `mark` onto a snapshot of `snap` drawn into `region` of `canvas`:
+/// a triangle pointing at the chain, its label beyond it. The tip clears
+/// the farthest node of the two blocks at the mark from the mark's point
+/// (`side_clear` false: on either side, as the paper's figures are drawn)
+/// or the chain's extent on the mark's side (`side_clear` true: the mark
+/// then stays beside its own column of a folded ladder).
+fn draw_mark(
+    canvas: &mut Picture,
+    region: Region,
+    ladder: &Ladder,
+    snap: &Snapshot<'_>,
+    mark: &ChainMark,
+    side_clear: bool,
+) {
     use crate::model::ladder::{ix, iy, nodes};
     let n = ladder.n();
     let q = snap.q;
@@ -244,21 +300,21 @@ fn draw_mark(canvas: &mut Picture, ladder: &Ladder, snap: &Snapshot<'_>, mark: &
         q[ix(i)] + f * (q[ix(j)] - q[ix(i)]),
         q[iy(i)] + f * (q[iy(j)] - q[iy(i)]),
     ];
-    let (w, h) = canvas.pixel_size();
-    let region = Region::full(w, h);
     let (x, y) = snapshot::pixel_of(region, snap, point);
-    // Clear of the chain: beyond the farthest node of the two blocks.
-    let reach = [i, j]
-        .iter()
-        .flat_map(|&k| {
-            let (a, b) = nodes(q, k);
-            [a, b]
-        })
-        .map(|p| (snapshot::pixel_of(region, snap, p).0 - x).abs())
-        .fold(0.0f32, f32::max);
     let dir = if mark.side == HAlign::Left { -1.0 } else { 1.0 };
-    let tip = x + dir * (reach + 3.0);
-    let base = tip + dir * 7.0;
+    let ends = [i, j].into_iter().flat_map(|k| {
+        let (a, b) = nodes(q, k);
+        [a, b]
+    });
+    let ends = ends.map(|p| snapshot::pixel_of(region, snap, p).0 - x);
+    // Clear of the chain: beyond the farthest node of the two blocks.
+    let reach = if side_clear {
+        ends.map(|d| dir * d).fold(0.0f32, f32::max)
+    } else {
+        ends.map(f32::abs).fold(0.0f32, f32::max)
+    };
+    let tip = x + dir * (reach + MARK_CLEAR);
+    let base = tip + dir * MARK_ARROW;
     canvas.polygon(&[(tip, y), (base, y - 4.5), (base, y + 4.5)], mark.color);
     let align = if mark.side == HAlign::Left {
         HAlign::Right
@@ -267,11 +323,227 @@ fn draw_mark(canvas: &mut Picture, ladder: &Ladder, snap: &Snapshot<'_>, mark: &
     };
     canvas.text(
         &mark.label,
-        (base + dir * 2.0, y),
+        (base + dir * MARK_SPACE, y),
         MARK_TEXT,
         mark.color,
         (align, VAlign::Middle),
     );
+}
+
+/// Pixels a mark reaches beyond the chain on its side.
+fn mark_room(mark: &ChainMark) -> f32 {
+    MARK_CLEAR + MARK_ARROW + MARK_SPACE + style::text_width(&mark.label, MARK_TEXT) + 2.0
+}
+
+/// Widest a folded snapshot may be, in pixels; a longer ladder is drawn
+/// with shorter blocks than the minimum.
+const MAX_FOLDED_WIDTH: f32 = 4000.0;
+/// Widest row of folded snapshots, in pixels; further snapshots wrap to
+/// the next row.
+const MAX_FOLDED_ROW: u32 = 1800;
+/// Tallest strip of folded snapshots, in pixels: below
+/// [`super::picture::MAX_RASTER_SIDE`] with room for a figure's title.
+const MAX_FOLDED_HEIGHT: u32 = 7600;
+/// Gap between the snapshots of a strip, in pixels: folded snapshots get
+/// more, so that their columns group visibly.
+const SNAPSHOT_GAP: u32 = 6;
+const FOLDED_SNAPSHOT_GAP: u32 = 24;
+/// Font size of the block numbers above the columns of a folded ladder.
+const COLUMN_NUMBER: f32 = 10.0;
+/// Pixels between a folded snapshot's frame and what it holds.
+const FOLDED_PAD: f32 = 4.0;
+
+/// One column of a snapshot: blocks `start..start + ladder.n()` of the
+/// whole ladder, seen through `view` in `region` of the snapshot.
+struct StripColumn {
+    start: usize,
+    ladder: Ladder,
+    view: View,
+    region: Region,
+}
+
+impl StripColumn {
+    fn snapshot<'a>(&'a self, q: &'a [f64]) -> Result<Snapshot<'a>> {
+        let q = q
+            .get(3 * self.start..3 * (self.start + self.ladder.n()))
+            .unwrap_or(q);
+        let mut snap = Snapshot::new(&self.ladder, q)?.with_view(self.view);
+        snap.clamp = self.start == 0;
+        Ok(snap)
+    }
+}
+
+/// How a filmstrip draws each snapshot: the whole ladder in one frame, or
+/// folded into columns.
+struct StripPlan {
+    /// Size of every snapshot's picture.
+    size: (u32, u32),
+    columns: Vec<StripColumn>,
+    /// The fold, when the ladder is folded.
+    fold: Option<Fold>,
+    /// Snapshots per row and the gap between them.
+    per_row: usize,
+    gap: u32,
+}
+
+/// Pixels per s of `snap` drawn into `region`: the length of every block.
+fn block_pixels(region: Region, snap: &Snapshot<'_>) -> f32 {
+    let (x0, y0) = snapshot::pixel_of(region, snap, [0.0, 0.0]);
+    let (x1, y1) = snapshot::pixel_of(region, snap, [1.0, 0.0]);
+    (x1 - x0).hypot(y1 - y0)
+}
+
+/// The margin [`snapshot::draw_snapshot_on`] keeps inside a region whose
+/// shorter side is at most `side` pixels (at most that margin).
+fn margin_within(side: f32) -> f32 {
+    (0.03 * side).clamp(2.0, 12.0)
+}
+
+impl StripPlan {
+    fn new(ladder: &Ladder, frames: &[Frame<'_>], opts: &FilmstripOptions) -> Result<StripPlan> {
+        let (w, h) = opts.frame_size.unwrap_or((110, 330));
+        let states: Vec<&[f64]> = frames.iter().map(|f| f.q).collect();
+        let view = opts.view.unwrap_or_else(|| View::fit(&states));
+        let whole = StripPlan {
+            size: (w, h),
+            columns: vec![StripColumn {
+                start: 0,
+                ladder: *ladder,
+                view,
+                region: Region::full(w, h),
+            }],
+            fold: None,
+            per_row: frames.len().max(1),
+            gap: SNAPSHOT_GAP,
+        };
+        let Some(min) = opts.min_block_pixels.filter(|_| opts.view.is_none()) else {
+            return Ok(whole);
+        };
+        let probe = whole.columns[0].snapshot(frames[0].q)?;
+        if block_pixels(whole.columns[0].region, &probe) >= min {
+            return Ok(whole);
+        }
+        // Room for the marks beside every column, on their sides.
+        let room = |side: HAlign| {
+            opts.marks
+                .iter()
+                .flatten()
+                .filter(|m| m.side == side)
+                .map(mark_room)
+                .fold(0.0f32, f32::max)
+                .ceil()
+        };
+        let (left, right) = (room(HAlign::Left), room(HAlign::Right));
+        let gap = fold::COLUMN_GAP.max(left + right);
+        let (left, right) = (left + FOLDED_PAD, right + FOLDED_PAD);
+        let top = (FOLDED_PAD + 1.5 * COLUMN_NUMBER).ceil();
+        let column_h = (h as f32 - top - FOLDED_PAD).max(1.0);
+        // The ladder's window inside each column, after the margin.
+        let height = (column_h - 2.0 * margin_within(column_h)) as f64;
+        let across = {
+            let fit = View::fit(&states);
+            fit.y.1 - fit.y.0
+        };
+        let narrowest = (across * min as f64) as f32 + 4.0;
+        let max_columns = ((MAX_FOLDED_WIDTH - left - right + gap) / (narrowest + gap))
+            .floor()
+            .max(1.0) as usize;
+        let folded = Fold::readable(ladder, &states, height, min as f64, max_columns);
+        let inner_w = (folded.across * folded.scale_along(height)) as f32;
+        let column_w = (inner_w + 2.0 * margin_within(inner_w + 25.0)).ceil();
+        let columns: Vec<StripColumn> = folded
+            .segments
+            .iter()
+            .enumerate()
+            .map(|(j, s)| StripColumn {
+                start: s.start,
+                ladder: s.ladder,
+                view: s.view,
+                region: Region {
+                    x: left + j as f32 * (column_w + gap),
+                    y: top,
+                    w: column_w,
+                    h: column_h,
+                },
+            })
+            .collect();
+        let cols = columns.len() as f32;
+        let width = (left + cols * column_w + (cols - 1.0) * gap + right).ceil() as u32;
+        let row = MAX_FOLDED_ROW - 2 * size::MARGIN;
+        let fits = ((row + FOLDED_SNAPSHOT_GAP) / (width + FOLDED_SNAPSHOT_GAP)).max(1) as usize;
+        // Many snapshots: rows wider than MAX_FOLDED_ROW rather than a
+        // strip taller than a picture may be.
+        let row_h = h + (size::LABEL * 1.7) as u32 + FOLDED_SNAPSHOT_GAP;
+        let max_rows = (MAX_FOLDED_HEIGHT / row_h).max(1) as usize;
+        let rows = frames.len().div_ceil(fits).min(max_rows);
+        Ok(StripPlan {
+            size: (width, h),
+            columns,
+            fold: Some(folded),
+            per_row: frames.len().div_ceil(rows.max(1)).max(1),
+            gap: FOLDED_SNAPSHOT_GAP,
+        })
+    }
+
+    /// The snapshot of `frame` with its `marks`.
+    fn picture(&self, frame: &Frame<'_>, marks: &[ChainMark]) -> Result<Picture> {
+        let (w, h) = self.size;
+        let Some(folded) = &self.fold else {
+            let c = &self.columns[0];
+            let snap = c.snapshot(frame.q)?;
+            let mut img = snapshot::snapshot_picture(&snap, w, h)?;
+            for mark in marks {
+                draw_mark(&mut img, c.region, &c.ladder, &snap, mark, false);
+            }
+            return Ok(img);
+        };
+        let mut img = Picture::new(w as f32, h as f32);
+        let number = style::mix(style::GREY, DARK, 0.3);
+        for c in &self.columns {
+            snapshot::draw_snapshot_on(&mut img, c.region, &c.snapshot(frame.q)?);
+            let at = (c.region.x + 0.5 * c.region.w, FOLDED_PAD);
+            let first = format!("{}", c.start + 1);
+            let top = (HAlign::Center, VAlign::Top);
+            img.text(&first, at, COLUMN_NUMBER, number, top);
+        }
+        for mark in marks {
+            let (j, at) = folded.locate(mark.at);
+            let c = &self.columns[j];
+            let local = ChainMark { at, ..mark.clone() };
+            let snap = c.snapshot(frame.q)?;
+            draw_mark(&mut img, c.region, &c.ladder, &snap, &local, true);
+        }
+        // A light frame holds each snapshot's columns together.
+        let (w, h) = (w as f32, h as f32);
+        let corners = [
+            (0.5, 0.5),
+            (w - 0.5, 0.5),
+            (w - 0.5, h - 0.5),
+            (0.5, h - 0.5),
+        ];
+        if let Some(path) = super::canvas::polyline_path(&corners, true) {
+            let pen = Pen::new(1.0, style::mix(style::WHITE, style::GREY, 0.45));
+            img.stroke(&path, &pen);
+        }
+        Ok(img)
+    }
+
+    /// Both ends of every block of `frame`, in pixels of its snapshot (a
+    /// block shared by two columns twice).
+    fn block_ends(&self, frame: &Frame<'_>) -> Result<Vec<[(f32, f32); 2]>> {
+        let mut out = Vec::new();
+        for c in &self.columns {
+            let snap = c.snapshot(frame.q)?;
+            for i in 0..c.ladder.n() {
+                let (a, b) = crate::model::ladder::nodes(snap.q, i);
+                out.push([
+                    snapshot::pixel_of(c.region, &snap, a),
+                    snapshot::pixel_of(c.region, &snap, b),
+                ]);
+            }
+        }
+        Ok(out)
+    }
 }
 
 /// Snapshots side by side in time order (left to right), each captioned
@@ -280,41 +552,121 @@ pub fn filmstrip(ladder: &Ladder, frames: &[Frame<'_>], opts: &FilmstripOptions)
     filmstrip_picture(ladder, frames, opts)?.to_pixmap()
 }
 
-/// Snapshots side by side in time order (left to right), each captioned
-/// "t/τ = …", sharing one scale.
-pub fn filmstrip_picture(
+/// The plan, the captioned snapshots and the layout of a filmstrip.
+fn strip_panels(
     ladder: &Ladder,
     frames: &[Frame<'_>],
     opts: &FilmstripOptions,
-) -> Result<Picture> {
+) -> Result<(StripPlan, Vec<Panel>, Layout)> {
     if frames.is_empty() {
         return Err(Error::bad_input("a filmstrip needs at least one frame"));
     }
-    let (w, h) = opts.frame_size.unwrap_or((110, 330));
-    let states: Vec<&[f64]> = frames.iter().map(|f| f.q).collect();
-    let view = opts.view.unwrap_or_else(|| View::fit(&states));
+    let plan = StripPlan::new(ladder, frames, opts)?;
     let mut panels = Vec::with_capacity(frames.len());
     for (k, f) in frames.iter().enumerate() {
-        let snap = Snapshot::new(ladder, f.q)?.with_view(view);
-        let mut img = snapshot::snapshot_picture(&snap, w, h)?;
-        for mark in opts.marks.get(k).into_iter().flatten() {
-            draw_mark(&mut img, ladder, &snap, mark);
-        }
+        let marks = opts.marks.get(k).map_or(&[][..], |m| m.as_slice());
+        let img = plan.picture(f, marks)?;
         panels.push(Panel::new(img).caption(snapshot::time_label(f.time)));
     }
-    let mut layout = Layout::row(panels.len());
-    layout.gap = 6;
+    let mut layout = Layout::columns(plan.per_row);
+    layout.gap = plan.gap;
     // A label without a title still gets the title band, above the frames.
     layout.title = opts
         .title
         .clone()
         .or_else(|| opts.label.as_ref().map(|_| String::new()));
+    Ok((plan, panels, layout))
+}
+
+/// Snapshots side by side in time order (left to right), each captioned
+/// "t/τ = …", sharing one scale. With [`FilmstripOptions::min_block_pixels`]
+/// a long ladder is folded into columns in each snapshot.
+pub fn filmstrip_picture(
+    ladder: &Ladder,
+    frames: &[Frame<'_>],
+    opts: &FilmstripOptions,
+) -> Result<Picture> {
+    let (_, panels, layout) = strip_panels(ladder, frames, opts)?;
     let mut strip = compose_picture(&panels, &layout)?;
     if let Some(l) = &opts.label {
         let at = (layout.margin as f32, layout.margin as f32);
         strip.text(l, at, size::PANEL_LABEL, DARK, (HAlign::Left, VAlign::Top));
     }
     Ok(strip)
+}
+
+/// Where a filmstrip draws: its size, each snapshot's rectangle, and both
+/// ends of every block of each snapshot, in the strip's pixels (for tests).
+#[derive(Clone, Debug)]
+pub struct StripGeometry {
+    pub size: (u32, u32),
+    pub snapshots: Vec<Region>,
+    pub blocks: Vec<Vec<[(f32, f32); 2]>>,
+}
+
+impl StripGeometry {
+    /// The same, moved by (`dx`, `dy`) pixels into a picture of `size`.
+    pub fn placed(mut self, (dx, dy): (u32, u32), size: (u32, u32)) -> StripGeometry {
+        let (dx, dy) = (dx as f32, dy as f32);
+        self.size = size;
+        for r in &mut self.snapshots {
+            r.x += dx;
+            r.y += dy;
+        }
+        for p in self.blocks.iter_mut().flatten().flatten() {
+            p.0 += dx;
+            p.1 += dy;
+        }
+        self
+    }
+}
+
+/// Where [`filmstrip_picture`] draws every block.
+pub fn filmstrip_geometry(
+    ladder: &Ladder,
+    frames: &[Frame<'_>],
+    opts: &FilmstripOptions,
+) -> Result<StripGeometry> {
+    let (plan, panels, layout) = strip_panels(ladder, frames, opts)?;
+    let grid = Grid::new(&panels, &layout)?;
+    let mut out = StripGeometry {
+        size: (grid.width, grid.height),
+        snapshots: Vec::new(),
+        blocks: Vec::new(),
+    };
+    for (k, f) in frames.iter().enumerate() {
+        let (x, y) = grid.image_origin(k, plan.size);
+        let (w, h) = plan.size;
+        let (x, y) = (x as f32, y as f32);
+        out.snapshots.push(Region {
+            x,
+            y,
+            w: w as f32,
+            h: h as f32,
+        });
+        let ends = plan.block_ends(f)?;
+        out.blocks.push(
+            ends.into_iter()
+                .map(|[a, b]| [(a.0 + x, a.1 + y), (b.0 + x, b.1 + y)])
+                .collect(),
+        );
+    }
+    Ok(out)
+}
+
+/// A composition's size and the top left corner of each panel's image.
+pub type Placement = ((u32, u32), Vec<(u32, u32)>);
+
+/// The top left corners of `panels` composed with `layout`, and the size
+/// of the composition (see [`compose_picture`]).
+pub fn panel_origins(panels: &[Panel], layout: &Layout) -> Result<Placement> {
+    let grid = Grid::new(panels, layout)?;
+    let origins = panels
+        .iter()
+        .enumerate()
+        .map(|(k, p)| grid.image_origin(k, p.image.pixel_size()))
+        .collect();
+    Ok(((grid.width, grid.height), origins))
 }
 
 /// Draws several snapshots into one canvas region by region (no captions):

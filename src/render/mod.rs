@@ -13,6 +13,7 @@ pub mod canvas;
 pub mod cells;
 pub mod charts;
 pub mod compose;
+pub mod fold;
 pub mod movie_layout;
 pub mod picture;
 pub mod snapshot;

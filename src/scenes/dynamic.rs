@@ -7,7 +7,10 @@ use crate::encode::{Format, MovieWriter, png_bytes};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::charts::{self, Axis, ChartSpec, Kymograph, Marker, Series};
-use crate::render::compose::{self, ChainMark, FilmstripOptions, Frame, Layout, Panel};
+use crate::render::compose::{
+    self, ChainMark, FilmstripOptions, Frame, Layout, Panel, StripGeometry,
+};
+use crate::render::fold::{self, Fold};
 use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::{MovieLayout, Picture, style};
 use crate::scene::{Camera, DriveSpec, MIN_BLOCK_PIXELS, Model, OutputSpec, Scene, describe};
@@ -206,45 +209,98 @@ fn wall_marks(q: &[f64]) -> Vec<ChainMark> {
     marks
 }
 
-/// One filmstrip: snapshots of a single-run scene at `times`, sharing one
-/// scale.
-fn strip_image(
-    label: &str,
-    scene: &Scene,
-    times: &[f64],
-    frame: Option<(u32, u32)>,
-) -> Result<(Picture, RunData)> {
-    let run = run::simulate(scene, times)?;
-    let ladder = Ladder::new(scene.model.params()?);
-    let traj = &run.trajectory;
-    let frames: Vec<Frame<'_>> = traj
-        .times
-        .iter()
-        .zip(&traj.states)
-        .map(|(&time, q)| Frame { time, q })
-        .collect();
-    let title = (!label.is_empty()).then(|| format!("{label}  {}", wave_name(scene.model.alpha)));
-    // Several flips put a kink and an antikink on the chain at once: mark
-    // them (and where they meet) in wider frames that leave room for words.
-    let marked = scene.drive.flips.len() > 1;
-    let marks: Vec<Vec<ChainMark>> = if marked {
-        traj.states.iter().map(|q| wall_marks(q)).collect()
-    } else {
-        Vec::new()
-    };
-    let mut size = frame.unwrap_or_else(|| strip_frame(scene.model.n));
-    if marked {
-        size.0 = size.0.max(MARKED_FRAME_WIDTH);
+/// A simulated filmstrip: the run, its ladder and how to draw it.
+struct Strip {
+    run: SceneRun,
+    ladder: Ladder,
+    opts: FilmstripOptions,
+}
+
+impl Strip {
+    /// The strip of a single-run scene at `times`: snapshots of `frame`
+    /// pixels (default [`strip_frame`]) sharing one scale, a long ladder
+    /// folded into columns so that no block is shorter than
+    /// [`MIN_BLOCK_PIXELS`], and with several flips the walls marked.
+    fn new(label: &str, scene: &Scene, times: &[f64], frame: Option<(u32, u32)>) -> Result<Strip> {
+        let run = run::simulate(scene, times)?;
+        let ladder = Ladder::new(scene.model.params()?);
+        let traj = &run.trajectory;
+        let title =
+            (!label.is_empty()).then(|| format!("{label}  {}", wave_name(scene.model.alpha)));
+        // Several flips put a kink and an antikink on the chain at once: mark
+        // them (and where they meet) in wider frames that leave room for words.
+        let marked = scene.drive.flips.len() > 1;
+        let marks: Vec<Vec<ChainMark>> = if marked {
+            traj.states.iter().map(|q| wall_marks(q)).collect()
+        } else {
+            Vec::new()
+        };
+        let mut size = frame.unwrap_or_else(|| strip_frame(scene.model.n));
+        if marked {
+            size.0 = size.0.max(MARKED_FRAME_WIDTH);
+        }
+        let opts = FilmstripOptions {
+            frame_size: Some(size),
+            title,
+            label: None,
+            view: None,
+            marks,
+            min_block_pixels: Some(MIN_BLOCK_PIXELS as f32),
+        };
+        Ok(Strip { run, ladder, opts })
     }
-    let opts = FilmstripOptions {
-        frame_size: Some(size),
-        title,
-        label: None,
-        view: None,
-        marks,
-    };
-    let image = compose::filmstrip_picture(&ladder, &frames, &opts)?;
-    Ok((image, RunData::new(label, scene, &run)))
+
+    fn frames(&self) -> Vec<Frame<'_>> {
+        let traj = &self.run.trajectory;
+        traj.times
+            .iter()
+            .zip(&traj.states)
+            .map(|(&time, q)| Frame { time, q })
+            .collect()
+    }
+
+    fn picture(&self) -> Result<Picture> {
+        compose::filmstrip_picture(&self.ladder, &self.frames(), &self.opts)
+    }
+}
+
+/// The strips of a filmstrip scene, one per panel, with their data.
+fn strips(scene: &Scene, frame: Option<(u32, u32)>) -> Result<Vec<(Strip, RunData)>> {
+    let labels = panel_labels(scene);
+    scene
+        .runs()
+        .iter()
+        .zip(&labels)
+        .map(|((s, times), label)| {
+            let strip = Strip::new(label, s, times, frame)?;
+            let data = RunData::new(label, s, &strip.run);
+            Ok((strip, data))
+        })
+        .collect()
+}
+
+/// Widest row of two strips side by side, pixels: wider strips (those of
+/// folded ladders) go one a row.
+const MAX_STRIP_ROW: u32 = 2000;
+
+/// The figure's layout of `panels`: two strips a row when there are more
+/// than two and they fit (more when one or two a row would be too tall),
+/// with the scene's title.
+fn strips_layout(scene: &Scene, panels: &[Panel]) -> Layout {
+    let widest = panels
+        .iter()
+        .map(|p| p.image.pixel_size().0)
+        .max()
+        .unwrap_or(0);
+    let two = panels.len() > 2 && 2 * widest <= MAX_STRIP_ROW;
+    let layout = |columns| Layout::columns(columns).title(describe::title(scene));
+    // Tall strips (of folded ladders) go side by side rather than make a
+    // figure taller than a picture may be.
+    let first = if two { 2 } else { 1 };
+    (first..=panels.len().max(first))
+        .map(layout)
+        .find(|l| compose::panel_origins(panels, l).is_ok())
+        .unwrap_or_else(|| layout(first))
 }
 
 /// A filmstrip figure (figures 1c, 3 and 4a): one strip per panel, two
@@ -254,18 +310,34 @@ pub fn filmstrip_figure(
     scene: &Scene,
     frame: Option<(u32, u32)>,
 ) -> Result<(Picture, Vec<RunData>)> {
-    let labels = panel_labels(scene);
-    let runs = scene.runs();
-    let strips = runs
-        .iter()
-        .zip(&labels)
-        .map(|((s, times), label)| strip_image(label, s, times, frame))
-        .collect::<Result<Vec<_>>>()?;
-    let (panels, data): (Vec<Panel>, Vec<RunData>) =
-        strips.into_iter().map(|(p, d)| (Panel::new(p), d)).unzip();
-    let layout =
-        Layout::columns(if panels.len() > 2 { 2 } else { 1 }).title(describe::title(scene));
+    let strips = strips(scene, frame)?;
+    let mut panels = Vec::with_capacity(strips.len());
+    let mut data = Vec::with_capacity(strips.len());
+    for (strip, d) in strips {
+        panels.push(Panel::new(strip.picture()?));
+        data.push(d);
+    }
+    let layout = strips_layout(scene, &panels);
     Ok((compose::compose_picture(&panels, &layout)?, data))
+}
+
+/// For a test of the filmstrips: where [`filmstrip_figure`] draws every
+/// block, one [`StripGeometry`] per strip in the figure's pixels.
+pub fn filmstrip_geometry(scene: &Scene, frame: Option<(u32, u32)>) -> Result<Vec<StripGeometry>> {
+    let strips = strips(scene, frame)?;
+    let panels = strips
+        .iter()
+        .map(|(s, _)| Ok(Panel::new(s.picture()?)))
+        .collect::<Result<Vec<_>>>()?;
+    let (size, origins) = compose::panel_origins(&panels, &strips_layout(scene, &panels))?;
+    strips
+        .iter()
+        .zip(origins)
+        .map(|((s, _), at)| {
+            let g = compose::filmstrip_geometry(&s.ladder, &s.frames(), &s.opts)?;
+            Ok(g.placed(at, size))
+        })
+        .collect()
 }
 
 fn panel_labels(scene: &Scene) -> Vec<String> {
@@ -381,64 +453,23 @@ impl Column {
     }
 }
 
-/// Gap between the columns of a folded ladder, pixels.
-const COLUMN_GAP: f32 = 8.0;
-
-/// A long ladder folded into columns side by side, like lines of text,
-/// so that every block stays in the frame and at least as large as the
-/// frame allows: segments start at even blocks (the parity of t_n is
-/// kept) and overlap by one block, so every spring is drawn. The number of
-/// columns is the one that draws the blocks largest.
-fn fold(ladder: &Ladder, states: &[Vec<f64>], region: Region) -> Result<Vec<Column>> {
-    let n = ladder.n();
-    let b = ladder.params.b;
+/// A long ladder folded into columns side by side (`render::fold`): the
+/// number of columns is the one that draws the blocks largest in `region`.
+fn folded_columns(ladder: &Ladder, states: &[Vec<f64>], region: Region) -> Vec<Column> {
     let all: Vec<&[f64]> = states.iter().map(|q| q.as_slice()).collect();
-    let whole = View::fit(&all);
-    let across = (whole.y.1 - whole.y.0).max(1e-9);
-    let columns_of = |stride: usize| (n - 1).div_ceil(stride).max(1);
-    let scale_of = |stride: usize| {
-        let cols = columns_of(stride) as f32;
-        let w = (region.w - COLUMN_GAP * (cols - 1.0)) / cols;
-        let along = stride as f64 * b + 2.0;
-        (region.h as f64 / along).min(w as f64 / across)
-    };
-    let stride = (2..n)
-        .step_by(2)
-        .max_by(|&p, &q| scale_of(p).total_cmp(&scale_of(q)))
-        .unwrap_or(n);
-    let cols = columns_of(stride);
-    let w = (region.w - COLUMN_GAP * (cols as f32 - 1.0)) / cols as f32;
-    let mut out = Vec::with_capacity(cols);
-    for j in 0..cols {
-        let start = j * stride;
-        let end = (start + stride + 1).min(n);
-        let seg: Vec<&[f64]> = states.iter().map(|q| &q[3 * start..3 * end]).collect();
-        let fit = View::fit(&seg);
-        let along = stride as f64 * b + 2.0;
-        // Every column at one scale (the same spans), its first block at
-        // the top, like lines of text.
-        let y_mid = 0.5 * (whole.y.0 + whole.y.1);
-        let view = View::window(
-            (fit.x.0, fit.x.0 + along),
-            (y_mid - 0.5 * across, y_mid + 0.5 * across),
-        );
-        let params = crate::model::Params {
-            n: end - start,
-            ..ladder.params
-        };
-        out.push(Column {
-            start,
-            ladder: Ladder::new(params),
-            region: Region {
-                x: (region.x + j as f32 * (w + COLUMN_GAP)).round(),
-                y: region.y,
-                w: w.floor().max(1.0),
-                h: region.h,
-            },
-            views: vec![view],
-        });
-    }
-    Ok(out)
+    let folded = Fold::best_in(ladder, &all, region, fold::COLUMN_GAP);
+    let regions = folded.regions(region, fold::COLUMN_GAP);
+    folded
+        .segments
+        .into_iter()
+        .zip(regions)
+        .map(|(s, region)| Column {
+            start: s.start,
+            ladder: s.ladder,
+            region,
+            views: vec![s.view],
+        })
+        .collect()
 }
 
 /// What a movie draws before any pixel: its run, its layout and the
@@ -503,7 +534,7 @@ impl MoviePlan {
                     h: band,
                     ..region
                 };
-                (fold(&ladder, &traj.states, inner)?, Some(time))
+                (folded_columns(&ladder, &traj.states, inner), Some(time))
             }
         };
         let lab_scale = (camera == Camera::Follow).then(|| {
