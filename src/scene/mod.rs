@@ -398,7 +398,8 @@ pub enum OutputSpec {
     /// PNG (`movie-NAME.gif`, `movie-NAME-kymograph.png`).
     Movie {
         /// `auto` (default: `fixed` when the whole ladder fits the frame
-        /// with blocks large enough to see, otherwise `follow`), `fixed`
+        /// with blocks large enough to see, otherwise the ladder folded
+        /// into columns side by side, every block in the frame), `fixed`
         /// (one window that fits every frame) or `follow` (a window that
         /// moves with the kink, movie 3).
         #[serde(default)]
@@ -449,7 +450,8 @@ impl Default for OutputSpec {
 #[serde(rename_all = "kebab-case")]
 pub enum Camera {
     /// Fixed when the whole ladder fits with blocks of at least
-    /// [`MIN_BLOCK_PIXELS`], following the kink otherwise.
+    /// [`MIN_BLOCK_PIXELS`], otherwise the ladder folded into columns side
+    /// by side, like lines of text (`render::fold`).
     #[default]
     Auto,
     /// One window that fits every frame.
@@ -588,8 +590,9 @@ impl Kind {
     }
 }
 
-/// Smallest length, in pixels, of a block (s) in a movie frame before an
-/// `auto` camera follows the kink instead of showing the whole ladder.
+/// Smallest length, in pixels, of a block (s) in a movie frame (or a
+/// filmstrip's snapshot) before an `auto` camera folds the ladder into
+/// columns instead of drawing it whole.
 pub const MIN_BLOCK_PIXELS: f64 = 14.0;
 
 /// Largest number of flips of block 1.
