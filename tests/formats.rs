@@ -135,6 +135,14 @@ fn pdf_of_every_figure_is_vector() {
             count("f"),
             count("S")
         );
+        // Text is glyph outlines (the curves above), so no font is needed:
+        // no text objects, no font resources.
+        assert_eq!(count("BT") + count("Tj") + count("TJ"), 0, "{name}: text");
+        for (_, obj) in doc.objects.iter() {
+            if let Ok(d) = obj.as_dict() {
+                assert!(d.get(b"Font").is_err(), "{name}: font resource");
+            }
+        }
         // No images at all: nothing is drawn as a raster (`Do` paints XObjects).
         assert_eq!(count("Do"), 0, "{name}: draws an XObject");
         assert_eq!(count("BI"), 0, "{name}: has an inline image");
@@ -694,7 +702,7 @@ fn scratch(name: &str) -> std::path::PathBuf {
 fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
     let out = scratch("bad");
     let o = out.to_str().unwrap();
-    let cases: [(&[&str], &str); 9] = [
+    let cases: [(&[&str], &str); 11] = [
         (
             &["figure", "3", "--format", "jpg", "--out", o],
             "--format: unknown format 'jpg'",
@@ -726,6 +734,20 @@ fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
             "between 64 and 4096",
         ),
         (&["figure", "2b", "--scale", "100", "--out", o], "--scale:"),
+        (
+            &["figure", "3", "--size", "1280x960", "--out", o],
+            "use --scale S",
+        ),
+        (
+            &[
+                "movie", "4", "--format", "mp4", "--size", "1280x721", "--out", o,
+            ],
+            if cfg!(feature = "mp4") {
+                "try 1280x722"
+            } else {
+                "without the cargo feature 'mp4'"
+            },
+        ),
         (&["figure", "3", "--out", "x.svg"], "--out is a folder"),
         (&["figure", "3", "--out", "Cargo.toml"], "--out is a folder"),
     ];

@@ -300,6 +300,13 @@ fn with_scale(outputs: Outputs, scale: f32) -> Result<Outputs> {
 impl FigureFormat {
     /// The figure formats and scale of `ladder figure`.
     pub fn outputs(&self) -> Result<Outputs> {
+        if let Some(size) = &self.size {
+            return Err(Error::bad_input(format!(
+                "--size {size}: a figure keeps its layout and takes no frame size; \
+                 use --scale S for S times the PNG's pixels (e.g. --scale 2), \
+                 or --format svg,pdf for vector files"
+            )));
+        }
         let figures = formats_of(&self.formats, FormatKind::Figure)?;
         with_scale(
             Outputs {
