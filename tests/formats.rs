@@ -702,7 +702,7 @@ fn scratch(name: &str) -> std::path::PathBuf {
 fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
     let out = scratch("bad");
     let o = out.to_str().unwrap();
-    let cases: [(&[&str], &str); 11] = [
+    let cases: [(&[&str], &str); 14] = [
         (
             &["figure", "3", "--format", "jpg", "--out", o],
             "--format: unknown format 'jpg'",
@@ -750,6 +750,12 @@ fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
         ),
         (&["figure", "3", "--out", "x.svg"], "--out is a folder"),
         (&["figure", "3", "--out", "Cargo.toml"], "--out is a folder"),
+        (
+            &["sweep", "--alpha", "50,60", "--out", "x.pdf"],
+            "--out is a folder",
+        ),
+        (&["movie", "4", "--out", "x.mp4"], "--out is a folder"),
+        (&["all", "--out", "x.html"], "--out is a folder"),
     ];
     for (args, expected) in cases {
         let r = ladder(args);
@@ -759,7 +765,9 @@ fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
         assert!(err.contains(expected), "{args:?}: {err}");
     }
     assert!(!out.exists(), "nothing written on bad input");
-    assert!(!std::path::Path::new("x.svg").exists());
+    for f in ["x.svg", "x.pdf", "x.mp4", "x.html"] {
+        assert!(!std::path::Path::new(f).exists(), "{f} made");
+    }
 }
 
 #[test]

@@ -149,6 +149,8 @@ impl GridArgs {
 /// scene), its grid extended or replaced by the grid flags, the run and
 /// outcome flags applied, validated; an error names the flag.
 pub fn sweep_scene(args: &SweepArgs) -> Result<Scene> {
+    // `--out` names the folder of the sweep's files, as for every command.
+    check_out_dir(&args.out.out)?;
     let grid = args.grid.given();
     let mut scene = match &args.file {
         Some(path) => {
