@@ -836,3 +836,59 @@ fn sweep_chart_in_every_format() {
     );
     let _ = std::fs::remove_dir_all(&out);
 }
+
+#[test]
+fn movie_and_render_write_every_format_asked_for() {
+    let movies = if cfg!(feature = "mp4") {
+        "gif,mp4"
+    } else {
+        "gif"
+    };
+    let out = scratch("movie");
+    let o = out.to_str().unwrap();
+    let small = ["--frames", "6", "--size", "320x240", "--out", o];
+    let r = ladder(&[&["movie", "4", "--format", movies][..], &small].concat());
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let gif = std::fs::read(out.join("movie-4.gif")).unwrap();
+    assert!(gif.starts_with(b"GIF89a"));
+    if cfg!(feature = "mp4") {
+        let mp4 = std::fs::read(out.join("movie-4.mp4")).unwrap();
+        assert_eq!(&mp4[4..8], b"ftyp");
+    }
+    // `render` takes figure and movie formats in one list; a scene file of
+    // each kind gets the formats of its kind.
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes");
+    let (fig, mov) = (dir.join("figure-2d.toml"), dir.join("movie-4.toml"));
+    let list = format!("svg,pdf,{movies}");
+    let r = ladder(
+        &[
+            &["render", fig.to_str().unwrap(), mov.to_str().unwrap()][..],
+            &["--format", &list],
+            &small,
+        ]
+        .concat(),
+    );
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let names: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    let has = |ext: &str, kind: &str| {
+        names
+            .iter()
+            .any(|n| n.starts_with(kind) && n.ends_with(&format!(".{ext}")) && n != "movie-4.gif")
+    };
+    assert!(has("svg", "figure") && has("pdf", "figure"), "{names:?}");
+    assert!(
+        !has("png", "figure"),
+        "only the formats asked for: {names:?}"
+    );
+    assert!(has("gif", "movie"), "{names:?}");
+    if cfg!(feature = "mp4") {
+        assert!(
+            names.iter().filter(|n| n.ends_with(".mp4")).count() == 2,
+            "{names:?}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&out);
+}
