@@ -27,9 +27,19 @@ echo "ladder sweep, auto (Verlet, verified, until decided):               ${auto
 echo "ladder sweep, verlet dt 0.25 (until decided):                       ${fixed[*]} s; median $mf s"
 echo "ratio peer/auto: $(echo "scale=1; $mp / $ma" | bc)x; peer/fixed: $(echo "scale=1; $mp / $mf" | bc)x"
 cat "$tmp/peer.log" "$tmp/auto.log"
-python3 - "$tmp/a/sweep-kinks.json" <<'PY'
+# Cost per run and per block-step of ladder's auto sweep: CPU time (user +
+# sys, both cores) of one more run, over the force evaluations × N it made.
+/usr/bin/time -f "%e %U %S" -o "$tmp/time" $ladder sweep --alpha 40:89.5:0.5 --name kinks --out "$tmp/c" 2>/dev/null
+python3 - "$tmp/a/sweep-kinks.json" "$tmp/time" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
+wall, user, sys_ = map(float, open(sys.argv[2]).read().split())
+runs = len(d["runs"])
 evals = sum(r["force_evals"] for r in d["runs"])
-print(f"ladder auto: {len(d['runs'])} runs, {evals} force evaluations ({evals / len(d['runs']):.0f} per run), outcomes {d['outcomes']}")
+block_steps = evals * 10
+cpu = user + sys_
+print(f"ladder auto: {runs} runs, {evals} force evaluations ({evals / runs:.0f} per run), outcomes {d['outcomes']}")
+print(f"ladder auto, whole process: {wall:.3f} s wall, {cpu:.3f} s CPU; "
+      f"{1e3 * cpu / runs:.2f} ms CPU per run, {1e9 * cpu / block_steps:.1f} ns CPU per block-step "
+      f"(start-up, chart and files included)")
 PY

@@ -44,6 +44,10 @@ pub const FILES: &[(&str, &str)] = &[
         "figure-chain-length",
         include_str!("../assets/scenes/figure-chain-length.toml"),
     ),
+    (
+        "figure-friction",
+        include_str!("../assets/scenes/figure-friction.toml"),
+    ),
     ("movie-3", include_str!("../assets/scenes/movie-3.toml")),
     ("movie-4", include_str!("../assets/scenes/movie-4.toml")),
     ("movie-5", include_str!("../assets/scenes/movie-5.toml")),

@@ -144,9 +144,12 @@ fn list_names_every_scene() {
     let out = ladder(&["list"]);
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8_lossy(&out.stdout);
-    assert_eq!(text.lines().count(), 25);
+    let scenes = jacobs_ladder::catalog::catalogue().unwrap().len();
+    assert_eq!(scenes, jacobs_ladder::catalog::FILES.len());
+    assert_eq!(text.lines().count(), scenes, "one line per scene");
     assert!(text.contains("movie  11") && text.contains("figure S6"));
     assert!(text.contains("figure pinning") && text.contains("figure chain-length"));
+    assert!(text.contains("figure friction"));
 }
 
 #[test]

@@ -5,7 +5,7 @@
 use jacobs_ladder::scene::sweep::{Grid, Param, SweepSpec, Values};
 use jacobs_ladder::scene::{OutputSpec, Scene};
 use jacobs_ladder::sweep::outcome::Outcome;
-use jacobs_ladder::sweep::run::run_point;
+use jacobs_ladder::sweep::run::{run_point, run_points};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -336,6 +336,86 @@ fn slow_and_stopped_waves_are_told_apart_on_real_runs() {
     assert!(r.arrival_error.unwrap() <= 0.1 / 3.0 + 1e-12);
 }
 
+/// Many points at once (`run_points`: rounds through the batch kernel)
+/// give every point exactly what running it alone gives (`run_point`),
+/// bit for bit: kinks and antikinks that propagate, stall and stay pinned,
+/// two chain lengths, two drive times (two stop rules), a fixed Verlet
+/// step, a diverging fixed step, and points still undecided at a low cap.
+#[test]
+fn many_points_at_once_equal_each_point_alone() {
+    use jacobs_ladder::scene::Method;
+    use jacobs_ladder::sim::IntegratorKind;
+    let (_, spec) = scene_at(60.0);
+    let mut scenes = Vec::new();
+    for alpha in [
+        -40.0, -50.0, -52.0, -52.5, -55.0, -60.0, -75.0, -89.0, 40.0, 52.0, 60.0, 75.0, 89.0,
+    ] {
+        let (s, _) = scene_at(alpha);
+        scenes.push(s);
+    }
+    for (alpha, n) in [
+        (60.0, 12),
+        (-60.0, 12),
+        (65.0, 12),
+        (70.0, 12),
+        (-70.0, 12),
+        (80.0, 12),
+    ] {
+        let (mut s, _) = scene_at(alpha);
+        s.model.n = n;
+        scenes.push(s);
+    }
+    for t_d in [200.0, 200.0, 200.0, 200.0, 200.0, 200.0, 500.0] {
+        let (mut s, _) = scene_at(65.0);
+        s.drive.flips[0].duration = t_d;
+        scenes.push(s);
+    }
+    for (kind, dt, alpha) in [
+        (IntegratorKind::Verlet, 0.25, 60.0),
+        (IntegratorKind::Verlet, 0.25, -60.0),
+        (IntegratorKind::SymplecticEuler, 0.95, 60.0),
+        (IntegratorKind::SymplecticEuler, 0.95, 70.0),
+    ] {
+        let (mut s, _) = scene_at(alpha);
+        s.run.integrator = Method::Fixed(kind);
+        s.run.dt = Some(dt);
+        scenes.push(s);
+    }
+    let alone: Vec<_> = scenes
+        .iter()
+        .map(|s| run_point(s, &spec).unwrap())
+        .collect();
+    let together = run_points(&scenes, &spec).unwrap();
+    assert_eq!(together.len(), alone.len());
+    for (k, (a, b)) in alone.iter().zip(&together).enumerate() {
+        assert_eq!(
+            a, b,
+            "point {k} ({} at alpha {})",
+            scenes[k].name, scenes[k].model.alpha
+        );
+    }
+    let outcomes: std::collections::BTreeSet<_> = alone.iter().map(|r| r.outcome.name()).collect();
+    for o in ["propagated", "stalled", "pinned", "diverged"] {
+        assert!(outcomes.contains(o), "the set covers {o}: {outcomes:?}");
+    }
+
+    // A cap below the slow antikinks' decision: undecided, alike.
+    let low = SweepSpec {
+        cap: 3000.0,
+        ..spec.clone()
+    };
+    let slow: Vec<Scene> = [-52.0, -52.5, -53.0, -54.0, -60.0, -70.0, -80.0]
+        .iter()
+        .map(|&a| scene_at(a).0)
+        .collect();
+    let alone: Vec<_> = slow.iter().map(|s| run_point(s, &low).unwrap()).collect();
+    assert_eq!(run_points(&slow, &low).unwrap(), alone);
+    assert!(
+        alone.iter().any(|r| r.outcome == Outcome::Undecided),
+        "{alone:?}"
+    );
+}
+
 #[test]
 fn a_diverging_fixed_step_is_a_diverged_row_not_a_failed_sweep() {
     let dir = tmp("diverged");
@@ -500,6 +580,67 @@ fn the_printed_linkage_model_does_not_stop_halfway() {
                 "α = {}, γ = {gamma}, G = {gravity}: {r:?}",
                 sign * alpha
             );
+        }
+    }
+}
+
+/// The catalogue's `friction` figure, and what its caption says the data
+/// show: friction against gravity sets the antikink's speed where γ is
+/// large against G (equal G/γ, equal speed; speed ∝ G/γ), and not at low
+/// damping.
+#[test]
+fn the_friction_figure_shows_what_its_caption_says() {
+    use jacobs_ladder::sweep::Plan;
+    let entry = jacobs_ladder::catalog::find_any("friction").unwrap();
+    let plan = Plan::new(&entry.scene, 1000).unwrap().unwrap();
+    let all: Vec<usize> = (0..plan.len()).collect();
+    let records = plan.run(&all, &|| {}).unwrap();
+    assert_eq!(records.len(), 25);
+    let (kg, kgamma) = (
+        plan.axes
+            .iter()
+            .position(|(p, _)| *p == Param::Gravity)
+            .unwrap(),
+        plan.axes
+            .iter()
+            .position(|(p, _)| *p == Param::Gamma)
+            .unwrap(),
+    );
+    // Speeds by G/γ (rounded to 1e-9 to group equal ratios).
+    let mut by_ratio: std::collections::BTreeMap<i64, Vec<f64>> = Default::default();
+    for r in &records {
+        assert_eq!(r.result.outcome, Outcome::Propagated, "{r:?}");
+        let p = &plan.points[r.run];
+        let ratio = p[kg] / p[kgamma];
+        by_ratio
+            .entry((ratio * 1e9).round() as i64)
+            .or_default()
+            .push(r.result.speed.unwrap());
+    }
+    let spread = |v: &[f64]| {
+        let (lo, hi) = v
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(a, b), x| (a.min(*x), b.max(*x)));
+        hi / lo - 1.0
+    };
+    for (&key, speeds) in &by_ratio {
+        let ratio = key as f64 * 1e-9;
+        let mean = speeds.iter().sum::<f64>() / speeds.len() as f64;
+        if ratio <= 0.005 + 1e-12 {
+            assert!(spread(speeds) <= 0.06, "G/γ = {ratio}: {speeds:?}");
+            // About 0.30 G/γ blocks per τ.
+            assert!((mean / ratio - 0.30).abs() < 0.015, "G/γ = {ratio}: {mean}");
+        }
+        if (ratio - 0.02).abs() < 1e-12 {
+            assert!(spread(speeds) > 0.3, "inertia at low damping: {speeds:?}");
+            assert!(
+                mean < 0.9 * 0.30 * ratio,
+                "below the proportional law: {mean}"
+            );
+        }
+        if (ratio - 0.01).abs() < 1e-12 {
+            let s = spread(speeds);
+            assert!((0.15..0.25).contains(&s), "the paper's G/γ: {speeds:?}");
         }
     }
 }

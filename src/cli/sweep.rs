@@ -90,7 +90,9 @@ fn run_in_chunks(
 ) -> Result<()> {
     let bar = super::progress_bar(todo.len() as u64, "sweep");
     let threads = rayon::current_num_threads().max(1);
-    let mut chunk = (8 * threads).max(16);
+    // Runs go through the batch kernel a chunk at a time (one run per SIMD
+    // lane): start with enough to fill every core's lanes several times.
+    let mut chunk = (64 * threads).max(128);
     let mut at = 0;
     while at < todo.len() {
         let end = (at + chunk).min(todo.len());

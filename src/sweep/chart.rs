@@ -298,12 +298,20 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
             (a.min(*v), b.max(*v))
         });
     let pale = |c: Rgb| style::mix(style::WHITE, c, 0.35);
+    // Speeds over more than a decade are shaded on a log scale, so that
+    // equal ratios look equally far apart (and runs of equal speed alike).
+    let log = lo > 0.0 && hi > 10.0 * lo;
+    let fraction = |v: f64| {
+        if log {
+            (v / lo).ln() / (hi / lo).ln()
+        } else {
+            (v - lo) / (hi - lo)
+        }
+    };
     let shade = |o: Outcome, v: Option<f64>| -> Rgb {
         let c = outcome_color(o);
         match v {
-            Some(v) if o == Outcome::Propagated && hi > lo => {
-                style::mix(pale(c), c, (v - lo) / (hi - lo))
-            }
+            Some(v) if o == Outcome::Propagated && hi > lo => style::mix(pale(c), c, fraction(v)),
             _ => c,
         }
     };
@@ -332,7 +340,11 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
             .map(|o| (o.name().to_string(), outcome_color(*o)))
             .collect(),
         shade: (hi > lo).then(|| ShadeBar {
-            label: "speed, blocks/τ".into(),
+            label: if log {
+                "speed, blocks/τ (log)".into()
+            } else {
+                "speed, blocks/τ".into()
+            },
             lo,
             hi,
             from: pale(outcome_color(Outcome::Propagated)),

@@ -21,7 +21,6 @@ pub mod shard;
 use crate::error::{Error, Result};
 use crate::scene::sweep::{Param, Point, SweepSpec};
 use crate::scene::{OutputSpec, Scene};
-use rayon::prelude::*;
 pub use run::RunResult;
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -126,18 +125,21 @@ impl Plan {
             .collect()
     }
 
-    /// Runs the points `indices` on every core; results in the order of
-    /// `indices`. `done` is called once per finished run (progress).
+    /// Runs the points `indices` on every core, many at once through the
+    /// batch kernel (`run::run_points`); results in the order of
+    /// `indices`. `done` is called once per finished run (progress), when
+    /// the whole batch has finished.
     pub fn run(&self, indices: &[usize], done: &(dyn Fn() + Sync)) -> Result<Vec<Record>> {
-        indices
-            .par_iter()
-            .with_max_len(1)
-            .map(|&i| {
-                let r = run::run_point(&self.scene_at(i), &self.spec)?;
+        let scenes: Vec<Scene> = indices.iter().map(|&i| self.scene_at(i)).collect();
+        let results = run::run_points(&scenes, &self.spec)?;
+        Ok(indices
+            .iter()
+            .zip(results)
+            .map(|(&i, result)| {
                 done();
-                Ok(Record { run: i, result: r })
+                Record { run: i, result }
             })
-            .collect()
+            .collect())
     }
 }
 

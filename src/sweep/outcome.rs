@@ -185,16 +185,29 @@ pub fn blocks_flipped(arrivals: &[Option<f64>]) -> usize {
     arrivals.iter().filter(|a| a.is_some()).count()
 }
 
+/// Shortest mean time between the arrivals of successive blocks that is
+/// still a travelling wave, τ per block. The model's waves take hundreds
+/// of τ per block (the paper's kink: about 220 τ; the slowest antikinks of
+/// the pinning sweep several thousand); blocks that flip less than 1 τ
+/// apart on average (at |α| = 89°: eight blocks within 0.8 τ) flip
+/// together, faster than a block can respond to its neighbour (the
+/// shortest period of the linear chain, 2π/ω_max, is 2.3 τ at |α| = 89°,
+/// N = 10, b/s = 1.3: `ladder theory --alpha 89`), and a slope through
+/// them is no speed.
+pub const COLLECTIVE_FLIP_GAP: f64 = 1.0;
+
 /// Speed of the wave in blocks per τ: the inverse least-squares slope of
 /// t_n against n over the blocks past block 2 and before the free bottom
-/// block (n = 3..N−1) that flipped; `None` with fewer than three of them
-/// or no positive slope.
+/// block (n = 3..N−1) that flipped; `None` with fewer than three of them,
+/// no positive slope, or a collective flip (a mean gap between the first
+/// and last of them below [`COLLECTIVE_FLIP_GAP`]).
 pub fn speed(arrivals: &[Option<f64>]) -> Option<f64> {
     let n = arrivals.len();
     let pts: Vec<(f64, f64)> = (2..n.saturating_sub(1))
         .filter_map(|i| arrivals[i].map(|t| (i as f64 + 1.0, t)))
         .collect();
-    if pts.len() < 3 {
+    let (&(n_first, t_first), &(n_last, t_last)) = (pts.first()?, pts.last()?);
+    if pts.len() < 3 || (t_last - t_first) < COLLECTIVE_FLIP_GAP * (n_last - n_first) {
         return None;
     }
     let slope = crate::sim::observables::least_squares_slope(&pts);
@@ -351,5 +364,30 @@ mod tests {
         assert_eq!(front(&b), 1);
         assert_eq!(blocks_flipped(&b), 3);
         assert_eq!(speed(&b), None);
+    }
+
+    #[test]
+    fn blocks_that_flip_together_have_no_speed() {
+        // |α| = 89°, N = 10: blocks 2..9 within 0.8 τ (a real run's times).
+        let together = arr(&[
+            Some(500.0),
+            Some(747.4),
+            Some(747.6),
+            Some(747.7),
+            Some(747.8),
+            Some(748.0),
+            Some(748.1),
+            Some(748.2),
+            Some(748.2),
+            None,
+        ]);
+        assert_eq!(front(&together), 9);
+        assert_eq!(speed(&together), None);
+        // The same blocks 1.1 τ apart: a (fast) wave, 1/1.1 blocks per τ.
+        let mut fast = together.clone();
+        for (k, a) in fast.iter_mut().enumerate().take(9).skip(1) {
+            *a = Some(747.4 + 1.1 * (k - 1) as f64);
+        }
+        assert!((speed(&fast).unwrap() - 1.0 / 1.1).abs() < 1e-9);
     }
 }

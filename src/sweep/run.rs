@@ -1,16 +1,26 @@
-//! One point of a sweep: run its scene until the outcome is decided
+//! The points of a sweep: run each scene until the outcome is decided
 //! (`outcome::Rule`), with the scene's integrator; `auto` is verified as
 //! for a single scene (`sim::auto`): the run at dt is checked against one
 //! at dt/2, both run until decided, and must agree on the outcome and on
 //! every arrival time up to the earlier decision within the tolerance;
 //! the step is halved until they do.
+//!
+//! [`run_points`] runs many points at once, in rounds: every point's next
+//! integration (its first step, then each halving) is one job of the
+//! round, and the jobs that share an integrator configuration and a rule
+//! go through `sim::batch::simulate_many` together (one run per SIMD lane,
+//! lanes refilled from a queue on every core). Its results equal
+//! [`run_point`]'s, point by point, bit for bit: the batch kernel
+//! reproduces the one-by-one trajectories exactly (tests/sweep.rs).
 
 use super::outcome::{self, Decision, Outcome, Rule};
 use crate::error::{Error, Result};
 use crate::scene::Scene;
 use crate::scene::sweep::SweepSpec;
 use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Stepping, Trajectory};
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
+use std::collections::HashMap;
 
 /// Most halvings of the step `auto` makes for one point of a sweep (a
 /// point still unverified at dt/16 is kept with a message: a sweep runs
@@ -112,10 +122,19 @@ fn result(
     arrival_error: Option<f64>,
     force_evals: u64,
 ) -> RunResult {
+    result_of(d, &traj.arrival_times, config, arrival_error, force_evals)
+}
+
+fn result_of(
+    d: Decision,
+    arrival_times: &[Option<f64>],
+    config: &IntegratorConfig,
+    arrival_error: Option<f64>,
+    force_evals: u64,
+) -> RunResult {
     // Arrivals after the decision belong to no outcome: drop them, so the
     // record does not depend on how long after it the run was stopped.
-    let arrivals: Vec<Option<f64>> = traj
-        .arrival_times
+    let arrivals: Vec<Option<f64>> = arrival_times
         .iter()
         .map(|a| a.filter(|&t| t <= d.t_decided))
         .collect();
@@ -161,12 +180,7 @@ pub const SWEEP_AUTO_STABILITY_FRACTION: f64 = 0.8;
 /// allows), halved until two successive runs agree (`sim::auto`'s rule,
 /// with the stop rule).
 fn verified(scenario: &Scenario, omega_max: f64, tolerance: f64, rule: &Rule) -> Result<RunResult> {
-    let bound = SWEEP_AUTO_STABILITY_FRACTION * 2.0 / omega_max;
-    let mut dt = if bound.is_finite() && bound > 0.0 {
-        SWEEP_AUTO_DT.min(bound)
-    } else {
-        IntegratorConfig::auto(omega_max).dt
-    };
+    let mut dt = first_auto_dt(omega_max);
     let mut total = 0;
     let mut last_error = String::new();
     let mut coarse = match until_decided(scenario, &verlet(dt), rule)? {
@@ -212,16 +226,312 @@ fn verified(scenario: &Scenario, omega_max: f64, tolerance: f64, rule: &Rule) ->
         Some((d, traj)) => {
             // Kept, with the disagreement said: one hard point must not
             // sink a sweep of thousands.
-            let mut r = result(d, &traj, &verlet(dt), None, total);
-            r.message = Some(format!(
-                "auto could not verify this run within {tolerance} τ down to dt = {dt} τ; \
-                 its outcome may depend on the step"
-            ));
-            Ok(r)
+            Ok(unverified(
+                result(d, &traj, &verlet(dt), None, total),
+                tolerance,
+                dt,
+            ))
         }
     }
 }
 
 fn verlet(dt: f64) -> IntegratorConfig {
     IntegratorConfig::fixed(IntegratorKind::Verlet, dt)
+}
+
+/// How one point is integrated: a fixed configuration, or `auto` from a
+/// first step.
+#[derive(Debug, Clone, Copy)]
+enum Method {
+    Fixed(IntegratorConfig),
+    Auto { dt: f64, tolerance: f64 },
+}
+
+/// One point ready to run.
+struct Prepared {
+    /// The scene's scenario, to the cap.
+    scenario: Scenario,
+    rule: Rule,
+    method: Method,
+}
+
+fn prepare(scene: &Scene, spec: &SweepSpec) -> Result<Prepared> {
+    let rule = rule(scene, spec);
+    let mut capped = scene.clone();
+    capped.run.t_end = spec.cap;
+    let scenario = capped.scenario()?;
+    let method = match scene.run.fixed_config()? {
+        Some(config) => Method::Fixed(config),
+        None => {
+            let params = scene.model.params()?;
+            let omega_max = crate::theory::dispersion::omega_max_clamped(&params)?;
+            Method::Auto {
+                dt: first_auto_dt(omega_max),
+                tolerance: scene.run.tolerance,
+            }
+        }
+    };
+    Ok(Prepared {
+        scenario,
+        rule,
+        method,
+    })
+}
+
+/// `verified`'s first step for a chain whose highest frequency is
+/// `omega_max`.
+fn first_auto_dt(omega_max: f64) -> f64 {
+    let bound = SWEEP_AUTO_STABILITY_FRACTION * 2.0 / omega_max;
+    if bound.is_finite() && bound > 0.0 {
+        SWEEP_AUTO_DT.min(bound)
+    } else {
+        IntegratorConfig::auto(omega_max).dt
+    }
+}
+
+/// An integration until decided, kept between rounds: its decision, the
+/// arrival times and the force evaluations it took.
+struct Decided {
+    decision: Decision,
+    arrival_times: Vec<Option<f64>>,
+    force_evals: u64,
+}
+
+/// One job of a round: point `point` integrated with `config`.
+struct Job {
+    point: usize,
+    config: IntegratorConfig,
+}
+
+/// Runs the jobs of one round: those with the same configuration and rule
+/// together through the batch kernel. Bad input is the outer error; a
+/// diverging integration the inner one (its message).
+fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<Decided, String>>> {
+    let key = |j: &Job| {
+        let c = &j.config;
+        let r = &points[j.point].rule;
+        (
+            c.kind.name(),
+            c.dt.to_bits(),
+            c.rtol.map(f64::to_bits),
+            [r.drive_start, r.drive_end, r.t_end, r.quiet, r.cap].map(f64::to_bits),
+        )
+    };
+    let mut groups: HashMap<_, Vec<usize>> = HashMap::new();
+    let mut order = Vec::new();
+    for (k, job) in jobs.iter().enumerate() {
+        let g = groups.entry(key(job)).or_insert_with(|| {
+            order.push(key(job));
+            Vec::new()
+        });
+        g.push(k);
+    }
+    let mut out: Vec<Option<std::result::Result<Decided, String>>> =
+        jobs.iter().map(|_| None).collect();
+    for g in order {
+        let members = &groups[&g];
+        let first = &jobs[members[0]];
+        let rule = points[first.point].rule;
+        let scenarios: Vec<Scenario> = members
+            .iter()
+            .map(|&k| points[jobs[k].point].scenario.clone())
+            .collect();
+        let stop = |t: f64, arrivals: &[Option<f64>]| rule.decide(arrivals, t).is_some();
+        let runs = sim::batch::simulate_many(&scenarios, &first.config, &stop);
+        for (&k, run) in members.iter().zip(runs) {
+            out[k] = Some(match run {
+                Ok(traj) => Ok(decided(&rule, traj)),
+                Err(Error::Failed(msg)) => Err(msg),
+                Err(Error::Diverged(d)) => Err(d.facts()),
+                Err(e) => return Err(e),
+            });
+        }
+    }
+    Ok(out
+        .into_iter()
+        .map(|r| r.expect("every job belongs to one group"))
+        .collect())
+}
+
+/// The decision a run stopped on, replayed at the cap (`undecided` if it
+/// ran to the cap), as `until_decided` does.
+fn decided(rule: &Rule, traj: Trajectory) -> Decided {
+    let decision = rule
+        .decide(&traj.arrival_times, rule.cap)
+        .unwrap_or(Decision {
+            outcome: Outcome::Undecided,
+            t_decided: rule.cap,
+        });
+    Decided {
+        decision,
+        arrival_times: traj.arrival_times,
+        force_evals: traj.force_evals,
+    }
+}
+
+/// Where a point stands between rounds of `auto` (the state of the loop
+/// of `verified`).
+struct AutoState {
+    dt: f64,
+    tolerance: f64,
+    coarse: Option<Decided>,
+    total: u64,
+    last_error: String,
+    halvings: u32,
+}
+
+/// Runs the single-run `scenes` (points of one sweep under `spec`) until
+/// each is decided, many at once (see the module's doc); results in the
+/// order of `scenes`, equal to [`run_point`]'s.
+pub fn run_points(scenes: &[Scene], spec: &SweepSpec) -> Result<Vec<RunResult>> {
+    let points: Vec<Prepared> = scenes
+        .par_iter()
+        .map(|s| prepare(s, spec))
+        .collect::<Result<_>>()?;
+    let mut results: Vec<Option<RunResult>> = points.iter().map(|_| None).collect();
+    let mut auto: Vec<Option<AutoState>> = points.iter().map(|_| None).collect();
+    // Round 0: every point's first integration.
+    let jobs: Vec<Job> = points
+        .iter()
+        .enumerate()
+        .map(|(point, p)| Job {
+            point,
+            config: match p.method {
+                Method::Fixed(c) => c,
+                Method::Auto { dt, .. } => verlet(dt),
+            },
+        })
+        .collect();
+    for (job, attempt) in jobs.iter().zip(round(&points, &jobs)?) {
+        let p = &points[job.point];
+        match p.method {
+            Method::Fixed(config) => {
+                results[job.point] = Some(match attempt {
+                    Ok(d) => from_decided(&d, &config, None, d.force_evals),
+                    Err(msg) => diverged(&p.scenario, &config, msg, 0),
+                });
+            }
+            Method::Auto { dt, tolerance } => {
+                let mut state = AutoState {
+                    dt,
+                    tolerance,
+                    coarse: None,
+                    total: 0,
+                    last_error: String::new(),
+                    halvings: 0,
+                };
+                match attempt {
+                    Ok(d) => {
+                        state.total += d.force_evals;
+                        state.coarse = Some(d);
+                    }
+                    Err(m) => state.last_error = m,
+                }
+                auto[job.point] = Some(state);
+            }
+        }
+    }
+    // Rounds 1..: each unverified point's run at half its step.
+    loop {
+        let jobs: Vec<Job> = auto
+            .iter()
+            .enumerate()
+            .filter_map(|(point, a)| {
+                let a = a.as_ref()?;
+                (results[point].is_none() && a.halvings < MAX_HALVINGS).then(|| Job {
+                    point,
+                    config: verlet(0.5 * a.dt),
+                })
+            })
+            .collect();
+        if jobs.is_empty() {
+            break;
+        }
+        for (job, attempt) in jobs.iter().zip(round(&points, &jobs)?) {
+            let state = auto[job.point].as_mut().expect("an auto point");
+            state.halvings += 1;
+            let fine = match attempt {
+                Ok(f) => f,
+                Err(m) => {
+                    state.last_error = m;
+                    state.dt *= 0.5;
+                    state.coarse = None;
+                    continue;
+                }
+            };
+            state.total += fine.force_evals;
+            if let Some(coarse) = &state.coarse {
+                let upto = coarse.decision.t_decided.min(fine.decision.t_decided);
+                let difference = sim::auto::arrival_difference(
+                    &coarse.arrival_times,
+                    &fine.arrival_times,
+                    upto,
+                    state.tolerance,
+                );
+                if coarse.decision.outcome == fine.decision.outcome && difference <= state.tolerance
+                {
+                    results[job.point] = Some(from_decided(
+                        &fine,
+                        &job.config,
+                        Some(difference / 3.0),
+                        state.total,
+                    ));
+                    continue;
+                }
+            }
+            state.coarse = Some(fine);
+            state.dt *= 0.5;
+        }
+    }
+    // The points `auto` could not verify, as `verified` ends.
+    for (point, state) in auto.into_iter().enumerate() {
+        let Some(state) = state else { continue };
+        if results[point].is_some() {
+            continue;
+        }
+        let config = verlet(state.dt);
+        results[point] = Some(match &state.coarse {
+            None => diverged(
+                &points[point].scenario,
+                &config,
+                state.last_error,
+                state.total,
+            ),
+            Some(d) => unverified(
+                from_decided(d, &config, None, state.total),
+                state.tolerance,
+                state.dt,
+            ),
+        });
+    }
+    Ok(results
+        .into_iter()
+        .map(|r| r.expect("every point has a result"))
+        .collect())
+}
+
+/// [`result`] of a run kept between rounds.
+fn from_decided(
+    d: &Decided,
+    config: &IntegratorConfig,
+    arrival_error: Option<f64>,
+    force_evals: u64,
+) -> RunResult {
+    result_of(
+        d.decision,
+        &d.arrival_times,
+        config,
+        arrival_error,
+        force_evals,
+    )
+}
+
+/// `r`, kept with the disagreement said: one hard point must not sink a
+/// sweep of thousands.
+fn unverified(mut r: RunResult, tolerance: f64, dt: f64) -> RunResult {
+    r.message = Some(format!(
+        "auto could not verify this run within {tolerance} τ down to dt = {dt} τ; \
+         its outcome may depend on the step"
+    ));
+    r
 }
