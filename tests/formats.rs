@@ -135,6 +135,14 @@ fn pdf_of_every_figure_is_vector() {
             count("f"),
             count("S")
         );
+        // Text is glyph outlines (the curves above), so no font is needed:
+        // no text objects, no font resources.
+        assert_eq!(count("BT") + count("Tj") + count("TJ"), 0, "{name}: text");
+        for (_, obj) in doc.objects.iter() {
+            if let Ok(d) = obj.as_dict() {
+                assert!(d.get(b"Font").is_err(), "{name}: font resource");
+            }
+        }
         // No images at all: nothing is drawn as a raster (`Do` paints XObjects).
         assert_eq!(count("Do"), 0, "{name}: draws an XObject");
         assert_eq!(count("BI"), 0, "{name}: has an inline image");
@@ -388,15 +396,13 @@ fn movie_layout_scales_with_the_frame() {
 
 #[test]
 fn nothing_is_cut_from_320x240_to_3840x2160() {
-    let scene = movie_scene("4");
-    for (w, h) in [
-        (320, 240),
-        (640, 360),
-        (640, 480),
-        (1280, 720),
-        (3840, 2160),
-        (480, 1080),
-    ] {
+    // Movie 4 (fixed camera), 3 (following camera, lab scale), 11 (two
+    // flips).
+    for (id, (w, h)) in ["4", "3", "11"]
+        .into_iter()
+        .flat_map(|id| MOVIE_SIZES[..7].iter().map(move |&s| (id, s)))
+    {
+        let scene = movie_scene(id);
         let opts = scenes::MovieOptions {
             frames: 4,
             width: w,
@@ -404,6 +410,7 @@ fn nothing_is_cut_from_320x240_to_3840x2160() {
             fps: 10.0,
         };
         let f = scenes::dynamic::movie_frame(&scene, &opts, 3).unwrap();
+        let (w, h) = (f.width(), f.height());
         // The outermost rows and columns stay white: no text or ladder runs
         // off the frame.
         let px = |x: u32, y: u32| {
@@ -421,11 +428,102 @@ fn nothing_is_cut_from_320x240_to_3840x2160() {
                 assert_eq!(px(x, y), [255; 3], "{w}x{h}: ink at ({x}, {y})");
             }
         }
-        if w == 320 || w == 480 {
+        if w == 320 || w == 480 || w == 3840 {
             dump(
-                &format!("frame-{w}x{h}.png"),
+                &format!("movie-{id}-frame-{w}x{h}.png"),
                 &encode::png_bytes(&f).unwrap(),
             );
+        }
+    }
+}
+
+/// Frame sizes from the smallest a talk might use to 4K, and the extremes
+/// `--size` takes (64 to 4096 each way).
+const MOVIE_SIZES: [(u32, u32); 9] = [
+    (320, 240),
+    (640, 360),
+    (640, 480),
+    (1280, 720),
+    (1920, 1080),
+    (3840, 2160),
+    (480, 1080),
+    (64, 64),
+    (4096, 64),
+];
+
+#[test]
+fn movie_texts_and_panels_lie_inside_the_frame_at_every_size() {
+    use jacobs_ladder::render::snapshot::time_label;
+    use jacobs_ladder::render::{MovieLayout, Region};
+    const EPS: f32 = 1e-3;
+    let inside = |a: Region, b: Region| {
+        a.x >= b.x - EPS
+            && a.y >= b.y - EPS
+            && a.x + a.w <= b.x + b.w + EPS
+            && a.y + a.h <= b.y + b.h + EPS
+    };
+    let apart = |a: Region, b: Region| {
+        a.x + a.w <= b.x + EPS
+            || b.x + b.w <= a.x + EPS
+            || a.y + a.h <= b.y + EPS
+            || b.y + b.h <= a.y + EPS
+    };
+    let movies = catalog::entries(scene::Kind::Movie).unwrap();
+    assert_eq!(movies.len(), 9);
+    // A title longer than any frame is shrunk to fit, not cut.
+    let long = "A title much longer than any movie frame could show at the size of \
+                the catalogue's titles, written by a user of `ladder render`";
+    for (w, h) in MOVIE_SIZES {
+        for e in &movies {
+            for title in [scene::describe::title(&e.scene), long.to_string()] {
+                let n = e.scene.model.n;
+                let t_end = e.scene.run.t_end;
+                let l = MovieLayout::new(w, h, n);
+                let what = format!("movie {} at {w}x{h}", e.id);
+                let frame = Region {
+                    x: 0.0,
+                    y: 0.0,
+                    w: l.design.0,
+                    h: l.design.1,
+                };
+                // The design frame is the pixel frame, scaled.
+                assert!((l.design.0 * l.scale - w as f32).abs() < 0.01, "{what}");
+                assert!((l.design.1 * l.scale - h as f32).abs() < 0.01, "{what}");
+                assert!(inside(l.ladder, frame), "{what}: ladder {:?}", l.ladder);
+                assert!(inside(l.heat, frame), "{what}: kymograph {:?}", l.heat);
+                assert!(apart(l.ladder, l.heat), "{what}: ladder over kymograph");
+                let (x, y, hw, hh) = l.heat_pixels();
+                assert!(x + hw <= w && y + hh <= h, "{what}: kymograph pixels");
+                // The snapshot's time label fits the ladder's width.
+                let time = jacobs_ladder::render::style::text_width(
+                    &time_label(t_end),
+                    jacobs_ladder::render::style::size::LABEL,
+                );
+                assert!(time < 0.9 * l.ladder.w, "{what}: time label {time}");
+                let labels = l.labels(&title, t_end, n);
+                assert_eq!(labels.len(), 6, "{what}");
+                for (i, a) in labels.iter().enumerate() {
+                    let b = a.bounds();
+                    assert!(b.w > 0.0 && b.h >= a.size * 0.99, "{what}: {:?}", a.text);
+                    assert!(inside(b, frame), "{what}: {:?} at {b:?} is cut", a.text);
+                    assert!(apart(b, l.heat), "{what}: {:?} over the kymograph", a.text);
+                    assert!(apart(b, l.ladder), "{what}: {:?} over the ladder", a.text);
+                    for c in &labels[i + 1..] {
+                        assert!(
+                            apart(b, c.bounds()),
+                            "{what}: {:?} and {:?} overlap",
+                            a.text,
+                            c.text
+                        );
+                    }
+                }
+                // The catalogue's titles keep their full size.
+                if title != long {
+                    assert_eq!(labels[0].size, 18.0, "{what}: {title}");
+                } else if l.design.0 < 1000.0 {
+                    assert!(labels[0].size < 18.0, "{what}");
+                }
+            }
         }
     }
 }
@@ -442,6 +540,147 @@ fn golden_rasterised_svg() {
     let svg = encode::svg_bytes(&pic.to_tree(1.0).unwrap());
     let (w, h) = pic.pixel_size();
     check("svg-figure-edge-mode", &rasterize_svg_file(&svg, w, h));
+}
+
+// ---------------------------------------------------------------- labels
+
+/// What a reader of `text` sees that is source code rather than typeset
+/// text: equation tags, markup left unconverted, TeX, identifiers with
+/// underscores, Greek letters spelled out.
+fn code_names(text: &str) -> Vec<String> {
+    let mut found = Vec::new();
+    for bad in ["eq:", "^{", "_{", "\\", "sqrt(", "$"] {
+        if text.contains(bad) {
+            found.push(bad.to_string());
+        }
+    }
+    let words = text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'));
+    for word in words {
+        let lower = word.to_ascii_lowercase();
+        let greek = [
+            "alpha", "beta", "gamma", "delta", "theta", "kappa", "omega", "tau", "sigma", "phi",
+            "pi", "epsilon", "eq",
+        ];
+        if word.contains('_') || greek.contains(&lower.as_str()) {
+            found.push(word.to_string());
+        }
+    }
+    found
+}
+
+/// The text content of every `<text>` element of an SVG document.
+fn svg_texts(svg: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut rest = svg;
+    while let Some(start) = rest.find("<text") {
+        let body = &rest[start..];
+        let end = body.find("</text>").expect("closed <text>");
+        out.push(strip_tags(&body[..end]));
+        rest = &body[end..];
+    }
+    out
+}
+
+/// `html` without its tags (and without `<style>` and `<script>` bodies).
+fn strip_tags(html: &str) -> String {
+    let mut out = String::new();
+    let mut rest = html;
+    while let Some(open) = rest.find('<') {
+        out.push_str(&rest[..open]);
+        let tag = &rest[open..];
+        let skip_to = ["<style", "<script"]
+            .iter()
+            .find(|t| tag.starts_with(*t))
+            .map(|t| format!("</{}", &t[1..]));
+        let close = match skip_to {
+            Some(end) => tag.find(&end).unwrap_or(tag.len()),
+            None => 0,
+        };
+        let gt = tag[close..].find('>').map_or(tag.len(), |i| close + i + 1);
+        out.push(' ');
+        rest = &tag[gt..];
+    }
+    out.push_str(rest);
+    out
+}
+
+#[test]
+fn code_names_finds_what_it_should() {
+    assert!(code_names("as printed (eq:zm_n)").len() >= 2);
+    assert_eq!(code_names("e^{−κ} omega_plus"), ["^{", "omega_plus"]);
+    assert_eq!(code_names("kappa b"), ["kappa"]);
+    assert!(code_names("ω₊ and e−κ(n−1)b, |δθₙ|, t/τ = 2200").is_empty());
+    assert_eq!(
+        svg_texts("<svg><text x=\"1\">a<tspan dy=\"2\">b</tspan></text></svg>")
+            .iter()
+            .map(|t| t.split_whitespace().collect::<String>())
+            .collect::<Vec<_>>(),
+        ["ab"]
+    );
+    assert_eq!(
+        strip_tags("<style>p { x: 1 }</style><p>n<sub>C</sub></p>").trim(),
+        "n C"
+    );
+}
+
+/// What readers see is typeset: no equation tags or code names in any
+/// figure's text (legends, axes, notes; charts included), in any movie
+/// frame's text, or in the gallery's captions and alt texts; and the
+/// figures' super- and subscripts are real ones in the SVG.
+#[test]
+fn labels_are_typeset_nowhere_a_code_name() {
+    let mut scripts = 0;
+    for (name, pic) in figures() {
+        let svg = pic.to_svg(1.0).unwrap();
+        scripts += svg.matches("baseline-shift").count();
+        let texts = svg_texts(&svg);
+        assert!(!texts.is_empty(), "{name}: no text");
+        for t in texts {
+            let bad = code_names(&t);
+            assert!(bad.is_empty(), "{name}: {bad:?} in {t:?}");
+        }
+    }
+    assert!(
+        scripts >= 10,
+        "super- and subscripts drawn as such: {scripts}"
+    );
+    for e in catalog::entries(scene::Kind::Movie).unwrap() {
+        let layout = jacobs_ladder::render::MovieLayout::new(640, 480, e.scene.model.n);
+        let title = scene::describe::title(&e.scene);
+        for l in layout.labels(&title, e.scene.run.t_end, e.scene.model.n) {
+            let bad = code_names(&l.text.replace("_{n}", "ₙ"));
+            assert!(bad.is_empty(), "movie {}: {bad:?} in {:?}", e.id, l.text);
+        }
+    }
+    // The gallery of everything the catalogue makes.
+    let scenes: Vec<_> = [scene::Kind::Figure, scene::Kind::Movie]
+        .into_iter()
+        .flat_map(|k| catalog::entries(k).unwrap())
+        .collect();
+    let items: Vec<jacobs_ladder::gallery::Item> = scenes
+        .iter()
+        .map(|e| jacobs_ladder::gallery::Item {
+            scene: &e.scene,
+            files: vec![format!("{}.png", e.scene.stem())],
+        })
+        .collect();
+    let html = jacobs_ladder::gallery::index_html(&items).unwrap();
+    dump("index.html", html.as_bytes());
+    let seen = strip_tags(&html);
+    let bad = code_names(&seen);
+    assert!(bad.is_empty(), "gallery text: {bad:?}");
+    let alts: Vec<&str> = html
+        .split("alt=\"")
+        .skip(1)
+        .map(|a| &a[..a.find('"').unwrap()])
+        .collect();
+    assert!(alts.len() >= 20, "alt texts: {}", alts.len());
+    for a in alts {
+        let bad = code_names(a);
+        assert!(bad.is_empty(), "alt text {a:?}: {bad:?}");
+    }
+    // Formulas of the captions are typeset as HTML, as in the images.
+    assert!(html.contains("e<sup>−κ(n−1)b</sup>"), "edge-mode caption");
 }
 
 // ------------------------------------------------------------ command line
@@ -463,7 +702,7 @@ fn scratch(name: &str) -> std::path::PathBuf {
 fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
     let out = scratch("bad");
     let o = out.to_str().unwrap();
-    let cases: [(&[&str], &str); 9] = [
+    let cases: [(&[&str], &str); 14] = [
         (
             &["figure", "3", "--format", "jpg", "--out", o],
             "--format: unknown format 'jpg'",
@@ -495,8 +734,28 @@ fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
             "between 64 and 4096",
         ),
         (&["figure", "2b", "--scale", "100", "--out", o], "--scale:"),
+        (
+            &["figure", "3", "--size", "1280x960", "--out", o],
+            "use --scale S",
+        ),
+        (
+            &[
+                "movie", "4", "--format", "mp4", "--size", "1280x721", "--out", o,
+            ],
+            if cfg!(feature = "mp4") {
+                "try 1280x722"
+            } else {
+                "without the cargo feature 'mp4'"
+            },
+        ),
         (&["figure", "3", "--out", "x.svg"], "--out is a folder"),
         (&["figure", "3", "--out", "Cargo.toml"], "--out is a folder"),
+        (
+            &["sweep", "--alpha", "50,60", "--out", "x.pdf"],
+            "--out is a folder",
+        ),
+        (&["movie", "4", "--out", "x.mp4"], "--out is a folder"),
+        (&["all", "--out", "x.html"], "--out is a folder"),
     ];
     for (args, expected) in cases {
         let r = ladder(args);
@@ -506,7 +765,9 @@ fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
         assert!(err.contains(expected), "{args:?}: {err}");
     }
     assert!(!out.exists(), "nothing written on bad input");
-    assert!(!std::path::Path::new("x.svg").exists());
+    for f in ["x.svg", "x.pdf", "x.mp4", "x.html"] {
+        assert!(!std::path::Path::new(f).exists(), "{f} made");
+    }
 }
 
 #[test]
@@ -573,5 +834,61 @@ fn sweep_chart_in_every_format() {
         json.contains("sweep-tiny.pdf"),
         "the data file lists the chart files"
     );
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn movie_and_render_write_every_format_asked_for() {
+    let movies = if cfg!(feature = "mp4") {
+        "gif,mp4"
+    } else {
+        "gif"
+    };
+    let out = scratch("movie");
+    let o = out.to_str().unwrap();
+    let small = ["--frames", "6", "--size", "320x240", "--out", o];
+    let r = ladder(&[&["movie", "4", "--format", movies][..], &small].concat());
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let gif = std::fs::read(out.join("movie-4.gif")).unwrap();
+    assert!(gif.starts_with(b"GIF89a"));
+    if cfg!(feature = "mp4") {
+        let mp4 = std::fs::read(out.join("movie-4.mp4")).unwrap();
+        assert_eq!(&mp4[4..8], b"ftyp");
+    }
+    // `render` takes figure and movie formats in one list; a scene file of
+    // each kind gets the formats of its kind.
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes");
+    let (fig, mov) = (dir.join("figure-2d.toml"), dir.join("movie-4.toml"));
+    let list = format!("svg,pdf,{movies}");
+    let r = ladder(
+        &[
+            &["render", fig.to_str().unwrap(), mov.to_str().unwrap()][..],
+            &["--format", &list],
+            &small,
+        ]
+        .concat(),
+    );
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let names: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    let has = |ext: &str, kind: &str| {
+        names
+            .iter()
+            .any(|n| n.starts_with(kind) && n.ends_with(&format!(".{ext}")) && n != "movie-4.gif")
+    };
+    assert!(has("svg", "figure") && has("pdf", "figure"), "{names:?}");
+    assert!(
+        !has("png", "figure"),
+        "only the formats asked for: {names:?}"
+    );
+    assert!(has("gif", "movie"), "{names:?}");
+    if cfg!(feature = "mp4") {
+        assert!(
+            names.iter().filter(|n| n.ends_with(".mp4")).count() == 2,
+            "{names:?}"
+        );
+    }
     let _ = std::fs::remove_dir_all(&out);
 }

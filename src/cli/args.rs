@@ -320,6 +320,10 @@ pub struct FigureFormat {
         help_heading = "Figure format"
     )]
     pub scale: f32,
+    /// Not a figure's option (movies take `--size`): taken only to refuse
+    /// it with a pointer to `--scale`.
+    #[arg(long, hide = true, value_name = "WxH")]
+    pub size: Option<String>,
 }
 
 /// `--format` and `--scale` of commands that write figures and movies.

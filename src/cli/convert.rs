@@ -149,6 +149,8 @@ impl GridArgs {
 /// scene), its grid extended or replaced by the grid flags, the run and
 /// outcome flags applied, validated; an error names the flag.
 pub fn sweep_scene(args: &SweepArgs) -> Result<Scene> {
+    // `--out` names the folder of the sweep's files, as for every command.
+    check_out_dir(&args.out.out)?;
     let grid = args.grid.given();
     let mut scene = match &args.file {
         Some(path) => {
@@ -300,6 +302,13 @@ fn with_scale(outputs: Outputs, scale: f32) -> Result<Outputs> {
 impl FigureFormat {
     /// The figure formats and scale of `ladder figure`.
     pub fn outputs(&self) -> Result<Outputs> {
+        if let Some(size) = &self.size {
+            return Err(Error::bad_input(format!(
+                "--size {size}: a figure keeps its layout and takes no frame size; \
+                 use --scale S for S times the PNG's pixels (e.g. --scale 2), \
+                 or --format svg,pdf for vector files"
+            )));
+        }
         let figures = formats_of(&self.formats, FormatKind::Figure)?;
         with_scale(
             Outputs {

@@ -17,6 +17,47 @@ use tiny_skia::{Pixmap, Transform};
 /// The frame size at which one design pixel is one pixel.
 pub const REFERENCE: (f32, f32) = (640.0, 480.0);
 
+/// A line of typeset text of a movie frame, in design pixels.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Label {
+    /// The text (markup of [`style::runs`]).
+    pub text: String,
+    /// Its anchor.
+    pub at: (f32, f32),
+    /// Font size.
+    pub size: f32,
+    /// How the text sits on its anchor.
+    pub align: (HAlign, VAlign),
+}
+
+impl Label {
+    /// The box the text covers: its advance width across, and from the top
+    /// of the highest run's em box to the bottom of the lowest one's (super-
+    /// and subscripts included) down, as every backend places it.
+    pub fn bounds(&self) -> Region {
+        let width = style::text_width(&self.text, self.size);
+        let (x, baseline) = style::text_origin(self.at, width, self.size, self.align);
+        let (mut top, mut bottom) = (f32::INFINITY, f32::NEG_INFINITY);
+        for (shift, _) in style::runs(&self.text) {
+            let s = self.size * shift.scale();
+            let base = baseline - shift.rise() * self.size;
+            // The font's ascent and descent add up to its size.
+            let ascent = style::ascent(s);
+            top = top.min(base - ascent);
+            bottom = bottom.max(base + s - ascent);
+        }
+        if top > bottom {
+            (top, bottom) = (baseline, baseline);
+        }
+        Region {
+            x,
+            y: top,
+            w: width,
+            h: bottom - top,
+        }
+    }
+}
+
 /// The layout of one movie's frames.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MovieLayout {
@@ -117,40 +158,72 @@ impl MovieLayout {
     }
 
     fn decorate(&self, c: &mut impl Canvas, title: &str, t_end: f64, n: usize) {
+        for l in self.labels(title, t_end, n) {
+            c.text(&l.text, l.at, l.size, DARK, l.align);
+        }
+    }
+
+    /// Every line of text that every frame shares, in design pixels: the
+    /// title across the top (smaller if it would not fit the frame's width),
+    /// the kymograph's first and last time beside it, the block numbers
+    /// under it and the colour legend below them.
+    pub fn labels(&self, title: &str, t_end: f64, n: usize) -> Vec<Label> {
         let tick = size::TICK;
         let top = (HAlign::Center, VAlign::Top);
-        c.text(title, (0.5 * self.design.0, 6.0), size::TITLE, DARK, top);
+        let room = 0.96 * self.design.0;
+        let full = style::text_width(title, size::TITLE);
+        let title_size = if full > room {
+            size::TITLE * room / full
+        } else {
+            size::TITLE
+        };
         let r = self.heat;
         let left = r.x - 4.0;
-        c.text(
-            "t/τ = 0",
-            (left, r.y),
-            tick,
-            DARK,
-            (HAlign::Right, VAlign::Top),
-        );
-        let end = format!("{t_end:.0}");
-        let bottom_right = (HAlign::Right, VAlign::Baseline);
-        c.text(&end, (left, r.y + r.h), tick, DARK, bottom_right);
         let below = r.y + r.h + 4.0;
-        c.text(
-            "block 1",
-            (r.x, below),
-            tick,
-            DARK,
-            (HAlign::Left, VAlign::Top),
-        );
-        let last = format!("{n}");
-        c.text(
-            &last,
-            (r.x + r.w, below),
-            tick,
-            DARK,
-            (HAlign::Right, VAlign::Top),
-        );
-        let legend = "sin θ_{n}: red +1, blue −1";
-        let mid = (r.x + 0.5 * r.w, below + 1.3 * tick);
-        c.text(legend, mid, tick, DARK, top);
+        let label = |text: String, at: (f32, f32), size: f32, align| Label {
+            text,
+            at,
+            size,
+            align,
+        };
+        vec![
+            label(
+                title.to_string(),
+                (0.5 * self.design.0, 6.0),
+                title_size,
+                top,
+            ),
+            label(
+                "t/τ = 0".into(),
+                (left, r.y),
+                tick,
+                (HAlign::Right, VAlign::Top),
+            ),
+            label(
+                format!("{t_end:.0}"),
+                (left, r.y + r.h),
+                tick,
+                (HAlign::Right, VAlign::Baseline),
+            ),
+            label(
+                "block 1".into(),
+                (r.x, below),
+                tick,
+                (HAlign::Left, VAlign::Top),
+            ),
+            label(
+                format!("{n}"),
+                (r.x + r.w, below),
+                tick,
+                (HAlign::Right, VAlign::Top),
+            ),
+            label(
+                "sin θ_{n}: red +1, blue −1".into(),
+                (r.x + 0.5 * r.w, below + 1.3 * tick),
+                tick,
+                top,
+            ),
+        ]
     }
 
     /// One frame into `canvas`: a copy of `background`, each snapshot in
