@@ -28,7 +28,13 @@ pub fn parse(text: &str, origin: &str, default_name: &str) -> Result<Scene> {
         located(text, origin, e.span(), key.as_deref(), e.message())
     })?;
     if !doc.get_ref().contains_key("name") {
-        scene.name = default_name.to_string();
+        // Output files are named `KIND-NAME`: a file already named so
+        // (`movie-4.toml`, as `assets/scenes/` are) keeps its name once.
+        let prefix = format!("{}-", scene.kind().name());
+        scene.name = match default_name.strip_prefix(&prefix) {
+            Some(rest) if !rest.is_empty() => rest.to_string(),
+            _ => default_name.to_string(),
+        };
     }
     scene.check().map_err(|(key, msg)| {
         let span = span_of(doc.get_ref(), &key);
@@ -220,6 +226,28 @@ mod tests {
         assert_eq!(line_col(t, t.find('=').unwrap()), (1, 3));
         let second = t.rfind('=').unwrap();
         assert_eq!(line_col(t, second), (2, 4));
+    }
+
+    #[test]
+    fn a_file_named_after_its_output_keeps_its_name_once() {
+        let movie = "[output]\nkind = \"movie\"\n";
+        // assets/scenes/movie-4.toml renders to movie-4.gif, not movie-movie-4.gif.
+        assert_eq!(
+            parse(movie, "movie-4.toml", "movie-4").unwrap().stem(),
+            "movie-4"
+        );
+        assert_eq!(parse(movie, "k70.toml", "k70").unwrap().stem(), "movie-k70");
+        // Only the prefix of its own kind, and never down to nothing.
+        assert_eq!(
+            parse(movie, "figure-4.toml", "figure-4").unwrap().stem(),
+            "movie-figure-4"
+        );
+        assert_eq!(
+            parse(movie, "movie-.toml", "movie-").unwrap().stem(),
+            "movie-movie-"
+        );
+        let named = "name = \"movie-x\"\n[output]\nkind = \"movie\"\n";
+        assert_eq!(parse(named, "a.toml", "a").unwrap().name, "movie-x");
     }
 
     #[test]
