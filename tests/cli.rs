@@ -290,3 +290,46 @@ fn every_kernel_prints_the_same_numbers() {
     }
     assert_bad_input(&["simulate", "--kernel", "sse9"], "kernel");
 }
+
+/// `render` with a format list that has nothing for one of its scenes'
+/// kinds is refused before anything is written (a movie asked for as PDF
+/// used to be written as a GIF without a word).
+#[test]
+fn render_refuses_a_format_list_with_nothing_for_a_scene() {
+    let dir = std::env::temp_dir().join(format!("ladder-cli-cover-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let movie = dir.join("m.toml");
+    let figure = dir.join("f.toml");
+    std::fs::write(&movie, "[output]\nkind = \"movie\"\n").unwrap();
+    std::fs::write(&figure, "[output]\nkind = \"filmstrip\"\n").unwrap();
+    let out = dir.join("out");
+    let (m, f, o) = (
+        movie.to_str().unwrap(),
+        figure.to_str().unwrap(),
+        out.to_str().unwrap(),
+    );
+    assert_bad_input(
+        &["render", m, "--format", "pdf", "--out", o],
+        "m is a movie, written as gif or mp4",
+    );
+    assert_bad_input(
+        &["render", f, m, "--format", "svg", "--out", o],
+        "m is a movie",
+    );
+    assert_bad_input(
+        &["render", f, "--format", "mp4", "--out", o],
+        "f is a figure, written as png, svg or pdf",
+    );
+    assert!(!out.exists(), "nothing written");
+    // Checking a file takes the same list.
+    assert_bad_input(&["render", "--check", m, "--format", "png"], "m is a movie");
+    let ok = ladder(&["render", "--check", f, m, "--format", "svg,mp4"]);
+    assert_eq!(
+        ok.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -9,7 +9,7 @@ use super::args::{
 use crate::encode::{self, Formats, Kind as FormatKind};
 use crate::error::{Error, Result};
 use crate::scene::sweep::{Param, SweepSpec, Values};
-use crate::scene::{Camera, DriveSpec, Method, OutputSpec, Scene};
+use crate::scene::{Camera, DriveSpec, Kind, Method, OutputSpec, Scene};
 use crate::scenes::{MovieOptions, Outputs};
 use crate::sim;
 use std::path::Path;
@@ -321,6 +321,30 @@ impl FigureFormat {
 }
 
 impl MixedFormat {
+    /// `ladder render`: every scene must have a format of its kind in the
+    /// list (a list that names only figure formats writes no movie, and
+    /// one that names only movie formats no figure).
+    pub fn check_covers(&self, scenes: &[Scene]) -> Result<()> {
+        let (figures, movies) = encode::parse_mixed(&self.formats)
+            .map_err(|e| Error::bad_input(format!("--format: {e}")))?;
+        for s in scenes {
+            let missing = match s.kind() {
+                Kind::Movie if movies.is_none() => Some("gif or mp4"),
+                Kind::Figure if figures.is_none() => Some("png, svg or pdf"),
+                _ => None,
+            };
+            if let Some(formats) = missing {
+                return Err(Error::bad_input(format!(
+                    "--format {}: {} is a {}, written as {formats}; add one of them to the list",
+                    self.formats,
+                    s.name,
+                    s.kind().name()
+                )));
+            }
+        }
+        Ok(())
+    }
+
     /// The figure and movie formats of `ladder all` and `ladder render`,
     /// checked against the movie's frame size and rate.
     pub fn outputs(&self, movie: &MovieOptions) -> Result<Outputs> {

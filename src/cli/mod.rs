@@ -174,6 +174,7 @@ pub fn run(cli: Cli) -> Result<()> {
                 .iter()
                 .map(|f| scene::file::load(f))
                 .collect::<Result<Vec<_>>>()?;
+            args.formats.check_covers(&scenes)?;
             if args.check {
                 for (file, s) in args.files.iter().zip(&scenes) {
                     output::print(&format!(
