@@ -856,7 +856,11 @@ fn movie_and_render_write_every_format_asked_for() {
         assert_eq!(&mp4[4..8], b"ftyp");
     }
     // `render` takes figure and movie formats in one list; a scene file of
-    // each kind gets the formats of its kind.
+    // each kind gets the formats of its kind. (movie-4.toml renders to
+    // movie-4.*: clear the `movie` command's files first.)
+    for ext in ["gif", "mp4", "json"] {
+        let _ = std::fs::remove_file(out.join(format!("movie-4.{ext}")));
+    }
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes");
     let (fig, mov) = (dir.join("figure-2d.toml"), dir.join("movie-4.toml"));
     let list = format!("svg,pdf,{movies}");
@@ -876,7 +880,7 @@ fn movie_and_render_write_every_format_asked_for() {
     let has = |ext: &str, kind: &str| {
         names
             .iter()
-            .any(|n| n.starts_with(kind) && n.ends_with(&format!(".{ext}")) && n != "movie-4.gif")
+            .any(|n| n.starts_with(kind) && n.ends_with(&format!(".{ext}")))
     };
     assert!(has("svg", "figure") && has("pdf", "figure"), "{names:?}");
     assert!(
@@ -885,10 +889,7 @@ fn movie_and_render_write_every_format_asked_for() {
     );
     assert!(has("gif", "movie"), "{names:?}");
     if cfg!(feature = "mp4") {
-        assert!(
-            names.iter().filter(|n| n.ends_with(".mp4")).count() == 2,
-            "{names:?}"
-        );
+        assert!(names.iter().any(|n| n == "movie-4.mp4"), "{names:?}");
     }
     let _ = std::fs::remove_dir_all(&out);
 }
