@@ -16,6 +16,7 @@ mod rasterize;
 mod spec;
 mod svg_text;
 mod ticks;
+mod title;
 
 pub use kymograph::{Kymograph, kymograph, polarisation_rows};
 pub use line::line_chart;
@@ -23,6 +24,7 @@ pub use rasterize::{Chart, rasterize_svg, rasterize_tree};
 pub use spec::{Axis, ChartSpec, Legend, LineStyle, Marker, Scale, Series};
 pub use svg_text::typeset_svg_text;
 pub use ticks::{short_number, tick_label};
+pub use title::{FittedTitle, fit_title};
 
 use super::style::FONT_FAMILY;
 use crate::encode::Rgb;
