@@ -1,6 +1,7 @@
 //! The command-line contract (SPEC section 5): exit codes, one-line errors,
 //! `simulate --json` fields and the CSV file.
 
+use jacobs_ladder::theory::TheoryReport;
 use std::process::{Command, Output};
 
 fn ladder(args: &[&str]) -> Output {
@@ -25,6 +26,18 @@ fn assert_bad_input(args: &[&str], needle: &str) {
     );
     assert!(!stderr.contains("panicked"), "{stderr}");
     assert!(out.stdout.is_empty(), "{args:?}: no result on bad input");
+}
+
+/// `ladder ARGS`'s one JSON object on stdout (exit 0), checked to have
+/// every one of `keys`.
+fn json_with(args: &[&str], keys: &[&str]) -> serde_json::Value {
+    let out = ladder(args);
+    assert_eq!(out.status.code(), Some(0), "{args:?}");
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    for key in keys {
+        assert!(v.get(key).is_some(), "{args:?}: missing {key}");
+    }
+    v
 }
 
 #[test]
@@ -68,22 +81,20 @@ fn diverging_run_exits_1_with_time_and_hint() {
 
 #[test]
 fn simulate_json_has_the_spec_fields() {
-    let out = ladder(&["simulate", "--alpha", "-60", "--t-end", "1200", "--json"]);
-    assert_eq!(out.status.code(), Some(0));
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
-    for key in [
-        "alpha_deg",
-        "n",
-        "integrator",
-        "dt",
-        "steps",
-        "force_evals",
-        "wall_seconds",
-        "arrival_times",
-        "final_theta_deg",
-    ] {
-        assert!(v.get(key).is_some(), "missing {key}");
-    }
+    let v = json_with(
+        &["simulate", "--alpha", "-60", "--t-end", "1200", "--json"],
+        &[
+            "alpha_deg",
+            "n",
+            "integrator",
+            "dt",
+            "steps",
+            "force_evals",
+            "wall_seconds",
+            "arrival_times",
+            "final_theta_deg",
+        ],
+    );
     assert_eq!(v["alpha_deg"], -60.0);
     assert_eq!(v["integrator"], "symplectic-euler");
     assert_eq!(v["steps"], 120_000);
@@ -231,24 +242,10 @@ fn help_documents_integrator_auto() {
 
 #[test]
 fn theory_reports_the_spec_fields_and_rejects_bad_angles() {
-    let out = ladder(&["theory", "--alpha", "-60", "--json"]);
-    assert_eq!(out.status.code(), Some(0));
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
-    for key in [
-        "a",
-        "alpha_deg",
-        "u_min",
-        "barrier",
-        "kappa",
-        "winding_number",
-        "gap_omega_plus_q0",
-        "omega_max",
-        "zero_modes_clamped",
-        "zero_modes_free",
-        "self_stress_free",
-    ] {
-        assert!(v.get(key).is_some(), "missing {key}");
-    }
+    let v = json_with(
+        &["theory", "--alpha", "-60", "--json"],
+        &TheoryReport::SPEC_FIELDS,
+    );
     assert_eq!(v["winding_number"], 0);
     assert_eq!(v["alpha_deg"], -60.0);
     let table = ladder(&["theory"]);
