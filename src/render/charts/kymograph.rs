@@ -2,7 +2,7 @@
 //! with a diverging colour map and a colour bar.
 
 use super::ticks::short_number;
-use super::title::fit_title;
+use super::title::titled;
 use super::{Area, Chart, X_LABEL_AREA, Y_LABEL_AREA, check_size, font, plot_error, rgb};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
@@ -77,15 +77,7 @@ pub fn kymograph(k: &Kymograph<'_>, width: u32, height: u32) -> Result<Chart> {
     {
         let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
-        let mut root = root;
-        if let Some(t) = k.title {
-            let fitted = fit_title(t, width);
-            for line in &fitted.lines {
-                root = root
-                    .titled(line, font(fitted.size).into_font().color(&rgb(DARK)))
-                    .map_err(plot_error)?;
-            }
-        }
+        let root = titled(root, k.title, width)?;
         let (main, bar) = root.split_horizontally(width.saturating_sub(COLORBAR_W));
         draw_heatmap(&main, k)?;
         draw_colorbar(&bar, k.value_label)?;

@@ -24,6 +24,7 @@ pub use rasterize::{Chart, rasterize_svg, rasterize_tree};
 pub use spec::{Axis, ChartSpec, Legend, LineStyle, Marker, Scale, Series};
 pub use svg_text::typeset_svg_text;
 pub use ticks::{short_number, tick_label};
+pub(super) use title::titled;
 pub use title::{FittedTitle, fit_title};
 
 use super::style::FONT_FAMILY;
@@ -32,19 +33,20 @@ use crate::error::{Error, Result};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+/// A plotters drawing area on an SVG (shared with `render::cells`).
+pub(super) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 
-fn plot_error<E: std::fmt::Debug>(e: E) -> Error {
+pub(super) fn plot_error<E: std::fmt::Debug>(e: E) -> Error {
     Error::failed(format!("chart drawing failed: {e:?}"))
 }
 
 /// Plotters font size that gives a CSS em size of `px` in the SVG (plotters
 /// writes its size divided by 1.24).
-fn font(px: f32) -> (&'static str, f64) {
+pub(super) fn font(px: f32) -> (&'static str, f64) {
     (FONT_FAMILY, f64::from(px) * 1.24)
 }
 
-fn rgb(c: Rgb) -> RGBColor {
+pub(super) fn rgb(c: Rgb) -> RGBColor {
     RGBColor(c[0], c[1], c[2])
 }
 

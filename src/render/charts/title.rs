@@ -1,7 +1,10 @@
 //! Chart titles fitted to the chart's width: the title size when the title
 //! fits on one line, else wrapped onto two lines, shrunk as far as needed.
 
-use crate::render::style::{self, size};
+use super::{Area, font, plot_error, rgb};
+use crate::error::Result;
+use crate::render::style::{self, DARK, size};
+use plotters::prelude::*;
 
 /// Space kept free left and right of a title, in pixels.
 const SIDE: f32 = 8.0;
@@ -68,6 +71,25 @@ pub fn fit_title(title: &str, width: u32) -> FittedTitle {
         t.size *= 0.98;
     }
     t
+}
+
+/// The area of `root` below `title` (if any) drawn centred on top in
+/// [`fit_title`]'s lines for a chart `width` pixels wide.
+pub(in crate::render) fn titled<'a>(
+    root: Area<'a>,
+    title: Option<&str>,
+    width: u32,
+) -> Result<Area<'a>> {
+    let mut root = root;
+    if let Some(t) = title {
+        let fitted = fit_title(t, width);
+        for line in &fitted.lines {
+            root = root
+                .titled(line, font(fitted.size).into_font().color(&rgb(DARK)))
+                .map_err(plot_error)?;
+        }
+    }
+    Ok(root)
 }
 
 #[cfg(test)]
