@@ -11,6 +11,14 @@ fn ladder(args: &[&str]) -> Output {
         .expect("the ladder binary runs")
 }
 
+/// `ladder ARGS`, which must exit 0 (its stderr shown if not).
+fn ladder_ok(args: &[&str]) -> Output {
+    let out = ladder(args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{args:?}: {err}");
+    out
+}
+
 fn assert_bad_input(args: &[&str], needle: &str) {
     let out = ladder(args);
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -31,8 +39,7 @@ fn assert_bad_input(args: &[&str], needle: &str) {
 /// `ladder ARGS`'s one JSON object on stdout (exit 0), checked to have
 /// every one of `keys`.
 fn json_with(args: &[&str], keys: &[&str]) -> serde_json::Value {
-    let out = ladder(args);
-    assert_eq!(out.status.code(), Some(0), "{args:?}");
+    let out = ladder_ok(args);
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
     for key in keys {
         assert!(v.get(key).is_some(), "{args:?}: missing {key}");
@@ -167,13 +174,7 @@ fn movie_command_writes_gif_and_kymograph() {
     let args = [
         "movie", "4", "--out", d, "--frames", "5", "--size", "200x150",
     ];
-    let out = ladder(&args);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    ladder_ok(&args);
     let gif = std::fs::read(dir.join("movie-4.gif")).unwrap();
     assert!(dir.join("movie-4-kymograph.png").exists());
     assert_eq!(ladder(&args).status.code(), Some(0));
@@ -190,13 +191,7 @@ fn integrator_auto_is_verlet_at_the_measured_step_and_agrees_with_the_paper_sett
     let run = |extra: &[&str]| -> serde_json::Value {
         let mut args = vec!["simulate", "--alpha", "60", "--t-end", "2200", "--json"];
         args.extend_from_slice(extra);
-        let out = ladder(&args);
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        let out = ladder_ok(&args);
         serde_json::from_slice(&out.stdout).expect("one JSON object")
     };
     let auto = run(&["--integrator", "auto"]);
