@@ -3,23 +3,14 @@
 //! any mix of scenarios, more runs than lanes, runs ending at different
 //! times, stop rules, divergence, and every instruction set this CPU has.
 
+mod common;
+
+use common::lcg::Lcg;
 use jacobs_ladder::model::{Ladder, Params};
 use jacobs_ladder::sim::{
     self, Drive, IntegratorConfig, IntegratorKind, Isa, Protocol, Scenario, State, Stepping,
     StopRule, Trajectory, batch,
 };
-
-/// A small deterministic generator (64-bit LCG).
-struct Lcg(u64);
-impl Lcg {
-    fn uniform(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    }
-}
 
 fn kink(n: usize, alpha: f64, t_d: f64, t_end: f64) -> Scenario {
     let params = Params::paper(alpha).unwrap().with(n, 1.3, alpha).unwrap();

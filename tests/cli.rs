@@ -1,6 +1,7 @@
 //! The command-line contract (SPEC section 5): exit codes, one-line errors,
 //! `simulate --json` fields and the CSV file.
 
+use jacobs_ladder::theory::TheoryReport;
 use std::process::{Command, Output};
 
 fn ladder(args: &[&str]) -> Output {
@@ -8,6 +9,14 @@ fn ladder(args: &[&str]) -> Output {
         .args(args)
         .output()
         .expect("the ladder binary runs")
+}
+
+/// `ladder ARGS`, which must exit 0 (its stderr shown if not).
+fn ladder_ok(args: &[&str]) -> Output {
+    let out = ladder(args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{args:?}: {err}");
+    out
 }
 
 fn assert_bad_input(args: &[&str], needle: &str) {
@@ -25,6 +34,17 @@ fn assert_bad_input(args: &[&str], needle: &str) {
     );
     assert!(!stderr.contains("panicked"), "{stderr}");
     assert!(out.stdout.is_empty(), "{args:?}: no result on bad input");
+}
+
+/// `ladder ARGS`'s one JSON object on stdout (exit 0), checked to have
+/// every one of `keys`.
+fn json_with(args: &[&str], keys: &[&str]) -> serde_json::Value {
+    let out = ladder_ok(args);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    for key in keys {
+        assert!(v.get(key).is_some(), "{args:?}: missing {key}");
+    }
+    v
 }
 
 #[test]
@@ -68,22 +88,20 @@ fn diverging_run_exits_1_with_time_and_hint() {
 
 #[test]
 fn simulate_json_has_the_spec_fields() {
-    let out = ladder(&["simulate", "--alpha", "-60", "--t-end", "1200", "--json"]);
-    assert_eq!(out.status.code(), Some(0));
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
-    for key in [
-        "alpha_deg",
-        "n",
-        "integrator",
-        "dt",
-        "steps",
-        "force_evals",
-        "wall_seconds",
-        "arrival_times",
-        "final_theta_deg",
-    ] {
-        assert!(v.get(key).is_some(), "missing {key}");
-    }
+    let v = json_with(
+        &["simulate", "--alpha", "-60", "--t-end", "1200", "--json"],
+        &[
+            "alpha_deg",
+            "n",
+            "integrator",
+            "dt",
+            "steps",
+            "force_evals",
+            "wall_seconds",
+            "arrival_times",
+            "final_theta_deg",
+        ],
+    );
     assert_eq!(v["alpha_deg"], -60.0);
     assert_eq!(v["integrator"], "symplectic-euler");
     assert_eq!(v["steps"], 120_000);
@@ -159,13 +177,7 @@ fn movie_command_writes_gif_and_kymograph() {
     let args = [
         "movie", "4", "--out", d, "--frames", "5", "--size", "200x150",
     ];
-    let out = ladder(&args);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    ladder_ok(&args);
     let gif = std::fs::read(dir.join("movie-4.gif")).unwrap();
     assert!(dir.join("movie-4-kymograph.png").exists());
     assert_eq!(ladder(&args).status.code(), Some(0));
@@ -182,13 +194,7 @@ fn integrator_auto_is_verlet_at_the_measured_step_and_agrees_with_the_paper_sett
     let run = |extra: &[&str]| -> serde_json::Value {
         let mut args = vec!["simulate", "--alpha", "60", "--t-end", "2200", "--json"];
         args.extend_from_slice(extra);
-        let out = ladder(&args);
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        let out = ladder_ok(&args);
         serde_json::from_slice(&out.stdout).expect("one JSON object")
     };
     let auto = run(&["--integrator", "auto"]);
@@ -234,24 +240,10 @@ fn help_documents_integrator_auto() {
 
 #[test]
 fn theory_reports_the_spec_fields_and_rejects_bad_angles() {
-    let out = ladder(&["theory", "--alpha", "-60", "--json"]);
-    assert_eq!(out.status.code(), Some(0));
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
-    for key in [
-        "a",
-        "alpha_deg",
-        "u_min",
-        "barrier",
-        "kappa",
-        "winding_number",
-        "gap_omega_plus_q0",
-        "omega_max",
-        "zero_modes_clamped",
-        "zero_modes_free",
-        "self_stress_free",
-    ] {
-        assert!(v.get(key).is_some(), "missing {key}");
-    }
+    let v = json_with(
+        &["theory", "--alpha", "-60", "--json"],
+        &TheoryReport::SPEC_FIELDS,
+    );
     assert_eq!(v["winding_number"], 0);
     assert_eq!(v["alpha_deg"], -60.0);
     let table = ladder(&["theory"]);

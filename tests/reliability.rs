@@ -38,6 +38,14 @@ fn wait_bounded(child: &mut Child, what: &str) -> ExitStatus {
     }
 }
 
+/// Reads `child`'s stderr to its end, then waits for it (bounded).
+fn stderr_and_wait(child: &mut Child, what: &str) -> (String, ExitStatus) {
+    let mut err = String::new();
+    let mut pipe = child.stderr.take().expect("stderr is piped");
+    pipe.read_to_string(&mut err).unwrap();
+    (err, wait_bounded(child, what))
+}
+
 /// Runs `ladder ARGS` with the watchdog; stdout and stderr captured.
 fn ladder(args: &[&str]) -> Output {
     let mut child = ladder_cmd(args)
@@ -272,14 +280,7 @@ fn stdout_that_cannot_be_written_exits_1() {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    let mut err = String::new();
-    child
-        .stderr
-        .take()
-        .unwrap()
-        .read_to_string(&mut err)
-        .unwrap();
-    let status = wait_bounded(&mut child, "list > /dev/full");
+    let (err, status) = stderr_and_wait(&mut child, "list > /dev/full");
     assert_eq!(status.code(), Some(1), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(
@@ -321,14 +322,7 @@ fn a_closed_pipe_ends_quietly_with_success() {
     stdout.read_exact(&mut first).unwrap();
     assert_eq!(&first, b"{");
     drop(stdout);
-    let mut err = String::new();
-    child
-        .stderr
-        .take()
-        .unwrap()
-        .read_to_string(&mut err)
-        .unwrap();
-    let status = wait_bounded(&mut child, "simulate --json | head -c1");
+    let (err, status) = stderr_and_wait(&mut child, "simulate --json | head -c1");
     assert_eq!(status.code(), Some(0), "{err}");
     assert!(err.is_empty(), "quietly: {err}");
 }
@@ -517,14 +511,7 @@ fn a_full_disk_is_a_failed_run() {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    let mut err = String::new();
-    child
-        .stderr
-        .take()
-        .unwrap()
-        .read_to_string(&mut err)
-        .unwrap();
-    let status = wait_bounded(&mut child, "ulimit -f");
+    let (err, status) = stderr_and_wait(&mut child, "ulimit -f");
     assert_eq!(status.code(), Some(1), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("big.csv"), "{err}");

@@ -288,3 +288,56 @@ fn failure_half_way_leaves_no_file() {
 fn tempdir(name: &str) -> common::tempdir::TempDir {
     common::tempdir::TempDir::new(&format!("render-{name}"))
 }
+
+/// The `<text>` elements of a chart's SVG: left and right ends in pixels
+/// (from `x`, `text-anchor` and `font-size`) and the content.
+fn svg_text_extents(svg: &str) -> Vec<(f32, f32, String)> {
+    let attr = |tag: &str, name: &str| {
+        let key = format!(" {name}=\"");
+        let start = tag.find(&key)? + key.len();
+        Some(tag[start..start + tag[start..].find('"')?].to_string())
+    };
+    let mut out = Vec::new();
+    for piece in svg.split("<text").skip(1) {
+        let (tag, rest) = piece.split_once('>').unwrap();
+        let content = rest.split("</text>").next().unwrap().trim().to_string();
+        let x: f32 = attr(tag, "x").unwrap().parse().unwrap();
+        let size: f32 = attr(tag, "font-size").unwrap().parse().unwrap();
+        let w = style::text_width(&content, size);
+        let left = match attr(tag, "text-anchor").as_deref() {
+            Some("middle") => x - w / 2.0,
+            Some("end") => x - w,
+            _ => x,
+        };
+        out.push((left, left + w, content));
+    }
+    out
+}
+
+/// Movie 3's long title fits the kymograph's width (it was clipped at
+/// 480 px, the kymograph's smallest movie size), also when narrow.
+#[test]
+fn kymograph_title_fits_the_width() {
+    use jacobs_ladder::catalog;
+    use jacobs_ladder::scene::{Kind, describe};
+    let scene = &catalog::find(Kind::Movie, "3").unwrap().scene;
+    let title = format!("{}: sin θₙ", describe::title(scene));
+    let (t, v) = (vec![0.0, 1.0], vec![0.5; 20]);
+    let mut k = Kymograph::new(&t, &v, 10);
+    k.title = Some(&title);
+    for (w, h) in [(480, 360), (320, 240), (200, 150), (60, 60)] {
+        let chart = charts::kymograph(&k, w, h).unwrap();
+        // The title's lines are drawn first, above everything else.
+        let texts = svg_text_extents(&chart.svg);
+        let lines = (1..=3)
+            .map(|n| &texts[..n])
+            .find(|l| l.iter().map(|t| t.2.as_str()).collect::<Vec<_>>().join(" ") == title)
+            .unwrap_or_else(|| panic!("{w}x{h}: the title's lines come first: {texts:?}"));
+        for (left, right, content) in lines {
+            assert!(
+                *left >= 0.0 && *right <= w as f32,
+                "{w}x{h}: title line {content:?} spans {left:.1}..{right:.1}"
+            );
+        }
+    }
+}

@@ -3,12 +3,14 @@
 //! files mutated at random never make the parser panic and always give
 //! exit 0 or 2.
 
+mod common;
+
+use common::fuzz;
+use common::tempdir::TempDir;
 use jacobs_ladder::catalog;
 use jacobs_ladder::error::Error;
 use jacobs_ladder::scene::{self, file};
 use proptest::prelude::*;
-use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
-use std::path::PathBuf;
 use std::process::Command;
 
 fn ladder(args: &[&str]) -> std::process::Output {
@@ -16,29 +18,6 @@ fn ladder(args: &[&str]) -> std::process::Output {
         .args(args)
         .output()
         .expect("the ladder binary runs")
-}
-
-/// A temporary folder removed when dropped.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(tag: &str) -> Self {
-        let d = std::env::temp_dir().join(format!("ladder-{tag}-{}", std::process::id()));
-        std::fs::create_dir_all(&d).unwrap();
-        Self(d)
-    }
-
-    fn file(&self, name: &str, text: &str) -> String {
-        let p = self.0.join(name);
-        std::fs::write(&p, text).unwrap();
-        p.to_str().unwrap().to_string()
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
 }
 
 /// The ```toml blocks of a Markdown file.
@@ -108,7 +87,7 @@ fn a_bad_file_is_one_line_with_file_line_column_and_key() {
     let dir = TempDir::new("bad-scenes");
     for (k, (text, want)) in BAD_FILES.iter().enumerate() {
         let path = dir.file(&format!("bad{k}.toml"), text);
-        let out = ladder(&["render", &path, "--out", dir.0.to_str().unwrap()]);
+        let out = ladder(&["render", &path, "--out", dir.path().to_str().unwrap()]);
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{text}: {stderr}");
         assert_eq!(stderr.lines().count(), 1, "{text}: {stderr}");
@@ -118,13 +97,13 @@ fn a_bad_file_is_one_line_with_file_line_column_and_key() {
             "{text}: want {expected}, got {stderr}"
         );
     }
-    let written: Vec<_> = std::fs::read_dir(&dir.0)
+    let written: Vec<_> = std::fs::read_dir(dir.path())
         .unwrap()
         .filter_map(|e| e.ok())
         .filter(|e| !e.file_name().to_string_lossy().ends_with(".toml"))
         .collect();
     assert!(written.is_empty(), "bad input wrote {written:?}");
-    let missing = dir.0.join("missing.toml");
+    let missing = dir.join("missing.toml");
     let out = ladder(&["render", missing.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no such file"));
@@ -134,12 +113,18 @@ fn a_bad_file_is_one_line_with_file_line_column_and_key() {
 fn render_check_validates_without_writing() {
     let dir = TempDir::new("check-scenes");
     let path = dir.file("k70.toml", "[model]\nalpha = 70\nn = 20\n");
-    let out = ladder(&["render", "--check", &path, "--out", dir.0.to_str().unwrap()]);
+    let out = ladder(&[
+        "render",
+        "--check",
+        &path,
+        "--out",
+        dir.path().to_str().unwrap(),
+    ]);
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("movie k70 (1 run)"), "{text}");
     assert_eq!(
-        std::fs::read_dir(&dir.0).unwrap().count(),
+        std::fs::read_dir(dir.path()).unwrap().count(),
         1,
         "nothing written"
     );
@@ -217,17 +202,7 @@ fn mutation_strategy() -> impl Strategy<Value = (usize, Vec<(u8, usize, usize)>)
 /// error is bad input (exit 2).
 #[test]
 fn mutated_scene_files_never_panic_the_parser() {
-    let cases = std::env::var("LADDER_FUZZ_CASES")
-        .ok()
-        .and_then(|c| c.parse().ok())
-        .unwrap_or(10_000);
-    let config = Config {
-        cases,
-        failure_persistence: None,
-        ..Config::default()
-    };
-    let rng = TestRng::from_seed(RngAlgorithm::ChaCha, &[7; 32]);
-    let mut runner = TestRunner::new_with_rng(config, rng);
+    let mut runner = fuzz::runner(fuzz::cases(10_000), 7);
     let ok = std::cell::Cell::new(0u32);
     let bad = std::cell::Cell::new(0u32);
     runner
@@ -254,14 +229,8 @@ fn mutated_scene_files_never_panic_the_parser() {
 #[test]
 fn mutated_scene_files_exit_0_or_2() {
     let dir = TempDir::new("mutated-scenes");
-    let config = Config {
-        cases: 1000,
-        failure_persistence: None,
-        ..Config::default()
-    };
-    let rng = TestRng::from_seed(RngAlgorithm::ChaCha, &[11; 32]);
-    let mut runner = TestRunner::new_with_rng(config, rng);
-    let path = dir.0.join("m.toml");
+    let mut runner = fuzz::runner(1000, 11);
+    let path = dir.join("m.toml");
     let p = path.to_str().unwrap().to_string();
     runner
         .run(&mutation_strategy(), |(file, ops)| {

@@ -15,12 +15,14 @@
 //! byte) another sequence (the issue asks for a run of at least 10
 //! minutes: about 3 000 000 cases).
 
+mod common;
+
+use common::fuzz;
 use jacobs_ladder::error::Error;
 use jacobs_ladder::limits::Limits;
 use jacobs_ladder::scene::{Fidelity, file};
 use jacobs_ladder::sim;
 use proptest::prelude::*;
-use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
 /// Numbers a hostile user types, and a few things that are not numbers.
 const NUMBERS: &[&str] = &[
@@ -327,22 +329,12 @@ fn check_one(text: &str, tally: &mut Tally) -> Result<(), TestCaseError> {
 
 #[test]
 fn ten_thousand_generated_scene_files_parse_or_are_refused_in_one_line() {
-    let cases = std::env::var("LADDER_FUZZ_CASES")
-        .ok()
-        .and_then(|c| c.parse().ok())
-        .unwrap_or(10_000);
-    let config = Config {
-        cases,
-        failure_persistence: None,
-        ..Config::default()
-    };
     // LADDER_FUZZ_SEED=K (a byte) for a long run over other files.
     let seed = std::env::var("LADDER_FUZZ_SEED")
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(15u8);
-    let rng = TestRng::from_seed(RngAlgorithm::ChaCha, &[seed; 32]);
-    let mut runner = TestRunner::new_with_rng(config, rng);
+    let mut runner = fuzz::runner(fuzz::cases(10_000), seed);
     let tally = std::cell::RefCell::new(Tally::default());
     let strategy = prop::collection::vec(any::<usize>(), 120);
     runner

@@ -37,6 +37,18 @@ fn catalogue_runs() -> Vec<(String, Scene)> {
     out
 }
 
+/// `what`'s problems in one line, if `auto` does not match the reference
+/// on `scene`.
+fn failure(what: &str, scene: &Scene) -> Option<String> {
+    let (bad, _, _) = compare(what, scene);
+    (!bad.is_empty()).then(|| format!("{what}: {}", bad.join("; ")))
+}
+
+/// Fails with every run's problems, one a line, if there are any.
+fn assert_all_pass(failures: &[String]) {
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
 /// Compares `auto` with the reference on `scene`; returns the problems and
 /// (largest arrival error, auto's estimate).
 fn compare(what: &str, scene: &Scene) -> (Vec<String>, f64, f64) {
@@ -91,17 +103,9 @@ fn every_catalogue_run_matches_the_reference_within_its_tolerance() {
     assert!(runs.len() >= 10, "found {} runs", runs.len());
     let failures: Vec<String> = runs
         .par_iter()
-        .map(|(what, scene)| {
-            let (bad, _, _) = compare(what, scene);
-            if bad.is_empty() {
-                String::new()
-            } else {
-                format!("{what}: {}", bad.join("; "))
-            }
-        })
-        .filter(|s| !s.is_empty())
+        .filter_map(|(what, scene)| failure(what, scene))
         .collect();
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert_all_pass(&failures);
 }
 
 /// splitmix64: a fixed sequence of random numbers without a dependency.
@@ -149,22 +153,16 @@ fn auto_matches_the_reference_on_20_random_scenes() {
     let failures: Vec<String> = scenes
         .par_iter()
         .enumerate()
-        .map(|(k, s)| {
+        .filter_map(|(k, s)| {
             let m = &s.model;
             let what = format!(
                 "random scene {k} (α = {:.2}°, N = {}, b = {:.3}, γ = {:.4}, G = {:.2e}, T_d = {:.0})",
                 m.alpha, m.n, m.b, m.gamma, m.gravity, s.drive.flips[0].duration
             );
-            let (bad, _, _) = compare(&what, s);
-            if bad.is_empty() {
-                String::new()
-            } else {
-                format!("{what}: {}", bad.join("; "))
-            }
+            failure(&what, s)
         })
-        .filter(|s| !s.is_empty())
         .collect();
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert_all_pass(&failures);
 }
 
 /// Near α = 90° whole groups of blocks turn the other way round, through

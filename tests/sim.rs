@@ -1,23 +1,14 @@
 //! Simulation core: forces, ground states, energy decay, convergence orders
 //! and the paper's qualitative results (SPEC section 2).
 
+mod common;
+
+use common::lcg::Lcg;
 use jacobs_ladder::model::{Ladder, Params};
 use jacobs_ladder::sim::{
     self, Drive, IntegratorConfig, IntegratorKind, Isa, Protocol, Scenario, State, Stepping,
     Trajectory,
 };
-
-/// A small deterministic generator (64-bit LCG) for random configurations.
-struct Lcg(u64);
-impl Lcg {
-    fn uniform(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    }
-}
 
 fn perturbed(q: &[f64], rng: &mut Lcg, size: f64) -> Vec<f64> {
     q.iter().map(|x| x + size * rng.uniform()).collect()

@@ -31,10 +31,8 @@ import time
 import numpy as np
 from numba import njit
 
-# Units and the paper's parameters (SPEC section 1).
-S = 1.0
-R = 0.5 * S
-M = 1.0
+from ladder_model import M, R, ground_state, rest_a
+
 
 
 @njit(cache=True)
@@ -60,20 +58,11 @@ def simulate(n, alpha_deg, b, gamma, gravity, inertia, t_d, t_end, dt):
     """One kink (alpha > 0) or antikink run; returns (arrivals, steps,
     final theta)."""
     alpha = alpha_deg * math.pi / 180.0
-    a = math.sqrt(b * b + 4 * S * S * math.cos(alpha) ** 2)
-    x = np.zeros(n)
-    y = np.zeros(n)
-    th = np.full(n, alpha)
+    a = rest_a(b, alpha)
+    x, y, th, par = ground_state(n, alpha, b)
     vx = np.zeros(n)
     vy = np.zeros(n)
     vt = np.zeros(n)
-    par = np.empty(n)
-    dy = S * math.cos(abs(alpha))
-    for i in range(n):
-        par[i] = -1.0 if i % 2 == 0 else 1.0
-        x[i] = i * b
-        if i > 0:
-            y[i] = y[i - 1] + par[i - 1] * dy
     sn = np.empty(n)
     cs = np.empty(n)
     fx = np.zeros(n)

@@ -7,7 +7,7 @@ per alpha, spread over every core with multiprocessing. The peer of
     python3 benches/peers/sweep_numba.py [--alpha START:STOP:STEP] [--n N]
         [--t-end T] [--dt DT] [--processes P] [--out FILE.csv]
 
-Model of SPEC section 1: blocks of length s = 1, mass m = 1, inertia I,
+Model of SPEC section 1 (ladder_model.py): blocks of length s = 1, mass m = 1, inertia I,
 A springs (rest length a = sqrt(b^2 + 4 cos^2 alpha)) between the A nodes
 X_n - (s/2) t_n and B springs (rest length b) between the B nodes
 X_n + (s/2) t_n, t_n = (sin theta_n, (-1)^n cos theta_n); gravity G pulls
@@ -25,30 +25,21 @@ import time
 import numpy as np
 from numba import njit
 
+from ladder_model import R, ground_state, rest_a
+
 
 @njit(cache=True)
 def simulate(alpha_deg, n, b, gamma, gravity, inertia, t_d, t_end, dt):
     alpha = math.radians(alpha_deg)
-    r = 0.5
-    a = math.sqrt(b * b + 4.0 * math.cos(alpha) ** 2)
-    x = np.zeros(n)
-    y = np.zeros(n)
-    th = np.zeros(n)
+    r = R
+    a = rest_a(b, alpha)
+    x, y, th, par = ground_state(n, alpha, b)
     vx = np.zeros(n)
     vy = np.zeros(n)
     vt = np.zeros(n)
     fx = np.zeros(n)
     fy = np.zeros(n)
     ft = np.zeros(n)
-    par = np.zeros(n)
-    for i in range(n):
-        par[i] = -1.0 if i % 2 == 0 else 1.0  # (-1)^n, n = i + 1
-    dy = math.cos(abs(alpha))
-    for i in range(n):
-        x[i] = i * b
-        th[i] = alpha
-        if i > 0:
-            y[i] = y[i - 1] + par[i - 1] * dy
     s0 = np.zeros(n)
     for i in range(n):
         s0[i] = 1.0 if math.sin(th[i]) >= 0.0 else -1.0

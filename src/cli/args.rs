@@ -144,6 +144,14 @@ pub struct RunArgs {
     /// Time step of a fixed-step integrator (first trial step for dopri5) [default: 0.01]
     #[arg(long, value_name = "DT")]
     pub dt: Option<f64>,
+    #[command(flatten)]
+    pub tol: ToleranceArgs,
+}
+
+/// The adaptive integrators' tolerances, under the heading of the struct
+/// that flattens them ("Run").
+#[derive(Args, Debug, Clone, Default)]
+pub struct ToleranceArgs {
     /// Error tolerance of dopri5 (relative and absolute) [default: 1e-6]
     #[arg(long, value_name = "R")]
     pub rtol: Option<f64>,
@@ -175,12 +183,6 @@ pub struct SimulateArgs {
     /// Time step (first trial step for dopri5); auto picks its own
     #[arg(long, value_name = "DT", help_heading = "Run")]
     pub dt: Option<f64>,
-    /// Error tolerance of dopri5 (relative and absolute) [default: 1e-6]
-    #[arg(long, value_name = "R", help_heading = "Run")]
-    pub rtol: Option<f64>,
-    /// Largest arrival-time error auto accepts, in tau [default: 0.1]
-    #[arg(long, value_name = "T", help_heading = "Run")]
-    pub tolerance: Option<f64>,
     /// Print one JSON object instead of a table
     #[arg(long)]
     pub json: bool,
@@ -197,6 +199,10 @@ pub struct SimulateArgs {
     /// bit for bit; only the time differs
     #[arg(long, value_enum, default_value_t = KernelArg::Fastest, value_name = "KERNEL")]
     pub kernel: KernelArg,
+    /// --rtol and --tolerance, last: the heading they set ("Run") would
+    /// otherwise carry over to the flags after them.
+    #[command(flatten, next_help_heading = "Run")]
+    pub tol: ToleranceArgs,
 }
 
 /// `simulate --kernel`.
@@ -460,11 +466,16 @@ pub struct SweepArgs {
     /// grid, kept in OUT/shards/; then `ladder sweep gather OUT`
     #[arg(long, value_name = "K/N")]
     pub shard: Option<String>,
-    /// Largest number of runs accepted
-    #[arg(long, value_name = "N", default_value_t = crate::scene::sweep::DEFAULT_MAX_RUNS)]
-    pub max_runs: usize,
     #[command(flatten)]
     pub figure_format: FigureFormat,
+    /// Largest number of runs accepted
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = crate::scene::sweep::DEFAULT_MAX_RUNS,
+        help_heading = "Limits (docs/limits.md)"
+    )]
+    pub max_runs: usize,
 }
 
 #[derive(Subcommand, Debug)]

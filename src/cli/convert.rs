@@ -63,8 +63,8 @@ impl RunArgs {
         self.t_end.is_some()
             || self.integrator.is_some()
             || self.dt.is_some()
-            || self.rtol.is_some()
-            || self.tolerance.is_some()
+            || self.tol.rtol.is_some()
+            || self.tol.tolerance.is_some()
     }
 
     fn apply(&self, scene: &mut Scene) -> Result<()> {
@@ -74,8 +74,8 @@ impl RunArgs {
         }
         r.t_end = self.t_end.unwrap_or(r.t_end);
         r.dt = self.dt.or(r.dt);
-        r.rtol = self.rtol.or(r.rtol);
-        r.tolerance = self.tolerance.unwrap_or(r.tolerance);
+        r.rtol = self.tol.rtol.or(r.rtol);
+        r.tolerance = self.tol.tolerance.unwrap_or(r.tolerance);
         Ok(())
     }
 }

@@ -323,8 +323,7 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         t_end: Some(args.t_end),
         integrator: Some(args.integrator.clone()),
         dt: args.dt,
-        rtol: args.rtol,
-        tolerance: args.tolerance,
+        tol: args.tol.clone(),
     };
     let base = Scene {
         output: scene::OutputSpec::Data,

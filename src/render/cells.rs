@@ -5,8 +5,8 @@
 //! get equal cells), ticks name the values. Drawn like the other charts:
 //! plotters writes an SVG with the bundled font, resvg rasterises it.
 
-use super::charts::{Chart, rasterize_svg, short_number};
-use super::style::{self, DARK, FONT_FAMILY, size};
+use super::charts::{Area, Chart, font, plot_error, rasterize_svg, rgb, short_number, titled};
+use super::style::{self, DARK, size};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use plotters::prelude::*;
@@ -47,18 +47,6 @@ pub struct CellChart {
 /// Width of the legend column, pixels.
 const LEGEND_W: u32 = 190;
 
-fn font(px: f32) -> (&'static str, f64) {
-    (FONT_FAMILY, f64::from(px) * 1.24)
-}
-
-fn rgb(c: Rgb) -> RGBColor {
-    RGBColor(c[0], c[1], c[2])
-}
-
-fn plot_error<E: std::fmt::Debug>(e: E) -> Error {
-    Error::failed(format!("chart drawing failed: {e:?}"))
-}
-
 /// Draws `c` as a `width × height` chart.
 pub fn cell_chart(c: &CellChart, width: u32, height: u32) -> Result<Chart> {
     if !((200..=8192).contains(&width) && (120..=8192).contains(&height)) {
@@ -74,12 +62,7 @@ pub fn cell_chart(c: &CellChart, width: u32, height: u32) -> Result<Chart> {
     {
         let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
-        let root = match &c.title {
-            Some(t) => root
-                .titled(t, font(size::TITLE).into_font().color(&rgb(DARK)))
-                .map_err(plot_error)?,
-            None => root,
-        };
+        let root = titled(root, c.title.as_deref(), width)?;
         let (main, side) = root.split_horizontally(width.saturating_sub(LEGEND_W));
         draw_cells(&main, c)?;
         draw_legend(&side, c)?;
@@ -89,8 +72,6 @@ pub fn cell_chart(c: &CellChart, width: u32, height: u32) -> Result<Chart> {
     let pixmap = rasterize_svg(&svg, width, height)?;
     Ok(Chart::new(pixmap, svg))
 }
-
-type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
 
 fn draw_cells(area: &Area<'_>, c: &CellChart) -> Result<()> {
     let (nx, ny) = (c.xs.len() as f64, c.ys.len() as f64);

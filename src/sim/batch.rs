@@ -126,11 +126,7 @@ fn batch_isa(stepping: Stepping) -> Option<Isa> {
     if !cfg!(target_arch = "x86_64") {
         return None;
     }
-    match stepping {
-        Stepping::Fastest => Isa::detect(),
-        Stepping::Fused(isa) => isa.available().then_some(isa),
-        Stepping::Portable => None,
-    }
+    stepping.isa()
 }
 
 /// The runs of one N and what every worker shares.

@@ -28,11 +28,7 @@ impl ChainEuler {
     /// The stepper `stepping` asks for, for `n` blocks, if this CPU allows
     /// it and N is beyond the fused kernel's registers.
     pub fn new(n: usize, stepping: Stepping) -> Option<Self> {
-        let isa = match stepping {
-            Stepping::Fastest => Isa::detect()?,
-            Stepping::Fused(isa) => Some(isa).filter(|i| i.available())?,
-            Stepping::Portable => return None,
-        };
+        let isa = stepping.isa()?;
         if n <= MAX_BLOCKS {
             return None;
         }

@@ -109,6 +109,18 @@ pub enum Stepping {
     Portable,
 }
 
+impl Stepping {
+    /// The instruction set a kernel would use: the best this CPU has for
+    /// `Fastest`, the one asked for if this CPU has it, else `None`.
+    pub fn isa(self) -> Option<Isa> {
+        match self {
+            Stepping::Fastest => Isa::detect(),
+            Stepping::Fused(isa) => isa.available().then_some(isa),
+            Stepping::Portable => None,
+        }
+    }
+}
+
 /// The fused stepper for one ladder length; exists only where the CPU has
 /// AVX2 and N ≤ [`MAX_BLOCKS`].
 #[derive(Debug, Clone, Copy)]
@@ -121,11 +133,7 @@ impl FusedEuler {
     /// The stepper `stepping` asks for, for `n` blocks, if this CPU and this
     /// N allow it.
     pub fn new(n: usize, stepping: Stepping) -> Option<Self> {
-        let isa = match stepping {
-            Stepping::Fastest => Isa::detect()?,
-            Stepping::Fused(isa) => Some(isa).filter(|i| i.available())?,
-            Stepping::Portable => return None,
-        };
+        let isa = stepping.isa()?;
         (2..=MAX_BLOCKS).contains(&n).then(|| Self {
             chunks: n.div_ceil(4),
             isa,

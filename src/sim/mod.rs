@@ -6,10 +6,11 @@ pub mod batch;
 pub mod chain;
 pub mod fused;
 pub mod integrators;
+#[cfg(target_arch = "x86_64")]
+mod lanes;
 pub mod observables;
 pub mod protocol;
 pub mod rhs;
-#[cfg(target_arch = "x86_64")]
 mod simd;
 
 pub use fused::{Isa, Stepping};

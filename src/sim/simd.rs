@@ -78,14 +78,20 @@ pub trait Simd:
         (self | sign) ^ sign
     }
 
+    /// The lanes in an array of 16, zeros past `LANES`.
+    #[inline(always)]
+    fn to_array(self) -> [f64; 16] {
+        let mut out = [0.0; 16];
+        // SAFETY: LANES ≤ 16.
+        unsafe { self.store(out.as_mut_ptr()) };
+        out
+    }
+
     /// Lane `i`.
     #[cfg(test)]
     #[inline(always)]
     fn lane(self, i: usize) -> f64 {
-        let mut out = [0.0; 16];
-        // SAFETY: LANES ≤ 16.
-        unsafe { self.store(out.as_mut_ptr()) };
-        out[i]
+        self.to_array()[i]
     }
 
     /// Lanes from `f(l)`.
@@ -498,9 +504,33 @@ fn library_half_sin_cos<S: Simd>(x: S) -> (S, S) {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::sim::Isa;
+
+    /// Angles to test sine and cosine at: a dense sweep, multiples of π/2
+    /// and just past them, signed zeros, large, infinite and NaN.
+    pub(crate) fn sin_cos_inputs() -> Vec<f64> {
+        let quarter = std::f64::consts::FRAC_PI_2;
+        let mut xs: Vec<f64> = (-4000..4000).map(|k| k as f64 * 0.0123 + 1e-3).collect();
+        xs.extend((-8..8).flat_map(|k| [k as f64 * quarter, k as f64 * quarter + 1e-12]));
+        xs.extend([
+            0.0,
+            -0.0,
+            823_549.0,
+            823_551.0,
+            -3e7,
+            1e300,
+            f64::INFINITY,
+            f64::NAN,
+        ]);
+        xs
+    }
+
+    /// The same f64, or both NaN.
+    pub(crate) fn same(a: f64, b: f64) -> bool {
+        a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan())
+    }
 
     fn check<S: Simd>(xs: &[f64], f: impl Fn(&[f64]) -> (Vec<f64>, Vec<f64>)) {
         let mut xs = xs.to_vec();
@@ -510,8 +540,6 @@ mod tests {
             let (mut ws, mut wc) = (vec![0.0; chunk.len()], vec![0.0; chunk.len()]);
             trig::sin_cos_slice(chunk, &mut ws, &mut wc);
             for i in 0..chunk.len() {
-                let same =
-                    |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
                 assert!(
                     same(s[i], R * ws[i]) && same(c[i], R * wc[i]),
                     "x = {}",
@@ -539,19 +567,7 @@ mod tests {
 
     #[test]
     fn half_sin_cos_is_half_the_portable_sin_cos_bit_for_bit() {
-        let quarter = std::f64::consts::FRAC_PI_2;
-        let mut xs: Vec<f64> = (-4000..4000).map(|k| k as f64 * 0.0123 + 1e-3).collect();
-        xs.extend((-8..8).flat_map(|k| [k as f64 * quarter, k as f64 * quarter + 1e-12]));
-        xs.extend([
-            0.0,
-            -0.0,
-            823_549.0,
-            823_551.0,
-            -3e7,
-            1e300,
-            f64::INFINITY,
-            f64::NAN,
-        ]);
+        let xs = sin_cos_inputs();
         if Isa::Avx2.available() {
             // SAFETY: the CPU has AVX2, checked above.
             check::<Pack<F64x4, 2>>(&xs, |x| unsafe { run_avx2(x) });

@@ -71,6 +71,21 @@ pub struct TheoryReport {
 pub const MAX_THEORY_BLOCKS: usize = crate::limits::MAX_THEORY_BLOCKS;
 
 impl TheoryReport {
+    /// The JSON fields SPEC section 7 requires of `ladder theory --json`.
+    pub const SPEC_FIELDS: [&'static str; 11] = [
+        "a",
+        "alpha_deg",
+        "u_min",
+        "barrier",
+        "kappa",
+        "winding_number",
+        "gap_omega_plus_q0",
+        "omega_max",
+        "zero_modes_clamped",
+        "zero_modes_free",
+        "self_stress_free",
+    ];
+
     /// Every quantity for `params` (0 ≤ |α| ≤ 90°, 2 ≤ N ≤ `MAX_THEORY_BLOCKS`).
     pub fn compute(params: &Params) -> Result<Self> {
         let p = params.validated()?;
@@ -255,19 +270,7 @@ mod tests {
     fn report_serialises_with_the_spec_fields() {
         let r = TheoryReport::compute(&Params::paper(60.0).unwrap()).unwrap();
         let v = serde_json::to_value(&r).unwrap();
-        for key in [
-            "a",
-            "alpha_deg",
-            "u_min",
-            "barrier",
-            "kappa",
-            "winding_number",
-            "gap_omega_plus_q0",
-            "omega_max",
-            "zero_modes_clamped",
-            "zero_modes_free",
-            "self_stress_free",
-        ] {
+        for key in TheoryReport::SPEC_FIELDS {
             assert!(v.get(key).is_some(), "{key}");
         }
         assert!(r.to_table().contains("winding number"));

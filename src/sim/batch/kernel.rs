@@ -16,6 +16,7 @@
 //! last step of a call may land a lane on its stop time (`lands`), as the
 //! portable plan's last step of an interval does.
 
+use super::super::lanes::{Blocks, StepConsts, pin};
 use super::super::simd::{F64x4, F64x8, Pack, Simd, half_sin_cos};
 use crate::sim::Isa;
 
@@ -197,14 +198,7 @@ unsafe fn run_avx512(state: &mut LaneState, count: u64, rec: &mut dyn Recorder) 
 
 /// The lanes' constants of one call, in registers.
 struct Consts<S> {
-    a_rest: S,
-    b_rest: S,
-    minus_g: S,
-    h: S,
-    decay_xy: S,
-    kick_xy: S,
-    decay_theta: S,
-    kick_theta: S,
+    step: StepConsts<S>,
     driven: S,
     clamp_x: S,
     clamp_y: S,
@@ -212,14 +206,7 @@ struct Consts<S> {
 
 /// Raw pointers to the lanes' arrays.
 struct Mem {
-    x: *mut f64,
-    y: *mut f64,
-    theta: *mut f64,
-    vx: *mut f64,
-    vy: *mut f64,
-    vtheta: *mut f64,
-    window_lo: *mut f64,
-    window_hi: *mut f64,
+    blocks: Blocks,
     ax: *mut f64,
     ay: *mut f64,
     atheta: *mut f64,
@@ -273,14 +260,16 @@ unsafe fn body<S: Simd>(state: &mut LaneState, count: u64, rec: &mut dyn Recorde
     let n = state.n;
     let p = &state.params;
     let c = Consts::<S> {
-        a_rest: param!(p, a_rest),
-        b_rest: param!(p, b_rest),
-        minus_g: param!(p, minus_g),
-        h: param!(p, h),
-        decay_xy: param!(p, decay_xy),
-        kick_xy: param!(p, kick_xy),
-        decay_theta: param!(p, decay_theta),
-        kick_theta: param!(p, kick_theta),
+        step: StepConsts {
+            a_rest: param!(p, a_rest),
+            b_rest: param!(p, b_rest),
+            minus_g: param!(p, minus_g),
+            h: param!(p, h),
+            decay_xy: param!(p, decay_xy),
+            kick_xy: param!(p, kick_xy),
+            decay_theta: param!(p, decay_theta),
+            kick_theta: param!(p, kick_theta),
+        },
         driven: param!(p, driven),
         clamp_x: param!(p, clamp_x),
         clamp_y: param!(p, clamp_y),
@@ -290,14 +279,16 @@ unsafe fn body<S: Simd>(state: &mut LaneState, count: u64, rec: &mut dyn Recorde
     let piece = PieceVecs::<S>::load(&p.piece);
     let mut t = param!(p, t);
     let mem = Mem {
-        x: state.x.as_mut_ptr(),
-        y: state.y.as_mut_ptr(),
-        theta: state.theta.as_mut_ptr(),
-        vx: state.vx.as_mut_ptr(),
-        vy: state.vy.as_mut_ptr(),
-        vtheta: state.vtheta.as_mut_ptr(),
-        window_lo: state.window_lo.as_mut_ptr(),
-        window_hi: state.window_hi.as_mut_ptr(),
+        blocks: Blocks::new([
+            &mut state.x,
+            &mut state.y,
+            &mut state.theta,
+            &mut state.vx,
+            &mut state.vy,
+            &mut state.vtheta,
+            &mut state.window_lo,
+            &mut state.window_hi,
+        ]),
         ax: state.ax.as_mut_ptr(),
         ay: state.ay.as_mut_ptr(),
         atheta: state.atheta.as_mut_ptr(),
@@ -317,7 +308,7 @@ unsafe fn body<S: Simd>(state: &mut LaneState, count: u64, rec: &mut dyn Recorde
         for k in 0..count {
             // Block 1 where the forces are evaluated (t + h) and where the
             // step ends (t_new, which differs only on landing).
-            let t_h = t + c.h;
+            let t_h = t + c.step.h;
             let past = t_h.ge_bits(until);
             let drive_h = if past == 0 {
                 piece.at(t_h)
@@ -341,7 +332,7 @@ unsafe fn body<S: Simd>(state: &mut LaneState, count: u64, rec: &mut dyn Recorde
         return;
     }
     for k in 0..count {
-        let mut t_new = t + c.h;
+        let mut t_new = t + c.step.h;
         // Block 1's drive at t_new.
         let (mut theta1, mut omega1) = piece.at(t_new);
         if k + 1 == count {
@@ -385,9 +376,9 @@ unsafe fn load_block<S: Simd>(m: &Mem, j: usize, parity: S) -> Block<S> {
     // SAFETY: the caller keeps j < n.
     let (x, y, theta) = unsafe {
         (
-            S::load(m.x.add(at)),
-            S::load(m.y.add(at)),
-            S::load(m.theta.add(at)),
+            S::load(m.blocks.x.add(at)),
+            S::load(m.blocks.y.add(at)),
+            S::load(m.blocks.theta.add(at)),
         )
     };
     let (rs, rc) = half_sin_cos(theta);
@@ -405,17 +396,12 @@ unsafe fn load_block<S: Simd>(m: &Mem, j: usize, parity: S) -> Block<S> {
 /// `Ladder::gradient_with`'s loop body.
 #[inline(always)]
 fn spring<S: Simd>(u: &Block<S>, l: &Block<S>, c: &Consts<S>) -> Spring<S> {
-    let one = S::splat(1.0);
-    let (ex, ey) = (l.x - u.x, l.y - u.y);
-    let (ux, uy) = (l.rs - u.rs, (l.rc ^ l.parity) - (u.rc ^ u.parity));
-    let (ax, ay, bx, by) = (ex - ux, ey - uy, ex + ux, ey + uy);
-    let ka = one - c.a_rest / (ax * ax + ay * ay).sqrt();
-    let kb = one - c.b_rest / (bx * bx + by * by).sqrt();
-    let (fax, fay, fbx, fby) = (ka * ax, ka * ay, kb * bx, kb * by);
-    let (dfx, dfy) = (fbx - fax, fby - fay);
+    let e = (l.x - u.x, l.y - u.y);
+    let arms = (l.rs - u.rs, (l.rc ^ l.parity) - (u.rc ^ u.parity));
+    let ((fx, fy), (dfx, dfy)) = c.step.spring_pair(e, arms);
     Spring {
-        fx: fax + fbx,
-        fy: fay + fby,
+        fx,
+        fy,
         tu: dfx * l.rc - (dfy ^ l.parity) * l.rs,
         tl: -(dfx * u.rc - (dfy ^ u.parity) * u.rs),
     }
@@ -437,7 +423,7 @@ unsafe fn step<S: Simd>(
     let mut upper = unsafe { load_block(m, 0, flip) };
     let mut lower = unsafe { load_block(m, 1, S::splat(0.0)) };
     let mut s = spring(&upper, &lower, c);
-    let g = (c.minus_g - s.fx, -s.fy, s.tl);
+    let g = (c.step.minus_g - s.fx, -s.fy, s.tl);
     unsafe { update::<S, true>(m, 0, &upper, g, c, times, drive, rec) };
     for j in 1..n - 1 {
         let above = s;
@@ -445,13 +431,13 @@ unsafe fn step<S: Simd>(
         lower = unsafe { load_block(m, j + 1, upper.parity ^ flip) };
         s = spring(&upper, &lower, c);
         let g = (
-            (c.minus_g + above.fx) - s.fx,
+            (c.step.minus_g + above.fx) - s.fx,
             above.fy - s.fy,
             above.tu + s.tl,
         );
         unsafe { update::<S, false>(m, j, &upper, g, c, times, drive, rec) };
     }
-    let g = (c.minus_g + s.fx, s.fy, s.tu);
+    let g = (c.step.minus_g + s.fx, s.fy, s.tu);
     unsafe { update::<S, false>(m, n - 1, &lower, g, c, times, drive, rec) };
 }
 
@@ -471,92 +457,26 @@ unsafe fn update<S: Simd, const FIRST: bool>(
 ) {
     let at = j * S::LANES;
     // SAFETY: the caller keeps j < n.
-    let (vx0, vy0, vt0) = unsafe {
-        (
-            S::load(m.vx.add(at)),
-            S::load(m.vy.add(at)),
-            S::load(m.vtheta.add(at)),
-        )
-    };
-    let mut vx = vx0 * c.decay_xy - gx * c.kick_xy;
-    let mut vy = vy0 * c.decay_xy - gy * c.kick_xy;
-    let mut vt = vt0 * c.decay_theta - gtheta * c.kick_theta;
-    let mut x = b.x + vx * c.h;
-    let mut y = b.y + vy * c.h;
-    let mut theta = b.theta + vt * c.h;
+    let v0 = unsafe { m.blocks.rates(at) };
+    let mut qv = c.step.kick_drift([b.x, b.y, b.theta], v0, [gx, gy, gtheta]);
     if FIRST {
         let zero = S::splat(0.0);
-        x = x.select(c.clamp_x, c.driven);
-        y = y.select(c.clamp_y, c.driven);
-        theta = theta.select(theta1, c.driven);
-        vx = vx.select(zero, c.driven);
-        vy = vy.select(zero, c.driven);
-        vt = vt.select(omega1, c.driven);
+        let drive = ([c.clamp_x, c.clamp_y, theta1], [zero, zero, omega1]);
+        qv = pin(qv, drive, c.driven);
     }
+    let (q, v) = qv;
     // SAFETY: as above.
-    let (lo, hi) = unsafe {
-        x.store(m.x.add(at));
-        y.store(m.y.add(at));
-        theta.store(m.theta.add(at));
-        vx.store(m.vx.add(at));
-        vy.store(m.vy.add(at));
-        vt.store(m.vtheta.add(at));
-        (S::load(m.window_lo.add(at)), S::load(m.window_hi.add(at)))
-    };
-    let candidates = theta.le_bits(lo) | theta.ge_bits(hi);
+    let (lo, hi) = unsafe { m.blocks.store(at, q, v) };
+    let candidates = q[2].le_bits(lo) | q[2].ge_bits(hi);
     if candidates != 0 {
+        let (before, after) = ([t, b.theta, v0[2]], [t_new, q[2], v[2]]);
         // SAFETY: as above.
-        unsafe { candidates_found(m, j, candidates, (t, b.theta, vt0), (t_new, theta, vt), rec) };
-    }
-}
-
-/// Hands the candidate lanes of block `j` to [`record`] with their angles
-/// and rates before and after the step.
-#[inline(always)]
-unsafe fn candidates_found<S: Simd>(
-    m: &Mem,
-    j: usize,
-    candidates: u64,
-    before: (S, S, S),
-    after: (S, S, S),
-    rec: &mut dyn Recorder,
-) {
-    let at = j * S::LANES;
-    let lanes = |v: S| {
-        let mut a = [0.0; MAX_LANES];
-        // SAFETY: LANES ≤ MAX_LANES.
-        unsafe { v.store(a.as_mut_ptr()) };
-        a
-    };
-    let before = [lanes(before.0), lanes(before.1), lanes(before.2)];
-    let after = [lanes(after.0), lanes(after.1), lanes(after.2)];
-    // SAFETY: the caller keeps j < n.
-    let windows = unsafe {
-        (
-            std::slice::from_raw_parts_mut(m.window_lo.add(at), S::LANES),
-            std::slice::from_raw_parts_mut(m.window_hi.add(at), S::LANES),
-        )
-    };
-    record(rec, j, candidates, &before, &after, windows);
-}
-
-/// The exact arrival test on the candidate lanes of block `j`; closes the
-/// windows of the blocks that arrived.
-#[cold]
-#[inline(never)]
-fn record(
-    rec: &mut dyn Recorder,
-    j: usize,
-    candidates: u64,
-    before: &[[f64; MAX_LANES]; 3],
-    after: &[[f64; MAX_LANES]; 3],
-    (lo, hi): (&mut [f64], &mut [f64]),
-) {
-    for lane in (0..lo.len()).filter(|l| candidates >> l & 1 == 1) {
-        let at = |v: &[[f64; MAX_LANES]; 3]| (v[0][lane], v[1][lane], v[2][lane]);
-        if rec.try_record(lane, j, at(before), at(after)) {
-            (lo[lane], hi[lane]) = (f64::NEG_INFINITY, f64::INFINITY);
-        }
+        unsafe {
+            m.blocks
+                .record(at, candidates, before, after, |lane, before, after| {
+                    rec.try_record(lane, j, before, after)
+                })
+        };
     }
 }
 
@@ -565,14 +485,8 @@ fn record(
 #[cold]
 #[inline(never)]
 fn blend_lanes<S: Simd>(mask: u64, a: (S, S), b: (S, S)) -> (S, S) {
-    let lanes = |v: S| {
-        let mut out = [0.0; MAX_LANES];
-        // SAFETY: LANES ≤ MAX_LANES.
-        unsafe { v.store(out.as_mut_ptr()) };
-        out
-    };
     let pick = |x: S, y: S| {
-        let (x, y) = (lanes(x), lanes(y));
+        let (x, y) = (x.to_array(), y.to_array());
         S::from_fn(|l| if mask >> l & 1 == 1 { y[l] } else { x[l] })
     };
     (pick(a.0, b.0), pick(a.1, b.1))
@@ -617,32 +531,30 @@ unsafe fn drift<S: Simd, const FIRST: bool>(
     // SAFETY: the caller keeps j < n.
     let (x, y, theta0, vx0, vy0, vt0, ax, ay, at_) = unsafe {
         (
-            S::load(m.x.add(at)),
-            S::load(m.y.add(at)),
-            S::load(m.theta.add(at)),
-            S::load(m.vx.add(at)),
-            S::load(m.vy.add(at)),
-            S::load(m.vtheta.add(at)),
+            S::load(m.blocks.x.add(at)),
+            S::load(m.blocks.y.add(at)),
+            S::load(m.blocks.theta.add(at)),
+            S::load(m.blocks.vx.add(at)),
+            S::load(m.blocks.vy.add(at)),
+            S::load(m.blocks.vtheta.add(at)),
             S::load(m.ax.add(at)),
             S::load(m.ay.add(at)),
             S::load(m.atheta.add(at)),
         )
     };
-    let mut vx = vx0 + v.half * (ax - v.rate_xy * vx0);
-    let mut vy = vy0 + v.half * (ay - v.rate_xy * vy0);
-    let mut vt = vt0 + v.half * (at_ - v.rate_theta * vt0);
-    let mut x = x + c.h * vx;
-    let mut y = y + c.h * vy;
-    let mut theta = theta0 + c.h * vt;
+    let vx = vx0 + v.half * (ax - v.rate_xy * vx0);
+    let vy = vy0 + v.half * (ay - v.rate_xy * vy0);
+    let vt = vt0 + v.half * (at_ - v.rate_theta * vt0);
+    let x = x + c.step.h * vx;
+    let y = y + c.step.h * vy;
+    let theta = theta0 + c.step.h * vt;
+    let mut qv = ([x, y, theta], [vx, vy, vt]);
     if FIRST {
         let zero = S::splat(0.0);
-        x = x.select(c.clamp_x, c.driven);
-        y = y.select(c.clamp_y, c.driven);
-        theta = theta.select(theta_h, c.driven);
-        vx = vx.select(zero, c.driven);
-        vy = vy.select(zero, c.driven);
-        vt = vt.select(omega_h, c.driven);
+        let drive = ([c.clamp_x, c.clamp_y, theta_h], [zero, zero, omega_h]);
+        qv = pin(qv, drive, c.driven);
     }
+    let ([x, y, theta], [vx, vy, vt]) = qv;
     let (rs, rc) = half_sin_cos(theta);
     Drifted {
         block: Block {
@@ -681,7 +593,7 @@ unsafe fn step_verlet<S: Simd>(
     let mut upper = unsafe { drift::<S, true>(m, 0, flip, c, v, drive_h) };
     let mut lower = unsafe { drift::<S, false>(m, 1, S::splat(0.0), c, v, drive_h) };
     let mut s = spring(&upper.block, &lower.block, c);
-    let g = (c.minus_g - s.fx, -s.fy, s.tl);
+    let g = (c.step.minus_g - s.fx, -s.fy, s.tl);
     unsafe { kick::<S, true>(m, 0, &upper, g, c, v, times, drive_new, rec) };
     for j in 1..n - 1 {
         let above = s;
@@ -689,13 +601,13 @@ unsafe fn step_verlet<S: Simd>(
         lower = unsafe { drift::<S, false>(m, j + 1, upper.block.parity ^ flip, c, v, drive_h) };
         s = spring(&upper.block, &lower.block, c);
         let g = (
-            (c.minus_g + above.fx) - s.fx,
+            (c.step.minus_g + above.fx) - s.fx,
             above.fy - s.fy,
             above.tu + s.tl,
         );
         unsafe { kick::<S, false>(m, j, &upper, g, c, v, times, drive_new, rec) };
     }
-    let g = (c.minus_g + s.fx, s.fy, s.tu);
+    let g = (c.step.minus_g + s.fx, s.fy, s.tu);
     unsafe { kick::<S, false>(m, n - 1, &lower, g, c, v, times, drive_new, rec) };
 }
 
@@ -721,44 +633,32 @@ unsafe fn kick<S: Simd, const FIRST: bool>(
         (-gy) * v.inv_mass_xy,
         (-gtheta) * v.inv_mass_theta,
     );
-    let mut vx = (d.vx + v.half * ax) / v.div_xy;
-    let mut vy = (d.vy + v.half * ay) / v.div_xy;
-    let mut vt = (d.vt + v.half * at_) / v.div_theta;
-    let (mut x, mut y, mut theta) = (d.block.x, d.block.y, d.block.theta);
+    let vx = (d.vx + v.half * ax) / v.div_xy;
+    let vy = (d.vy + v.half * ay) / v.div_xy;
+    let vt = (d.vt + v.half * at_) / v.div_theta;
+    let mut qv = ([d.block.x, d.block.y, d.block.theta], [vx, vy, vt]);
     if FIRST {
         let zero = S::splat(0.0);
-        x = x.select(c.clamp_x, c.driven);
-        y = y.select(c.clamp_y, c.driven);
-        theta = theta.select(theta1, c.driven);
-        vx = vx.select(zero, c.driven);
-        vy = vy.select(zero, c.driven);
-        vt = vt.select(omega1, c.driven);
+        let drive = ([c.clamp_x, c.clamp_y, theta1], [zero, zero, omega1]);
+        qv = pin(qv, drive, c.driven);
     }
+    let (q, v_new) = qv;
     // SAFETY: the caller keeps j < n.
     let (lo, hi) = unsafe {
-        x.store(m.x.add(at));
-        y.store(m.y.add(at));
-        theta.store(m.theta.add(at));
-        vx.store(m.vx.add(at));
-        vy.store(m.vy.add(at));
-        vt.store(m.vtheta.add(at));
         ax.store(m.ax.add(at));
         ay.store(m.ay.add(at));
         at_.store(m.atheta.add(at));
-        (S::load(m.window_lo.add(at)), S::load(m.window_hi.add(at)))
+        m.blocks.store(at, q, v_new)
     };
-    let candidates = theta.le_bits(lo) | theta.ge_bits(hi);
+    let candidates = q[2].le_bits(lo) | q[2].ge_bits(hi);
     if candidates != 0 {
+        let (before, after) = ([t, d.theta0, d.vt0], [t_new, q[2], v_new[2]]);
         // SAFETY: as above.
         unsafe {
-            candidates_found(
-                m,
-                j,
-                candidates,
-                (t, d.theta0, d.vt0),
-                (t_new, theta, vt),
-                rec,
-            )
+            m.blocks
+                .record(at, candidates, before, after, |lane, before, after| {
+                    rec.try_record(lane, j, before, after)
+                })
         };
     }
 }

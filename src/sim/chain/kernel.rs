@@ -16,6 +16,7 @@
 //! below block N is (+0, +0, −0) in (F_x, F_y, torque), which leave the
 //! portable path's first and last blocks' sums unchanged bit for bit.
 
+use super::super::lanes::{Blocks, StepConsts, pin};
 use super::super::simd::{F64x4, F64x8, Pack, Simd, half_sin_cos};
 use crate::sim::Isa;
 
@@ -159,32 +160,13 @@ unsafe fn run_avx512(
 
 /// The vectors every step uses.
 struct Consts<S> {
-    a_rest: S,
-    b_rest: S,
-    minus_g: S,
-    h: S,
-    decay_xy: S,
-    kick_xy: S,
-    decay_theta: S,
-    kick_theta: S,
+    step: StepConsts<S>,
     /// −0.0 in the lanes of even blocks ((−1)^n = −1), +0.0 in odd ones.
     parity: S,
     /// All ones in the lanes of the last vector whose spring exists.
     last_springs: S,
     /// −0.0 in lane 0 (block 1), +0.0 elsewhere.
     first: S,
-}
-
-/// Raw pointers to the arrays.
-struct Mem {
-    x: *mut f64,
-    y: *mut f64,
-    theta: *mut f64,
-    vx: *mut f64,
-    vy: *mut f64,
-    vtheta: *mut f64,
-    window_lo: *mut f64,
-    window_hi: *mut f64,
 }
 
 #[inline(always)]
@@ -202,28 +184,30 @@ unsafe fn body<S: Simd>(
     let last = (vectors - 1) * w;
     let ones = f64::from_bits(u64::MAX);
     let c = Consts {
-        a_rest: S::splat(p.a_rest),
-        b_rest: S::splat(p.b_rest),
-        minus_g: S::splat(p.minus_g),
-        h: S::splat(p.h),
-        decay_xy: S::splat(p.decay_xy),
-        kick_xy: S::splat(p.kick_xy),
-        decay_theta: S::splat(p.decay_theta),
-        kick_theta: S::splat(p.kick_theta),
+        step: StepConsts {
+            a_rest: S::splat(p.a_rest),
+            b_rest: S::splat(p.b_rest),
+            minus_g: S::splat(p.minus_g),
+            h: S::splat(p.h),
+            decay_xy: S::splat(p.decay_xy),
+            kick_xy: S::splat(p.kick_xy),
+            decay_theta: S::splat(p.decay_theta),
+            kick_theta: S::splat(p.kick_theta),
+        },
         parity: S::from_fn(|l| if l % 2 == 0 { -0.0 } else { 0.0 }),
         last_springs: S::from_fn(|l| if last + l + 1 < n { ones } else { 0.0 }),
         first: S::from_fn(|l| if l == 0 { -0.0 } else { 0.0 }),
     };
-    let mem = Mem {
-        x: state.x.as_mut_ptr(),
-        y: state.y.as_mut_ptr(),
-        theta: state.theta.as_mut_ptr(),
-        vx: state.vx.as_mut_ptr(),
-        vy: state.vy.as_mut_ptr(),
-        vtheta: state.vtheta.as_mut_ptr(),
-        window_lo: state.window_lo.as_mut_ptr(),
-        window_hi: state.window_hi.as_mut_ptr(),
-    };
+    let mem = Blocks::new([
+        &mut state.x,
+        &mut state.y,
+        &mut state.theta,
+        &mut state.vx,
+        &mut state.vy,
+        &mut state.vtheta,
+        &mut state.window_lo,
+        &mut state.window_hi,
+    ]);
     let mut t = t0;
     for k in 0..count {
         let (t_new, theta1, omega1) = stepper.after(k, t);
@@ -256,7 +240,7 @@ struct Springs<S> {
 }
 
 #[inline(always)]
-unsafe fn angles<S: Simd>(m: &Mem, at: usize, parity: S) -> Angles<S> {
+unsafe fn angles<S: Simd>(m: &Blocks, at: usize, parity: S) -> Angles<S> {
     // SAFETY: the caller keeps `at` within the arrays, less a vector.
     let theta = unsafe { S::load(m.theta.add(at)) };
     let (rs, rc) = half_sin_cos(theta);
@@ -274,7 +258,7 @@ unsafe fn angles<S: Simd>(m: &Mem, at: usize, parity: S) -> Angles<S> {
 /// springs end) are peeled off the loop.
 #[inline(always)]
 unsafe fn step<S: Simd>(
-    m: &Mem,
+    m: &Blocks,
     vectors: usize,
     c: &Consts<S>,
     times: (f64, f64),
@@ -320,7 +304,7 @@ unsafe fn step<S: Simd>(
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 unsafe fn vector<S: Simd, const FIRST: bool, const LAST: bool>(
-    m: &Mem,
+    m: &Blocks,
     at: usize,
     b: &Angles<S>,
     next: &Angles<S>,
@@ -330,7 +314,6 @@ unsafe fn vector<S: Simd, const FIRST: bool, const LAST: bool>(
     stepper: &mut dyn Stepper,
     [cx, cy, th1, om1]: [f64; 4],
 ) -> Springs<S> {
-    let one = S::splat(1.0);
     // SAFETY: the caller keeps `at` within the arrays, less a vector; the
     // blocks below (at + 1 …) are not yet stored this step.
     let (x, y, lx, ly) = unsafe {
@@ -344,15 +327,9 @@ unsafe fn vector<S: Simd, const FIRST: bool, const LAST: bool>(
     // Each block's lower neighbour.
     let (lrs, lrc) = (b.rs.next(next.rs), b.rc.next(next.rc));
     let (lrsp, lrcp) = (b.rsp.next(next.rsp), b.rcp.next(next.rcp));
-    let (ex, ey) = (lx - x, ly - y);
-    let (ux, uy) = (lrs - b.rs, lrcp - b.rcp);
-    let (ax, ay, bx, by) = (ex - ux, ey - uy, ex + ux, ey + uy);
-    let ka = one - c.a_rest / (ax * ax + ay * ay).sqrt();
-    let kb = one - c.b_rest / (bx * bx + by * by).sqrt();
-    let (fax, fay, fbx, fby) = (ka * ax, ka * ay, kb * bx, kb * by);
-    let (dfx, dfy) = (fbx - fax, fby - fay);
-    let mut fx = fax + fbx;
-    let mut fy = fay + fby;
+    let e = (lx - x, ly - y);
+    let arms = (lrs - b.rs, lrcp - b.rcp);
+    let ((mut fx, mut fy), (dfx, dfy)) = c.step.spring_pair(e, arms);
     let mut tu = dfx * lrc - dfy * lrsp;
     let mut tl = -(dfx * b.rc - dfy * b.rsp);
     if LAST {
@@ -364,78 +341,31 @@ unsafe fn vector<S: Simd, const FIRST: bool, const LAST: bool>(
     }
     // Each block's spring above.
     let (afx, afy, atu) = (fx.prev(above.fx), fy.prev(above.fy), tu.prev(above.tu));
-    let (gx, gy, gt) = ((c.minus_g + afx) - fx, afy - fy, atu + tl);
+    let (gx, gy, gt) = ((c.step.minus_g + afx) - fx, afy - fy, atu + tl);
     // SAFETY: as above.
-    let (vx0, vy0, vt0) = unsafe {
-        (
-            S::load(m.vx.add(at)),
-            S::load(m.vy.add(at)),
-            S::load(m.vtheta.add(at)),
-        )
-    };
-    let mut vx = vx0 * c.decay_xy - gx * c.kick_xy;
-    let mut vy = vy0 * c.decay_xy - gy * c.kick_xy;
-    let mut vt = vt0 * c.decay_theta - gt * c.kick_theta;
-    let mut x = x + vx * c.h;
-    let mut y = y + vy * c.h;
-    let mut theta = b.theta + vt * c.h;
+    let v0 = unsafe { m.rates(at) };
+    let mut qv = c.step.kick_drift([x, y, b.theta], v0, [gx, gy, gt]);
     if FIRST {
-        let (first, zero) = (c.first, S::splat(0.0));
-        x = x.select(S::splat(cx), first);
-        y = y.select(S::splat(cy), first);
-        theta = theta.select(S::splat(th1), first);
-        vx = vx.select(zero, first);
-        vy = vy.select(zero, first);
-        vt = vt.select(S::splat(om1), first);
+        let zero = S::splat(0.0);
+        let drive = (
+            [S::splat(cx), S::splat(cy), S::splat(th1)],
+            [zero, zero, S::splat(om1)],
+        );
+        qv = pin(qv, drive, c.first);
     }
+    let (q, v) = qv;
     // SAFETY: as above.
-    let (lo, hi) = unsafe {
-        x.store(m.x.add(at));
-        y.store(m.y.add(at));
-        theta.store(m.theta.add(at));
-        vx.store(m.vx.add(at));
-        vy.store(m.vy.add(at));
-        vt.store(m.vtheta.add(at));
-        (S::load(m.window_lo.add(at)), S::load(m.window_hi.add(at)))
-    };
-    let candidates = theta.le_bits(lo) | theta.ge_bits(hi);
+    let (lo, hi) = unsafe { m.store(at, q, v) };
+    let candidates = q[2].le_bits(lo) | q[2].ge_bits(hi);
     if candidates != 0 {
-        let lanes = |v: S| {
-            let mut a = [0.0; 16];
-            // SAFETY: LANES ≤ 16.
-            unsafe { v.store(a.as_mut_ptr()) };
-            a
-        };
-        let before = [[t; 16], lanes(b.theta), lanes(vt0)];
-        let after = [[t_new; 16], lanes(theta), lanes(vt)];
+        let before = [S::splat(t), b.theta, v0[2]];
+        let after = [S::splat(t_new), q[2], v[2]];
         // SAFETY: as above.
-        let windows = unsafe {
-            (
-                std::slice::from_raw_parts_mut(m.window_lo.add(at), S::LANES),
-                std::slice::from_raw_parts_mut(m.window_hi.add(at), S::LANES),
-            )
+        unsafe {
+            m.record(at, candidates, before, after, |lane, before, after| {
+                stepper.try_record(at + lane, before, after)
+            })
         };
-        record(stepper, at, candidates, &before, &after, windows);
     }
     Springs { fx, fy, tu }
-}
-
-/// The exact arrival test on the candidate lanes of the vector at `at`;
-/// closes the windows of the blocks that arrived.
-#[cold]
-#[inline(never)]
-fn record(
-    stepper: &mut dyn Stepper,
-    at: usize,
-    candidates: u64,
-    before: &[[f64; 16]; 3],
-    after: &[[f64; 16]; 3],
-    (lo, hi): (&mut [f64], &mut [f64]),
-) {
-    for lane in (0..lo.len()).filter(|l| candidates >> l & 1 == 1) {
-        let v = |a: &[[f64; 16]; 3]| (a[0][lane], a[1][lane], a[2][lane]);
-        if stepper.try_record(at + lane, v(before), v(after)) {
-            (lo[lane], hi[lane]) = (f64::NEG_INFINITY, f64::INFINITY);
-        }
-    }
 }

@@ -637,6 +637,7 @@ fn run_body<const C: usize>(job: &Job, st: &mut State, arrivals: &mut ArrivalDet
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sim::simd::tests::{same, sin_cos_inputs};
 
     /// `half_sin_cos` of `x`, in the AVX2 build.
     #[target_feature(enable = "avx2")]
@@ -650,19 +651,7 @@ mod tests {
         if !Isa::Avx2.available() {
             return;
         }
-        let quarter = std::f64::consts::FRAC_PI_2;
-        let mut xs: Vec<f64> = (-4000..4000).map(|k| k as f64 * 0.0123 + 1e-3).collect();
-        xs.extend((-8..8).flat_map(|k| [k as f64 * quarter, k as f64 * quarter + 1e-12]));
-        xs.extend([
-            0.0,
-            -0.0,
-            823_549.0,
-            823_551.0,
-            -3e7,
-            1e300,
-            f64::INFINITY,
-            f64::NAN,
-        ]);
+        let mut xs = sin_cos_inputs();
         xs.resize(xs.len().div_ceil(12) * 12, 0.5);
         for chunk in xs.chunks_exact(12) {
             let x: [[f64; 4]; 3] =
@@ -673,8 +662,6 @@ mod tests {
             trig::sin_cos_slice(chunk, &mut ws, &mut wc);
             for i in 0..12 {
                 let (gs, gc) = (s[i / 4][i % 4], c[i / 4][i % 4]);
-                let same =
-                    |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
                 assert!(
                     same(gs, R * ws[i]) && same(gc, R * wc[i]),
                     "x = {}",

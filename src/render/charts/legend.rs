@@ -1,0 +1,180 @@
+//! Legends: inside (plotters' series labels) or in a column right of the
+//! plot, and the automatic placement that covers no data.
+
+use super::glyph::{Glyph, LEGEND_LINE};
+use super::ranges::runs;
+use super::{Area, ChartSpec, Ctx, Legend, LineStyle, font, plot_error, rgb};
+use crate::error::Result;
+use crate::render::style::{self, DARK, size};
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+pub(super) fn has_labels(spec: &ChartSpec) -> bool {
+    spec.series.iter().any(|s| s.label.is_some())
+}
+
+pub(super) fn draw_legend<'a, 'b: 'a, X, Y>(
+    chart: &mut Ctx<'a, 'b, X, Y>,
+    spec: &ChartSpec,
+    legend: Legend,
+) -> Result<()>
+where
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let Some(pos) = label_position(legend) else {
+        return Ok(());
+    };
+    // Re-register labelled series as empty draws that only carry a legend.
+    for s in spec.series.iter().filter(|s| s.label.is_some()) {
+        let label = s.label.clone().unwrap_or_default();
+        let (line, marker, color, width) = (s.line, s.marker, s.color, s.width);
+        chart
+            .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
+            .map_err(plot_error)?
+            .label(label)
+            .legend(move |at| Glyph {
+                at,
+                line,
+                marker,
+                color,
+                width,
+                offset: LEGEND_LINE / 2,
+            });
+    }
+    chart
+        .configure_series_labels()
+        .position(pos)
+        .margin(8)
+        .legend_area_size(28)
+        .label_font(font(size::TICK).into_font().color(&rgb(DARK)))
+        .background_style(WHITE.mix(0.9))
+        .border_style(rgb(DARK).mix(0.4))
+        .draw()
+        .map_err(plot_error)
+}
+
+/// A legend right of the plot: one row per labelled series, glyph then
+/// text, starting at pixel `(x, y)` of the whole chart.
+pub(super) fn draw_outside_legend(
+    root: &Area<'_>,
+    spec: &ChartSpec,
+    (x, y): (i32, i32),
+) -> Result<()> {
+    let row = (size::TICK * 1.55) as i32;
+    let text_style = font(size::TICK)
+        .into_font()
+        .color(&rgb(DARK))
+        .pos(Pos::new(HPos::Left, VPos::Center));
+    let labelled = spec
+        .series
+        .iter()
+        .filter_map(|s| s.label.as_ref().map(|l| (s, l)));
+    for (k, (s, label)) in labelled.enumerate() {
+        let at = (x, y + row / 2 + k as i32 * row);
+        let glyph = Glyph {
+            at,
+            line: s.line,
+            marker: s.marker,
+            color: s.color,
+            width: s.width,
+            offset: LEGEND_LINE / 2,
+        };
+        root.draw(&glyph).map_err(plot_error)?;
+        let text = Text::new(
+            label.as_str(),
+            (at.0 + LEGEND_LINE + 6, at.1),
+            text_style.clone(),
+        );
+        root.draw(&text).map_err(plot_error)?;
+    }
+    Ok(())
+}
+
+/// Plotters' placement for a resolved legend; `None` draws no legend.
+fn label_position(legend: Legend) -> Option<SeriesLabelPosition> {
+    use SeriesLabelPosition as P;
+    Some(match legend {
+        Legend::UpperLeft => P::UpperLeft,
+        Legend::UpperMiddle => P::UpperMiddle,
+        Legend::UpperRight | Legend::Auto => P::UpperRight,
+        Legend::LowerLeft => P::LowerLeft,
+        Legend::LowerMiddle => P::LowerMiddle,
+        Legend::LowerRight => P::LowerRight,
+        Legend::Outside | Legend::Hidden => return None,
+    })
+}
+
+/// The first inside placement whose legend box covers no sampled data
+/// pixel (upper right, upper left, lower right, lower left, upper middle,
+/// lower middle), else `Outside`.
+pub(super) fn auto_legend<X, Y>(chart: &Ctx<'_, '_, X, Y>, spec: &ChartSpec) -> Legend
+where
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let (px, py) = chart.plotting_area().get_pixel_range();
+    let (bw, bh) = legend_box(spec);
+    let pts = sampled_pixels(chart, spec);
+    let mid = (px.start + px.end - bw) / 2;
+    let candidates = [
+        (Legend::UpperRight, px.end - bw, py.start),
+        (Legend::UpperLeft, px.start, py.start),
+        (Legend::LowerRight, px.end - bw, py.end - bh),
+        (Legend::LowerLeft, px.start, py.end - bh),
+        (Legend::UpperMiddle, mid, py.start),
+        (Legend::LowerMiddle, mid, py.end - bh),
+    ];
+    let free = |x0: i32, y0: i32| {
+        !pts.iter()
+            .any(|p| p.0 >= x0 && p.0 <= x0 + bw && p.1 >= y0 && p.1 <= y0 + bh)
+    };
+    candidates
+        .into_iter()
+        .find(|(_, x0, y0)| free(*x0, *y0))
+        .map_or(Legend::Outside, |c| c.0)
+}
+
+/// Estimated legend box in pixels (with its margin).
+pub(super) fn legend_box(spec: &ChartSpec) -> (i32, i32) {
+    let labels: Vec<&String> = spec
+        .series
+        .iter()
+        .filter_map(|s| s.label.as_ref())
+        .collect();
+    let text = labels
+        .iter()
+        .map(|l| style::text_width(l, size::TICK))
+        .fold(0.0, f32::max);
+    let w = text + 28.0 + 34.0;
+    let h = labels.len() as f32 * (size::TICK * 1.55) + 24.0;
+    (w as i32, h as i32)
+}
+
+/// Pixel positions of every point and of points interpolated along lines.
+fn sampled_pixels<X, Y>(chart: &Ctx<'_, '_, X, Y>, spec: &ChartSpec) -> Vec<(i32, i32)>
+where
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let mut out = Vec::new();
+    for s in &spec.series {
+        for run in runs(s, spec) {
+            let pix: Vec<(i32, i32)> = run.iter().map(|p| chart.backend_coord(p)).collect();
+            out.extend(&pix);
+            if s.line == LineStyle::None {
+                continue;
+            }
+            for w in pix.windows(2) {
+                let steps =
+                    ((w[1].0 - w[0].0).abs().max((w[1].1 - w[0].1).abs()) / 4).clamp(1, 200);
+                for k in 1..steps {
+                    let f = k as f64 / steps as f64;
+                    let lerp = |a: i32, b: i32| a + ((b - a) as f64 * f).round() as i32;
+                    out.push((lerp(w[0].0, w[1].0), lerp(w[0].1, w[1].1)));
+                }
+            }
+        }
+    }
+    out
+}

@@ -1,0 +1,248 @@
+//! [`line_chart`]: lays out and draws a [`ChartSpec`] (linear or log axes,
+//! equal aspect, legend placement by a probe pass).
+
+use super::glyph::Glyph;
+use super::legend::{auto_legend, draw_legend, draw_outside_legend, has_labels, legend_box};
+use super::ranges::{Range2, data_range, equalize, runs};
+use super::ticks::tick_label;
+use super::{
+    Area, Chart, ChartSpec, Ctx, Legend, LineStyle, Marker, Scale, Series, X_LABEL_AREA,
+    Y_LABEL_AREA, check_size, font, plot_error, rgb,
+};
+use crate::error::Result;
+use crate::render::style::{self, DARK, GREY, size};
+use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::prelude::*;
+use std::ops::Range;
+
+/// Draws `spec` as a `width × height` chart.
+pub fn line_chart(spec: &ChartSpec, width: u32, height: u32) -> Result<Chart> {
+    check_size(width, height)?;
+    style::register_plotters_font();
+    let (x0, y0) = (data_range(spec, true)?, data_range(spec, false)?);
+    let mut pass = Pass {
+        legend: if has_labels(spec) {
+            spec.legend
+        } else {
+            Legend::Hidden
+        },
+        probe: true,
+    };
+    let (mut xr, mut yr) = (x0.clone(), y0.clone());
+    if spec.equal_aspect {
+        (xr, yr) = equalized(spec, pass, (width, height), x0.clone(), y0.clone())?;
+    }
+    if pass.legend == Legend::Auto {
+        pass.legend = probe(spec, pass, (width, height), xr.clone(), yr.clone())?.legend;
+        if pass.legend == Legend::Outside && spec.equal_aspect {
+            (xr, yr) = equalized(spec, pass, (width, height), x0, y0)?;
+        }
+    }
+    pass.probe = false;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_error)?;
+        draw_any(&root, spec, pass, xr, yr)?;
+        root.present().map_err(plot_error)?;
+    }
+    Chart::from_svg(&svg, width, height)
+}
+
+/// Dispatches on the four combinations of linear and log axes.
+fn draw_any(
+    root: &Area<'_>,
+    spec: &ChartSpec,
+    pass: Pass,
+    xr: Range<f64>,
+    yr: Range<f64>,
+) -> Result<Probe> {
+    match (spec.x.scale, spec.y.scale) {
+        (Scale::Linear, Scale::Linear) => draw_xy(root, spec, pass, xr, yr),
+        (Scale::Linear, Scale::Log) => draw_xy(root, spec, pass, xr, yr.log_scale()),
+        (Scale::Log, Scale::Linear) => draw_xy(root, spec, pass, xr.log_scale(), yr),
+        (Scale::Log, Scale::Log) => draw_xy(root, spec, pass, xr.log_scale(), yr.log_scale()),
+    }
+}
+
+/// One drawing pass: the legend placement to use, and whether this is a
+/// layout probe on a scratch SVG (axes only, no series).
+#[derive(Clone, Copy, Debug)]
+struct Pass {
+    legend: Legend,
+    probe: bool,
+}
+
+/// What a pass found out: the plotting area and, for `Legend::Auto`, the
+/// placement that covers no data.
+struct Probe {
+    plot: Range2,
+    legend: Legend,
+}
+
+/// Lays the chart out on a scratch SVG.
+fn probe(
+    spec: &ChartSpec,
+    pass: Pass,
+    (w, h): (u32, u32),
+    xr: Range<f64>,
+    yr: Range<f64>,
+) -> Result<Probe> {
+    let mut scratch = String::new();
+    let root = SVGBackend::with_string(&mut scratch, (w, h)).into_drawing_area();
+    draw_any(
+        &root,
+        spec,
+        Pass {
+            probe: true,
+            ..pass
+        },
+        xr,
+        yr,
+    )
+}
+
+/// Ranges grown to equal scales for the plotting area of this layout.
+fn equalized(
+    spec: &ChartSpec,
+    pass: Pass,
+    size: (u32, u32),
+    xr: Range<f64>,
+    yr: Range<f64>,
+) -> Result<(Range<f64>, Range<f64>)> {
+    let (px, py) = probe(spec, pass, size, xr.clone(), yr.clone())?.plot;
+    let (pw, ph) = (
+        (px.end - px.start).max(1) as f64,
+        (py.end - py.start).max(1) as f64,
+    );
+    Ok(equalize(xr, yr, pw, ph))
+}
+
+fn draw_xy<XS, YS>(root: &Area<'_>, spec: &ChartSpec, pass: Pass, xs: XS, ys: YS) -> Result<Probe>
+where
+    XS: AsRangedCoord<Value = f64>,
+    YS: AsRangedCoord<Value = f64>,
+    XS::CoordDescType: ValueFormatter<f64>,
+    YS::CoordDescType: ValueFormatter<f64>,
+{
+    let area = if pass.legend == Legend::Outside {
+        root.margin(0, 0, 0, legend_box(spec).0 as u32 + 8)
+    } else {
+        root.clone()
+    };
+    let mut builder = ChartBuilder::on(&area);
+    builder
+        .margin(14)
+        .x_label_area_size(X_LABEL_AREA)
+        .y_label_area_size(Y_LABEL_AREA);
+    if let Some(t) = &spec.title {
+        builder.caption(t, font(size::TITLE).into_font().color(&rgb(DARK)));
+    }
+    let mut chart = builder.build_cartesian_2d(xs, ys).map_err(plot_error)?;
+    let plot = chart.plotting_area().get_pixel_range();
+    if pass.probe {
+        let legend = match pass.legend {
+            Legend::Auto => auto_legend(&chart, spec),
+            other => other,
+        };
+        return Ok(Probe { plot, legend });
+    }
+    draw_mesh(&mut chart, spec)?;
+    if spec.zero_lines {
+        draw_zero_lines(&mut chart)?;
+    }
+    for s in &spec.series {
+        draw_series(&mut chart, s, spec)?;
+    }
+    if pass.legend == Legend::Outside {
+        draw_outside_legend(root, spec, (plot.0.end + 12, plot.1.start))?;
+    } else {
+        draw_legend(&mut chart, spec, pass.legend)?;
+    }
+    Ok(Probe {
+        plot,
+        legend: pass.legend,
+    })
+}
+
+fn draw_mesh<X, Y>(chart: &mut Ctx<'_, '_, X, Y>, spec: &ChartSpec) -> Result<()>
+where
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    let (xscale, yscale) = (spec.x.scale, spec.y.scale);
+    let xf = move |v: &f64| tick_label(*v, xscale);
+    let yf = move |v: &f64| tick_label(*v, yscale);
+    chart
+        .configure_mesh()
+        .x_desc(spec.x.label.as_str())
+        .y_desc(spec.y.label.as_str())
+        .x_label_formatter(&xf)
+        .y_label_formatter(&yf)
+        .x_labels(7)
+        .y_labels(7)
+        .label_style(font(size::TICK).into_font().color(&rgb(DARK)))
+        .axis_desc_style(font(size::LABEL).into_font().color(&rgb(DARK)))
+        .axis_style(rgb(DARK).stroke_width(1))
+        .bold_line_style(rgb(DARK).mix(0.12))
+        .light_line_style(rgb(DARK).mix(0.05))
+        .draw()
+        .map_err(plot_error)
+}
+
+fn draw_zero_lines<X, Y>(chart: &mut Ctx<'_, '_, X, Y>) -> Result<()>
+where
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let (xr, yr) = (chart.x_range(), chart.y_range());
+    let grey = rgb(GREY).stroke_width(1);
+    if xr.start < 0.0 && xr.end > 0.0 {
+        let l = PathElement::new(vec![(0.0, yr.start), (0.0, yr.end)], grey);
+        chart.draw_series(std::iter::once(l)).map_err(plot_error)?;
+    }
+    if yr.start < 0.0 && yr.end > 0.0 {
+        let l = PathElement::new(vec![(xr.start, 0.0), (xr.end, 0.0)], grey);
+        chart.draw_series(std::iter::once(l)).map_err(plot_error)?;
+    }
+    Ok(())
+}
+
+fn draw_series<'a, 'b: 'a, X, Y>(
+    chart: &mut Ctx<'a, 'b, X, Y>,
+    s: &Series,
+    spec: &ChartSpec,
+) -> Result<()>
+where
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let style = rgb(s.color).stroke_width(s.width.round().max(1.0) as u32);
+    let dash = (4.0 * s.width).round() as u32;
+    for run in runs(s, spec) {
+        match s.line {
+            LineStyle::Solid => {
+                chart
+                    .draw_series(LineSeries::new(run.clone(), style))
+                    .map_err(plot_error)?;
+            }
+            LineStyle::Dashed => {
+                let series = DashedLineSeries::new(run.clone(), dash, dash, style);
+                chart.draw_series(series).map_err(plot_error)?;
+            }
+            LineStyle::None => {}
+        }
+        if s.marker != Marker::None {
+            let markers = run.iter().map(|&p| Glyph {
+                at: p,
+                line: LineStyle::None,
+                marker: s.marker,
+                color: s.color,
+                width: s.width,
+                offset: 0,
+            });
+            chart.draw_series(markers).map_err(plot_error)?;
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,67 @@
+//! Data-driven charts: plotters draws an SVG with the bundled font, resvg
+//! rasterises it (anti-aliased, the same tiny-skia as the snapshots).
+//!
+//! [`line_chart`] covers line charts with several series (solid or dashed,
+//! optional markers), scatter-plus-line charts, parametric curves with equal
+//! aspect, and linear or logarithmic axes (log–log work-precision charts).
+//! [`kymograph`] draws a heat map of sin θ_n, blocks across and time down,
+//! with a diverging colour map and a colour bar.
+
+mod glyph;
+mod kymograph;
+mod legend;
+mod line;
+mod ranges;
+mod rasterize;
+mod spec;
+mod svg_text;
+mod ticks;
+mod title;
+
+pub use kymograph::{Kymograph, kymograph, polarisation_rows};
+pub use line::line_chart;
+pub use rasterize::{Chart, rasterize_svg, rasterize_tree};
+pub use spec::{Axis, ChartSpec, Legend, LineStyle, Marker, Scale, Series};
+pub use svg_text::typeset_svg_text;
+pub use ticks::{short_number, tick_label};
+pub(super) use title::titled;
+pub use title::{FittedTitle, fit_title};
+
+use super::style::FONT_FAMILY;
+use crate::encode::Rgb;
+use crate::error::{Error, Result};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// A plotters drawing area on an SVG (shared with `render::cells`).
+pub(super) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+
+pub(super) fn plot_error<E: std::fmt::Debug>(e: E) -> Error {
+    Error::failed(format!("chart drawing failed: {e:?}"))
+}
+
+/// Plotters font size that gives a CSS em size of `px` in the SVG (plotters
+/// writes its size divided by 1.24).
+pub(super) fn font(px: f32) -> (&'static str, f64) {
+    (FONT_FAMILY, f64::from(px) * 1.24)
+}
+
+pub(super) fn rgb(c: Rgb) -> RGBColor {
+    RGBColor(c[0], c[1], c[2])
+}
+
+fn check_size(width: u32, height: u32) -> Result<()> {
+    if (60..=8192).contains(&width) && (60..=8192).contains(&height) {
+        Ok(())
+    } else {
+        Err(Error::bad_input(format!(
+            "chart size must be between 60x60 and 8192x8192 pixels, got {width}x{height}"
+        )))
+    }
+}
+
+/// Left, right, top, bottom label areas and margins in pixels.
+const Y_LABEL_AREA: u32 = 64;
+const X_LABEL_AREA: u32 = 50;
+
+type Ctx<'a, 'b, X, Y> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, Y>>;

@@ -1,0 +1,179 @@
+//! What a line chart shows: axes, series, legend placement.
+
+use crate::encode::Rgb;
+
+/// Axis scale.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Scale {
+    #[default]
+    Linear,
+    /// Base-10 logarithmic; non-positive values are left out.
+    Log,
+}
+
+/// One axis: its label (with units, Greek letters welcome), an optional
+/// fixed range, and the scale.
+#[derive(Clone, Debug, Default)]
+pub struct Axis {
+    pub label: String,
+    pub range: Option<(f64, f64)>,
+    pub scale: Scale,
+}
+
+impl Axis {
+    /// A linear axis with automatic range.
+    pub fn new(label: impl Into<String>) -> Axis {
+        Axis {
+            label: label.into(),
+            ..Axis::default()
+        }
+    }
+
+    /// Fixes the range.
+    pub fn range(mut self, lo: f64, hi: f64) -> Axis {
+        self.range = Some((lo, hi));
+        self
+    }
+
+    /// Makes the axis logarithmic.
+    pub fn log(mut self) -> Axis {
+        self.scale = Scale::Log;
+        self
+    }
+}
+
+/// How a series' points are joined.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum LineStyle {
+    #[default]
+    Solid,
+    Dashed,
+    /// Markers only.
+    None,
+}
+
+/// Marker drawn at each point of a series.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Marker {
+    #[default]
+    None,
+    Circle,
+    Square,
+    Triangle,
+    /// A diagonal cross, e.g. for diverged runs.
+    Cross,
+}
+
+/// One data series. Non-finite points (and non-positive ones on log axes)
+/// break the line.
+#[derive(Clone, Debug)]
+pub struct Series {
+    /// Legend text; `None` keeps the series out of the legend.
+    pub label: Option<String>,
+    pub points: Vec<(f64, f64)>,
+    pub color: Rgb,
+    pub line: LineStyle,
+    pub marker: Marker,
+    /// Line width in pixels.
+    pub width: f64,
+}
+
+impl Series {
+    /// A solid line.
+    pub fn line(label: impl Into<String>, points: Vec<(f64, f64)>, color: Rgb) -> Series {
+        Series {
+            label: Some(label.into()).filter(|l: &String| !l.is_empty()),
+            points,
+            color,
+            line: LineStyle::Solid,
+            marker: Marker::None,
+            width: 2.0,
+        }
+    }
+
+    /// Markers only, no line.
+    pub fn scatter(
+        label: impl Into<String>,
+        points: Vec<(f64, f64)>,
+        color: Rgb,
+        marker: Marker,
+    ) -> Series {
+        Series {
+            line: LineStyle::None,
+            marker,
+            ..Series::line(label, points, color)
+        }
+    }
+
+    /// Dashed line.
+    pub fn dashed(mut self) -> Series {
+        self.line = LineStyle::Dashed;
+        self
+    }
+
+    /// Adds markers at the points.
+    pub fn with_marker(mut self, marker: Marker) -> Series {
+        self.marker = marker;
+        self
+    }
+
+    /// Sets the line width in pixels.
+    pub fn with_width(mut self, width: f64) -> Series {
+        self.width = width;
+        self
+    }
+}
+
+/// Where the legend goes. `Auto` picks an inside position (corners, then
+/// top and bottom middle) that covers no data, and reserves a column right
+/// of the plot (`Outside`) when every inside position would.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Legend {
+    #[default]
+    Auto,
+    UpperLeft,
+    UpperMiddle,
+    UpperRight,
+    LowerLeft,
+    LowerMiddle,
+    LowerRight,
+    Outside,
+    Hidden,
+}
+
+/// A chart of x–y series.
+#[derive(Clone, Debug, Default)]
+pub struct ChartSpec {
+    pub title: Option<String>,
+    pub x: Axis,
+    pub y: Axis,
+    pub series: Vec<Series>,
+    pub legend: Legend,
+    /// Equal scales on both axes (parametric curves, the complex plane).
+    pub equal_aspect: bool,
+    /// Thin grey lines through x = 0 and y = 0 when in range.
+    pub zero_lines: bool,
+}
+
+impl ChartSpec {
+    /// A chart with the given axes and no series yet.
+    pub fn new(x: Axis, y: Axis) -> ChartSpec {
+        ChartSpec {
+            x,
+            y,
+            ..ChartSpec::default()
+        }
+    }
+
+    /// Sets the title.
+    pub fn title(mut self, title: impl Into<String>) -> ChartSpec {
+        self.title = Some(title.into());
+        self
+    }
+
+    /// Adds a series.
+    pub fn series(mut self, s: Series) -> ChartSpec {
+        self.series.push(s);
+        self
+    }
+}
