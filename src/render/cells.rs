@@ -75,11 +75,18 @@ pub fn cell_chart(c: &CellChart, width: u32, height: u32) -> Result<Chart> {
 
 fn draw_cells(area: &Area<'_>, c: &CellChart) -> Result<()> {
     let (nx, ny) = (c.xs.len() as f64, c.ys.len() as f64);
+    // Room left of the cells for the widest tick label, the axis label
+    // (turned on its side) and the gaps between them: at least 64 px.
+    let widest =
+        c.ys.iter()
+            .map(|&y| style::text_width(&short_number(y), size::TICK))
+            .fold(0.0f32, f32::max);
+    let y_area = (widest + size::LABEL + 11.0).floor().max(64.0) as u32;
     let mut chart = ChartBuilder::on(area)
         .margin(14)
         .margin_right(6)
         .x_label_area_size(50)
-        .y_label_area_size(64)
+        .y_label_area_size(y_area)
         .build_cartesian_2d(-0.5..nx - 0.5, -0.5..ny - 0.5)
         .map_err(plot_error)?;
     chart
@@ -169,6 +176,66 @@ fn draw_legend(area: &Area<'_>, c: &CellChart) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The y axis's label (turned on its side) stays clear of its widest
+    /// tick label, for short (0.005) and wide (4×10⁻⁴) ticks alike.
+    #[test]
+    fn the_y_label_clears_the_tick_labels() {
+        for ys in [vec![0.005, 0.01, 0.02], vec![1e-4, 2e-4, 4e-4]] {
+            let c = CellChart {
+                title: None,
+                x_label: "damping γ".into(),
+                y_label: "gravity G = mg/(ks)".into(),
+                xs: vec![0.01, 0.02],
+                cells: (0..2)
+                    .flat_map(|col| {
+                        (0..3).map(move |row| Cell {
+                            col,
+                            row,
+                            color: DARK,
+                        })
+                    })
+                    .collect(),
+                ys,
+                legend: vec![],
+                shade: None,
+            };
+            let chart = cell_chart(&c, 820, 480).unwrap();
+            // The rotated label's right reach, and the left edge of each
+            // tick label (anchored at its right end).
+            let mut label_right = None;
+            let mut ticks_left = f32::INFINITY;
+            for t in chart.svg.split("<text").skip(1) {
+                let attr = |name: &str| -> Option<f32> {
+                    let i = t.find(&format!(" {name}=\""))? + name.len() + 3;
+                    t[i..].split('"').next()?.parse().ok()
+                };
+                let body = t
+                    .split('>')
+                    .nth(1)
+                    .unwrap_or("")
+                    .split('<')
+                    .next()
+                    .unwrap_or("")
+                    .trim();
+                if t.contains("rotate(") && body.starts_with("gravity") {
+                    // Turned a quarter left and moved 0.76 em down (to
+                    // the right): its glyphs reach x + 1 em at most.
+                    label_right = Some(attr("x").unwrap() + size::LABEL);
+                } else if c.ys.iter().any(|&y| short_number(y) == body) {
+                    let right = attr("x").unwrap();
+                    ticks_left = ticks_left.min(right - style::text_width(body, size::TICK));
+                }
+            }
+            let label_right = label_right.expect("the y label is drawn");
+            assert!(ticks_left.is_finite(), "tick labels found in {}", chart.svg);
+            assert!(
+                label_right <= ticks_left,
+                "{:?}: label up to {label_right}, ticks from {ticks_left}",
+                c.ys
+            );
+        }
+    }
 
     #[test]
     fn ticks_land_on_cells() {
