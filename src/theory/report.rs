@@ -140,8 +140,10 @@ impl TheoryReport {
         let mut out = String::new();
         let _ = writeln!(
             out,
-            "Linear theory, N = {}, b/s = {}, alpha = {} deg",
-            self.n, self.b, self.alpha_deg
+            "Linear theory, N = {}, b/s = {}, α = {}°",
+            self.n,
+            self.b,
+            crate::scene::describe::num(self.alpha_deg)
         );
         for (name, value, note) in self.rows() {
             let _ = writeln!(out, "  {name:<34} {value:>14}  {note}");
@@ -151,22 +153,34 @@ impl TheoryReport {
 
     fn rows(&self) -> Vec<(&'static str, String, &'static str)> {
         vec![
-            ("a/s", num(self.a), "eq:eq_alpha"),
-            ("U_min / mgs (per pair)", num(self.u_min), "eq:min_values"),
+            ("a/s", num(self.a), "a = √(b² + 4s² cos²α), supplement"),
             (
-                "barrier dU / mgs (per pair)",
-                opt(self.barrier),
-                "eq:delta_U",
+                "U_min / mgs (per pair)",
+                num(self.u_min),
+                "U_min = −2mgb, supplement",
             ),
-            ("c1", num(self.c1), "eq:c_12"),
-            ("c2", num(self.c2), "eq:c_12"),
-            ("c2/c1", opt(self.zero_mode_ratio), "eq:2nd_sol"),
             (
-                "dtheta_{n+1}/dtheta_n (numerical)",
+                "barrier ΔU / mgs (per pair)",
+                opt(self.barrier),
+                "criss-cross barrier, supplement",
+            ),
+            ("c₁", num(self.c1), "zero-mode coefficient, supplement"),
+            ("c₂", num(self.c2), "zero-mode coefficient, supplement"),
+            (
+                "c₂/c₁",
+                opt(self.zero_mode_ratio),
+                "zero mode δθₙ₊₁/δθₙ, main text",
+            ),
+            (
+                "δθₙ₊₁/δθₙ (numerical)",
                 opt(self.zero_mode_ratio_numerical),
                 "reduced chain null vector",
             ),
-            ("kappa * s", opt(self.kappa), "after eq:2nd_sol (signed)"),
+            (
+                "κs",
+                opt(self.kappa),
+                "κ = ln|(b + 2s sin α)/(b − 2s sin α)|/b, > 0: top",
+            ),
             (
                 "surface mode edge",
                 edge(self.surface_mode_edge),
@@ -176,22 +190,22 @@ impl TheoryReport {
                 "winding number n_C",
                 self.winding_number
                     .map_or("undefined".into(), |w| w.to_string()),
-                "phase of det C(q), eq:n",
+                "phase of det C(q), main text",
             ),
             (
-                "gap omega+(0) tau",
+                "gap ω₊(0) τ",
                 num(self.gap_omega_plus_q0),
                 "model, metric diag(m, I)",
             ),
             (
-                "gap omega+(0) tau, paper",
+                "gap ω₊(0) τ, as printed",
                 num(self.gap_omega_plus_q0_paper),
-                "eq:gap, omega_0 = 1/tau",
+                "2√2 ω₀ (s/a) sin 2α, ω₀ = 1/τ",
             ),
             (
                 "gap, consistent metric",
                 num(self.gap_omega_plus_q0_consistent_metric),
-                "I + m (s/2)^2 sin^2 alpha",
+                "θ inertia I + m (s/2)² sin²α",
             ),
             (
                 "gap, unconstrained top branch",
@@ -199,7 +213,7 @@ impl TheoryReport {
                 "3 branches at q = 0",
             ),
             (
-                "omega_max tau (clamped)",
+                "ω_max τ (clamped)",
                 num(self.omega_max),
                 "Hessian, block 1 clamped",
             ),
@@ -224,9 +238,9 @@ impl TheoryReport {
                 "rank of C",
             ),
             (
-                "Maxwell index 3N - N_b, free",
+                "Maxwell index 3N − N_b, free",
                 self.maxwell_index_free.to_string(),
-                "= N_0 - N_s",
+                "= N₀ − N_s",
             ),
             (
                 "zero modes, periodic",
