@@ -325,3 +325,18 @@ fn render_refuses_a_format_list_with_nothing_for_a_scene() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `ladder theory`'s table names its sources in words and formulas, not
+/// in the paper's LaTeX labels (eq:eq_alpha) or markup (dtheta_{n+1}).
+#[test]
+fn the_theory_table_has_no_latex_labels() {
+    for alpha in ["60", "-89", "0"] {
+        let out = ladder(&["theory", "--alpha", alpha]);
+        assert_eq!(out.status.code(), Some(0));
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(text.lines().count() > 20, "{text}");
+        for bad in ["eq:", "_{", "^{", "\\", "omega", "kappa", "alpha"] {
+            assert!(!text.contains(bad), "'{bad}' in\n{text}");
+        }
+    }
+}
