@@ -5,7 +5,9 @@
 //! get equal cells), ticks name the values. Drawn like the other charts:
 //! plotters writes an SVG with the bundled font, resvg rasterises it.
 
-use super::charts::{Area, Chart, font, plot_error, rasterize_svg, rgb, short_number, titled};
+use super::charts::{
+    Area, Chart, dark_axes, font, plot_error, rasterize_svg, rgb, short_number, titled,
+};
 use super::style::{self, DARK, size};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
@@ -107,20 +109,15 @@ fn draw_cells(area: &Area<'_>, c: &CellChart) -> Result<()> {
     };
     let xf = |v: &f64| label_at(&c.xs, *v);
     let yf = |v: &f64| label_at(&c.ys, *v);
-    chart
-        .configure_mesh()
-        .disable_mesh()
+    let mut mesh = chart.configure_mesh();
+    mesh.disable_mesh()
         .x_desc(c.x_label.as_str())
         .y_desc(c.y_label.as_str())
         .x_labels(ticks(c.xs.len(), 10))
         .y_labels(ticks(c.ys.len(), 10))
         .x_label_formatter(&xf)
-        .y_label_formatter(&yf)
-        .label_style(font(size::TICK).into_font().color(&rgb(DARK)))
-        .axis_desc_style(font(size::LABEL).into_font().color(&rgb(DARK)))
-        .axis_style(rgb(DARK).stroke_width(1))
-        .draw()
-        .map_err(plot_error)
+        .y_label_formatter(&yf);
+    dark_axes(&mut mesh).draw().map_err(plot_error)
 }
 
 /// Tick count that lands on whole cell indices: the number of cells when

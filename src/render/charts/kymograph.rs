@@ -3,7 +3,9 @@
 
 use super::ticks::short_number;
 use super::title::titled;
-use super::{Area, Chart, X_LABEL_AREA, Y_LABEL_AREA, check_size, font, plot_error, rgb};
+use super::{
+    Area, Chart, X_LABEL_AREA, Y_LABEL_AREA, check_size, dark_axes, font, plot_error, rgb,
+};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::render::style::{self, DARK, size};
@@ -118,20 +120,15 @@ fn draw_heatmap(area: &Area<'_>, k: &Kymograph<'_>) -> Result<()> {
             String::new()
         }
     };
-    chart
-        .configure_mesh()
-        .disable_mesh()
+    let mut mesh = chart.configure_mesh();
+    mesh.disable_mesh()
         .x_desc("block n")
         .y_desc(k.time_label)
         .x_labels(k.n.min(12))
         .y_labels(8)
         .x_label_formatter(&xf)
-        .y_label_formatter(&yf)
-        .label_style(font(size::TICK).into_font().color(&rgb(DARK)))
-        .axis_desc_style(font(size::LABEL).into_font().color(&rgb(DARK)))
-        .axis_style(rgb(DARK).stroke_width(1))
-        .draw()
-        .map_err(plot_error)
+        .y_label_formatter(&yf);
+    dark_axes(&mut mesh).draw().map_err(plot_error)
 }
 
 /// Rectangles of the heat map: at most `rows` time bins (nearest sample per

@@ -7,7 +7,7 @@ use super::ranges::{Range2, data_range, equalize, runs};
 use super::ticks::tick_label;
 use super::{
     Area, Chart, ChartSpec, Ctx, Legend, LineStyle, Marker, Scale, Series, X_LABEL_AREA,
-    Y_LABEL_AREA, check_size, font, plot_error, rgb,
+    Y_LABEL_AREA, check_size, dark_axes, font, plot_error, rgb,
 };
 use crate::error::Result;
 use crate::render::style::{self, DARK, GREY, size};
@@ -173,17 +173,14 @@ where
     let (xscale, yscale) = (spec.x.scale, spec.y.scale);
     let xf = move |v: &f64| tick_label(*v, xscale);
     let yf = move |v: &f64| tick_label(*v, yscale);
-    chart
-        .configure_mesh()
-        .x_desc(spec.x.label.as_str())
+    let mut mesh = chart.configure_mesh();
+    mesh.x_desc(spec.x.label.as_str())
         .y_desc(spec.y.label.as_str())
         .x_label_formatter(&xf)
         .y_label_formatter(&yf)
         .x_labels(7)
-        .y_labels(7)
-        .label_style(font(size::TICK).into_font().color(&rgb(DARK)))
-        .axis_desc_style(font(size::LABEL).into_font().color(&rgb(DARK)))
-        .axis_style(rgb(DARK).stroke_width(1))
+        .y_labels(7);
+    dark_axes(&mut mesh)
         .bold_line_style(rgb(DARK).mix(0.12))
         .light_line_style(rgb(DARK).mix(0.05))
         .draw()

@@ -50,6 +50,22 @@ pub(super) fn rgb(c: Rgb) -> RGBColor {
     RGBColor(c[0], c[1], c[2])
 }
 
+/// The axes' look every chart shares: dark tick labels, axis labels and
+/// axis lines.
+pub(super) fn dark_axes<'m, 'a, 'b, X, Y, DB>(
+    mesh: &'m mut plotters::chart::MeshStyle<'a, 'b, X, Y, DB>,
+) -> &'m mut plotters::chart::MeshStyle<'a, 'b, X, Y, DB>
+where
+    X: Ranged,
+    Y: Ranged,
+    DB: DrawingBackend,
+{
+    use super::style::{DARK, size};
+    mesh.label_style(font(size::TICK).into_font().color(&rgb(DARK)))
+        .axis_desc_style(font(size::LABEL).into_font().color(&rgb(DARK)))
+        .axis_style(rgb(DARK).stroke_width(1))
+}
+
 fn check_size(width: u32, height: u32) -> Result<()> {
     if (60..=8192).contains(&width) && (60..=8192).contains(&height) {
         Ok(())
