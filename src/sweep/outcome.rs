@@ -185,29 +185,36 @@ pub fn blocks_flipped(arrivals: &[Option<f64>]) -> usize {
     arrivals.iter().filter(|a| a.is_some()).count()
 }
 
-/// Shortest mean time between the arrivals of successive blocks that is
-/// still a travelling wave, τ per block. The model's waves take hundreds
+/// Shortest time between the arrivals of successive blocks that is still
+/// a wave passing from one to the next, τ. The model's waves take hundreds
 /// of τ per block (the paper's kink: about 220 τ; the slowest antikinks of
 /// the pinning sweep several thousand); blocks that flip less than 1 τ
-/// apart on average (at |α| = 89°: eight blocks within 0.8 τ) flip
-/// together, faster than a block can respond to its neighbour (the
-/// shortest period of the linear chain, 2π/ω_max, is 2.3 τ at |α| = 89°,
-/// N = 10, b/s = 1.3: `ladder theory --alpha 89`), and a slope through
-/// them is no speed.
+/// apart flip together, faster than a block can respond to its neighbour
+/// (the shortest period of the linear chain, 2π/ω_max, is 2.3 τ at
+/// |α| = 89°, N = 10, b/s = 1.3: `ladder theory --alpha 89`).
 pub const COLLECTIVE_FLIP_GAP: f64 = 1.0;
 
 /// Speed of the wave in blocks per τ: the inverse least-squares slope of
 /// t_n against n over the blocks past block 2 and before the free bottom
 /// block (n = 3..N−1) that flipped; `None` with fewer than three of them,
-/// no positive slope, or a collective flip (a mean gap between the first
-/// and last of them below [`COLLECTIVE_FLIP_GAP`]).
+/// no positive slope, or blocks that flip in groups rather than one after
+/// another: when at least half the gaps between successive arrivals are
+/// shorter than [`COLLECTIVE_FLIP_GAP`] (near |α| = 90°: at 89° the
+/// antikink's blocks 2–9 flip within 0.8 τ, the kink's in two groups), a
+/// slope through them is no speed.
 pub fn speed(arrivals: &[Option<f64>]) -> Option<f64> {
     let n = arrivals.len();
     let pts: Vec<(f64, f64)> = (2..n.saturating_sub(1))
         .filter_map(|i| arrivals[i].map(|t| (i as f64 + 1.0, t)))
         .collect();
-    let (&(n_first, t_first), &(n_last, t_last)) = (pts.first()?, pts.last()?);
-    if pts.len() < 3 || (t_last - t_first) < COLLECTIVE_FLIP_GAP * (n_last - n_first) {
+    if pts.len() < 3 {
+        return None;
+    }
+    let together = pts
+        .windows(2)
+        .filter(|w| (w[1].1 - w[0].1).abs() < COLLECTIVE_FLIP_GAP)
+        .count();
+    if 2 * together >= pts.len() - 1 {
         return None;
     }
     let slope = crate::sim::observables::least_squares_slope(&pts);
@@ -383,6 +390,35 @@ mod tests {
         ]);
         assert_eq!(front(&together), 9);
         assert_eq!(speed(&together), None);
+        // The kink at 89°: blocks 2–4 together, then 5–9 together.
+        let groups = arr(&[
+            Some(500.0),
+            Some(892.6),
+            Some(892.7),
+            Some(892.8),
+            Some(1095.5),
+            Some(1095.5),
+            Some(1095.5),
+            Some(1095.5),
+            Some(1095.5),
+            None,
+        ]);
+        assert_eq!(speed(&groups), None);
+        // The kink at 88°: blocks 3–5 together (a third of the gaps), then
+        // a wave at about 205 τ per block: a speed.
+        let mostly_wave = arr(&[
+            Some(500.0),
+            Some(945.8),
+            Some(1165.5),
+            Some(1165.4),
+            Some(1165.3),
+            Some(1379.2),
+            Some(1578.8),
+            Some(1789.1),
+            Some(1989.9),
+            None,
+        ]);
+        assert!(speed(&mostly_wave).is_some());
         // The same blocks 1.1 τ apart: a (fast) wave, 1/1.1 blocks per τ.
         let mut fast = together.clone();
         for (k, a) in fast.iter_mut().enumerate().take(9).skip(1) {
