@@ -337,8 +337,9 @@ fn slow_and_stopped_waves_are_told_apart_on_real_runs() {
 }
 
 /// Many points at once (`run_points`: rounds through the batch kernel)
-/// give every point exactly what running it alone gives (`run_point`),
-/// bit for bit: kinks and antikinks that propagate, stall and stay pinned,
+/// give every point exactly what running it alone gives (`run_point`: one
+/// point is too few for the lanes and runs on the one-run path), bit for
+/// bit: kinks and antikinks that propagate, stall and stay pinned,
 /// two chain lengths, two drive times (two stop rules), a fixed Verlet
 /// step, a diverging fixed step, and points still undecided at a low cap.
 #[test]

@@ -9,15 +9,17 @@
 //! integration (its first step, then each halving) is one job of the
 //! round, and the jobs that share an integrator configuration and a rule
 //! go through `sim::batch::simulate_many` together (one run per SIMD lane,
-//! lanes refilled from a queue on every core). Its results equal
-//! [`run_point`]'s, point by point, bit for bit: the batch kernel
-//! reproduces the one-by-one trajectories exactly (tests/sweep.rs).
+//! lanes refilled from a queue on every core); a group too small to fill
+//! the lanes, such as [`run_point`]'s one point, runs one run at a time
+//! through `sim::simulate_until`. Both give the same results bit for bit:
+//! the batch kernel reproduces the one-run trajectories exactly
+//! (tests/sweep.rs runs 30 points at once and each alone).
 
 use super::outcome::{self, Decision, Outcome, Rule};
 use crate::error::{Error, Result};
 use crate::scene::Scene;
 use crate::scene::sweep::SweepSpec;
-use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Stepping, Trajectory};
+use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Trajectory};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
@@ -36,7 +38,8 @@ pub struct RunResult {
     /// The last block the wave reached (blocks 1..=front all flipped).
     pub front: usize,
     /// Blocks per τ, least squares over blocks 3..N−1; `None` when fewer
-    /// than three of them flipped.
+    /// than three of them flipped or they flip in groups
+    /// (`outcome::speed`).
     pub speed: Option<f64>,
     /// When the outcome was decided (`None` for a diverged run).
     pub t_decided: Option<f64>,
@@ -69,88 +72,11 @@ pub fn rule(scene: &Scene, spec: &SweepSpec) -> Rule {
 
 /// Runs the single-run `scene` (a point of the sweep) until decided.
 /// Bad input is an error; a diverging integration is a `diverged` result.
+/// One point alone is too few to fill the batch kernel's lanes: it runs
+/// through `sim::simulate_until`, the one-run path.
 pub fn run_point(scene: &Scene, spec: &SweepSpec) -> Result<RunResult> {
-    let rule = rule(scene, spec);
-    let mut capped = scene.clone();
-    capped.run.t_end = spec.cap;
-    let scenario = capped.scenario()?;
-    match scene.run.fixed_config()? {
-        Some(config) => fixed(&scenario, &config, &rule),
-        None => {
-            let params = scene.model.params()?;
-            let omega_max = crate::theory::dispersion::omega_max_clamped(&params)?;
-            verified(&scenario, omega_max, scene.run.tolerance, &rule)
-        }
-    }
-}
-
-/// One integration until decided: its decision and trajectory, or (inner
-/// error) the divergence message; bad input is the outer error.
-type Attempt = std::result::Result<(Decision, Trajectory), String>;
-
-fn until_decided(scenario: &Scenario, config: &IntegratorConfig, rule: &Rule) -> Result<Attempt> {
-    let stop = |t: f64, arrivals: &[Option<f64>]| rule.decide(arrivals, t).is_some();
-    match sim::simulate_until(scenario, config, Stepping::Fastest, &stop) {
-        Ok(traj) => {
-            // Replaying the history at the cap gives the decision the run
-            // stopped on (or `undecided` if it ran to the cap).
-            let d = rule
-                .decide(&traj.arrival_times, rule.cap)
-                .unwrap_or(Decision {
-                    outcome: Outcome::Undecided,
-                    t_decided: rule.cap,
-                });
-            Ok(Ok((d, traj)))
-        }
-        Err(Error::Failed(msg)) => Ok(Err(msg)),
-        Err(Error::Diverged(d)) => Ok(Err(d.facts())),
-        Err(e) => Err(e),
-    }
-}
-
-fn fixed(scenario: &Scenario, config: &IntegratorConfig, rule: &Rule) -> Result<RunResult> {
-    Ok(match until_decided(scenario, config, rule)? {
-        Ok((d, traj)) => result(d, &traj, config, None, traj.force_evals),
-        Err(msg) => diverged(scenario, config, msg, 0),
-    })
-}
-
-fn result(
-    d: Decision,
-    traj: &Trajectory,
-    config: &IntegratorConfig,
-    arrival_error: Option<f64>,
-    force_evals: u64,
-) -> RunResult {
-    result_of(d, &traj.arrival_times, config, arrival_error, force_evals)
-}
-
-fn result_of(
-    d: Decision,
-    arrival_times: &[Option<f64>],
-    config: &IntegratorConfig,
-    arrival_error: Option<f64>,
-    force_evals: u64,
-) -> RunResult {
-    // Arrivals after the decision belong to no outcome: drop them, so the
-    // record does not depend on how long after it the run was stopped.
-    let arrivals: Vec<Option<f64>> = arrival_times
-        .iter()
-        .map(|a| a.filter(|&t| t <= d.t_decided))
-        .collect();
-    RunResult {
-        outcome: d.outcome,
-        blocks_flipped: outcome::blocks_flipped(&arrivals),
-        front: outcome::front(&arrivals),
-        speed: outcome::speed(&arrivals),
-        t_decided: Some(d.t_decided),
-        arrival_times: arrivals,
-        integrator: config.kind.name().into(),
-        dt: config.dt,
-        arrival_error,
-        force_evals,
-        message: None,
-    }
+    let mut results = run_points(std::slice::from_ref(scene), spec)?;
+    Ok(results.remove(0))
 }
 
 fn diverged(scenario: &Scenario, config: &IntegratorConfig, msg: String, evals: u64) -> RunResult {
@@ -175,65 +101,6 @@ fn diverged(scenario: &Scenario, config: &IntegratorConfig, msg: String, evals: 
 pub const SWEEP_AUTO_DT: f64 = 0.5;
 /// Fraction of the stability bound 2/ω_max the first step may reach.
 pub const SWEEP_AUTO_STABILITY_FRACTION: f64 = 0.8;
-
-/// `auto`: velocity Verlet from [`SWEEP_AUTO_DT`] (or less, as ω_max
-/// allows), halved until two successive runs agree (`sim::auto`'s rule,
-/// with the stop rule).
-fn verified(scenario: &Scenario, omega_max: f64, tolerance: f64, rule: &Rule) -> Result<RunResult> {
-    let mut dt = first_auto_dt(omega_max);
-    let mut total = 0;
-    let mut last_error = String::new();
-    let mut coarse = match until_decided(scenario, &verlet(dt), rule)? {
-        Ok(c) => {
-            total += c.1.force_evals;
-            Some(c)
-        }
-        Err(m) => {
-            last_error = m;
-            None
-        }
-    };
-    for _ in 0..MAX_HALVINGS {
-        let config = verlet(0.5 * dt);
-        let fine = match until_decided(scenario, &config, rule)? {
-            Ok(f) => f,
-            Err(m) => {
-                last_error = m;
-                dt *= 0.5;
-                coarse = None;
-                continue;
-            }
-        };
-        total += fine.1.force_evals;
-        if let Some((dc, tc)) = &coarse {
-            let (df, tf) = &fine;
-            let upto = dc.t_decided.min(df.t_decided);
-            let difference = sim::auto::arrival_difference(
-                &tc.arrival_times,
-                &tf.arrival_times,
-                upto,
-                tolerance,
-            );
-            if dc.outcome == df.outcome && difference <= tolerance {
-                return Ok(result(*df, tf, &config, Some(difference / 3.0), total));
-            }
-        }
-        coarse = Some(fine);
-        dt *= 0.5;
-    }
-    match coarse {
-        None => Ok(diverged(scenario, &verlet(dt), last_error, total)),
-        Some((d, traj)) => {
-            // Kept, with the disagreement said: one hard point must not
-            // sink a sweep of thousands.
-            Ok(unverified(
-                result(d, &traj, &verlet(dt), None, total),
-                tolerance,
-                dt,
-            ))
-        }
-    }
-}
 
 fn verlet(dt: f64) -> IntegratorConfig {
     IntegratorConfig::fixed(IntegratorKind::Verlet, dt)
@@ -353,8 +220,8 @@ fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<De
         .collect())
 }
 
-/// The decision a run stopped on, replayed at the cap (`undecided` if it
-/// ran to the cap), as `until_decided` does.
+/// The decision a run stopped on: its history replayed at the cap
+/// (`undecided` if it ran to the cap).
 fn decided(rule: &Rule, traj: Trajectory) -> Decided {
     let decision = rule
         .decide(&traj.arrival_times, rule.cap)
@@ -510,20 +377,33 @@ pub fn run_points(scenes: &[Scene], spec: &SweepSpec) -> Result<Vec<RunResult>> 
         .collect())
 }
 
-/// [`result`] of a run kept between rounds.
+/// The record of a decided run.
 fn from_decided(
     d: &Decided,
     config: &IntegratorConfig,
     arrival_error: Option<f64>,
     force_evals: u64,
 ) -> RunResult {
-    result_of(
-        d.decision,
-        &d.arrival_times,
-        config,
+    let (decision, arrival_times) = (d.decision, &d.arrival_times);
+    // Arrivals after the decision belong to no outcome: drop them, so the
+    // record does not depend on how long after it the run was stopped.
+    let arrivals: Vec<Option<f64>> = arrival_times
+        .iter()
+        .map(|a| a.filter(|&t| t <= decision.t_decided))
+        .collect();
+    RunResult {
+        outcome: decision.outcome,
+        blocks_flipped: outcome::blocks_flipped(&arrivals),
+        front: outcome::front(&arrivals),
+        speed: outcome::speed(&arrivals),
+        t_decided: Some(decision.t_decided),
+        arrival_times: arrivals,
+        integrator: config.kind.name().into(),
+        dt: config.dt,
         arrival_error,
         force_evals,
-    )
+        message: None,
+    }
 }
 
 /// `r`, kept with the disagreement said: one hard point must not sink a
