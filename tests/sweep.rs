@@ -467,33 +467,47 @@ fn the_documented_gnu_parallel_line_works() {
         .find(|l| l.trim_start().starts_with("parallel "))
         .expect("docs/cluster.md has a line starting with `parallel `")
         .trim();
-    let dir = tmp("parallel");
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/slurm/sweep.toml");
-    std::fs::copy(file, dir.join("sweep.toml")).unwrap();
-    let bin = Path::new(env!("CARGO_BIN_EXE_ladder"))
-        .parent()
-        .unwrap()
-        .to_path_buf();
-    let path = format!(
-        "{}:{}",
-        bin.display(),
-        std::env::var("PATH").unwrap_or_default()
-    );
+    let dir = with_example_sweep("parallel");
     let out = Command::new("bash")
         .arg("-c")
         .arg(format!("{line} && ladder sweep gather out"))
         .current_dir(&dir)
-        .env("PATH", &path)
+        .env("PATH", path_with_ladder())
         .output()
         .unwrap();
     ok(&out);
+    assert_gathered_equals_unsharded(&dir);
+}
+
+/// A fresh folder holding examples/slurm/sweep.toml.
+fn with_example_sweep(name: &str) -> PathBuf {
+    let dir = tmp(name);
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/slurm/sweep.toml");
+    std::fs::copy(file, dir.join("sweep.toml")).unwrap();
+    dir
+}
+
+/// PATH with the folder of the `ladder` under test first.
+fn path_with_ladder() -> String {
+    let bin = Path::new(env!("CARGO_BIN_EXE_ladder")).parent().unwrap();
+    format!(
+        "{}:{}",
+        bin.display(),
+        std::env::var("PATH").unwrap_or_default()
+    )
+}
+
+/// The CSV gathered in `dir/out` equals an unsharded run of
+/// `dir/sweep.toml`, byte for byte; then `dir` is removed.
+fn assert_gathered_equals_unsharded(dir: &Path) {
     let whole = dir.join("whole");
-    ok(&Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args(["sweep", "sweep.toml", "--out", whole.to_str().unwrap()])
-        .current_dir(&dir)
-        .output()
-        .unwrap());
+    ok(&ladder(&[
+        "sweep",
+        dir.join("sweep.toml").to_str().unwrap(),
+        "--out",
+        whole.to_str().unwrap(),
+    ]));
     assert_eq!(
         std::fs::read(dir.join("out/sweep-antikink-damping.csv")).unwrap(),
         std::fs::read(whole.join("sweep-antikink-damping.csv")).unwrap()
@@ -505,23 +519,9 @@ fn the_documented_gnu_parallel_line_works() {
 /// (its environment variables), all at once, then gathered.
 #[test]
 fn the_slurm_array_script_runs_its_shard() {
-    let dir = tmp("slurm");
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = with_example_sweep("slurm");
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    std::fs::copy(
-        root.join("examples/slurm/sweep.toml"),
-        dir.join("sweep.toml"),
-    )
-    .unwrap();
-    let bin = Path::new(env!("CARGO_BIN_EXE_ladder"))
-        .parent()
-        .unwrap()
-        .to_path_buf();
-    let path = format!(
-        "{}:{}",
-        bin.display(),
-        std::env::var("PATH").unwrap_or_default()
-    );
+    let path = path_with_ladder();
     let tasks: Vec<_> = (0..3)
         .map(|id| {
             Command::new("bash")
@@ -544,18 +544,7 @@ fn the_slurm_array_script_runs_its_shard() {
         "gather",
         dir.join("out").to_str().unwrap(),
     ]));
-    let whole = dir.join("whole");
-    ok(&ladder(&[
-        "sweep",
-        dir.join("sweep.toml").to_str().unwrap(),
-        "--out",
-        whole.to_str().unwrap(),
-    ]));
-    assert_eq!(
-        std::fs::read(dir.join("out/sweep-antikink-damping.csv")).unwrap(),
-        std::fs::read(whole.join("sweep-antikink-damping.csv")).unwrap()
-    );
-    let _ = std::fs::remove_dir_all(dir);
+    assert_gathered_equals_unsharded(&dir);
 }
 
 /// The supplement's 3D-printed linkage model (a = 7 cm, b = 6 cm, s = 5 cm,
