@@ -22,7 +22,7 @@ use crate::scene::sweep::SweepSpec;
 use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Trajectory};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
-use std::collections::HashMap;
+use std::collections::BTreeMap;
 
 /// Most halvings of the step `auto` makes for one point of a sweep (a
 /// point still unverified at dt/16 is kept with a message: a sweep runs
@@ -184,19 +184,13 @@ fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<De
             [r.drive_start, r.drive_end, r.t_end, r.quiet, r.cap].map(f64::to_bits),
         )
     };
-    let mut groups: HashMap<_, Vec<usize>> = HashMap::new();
-    let mut order = Vec::new();
+    let mut groups: BTreeMap<_, Vec<usize>> = BTreeMap::new();
     for (k, job) in jobs.iter().enumerate() {
-        let g = groups.entry(key(job)).or_insert_with(|| {
-            order.push(key(job));
-            Vec::new()
-        });
-        g.push(k);
+        groups.entry(key(job)).or_default().push(k);
     }
     let mut out: Vec<Option<std::result::Result<Decided, String>>> =
         jobs.iter().map(|_| None).collect();
-    for g in order {
-        let members = &groups[&g];
+    for members in groups.values() {
         let first = &jobs[members[0]];
         let rule = points[first.point].rule;
         let scenarios: Vec<Scenario> = members
