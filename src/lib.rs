@@ -44,6 +44,7 @@ pub mod model;
 pub mod render;
 pub mod sim;
 pub mod theory;
+pub mod version;
 
 pub mod bench;
 pub mod catalog;

@@ -8,7 +8,7 @@ use std::path::PathBuf;
 #[derive(Parser, Debug)]
 #[command(
     name = "ladder",
-    version,
+    version = crate::version::LONG,
     about = "Simulate the Jacob's-ladder toy and render the figures and movies of \
              \"Topological antiqued mechanical toy\" (Wada, Mizobata, Ueno, Yoneda)",
     long_about = "Simulate the Jacob's-ladder toy and render the figures and movies of \
