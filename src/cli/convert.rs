@@ -41,7 +41,9 @@ impl DriveArgs {
         self.drive_time.is_some() || self.flips.is_some() || self.second_flip.is_some()
     }
 
-    fn apply(&self, scene: &mut Scene) {
+    /// The drive flags onto `scene`'s drive (also the Python keywords
+    /// `drive_time`, `flips`, `second_flip`).
+    pub fn apply(&self, scene: &mut Scene) {
         if !self.any() {
             return;
         }

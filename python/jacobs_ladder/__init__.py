@@ -1,0 +1,608 @@
+"""jacobs_ladder: the Jacob's-ladder engine of ``ladder`` as a numpy package.
+
+Simulate the toy of "Topological antiqued mechanical toy" (Wada, Mizobata,
+Ueno, Yoneda) and render its figures and movies from Python, with the same
+engine, numbers and files as the ``ladder`` command line::
+
+    import jacobs_ladder as jl
+    run = jl.simulate(alpha=60, n=10)          # the paper's kink
+    run.arrival_times                          # τ, NaN where a block never flipped
+    run.theta                                  # radians, samples × N
+    jl.Scene.builtin("3").render()             # figure 3, shown inline in Jupyter
+    jl.sweep(alpha=[-50, -55, -60], gamma=[0.01, 0.02]).to_pandas()
+    jl.theory(alpha=60)["winding_number"]
+
+Units: lengths in the block length s, times in τ = sqrt(m/k), angles in
+degrees where a keyword takes them (``alpha``) and radians in arrays
+(``theta``). Keyword names are the command line's long flags with
+underscores (``--t-end`` → ``t_end``). A mistake in a keyword raises
+ValueError with the command line's one-line message and the scene key
+(``model.alpha: ...``); a failed run raises RunError with a hint. Every
+call releases the GIL while the engine works, and Ctrl-C stops it.
+
+The whole tour: docs/python.md.
+"""
+
+from __future__ import annotations
+
+import base64
+import csv
+import io
+import json
+import os
+from pathlib import Path
+from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _native
+from ._native import RunError
+
+__all__ = [
+    "simulate",
+    "sweep",
+    "theory",
+    "catalogue",
+    "Scene",
+    "Run",
+    "Table",
+    "Image",
+    "Files",
+    "RunError",
+    "__version__",
+]
+
+__version__ = "0.1.0"
+#: The engine's version and git commit (``ladder --version``).
+ENGINE_VERSION: str = _native.VERSION
+
+
+def _plain(value: Any) -> Any:
+    """numpy scalars and arrays as plain Python for JSON."""
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, (tuple, set, frozenset)):
+        return list(value)
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
+    raise TypeError(f"{type(value).__name__} is not a scene value")
+
+
+def _keywords(kwargs: Mapping[str, Any]) -> str:
+    """The keywords as the JSON object the engine merges into a scene
+    (None means: keep the scene's value)."""
+    given = {k: v for k, v in kwargs.items() if v is not None}
+    try:
+        return json.dumps(given, default=_plain, allow_nan=True)
+    except TypeError as e:
+        raise ValueError(f"keywords must be numbers, strings, lists or dicts: {e}") from None
+
+
+# ---------------------------------------------------------------- runs
+
+
+class Run:
+    """A simulated run: numpy arrays of its samples and its record.
+
+    Arrays (samples × N where per block; N = blocks, block 1 driven):
+
+    - ``t``: sample times, τ (every ``sample_every`` τ from 0 to t_end).
+    - ``theta``: angles θ_n, radians, as integrated (not wrapped).
+    - ``x``, ``y``: block centres X_n, Y_n, in s (y up; gravity along −y).
+    - ``vx``, ``vy``, ``omega``: their velocities, s/τ and rad/τ.
+    - ``kink_position``: blocks flipped at each sample.
+    - ``arrival_times``: per block, τ: the first sign change of sin θ_n;
+      NaN where the block never flipped (the CLI's ``null``).
+    - ``final_theta_deg``: θ_n at t_end in degrees, wrapped to (−180, 180]
+      (the CLI's ``final_theta_deg``).
+
+    Records: ``integrator`` (the report the data files carry: scheme, dt,
+    steps, force evaluations, auto's achieved arrival error), ``speed``
+    (blocks/τ, NaN when too few blocks flipped), ``waves`` (one record per
+    domain wall, where the engine reports them, else None) and ``record``
+    (everything the engine reports about the run, as a dict).
+    """
+
+    __slots__ = ("_d", "record", "scene")
+
+    def __init__(self, arrays: Dict[str, Any], scene: Optional["Scene"] = None):
+        self._d = arrays
+        self.record: Dict[str, Any] = json.loads(arrays["record"])
+        self.scene = scene
+
+    t = property(lambda self: self._d["t"], doc="Sample times, τ.")
+    theta = property(lambda self: self._d["theta"], doc="θ_n(t), radians, samples × N.")
+    x = property(lambda self: self._d["x"], doc="X_n(t), block centres, s; samples × N.")
+    y = property(lambda self: self._d["y"], doc="Y_n(t), block centres, s; samples × N.")
+    vx = property(lambda self: self._d["vx"], doc="dX_n/dt, s/τ; samples × N.")
+    vy = property(lambda self: self._d["vy"], doc="dY_n/dt, s/τ; samples × N.")
+    omega = property(lambda self: self._d["omega"], doc="dθ_n/dt, rad/τ; samples × N.")
+    kink_position = property(lambda self: self._d["kink_position"], doc="Blocks flipped at each sample.")
+    arrival_times = property(
+        lambda self: self._d["arrival_times"], doc="Arrival time per block, τ; NaN where none."
+    )
+    final_theta_deg = property(
+        lambda self: self._d["final_theta_deg"], doc="θ_n at t_end, degrees, wrapped to (−180, 180]."
+    )
+
+    @property
+    def n(self) -> int:
+        """Number of blocks N."""
+        return int(self.arrival_times.shape[0])
+
+    @property
+    def integrator(self) -> Dict[str, Any]:
+        """The integrator report: ``requested``, ``name``, ``dt``, ``steps``,
+        ``force_evals``, and for ``auto`` its ``tolerance`` and achieved
+        ``arrival_error`` (τ)."""
+        return self.record["integrator"]
+
+    @property
+    def speed(self) -> float:
+        """Wave speed, blocks/τ (least squares over the arrivals); NaN when
+        too few blocks flipped."""
+        s = self.record.get("speed")
+        return float("nan") if s is None else float(s)
+
+    @property
+    def waves(self) -> Optional[List[Dict[str, Any]]]:
+        """One record per domain wall (kind, launched_at, arrival_times with
+        NaN for none, front, fate), where the engine reports waves; None
+        otherwise."""
+        waves = self.record.get("waves")
+        if waves is None:
+            return None
+        out = []
+        for w in waves:
+            w = dict(w)
+            if isinstance(w.get("arrival_times"), list):
+                w["arrival_times"] = np.array(
+                    [np.nan if a is None else a for a in w["arrival_times"]], dtype=float
+                )
+            out.append(w)
+        return out
+
+    def to_dict(self) -> Dict[str, Any]:
+        """Every array and record, as a dict (arrays are numpy arrays)."""
+        d = {k: v for k, v in self._d.items() if k != "record"}
+        d.update({k: v for k, v in self.record.items() if k not in d})
+        d["waves"] = self.waves
+        return d
+
+    def __repr__(self) -> str:
+        m = self.record.get("model", {})
+        alpha = m.get("alpha")
+        wave = "kink" if alpha is not None and alpha >= 0 else "antikink"
+        flipped = int(np.count_nonzero(~np.isnan(self.arrival_times)))
+        integ = self.integrator
+        return (
+            f"<Run {wave} α = {alpha:g}°, N = {self.n}, b = {m.get('b'):g}, "
+            f"γ = {m.get('gamma'):g}: t = 0..{self.record.get('t_end'):g} τ, "
+            f"{len(self.t)} samples, {flipped}/{self.n} blocks flipped, "
+            f"{integ['name']} dt = {integ['dt']:g} ({integ['requested']})>"
+        )
+
+
+def simulate(
+    alpha: float = 60.0,
+    n: int = 10,
+    b: float = 1.3,
+    gamma: float = 0.02,
+    gravity: float = 2e-4,
+    inertia: float = 0.25,
+    drive_time: float = 1000.0,
+    flips: Optional[Sequence[float]] = None,
+    t_end: float = 4000.0,
+    integrator: str = "auto",
+    *,
+    dt: Optional[float] = None,
+    rtol: Optional[float] = None,
+    tolerance: Optional[float] = None,
+    second_flip: Optional[float] = None,
+    sample_every: float = 10.0,
+    samples: Optional[Sequence[float]] = None,
+    **scene_keys: Any,
+) -> Run:
+    """Simulate the ladder and return a :class:`Run` of numpy arrays.
+
+    The keywords are ``ladder simulate``'s long flags with underscores;
+    defaults are the paper's values:
+
+    - ``alpha``: equilibrium angle α, degrees, 0 < |α| < 90; its sign picks
+      the wave (α > 0 kink, α < 0 antikink). Default 60.
+    - ``n``: number of blocks N, 2 to 100000. Default 10.
+    - ``b``: rest length of the B springs, in units of the block length s.
+      Default 1.3.
+    - ``gamma``: damping γ (force −γẊ, torque −γr²θ̇). Default 0.02.
+    - ``gravity``: G = mg/(ks). Default 2e-4.
+    - ``inertia``: moment of inertia I of a block, m s². Default 0.25.
+    - ``drive_time``: time T_d each flip of block 1 takes, τ. Default 1000.
+    - ``flips``: start times of the flips of block 1, τ. Default [0].
+    - ``second_flip``: turn block 1 back from this time too (= flips [0, T]).
+    - ``t_end``: end of the window, τ. Default 4000.
+    - ``integrator``: ``auto`` (picks the step and verifies the arrival
+      times to ``tolerance``), ``explicit-euler``, ``symplectic-euler`` (the
+      paper's, dt 0.01), ``verlet``, ``rk4`` or ``dopri5``. Default auto.
+    - ``dt``: step of a named integrator, τ. Default 0.01.
+    - ``rtol``: tolerance of dopri5. Default 1e-6.
+    - ``tolerance``: largest arrival-time error auto accepts, τ. Default 0.1.
+    - ``sample_every``: interval of the samples kept, τ. Default 10 (as
+      ``simulate --csv``); or ``samples``: the sample times themselves.
+    - any other scene key (``model``, ``drive``, ``run``, or a dotted path
+      such as ``**{"run.tolerance": 0.05}``): see docs/scenes.md.
+
+    Raises ValueError for bad input (the message names the key) and
+    RunError for a run that failed (with a hint).
+    """
+    kw = dict(
+        alpha=alpha, n=n, b=b, gamma=gamma, gravity=gravity, inertia=inertia,
+        drive_time=drive_time, flips=flips, second_flip=second_flip, t_end=t_end,
+        integrator=integrator, dt=dt, rtol=rtol, tolerance=tolerance,
+    )
+    kw.update(scene_keys)
+    times = None if samples is None else [float(t) for t in samples]
+    return Run(_native.simulate(_keywords(kw), sample_every, times))
+
+
+def theory(alpha: float = 60.0, n: int = 10, b: float = 1.3) -> Dict[str, Any]:
+    """The linear theory, as ``ladder theory --json`` prints it: ``a``,
+    ``u_min`` and ``barrier`` (m g s), ``kappa``, ``winding_number``,
+    ``gap_omega_plus_q0``, ``omega_max``, zero modes, ...
+
+    - ``alpha``: degrees, 0 ≤ |α| ≤ 90. Default 60.
+    - ``n``: blocks of the finite chain, 2 to 400. Default 10.
+    - ``b``: rest length of the B springs, s. Default 1.3.
+    """
+    return json.loads(_native.theory(float(alpha), int(n), float(b)))
+
+
+def catalogue() -> List[Tuple[str, str, str]]:
+    """The built-in scenes (``ladder list``): (ID, kind, title) tuples."""
+    return _native.catalogue()
+
+
+# --------------------------------------------------------------- scenes
+
+_MOVIE_DEFAULTS = dict(frames=200, size=(640, 480), fps=25.0)
+
+
+def _size(size: Union[str, Tuple[int, int], None]) -> Tuple[int, int]:
+    if size is None:
+        return _MOVIE_DEFAULTS["size"]
+    if isinstance(size, str):
+        w, sep, h = size.lower().partition("x")
+        if not sep:
+            raise ValueError(f"size: expected WxH such as 640x480, got '{size}'")
+        return int(w), int(h)
+    w, h = size
+    return int(w), int(h)
+
+
+def _format(fmt: Union[str, Sequence[str], None]) -> Optional[str]:
+    if fmt is None or isinstance(fmt, str):
+        return fmt
+    return ",".join(fmt)
+
+
+class Scene:
+    """A scene: a model, the drive of block 1, a time window, an integrator
+    and a picture (docs/scenes.md). Every field has the paper's default.
+
+    Make one with :meth:`builtin`, :meth:`from_toml` or ``Scene(**keys)``
+    (the paper's scene with keywords applied, as :meth:`replace`).
+    """
+
+    __slots__ = ("_s",)
+
+    def __init__(self, **keys: Any):
+        base = _native._Scene.from_json("{}")
+        self._s = base.replace(_keywords(keys)) if keys else base
+
+    @classmethod
+    def _wrap(cls, native: Any) -> "Scene":
+        s = cls.__new__(cls)
+        s._s = native
+        return s
+
+    @classmethod
+    def builtin(cls, id: str, kind: Optional[str] = None) -> "Scene":
+        """The built-in scene ``id`` (``ladder list``, :func:`catalogue`):
+        ``"3"``, ``"S5"``, ``"pinning"``; ``kind="movie"`` where a figure
+        has the same ID. IDs are case-insensitive."""
+        return cls._wrap(_native._Scene.builtin(str(id), kind))
+
+    @classmethod
+    def from_toml(cls, source: Union[str, os.PathLike]) -> "Scene":
+        """A scene from TOML text, or from the file at a path (named after
+        the file, as ``ladder render`` does). Errors name the line, column
+        and key."""
+        if isinstance(source, os.PathLike):
+            return cls._wrap(_native._Scene.load(os.fspath(source)))
+        text = str(source)
+        looks_like_path = "\n" not in text and "=" not in text and "[" not in text
+        if looks_like_path and (text.endswith(".toml") or os.path.exists(text)):
+            return cls._wrap(_native._Scene.load(text))
+        return cls._wrap(_native._Scene.parse(text, "<toml>", "custom"))
+
+    def to_toml(self) -> str:
+        """The scene as a TOML file, every value written out (without its
+        name: a file takes its name from its file name)."""
+        return self._s.to_toml()
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The scene as a dict of its keys (docs/scenes.md)."""
+        return json.loads(self._s.to_json())
+
+    def replace(self, **keys: Any) -> "Scene":
+        """A changed copy: the keywords of :func:`simulate` (``alpha``,
+        ``n``, ``t_end``, ``flips``, ...), any scene key (``name``,
+        ``title``, ``model={...}``, ``output={"kind": "filmstrip", ...}``)
+        or a dotted key path (``**{"output.camera": "follow"}``)."""
+        return self._wrap(self._s.replace(_keywords(keys)))
+
+    @property
+    def name(self) -> str:
+        """The name of its files (``figure-NAME.png``, ``movie-NAME.gif``)."""
+        return self._s.name
+
+    @property
+    def kind(self) -> str:
+        """``figure``, ``movie`` or ``data``."""
+        return self._s.kind
+
+    @property
+    def title(self) -> str:
+        return self._s.title
+
+    @property
+    def runs(self) -> int:
+        """Number of simulations the scene runs (0 for theory figures)."""
+        return self._s.runs
+
+    def simulate(
+        self, sample_every: float = 10.0, samples: Optional[Sequence[float]] = None, index: int = 0
+    ) -> Run:
+        """Simulate run ``index`` of the scene (its only one, for most), as
+        :func:`simulate` does; samples every ``sample_every`` τ (default 10)
+        or at ``samples``."""
+        times = None if samples is None else [float(t) for t in samples]
+        return Run(self._s.simulate(sample_every, times, index), self)
+
+    def _args(self, format, frames, size, fps, scale):
+        return dict(
+            formats=_format(format),
+            frames=int(_MOVIE_DEFAULTS["frames"] if frames is None else frames),
+            size=_size(size),
+            fps=float(_MOVIE_DEFAULTS["fps"] if fps is None else fps),
+            scale=float(1.0 if scale is None else scale),
+        )
+
+    def render(
+        self,
+        format: Union[str, Sequence[str], None] = None,
+        size: Union[str, Tuple[int, int], None] = None,
+        style: Optional[Any] = None,
+        *,
+        frames: Optional[int] = None,
+        fps: Optional[float] = None,
+        scale: Optional[float] = None,
+        data: bool = False,
+    ) -> Union["Image", "Files"]:
+        """Render the scene as the command line does, in memory.
+
+        - ``format``: ``png``, ``svg``, ``pdf`` (figures), ``gif``, ``mp4``
+          (movies), or several (``"png,svg"`` or a list). Default png / gif.
+        - ``size``: a movie's frame size, ``(640, 480)`` or ``"640x480"``,
+          pixels. Default 640 × 480.
+        - ``style``: the scene's ``style`` key (print styles), where the
+          engine has one.
+        - ``frames``: frames of a movie, 2 to 5000. Default 200.
+        - ``fps``: frames per second of a movie. Default 25.
+        - ``scale``: pixels per design pixel of PNG figures. Default 1.
+        - ``data``: keep the data file (``NAME.json``) among the files.
+
+        Returns the bytes of the one file (an :class:`Image`, shown inline
+        by Jupyter) or, where the output has several files (a movie and its
+        kymograph, several formats), a :class:`Files` dict of name → bytes.
+        """
+        scene = self if style is None else self.replace(style=style)
+        files = scene._s.render(self._args(format, frames, size, fps, scale))
+        files = [(n, b) for n, b in files if data or not n.endswith(".json")]
+        if len(files) == 1:
+            return Image(files[0][1], files[0][0])
+        return Files((n, Image(b, n)) for n, b in files)
+
+    def save(
+        self,
+        dir: Union[str, os.PathLike] = "out",
+        format: Union[str, Sequence[str], None] = None,
+        size: Union[str, Tuple[int, int], None] = None,
+        *,
+        frames: Optional[int] = None,
+        fps: Optional[float] = None,
+        scale: Optional[float] = None,
+    ) -> List[Path]:
+        """Write the scene's files into ``dir`` exactly as ``ladder render
+        --out DIR`` does (atomically, the data file beside them); the
+        options as :meth:`render`. Returns the paths written."""
+        paths = self._s.save(os.fspath(dir), self._args(format, frames, size, fps, scale))
+        return [Path(p) for p in paths]
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Scene) and self._s == other._s
+
+    def __repr__(self) -> str:
+        return f"<Scene {self.kind} {self.name}: {self.title}; {self._s.parameters}>"
+
+
+# ---------------------------------------------------------- rendered files
+
+_MIME = {
+    "png": "image/png",
+    "svg": "image/svg+xml",
+    "gif": "image/gif",
+    "mp4": "video/mp4",
+    "pdf": "application/pdf",
+    "json": "application/json",
+    "csv": "text/csv",
+}
+
+
+class Image(bytes):
+    """The bytes of one rendered file, which Jupyter shows inline (PNG,
+    SVG, GIF, MP4; a PDF as an embedded object). ``name`` is its file name."""
+
+    name: str
+
+    def __new__(cls, data: bytes, name: str = ""):
+        obj = super().__new__(cls, data)
+        obj.name = name
+        return obj
+
+    @property
+    def format(self) -> str:
+        return self.name.rsplit(".", 1)[-1].lower() if "." in self.name else ""
+
+    def _repr_png_(self):
+        return bytes(self) if self.format == "png" else None
+
+    def _repr_svg_(self):
+        return self.decode("utf-8") if self.format == "svg" else None
+
+    def _repr_html_(self):
+        fmt = self.format
+        mime = _MIME.get(fmt)
+        if mime is None or fmt in ("json", "csv"):
+            return None
+        b64 = base64.b64encode(self).decode("ascii")
+        if fmt == "mp4":
+            return f'<video controls loop autoplay muted src="data:{mime};base64,{b64}"></video>'
+        if fmt == "pdf":
+            return f'<embed type="{mime}" width="100%" height="480" src="data:{mime};base64,{b64}">'
+        return f'<img alt="{self.name}" src="data:{mime};base64,{b64}">'
+
+    def save(self, path: Union[str, os.PathLike]) -> Path:
+        """Write the bytes to ``path`` (a folder: under the file's name)."""
+        p = Path(path)
+        if p.is_dir():
+            p = p / self.name
+        p.write_bytes(self)
+        return p
+
+    def __repr__(self) -> str:
+        return f"<Image {self.name}: {len(self)} bytes>"
+
+
+class Files(dict):
+    """Several rendered files: file name → :class:`Image`; Jupyter shows
+    each picture inline."""
+
+    def _repr_html_(self):
+        parts = []
+        for name, img in self.items():
+            html = img._repr_html_() if isinstance(img, Image) else None
+            if html:
+                parts.append(f"<figure>{html}<figcaption>{name}</figcaption></figure>")
+        return "".join(parts) or None
+
+    def __repr__(self) -> str:
+        inner = ", ".join(f"{k}: {len(v)} bytes" for k, v in self.items())
+        return f"<Files {inner}>"
+
+
+# ----------------------------------------------------------------- sweeps
+
+#: The parameters a sweep varies (``ladder sweep``'s grid flags).
+SWEEP_PARAMETERS = ("alpha", "n", "b", "gamma", "gravity", "inertia", "drive_time")
+
+
+class Table(dict):
+    """A sweep's results: column name → numpy array, every column of the
+    CSV ``ladder sweep`` writes, in its order and grid order: ``run``, the
+    parameters (``alpha`` ... ``drive_time``), ``outcome`` (strings:
+    propagated, stalled, pinned, diverged, undecided), ``blocks_flipped``,
+    ``front``, ``speed`` (blocks/τ) and ``t_decided`` (τ); NaN where the
+    CSV is empty. ``csv`` is the CSV's text, ``json`` the sweep's JSON
+    (every run's arrival times) as a dict."""
+
+    csv: str
+    json: Dict[str, Any]
+
+    def __init__(self, csv_text: str, json_text: str):
+        rows = list(csv.reader(io.StringIO(csv_text)))
+        header, body = rows[0], rows[1:]
+        cols: Dict[str, Any] = {}
+        for j, name in enumerate(header):
+            values = [r[j] for r in body]
+            if name == "outcome":
+                cols[name] = np.array(values, dtype=str)
+            elif name in ("run", "n", "blocks_flipped", "front"):
+                cols[name] = np.array([int(v) for v in values], dtype=np.int64)
+            else:
+                cols[name] = np.array([float(v) if v else np.nan for v in values], dtype=float)
+        super().__init__(cols)
+        self.csv = csv_text
+        self.json = json.loads(json_text)
+
+    def __len__(self) -> int:  # rows, as a table's length
+        return len(self["run"]) if "run" in self else 0
+
+    @property
+    def columns(self) -> List[str]:
+        return list(self.keys())
+
+    def to_pandas(self):
+        """The table as a pandas DataFrame (needs pandas)."""
+        import pandas as pd
+
+        return pd.DataFrame({k: self[k] for k in self.keys()})
+
+    def __repr__(self) -> str:
+        outcomes, counts = np.unique(self["outcome"], return_counts=True)
+        summary = ", ".join(f"{c} {o}" for o, c in zip(outcomes, counts))
+        return f"<Table of {len(self)} runs ({summary}); columns {', '.join(self.keys())}>"
+
+
+def sweep(
+    base: Optional[Scene] = None,
+    *,
+    cap: Optional[float] = None,
+    quiet: Optional[float] = None,
+    name: Optional[str] = None,
+    max_runs: int = 100_000,
+    **keys: Any,
+) -> Table:
+    """Run a scene over a grid of parameters and decide what the wave did
+    in each run, as ``ladder sweep`` does (same batch kernel, every core).
+
+    - a grid keyword per varied parameter (``alpha``, ``n``, ``b``,
+      ``gamma``, ``gravity``, ``inertia``, ``drive_time``): a list of
+      values, one value, or a range string ``"start:stop:step"``
+      (inclusive), e.g. ``sweep(alpha=[-50, -55, -60], gamma="0.01:0.04:0.01")``.
+    - ``base``: the scene swept (default: the paper's). Other keywords
+      (``t_end``, ``integrator``, ``tolerance``, scene keys) change it.
+    - ``cap``: latest time a run may reach undecided, τ. Default 100000.
+    - ``quiet``: the quiet rule's factor (docs/sweeps.md). Default 10.
+    - ``name``: the sweep's name (in its JSON). Default the base's.
+    - ``max_runs``: refuse a larger grid. Default 100000.
+
+    Returns a :class:`Table` equal to the CLI's ``sweep-NAME.csv``.
+    """
+    grid = {k: keys.pop(k) for k in list(keys) if k in SWEEP_PARAMETERS}
+    if not grid:
+        raise ValueError(
+            "sweep needs at least one grid keyword: " + ", ".join(SWEEP_PARAMETERS)
+        )
+    output: Dict[str, Any] = {"kind": "sweep", "grid": grid}
+    if cap is not None:
+        output["cap"] = cap
+    if quiet is not None:
+        output["quiet"] = quiet
+    keys["output"] = output
+    if name is not None:
+        keys["name"] = name
+    native = None if base is None else base._s
+    csv_text, json_text = _native.sweep(native, _keywords(keys), int(max_runs))
+    return Table(csv_text, json_text)

@@ -1,0 +1,185 @@
+"""Type stubs of jacobs_ladder (docs/python.md). Units: lengths in the block
+length s, times in τ = sqrt(m/k), α in degrees, arrays' angles in radians."""
+
+import os
+from pathlib import Path
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+ENGINE_VERSION: str
+SWEEP_PARAMETERS: Tuple[str, ...]
+
+class RunError(RuntimeError):
+    """A run that failed (a diverging integrator, ...): message and hint."""
+
+FloatArray = npt.NDArray[np.float64]
+
+class Run:
+    """A simulated run; arrays per block are samples × N."""
+
+    record: Dict[str, Any]
+    scene: Optional[Scene]
+    @property
+    def t(self) -> FloatArray:
+        """Sample times, τ."""
+    @property
+    def theta(self) -> FloatArray:
+        """θ_n(t), radians, samples × N (not wrapped)."""
+    @property
+    def x(self) -> FloatArray:
+        """X_n(t), block centres, s."""
+    @property
+    def y(self) -> FloatArray:
+        """Y_n(t), block centres, s."""
+    @property
+    def vx(self) -> FloatArray:
+        """dX_n/dt, s/τ."""
+    @property
+    def vy(self) -> FloatArray:
+        """dY_n/dt, s/τ."""
+    @property
+    def omega(self) -> FloatArray:
+        """dθ_n/dt, rad/τ."""
+    @property
+    def kink_position(self) -> FloatArray:
+        """Blocks flipped at each sample."""
+    @property
+    def arrival_times(self) -> FloatArray:
+        """Arrival time per block, τ; NaN where the block never flipped."""
+    @property
+    def final_theta_deg(self) -> FloatArray:
+        """θ_n at t_end, degrees, wrapped to (−180, 180]."""
+    @property
+    def n(self) -> int: ...
+    @property
+    def integrator(self) -> Dict[str, Any]:
+        """requested, name, dt, steps, force_evals; auto: tolerance, arrival_error (τ)."""
+    @property
+    def speed(self) -> float:
+        """Wave speed, blocks/τ; NaN when too few blocks flipped."""
+    @property
+    def waves(self) -> Optional[List[Dict[str, Any]]]:
+        """One record per domain wall, where the engine reports them."""
+    def to_dict(self) -> Dict[str, Any]: ...
+
+def simulate(
+    alpha: float = 60.0,
+    n: int = 10,
+    b: float = 1.3,
+    gamma: float = 0.02,
+    gravity: float = 2e-4,
+    inertia: float = 0.25,
+    drive_time: float = 1000.0,
+    flips: Optional[Sequence[float]] = None,
+    t_end: float = 4000.0,
+    integrator: str = "auto",
+    *,
+    dt: Optional[float] = None,
+    rtol: Optional[float] = None,
+    tolerance: Optional[float] = None,
+    second_flip: Optional[float] = None,
+    sample_every: float = 10.0,
+    samples: Optional[Sequence[float]] = None,
+    **scene_keys: Any,
+) -> Run:
+    """Simulate the ladder. alpha: degrees (default 60); n: blocks (10); b: s
+    (1.3); gamma (0.02); gravity G = mg/(ks) (2e-4); inertia: m s² (0.25);
+    drive_time: τ (1000); flips: start times, τ ([0]); t_end: τ (4000);
+    integrator: auto | explicit-euler | symplectic-euler | verlet | rk4 |
+    dopri5 (auto); dt: τ (0.01); rtol (1e-6); tolerance: τ (0.1);
+    sample_every: τ (10)."""
+
+def theory(alpha: float = 60.0, n: int = 10, b: float = 1.3) -> Dict[str, Any]:
+    """`ladder theory --json` as a dict. alpha: degrees (60); n (10); b: s (1.3)."""
+
+def catalogue() -> List[Tuple[str, str, str]]:
+    """The built-in scenes: (ID, kind, title)."""
+
+class Image(bytes):
+    """One rendered file's bytes, shown inline by Jupyter."""
+
+    name: str
+    def __new__(cls, data: bytes, name: str = "") -> Image: ...
+    @property
+    def format(self) -> str: ...
+    def _repr_png_(self) -> Optional[bytes]: ...
+    def _repr_svg_(self) -> Optional[str]: ...
+    def _repr_html_(self) -> Optional[str]: ...
+    def save(self, path: Union[str, os.PathLike[str]]) -> Path: ...
+
+class Files(Dict[str, Image]):
+    """Several rendered files: name → Image."""
+
+    def _repr_html_(self) -> Optional[str]: ...
+
+class Scene:
+    """A scene (docs/scenes.md): model, drive, window, integrator, picture."""
+
+    def __init__(self, **keys: Any) -> None: ...
+    @classmethod
+    def builtin(cls, id: str, kind: Optional[str] = None) -> Scene: ...
+    @classmethod
+    def from_toml(cls, source: Union[str, os.PathLike[str]]) -> Scene: ...
+    def to_toml(self) -> str: ...
+    def to_dict(self) -> Dict[str, Any]: ...
+    def replace(self, **keys: Any) -> Scene: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def kind(self) -> str: ...
+    @property
+    def title(self) -> str: ...
+    @property
+    def runs(self) -> int: ...
+    def simulate(
+        self, sample_every: float = 10.0, samples: Optional[Sequence[float]] = None, index: int = 0
+    ) -> Run:
+        """sample_every: τ (10)."""
+    def render(
+        self,
+        format: Union[str, Sequence[str], None] = None,
+        size: Union[str, Tuple[int, int], None] = None,
+        style: Optional[Any] = None,
+        *,
+        frames: Optional[int] = None,
+        fps: Optional[float] = None,
+        scale: Optional[float] = None,
+        data: bool = False,
+    ) -> Union[Image, Files]:
+        """format: png|svg|pdf|gif|mp4 or several (png / gif); size: WxH
+        pixels (640x480); frames (200); fps (25); scale (1)."""
+    def save(
+        self,
+        dir: Union[str, os.PathLike[str]] = "out",
+        format: Union[str, Sequence[str], None] = None,
+        size: Union[str, Tuple[int, int], None] = None,
+        *,
+        frames: Optional[int] = None,
+        fps: Optional[float] = None,
+        scale: Optional[float] = None,
+    ) -> List[Path]: ...
+
+class Table(Dict[str, Any]):
+    """A sweep's CSV as numpy columns."""
+
+    csv: str
+    json: Dict[str, Any]
+    def __init__(self, csv_text: str, json_text: str) -> None: ...
+    @property
+    def columns(self) -> List[str]: ...
+    def to_pandas(self) -> Any: ...
+
+def sweep(
+    base: Optional[Scene] = None,
+    *,
+    cap: Optional[float] = None,
+    quiet: Optional[float] = None,
+    name: Optional[str] = None,
+    max_runs: int = 100_000,
+    **keys: Any,
+) -> Table:
+    """Grid keywords alpha, n, b, gamma, gravity, inertia, drive_time: a
+    list, a value or "start:stop:step". cap: τ (100000); quiet (10)."""

@@ -1,0 +1,88 @@
+//! A run's numbers as numpy arrays, handed over without a copy: each
+//! array is one `Vec<f64>` built once (a pass over the samples that
+//! gathers one quantity in sample-major order) and given to numpy by
+//! `PyArray::from_vec`, which takes ownership of the vector's buffer;
+//! `reshape` to samples × N is a view of it.
+
+use jacobs_ladder::scene::Scene;
+use jacobs_ladder::scenes::RunData;
+use jacobs_ladder::scenes::run::SceneRun;
+use jacobs_ladder::{Error, Result};
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// A run's numbers, made without the GIL.
+pub struct RunArrays {
+    /// Blocks N.
+    n: usize,
+    /// (name, values, per block): per-block arrays are samples × N.
+    columns: Vec<(&'static str, Vec<f64>, bool)>,
+    /// The run's record as JSON: what a data file says of the run
+    /// (`RunData` without its frames): the integrator report, arrival
+    /// times, speed, and whatever else the library records.
+    record: String,
+}
+
+/// The arrays of `run` of `scene`.
+pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
+    let traj = &mut run.trajectory;
+    let n = traj.final_state.q.len() / 3;
+    let times = std::mem::take(&mut traj.times);
+    let states = std::mem::take(&mut traj.states);
+    let velocities = std::mem::take(&mut traj.velocities);
+    let kink = std::mem::take(&mut traj.kink_position);
+    // Layout of q and v: [X, Y, θ] per block (`model::ladder`).
+    let gather = |rows: &[Vec<f64>], k: usize| -> Vec<f64> {
+        let mut out = Vec::with_capacity(rows.len() * n);
+        for row in rows {
+            out.extend((0..n).map(|i| row[3 * i + k]));
+        }
+        out
+    };
+    let arrival: Vec<f64> = traj
+        .arrival_times
+        .iter()
+        .map(|t| t.unwrap_or(f64::NAN))
+        .collect();
+    let columns = vec![
+        ("t", times, false),
+        ("x", gather(&states, 0), true),
+        ("y", gather(&states, 1), true),
+        ("theta", gather(&states, 2), true),
+        ("vx", gather(&velocities, 0), true),
+        ("vy", gather(&velocities, 1), true),
+        ("omega", gather(&velocities, 2), true),
+        ("kink_position", kink, false),
+        ("arrival_times", arrival, false),
+        ("final_theta_deg", traj.final_theta_deg(), false),
+    ];
+    let mut record = serde_json::to_value(RunData::from_run(scene, &run))
+        .map_err(|e| Error::failed(format!("cannot encode the run: {e}")))?;
+    if let Some(m) = record.as_object_mut() {
+        m.remove("frames");
+    }
+    Ok(RunArrays {
+        n,
+        columns,
+        record: record.to_string(),
+    })
+}
+
+impl RunArrays {
+    /// A dict of numpy arrays, and `record` (JSON text).
+    pub fn into_dict(self, py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+        let d = PyDict::new(py);
+        for (name, values, per_block) in self.columns {
+            let rows = values.len() / self.n.max(1);
+            let a = PyArray1::from_vec(py, values);
+            if per_block {
+                d.set_item(name, a.reshape([rows, self.n])?)?;
+            } else {
+                d.set_item(name, a)?;
+            }
+        }
+        d.set_item("record", self.record)?;
+        Ok(d)
+    }
+}

@@ -1,0 +1,48 @@
+//! The one place where the library's errors become Python exceptions:
+//! bad input → `ValueError` with the CLI's one-line message (key path
+//! included), a failed run → `RunError` with its hint, a panic →
+//! `PanicException` (never an abort of the interpreter).
+
+use jacobs_ladder::Error;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::panic::PanicException;
+use pyo3::prelude::*;
+
+pyo3::create_exception!(
+    _native,
+    RunError,
+    PyRuntimeError,
+    "A run that failed (for example a diverging integrator): the message says what \
+     happened and gives a hint, as the command line's exit status 1 does."
+);
+
+/// The Python exception of a library error.
+pub fn to_py(e: Error) -> PyErr {
+    match e {
+        Error::BadInput(_) | Error::Limit(_) => PyValueError::new_err(e.to_string()),
+        Error::Failed(_) | Error::Diverged(_) | Error::Closed => RunError::new_err(e.to_string()),
+    }
+}
+
+/// The exception of a panic's payload.
+pub fn panicked(payload: Box<dyn std::any::Any + Send>) -> PyErr {
+    let what = payload
+        .downcast_ref::<String>()
+        .cloned()
+        .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
+        .unwrap_or_else(|| "unknown panic".into());
+    PanicException::new_err(format!(
+        "internal error in jacobs_ladder (please report it): {what}"
+    ))
+}
+
+/// Shorthand: a library result as a Python result.
+pub trait IntoPy<T> {
+    fn py_err(self) -> PyResult<T>;
+}
+
+impl<T> IntoPy<T> for Result<T, Error> {
+    fn py_err(self) -> PyResult<T> {
+        self.map_err(to_py)
+    }
+}

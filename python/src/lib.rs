@@ -1,0 +1,109 @@
+//! `jacobs_ladder._native`: the Python extension of `jacobs-ladder`, a thin
+//! layer over the library (no physics and no drawing here). Scenes cross
+//! as serde values (`kwargs`), arrays as numpy arrays made from the
+//! library's vectors (`arrays`), errors become exceptions in one place
+//! (`errors`), and every call into the engine runs without the GIL and
+//! stops on Ctrl-C (`work`). The package `jacobs_ladder` (python/) wraps
+//! these functions with keyword signatures, docstrings and Jupyter display.
+
+mod arrays;
+mod errors;
+mod kwargs;
+mod scene;
+mod work;
+
+use errors::IntoPy;
+use jacobs_ladder::catalog;
+use jacobs_ladder::scene::{OutputSpec, Scene};
+use jacobs_ladder::{Error, Result};
+use pyo3::prelude::*;
+
+/// `simulate(**keywords)`: the paper's scene with the keywords applied (a
+/// data run), simulated; samples every `sample_every` τ or at `samples`.
+#[pyfunction]
+#[pyo3(signature = (kwargs, sample_every=None, samples=None))]
+fn simulate<'py>(
+    py: Python<'py>,
+    kwargs: &str,
+    sample_every: Option<f64>,
+    samples: Option<Vec<f64>>,
+) -> PyResult<Bound<'py, pyo3::types::PyDict>> {
+    let base = Scene {
+        output: OutputSpec::Data,
+        ..Scene::default()
+    };
+    let scene = kwargs::apply(&base, kwargs).py_err()?;
+    scene::simulate_scene(py, scene, sample_every, samples)
+}
+
+/// `theory(alpha, n, b)`: the numbers of `ladder theory --json`, as JSON.
+#[pyfunction]
+fn theory(py: Python<'_>, alpha: f64, n: usize, b: f64) -> PyResult<String> {
+    work::run(py, move |_| {
+        let m = jacobs_ladder::scene::Model::default();
+        let params =
+            jacobs_ladder::model::Params::new(n, b, alpha, m.gamma, m.gravity, m.inertia)?;
+        let report = jacobs_ladder::theory::TheoryReport::compute(&params)?;
+        serde_json::to_string(&report).map_err(|e| Error::failed(format!("cannot encode: {e}")))
+    })
+}
+
+/// `sweep`: the base scene with `kwargs` applied (its `output` the sweep
+/// and its grid), run whole; returns (CSV, JSON) as `ladder sweep` writes
+/// them.
+#[pyfunction]
+#[pyo3(signature = (base, kwargs, max_runs))]
+fn sweep(
+    py: Python<'_>,
+    base: Option<&scene::PyScene>,
+    kwargs: &str,
+    max_runs: usize,
+) -> PyResult<(String, String)> {
+    let base = base.map_or_else(Scene::default, |s| s.scene.clone());
+    let scene = kwargs::apply(&base, kwargs).py_err()?;
+    work::run(py, move |_| sweep_tables(&scene, max_runs))
+}
+
+fn sweep_tables(scene: &Scene, max_runs: usize) -> Result<(String, String)> {
+    use jacobs_ladder::sweep::{Plan, results};
+    let plan = Plan::new(scene, max_runs)?.map_err(|e| {
+        Error::bad_input(format!("{e}; ask for fewer, or raise the cap with max_runs={}", e.runs))
+    })?;
+    let all: Vec<usize> = (0..plan.len()).collect();
+    let records = plan.run(&all, &|| {})?;
+    let stem = format!("sweep-{}", plan.scene.name);
+    let names = [format!("{stem}.csv"), format!("{stem}.json")];
+    let json = results::json(&plan, &records, &names)?;
+    Ok((
+        results::csv(&plan, &records),
+        String::from_utf8_lossy(&json).into_owned(),
+    ))
+}
+
+/// The built-in scenes: (ID, kind, title) in catalogue order.
+#[pyfunction]
+fn catalogue() -> PyResult<Vec<(String, String, String)>> {
+    Ok(catalog::catalogue()
+        .py_err()?
+        .iter()
+        .map(|e| {
+            (
+                e.id.clone(),
+                e.kind().name().to_string(),
+                jacobs_ladder::scene::describe::title(&e.scene),
+            )
+        })
+        .collect())
+}
+
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(theory, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(catalogue, m)?)?;
+    m.add_class::<scene::PyScene>()?;
+    m.add("RunError", m.py().get_type::<errors::RunError>())?;
+    m.add("VERSION", jacobs_ladder::version::LONG)?;
+    Ok(())
+}

@@ -1,0 +1,238 @@
+//! The scene class: a `jacobs_ladder::scene::Scene`, read from the
+//! catalogue or TOML, changed by keywords, simulated, rendered and saved
+//! as the command line does.
+
+use crate::arrays;
+use crate::errors::IntoPy;
+use crate::kwargs;
+use crate::work;
+use jacobs_ladder::cli::{MixedFormat, MovieFormat};
+use jacobs_ladder::scene::{Kind, Scene};
+use jacobs_ladder::{Error, Result, catalog, output, scene, scenes};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::path::PathBuf;
+
+/// A scene (native half of `jacobs_ladder.Scene`).
+#[pyclass(name = "_Scene", module = "jacobs_ladder._native", frozen)]
+pub struct PyScene {
+    pub scene: Scene,
+}
+
+/// The render options of the command line (`--format`, `--frames`,
+/// `--size`, `--fps`, `--scale`), checked by its own code.
+#[derive(FromPyObject)]
+pub struct RenderArgs {
+    formats: Option<String>,
+    frames: usize,
+    size: (u32, u32),
+    fps: f64,
+    scale: f32,
+}
+
+impl RenderArgs {
+    fn outputs(&self, scene: &Scene) -> Result<(scenes::MovieOptions, scenes::Outputs)> {
+        let movie = MovieFormat {
+            frames: self.frames,
+            size: self.size,
+            fps: self.fps,
+        };
+        let opts = movie.options()?;
+        let mixed = MixedFormat {
+            formats: self.formats.clone().unwrap_or_else(|| "png,gif".into()),
+            scale: self.scale,
+        };
+        let outputs = mixed.outputs(&opts)?;
+        if self.formats.is_some() {
+            mixed.check_covers(std::slice::from_ref(scene))?;
+        }
+        Ok((opts, outputs))
+    }
+}
+
+#[pymethods]
+impl PyScene {
+    /// The built-in scene `id` (`ladder list`); `kind` "figure" or "movie"
+    /// where both have the ID.
+    #[staticmethod]
+    #[pyo3(signature = (id, kind=None))]
+    fn builtin(id: &str, kind: Option<&str>) -> PyResult<Self> {
+        let entry = match kind {
+            None => catalog::find_any(id),
+            Some("figure") => catalog::find(Kind::Figure, id),
+            Some("movie") => catalog::find(Kind::Movie, id),
+            Some(other) => Err(Error::bad_input(format!(
+                "kind must be \"figure\" or \"movie\", got \"{other}\""
+            ))),
+        }
+        .py_err()?;
+        Ok(Self {
+            scene: entry.scene.clone(),
+        })
+    }
+
+    /// A scene from TOML text; `origin` names it in messages.
+    #[staticmethod]
+    fn parse(text: &str, origin: &str, name: &str) -> PyResult<Self> {
+        Ok(Self {
+            scene: scene::file::parse(text, origin, name).py_err()?,
+        })
+    }
+
+    /// The scene file at `path` (named after the file).
+    #[staticmethod]
+    fn load(path: PathBuf) -> PyResult<Self> {
+        Ok(Self {
+            scene: scene::file::load(&path).py_err()?,
+        })
+    }
+
+    /// A scene from its JSON value (`to_json`), checked.
+    #[staticmethod]
+    fn from_json(text: &str) -> PyResult<Self> {
+        let value: Scene = serde_json::from_str(text)
+            .map_err(|e| Error::bad_input(format!("not a scene: {e}")))
+            .py_err()?;
+        Ok(Self {
+            scene: kwargs::checked(value).py_err()?,
+        })
+    }
+
+    fn to_toml(&self) -> PyResult<String> {
+        scene::file::to_toml(&self.scene).py_err()
+    }
+
+    fn to_json(&self) -> PyResult<String> {
+        serde_json::to_string(&self.scene)
+            .map_err(|e| Error::failed(format!("cannot encode the scene: {e}")))
+            .py_err()
+    }
+
+    /// A changed copy (keywords as JSON, `kwargs`).
+    fn replace(&self, kwargs: &str) -> PyResult<Self> {
+        Ok(Self {
+            scene: kwargs::apply(&self.scene, kwargs).py_err()?,
+        })
+    }
+
+    #[getter]
+    fn name(&self) -> String {
+        self.scene.name.clone()
+    }
+
+    #[getter]
+    fn kind(&self) -> &'static str {
+        self.scene.kind().name()
+    }
+
+    #[getter]
+    fn title(&self) -> String {
+        scene::describe::title(&self.scene)
+    }
+
+    #[getter]
+    fn parameters(&self) -> String {
+        scene::describe::parameters(&self.scene)
+    }
+
+    /// Number of simulations the scene runs.
+    #[getter]
+    fn runs(&self) -> usize {
+        self.scene.runs().len()
+    }
+
+    fn __eq__(&self, other: &Self) -> bool {
+        self.scene == other.scene
+    }
+
+    /// Simulates run `index` of the scene (its only one for most scenes).
+    #[pyo3(signature = (sample_every=None, samples=None, index=0))]
+    fn simulate<'py>(
+        &self,
+        py: Python<'py>,
+        sample_every: Option<f64>,
+        samples: Option<Vec<f64>>,
+        index: usize,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let runs = self.scene.runs();
+        let Some((single, _)) = runs.into_iter().nth(index) else {
+            let count = self.scene.runs().len();
+            return Err(Error::bad_input(format!(
+                "{} {} has {count} simulation{}; index must be below that",
+                self.scene.kind().name(),
+                self.scene.name,
+                if count == 1 { "" } else { "s" }
+            )))
+            .py_err();
+        };
+        simulate_scene(py, single, sample_every, samples)
+    }
+
+    /// The files the command line writes for this scene, as (name, bytes).
+    fn render(&self, py: Python<'_>, args: RenderArgs) -> PyResult<Vec<(String, Vec<u8>)>> {
+        let scene = self.scene.clone();
+        work::run(py, move |_| {
+            let (opts, outputs) = args.outputs(&scene)?;
+            scenes::render_with(&scene, &opts, &outputs, &|| {})
+        })
+    }
+
+    /// Writes the files into `dir` as `ladder render --out DIR` does
+    /// (atomically; every target checked first); returns their paths.
+    fn save(&self, py: Python<'_>, dir: PathBuf, args: RenderArgs) -> PyResult<Vec<PathBuf>> {
+        let scene = self.scene.clone();
+        work::run(py, move |_| {
+            let (opts, outputs) = args.outputs(&scene)?;
+            jacobs_ladder::cli::convert::check_out_dir(&dir)?;
+            let targets: Vec<PathBuf> = scenes::file_names_for(&scene, &outputs)
+                .iter()
+                .map(|n| dir.join(n))
+                .collect();
+            output::check_targets(&targets)?;
+            let files = scenes::render_with(&scene, &opts, &outputs, &|| {})?;
+            let mut written = Vec::with_capacity(files.len());
+            for (name, bytes) in &files {
+                let path = dir.join(name);
+                output::write_atomic(&path, bytes)?;
+                written.push(path);
+            }
+            Ok(written)
+        })
+    }
+}
+
+/// Simulates a single-run scene without the GIL; the arrays as a dict.
+pub fn simulate_scene(
+    py: Python<'_>,
+    scene: Scene,
+    sample_every: Option<f64>,
+    samples: Option<Vec<f64>>,
+) -> PyResult<Bound<'_, PyDict>> {
+    let out = work::run(py, move |stop| {
+        let times = match samples {
+            Some(t) => t,
+            None => sample_times(&scene, sample_every.unwrap_or(DEFAULT_SAMPLE_EVERY))?,
+        };
+        let stepping = jacobs_ladder::sim::Stepping::Fastest;
+        let run =
+            scenes::run::simulate_with(&scene, &times, stepping, &|t| stop.check(t))?;
+        arrays::arrays(&scene, run)
+    })?;
+    out.into_dict(py)
+}
+
+/// Interval of the samples kept, τ: the CSV's of `ladder simulate`.
+const DEFAULT_SAMPLE_EVERY: f64 = 10.0;
+
+/// 0, every, 2 every, ... up to t_end (as `simulate --csv`), within the
+/// cap on samples × N.
+fn sample_times(scene: &Scene, every: f64) -> Result<Vec<f64>> {
+    if !(every.is_finite() && every > 0.0) {
+        return Err(Error::bad_input(format!(
+            "sample_every must be a finite time > 0, got {every}"
+        )));
+    }
+    let count = (scene.run.t_end / every).floor() + 1.0;
+    jacobs_ladder::limits::Limits::active().check_samples(count, scene.model.n)?;
+    Ok((0..count as usize).map(|k| k as f64 * every).collect())
+}

@@ -1,0 +1,89 @@
+//! Running the engine with the GIL released, stoppable by Ctrl-C.
+//!
+//! The work runs on a thread of its own while the calling thread, without
+//! the GIL, waits for it and every 0.1 s takes the GIL back for a moment
+//! to let Python look at its signals (`check_signals`, which runs the
+//! SIGINT handler on the main thread). On KeyboardInterrupt the call
+//! returns at once with that exception and raises a flag: a simulation
+//! reads it in the run loop's progress hook (every 5 τ of simulated time)
+//! and unwinds, so its thread ends too; work without such a hook (drawing,
+//! encoding) finishes in the background and its result is dropped. A
+//! panic of the work becomes a Python exception (`errors::panicked`).
+
+use crate::errors::{panicked, to_py};
+use jacobs_ladder::Error;
+use pyo3::prelude::*;
+use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{RecvTimeoutError, channel};
+use std::time::Duration;
+
+/// How often the waiting thread lets Python handle its signals.
+const POLL: Duration = Duration::from_millis(100);
+/// How long an interrupted call waits for its work to unwind.
+const UNWIND_WAIT: Duration = Duration::from_millis(500);
+
+/// The unwinding payload of cancelled work (not a panic: no message).
+struct Cancelled;
+
+/// What the work is given: a progress hook that stops it once the caller
+/// was interrupted.
+#[derive(Clone)]
+pub struct Stop(Arc<AtomicBool>);
+
+impl Stop {
+    /// For the run loop's `progress` hook: unwinds out of the work once
+    /// the call was interrupted.
+    pub fn check(&self, _t: f64) {
+        if self.0.load(Ordering::Relaxed) {
+            resume_unwind(Box::new(Cancelled));
+        }
+    }
+}
+
+/// Runs `work` without the GIL, on its own thread; Ctrl-C raises
+/// KeyboardInterrupt within [`POLL`].
+pub fn run<T, F>(py: Python<'_>, work: F) -> PyResult<T>
+where
+    T: Send + 'static,
+    F: FnOnce(&Stop) -> Result<T, Error> + Send + 'static,
+{
+    let stop = Stop(Arc::new(AtomicBool::new(false)));
+    let (tx, rx) = channel();
+    let worker_stop = stop.clone();
+    std::thread::Builder::new()
+        .name("jacobs-ladder".into())
+        .spawn(move || {
+            let result = catch_unwind(AssertUnwindSafe(|| work(&worker_stop)));
+            let _ = tx.send(result);
+        })
+        .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(format!("cannot start a thread: {e}")))?;
+    let outcome = py.detach(|| {
+        loop {
+            match rx.recv_timeout(POLL) {
+                Ok(result) => return Ok(result),
+                Err(RecvTimeoutError::Timeout) => {
+                    if let Err(interrupt) = Python::attach(|py| py.check_signals()) {
+                        stop.0.store(true, Ordering::Relaxed);
+                        let _ = rx.recv_timeout(UNWIND_WAIT);
+                        return Err(interrupt);
+                    }
+                }
+                Err(RecvTimeoutError::Disconnected) => {
+                    return Err(pyo3::exceptions::PyRuntimeError::new_err(
+                        "the engine's thread ended without a result",
+                    ));
+                }
+            }
+        }
+    })?;
+    match outcome {
+        Ok(Ok(value)) => Ok(value),
+        Ok(Err(e)) => Err(to_py(e)),
+        Err(payload) if payload.is::<Cancelled>() => Err(
+            pyo3::exceptions::PyKeyboardInterrupt::new_err("interrupted"),
+        ),
+        Err(payload) => Err(panicked(payload)),
+    }
+}

@@ -1,0 +1,80 @@
+"""The engine releases the GIL while it works, and Ctrl-C stops a long run
+(SPEC section 11)."""
+
+import _thread
+import os
+import threading
+import time
+
+import pytest
+
+import jacobs_ladder as jl
+
+# A run of about 0.2-0.4 s on one core: the paper's scheme, 40 000 τ.
+WORK = dict(integrator="symplectic-euler", t_end=40_000, sample_every=1000)
+
+
+def test_python_runs_while_the_engine_works():
+    """While a simulation runs in another thread, this thread executes
+    Python (it could not if the call held the GIL)."""
+    done = threading.Event()
+
+    def work():
+        jl.simulate(**WORK)
+        done.set()
+
+    worker = threading.Thread(target=work)
+    worker.start()
+    ticks = 0
+    while not done.is_set():
+        ticks += 1
+        time.sleep(0.001)
+    worker.join()
+    assert ticks > 20, f"this thread ran only {ticks} times during the simulation"
+
+
+@pytest.mark.skipif((os.cpu_count() or 1) < 2, reason="one core: two threads cannot overlap")
+def test_two_threads_run_two_simulations_at_once():
+    """Two simulations in two threads take clearly less wall time than the
+    same two one after the other (best of three tries, a generous ratio:
+    the machine may be shared)."""
+
+    def serial():
+        jl.simulate(**WORK)
+        jl.simulate(**WORK)
+
+    def parallel():
+        threads = [threading.Thread(target=jl.simulate, kwargs=WORK) for _ in range(2)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+
+    def wall(f):
+        start = time.perf_counter()
+        f()
+        return time.perf_counter() - start
+
+    jl.simulate(**WORK)  # warm
+    ratios = []
+    for _ in range(3):
+        ratios.append(wall(parallel) / wall(serial))
+        if ratios[-1] < 0.8:
+            break
+    assert min(ratios) < 0.8, f"two threads took {min(ratios):.2f} of the serial time: {ratios}"
+
+
+def test_ctrl_c_stops_a_long_run_within_a_second():
+    """A run of about a minute, interrupted after 0.5 s as Ctrl-C does
+    (`_thread.interrupt_main` raises SIGINT's effect in the main thread),
+    raises KeyboardInterrupt within a second; the engine is usable after."""
+    timer = threading.Timer(0.5, _thread.interrupt_main)
+    start = time.perf_counter()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        jl.simulate(integrator="symplectic-euler", t_end=5e6, sample_every=1e6)
+    elapsed = time.perf_counter() - start
+    timer.join()
+    assert elapsed < 1.5, f"stopped after {elapsed:.2f} s"
+    run = jl.simulate(n=6, t_end=1500, sample_every=500)
+    assert run.t[-1] == 1500
