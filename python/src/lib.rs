@@ -41,8 +41,7 @@ fn simulate<'py>(
 fn theory(py: Python<'_>, alpha: f64, n: usize, b: f64) -> PyResult<String> {
     work::run(py, move |_| {
         let m = jacobs_ladder::scene::Model::default();
-        let params =
-            jacobs_ladder::model::Params::new(n, b, alpha, m.gamma, m.gravity, m.inertia)?;
+        let params = jacobs_ladder::model::Params::new(n, b, alpha, m.gamma, m.gravity, m.inertia)?;
         let report = jacobs_ladder::theory::TheoryReport::compute(&params)?;
         serde_json::to_string(&report).map_err(|e| Error::failed(format!("cannot encode: {e}")))
     })
@@ -67,7 +66,10 @@ fn sweep(
 fn sweep_tables(scene: &Scene, max_runs: usize) -> Result<(String, String)> {
     use jacobs_ladder::sweep::{Plan, results};
     let plan = Plan::new(scene, max_runs)?.map_err(|e| {
-        Error::bad_input(format!("{e}; ask for fewer, or raise the cap with max_runs={}", e.runs))
+        Error::bad_input(format!(
+            "{e}; ask for fewer, or raise the cap with max_runs={}",
+            e.runs
+        ))
     })?;
     let all: Vec<usize> = (0..plan.len()).collect();
     let records = plan.run(&all, &|| {})?;

@@ -22,6 +22,7 @@ pub struct PyScene {
 /// The render options of the command line (`--format`, `--frames`,
 /// `--size`, `--fps`, `--scale`), checked by its own code.
 #[derive(FromPyObject)]
+#[pyo3(from_item_all)]
 pub struct RenderArgs {
     formats: Option<String>,
     frames: usize,
@@ -214,8 +215,7 @@ pub fn simulate_scene(
             None => sample_times(&scene, sample_every.unwrap_or(DEFAULT_SAMPLE_EVERY))?,
         };
         let stepping = jacobs_ladder::sim::Stepping::Fastest;
-        let run =
-            scenes::run::simulate_with(&scene, &times, stepping, &|t| stop.check(t))?;
+        let run = scenes::run::simulate_with(&scene, &times, stepping, &|t| stop.check(t))?;
         arrays::arrays(&scene, run)
     })?;
     out.into_dict(py)

@@ -58,8 +58,10 @@ where
             let result = catch_unwind(AssertUnwindSafe(|| work(&worker_stop)));
             let _ = tx.send(result);
         })
-        .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(format!("cannot start a thread: {e}")))?;
-    let outcome = py.detach(|| {
+        .map_err(|e| {
+            pyo3::exceptions::PyRuntimeError::new_err(format!("cannot start a thread: {e}"))
+        })?;
+    let outcome = py.detach(move || {
         loop {
             match rx.recv_timeout(POLL) {
                 Ok(result) => return Ok(result),
