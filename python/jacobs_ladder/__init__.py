@@ -25,13 +25,10 @@ The whole tour: docs/python.md.
 
 from __future__ import annotations
 
-import base64
-import csv
-import io
 import json
 import os
 from pathlib import Path
-from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -476,6 +473,8 @@ class Image(bytes):
         mime = _MIME.get(fmt)
         if mime is None or fmt in ("json", "csv"):
             return None
+        import base64
+
         b64 = base64.b64encode(self).decode("ascii")
         if fmt == "mp4":
             return f'<video controls loop autoplay muted src="data:{mime};base64,{b64}"></video>'
@@ -531,6 +530,9 @@ class Table(dict):
     json: Dict[str, Any]
 
     def __init__(self, csv_text: str, json_text: str):
+        import csv
+        import io
+
         rows = list(csv.reader(io.StringIO(csv_text)))
         header, body = rows[0], rows[1:]
         cols: Dict[str, Any] = {}
