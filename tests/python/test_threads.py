@@ -25,12 +25,16 @@ def test_python_runs_while_the_engine_works():
 
     worker = threading.Thread(target=work)
     worker.start()
-    ticks = 0
+    ticks, seen = 0, 0
+    linux = os.path.isdir("/proc/self/task")
     while not done.is_set():
         ticks += 1
+        if linux:
+            seen = max(seen, engine_threads())
         time.sleep(0.001)
     worker.join()
     assert ticks > 20, f"this thread ran only {ticks} times during the simulation"
+    assert seen >= 1 or not linux, "the engine's thread was seen while it worked"
 
 
 def busy_reason():
@@ -72,10 +76,26 @@ def test_two_threads_run_two_simulations_at_once():
     assert max(rates) > 1.4, f"CPU seconds per wall second with two threads: {rates}"
 
 
+def engine_threads():
+    """Threads of this process named as the engine's worker (Linux)."""
+    count = 0
+    for task in os.listdir("/proc/self/task"):
+        try:
+            with open(f"/proc/self/task/{task}/comm") as f:
+                count += f.read().strip() == "jacobs-ladder"
+        except OSError:
+            pass
+    return count
+
+
 def test_ctrl_c_stops_a_long_run_within_a_second():
     """A run of about a minute, interrupted after 0.5 s as Ctrl-C does
     (`_thread.interrupt_main` raises SIGINT's effect in the main thread),
     raises KeyboardInterrupt within a second; the engine is usable after."""
+    linux = os.path.isdir("/proc/self/task")
+    # Threads named so before the call (the engine's thread pool, made by
+    # an earlier call from the engine's thread, inherits its name).
+    before = engine_threads() if linux else 0
     timer = threading.Timer(0.5, _thread.interrupt_main)
     start = time.perf_counter()
     timer.start()
@@ -84,5 +104,11 @@ def test_ctrl_c_stops_a_long_run_within_a_second():
     elapsed = time.perf_counter() - start
     timer.join()
     assert elapsed < 1.5, f"stopped after {elapsed:.2f} s"
+    # The engine's thread ended too (it does not run on in the background).
+    if linux:
+        deadline = time.perf_counter() + 1.0
+        while engine_threads() > before and time.perf_counter() < deadline:
+            time.sleep(0.01)
+        assert engine_threads() == before, "the interrupted simulation still runs"
     run = jl.simulate(n=6, t_end=1500, sample_every=500)
     assert run.t[-1] == 1500
