@@ -277,7 +277,7 @@ pub struct MovieFormat {
     pub fps: f64,
     /// Quality of MP4 movies: draft, standard, high or best (H.264
     /// quantiser 30, 24, 18, 12; each step about 1.5 to 2 times the bytes;
-    /// high is not told apart from the GIF, docs/formats.md)
+    /// docs/formats.md gives sizes and PSNR against the GIF)
     #[arg(
         long,
         value_enum,

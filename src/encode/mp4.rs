@@ -5,7 +5,7 @@
 //!
 //! The encoder runs in a thread of its own: the caller converts each frame
 //! to Y′CbCr 4:2:0 and hands it over, then draws the next frame while the
-//! encoder works. Fixed quantiser (no rate control), so a frame's quality
+//! encoder works. Fixed quantiser (`Mp4Quality`), so a frame's quality
 //! does not depend on its neighbours and the bytes are reproducible.
 
 use super::format::Mp4Quality;
@@ -14,7 +14,7 @@ use super::yuv::{Yuv420, rgba_to_yuv420};
 use crate::error::{Error, Result};
 use openh264::OpenH264API;
 use openh264::encoder::{
-    Complexity, Encoder, EncoderConfig, FrameRate, FrameType, IntraFramePeriod, QpRange,
+    BitRate, Complexity, Encoder, EncoderConfig, FrameRate, FrameType, IntraFramePeriod, QpRange,
     RateControlMode, UsageType, VuiConfig,
 };
 use openh264::formats::YUVSlices;
@@ -22,6 +22,9 @@ use std::sync::mpsc::{Receiver, SyncSender, sync_channel};
 use std::thread::JoinHandle;
 use tiny_skia::Pixmap;
 
+/// The bitrate given to OpenH264's rate controller, bits per second: far
+/// above what any frame needs, so the fixed QP alone sets the quality.
+const MAX_BITRATE: u32 = 50_000_000;
 /// A key frame at least every this many seconds (for seeking).
 pub const KEY_FRAME_SECONDS: f64 = 5.0;
 /// Frames that may wait for the encoder: bounds the memory held.
@@ -51,7 +54,13 @@ impl Mp4Writer {
         super::check_movie_frame(super::Format::Mp4, width, height, fps)?;
         let config = EncoderConfig::new()
             .usage_type(UsageType::CameraVideoRealTime)
-            .rate_control_mode(RateControlMode::Off)
+            // With rate control off OpenH264 takes the layer's own QP
+            // (26, which the crate does not expose) and ignores the range;
+            // in quality mode every QP is clipped to the range, so a range
+            // of one value fixes it, and a bitrate far above what any
+            // frame needs keeps the controller from skipping frames.
+            .rate_control_mode(RateControlMode::Quality)
+            .bitrate(BitRate::from_bps(MAX_BITRATE))
             .qp(QpRange::new(qp, qp))
             .skip_frames(false)
             .max_frame_rate(FrameRate::from_hz(fps as f32))
