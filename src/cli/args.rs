@@ -21,32 +21,67 @@ use std::path::PathBuf;
                   Limits: N up to 100000 blocks (the linear theory up to 400); a simulation \
                   up to 1e10 steps × N and 5e7 samples × N; a movie up to 5000 frames, 4096 \
                   pixels a side and 5e9 frames × pixels. Time and memory grow linearly in each \
-                  (docs/limits.md); the --max-* flags raise the caps.",
+                  (docs/limits.md); the --max-* flags of the commands they limit raise the caps.",
     allow_negative_numbers = true
 )]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
-    #[command(flatten)]
-    pub limits: LimitArgs,
 }
 
-/// Caps on the cost of one command (`crate::limits`, docs/limits.md). A
+/// Caps on the cost of one command (`crate::limits`, docs/limits.md), as
+/// given by the flags of the command that has them (the defaults where
+/// none is given).
+#[derive(Debug, Clone, Default)]
+pub struct LimitArgs {
+    pub max_block_steps: Option<f64>,
+    pub max_block_samples: Option<f64>,
+    pub max_pixels: Option<f64>,
+}
+
+/// The caps on a simulation's cost, on the commands that simulate. A
 /// request past a cap is refused before any work, with the flag that
 /// raises it.
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Limits (docs/limits.md)")]
-pub struct LimitArgs {
+pub struct SimLimitArgs {
     /// Most steps × N of one simulation (about 10 ns each) [default: 1e10]
-    #[arg(long, global = true, value_name = "X")]
+    #[arg(long, value_name = "X")]
     pub max_block_steps: Option<f64>,
     /// Most samples × N kept of one simulation (48 bytes each in memory)
     /// [default: 5e7]
-    #[arg(long, global = true, value_name = "X")]
+    #[arg(long, value_name = "X")]
     pub max_block_samples: Option<f64>,
+}
+
+/// The cap on a movie's size, on the commands that write movies.
+#[derive(Args, Debug, Clone, Default)]
+#[command(next_help_heading = "Limits (docs/limits.md)")]
+pub struct PixelLimitArgs {
     /// Most frames × width × height of one movie [default: 5e9]
-    #[arg(long, global = true, value_name = "X")]
+    #[arg(long, value_name = "X")]
     pub max_pixels: Option<f64>,
+}
+
+impl Command {
+    /// The caps the command's flags set (the defaults for a command that
+    /// has none).
+    pub fn limits(&self) -> LimitArgs {
+        let (sim, pixels) = match self {
+            Self::Simulate(a) => (Some(&a.limits), None),
+            Self::Movie(a) => (Some(&a.limits), Some(&a.pixel_limits)),
+            Self::Figure(a) => (Some(&a.limits), None),
+            Self::Render(a) => (Some(&a.limits), Some(&a.pixel_limits)),
+            Self::All(a) => (Some(&a.limits), Some(&a.pixel_limits)),
+            Self::Sweep(a) => (Some(&a.limits), None),
+            _ => (None, None),
+        };
+        LimitArgs {
+            max_block_steps: sim.and_then(|l| l.max_block_steps),
+            max_block_samples: sim.and_then(|l| l.max_block_samples),
+            max_pixels: pixels.and_then(|l| l.max_pixels),
+        }
+    }
 }
 
 #[derive(Subcommand, Debug)]
@@ -73,6 +108,19 @@ pub enum Command {
     /// each run (propagated, stalled, pinned, diverged or undecided); shard
     /// it over processes or machines and gather the shards
     Sweep(SweepArgs),
+    /// Print a shell completion script: `ladder completions bash >
+    /// ~/.local/share/bash-completion/completions/ladder` (zsh, fish,
+    /// powershell and elvish too)
+    Completions(CompletionsArgs),
+    /// Print the manual page (roff): `ladder man > ladder.1; man ./ladder.1`
+    Man,
+}
+
+#[derive(Args, Debug)]
+pub struct CompletionsArgs {
+    /// The shell: bash, zsh, fish, powershell or elvish
+    #[arg(value_name = "SHELL")]
+    pub shell: clap_complete::Shell,
 }
 
 #[derive(Args, Debug, Clone)]
@@ -203,6 +251,8 @@ pub struct SimulateArgs {
     /// otherwise carry over to the flags after them.
     #[command(flatten, next_help_heading = "Run")]
     pub tol: ToleranceArgs,
+    #[command(flatten)]
+    pub limits: SimLimitArgs,
 }
 
 /// `simulate --kernel`.
@@ -225,6 +275,26 @@ pub struct MovieFormat {
     /// Frames per second
     #[arg(long, default_value_t = 25.0, help_heading = "Movie format")]
     pub fps: f64,
+    /// Quality of MP4 movies: draft, standard, high or best (H.264
+    /// quantiser 30, 24, 18, 12; each step about 1.5 to 2 times the bytes;
+    /// docs/formats.md gives sizes and PSNR against the GIF)
+    #[arg(
+        long,
+        value_enum,
+        default_value_t = QualityArg::High,
+        value_name = "LEVEL",
+        help_heading = "Movie format"
+    )]
+    pub quality: QualityArg,
+}
+
+/// `--quality` of MP4 movies (`encode::Mp4Quality`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum QualityArg {
+    Draft,
+    Standard,
+    High,
+    Best,
 }
 
 fn parse_size(s: &str) -> std::result::Result<(u32, u32), String> {
@@ -243,10 +313,13 @@ pub struct MovieArgs {
     /// movie from the model flags
     pub id: Option<String>,
     /// Name of your movie's files: movie-NAME.gif, movie-NAME-kymograph.png,
-    /// movie-NAME.json [default: custom]
+    /// movie-NAME.json [default: made from what differs from the paper (or
+    /// from the movie ID given), e.g. a70-n20 or 4-a70]
     #[arg(long, value_name = "NAME")]
     pub name: Option<String>,
-    /// Camera: fixed (one window for every frame) or follow (moves with the kink)
+    /// Camera: auto (fixed when the ladder fits the frame, else folded into
+    /// columns), fixed (one window for every frame) or follow (moves with
+    /// the kink) [default: auto]
     #[arg(long, value_name = "CAMERA")]
     pub camera: Option<CameraArg>,
     #[command(flatten)]
@@ -268,10 +341,15 @@ pub struct MovieArgs {
         help_heading = "Movie format"
     )]
     pub formats: String,
+    #[command(flatten)]
+    pub limits: SimLimitArgs,
+    #[command(flatten)]
+    pub pixel_limits: PixelLimitArgs,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum CameraArg {
+    Auto,
     Fixed,
     Follow,
 }
@@ -282,7 +360,9 @@ pub struct FigureArgs {
     /// Figure ID (see `ladder list`) or all; leave it out to draw your own
     /// ladder from the model flags
     pub id: Option<String>,
-    /// Name of your figure's files: figure-NAME.png, figure-NAME.json [default: custom]
+    /// Name of your figure's files: figure-NAME.png, figure-NAME.json
+    /// [default: made from what differs from the paper (or from the figure
+    /// ID given), e.g. a70-n20 or 3-n20]
     #[arg(long, value_name = "NAME")]
     pub name: Option<String>,
     /// What your figure shows: a filmstrip of snapshots, the kymograph of
@@ -303,6 +383,8 @@ pub struct FigureArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub figure_format: FigureFormat,
+    #[command(flatten)]
+    pub limits: SimLimitArgs,
 }
 
 /// `--format` and `--scale` of figures.
@@ -372,6 +454,10 @@ pub struct RenderArgs {
     pub format: MovieFormat,
     #[command(flatten)]
     pub formats: MixedFormat,
+    #[command(flatten)]
+    pub limits: SimLimitArgs,
+    #[command(flatten)]
+    pub pixel_limits: PixelLimitArgs,
 }
 
 #[derive(Args, Debug)]
@@ -389,6 +475,10 @@ pub struct AllArgs {
     pub format: MovieFormat,
     #[command(flatten)]
     pub formats: MixedFormat,
+    #[command(flatten)]
+    pub limits: SimLimitArgs,
+    #[command(flatten)]
+    pub pixel_limits: PixelLimitArgs,
 }
 
 #[derive(Args, Debug)]
@@ -476,6 +566,8 @@ pub struct SweepArgs {
         help_heading = "Limits (docs/limits.md)"
     )]
     pub max_runs: usize,
+    #[command(flatten)]
+    pub limits: SimLimitArgs,
 }
 
 #[derive(Subcommand, Debug)]

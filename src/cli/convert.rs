@@ -4,12 +4,12 @@
 
 use super::args::{
     CameraArg, DriveArgs, FigureFormat, GridArgs, KernelArg, MixedFormat, ModelArgs, MovieFormat,
-    RunArgs, SweepArgs, ViewArg,
+    QualityArg, RunArgs, SweepArgs, ViewArg,
 };
 use crate::encode::{self, Formats, Kind as FormatKind};
 use crate::error::{Error, Result};
 use crate::scene::sweep::{Param, SweepSpec, Values};
-use crate::scene::{Camera, DriveSpec, Kind, Method, OutputSpec, Scene};
+use crate::scene::{Camera, DriveSpec, Kind, Method, OutputSpec, Scene, describe};
 use crate::scenes::{MovieOptions, Outputs};
 use crate::sim;
 use std::path::Path;
@@ -209,38 +209,56 @@ pub fn sweep_scene(args: &SweepArgs) -> Result<Scene> {
     checked(scene)
 }
 
-/// A custom movie: the paper's scene (or `base`) with the flags applied.
+/// A built-in entry a custom scene starts from: its ID and scene.
+pub type Origin<'a> = Option<(&'a str, &'a Scene)>;
+
+/// A custom movie: the paper's scene (or the built-in `origin`) with the
+/// flags applied, named by `name` or after what differs (`a70-n20`,
+/// `4-a70`).
 pub fn movie_scene(
-    base: Option<Scene>,
+    origin: Origin<'_>,
     name: Option<&str>,
     camera: Option<CameraArg>,
     model: &ModelArgs,
     drive: &DriveArgs,
     run: &RunArgs,
 ) -> Result<Scene> {
-    let mut scene = custom_base(base, name);
+    let mut scene = custom_base(origin);
     if let Some(c) = camera {
         scene.output = OutputSpec::Movie {
             camera: match c {
+                CameraArg::Auto => Camera::Auto,
                 CameraArg::Fixed => Camera::Fixed,
                 CameraArg::Follow => Camera::Follow,
             },
         };
     }
-    scene_from_flags(scene, model, drive, run)
+    let scene = scene_from_flags(scene, model, drive, run)?;
+    Ok(named(scene, origin, name))
 }
 
 /// A custom figure: a filmstrip at `times` (or a kymograph or arrival
-/// chart) of the paper's scene (or `base`) with the flags applied.
+/// chart) of the paper's scene (or of the built-in `origin`, its panels,
+/// window and label kept) with the flags applied, named by `name` or after
+/// what differs (`t0_900_1100-a70`, `3-n20`).
 pub fn figure_scene(
-    base: Option<Scene>,
+    origin: Origin<'_>,
     name: Option<&str>,
     view: Option<ViewArg>,
     times: Option<&[f64]>,
     flags: (&ModelArgs, &DriveArgs, &RunArgs),
 ) -> Result<Scene> {
-    let mut scene = custom_base(base, name);
-    let view = view.unwrap_or(ViewArg::Filmstrip);
+    let (model, drive, run) = flags;
+    if let Some((id, base)) = origin {
+        check_fits_entry(id, base, view, times, model, run)?;
+    }
+    let mut scene = custom_base(origin);
+    let view = match (view, &scene.output) {
+        (None, OutputSpec::Kymograph) => ViewArg::Kymograph,
+        (None, OutputSpec::Arrivals { .. }) => ViewArg::Arrivals,
+        (None, OutputSpec::Theory(_)) => return finish_theory(scene, origin, name, flags),
+        (v, _) => v.unwrap_or(ViewArg::Filmstrip),
+    };
     if times.is_some() && view != ViewArg::Filmstrip {
         return Err(Error::bad_input("--times applies only to --view filmstrip"));
     }
@@ -255,21 +273,151 @@ pub fn figure_scene(
             }
         }
         ViewArg::Kymograph => scene.output = OutputSpec::Kymograph,
-        ViewArg::Arrivals => scene.output = OutputSpec::Arrivals { curves: Vec::new() },
+        ViewArg::Arrivals => {
+            if !matches!(scene.output, OutputSpec::Arrivals { .. }) {
+                scene.output = OutputSpec::Arrivals { curves: Vec::new() }
+            }
+        }
     }
-    let (model, drive, run) = flags;
-    scene_from_flags(scene, model, drive, run)
+    let scene = scene_from_flags(scene, model, drive, run)?;
+    Ok(named(scene, origin, name))
 }
 
-/// The base of a custom scene: a built-in scene made custom (its own
-/// label and title dropped, so they are generated again), or the paper's.
-fn custom_base(base: Option<Scene>, name: Option<&str>) -> Scene {
-    let mut scene = base.unwrap_or_default();
-    scene.label = None;
-    scene.title = None;
+/// A theory figure (`ladder figure 2c --b 1.5`): the model flags applied.
+fn finish_theory(
+    scene: Scene,
+    origin: Origin<'_>,
+    name: Option<&str>,
+    (model, drive, run): (&ModelArgs, &DriveArgs, &RunArgs),
+) -> Result<Scene> {
+    let scene = scene_from_flags(scene, model, drive, run)?;
+    Ok(named(scene, origin, name))
+}
+
+/// Refuses a flag that a built-in figure's panels (or curves) set each for
+/// themselves, and a view or times on a figure of several runs or of the
+/// linear theory: the flag would be silently overridden or the figure's
+/// panels lost.
+fn check_fits_entry(
+    id: &str,
+    base: &Scene,
+    view: Option<ViewArg>,
+    times: Option<&[f64]>,
+    model: &ModelArgs,
+    run: &RunArgs,
+) -> Result<()> {
+    let edit = format!(
+        "print it with `ladder scene {id} > f.toml`, edit the file and `ladder render f.toml`"
+    );
+    let panels: &[crate::scene::Panel] = match &base.output {
+        OutputSpec::Filmstrip { panels, .. } => panels,
+        OutputSpec::Arrivals { curves } => curves,
+        OutputSpec::Theory(_) if view.is_some() || times.is_some() => {
+            return Err(Error::bad_input(format!(
+                "figure {id} is drawn from the linear theory: --view and --times apply to \
+                 simulated figures (leave out the ID for your own filmstrip)"
+            )));
+        }
+        _ => &[],
+    };
+    if panels.len() < 2 {
+        return Ok(());
+    }
+    if view.is_some() || times.is_some() {
+        return Err(Error::bad_input(format!(
+            "figure {id} has {} panels with times of their own: --view and --times would \
+             replace them; to change them, {edit}",
+            panels.len()
+        )));
+    }
+    let given = [
+        (
+            "--alpha",
+            model.alpha.is_some(),
+            panels.iter().any(|p| p.model.alpha.is_some()),
+        ),
+        (
+            "--n",
+            model.n.is_some(),
+            panels.iter().any(|p| p.model.n.is_some()),
+        ),
+        (
+            "--b",
+            model.b.is_some(),
+            panels.iter().any(|p| p.model.b.is_some()),
+        ),
+        (
+            "--gamma",
+            model.gamma.is_some(),
+            panels.iter().any(|p| p.model.gamma.is_some()),
+        ),
+        (
+            "--gravity",
+            model.gravity.is_some(),
+            panels.iter().any(|p| p.model.gravity.is_some()),
+        ),
+        (
+            "--inertia",
+            model.inertia.is_some(),
+            panels.iter().any(|p| p.model.inertia.is_some()),
+        ),
+        (
+            "--t-end",
+            run.t_end.is_some(),
+            panels.iter().any(|p| p.t_end.is_some()),
+        ),
+    ];
+    if let Some((flag, ..)) = given.iter().find(|(_, g, set)| *g && *set) {
+        return Err(Error::bad_input(format!(
+            "figure {id}: each of its {} panels sets {} itself, so {flag} cannot change it; \
+             to change them, {edit}",
+            panels.len(),
+            flag.trim_start_matches("--").replace('-', "_")
+        )));
+    }
+    Ok(())
+}
+
+/// The base of a custom scene: the paper's, or a built-in scene with its
+/// window, panels, label and title kept (the title made again from the
+/// fields where it had none) and its caption dropped (it describes the
+/// original).
+fn custom_base(origin: Origin<'_>) -> Scene {
+    let mut scene = origin.map(|(_, s)| s.clone()).unwrap_or_default();
     scene.caption = None;
-    scene.name = name.unwrap_or("custom").to_string();
     scene
+}
+
+/// `scene` under `name`, or under a name made from what differs from its
+/// origin: `a70-n20` from the paper's scene, `4-a70` from movie 4.
+fn named(mut scene: Scene, origin: Origin<'_>, name: Option<&str>) -> Scene {
+    scene.name = match (name, origin) {
+        (Some(n), _) => n.to_string(),
+        (None, Some((id, base))) => match describe::derived_name(&scene, base).as_str() {
+            "paper" => id.to_string(),
+            d => format!("{id}-{d}"),
+        },
+        (None, None) => {
+            let paper = Scene {
+                output: paper_output(&scene.output),
+                ..Scene::default()
+            };
+            describe::derived_name(&scene, &paper)
+        }
+    };
+    scene
+}
+
+/// The output a custom scene of this kind has when no flag changes it:
+/// a movie with the auto camera, or a filmstrip at the default times.
+fn paper_output(output: &OutputSpec) -> OutputSpec {
+    match output {
+        OutputSpec::Movie { .. } => OutputSpec::default(),
+        _ => OutputSpec::Filmstrip {
+            times: Vec::new(),
+            panels: Vec::new(),
+        },
+    }
 }
 
 impl MovieFormat {
@@ -286,6 +434,18 @@ impl MovieFormat {
         .map_err(|e| Error::bad_input(format!("--frames/--size/--fps: {e}")))?;
         crate::limits::Limits::active().check_movie(opts.frames, opts.width, opts.height)?;
         Ok(opts)
+    }
+}
+
+impl MovieFormat {
+    /// `--quality`, as the encoder's level.
+    pub fn mp4_quality(&self) -> encode::Mp4Quality {
+        match self.quality {
+            QualityArg::Draft => encode::Mp4Quality::Draft,
+            QualityArg::Standard => encode::Mp4Quality::Standard,
+            QualityArg::High => encode::Mp4Quality::High,
+            QualityArg::Best => encode::Mp4Quality::Best,
+        }
     }
 }
 
@@ -356,7 +516,7 @@ impl MixedFormat {
         let outputs = Outputs {
             figures: figures.unwrap_or(defaults.figures),
             movies: movies.unwrap_or(defaults.movies),
-            scale: defaults.scale,
+            ..defaults
         };
         check_movie_formats(&outputs.movies, movie)?;
         with_scale(outputs, self.scale)

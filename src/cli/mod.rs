@@ -29,7 +29,7 @@ where
 {
     crate::output::temp::install_signal_cleanup();
     let result = match Cli::try_parse_from(args) {
-        Ok(cli) => cli.limits.install().and_then(|()| run(cli)),
+        Ok(cli) => cli.command.limits().install().and_then(|()| run(cli)),
         Err(e) => return clap_exit(e),
     };
     match result {
@@ -150,6 +150,8 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Theory(args) => theory(&args),
         Command::Sweep(args) => sweep::sweep(&args),
         Command::List => output::print(&catalog::listing()?),
+        Command::Completions(args) => output::print(&completions(args.shell)?),
+        Command::Man => output::print(&man_page()?),
         Command::Scene(args) => {
             let entry = catalog::find_any(&args.id)?;
             output::print(&scene::file::to_toml(&entry.scene)?)
@@ -162,13 +164,19 @@ pub fn run(cli: Cli) -> Result<()> {
         }
         Command::Movie(args) => {
             let opts = args.format.options()?;
-            let outputs = convert::movie_outputs(&args.formats, &opts)?;
+            let outputs = Outputs {
+                mp4_quality: args.format.mp4_quality(),
+                ..convert::movie_outputs(&args.formats, &opts)?
+            };
             let scenes = movie_scenes(&args)?;
             render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, false)
         }
         Command::Render(args) => {
             let opts = args.format.options()?;
-            let outputs = args.formats.outputs(&opts)?;
+            let outputs = Outputs {
+                mp4_quality: args.format.mp4_quality(),
+                ..args.formats.outputs(&opts)?
+            };
             let scenes = args
                 .files
                 .iter()
@@ -193,7 +201,10 @@ pub fn run(cli: Cli) -> Result<()> {
         }
         Command::All(args) => {
             let opts = args.format.options()?;
-            let outputs = args.formats.outputs(&opts)?;
+            let outputs = Outputs {
+                mp4_quality: args.format.mp4_quality(),
+                ..args.formats.outputs(&opts)?
+            };
             let scenes: Vec<Scene> = catalog::catalogue()?
                 .iter()
                 .map(|e| e.scene.clone())
@@ -203,11 +214,56 @@ pub fn run(cli: Cli) -> Result<()> {
     }
 }
 
+/// The completion script of `shell` for every command and flag.
+fn completions(shell: clap_complete::Shell) -> Result<String> {
+    use clap::CommandFactory;
+    let mut bytes = Vec::new();
+    clap_complete::generate(shell, &mut Cli::command(), "ladder", &mut bytes);
+    String::from_utf8(bytes).map_err(|_| Error::failed("the completion script is not UTF-8"))
+}
+
+/// The manual page, ladder(1), in roff: the commands' help, one section
+/// each.
+fn man_page() -> Result<String> {
+    use clap::CommandFactory;
+    let cmd = Cli::command();
+    let mut bytes = Vec::new();
+    let failed = |e: std::io::Error| Error::failed(format!("cannot write the man page: {e}"));
+    let man = clap_mangen::Man::new(cmd.clone());
+    man.render_title(&mut bytes).map_err(failed)?;
+    man.render_name_section(&mut bytes).map_err(failed)?;
+    man.render_synopsis_section(&mut bytes).map_err(failed)?;
+    man.render_description_section(&mut bytes).map_err(failed)?;
+    man.render_subcommands_section(&mut bytes).map_err(failed)?;
+    for sub in cmd.get_subcommands().filter(|c| !c.is_hide_set()) {
+        let name = sub.get_name().to_string();
+        let sub = sub.clone().bin_name(format!("ladder {name}"));
+        let man = clap_mangen::Man::new(sub);
+        bytes.extend_from_slice(format!(".SH \"LADDER {}\"\n", name.to_uppercase()).as_bytes());
+        man.render_synopsis_section(&mut bytes).map_err(failed)?;
+        man.render_description_section(&mut bytes).map_err(failed)?;
+        man.render_options_section(&mut bytes).map_err(failed)?;
+    }
+    man.render_version_section(&mut bytes).map_err(failed)?;
+    String::from_utf8(bytes).map_err(|_| Error::failed("the man page is not UTF-8"))
+}
+
 /// The scenes of `ladder movie`: a built-in one, all of them, or a custom
-/// one from the flags (on the paper's scene, or on the named one).
+/// one from the flags (on the paper's scene, or on the named one, whose
+/// window and label it keeps). No ID and no flag: the catalogue and usage.
 fn movie_scenes(args: &MovieArgs) -> Result<Vec<Scene>> {
     let flags = args.model.any() || args.drive.any() || args.run.any();
     let custom = flags || args.name.is_some() || args.camera.is_some();
+    let make = |origin: convert::Origin<'_>| {
+        convert::movie_scene(
+            origin,
+            args.name.as_deref(),
+            args.camera,
+            &args.model,
+            &args.drive,
+            &args.run,
+        )
+    };
     match args.id.as_deref() {
         Some("all") if custom => Err(Error::bad_input(
             "model, drive and run flags apply to one movie, not to all",
@@ -218,23 +274,10 @@ fn movie_scenes(args: &MovieArgs) -> Result<Vec<Scene>> {
             if !custom {
                 return Ok(vec![entry.scene.clone()]);
             }
-            Ok(vec![convert::movie_scene(
-                Some(entry.scene.clone()),
-                args.name.as_deref(),
-                args.camera,
-                &args.model,
-                &args.drive,
-                &args.run,
-            )?])
+            Ok(vec![make(Some((&entry.id, &entry.scene)))?])
         }
-        None => Ok(vec![convert::movie_scene(
-            None,
-            args.name.as_deref(),
-            args.camera,
-            &args.model,
-            &args.drive,
-            &args.run,
-        )?]),
+        None if !custom => Err(what_to_make(Kind::Movie)?),
+        None => Ok(vec![make(None)?]),
     }
 }
 
@@ -242,9 +285,9 @@ fn movie_scenes(args: &MovieArgs) -> Result<Vec<Scene>> {
 fn figure_scenes(args: &FigureArgs) -> Result<Vec<Scene>> {
     let flags = args.model.any() || args.drive.any() || args.run.any();
     let custom = flags || args.name.is_some() || args.view.is_some() || args.times.is_some();
-    let make = |base: Option<Scene>| {
+    let make = |origin: convert::Origin<'_>| {
         convert::figure_scene(
-            base,
+            origin,
             args.name.as_deref(),
             args.view,
             args.times.as_deref(),
@@ -261,26 +304,35 @@ fn figure_scenes(args: &FigureArgs) -> Result<Vec<Scene>> {
             if !custom {
                 return Ok(vec![entry.scene.clone()]);
             }
-            if entry.scene.runs().len() > 1 {
-                return Err(Error::bad_input(format!(
-                    "figure {id} has several runs with parameters of their own; to change them, \
-                     print it with `ladder scene {id} > f.toml`, edit the file and `ladder render f.toml`"
-                )));
-            }
-            if let crate::scene::OutputSpec::Theory(_) = entry.scene.output {
-                let mut s = entry.scene.clone();
-                s.name = args.name.clone().unwrap_or_else(|| "custom".into());
-                return Ok(vec![convert::scene_from_flags(
-                    s,
-                    &args.model,
-                    &args.drive,
-                    &args.run,
-                )?]);
-            }
-            Ok(vec![make(Some(entry.scene.clone()))?])
+            Ok(vec![make(Some((&entry.id, &entry.scene)))?])
         }
+        None if !custom => Err(what_to_make(Kind::Figure)?),
         None => Ok(vec![make(None)?]),
     }
+}
+
+/// `ladder figure` or `ladder movie` with neither an ID nor a flag: the
+/// entries of that kind and the ways to call it (exit 2).
+fn what_to_make(kind: Kind) -> Result<Error> {
+    let name = kind.name();
+    let mut text = format!(
+        "{name} needs an ID, all, or model flags for your own {name}. The built-in {name}s:\n"
+    );
+    for e in catalog::entries(kind)? {
+        text.push_str(&format!(
+            "  {:<14} {}\n",
+            e.id,
+            scene::describe::title(&e.scene)
+        ));
+    }
+    let own = match kind {
+        Kind::Movie => "ladder movie --alpha 70 --n 20      your own movie (see --help)",
+        _ => "ladder figure --alpha 70 --times 0,900,1100   your own filmstrip (see --help)",
+    };
+    text.push_str(&format!(
+        "Usage:\n  ladder {name} ID       one of the above\n  ladder {name} all      every one\n  {own}"
+    ));
+    Ok(Error::bad_input(text))
 }
 
 fn builtin(kind: Kind) -> Result<Vec<Scene>> {
@@ -692,6 +744,7 @@ fn render_into(
         targets.push(out.join("index.html"));
     }
     output::check_targets(&targets)?;
+    warn_replaced(scenes, out)?;
     let start = Instant::now();
     // One movie: a bar over its frames; several scenes: over the scenes.
     let one_movie = scenes.len() == 1 && scenes[0].kind() == Kind::Movie;
@@ -748,6 +801,36 @@ fn render_into(
         out.display(),
         start.elapsed().as_secs_f64()
     ))
+}
+
+/// Says so, one line a scene, where a scene's files replace those of a
+/// different scene: its data file in `out` (`<stem>.json`) records the
+/// scene that made them. The same scene again replaces them silently.
+fn warn_replaced(scenes: &[Scene], out: &std::path::Path) -> Result<()> {
+    for s in scenes {
+        let data = out.join(format!("{}.json", s.stem()));
+        let Ok(text) = std::fs::read_to_string(&data) else {
+            continue;
+        };
+        let old = serde_json::from_str::<serde_json::Value>(&text)
+            .ok()
+            .and_then(|mut v| v.get_mut("scene").map(serde_json::Value::take));
+        let new = serde_json::to_value(s).ok();
+        if old.is_some() && old == new {
+            continue;
+        }
+        let what = match old.and_then(|v| serde_json::from_value::<Scene>(v).ok()) {
+            Some(o) => format!(" ({})", scene::describe::parameters(&o)),
+            None => String::new(),
+        };
+        output::eprint(&format!(
+            "ladder: warning: replacing the files of {}, which {} says were made from a \
+             different scene{what}; give --name (or the scene's name) to keep both\n",
+            s.stem(),
+            data.display()
+        ))?;
+    }
+    Ok(())
 }
 
 /// "1 file", "3 files".

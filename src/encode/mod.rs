@@ -19,7 +19,7 @@ mod svg;
 mod yuv;
 
 pub use format::{
-    Format, FormatError, Formats, Kind, MP4_MAX, check_movie_fps, check_movie_frame,
+    Format, FormatError, Formats, Kind, MP4_MAX, Mp4Quality, check_movie_fps, check_movie_frame,
     check_movie_size, parse_mixed,
 };
 pub use gif::{GIF_MAX_FPS, GifWriter, Palette, TRANSPARENT_INDEX};

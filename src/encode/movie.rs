@@ -1,7 +1,7 @@
 //! One stream of frames into every movie format asked for (GIF, MP4): the
 //! formats get the very same frames.
 
-use super::format::{Format, Kind, check_movie_frame};
+use super::format::{Format, Kind, Mp4Quality, check_movie_frame};
 use super::gif::GifWriter;
 #[cfg(feature = "mp4")]
 use super::mp4::Mp4Writer;
@@ -20,9 +20,23 @@ impl MovieWriter {
     /// A writer of `width × height` frames at `fps` for each of `formats`
     /// (movie formats only; each is checked with [`check_movie_frame`]).
     pub fn new(formats: &[Format], width: u32, height: u32, fps: f64) -> Result<Self> {
+        Self::with_quality(formats, width, height, fps, Mp4Quality::default())
+    }
+
+    /// [`MovieWriter::new`] with the MP4 at `quality` (the GIF is lossless
+    /// within its palette and has no quality).
+    pub fn with_quality(
+        formats: &[Format],
+        width: u32,
+        height: u32,
+        fps: f64,
+        quality: Mp4Quality,
+    ) -> Result<Self> {
         if formats.is_empty() {
             return Err(Error::bad_input("a movie needs at least one format"));
         }
+        #[cfg(not(feature = "mp4"))]
+        let _ = quality;
         for &f in formats {
             if f.kind() != Kind::Movie {
                 return Err(super::FormatError::WrongKind {
@@ -40,7 +54,7 @@ impl MovieWriter {
         };
         #[cfg(feature = "mp4")]
         let mp4 = if formats.contains(&Format::Mp4) {
-            Some(Mp4Writer::new(width, height, fps)?)
+            Some(Mp4Writer::with_quality(width, height, fps, quality)?)
         } else {
             None
         };

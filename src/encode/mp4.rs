@@ -5,15 +5,16 @@
 //!
 //! The encoder runs in a thread of its own: the caller converts each frame
 //! to Y′CbCr 4:2:0 and hands it over, then draws the next frame while the
-//! encoder works. Fixed quantiser (no rate control), so a frame's quality
+//! encoder works. Fixed quantiser (`Mp4Quality`), so a frame's quality
 //! does not depend on its neighbours and the bytes are reproducible.
 
+use super::format::Mp4Quality;
 use super::isobmff::{Mp4Track, annex_b_units, mp4_file};
 use super::yuv::{Yuv420, rgba_to_yuv420};
 use crate::error::{Error, Result};
 use openh264::OpenH264API;
 use openh264::encoder::{
-    Complexity, Encoder, EncoderConfig, FrameRate, FrameType, IntraFramePeriod, QpRange,
+    BitRate, Complexity, Encoder, EncoderConfig, FrameRate, FrameType, IntraFramePeriod, QpRange,
     RateControlMode, UsageType, VuiConfig,
 };
 use openh264::formats::YUVSlices;
@@ -21,10 +22,9 @@ use std::sync::mpsc::{Receiver, SyncSender, sync_channel};
 use std::thread::JoinHandle;
 use tiny_skia::Pixmap;
 
-/// Quantiser of every frame (0–51, lower is better). 24 keeps thin lines
-/// and small text clean (frames match the GIF's at well above 30 dB PSNR,
-/// tests/formats.rs) at about half the GIF's bytes.
-pub const QP: u8 = 24;
+/// The bitrate given to OpenH264's rate controller, bits per second: far
+/// above what any frame needs, so the fixed QP alone sets the quality.
+const MAX_BITRATE: u32 = 50_000_000;
 /// A key frame at least every this many seconds (for seeking).
 pub const KEY_FRAME_SECONDS: f64 = 5.0;
 /// Frames that may wait for the encoder: bounds the memory held.
@@ -43,13 +43,25 @@ pub struct Mp4Writer {
 
 impl Mp4Writer {
     /// A writer for `width × height` frames (even, at most 3840 × 2160)
-    /// shown at `fps` frames per second.
+    /// shown at `fps` frames per second, at the default quality.
     pub fn new(width: u32, height: u32, fps: f64) -> Result<Self> {
+        Self::with_quality(width, height, fps, Mp4Quality::default())
+    }
+
+    /// [`Mp4Writer::new`] at `quality`: every frame at its fixed quantiser.
+    pub fn with_quality(width: u32, height: u32, fps: f64, quality: Mp4Quality) -> Result<Self> {
+        let qp = quality.qp();
         super::check_movie_frame(super::Format::Mp4, width, height, fps)?;
         let config = EncoderConfig::new()
             .usage_type(UsageType::CameraVideoRealTime)
-            .rate_control_mode(RateControlMode::Off)
-            .qp(QpRange::new(QP, QP))
+            // With rate control off OpenH264 takes the layer's own QP
+            // (26, which the crate does not expose) and ignores the range;
+            // in quality mode every QP is clipped to the range, so a range
+            // of one value fixes it, and a bitrate far above what any
+            // frame needs keeps the controller from skipping frames.
+            .rate_control_mode(RateControlMode::Quality)
+            .bitrate(BitRate::from_bps(MAX_BITRATE))
+            .qp(QpRange::new(qp, qp))
             .skip_frames(false)
             .max_frame_rate(FrameRate::from_hz(fps as f32))
             .complexity(Complexity::Low)

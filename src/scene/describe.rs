@@ -62,10 +62,10 @@ pub fn generated_title(scene: &Scene) -> String {
     }
 }
 
-/// "α = 60°, N = 10, b/s = 1.3, γ = 0.02, G = 2e−4, I = 0.25 ms²".
+/// "α = 60°, N = 10, b/s = 1.3, γ = 0.02, G = 2e−4, I = 0.25 m s²".
 pub fn model(m: &Model) -> String {
     format!(
-        "α = {}°, N = {}, b/s = {}, γ = {}, G = {}, I = {} ms²",
+        "α = {}°, N = {}, b/s = {}, γ = {}, G = {}, I = {} m s²",
         num(m.alpha),
         m.n,
         num(m.b),
@@ -273,6 +273,111 @@ pub fn kymograph() -> String {
     "Kymograph: sin θₙ of each block n (across) against time (down), red for +1 and blue \
      for −1"
         .into()
+}
+
+/// A file name made from what differs between `scene` and `base` (SPEC
+/// section 6): "a70-n20" for α = 70° and N = 20 on the paper's scene,
+/// "kymograph-a-60" for an antikink's kymograph. Two scenes that differ
+/// get different names; "paper" when nothing differs. Letters, digits,
+/// `-` and `.` only; a name over 80 characters keeps its start and ends
+/// with a hash of the rest.
+pub fn derived_name(scene: &Scene, base: &Scene) -> String {
+    let mut parts: Vec<String> = Vec::new();
+    let (m, b) = (&scene.model, &base.model);
+    for (key, x, y) in [
+        ("a", m.alpha, b.alpha),
+        ("n", m.n as f64, b.n as f64),
+        ("b", m.b, b.b),
+        ("gamma", m.gamma, b.gamma),
+        ("grav", m.gravity, b.gravity),
+        ("inertia", m.inertia, b.inertia),
+    ] {
+        if x != y {
+            parts.push(format!("{key}{}", token(x)));
+        }
+    }
+    let (d, bd) = (&scene.drive.flips, &base.drive.flips);
+    let starts = |f: &[super::Flip]| f.iter().map(|f| f.start).collect::<Vec<_>>();
+    if starts(d) != starts(bd) {
+        let s: Vec<String> = d.iter().map(|f| token(f.start)).collect();
+        parts.push(format!("flips{}", s.join("_")));
+    }
+    let durations = |f: &[super::Flip]| f.iter().map(|f| f.duration).collect::<Vec<_>>();
+    if durations(d) != durations(bd)
+        && let Some(f) = d.first()
+    {
+        parts.push(format!("td{}", token(f.duration)));
+    }
+    let (r, br) = (&scene.run, &base.run);
+    if r.t_end != br.t_end {
+        parts.push(format!("to{}", token(r.t_end)));
+    }
+    if r.integrator != br.integrator {
+        parts.push(r.integrator.to_string());
+    }
+    if r.dt != br.dt
+        && let Some(dt) = r.dt
+    {
+        parts.push(format!("dt{}", token(dt)));
+    }
+    if r.rtol != br.rtol
+        && let Some(x) = r.rtol
+    {
+        parts.push(format!("rtol{}", token(x)));
+    }
+    if r.tolerance != br.tolerance {
+        parts.push(format!("tol{}", token(r.tolerance)));
+    }
+    match (&scene.output, &base.output) {
+        (a, b) if a == b => {}
+        (OutputSpec::Movie { camera }, OutputSpec::Movie { .. }) => {
+            parts.push(camera_word(*camera).into());
+        }
+        (OutputSpec::Filmstrip { times, .. }, _) => {
+            if !matches!(base.output, OutputSpec::Filmstrip { .. }) {
+                parts.push("filmstrip".into());
+            }
+            if !times.is_empty() {
+                let t: Vec<String> = times.iter().map(|t| token(*t)).collect();
+                parts.push(format!("t{}", t.join("_")));
+            }
+        }
+        (OutputSpec::Kymograph, _) => parts.push("kymograph".into()),
+        (OutputSpec::Arrivals { .. }, _) => parts.push("arrivals".into()),
+        _ => {}
+    }
+    if parts.is_empty() {
+        return "paper".into();
+    }
+    shortened(parts.join("-"))
+}
+
+/// The camera's word in a derived name.
+fn camera_word(c: Camera) -> &'static str {
+    match c {
+        Camera::Auto => "auto",
+        Camera::Fixed => "fixed",
+        Camera::Follow => "follow",
+    }
+}
+
+/// A number in a file name: 70, -60, 1.5, 0.0002 (as Rust prints it,
+/// which reads back to the same number).
+fn token(x: f64) -> String {
+    format!("{x}")
+}
+
+/// `name`, cut to 80 characters with a hash (FNV-1a) of the whole so that
+/// names that differ stay different.
+fn shortened(name: String) -> String {
+    const MAX: usize = 80;
+    if name.len() <= MAX {
+        return name;
+    }
+    let hash = name.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    });
+    format!("{}-{hash:016x}", &name[..MAX - 17])
 }
 
 /// The fields of `m` that differ from `base`, e.g. "α = −60°, to 3700 τ".

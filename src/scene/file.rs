@@ -14,6 +14,8 @@ use std::path::Path;
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
+mod words;
+
 /// Largest scene file read, in bytes.
 pub const MAX_FILE_BYTES: u64 = 1 << 20;
 
@@ -23,9 +25,25 @@ pub const MAX_FILE_BYTES: u64 = 1 << 20;
 pub fn parse(text: &str, origin: &str, default_name: &str) -> Result<Scene> {
     let doc =
         DeTable::parse(text).map_err(|e| located(text, origin, e.span(), None, e.message()))?;
-    let mut scene: Scene = toml::from_str(text).map_err(|e| {
-        let key = e.span().and_then(|s| key_at(doc.get_ref(), s.start));
-        located(text, origin, e.span(), key.as_deref(), e.message())
+    // `[output]` without `kind`: the kind its keys belong to (see
+    // `inferred_kind`), written into the text read; spans map back.
+    let (read, inserted) = with_inferred_kind(text, doc.get_ref());
+    let back = |span: Range<usize>| match inserted {
+        Some((at, len)) if span.start >= at + len => span.start - len..span.end - len,
+        Some((at, _)) if span.start >= at => at..at,
+        _ => span,
+    };
+    let mut scene: Scene = toml::from_str(&read).map_err(|e| {
+        let span = e.span().map(back);
+        let (span, key) = match unknown_key(doc.get_ref(), e.message()) {
+            Some((path, at)) => (Some(at), Some(path)),
+            None => (
+                span.clone(),
+                span.and_then(|s| key_at(doc.get_ref(), s.start)),
+            ),
+        };
+        let message = words::plain(e.message(), key.as_deref());
+        located(text, origin, span, key.as_deref(), &message)
     })?;
     if !doc.get_ref().contains_key("name") {
         // Output files are named `KIND-NAME`: a file already named so
@@ -41,6 +59,108 @@ pub fn parse(text: &str, origin: &str, default_name: &str) -> Result<Scene> {
         located(text, origin, span, Some(&key), &msg)
     })?;
     Ok(scene)
+}
+
+/// The `kind` of an `[output]` table that names none, from its keys:
+/// `times` or `panels` a filmstrip, `curves` an arrival chart, `figure` a
+/// theory figure, `grid` a sweep; otherwise none (serde's default, a
+/// movie, applies).
+fn inferred_kind(output: &DeTable<'_>) -> Option<&'static str> {
+    if output.contains_key("kind") {
+        return None;
+    }
+    let has = |k: &str| output.contains_key(k);
+    if has("times") || has("panels") {
+        Some("filmstrip")
+    } else if has("curves") {
+        Some("arrivals")
+    } else if has("figure") {
+        Some("theory")
+    } else if has("grid") {
+        Some("sweep")
+    } else {
+        None
+    }
+}
+
+/// `text` with `kind = "..."` added to an `[output]` table that names no
+/// kind but whose keys say it, and where (byte offset) and how much was
+/// inserted.
+fn with_inferred_kind(text: &str, doc: &DeTable<'_>) -> (String, Option<(usize, usize)>) {
+    let Some((key, value)) = doc.get_key_value("output") else {
+        return (text.to_string(), None);
+    };
+    let DeValue::Table(table) = value.get_ref() else {
+        return (text.to_string(), None);
+    };
+    let Some(kind) = inferred_kind(table) else {
+        return (text.to_string(), None);
+    };
+    let v = value.span();
+    let (at, insert) = if text.get(v.start..).is_some_and(|t| t.starts_with('{')) {
+        (v.start + 1, format!(" kind = \"{kind}\","))
+    } else {
+        // A `[output]` header (not `[output.grid]`): the line after it.
+        let line_start = text[..key.span().start].rfind('\n').map_or(0, |i| i + 1);
+        let header_end = text[key.span().end..]
+            .find('\n')
+            .map_or(text.len(), |i| key.span().end + i + 1);
+        let header: String = text[line_start..header_end]
+            .split('#')
+            .next()
+            .unwrap_or("")
+            .chars()
+            .filter(|c| !c.is_whitespace())
+            .collect();
+        if header != "[output]" {
+            return (text.to_string(), None);
+        }
+        (header_end, format!("kind = \"{kind}\"\n"))
+    };
+    let mut read = text.to_string();
+    if at > read.len() {
+        read.push('\n');
+    }
+    let at = at.min(read.len());
+    read.insert_str(at, &insert);
+    (read, Some((at, insert.len())))
+}
+
+/// For serde's "unknown field `X`", the dotted path and span of the key X
+/// in the file (inside `[output]` serde gives no place of its own).
+fn unknown_key(doc: &DeTable<'_>, message: &str) -> Option<(String, Range<usize>)> {
+    let name = message.strip_prefix("unknown field `")?.split('`').next()?;
+    fn find(
+        table: &DeTable<'_>,
+        name: &str,
+        path: &mut Vec<String>,
+    ) -> Option<(String, Range<usize>)> {
+        for (k, v) in table.iter() {
+            path.push(k.get_ref().to_string());
+            if k.get_ref() == name {
+                return Some((path.join("."), k.span()));
+            }
+            if let DeValue::Table(t) = v.get_ref()
+                && let Some(hit) = find(t, name, path)
+            {
+                return Some(hit);
+            }
+            if let DeValue::Array(a) = v.get_ref() {
+                for (i, item) in a.iter().enumerate() {
+                    path.push(i.to_string());
+                    if let DeValue::Table(t) = item.get_ref()
+                        && let Some(hit) = find(t, name, path)
+                    {
+                        return Some(hit);
+                    }
+                    path.pop();
+                }
+            }
+            path.pop();
+        }
+        None
+    }
+    find(doc, name, &mut Vec::new())
 }
 
 /// Reads and parses the scene file at `path`; a scene without `name` is

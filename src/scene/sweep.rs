@@ -71,7 +71,7 @@ impl Param {
             Self::B => "b / s",
             Self::Gamma => "damping γ",
             Self::Gravity => "gravity G = mg/(ks)",
-            Self::Inertia => "moment of inertia I / ms²",
+            Self::Inertia => "moment of inertia I / (m s²)",
             Self::DriveTime => "drive time T_d / τ",
         }
     }

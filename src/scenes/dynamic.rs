@@ -3,7 +3,7 @@
 //! only to its last frame and is sampled only at the times drawn.
 
 use super::run::{self, IntegratorReport, SceneRun};
-use crate::encode::{Format, MovieWriter, png_bytes};
+use crate::encode::{Format, MovieWriter, Mp4Quality, png_bytes};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::charts::{self, Axis, ChartSpec, Kymograph, Marker, Series};
@@ -629,8 +629,20 @@ pub fn movie(
     formats: &[Format],
     frame_done: &(dyn Fn() + Sync),
 ) -> Result<MovieFiles> {
+    movie_at(scene, opts, formats, Mp4Quality::default(), frame_done)
+}
+
+/// [`movie`] with the MP4 at `quality`.
+pub fn movie_at(
+    scene: &Scene,
+    opts: &MovieOptions,
+    formats: &[Format],
+    quality: Mp4Quality,
+    frame_done: &(dyn Fn() + Sync),
+) -> Result<MovieFiles> {
     let opts = opts.validated()?;
-    let mut writer = MovieWriter::new(formats, opts.width, opts.height, opts.fps)?;
+    let mut writer =
+        MovieWriter::with_quality(formats, opts.width, opts.height, opts.fps, quality)?;
     let plan = MoviePlan::new(scene, &opts)?;
     let traj = &plan.run.trajectory;
     let n = plan.ladder.n();

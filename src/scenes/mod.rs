@@ -7,7 +7,7 @@ pub mod dynamic;
 pub mod run;
 pub mod theory;
 
-use crate::encode::{Formats, Kind as FormatKind};
+use crate::encode::{Formats, Kind as FormatKind, Mp4Quality};
 use crate::error::{Error, Result};
 use crate::render::Picture;
 use crate::scene::{OutputSpec, Scene, describe};
@@ -25,6 +25,8 @@ pub struct Outputs {
     /// with twice the pixels each way. SVG and PDF are vector and keep the
     /// design size (PDF: 0.75 pt per design pixel). Default: 1.
     pub scale: f32,
+    /// Quality of MP4 movies. Default: high (docs/formats.md).
+    pub mp4_quality: Mp4Quality,
 }
 
 impl Default for Outputs {
@@ -33,6 +35,7 @@ impl Default for Outputs {
             figures: Formats::default_for(FormatKind::Figure),
             movies: Formats::default_for(FormatKind::Movie),
             scale: 1.0,
+            mp4_quality: Mp4Quality::default(),
         }
     }
 }
@@ -174,8 +177,13 @@ pub fn render_with(
             )
         }
         OutputSpec::Movie { .. } => {
-            let (movies, kymo, run) =
-                dynamic::movie(scene, movie, outputs.movies.as_slice(), frame_done)?;
+            let (movies, kymo, run) = dynamic::movie_at(
+                scene,
+                movie,
+                outputs.movies.as_slice(),
+                outputs.mp4_quality,
+                frame_done,
+            )?;
             let mut v: Vec<Vec<u8>> = movies.into_iter().map(|(_, b)| b).collect();
             v.push(kymo);
             (v, vec![run])

@@ -134,7 +134,7 @@ pub fn dispersion(input: &FigureInput) -> Result<Picture> {
     }
     let mut body = grid(&panels, 3)?;
     body = stack(&body, &dispersion_key(body.pixel_size().0)?);
-    let notes = "ω₀ = √(k/m) = 1/τ, I = ms²/4, constraint δv_{n} = (−1)ⁿ(s/2) sin α δθ_{n}. The printed closed form is √2 too small for this ω₀ \
+    let notes = "ω₀ = √(k/m) = 1/τ, I = m s²/4, constraint δv_{n} = (−1)ⁿ(s/2) sin α δθ_{n}. The printed closed form is √2 too small for this ω₀ \
                  (docs/paper-errata.md item 9): it is exact if ω₀ is read as √(2k/m). The \
                  eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I), \
                  as in the paper) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \

@@ -1,0 +1,192 @@
+//! MP4 quality (docs/formats.md): at the default `--quality` every decoded
+//! MP4 frame of movie 4 at the default size is at least 38.8 dB PSNR from
+//! the GIF's frame (before `--quality`, at the encoder's fixed QP 26, the
+//! worst frame was 37.4 dB and frame 100 38.5 dB); `--quality` is taken
+//! and trades bytes for fidelity. The 40 dB aimed at is not reached on
+//! every frame even at QP 12 (39.3 dB): the GIF is itself a 256-colour
+//! reduction of the frame the MP4 encodes.
+#![cfg(feature = "mp4")]
+
+mod common;
+
+use common::tempdir::TempDir;
+use jacobs_ladder::encode::Yuv420;
+use openh264::formats::YUVSource;
+use std::process::Command;
+
+/// The default's promise: the lowest PSNR of any frame against the GIF
+/// (measured 39.0 dB at QP 18; see the table test below).
+const MIN_PSNR_DB: f64 = 38.8;
+
+/// `ladder movie 4 --format gif,mp4 [extra]` into `dir`: (GIF, MP4) bytes.
+fn movie_4(dir: &TempDir, extra: &[&str]) -> (Vec<u8>, Vec<u8>) {
+    let out = dir.path().to_str().unwrap();
+    let mut args = vec!["movie", "4", "--format", "gif,mp4", "--out", out];
+    args.extend(extra);
+    let run = Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(&args)
+        .output()
+        .unwrap();
+    assert_eq!(
+        run.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    (
+        std::fs::read(dir.join("movie-4.gif")).unwrap(),
+        std::fs::read(dir.join("movie-4.mp4")).unwrap(),
+    )
+}
+
+/// Every frame of a GIF, composited, as RGB.
+fn gif_frames(bytes: &[u8]) -> Vec<Vec<u8>> {
+    let mut opts = gif::DecodeOptions::new();
+    opts.set_color_output(gif::ColorOutput::Indexed);
+    let mut d = opts.read_info(bytes).unwrap();
+    let w = d.width() as usize;
+    let global = d.global_palette().unwrap().to_vec();
+    let mut screen = vec![255u8; w * d.height() as usize * 3];
+    let mut out = Vec::new();
+    while let Some(f) = d.read_next_frame().unwrap() {
+        let pal = f.palette.clone().unwrap_or_else(|| global.clone());
+        for y in 0..f.height as usize {
+            for x in 0..f.width as usize {
+                let i = f.buffer[y * f.width as usize + x];
+                if Some(i) != f.transparent {
+                    let at = 3 * ((f.top as usize + y) * w + f.left as usize + x);
+                    screen[at..at + 3].copy_from_slice(&pal[3 * i as usize..3 * i as usize + 3]);
+                }
+            }
+        }
+        out.push(screen.clone());
+    }
+    out
+}
+
+/// Every frame of an MP4, decoded by OpenH264's decoder, as RGB.
+fn mp4_frames(bytes: &[u8]) -> Vec<Vec<u8>> {
+    let mut reader =
+        mp4::Mp4Reader::read_header(std::io::Cursor::new(bytes), bytes.len() as u64).unwrap();
+    let track = reader.tracks().values().next().unwrap();
+    let (id, count) = (track.track_id(), track.sample_count());
+    let start = |v: &mut Vec<u8>, nal: &[u8]| {
+        v.extend_from_slice(&[0, 0, 0, 1]);
+        v.extend_from_slice(nal);
+    };
+    let mut head = Vec::new();
+    start(&mut head, track.sequence_parameter_set().unwrap());
+    start(&mut head, track.picture_parameter_set().unwrap());
+    let mut decoder = openh264::decoder::Decoder::new().unwrap();
+    let _ = decoder.decode(&head);
+    let mut frames = Vec::new();
+    for k in 1..=count {
+        let sample = reader.read_sample(id, k).unwrap().unwrap();
+        let mut annex_b = Vec::new();
+        let mut rest = &sample.bytes[..];
+        while rest.len() >= 4 {
+            let n = u32::from_be_bytes(rest[..4].try_into().unwrap()) as usize;
+            start(&mut annex_b, &rest[4..4 + n]);
+            rest = &rest[4 + n..];
+        }
+        let yuv = decoder.decode(&annex_b).unwrap().expect("a frame decodes");
+        let (w, h) = yuv.dimensions();
+        let (ys, us, vs) = yuv.strides();
+        let rows = |plane: &[u8], stride: usize, width: usize, height: usize| -> Vec<u8> {
+            (0..height)
+                .flat_map(|r| plane[r * stride..r * stride + width].to_vec())
+                .collect()
+        };
+        let frame = Yuv420 {
+            width: w,
+            height: h,
+            y: rows(yuv.y(), ys, w, h),
+            u: rows(yuv.u(), us, w / 2, h / 2),
+            v: rows(yuv.v(), vs, w / 2, h / 2),
+        };
+        frames.push(frame.to_rgb());
+    }
+    frames
+}
+
+/// Peak signal-to-noise ratio of two RGB buffers, in dB (10 log10 of
+/// 255² over the mean squared difference).
+fn psnr(a: &[u8], b: &[u8]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    let mse = a
+        .iter()
+        .zip(b)
+        .map(|(&x, &y)| (x as f64 - y as f64).powi(2))
+        .sum::<f64>()
+        / a.len() as f64;
+    10.0 * (255.0f64 * 255.0 / mse.max(1e-12)).log10()
+}
+
+/// The PSNR of each MP4 frame against the GIF's frame.
+fn frame_psnrs(gif: &[u8], mp4: &[u8]) -> Vec<f64> {
+    let (g, m) = (gif_frames(gif), mp4_frames(mp4));
+    assert_eq!(g.len(), m.len(), "the same number of frames");
+    g.iter().zip(&m).map(|(a, b)| psnr(a, b)).collect()
+}
+
+#[test]
+fn every_mp4_frame_at_the_default_quality_matches_the_gif() {
+    let dir = TempDir::new("mp4-default");
+    let (gif, mp4) = movie_4(&dir, &[]);
+    let p = frame_psnrs(&gif, &mp4);
+    assert_eq!(p.len(), 200, "the default 200 frames");
+    let (worst, k) = p
+        .iter()
+        .enumerate()
+        .map(|(k, &x)| (x, k))
+        .fold((f64::INFINITY, 0), |a, b| if b.0 < a.0 { b } else { a });
+    eprintln!(
+        "default quality: {} bytes, worst frame {k} at {worst:.1} dB",
+        mp4.len()
+    );
+    assert!(
+        worst >= MIN_PSNR_DB,
+        "frame {k}: {worst:.1} dB, under {MIN_PSNR_DB} dB"
+    );
+}
+
+#[test]
+fn the_quality_flag_trades_bytes_for_fidelity() {
+    let dir = TempDir::new("mp4-draft");
+    let small = ["--frames", "20", "--size", "320x240"];
+    let at = |q: &str| {
+        let mut extra = small.to_vec();
+        extra.extend(["--quality", q]);
+        let (gif, mp4) = movie_4(&dir, &extra);
+        let worst = frame_psnrs(&gif, &mp4)
+            .into_iter()
+            .fold(f64::INFINITY, f64::min);
+        (mp4.len(), worst)
+    };
+    let (draft_bytes, draft_db) = at("draft");
+    let (best_bytes, best_db) = at("best");
+    assert!(draft_bytes < best_bytes, "{draft_bytes} vs {best_bytes}");
+    assert!(draft_db < best_db, "{draft_db:.1} vs {best_db:.1} dB");
+}
+
+/// The table of docs/formats.md: `cargo test --release --test mp4_quality
+/// -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn size_against_quality_table() {
+    let dir = TempDir::new("mp4-table");
+    eprintln!("| --quality | QP | MP4 bytes | kbit/s | worst frame PSNR | mean PSNR |");
+    for (q, qp) in [("draft", 30), ("standard", 24), ("high", 18), ("best", 12)] {
+        let (gif, mp4) = movie_4(&dir, &["--quality", q]);
+        let p = frame_psnrs(&gif, &mp4);
+        let worst = p.iter().copied().fold(f64::INFINITY, f64::min);
+        let mean = p.iter().sum::<f64>() / p.len() as f64;
+        // 200 frames at 25 fps: 8 s.
+        let kbits = mp4.len() as f64 * 8.0 / 8.0 / 1000.0;
+        eprintln!(
+            "| {q} | {qp} | {} | {kbits:.0} | {worst:.1} dB | {mean:.1} dB | (GIF {} bytes)",
+            mp4.len(),
+            gif.len()
+        );
+    }
+}
