@@ -28,7 +28,11 @@ fn main() {
     let long = match git(&["rev-parse", "--short=12", "HEAD"]) {
         Some(commit) => {
             let dirty = git(&["status", "--porcelain", "--untracked-files=no"]).is_some();
-            let commit = if dirty { format!("{commit}-modified") } else { commit };
+            let commit = if dirty {
+                format!("{commit}-modified")
+            } else {
+                commit
+            };
             println!("cargo:rustc-env=LADDER_GIT_COMMIT={commit}");
             format!("{version} (commit {commit})")
         }
