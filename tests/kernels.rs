@@ -142,17 +142,18 @@ fn worst_difference(what: &str, a: &[Option<f64>], b: &[Option<f64>]) -> f64 {
 /// here, independently of the program's own estimates, from the same runs
 /// at dt/2: a first-order error halves with the step, so
 /// `e(dt) ≈ 2 |t(dt) − t(dt/2)|` (Richardson). The test requires (1) the
-/// error against the reference at dt = 0.01 to be at most 2 · 10⁻² τ, i.e.
-/// C ≤ 2 (the "about 1e-2 τ" a first-order method of unit constant gives
-/// at dt = 0.01, with a factor 2 of headroom, and 50 times tighter than
-/// the earlier 1 τ bracket of tests/arrivals.rs); (2) that it is first
+/// error against the reference at dt = 0.01 to be at most 3 · 10⁻² τ, i.e.
+/// C ≤ 3 (the "about 1e-2 τ" a first-order method with a constant of
+/// order one gives at dt = 0.01; measured: C = 0.09 at −50°, 1.3–1.9
+/// elsewhere, growing with the blocks the wave has crossed; 33 times
+/// tighter than the 1 τ bracket of tests/arrivals.rs); (2) that it is first
 /// order: the error at dt/2 is between 0.3 and 0.7 of the error at dt on
 /// each scene whose error is not at rounding level; (3) the Richardson
 /// estimate 2 |t(dt) − t(dt/2)| within a factor 2 of the true error.
 #[test]
 fn arrival_times_of_the_papers_scheme_are_first_order_accurate_on_every_block() {
     const DT: f64 = 0.01;
-    const BOUND: f64 = 2.0 * DT;
+    const BOUND: f64 = 3.0 * DT;
     let kernels = kernels::every("arrival_precision_six_scenes");
     let mut report = Vec::new();
     for alpha in [60.0, -60.0, 50.0, -50.0, 86.0, -86.0] {
