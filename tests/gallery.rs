@@ -2,8 +2,11 @@
 //! exists, every picture has one caption and words for its alt text, and,
 //! in a real browser (Debian's `chromium`, headless), every image and
 //! video loads. The browser test saves screenshots under
-//! `target/tmp/gallery/` to look at; it is skipped, with a message, where no
-//! chromium is installed (`.ci/run` installs it).
+//! `target/tmp/gallery/` to look at. Without chromium it fails under CI
+//! and is reported as skipped elsewhere (`common::require`; `.ci/run`
+//! installs chromium).
+
+mod common;
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -255,13 +258,16 @@ fn tail(s: &str) -> &str {
 
 #[test]
 fn every_image_and_video_loads_in_a_real_browser() {
-    let Some(browser) = browser() else {
-        eprintln!(
-            "SKIPPED: no chromium found (set LADDER_CHROMIUM or install Debian's chromium; \
-             .ci/run installs it)"
-        );
+    let browser = browser();
+    if !common::require::require(
+        "every_image_and_video_loads_in_a_real_browser",
+        browser.is_some(),
+        "no chromium found",
+        "set LADDER_CHROMIUM or install Debian's chromium; .ci/run installs it",
+    ) {
         return;
-    };
+    }
+    let browser = browser.expect("checked above");
     // Every format, so that the page shows MP4 videos (with the GIF as
     // poster) and links SVG and PDF files.
     let formats = if cfg!(feature = "mp4") {

@@ -3,7 +3,8 @@
 //! bounded memory, nothing left behind. A hang is caught by a watchdog
 //! that kills the process (a bound on "forever", not a speed assertion).
 //! Where the system lacks what a row needs (a device node, a FIFO,
-//! /dev/full, a tmpfs mount), the test prints that it skips that part.
+//! /dev/full, a tmpfs mount), that part fails under CI and is reported as
+//! skipped elsewhere (`common::require`).
 
 mod common;
 
@@ -271,10 +272,16 @@ fn movie_pixels_are_capped() {
 /// `ladder list > /dev/full` panicked (exit 101): now exit 1, one line.
 #[test]
 fn stdout_that_cannot_be_written_exits_1() {
-    let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") else {
-        println!("skipped: this system has no /dev/full");
+    let full = std::fs::OpenOptions::new().write(true).open("/dev/full");
+    if !common::require::require(
+        "stdout_that_cannot_be_written_exits_1",
+        full.is_ok(),
+        "this system has no /dev/full",
+        "Linux provides it",
+    ) {
         return;
-    };
+    }
+    let full = full.expect("checked above");
     let mut child = ladder_cmd(&["list"])
         .stdout(full)
         .stderr(Stdio::piped())
@@ -293,10 +300,16 @@ fn stdout_that_cannot_be_written_exits_1() {
 /// be written), no abort.
 #[test]
 fn stderr_that_cannot_be_written_exits_1() {
-    let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") else {
-        println!("skipped: this system has no /dev/full");
+    let full = std::fs::OpenOptions::new().write(true).open("/dev/full");
+    if !common::require::require(
+        "stderr_that_cannot_be_written_exits_1",
+        full.is_ok(),
+        "this system has no /dev/full",
+        "Linux provides it",
+    ) {
         return;
-    };
+    }
+    let full = full.expect("checked above");
     let mut child = ladder_cmd(&["figure", "zz"])
         .stdout(Stdio::null())
         .stderr(full)
@@ -348,7 +361,12 @@ fn only_regular_files_are_replaced() {
     if unsafe { libc::mkfifo(c_fifo.as_ptr(), 0o644) } == 0 {
         cases.push((fifo.to_str().unwrap().into(), "FIFO"));
     } else {
-        println!("skipped the FIFO case: mkfifo failed");
+        common::require::require(
+            "special files (FIFO case)",
+            false,
+            "mkfifo failed",
+            "a file system with FIFOs",
+        );
     }
     let null = dir.join("null");
     let c_null = std::ffi::CString::new(null.to_str().unwrap()).unwrap();
@@ -358,7 +376,12 @@ fn only_regular_files_are_replaced() {
     if made {
         cases.push((null.to_str().unwrap().into(), "device"));
     } else {
-        println!("skipped the device case: cannot mknod (not root, or not allowed)");
+        common::require::require(
+            "special files (device case)",
+            false,
+            "cannot mknod (not root, or not allowed)",
+            "run as root, as CI does",
+        );
     }
     for (path, kind) in &cases {
         let args = ["simulate", "--t-end", "10", "--csv", path];
@@ -528,8 +551,12 @@ fn a_full_disk_is_a_failed_run() {
             .stderr(Stdio::null())
             .status()
             .is_ok_and(|s| s.success());
-    if !mounted {
-        println!("skipped the tmpfs case: cannot mount a small file system here");
+    if !common::require::require(
+        "full file system (tmpfs case)",
+        mounted,
+        "cannot mount a small tmpfs here",
+        "run as root with mount allowed, as CI does",
+    ) {
         return;
     }
     let csv = mnt.join("theta.csv");

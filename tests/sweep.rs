@@ -2,6 +2,8 @@
 //! byte-identical between runs and between a sharded and an unsharded
 //! sweep, resume, gather, and bad input.
 
+mod common;
+
 use jacobs_ladder::scene::sweep::{Grid, Param, SweepSpec, Values};
 use jacobs_ladder::scene::{OutputSpec, Scene};
 use jacobs_ladder::sweep::outcome::Outcome;
@@ -451,13 +453,12 @@ fn a_diverging_fixed_step_is_a_diverged_row_not_a_failed_sweep() {
 /// is installed.
 #[test]
 fn the_documented_gnu_parallel_line_works() {
-    let has_parallel = Command::new("parallel")
-        .arg("--version")
-        .output()
-        .map(|o| o.status.success() && String::from_utf8_lossy(&o.stdout).contains("GNU parallel"))
-        .unwrap_or(false);
-    if !has_parallel {
-        eprintln!("GNU parallel is not installed; skipping");
+    if !common::require::require(
+        "the_documented_gnu_parallel_line_works",
+        common::require::runs("parallel", "--version", "GNU parallel"),
+        "GNU parallel is not installed",
+        "install Debian's parallel; .ci/run does",
+    ) {
         return;
     }
     let doc =

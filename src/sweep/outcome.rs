@@ -147,13 +147,9 @@ impl Rule {
             let stop_at = self.quiet_end(last, longest_gap);
             let next = times.get(k).map_or(f64::INFINITY, |a| a.0);
             if stop_at < next && stop_at <= t && stop_at <= self.cap {
-                let past_two = flipped.iter().take_while(|f| **f).count() > 2;
+                let front = flipped.iter().take_while(|f| **f).count();
                 return Some(Decision {
-                    outcome: if past_two {
-                        Outcome::Stalled
-                    } else {
-                        Outcome::Pinned
-                    },
+                    outcome: stopped_outcome(front),
                     t_decided: stop_at,
                 });
             }
@@ -171,6 +167,17 @@ impl Rule {
     fn quiet_end(&self, last: f64, gap: f64) -> f64 {
         let from = last.max(self.drive_end);
         (from + self.quiet * gap).max(self.t_end)
+    }
+}
+
+/// The outcome of a wave that stopped with its front at block `front`
+/// (SPEC section 7): **pinned** if it never got past block 2 (front ≤ 2),
+/// **stalled** if it stopped in between.
+pub fn stopped_outcome(front: usize) -> Outcome {
+    if front <= 2 {
+        Outcome::Pinned
+    } else {
+        Outcome::Stalled
     }
 }
 

@@ -3,8 +3,10 @@
 //! `check(name, &pixmap)` compares with `tests/golden/NAME.png`: every
 //! channel may differ by at most `TOLERANCE`, except for a fraction
 //! `OUTLIER_FRACTION` of the pixels. `LADDER_BLESS=1` (re)writes the
-//! reference instead. On a mismatch, expected | difference | actual is
-//! written side by side to `target/golden-diffs/NAME.png`.
+//! reference instead, and says (uncaptured) which image it wrote and that
+//! it must be looked at; under CI blessing is refused (the test fails).
+//! On a mismatch, expected | difference | actual is written side by side
+//! to `target/golden-diffs/NAME.png` and the panic message names it.
 
 use jacobs_ladder::encode::png_bytes;
 use std::path::PathBuf;
@@ -46,8 +48,17 @@ pub fn rgba(p: &Pixmap) -> Vec<u8> {
 pub fn check(name: &str, actual: &Pixmap) {
     let path = golden_path(name);
     if blessing() {
+        assert!(
+            !super::require::strict(),
+            "golden {name}: LADDER_BLESS=1 is refused under CI: a reference image is \
+             written by a person who looked at it, never by CI"
+        );
         std::fs::create_dir_all(path.parent().unwrap()).unwrap();
         std::fs::write(&path, png_bytes(actual).unwrap()).unwrap();
+        super::require::note(&format!(
+            "BLESSED golden {name}: wrote {}; LOOK AT IT (open the PNG) before committing it",
+            path.display()
+        ));
         return;
     }
     let expected = match image::open(&path) {
@@ -67,7 +78,13 @@ pub fn check(name: &str, actual: &Pixmap) {
             &act,
             (w, h),
         );
-        panic!("golden {name}: size {w}x{h} differs from the reference");
+        panic!(
+            "golden {name}: size {w}x{h} differs from the reference {}x{}; \
+             expected | difference | actual side by side: {}",
+            expected_dims(&path).0,
+            expected_dims(&path).1,
+            diff_path(name).display()
+        );
     }
     let exp = expected.into_raw();
     let bad = exp
@@ -83,7 +100,8 @@ pub fn check(name: &str, actual: &Pixmap) {
     if bad > allowed {
         let diff = write_diff(name, &exp, (w, h), &act, (w, h));
         panic!(
-            "golden {name}: {bad} pixels differ by more than {TOLERANCE}/255 (allowed {allowed}); see {}",
+            "golden {name}: {bad} pixels differ by more than {TOLERANCE}/255 (allowed {allowed}); \
+             expected | difference (red: beyond tolerance) | actual side by side: {}",
             diff.display()
         );
     }
@@ -131,9 +149,16 @@ fn write_diff(
             out.put_pixel(cw + 4 + x, y, image::Rgba(d));
         }
     }
-    let dir = root().join("target").join("golden-diffs");
-    let path = dir.join(format!("{name}.png"));
-    let _ = std::fs::create_dir_all(&dir);
+    let path = diff_path(name);
+    let _ = std::fs::create_dir_all(path.parent().unwrap());
     let _ = out.save(&path);
     path
+}
+
+/// Where expected | difference | actual of `name` is written on a mismatch.
+pub fn diff_path(name: &str) -> PathBuf {
+    root()
+        .join("target")
+        .join("golden-diffs")
+        .join(format!("{name}.png"))
 }

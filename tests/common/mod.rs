@@ -3,6 +3,8 @@
 
 pub mod fuzz;
 pub mod golden;
+pub mod kernels;
 pub mod lcg;
+pub mod require;
 pub mod scenes;
 pub mod tempdir;
