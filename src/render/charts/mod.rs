@@ -27,7 +27,6 @@ pub use ticks::{short_number, tick_label};
 pub(super) use title::titled;
 pub use title::{FittedTitle, fit_title};
 
-use super::style::FONT_FAMILY;
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
@@ -43,7 +42,7 @@ pub(super) fn plot_error<E: std::fmt::Debug>(e: E) -> Error {
 /// Plotters font size that gives a CSS em size of `px` in the SVG (plotters
 /// writes its size divided by 1.24).
 pub(super) fn font(px: f32) -> (&'static str, f64) {
-    (FONT_FAMILY, f64::from(px) * 1.24)
+    (super::style::family(), f64::from(px) * 1.24)
 }
 
 pub(super) fn rgb(c: Rgb) -> RGBColor {
