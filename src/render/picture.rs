@@ -154,10 +154,9 @@ impl Picture {
                 "the scale must be a number above 0, got {scale}"
             )));
         }
-        let (w, h) = (
-            (self.width * scale).ceil().max(1.0),
-            (self.height * scale).ceil().max(1.0),
-        );
+        // Rounding error (243 pt at 200 dpi is 675.00006 px) is no pixel.
+        let up = |v: f32| (v - 1e-3).ceil().max(1.0);
+        let (w, h) = (up(self.width * scale), up(self.height * scale));
         let max = MAX_RASTER_SIDE as f32;
         if w > max || h > max {
             return Err(Error::bad_input(format!(

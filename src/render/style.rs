@@ -87,14 +87,24 @@ pub mod size {
     pub const GAP: u32 = 10;
 }
 
-/// The `i`-th chart series colour: dark, red, blue, green, then extras.
+/// Okabe & Ito's colour-blind-safe qualitative palette ("Color Universal
+/// Design", 2008), for chart series: black (our dark grey), vermillion,
+/// blue, bluish green, orange, sky blue, reddish purple. Its yellow is left
+/// out: too pale on white paper.
+pub const OKABE_ITO: [Rgb; 7] = [
+    DARK,
+    [213, 94, 0],
+    [0, 114, 178],
+    [0, 158, 115],
+    [230, 159, 0],
+    [86, 180, 233],
+    [204, 121, 167],
+];
+
+/// The `i`-th chart series colour, from [`OKABE_ITO`]; series should also
+/// differ by dash or marker (the palette repeats after seven).
 pub fn series_color(i: usize) -> Rgb {
-    let base = [DARK, RED, BLUE, GREEN];
-    if i < base.len() {
-        base[i]
-    } else {
-        SERIES_EXTRA[(i - base.len()) % SERIES_EXTRA.len()]
-    }
+    OKABE_ITO[i % OKABE_ITO.len()]
 }
 
 /// A tiny-skia colour from an [`Rgb`], fully opaque.
@@ -591,6 +601,26 @@ mod tests {
             vec!["aa e^{−κ n b} bb"]
         );
         assert_eq!(words(" a^{x y}  b "), vec!["a^{x y}", "b"]);
+    }
+
+    #[test]
+    fn script_characters_the_font_lacks_become_markup() {
+        use crate::render::page_style::{Style, StyleName};
+        // DejaVu Sans has ₊ and ⁻: the text stays as it is.
+        assert_eq!(scripts_as_markup("ω₊, 10⁻⁴"), "ω₊, 10⁻⁴");
+        // Liberation Serif has neither: the same text as markup.
+        let paper = Style::named(StyleName::Paper);
+        assert_eq!(
+            paper.apply(|| scripts_as_markup("ω₊(0), 10⁻⁴ s")),
+            "ω_{+}(0), 10^{−4} s"
+        );
+        assert_eq!(
+            paper.apply(|| runs("ω₊")),
+            vec![
+                (Shift::Base, "ω".to_string()),
+                (Shift::Sub, "+".to_string())
+            ]
+        );
     }
 
     #[test]
