@@ -116,7 +116,14 @@ fn pdf_operators(doc: &lopdf::Document) -> Vec<String> {
 fn pdf_of_every_figure_is_vector() {
     for (name, pic) in figures() {
         let tree = pic.to_tree(1.0).unwrap();
-        let pdf = encode::pdf_bytes(&tree).unwrap();
+        let pdf = encode::pdf_bytes(
+            &tree,
+            encode::PdfOptions {
+                real_text: false,
+                ..Default::default()
+            },
+        )
+        .unwrap();
         dump(&format!("{name}.pdf"), &pdf);
         assert!(pdf.starts_with(b"%PDF-1."), "{name}");
         let doc = lopdf::Document::load_mem(&pdf).unwrap();

@@ -176,3 +176,38 @@ fn composed_panels() {
         compose::compose(&panels, &Layout::row(3).title("two ground states and U(θ)")).unwrap();
     check("composed-panels", &img);
 }
+
+/// A catalogue figure drawn at a print style, at `dpi` pixels per inch.
+fn styled_figure(id: &str, name: jacobs_ladder::render::StyleName, dpi: f32) -> tiny_skia::Pixmap {
+    use jacobs_ladder::render::Style;
+    let style = Style {
+        dpi,
+        ..Style::named(name)
+    };
+    let scene = jacobs_ladder::catalog::find(jacobs_ladder::scene::Kind::Figure, id)
+        .unwrap()
+        .scene
+        .clone();
+    style.apply(|| {
+        let pic = jacobs_ladder::scenes::figure_picture(&scene).unwrap().0;
+        pic.rasterize(style.png_scale(pic.width())).unwrap()
+    })
+}
+
+/// The barrier ΔU(α) at `--style paper` (3.375 in wide, 8 pt serif text),
+/// 200 dpi: 675 pixels wide.
+#[test]
+fn figure_barrier_at_paper() {
+    let img = styled_figure("barrier", jacobs_ladder::render::StyleName::Paper, 200.0);
+    assert_eq!(img.width(), 675, "3.375 in at 200 dpi");
+    check("figure-barrier-paper", &img);
+}
+
+/// The surface zero mode at `--style slide` (13.333 in wide, 20 pt sans
+/// text), 72 dpi: 960 pixels wide.
+#[test]
+fn figure_edge_mode_at_slide() {
+    let img = styled_figure("edge-mode", jacobs_ladder::render::StyleName::Slide, 72.0);
+    assert_eq!(img.width(), 960, "13.333 in at 72 dpi");
+    check("figure-edge-mode-slide", &img);
+}

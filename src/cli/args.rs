@@ -391,7 +391,7 @@ pub struct FigureArgs {
 #[derive(Args, Debug, Clone)]
 pub struct FigureFormat {
     /// File formats, comma-separated: png, svg, pdf (SVG and PDF are vector,
-    /// text as outlines; pdflatex includes the PDF)
+    /// with real text; pdflatex includes the PDF)
     #[arg(
         long = "format",
         default_value = "png",
@@ -412,6 +412,35 @@ pub struct FigureFormat {
     /// it with a pointer to `--scale`.
     #[arg(long, hide = true, value_name = "WxH")]
     pub size: Option<String>,
+    #[command(flatten)]
+    pub style: StyleArgs,
+}
+
+/// How figures look and the page they are printed on (SPEC section 10).
+#[derive(Args, Debug, Clone, Default)]
+pub struct StyleArgs {
+    /// paper (APS column, 3.375 in, 8 pt, serif), paper-wide (7 in),
+    /// slide (13.333 x 7.5 in, 20 pt) or screen (pixels; the default)
+    #[arg(long, value_name = "NAME", help_heading = "Figure style")]
+    pub style: Option<String>,
+    /// Page width with a unit: 3.375in, 86mm, 243pt, 640px
+    #[arg(long, value_name = "LENGTH", help_heading = "Figure style")]
+    pub width: Option<String>,
+    /// Page height with a unit (default: the figure's own aspect ratio)
+    #[arg(long, value_name = "LENGTH", help_heading = "Figure style")]
+    pub height: Option<String>,
+    /// Text size in points (axis labels; ticks and titles follow)
+    #[arg(long, value_name = "PT", help_heading = "Figure style")]
+    pub font_size: Option<f32>,
+    /// sans or serif
+    #[arg(long, value_name = "FACE", help_heading = "Figure style")]
+    pub font: Option<String>,
+    /// Pixels per inch of PNG figures at a print style
+    #[arg(long, value_name = "DPI", help_heading = "Figure style")]
+    pub dpi: Option<f32>,
+    /// Text in SVG and PDF: text (the font embedded) or outlines
+    #[arg(long, value_name = "MODE", help_heading = "Figure style")]
+    pub text: Option<String>,
 }
 
 /// `--format` and `--scale` of commands that write figures and movies.
@@ -430,6 +459,8 @@ pub struct MixedFormat {
     /// each way (0.25..=8)
     #[arg(long, default_value_t = 1.0, value_name = "S", help_heading = "Format")]
     pub scale: f32,
+    #[command(flatten)]
+    pub style: StyleArgs,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]

@@ -4,10 +4,12 @@
 
 use super::args::{
     CameraArg, DriveArgs, FigureFormat, GridArgs, KernelArg, MixedFormat, ModelArgs, MovieFormat,
-    QualityArg, RunArgs, SweepArgs, ViewArg,
+    QualityArg, RunArgs, StyleArgs, SweepArgs, ViewArg,
 };
 use crate::encode::{self, Formats, Kind as FormatKind};
 use crate::error::{Error, Result};
+use crate::render::page_style::parse_length;
+use crate::render::{FontChoice, Length, StyleName, StyleSpec, TextMode};
 use crate::scene::sweep::{Param, SweepSpec, Values};
 use crate::scene::{Camera, DriveSpec, Kind, Method, OutputSpec, Scene, describe};
 use crate::scenes::{MovieOptions, Outputs};
@@ -475,10 +477,55 @@ impl FigureFormat {
         with_scale(
             Outputs {
                 figures,
+                style: self.style.spec()?,
                 ..Outputs::default()
             },
             self.scale,
         )
+    }
+}
+
+impl StyleArgs {
+    /// The style flags as a [`StyleSpec`], each checked: one line naming
+    /// the flag and what it takes.
+    pub fn spec(&self) -> Result<StyleSpec> {
+        fn named<T>(
+            flag: &str,
+            v: &Option<String>,
+            parse: fn(&str) -> Option<T>,
+            names: &[&str],
+        ) -> Result<Option<T>> {
+            v.as_deref()
+                .map(|s| {
+                    parse(s).ok_or_else(|| {
+                        Error::bad_input(format!("--{flag} {s}: unknown; use {}", names.join(", ")))
+                    })
+                })
+                .transpose()
+        }
+        let length = |flag: &str, v: &Option<String>| -> Result<Option<Length>> {
+            v.as_deref()
+                .map(|s| {
+                    parse_length(s)
+                        .map(Length)
+                        .map_err(|e| Error::bad_input(format!("--{flag}: {e}")))
+                })
+                .transpose()
+        };
+        let spec = StyleSpec {
+            name: named("style", &self.style, StyleName::parse, &StyleName::NAMES)?,
+            width: length("width", &self.width)?,
+            height: length("height", &self.height)?,
+            font_size: self.font_size,
+            font: named("font", &self.font, FontChoice::parse, &FontChoice::NAMES)?,
+            dpi: self.dpi,
+            text: named("text", &self.text, TextMode::parse, &TextMode::NAMES)?,
+        };
+        // The numbers' ranges, worded as flags (the scene file's table is
+        // checked when the scene is drawn).
+        spec.resolve()
+            .map_err(|e| Error::bad_input(format!("--{e}")))?;
+        Ok(spec)
     }
 }
 
@@ -516,6 +563,7 @@ impl MixedFormat {
         let outputs = Outputs {
             figures: figures.unwrap_or(defaults.figures),
             movies: movies.unwrap_or(defaults.movies),
+            style: self.style.spec()?,
             ..defaults
         };
         check_movie_formats(&outputs.movies, movie)?;

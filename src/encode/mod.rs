@@ -14,6 +14,7 @@ mod movie;
 #[cfg(feature = "mp4")]
 mod mp4;
 mod pdf;
+mod pdf_font;
 mod png;
 mod svg;
 mod yuv;
@@ -27,7 +28,7 @@ pub use isobmff::{Mp4Track, annex_b_units, mp4_file};
 pub use movie::MovieWriter;
 #[cfg(feature = "mp4")]
 pub use mp4::Mp4Writer;
-pub use pdf::pdf_bytes;
+pub use pdf::{PdfOptions, pdf_bytes};
 pub use png::png_bytes;
 pub use svg::svg_bytes;
 pub use yuv::{Yuv420, rgba_to_yuv420};

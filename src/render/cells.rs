@@ -6,7 +6,7 @@
 //! plotters writes an SVG with the bundled font, resvg rasterises it.
 
 use super::charts::{
-    Area, Chart, dark_axes, font, plot_error, rasterize_svg, rgb, short_number, titled,
+    Area, Chart, dark_axes, font, plot_error, rgb, same_format, short_number, titled,
 };
 use super::style::{self, DARK, size};
 use crate::encode::Rgb;
@@ -22,12 +22,14 @@ pub struct Cell {
 }
 
 /// A shade bar beside the legend: `label`, from `lo` (colour `from`) to
-/// `hi` (colour `to`).
+/// `hi` (colour `to`), shaded linearly in the value or (`log`) in its
+/// logarithm; three labelled ticks in one number format.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShadeBar {
     pub label: String,
     pub lo: f64,
     pub hi: f64,
+    pub log: bool,
     pub from: Rgb,
     pub to: Rgb,
 }
@@ -71,8 +73,7 @@ pub fn cell_chart(c: &CellChart, width: u32, height: u32) -> Result<Chart> {
         root.present().map_err(plot_error)?;
     }
     let svg = svg.replace("<rect ", "<rect shape-rendering=\"crispEdges\" ");
-    let pixmap = rasterize_svg(&svg, width, height)?;
-    Ok(Chart::new(pixmap, svg))
+    Chart::from_svg(&svg, width, height)
 }
 
 fn draw_cells(area: &Area<'_>, c: &CellChart) -> Result<()> {
@@ -84,6 +85,13 @@ fn draw_cells(area: &Area<'_>, c: &CellChart) -> Result<()> {
             .map(|&y| style::text_width(&short_number(y), size::TICK))
             .fold(0.0f32, f32::max);
     let y_area = (widest + size::LABEL + 11.0).floor().max(64.0) as u32;
+    // As many x labels as fit side by side with a gap (at most 10).
+    let widest_x =
+        c.xs.iter()
+            .map(|&x| style::text_width(&short_number(x), size::TICK))
+            .fold(0.0f32, f32::max);
+    let plot_w = area.dim_in_pixel().0 as f32 - y_area as f32 - 20.0;
+    let x_room = ((plot_w / (widest_x + 12.0)).floor() as usize).clamp(2, 10);
     let mut chart = ChartBuilder::on(area)
         .margin(14)
         .margin_right(6)
@@ -113,7 +121,7 @@ fn draw_cells(area: &Area<'_>, c: &CellChart) -> Result<()> {
     mesh.disable_mesh()
         .x_desc(c.x_label.as_str())
         .y_desc(c.y_label.as_str())
-        .x_labels(ticks(c.xs.len(), 10))
+        .x_labels(ticks(c.xs.len(), x_room))
         .y_labels(ticks(c.ys.len(), 10))
         .x_label_formatter(&xf)
         .y_label_formatter(&yf);
@@ -162,10 +170,28 @@ fn draw_legend(area: &Area<'_>, c: &CellChart) -> Result<()> {
             ))
             .map_err(plot_error)?;
         }
-        area.draw(&Text::new(short_number(bar.hi), (32, y), text.clone()))
+        // Ticks at the ends and the middle (geometric on a log bar), their
+        // labels centred on them, in one number format.
+        let mid = if bar.log && bar.lo > 0.0 {
+            (bar.lo * bar.hi).sqrt()
+        } else {
+            0.5 * (bar.lo + bar.hi)
+        };
+        let labels = same_format(&[bar.lo, mid, bar.hi]);
+        for (k, label) in labels.into_iter().enumerate() {
+            let ty = y + h - (k as i32) * h / 2;
+            area.draw(&PathElement::new(
+                vec![(8 + w, ty), (8 + w + 4, ty)],
+                rgb(DARK).stroke_width(1),
+            ))
             .map_err(plot_error)?;
-        area.draw(&Text::new(short_number(bar.lo), (32, y + h - 14), text))
-            .map_err(plot_error)?;
+            let anchored = text.clone().pos(plotters::style::text_anchor::Pos::new(
+                plotters::style::text_anchor::HPos::Left,
+                plotters::style::text_anchor::VPos::Center,
+            ));
+            area.draw(&Text::new(label, (8 + w + 7, ty), anchored))
+                .map_err(plot_error)?;
+        }
     }
     Ok(())
 }

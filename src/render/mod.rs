@@ -15,14 +15,18 @@ pub mod charts;
 pub mod compose;
 pub mod fold;
 pub mod movie_layout;
+pub mod page_style;
 pub mod picture;
 pub mod snapshot;
 pub mod style;
 mod svg;
+pub mod text_boxes;
 
 pub use canvas::{Canvas, Cap, Pen, Raster};
 pub use charts::{Axis, Chart, ChartSpec, Kymograph, Legend, LineStyle, Marker, Scale, Series};
 pub use compose::{FilmstripOptions, Frame, Layout, Panel};
 pub use movie_layout::MovieLayout;
+pub use page_style::{FontChoice, Length, Style, StyleName, StyleSpec, TextMode};
 pub use picture::{Item, Picture};
 pub use snapshot::{Region, Snapshot, View};
+pub use text_boxes::TextBox;

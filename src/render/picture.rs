@@ -10,6 +10,7 @@
 
 use super::canvas::{Canvas, Pen, Raster};
 use super::charts::Chart;
+use super::page_style::{Style, TextMode};
 use super::style::{self, HAlign, VAlign};
 use crate::encode::{self, Format, Formats, Rgb};
 use crate::error::{Error, Result};
@@ -153,10 +154,9 @@ impl Picture {
                 "the scale must be a number above 0, got {scale}"
             )));
         }
-        let (w, h) = (
-            (self.width * scale).ceil().max(1.0),
-            (self.height * scale).ceil().max(1.0),
-        );
+        // Rounding error (243 pt at 200 dpi is 675.00006 px) is no pixel.
+        let up = |v: f32| (v - 1e-3).ceil().max(1.0);
+        let (w, h) = (up(self.width * scale), up(self.height * scale));
         let max = MAX_RASTER_SIDE as f32;
         if w > max || h > max {
             return Err(Error::bad_input(format!(
@@ -174,9 +174,14 @@ impl Picture {
     }
 
     /// The bytes of the picture in each figure format of `formats`, in
-    /// order: PNG at `scale`; SVG and PDF (vector, design size) from one
-    /// parse of [`Picture::to_tree`].
+    /// order, on the page of the style in force ([`Style::current`]): PNG
+    /// at the style's resolution times `scale`; SVG and PDF vector, their
+    /// page the style's width (the design size at 0.75 pt per pixel at
+    /// `screen`), text as text or outlines as the style says.
     pub fn encode(&self, formats: &Formats, scale: f32) -> Result<Vec<Vec<u8>>> {
+        let style = Style::current();
+        let pt_per_px = style.pt_per_px(self.width);
+        let real_text = style.text == TextMode::Text;
         let tree = if formats.any_vector() {
             Some(self.to_tree(1.0)?)
         } else {
@@ -186,9 +191,22 @@ impl Picture {
             .as_slice()
             .iter()
             .map(|f| match (f, &tree) {
-                (Format::Png, _) => encode::png_bytes(&self.rasterize(scale)?),
-                (Format::Svg, Some(t)) => Ok(encode::svg_bytes(t)),
-                (Format::Pdf, Some(t)) => encode::pdf_bytes(t),
+                (Format::Png, _) => {
+                    encode::png_bytes(&self.rasterize(style.png_scale(self.width) * scale)?)
+                }
+                (Format::Svg, Some(_)) if real_text => {
+                    Ok(super::svg::document_in_points(self, pt_per_px)?.into_bytes())
+                }
+                // Outlines: a tree whose pixels are 1/96 in (0.75 pt).
+                (Format::Svg, Some(t)) if pt_per_px == 0.75 => Ok(encode::svg_bytes(t)),
+                (Format::Svg, Some(_)) => Ok(encode::svg_bytes(&self.to_tree(pt_per_px / 0.75)?)),
+                (Format::Pdf, Some(t)) => encode::pdf_bytes(
+                    t,
+                    encode::PdfOptions {
+                        pt_per_px,
+                        real_text,
+                    },
+                ),
                 _ => Err(Error::failed(format!("a figure cannot be written as {f}"))),
             })
             .collect()

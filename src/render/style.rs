@@ -1,20 +1,48 @@
 //! Shared style: the bundled font, colours, sizes, and text on tiny-skia
 //! canvases.
 //!
-//! One font (DejaVu Sans, `assets/fonts/`) is used everywhere: plotters lays
-//! chart text out with it, resvg rasterises chart SVGs with it, and canvas
-//! text (labels on snapshots and panels) is rasterised from its outlines with
-//! `ab_glyph`, which is fast enough for a time label on every movie frame.
+//! Two bundled fonts (`assets/fonts/`): DejaVu Sans (screen and slides) and
+//! Liberation Serif (print). The [`Style`](super::page_style::Style) in force
+//! picks one, and it is used everywhere: plotters lays chart text out with
+//! it, resvg rasterises chart SVGs with it, and canvas text (labels on
+//! snapshots and panels) is rasterised from its outlines with `ab_glyph`,
+//! which is fast enough for a time label on every movie frame.
 
+use super::page_style::{FontChoice, Style};
 use crate::encode::{PALETTE_ANCHORS, PALETTE_EXTRAS, Rgb};
 use ab_glyph::{Font, FontRef, PxScale, ScaleFont, point};
 use std::sync::{Arc, Once, OnceLock};
 use tiny_skia::{Color, Pixmap};
 
-/// The bundled font file.
+/// The bundled sans-serif font file.
 pub const FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 /// Its family name (as in the file; SVG text uses it).
 pub const FONT_FAMILY: &str = "DejaVu Sans";
+/// The bundled serif font file (SIL Open Font License 1.1).
+pub const SERIF_BYTES: &[u8] = include_bytes!("../../assets/fonts/LiberationSerif-Regular.ttf");
+/// Its family name (as in the file).
+pub const SERIF_FAMILY: &str = "Liberation Serif";
+
+/// The family name of the font of the style in force.
+pub fn family() -> &'static str {
+    family_of(Style::current().font)
+}
+
+/// The family name of `font`.
+pub fn family_of(font: FontChoice) -> &'static str {
+    match font {
+        FontChoice::Sans => FONT_FAMILY,
+        FontChoice::Serif => SERIF_FAMILY,
+    }
+}
+
+/// The bytes of `font`'s file.
+pub fn font_bytes(font: FontChoice) -> &'static [u8] {
+    match font {
+        FontChoice::Sans => FONT_BYTES,
+        FontChoice::Serif => SERIF_BYTES,
+    }
+}
 
 /// Dark grey: blocks, text, axes, the clamp of block 1.
 pub const DARK: Rgb = PALETTE_ANCHORS[0];
@@ -59,14 +87,24 @@ pub mod size {
     pub const GAP: u32 = 10;
 }
 
-/// The `i`-th chart series colour: dark, red, blue, green, then extras.
+/// Okabe & Ito's colour-blind-safe qualitative palette ("Color Universal
+/// Design", 2008), for chart series: black (our dark grey), vermillion,
+/// blue, bluish green, orange, sky blue, reddish purple. Its yellow is left
+/// out: too pale on white paper.
+pub const OKABE_ITO: [Rgb; 7] = [
+    DARK,
+    [213, 94, 0],
+    [0, 114, 178],
+    [0, 158, 115],
+    [230, 159, 0],
+    [86, 180, 233],
+    [204, 121, 167],
+];
+
+/// The `i`-th chart series colour, from [`OKABE_ITO`]; series should also
+/// differ by dash or marker (the palette repeats after seven).
 pub fn series_color(i: usize) -> Rgb {
-    let base = [DARK, RED, BLUE, GREEN];
-    if i < base.len() {
-        base[i]
-    } else {
-        SERIES_EXTRA[(i - base.len()) % SERIES_EXTRA.len()]
-    }
+    OKABE_ITO[i % OKABE_ITO.len()]
 }
 
 /// A tiny-skia colour from an [`Rgb`], fully opaque.
@@ -98,49 +136,137 @@ pub fn diverging(v: f64) -> Rgb {
     }
 }
 
-/// The font database for resvg: the bundled font only, loaded once.
+/// The font database for resvg: the bundled fonts only, loaded once.
 pub fn fontdb() -> Arc<resvg::usvg::fontdb::Database> {
     static DB: OnceLock<Arc<resvg::usvg::fontdb::Database>> = OnceLock::new();
     DB.get_or_init(|| {
         let mut db = resvg::usvg::fontdb::Database::new();
         db.load_font_data(FONT_BYTES.to_vec());
+        db.load_font_data(SERIF_BYTES.to_vec());
         db.set_sans_serif_family(FONT_FAMILY);
+        db.set_serif_family(SERIF_FAMILY);
         Arc::new(db)
     })
     .clone()
 }
 
-/// usvg options that resolve every font to the bundled one.
+/// usvg options that resolve every font to the bundled ones (the style's
+/// font where a text names none).
 pub fn usvg_options() -> resvg::usvg::Options<'static> {
     resvg::usvg::Options {
-        font_family: FONT_FAMILY.to_string(),
+        font_family: family().to_string(),
         fontdb: fontdb(),
         ..Default::default()
     }
 }
 
-/// Registers the bundled font with plotters under its family name and
-/// "sans-serif" (once per process).
+/// Registers the bundled fonts with plotters under their family names
+/// (and DejaVu Sans as "sans-serif"), once per process.
 pub fn register_plotters_font() {
     static ONCE: Once = Once::new();
     ONCE.call_once(|| {
-        for name in [FONT_FAMILY, "sans-serif"] {
-            // The bytes are the bundled, valid font; a failure would only
+        for (name, bytes) in [
+            (FONT_FAMILY, FONT_BYTES),
+            ("sans-serif", FONT_BYTES),
+            (SERIF_FAMILY, SERIF_BYTES),
+        ] {
+            // The bytes are the bundled, valid fonts; a failure would only
             // make plotters fall back to its own layout estimate.
-            let _ = plotters::style::register_font(
-                name,
-                plotters::style::FontStyle::Normal,
-                FONT_BYTES,
-            );
+            let _ = plotters::style::register_font(name, plotters::style::FontStyle::Normal, bytes);
         }
     });
 }
 
-/// The bundled font for canvas text, parsed once.
+/// The bundled font of `choice` for canvas text, parsed once.
+pub fn font_of(choice: FontChoice) -> Option<&'static FontRef<'static>> {
+    static FONTS: OnceLock<[Option<FontRef<'static>>; 2]> = OnceLock::new();
+    let fonts = FONTS.get_or_init(|| {
+        [
+            FontRef::try_from_slice(FONT_BYTES).ok(),
+            FontRef::try_from_slice(SERIF_BYTES).ok(),
+        ]
+    });
+    fonts[choice as usize].as_ref()
+}
+
+/// The font of the style in force.
 fn font() -> Option<&'static FontRef<'static>> {
-    static FONT: OnceLock<Option<FontRef<'static>>> = OnceLock::new();
-    FONT.get_or_init(|| FontRef::try_from_slice(FONT_BYTES).ok())
-        .as_ref()
+    font_of(Style::current().font)
+}
+
+/// Unicode super- and subscript characters and what they are in markup.
+const SCRIPT_CHARS: [(char, Shift, char); 30] = [
+    ('⁰', Shift::Super, '0'),
+    ('¹', Shift::Super, '1'),
+    ('²', Shift::Super, '2'),
+    ('³', Shift::Super, '3'),
+    ('⁴', Shift::Super, '4'),
+    ('⁵', Shift::Super, '5'),
+    ('⁶', Shift::Super, '6'),
+    ('⁷', Shift::Super, '7'),
+    ('⁸', Shift::Super, '8'),
+    ('⁹', Shift::Super, '9'),
+    ('⁺', Shift::Super, '+'),
+    ('⁻', Shift::Super, '−'),
+    ('ⁿ', Shift::Super, 'n'),
+    ('ᵀ', Shift::Super, 'T'),
+    ('₀', Shift::Sub, '0'),
+    ('₁', Shift::Sub, '1'),
+    ('₂', Shift::Sub, '2'),
+    ('₃', Shift::Sub, '3'),
+    ('₄', Shift::Sub, '4'),
+    ('₅', Shift::Sub, '5'),
+    ('₆', Shift::Sub, '6'),
+    ('₇', Shift::Sub, '7'),
+    ('₈', Shift::Sub, '8'),
+    ('₉', Shift::Sub, '9'),
+    ('₊', Shift::Sub, '+'),
+    ('₋', Shift::Sub, '−'),
+    ('ₙ', Shift::Sub, 'n'),
+    ('ₓ', Shift::Sub, 'x'),
+    ('ₘ', Shift::Sub, 'm'),
+    ('ᵢ', Shift::Sub, 'i'),
+];
+
+/// `text` with each Unicode super- or subscript character that the style's
+/// font has no glyph for written as markup (`ω₊` → `ω_{+}`, `10⁻⁴` →
+/// `10^{−4}`), so it is typeset as a smaller, shifted run of the same font
+/// (Liberation Serif has Greek but no script digits).
+pub fn scripts_as_markup(text: &str) -> std::borrow::Cow<'_, str> {
+    let script = |c: char| SCRIPT_CHARS.iter().find(|(s, _, _)| *s == c);
+    let Some(f) = font() else {
+        return text.into();
+    };
+    let missing = |c: char| script(c).is_some() && f.glyph_id(c).0 == 0;
+    if !text.chars().any(missing) {
+        return text.into();
+    }
+    let mut out = String::with_capacity(text.len() + 8);
+    let mut open: Option<Shift> = None;
+    for c in text.chars() {
+        let m = if missing(c) { script(c) } else { None };
+        match (m, open) {
+            (Some(&(_, shift, plain)), Some(o)) if o == shift => out.push(plain),
+            (Some(&(_, shift, plain)), _) => {
+                if open.is_some() {
+                    out.push('}');
+                }
+                out.push_str(if shift == Shift::Super { "^{" } else { "_{" });
+                out.push(plain);
+                open = Some(shift);
+            }
+            (None, _) => {
+                if open.take().is_some() {
+                    out.push('}');
+                }
+                out.push(c);
+            }
+        }
+    }
+    if open.is_some() {
+        out.push('}');
+    }
+    out.into()
 }
 
 /// Horizontal placement of canvas text relative to the anchor point.
@@ -208,7 +334,16 @@ pub const SUB_DROP: f32 = 0.16;
 /// `_{...}` a subscript (e.g. "e^{−κ(n−1)b}", "δθ_{n}"); anything else,
 /// including a `^` or `_` not followed by `{`, is literal text. An
 /// unclosed brace makes the rest of the text literal.
-pub fn runs(text: &str) -> Vec<(Shift, &str)> {
+pub fn runs(text: &str) -> Vec<(Shift, String)> {
+    let text = scripts_as_markup(text);
+    markup_runs(&text)
+        .into_iter()
+        .map(|(s, t)| (s, t.to_string()))
+        .collect()
+}
+
+/// [`runs`] of text already free of script characters.
+fn markup_runs(text: &str) -> Vec<(Shift, &str)> {
     let mut out = Vec::new();
     let mut rest = text;
     while !rest.is_empty() {
@@ -240,7 +375,7 @@ pub fn runs(text: &str) -> Vec<(Shift, &str)> {
 /// The text without markup (what a reader would type), e.g. for HTML
 /// attributes and searching.
 pub fn plain_text(text: &str) -> String {
-    runs(text).into_iter().map(|(_, t)| t).collect()
+    markup_runs(text).into_iter().map(|(_, t)| t).collect()
 }
 
 /// The text as HTML: markup to `<sup>`/`<sub>`, `&`, `<`, `>` escaped.
@@ -250,7 +385,7 @@ pub fn markup_html(text: &str) -> String {
             .replace('<', "&lt;")
             .replace('>', "&gt;")
     };
-    runs(text)
+    markup_runs(text)
         .into_iter()
         .map(|(shift, t)| match shift {
             Shift::Base => esc(t),
@@ -282,7 +417,7 @@ pub fn text_width(text: &str, size: f32) -> f32 {
     let Some(font) = font() else { return 0.0 };
     runs(text)
         .into_iter()
-        .map(|(shift, t)| plain_width(font, t, size * shift.scale()))
+        .map(|(shift, t)| plain_width(font, &t, size * shift.scale()))
         .sum()
 }
 
@@ -446,15 +581,18 @@ mod tests {
     #[test]
     fn markup_runs() {
         assert_eq!(
-            runs("e^{−κ(n−1)b}, κb"),
+            markup_runs("e^{−κ(n−1)b}, κb"),
             vec![
                 (Shift::Base, "e"),
                 (Shift::Super, "−κ(n−1)b"),
                 (Shift::Base, ", κb")
             ]
         );
-        assert_eq!(runs("a_b ^x"), vec![(Shift::Base, "a_b ^x")]);
-        assert_eq!(runs("δθ_{n}"), vec![(Shift::Base, "δθ"), (Shift::Sub, "n")]);
+        assert_eq!(markup_runs("a_b ^x"), vec![(Shift::Base, "a_b ^x")]);
+        assert_eq!(
+            markup_runs("δθ_{n}"),
+            vec![(Shift::Base, "δθ"), (Shift::Sub, "n")]
+        );
         assert_eq!(plain_text("10^{−3} s"), "10−3 s");
         assert_eq!(markup_html("x^{2} < y"), "x<sup>2</sup> &lt; y");
         assert!(text_width("e^{−κ}", 14.0) < text_width("e−κ", 14.0));
@@ -463,6 +601,26 @@ mod tests {
             vec!["aa e^{−κ n b} bb"]
         );
         assert_eq!(words(" a^{x y}  b "), vec!["a^{x y}", "b"]);
+    }
+
+    #[test]
+    fn script_characters_the_font_lacks_become_markup() {
+        use crate::render::page_style::{Style, StyleName};
+        // DejaVu Sans has ₊ and ⁻: the text stays as it is.
+        assert_eq!(scripts_as_markup("ω₊, 10⁻⁴"), "ω₊, 10⁻⁴");
+        // Liberation Serif has neither: the same text as markup.
+        let paper = Style::named(StyleName::Paper);
+        assert_eq!(
+            paper.apply(|| scripts_as_markup("ω₊(0), 10⁻⁴ s")),
+            "ω_{+}(0), 10^{−4} s"
+        );
+        assert_eq!(
+            paper.apply(|| runs("ω₊")),
+            vec![
+                (Shift::Base, "ω".to_string()),
+                (Shift::Sub, "+".to_string())
+            ]
+        );
     }
 
     #[test]

@@ -6,7 +6,7 @@
 
 use super::canvas::{Cap, Pen};
 use super::picture::{Item, Picture};
-use super::style::{self, FONT_FAMILY, Shift};
+use super::style::{self, Shift};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use std::fmt::Write;
@@ -14,6 +14,19 @@ use tiny_skia::{Path, PathSegment, Transform};
 
 /// The SVG document of `picture` at `scale` times its design size.
 pub fn document(picture: &Picture, scale: f32) -> Result<String> {
+    let (w, h) = (picture.width() * scale, picture.height() * scale);
+    document_sized(picture, (num(w), num(h)))
+}
+
+/// The SVG file of `picture` with real text (`<text>` naming the bundled
+/// font), its page `pt_per_px` points per design pixel: width and height
+/// in points (`243pt`), the design size as the view box.
+pub fn document_in_points(picture: &Picture, pt_per_px: f32) -> Result<String> {
+    let (w, h) = (picture.width() * pt_per_px, picture.height() * pt_per_px);
+    document_sized(picture, (format!("{}pt", num(w)), format!("{}pt", num(h))))
+}
+
+fn document_sized(picture: &Picture, (width, height): (String, String)) -> Result<String> {
     if picture.has_images() {
         return Err(Error::failed(
             "this picture holds a raster image and has no vector form",
@@ -23,10 +36,8 @@ pub fn document(picture: &Picture, scale: f32) -> Result<String> {
     let mut out = String::with_capacity(64 * 1024);
     let _ = write!(
         out,
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" \
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{height}\" \
          viewBox=\"0 0 {} {}\">\n<rect width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>\n",
-        num(w * scale),
-        num(h * scale),
         num(w),
         num(h),
         num(w),
@@ -126,23 +137,24 @@ fn text_element(
     let (left, baseline) = style::text_origin(at, width, size, align);
     let _ = write!(
         out,
-        "<text x=\"{}\" y=\"{}\" font-family=\"{FONT_FAMILY}\" font-size=\"{}\" fill=\"{}\" \
+        "<text x=\"{}\" y=\"{}\" font-family=\"{}\" font-size=\"{}\" fill=\"{}\" \
          xml:space=\"preserve\">",
         num(left),
         num(baseline),
+        style::family(),
         num(size),
         style::hex(color)
     );
     for (shift, run) in style::runs(text) {
         match shift {
-            Shift::Base => out.push_str(&escape(run)),
+            Shift::Base => out.push_str(&escape(&run)),
             _ => {
                 let _ = write!(
                     out,
                     "<tspan font-size=\"{}\" baseline-shift=\"{}\">{}</tspan>",
                     num(size * shift.scale()),
                     num(size * shift.rise()),
-                    escape(run)
+                    escape(&run)
                 );
             }
         }

@@ -47,6 +47,11 @@ pub struct Scene {
     pub run: Run,
     /// What to render. Default: a movie with a fixed camera.
     pub output: OutputSpec,
+    /// How figures look and the page they are printed on (`[style]`:
+    /// `name`, `width`, `height`, `font_size`, `font`, `dpi`, `text`).
+    /// Default: the `screen` style; command-line flags override it.
+    #[serde(skip_serializing_if = "crate::render::StyleSpec::is_empty")]
+    pub style: crate::render::StyleSpec,
 }
 
 impl Default for Scene {
@@ -60,6 +65,7 @@ impl Default for Scene {
             drive: DriveSpec::default(),
             run: Run::default(),
             output: OutputSpec::default(),
+            style: crate::render::StyleSpec::default(),
         }
     }
 }

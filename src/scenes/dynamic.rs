@@ -403,7 +403,8 @@ pub fn arrivals_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
         spec = spec.series(series);
         data.push(RunData::new(label, s, &run));
     }
-    Ok((charts::line_chart(&spec, 820, 560)?.into(), data))
+    let (w, h) = crate::render::Style::current().frame((820, 560));
+    Ok((charts::line_chart(&spec, w, h)?.into(), data))
 }
 
 /// Frame times of a movie: `frames` times evenly over [0, t_end].
@@ -697,7 +698,8 @@ pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Picture, RunDat
     let times = frame_times(scene.run.t_end, frames);
     let run = run::simulate(scene, &times)?;
     let title = describe::title(scene);
-    let image = kymograph_chart(&title, &run.trajectory, scene.model.n, 820, 560)?;
+    let (w, h) = crate::render::Style::current().frame((820, 560));
+    let image = kymograph_chart(&title, &run.trajectory, scene.model.n, w, h)?;
     Ok((image.into(), RunData::new("", scene, &run)))
 }
 

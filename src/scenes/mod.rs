@@ -27,6 +27,9 @@ pub struct Outputs {
     pub scale: f32,
     /// Quality of MP4 movies. Default: high (docs/formats.md).
     pub mp4_quality: Mp4Quality,
+    /// Style flags (`--style`, `--width` …), over each scene's `[style]`.
+    /// Default: none.
+    pub style: crate::render::StyleSpec,
 }
 
 impl Default for Outputs {
@@ -36,6 +39,7 @@ impl Default for Outputs {
             movies: Formats::default_for(FormatKind::Movie),
             scale: 1.0,
             mp4_quality: Mp4Quality::default(),
+            style: crate::render::StyleSpec::default(),
         }
     }
 }
@@ -156,6 +160,25 @@ pub fn figure_picture(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
 /// [`file_names_for`] order; `frame_done` is called after each movie frame
 /// (for a progress bar).
 pub fn render_with(
+    scene: &Scene,
+    movie: &MovieOptions,
+    outputs: &Outputs,
+    frame_done: &(dyn Fn() + Sync),
+) -> Result<Vec<(String, Vec<u8>)>> {
+    style_of(scene, outputs)?.apply(|| render_styled(scene, movie, outputs, frame_done))
+}
+
+/// The style a scene's figures are drawn in: the flags over its `[style]`.
+pub fn style_of(scene: &Scene, outputs: &Outputs) -> Result<crate::render::Style> {
+    outputs
+        .style
+        .over(scene.style)
+        .resolve()
+        .map_err(|e| Error::bad_input(format!("{}: style: {e}", scene.name)))
+}
+
+/// [`render_with`] with the scene's style in force.
+fn render_styled(
     scene: &Scene,
     movie: &MovieOptions,
     outputs: &Outputs,

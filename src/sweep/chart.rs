@@ -22,8 +22,14 @@ use crate::scene::describe;
 use crate::scene::sweep::Param;
 use serde::Serialize;
 
-/// Width of a sweep chart, pixels.
+/// Width of a sweep chart at the screen style, pixels.
 pub const WIDTH: u32 = 820;
+
+/// Width of a sweep chart in the style in force (the page's design width
+/// at a print style).
+fn width() -> u32 {
+    crate::render::Style::current().frame((WIDTH, 1)).0
+}
 
 /// The colour of each outcome.
 pub fn outcome_color(o: Outcome) -> Rgb {
@@ -151,8 +157,11 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
     )
     .title(title);
     // Kinks drawn a little above, antikinks a little below their front,
-    // so that neither hides the other.
-    let offsets = if fold { [0.18, -0.18] } else { [0.0, 0.0] };
+    // so that neither hides the other: 5 px each way (the markers' radius
+    // and a gap) on the panel's ~200 px of plot, at most half a block.
+    let px_per_block = 200.0 / (n_max as f64 + 0.9);
+    let d = (5.0 / px_per_block).clamp(0.18, 0.45);
+    let offsets = if fold { [d, -d] } else { [0.0, 0.0] };
     for ((wave, marker, keep), dy) in waves.iter().zip(offsets) {
         for o in Outcome::ALL {
             let pts: Vec<(f64, f64)> = records
@@ -211,25 +220,23 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
         speed.title = Some("no run propagated far enough to measure a speed".into());
     }
     let mut panels = vec![
-        (line_chart(&front, WIDTH, 300)?, 300),
-        (line_chart(&speed, WIDTH, 260)?, 260),
+        (line_chart(&front, width(), 300)?, 300),
+        (line_chart(&speed, width(), 260)?, 260),
     ];
     if param == Param::Alpha && plan.spec.charts.theory {
-        panels.push((
-            theory_panel(plan, x_label, fold, Some((WIDTH, x_range)))?,
-            240,
-        ));
+        panels.extend(theory_panel(plan, x_label, fold, Some((width(), x_range)))?);
     }
     stack(&panels)
 }
 
-/// ω₊(0) and ΔU against α (or |α|); `x_range` pins the axis.
+/// ω₊(0) and ΔU against α (or |α|), one panel each; `x_range` pins the
+/// axis.
 fn theory_panel(
     plan: &Plan,
     x_label: &str,
     fold: bool,
     width_range: Option<(u32, (f64, f64))>,
-) -> Result<Chart> {
+) -> Result<Vec<(Chart, u32)>> {
     let pts = theory_points(plan);
     let x = |a: f64| if fold { a.abs() } else { a };
     let mut gap: Vec<(f64, f64)> = pts
@@ -250,25 +257,33 @@ fn theory_panel(
             xa = xa.range(lo, hi);
             w
         }
-        None => WIDTH,
+        None => width(),
     };
-    // Headroom above the curves for the legend, so that the plot keeps the
-    // full width and its α axis lines up with the panels above.
-    let top = gap
-        .iter()
-        .chain(&barrier)
-        .map(|p| p.1)
-        .filter(|v| v.is_finite())
-        .fold(0.0, f64::max);
-    let mut spec = ChartSpec::new(
-        xa,
-        Axis::new("linear theory").range(0.0, 1.45 * top.max(1e-3)),
-    )
-    .series(Series::line("gap ω₊(0) τ", gap, style::BLUE))
-    .series(Series::line("barrier ΔU / mgs (per pair)", barrier, style::RED).dashed());
-    spec.legend = crate::render::charts::Legend::UpperMiddle;
-    line_chart(&spec, width, 240)
+    // Two quantities in two units: one panel each (never one axis for
+    // both), each named by its y axis, so no legend covers the curves.
+    let panel = |label: &str, pts: Vec<(f64, f64)>, color, dashed: bool| {
+        let top = pts
+            .iter()
+            .map(|p| p.1)
+            .filter(|v| v.is_finite())
+            .fold(0.0, f64::max);
+        let mut series = Series::line("", pts, color);
+        if dashed {
+            series = series.dashed();
+        }
+        let mut spec = ChartSpec::new(xa.clone(), Axis::new(label).range(0.0, 1.1 * top.max(1e-3)))
+            .series(series);
+        spec.legend = crate::render::charts::Legend::Hidden;
+        line_chart(&spec, width, THEORY_PANEL_HEIGHT).map(|c| (c, THEORY_PANEL_HEIGHT))
+    };
+    Ok(vec![
+        panel("gap ω₊(0) τ", gap, style::BLUE, false)?,
+        panel("barrier ΔU / mgs", barrier, style::RED, true)?,
+    ])
 }
+
+/// Height of each linear-theory panel under a sweep chart, pixels.
+const THEORY_PANEL_HEIGHT: u32 = 170;
 
 fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
     let varied = plan.varied();
@@ -347,11 +362,12 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
             },
             lo,
             hi,
+            log,
             from: pale(outcome_color(Outcome::Propagated)),
             to: outcome_color(Outcome::Propagated),
         }),
     };
-    let main = cell_chart(&chart, WIDTH, 480)?;
+    let main = cell_chart(&chart, width(), 480)?;
     let mut panels = vec![(main, 480)];
     if px == Param::Alpha && plan.spec.charts.theory {
         let even = xs
@@ -359,11 +375,11 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
             .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
         let range = if even && xs.len() > 1 {
             let h = 0.5 * (xs[1] - xs[0]);
-            Some((WIDTH - 190, (xs[0] - h, xs[xs.len() - 1] + h)))
+            Some((width() - 190, (xs[0] - h, xs[xs.len() - 1] + h)))
         } else {
             None
         };
-        panels.push((theory_panel(plan, px.label(), false, range)?, 240));
+        panels.extend(theory_panel(plan, px.label(), false, range)?);
     }
     stack(&panels)
 }
@@ -372,9 +388,10 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
 /// rasterised at their own size.
 fn stack(panels: &[(Chart, u32)]) -> Result<Chart> {
     let height: u32 = panels.iter().map(|(_, h)| *h).sum();
+    let width = width();
     let mut svg = format!(
-        "<svg width=\"{WIDTH}\" height=\"{height}\" viewBox=\"0 0 {WIDTH} {height}\" \
-         xmlns=\"http://www.w3.org/2000/svg\">\n<rect x=\"0\" y=\"0\" width=\"{WIDTH}\" \
+        "<svg width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\" \
+         xmlns=\"http://www.w3.org/2000/svg\">\n<rect x=\"0\" y=\"0\" width=\"{width}\" \
          height=\"{height}\" fill=\"#ffffff\"/>\n"
     );
     let mut y = 0;
@@ -386,7 +403,7 @@ fn stack(panels: &[(Chart, u32)]) -> Result<Chart> {
         y += h;
     }
     svg.push_str("</svg>\n");
-    let pixmap = rasterize_svg(&svg, WIDTH, height)?;
+    let pixmap = rasterize_svg(&svg, width, height)?;
     Ok(Chart::new(pixmap, svg))
 }
 

@@ -4,7 +4,8 @@
 use super::ticks::short_number;
 use super::title::titled;
 use super::{
-    Area, Chart, X_LABEL_AREA, Y_LABEL_AREA, check_size, dark_axes, font, plot_error, rgb,
+    Area, Chart, Scale, X_LABEL_AREA, check_size, dark_axes, end_labels, font, plot_error, rgb,
+    y_label_area,
 };
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
@@ -105,7 +106,7 @@ fn draw_heatmap(area: &Area<'_>, k: &Kymograph<'_>) -> Result<()> {
         .margin(14)
         .margin_right(4)
         .x_label_area_size(X_LABEL_AREA)
-        .y_label_area_size(Y_LABEL_AREA)
+        .y_label_area_size(y_label_area(&end_labels(t0, t1, Scale::Linear)))
         .build_cartesian_2d(0.5..n + 0.5, -t1..-t0)
         .map_err(plot_error)?;
     let rows = chart.plotting_area().get_pixel_range().1.len().max(1);

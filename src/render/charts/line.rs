@@ -5,9 +5,10 @@ use super::glyph::Glyph;
 use super::legend::{auto_legend, draw_legend, draw_outside_legend, has_labels, legend_box};
 use super::ranges::{Range2, data_range, equalize, runs};
 use super::ticks::tick_label;
+use super::title::{fit_title, titled};
 use super::{
     Area, Chart, ChartSpec, Ctx, Legend, LineStyle, Marker, Scale, Series, X_LABEL_AREA,
-    Y_LABEL_AREA, check_size, dark_axes, font, plot_error, rgb,
+    check_size, dark_axes, end_labels, font, plot_error, rgb, y_label_area,
 };
 use crate::error::Result;
 use crate::render::style::{self, DARK, GREY, size};
@@ -57,11 +58,14 @@ fn draw_any(
     xr: Range<f64>,
     yr: Range<f64>,
 ) -> Result<Probe> {
+    let y_area = y_label_area(&end_labels(yr.start, yr.end, spec.y.scale));
     match (spec.x.scale, spec.y.scale) {
-        (Scale::Linear, Scale::Linear) => draw_xy(root, spec, pass, xr, yr),
-        (Scale::Linear, Scale::Log) => draw_xy(root, spec, pass, xr, yr.log_scale()),
-        (Scale::Log, Scale::Linear) => draw_xy(root, spec, pass, xr.log_scale(), yr),
-        (Scale::Log, Scale::Log) => draw_xy(root, spec, pass, xr.log_scale(), yr.log_scale()),
+        (Scale::Linear, Scale::Linear) => draw_xy(root, spec, pass, (xr, yr), y_area),
+        (Scale::Linear, Scale::Log) => draw_xy(root, spec, pass, (xr, yr.log_scale()), y_area),
+        (Scale::Log, Scale::Linear) => draw_xy(root, spec, pass, (xr.log_scale(), yr), y_area),
+        (Scale::Log, Scale::Log) => {
+            draw_xy(root, spec, pass, (xr.log_scale(), yr.log_scale()), y_area)
+        }
     }
 }
 
@@ -118,7 +122,13 @@ fn equalized(
     Ok(equalize(xr, yr, pw, ph))
 }
 
-fn draw_xy<XS, YS>(root: &Area<'_>, spec: &ChartSpec, pass: Pass, xs: XS, ys: YS) -> Result<Probe>
+fn draw_xy<XS, YS>(
+    root: &Area<'_>,
+    spec: &ChartSpec,
+    pass: Pass,
+    (xs, ys): (XS, YS),
+    y_area: u32,
+) -> Result<Probe>
 where
     XS: AsRangedCoord<Value = f64>,
     YS: AsRangedCoord<Value = f64>,
@@ -130,12 +140,23 @@ where
     } else {
         root.clone()
     };
+    // A title that fits on one line is the chart's caption; a longer one is
+    // wrapped and shrunk to the chart's width (`fit_title`), never cut.
+    let width = root.dim_in_pixel().0;
+    let one_line = spec.title.as_deref().is_none_or(|t| {
+        fit_title(t, width).lines.len() == 1 && fit_title(t, width).size == size::TITLE
+    });
+    let area = if one_line {
+        area
+    } else {
+        titled(area, spec.title.as_deref(), width)?
+    };
     let mut builder = ChartBuilder::on(&area);
     builder
         .margin(14)
         .x_label_area_size(X_LABEL_AREA)
-        .y_label_area_size(Y_LABEL_AREA);
-    if let Some(t) = &spec.title {
+        .y_label_area_size(y_area);
+    if let Some(t) = spec.title.as_ref().filter(|_| one_line) {
         builder.caption(t, font(size::TITLE).into_font().color(&rgb(DARK)));
     }
     let mut chart = builder.build_cartesian_2d(xs, ys).map_err(plot_error)?;
@@ -180,6 +201,11 @@ where
         .y_label_formatter(&yf)
         .x_labels(7)
         .y_labels(7);
+    // At a print style the minor grid is one faint line between major
+    // ones (a full minor mesh prints as a grey fog at column width).
+    if crate::render::Style::current().is_print() {
+        mesh.max_light_lines(1);
+    }
     dark_axes(&mut mesh)
         .bold_line_style(rgb(DARK).mix(0.12))
         .light_line_style(rgb(DARK).mix(0.05))

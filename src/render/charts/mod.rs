@@ -23,11 +23,10 @@ pub use line::line_chart;
 pub use rasterize::{Chart, rasterize_svg, rasterize_tree};
 pub use spec::{Axis, ChartSpec, Legend, LineStyle, Marker, Scale, Series};
 pub use svg_text::typeset_svg_text;
-pub use ticks::{short_number, tick_label};
+pub use ticks::{same_format, short_number, tick_label};
 pub(super) use title::titled;
 pub use title::{FittedTitle, fit_title};
 
-use super::style::FONT_FAMILY;
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
@@ -43,7 +42,7 @@ pub(super) fn plot_error<E: std::fmt::Debug>(e: E) -> Error {
 /// Plotters font size that gives a CSS em size of `px` in the SVG (plotters
 /// writes its size divided by 1.24).
 pub(super) fn font(px: f32) -> (&'static str, f64) {
-    (FONT_FAMILY, f64::from(px) * 1.24)
+    (super::style::family(), f64::from(px) * 1.24)
 }
 
 pub(super) fn rgb(c: Rgb) -> RGBColor {
@@ -79,5 +78,40 @@ fn check_size(width: u32, height: u32) -> Result<()> {
 /// Left, right, top, bottom label areas and margins in pixels.
 const Y_LABEL_AREA: u32 = 64;
 const X_LABEL_AREA: u32 = 50;
+
+/// Width of a y label area that holds tick labels as wide as the widest of
+/// `ticks` (measured in the style's font), the tick marks, and the rotated
+/// axis label beside them with a gap: at least [`Y_LABEL_AREA`]. Placing
+/// the axis label from the measured tick labels keeps "t/τ" clear of
+/// "15000" (plotters puts the label at the area's outer edge).
+pub(super) fn y_label_area(ticks: &[String]) -> u32 {
+    use super::style::{self, size};
+    let widest = ticks
+        .iter()
+        .map(|t| style::text_width(t, size::TICK))
+        .fold(0.0f32, f32::max);
+    // Tick mark and its gap (10 px), the label's line (1.3 em), a gap.
+    let need = widest + 10.0 + 1.3 * size::LABEL + 6.0;
+    (need.ceil() as u32).max(Y_LABEL_AREA)
+}
+
+/// The tick labels a linear or log axis over `lo..hi` can show at its ends
+/// and middle (the widest of them sets [`y_label_area`]).
+pub(super) fn end_labels(lo: f64, hi: f64, scale: Scale) -> Vec<String> {
+    let mid = match scale {
+        Scale::Log if lo > 0.0 && hi > 0.0 => (lo * hi).sqrt(),
+        _ => 0.5 * (lo + hi),
+    };
+    // Rounded as a tick would be: 3 significant digits of the span.
+    let span = (hi - lo).abs().max(f64::MIN_POSITIVE);
+    let step = 10f64.powf(span.log10().floor() - 1.0);
+    [lo, mid, hi]
+        .into_iter()
+        .map(|v| match scale {
+            Scale::Log => tick_label(10f64.powf(v.max(f64::MIN_POSITIVE).log10().floor()), scale),
+            Scale::Linear => tick_label((v / step).round() * step, scale),
+        })
+        .collect()
+}
 
 type Ctx<'a, 'b, X, Y> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, Y>>;

@@ -6,7 +6,7 @@ use crate::render::style::{self, size};
 /// holds markup (`^{...}`, `_{...}`) into `<tspan>`s with a smaller size
 /// and a shifted baseline, sized from the element's `font-size`.
 pub fn typeset_svg_text(svg: &str) -> String {
-    if !svg.contains("^{") && !svg.contains("_{") {
+    if !svg.contains("^{") && !svg.contains("_{") && style::scripts_as_markup(svg) == svg {
         return svg.to_string();
     }
     let mut out = String::with_capacity(svg.len() + 256);
@@ -25,7 +25,7 @@ pub fn typeset_svg_text(svg: &str) -> String {
         out.push_str(&rest[..tag_end]);
         for (shift, run) in style::runs(&rest[tag_end..close]) {
             match shift {
-                style::Shift::Base => out.push_str(run),
+                style::Shift::Base => out.push_str(&run),
                 _ => out.push_str(&format!(
                     "<tspan font-size=\"{:.2}\" baseline-shift=\"{:.2}\">{run}</tspan>",
                     size * shift.scale(),

@@ -37,6 +37,43 @@ fn plain_number(v: f64) -> String {
     trim(format!("{v:.decimals$}"))
 }
 
+/// Labels of `values` in one number format, two significant digits: all
+/// as m×10ⁿ when they span more than a factor 100 or any lies outside
+/// [0.01, 10⁴), else all with the same number of decimals (a colour bar's
+/// ticks: "4.8×10⁻⁴ … 5×10⁻³", never "0.004982" beside "4.76×10⁻⁴").
+pub fn same_format(values: &[f64]) -> Vec<String> {
+    let mags: Vec<f64> = values
+        .iter()
+        .map(|v| v.abs())
+        .filter(|a| *a > 0.0 && a.is_finite())
+        .collect();
+    let (lo, hi) = mags
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(l, h), a| (l.min(*a), h.max(*a)));
+    if mags.is_empty() {
+        return values.iter().map(|v| short_number(*v)).collect();
+    }
+    if hi / lo > 100.0 || lo < 0.01 || hi >= 1e4 {
+        return values
+            .iter()
+            .map(|&v| {
+                if v == 0.0 {
+                    return "0".into();
+                }
+                let e = v.abs().log10().floor();
+                let m = v / 10f64.powf(e);
+                let m = trim(format!("{m:.1}"));
+                format!("{m}×10{}", superscript(e as i64)).replace('-', "−")
+            })
+            .collect();
+    }
+    let decimals = (1.0 - lo.log10().floor()).clamp(0.0, 6.0) as usize;
+    values
+        .iter()
+        .map(|v| format!("{v:.decimals$}").replace('-', "−"))
+        .collect()
+}
+
 fn trim(s: String) -> String {
     if !s.contains('.') {
         return s;
@@ -69,5 +106,14 @@ mod tests {
         assert_eq!(short_number(1e-6), "1×10⁻⁶");
         assert_eq!(tick_label(1e-3, Scale::Log), "10⁻³");
         assert_eq!(tick_label(100.0, Scale::Log), "10²");
+    }
+
+    #[test]
+    fn colour_bar_labels_share_one_format() {
+        // The phase diagram's bar of the issue: 4.76×10⁻⁴ to 0.004982.
+        let l = same_format(&[4.76e-4, (4.76e-4f64 * 0.004982).sqrt(), 0.004982]);
+        assert_eq!(l, ["4.8×10⁻⁴", "1.5×10⁻³", "5×10⁻³"]);
+        assert_eq!(same_format(&[0.1, 0.55, 1.0]), ["0.10", "0.55", "1.00"]);
+        assert_eq!(same_format(&[-1.0, 0.0, 1.0]), ["−1.0", "0.0", "1.0"]);
     }
 }

@@ -20,7 +20,46 @@ use crate::theory::gravity;
 use std::f64::consts::PI;
 
 fn chart(spec: &ChartSpec, w: u32, h: u32) -> Result<Picture> {
+    let (w, h) = fit((w, h));
     Ok(line_chart(spec, w, h)?.into())
+}
+
+/// Width of a theory figure's page at the screen style, pixels.
+const FIGURE_WIDTH: u32 = 900;
+
+/// The size of a chart that is `(w, h)` on the screen page, at the style
+/// in force: unchanged at screen; at a narrow print page (one column of
+/// panels, [`columns`]) the page's width less the margins, its height in
+/// proportion; at a wide one the same share of the page as on screen.
+fn fit((w, h): (u32, u32)) -> (u32, u32) {
+    let style = crate::render::Style::current();
+    if !style.is_print() {
+        return (w, h);
+    }
+    let page = page_width(FIGURE_WIDTH) as f32;
+    let f = if narrow() {
+        (page - 2.0 * size::MARGIN as f32 - 8.0) / w as f32
+    } else {
+        page / FIGURE_WIDTH as f32
+    };
+    let s = |v: u32| ((v as f32 * f).round() as u32).max(60);
+    (s(w), s(h))
+}
+
+/// The page's width in design pixels: `screen` at the screen style.
+fn page_width(screen: u32) -> u32 {
+    crate::render::Style::current().frame((screen, 1)).0
+}
+
+/// Whether the page is too narrow for panels side by side (`paper`).
+fn narrow() -> bool {
+    let style = crate::render::Style::current();
+    style.is_print() && page_width(FIGURE_WIDTH) < 600
+}
+
+/// Columns of a grid of panels: one on a narrow page, else `n`.
+fn columns(n: usize) -> usize {
+    if narrow() { 1 } else { n }
 }
 
 fn pairs(points: &[[f64; 2]]) -> Vec<(f64, f64)> {
@@ -56,14 +95,14 @@ pub fn gravity_potential(input: &FigureInput) -> Result<Picture> {
         .filter(|&i| i < input.a_over_b.len())
         .collect();
     let insets = potential_insets(input, &which)?;
-    let body = grid(&[Panel::new(plot), Panel::new(insets)], 2)?;
+    let body = grid(&[Panel::new(plot), Panel::new(insets)], columns(2))?;
     let notes = format!(
         "Linkage limit, b/s = {b}: U(θ) = −mg√(2(a² + b²) − 4s²cos²θ − (a² − b²)²/(4s²cos²θ)), \
          a symmetric double well whose minima θ = ±α (cos α = √(a² − b²)/2s) all lie \
          at U_{{min}} = −2mgb. Right: the ladder (4 blocks) at θ = −α and θ = +α for two of the \
          curves; the two orientations are degenerate."
     );
-    frame(&input.title, &body, &notes, 900)
+    frame(&input.title, &body, &notes, page_width(FIGURE_WIDTH))
 }
 
 /// The U(θ) curves' colours, with their names for the inset labels: none
@@ -132,14 +171,14 @@ pub fn dispersion(input: &FigureInput) -> Result<Picture> {
     for (l, d) in lines.iter().zip(&dots) {
         panels.push(Panel::new(dispersion_panel(l, d, y_max)?));
     }
-    let mut body = grid(&panels, 3)?;
+    let mut body = grid(&panels, columns(3))?;
     body = stack(&body, &dispersion_key(body.pixel_size().0)?);
     let notes = "ω₀ = √(k/m) = 1/τ, I = m s²/4, constraint δv_{n} = (−1)ⁿ(s/2) sin α δθ_{n}. The printed closed form is √2 too small for this ω₀ \
                  (docs/paper-errata.md item 9): it is exact if ω₀ is read as √(2k/m). The \
                  eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I), \
                  as in the paper) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \
                  of the rotational branch; ω₋ is acoustic.";
-    frame(&input.title, &body, notes, 900)
+    frame(&input.title, &body, notes, page_width(FIGURE_WIDTH))
 }
 
 fn dispersion_panel(
@@ -225,7 +264,7 @@ pub fn winding(input: &FigureInput) -> Result<Picture> {
         let p = input.params(n, b, sign * alpha)?;
         panels.push(Panel::new(winding_panel(&p)?));
     }
-    let body = grid(&panels, 2)?;
+    let body = grid(&panels, columns(2))?;
     let notes = format!(
         "b/s = {b}. Solid: det C(q)/(e^{{iqb}} − 1) = 2(c₁e^{{iqb}} − c₂), the circle of \
                  radius 2|c₁| about −2c₂ whose winding about the origin (+) is the winding number \
@@ -234,7 +273,7 @@ pub fn winding(input: &FigureInput) -> Result<Picture> {
                  encloses the origin (n = 1, surface zero mode at the top); for α < 0 it does not \
                  (n = 0)."
     );
-    frame(&input.title, &body, &notes, 900)
+    frame(&input.title, &body, &notes, page_width(FIGURE_WIDTH))
 }
 
 fn winding_panel(p: &crate::model::Params) -> Result<Picture> {
@@ -281,7 +320,7 @@ pub fn edge_mode(input: &FigureInput) -> Result<Picture> {
         panels.push(Panel::new(edge_panel(input, sign)?));
     }
     let (n, b) = (input.model.n, input.model.b);
-    let body = grid(&panels, 2)?;
+    let body = grid(&panels, columns(2))?;
     let notes = format!(
         "N = {n}, b/s = {b}; surface zero mode of the chain with the B nodes pinned \
                  (the paper's edge mode), found as the null vector of the model's compatibility \
@@ -291,7 +330,7 @@ pub fn edge_mode(input: &FigureInput) -> Result<Picture> {
                  Beyond |α| ≈ {:.1}° (b < 2s|sin α|) c₂/c₁ < 0 and δθ_{{n}} alternates in sign.",
         (0.5 * b).min(1.0).asin().to_degrees()
     );
-    frame(&input.title, &body, &notes, 900)
+    frame(&input.title, &body, &notes, page_width(FIGURE_WIDTH))
 }
 
 fn edge_panel(input: &FigureInput, sign: f64) -> Result<Picture> {
@@ -366,7 +405,7 @@ pub fn barrier(input: &FigureInput) -> Result<Picture> {
                  Newton's method at θ = 0 and θ = α. The barrier vanishes as α → 0 (the gapless \
                  configuration of Fig. S3) and is largest for the symmetric toy α → 90°."
     );
-    frame(&input.title, &plot, &notes, 840)
+    frame(&input.title, &plot, &notes, page_width(840))
 }
 
 /// U(0) − U(α) from the model's two-block linkage (no closed form).
