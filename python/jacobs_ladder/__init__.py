@@ -590,14 +590,21 @@ def sweep(
     - ``name``: the sweep's name (in its JSON). Default the base's.
     - ``max_runs``: refuse a larger grid. Default 100000.
 
-    Returns a :class:`Table` equal to the CLI's ``sweep-NAME.csv``.
+    The axes vary in the order of ``SWEEP_PARAMETERS`` (the first slowest),
+    as ``ladder sweep``'s flags do. Returns a :class:`Table` equal to the
+    CLI's ``sweep-NAME.csv``.
     """
-    grid = {k: keys.pop(k) for k in list(keys) if k in SWEEP_PARAMETERS}
+    # Axes in the command line's order (the first varies slowest), whatever
+    # the order of the keywords, so that the rows are the CLI's.
+    grid = {k: keys.pop(k) for k in SWEEP_PARAMETERS if k in keys}
     if not grid:
         raise ValueError(
             "sweep needs at least one grid keyword: " + ", ".join(SWEEP_PARAMETERS)
         )
-    output: Dict[str, Any] = {"kind": "sweep", "grid": grid}
+    # The first axis goes with the scene (a sweep needs one to be checked);
+    # the others follow in order (a JSON object would sort them).
+    (first, first_values), *rest = grid.items()
+    output: Dict[str, Any] = {"kind": "sweep", "grid": {first: first_values}}
     if cap is not None:
         output["cap"] = cap
     if quiet is not None:
@@ -606,5 +613,6 @@ def sweep(
     if name is not None:
         keys["name"] = name
     native = None if base is None else base._s
-    csv_text, json_text = _native.sweep(native, _keywords(keys), int(max_runs))
+    axes = [(k, json.dumps(v, default=_plain)) for k, v in rest]
+    csv_text, json_text = _native.sweep(native, _keywords(keys), axes, int(max_runs))
     return Table(csv_text, json_text)

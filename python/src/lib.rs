@@ -48,18 +48,34 @@ fn theory(py: Python<'_>, alpha: f64, n: usize, b: f64) -> PyResult<String> {
 }
 
 /// `sweep`: the base scene with `kwargs` applied (its `output` the sweep
-/// and its grid), run whole; returns (CSV, JSON) as `ladder sweep` writes
-/// them.
+/// with its first axis), the axes `grid` added in their order (each a
+/// parameter's name and its values as JSON: a JSON object would lose the
+/// order), run whole;
+/// returns (CSV, JSON) as `ladder sweep` writes them.
 #[pyfunction]
-#[pyo3(signature = (base, kwargs, max_runs))]
+#[pyo3(signature = (base, kwargs, grid, max_runs))]
 fn sweep(
     py: Python<'_>,
     base: Option<&scene::PyScene>,
     kwargs: &str,
+    grid: Vec<(String, String)>,
     max_runs: usize,
 ) -> PyResult<(String, String)> {
+    use jacobs_ladder::scene::sweep::{Param, Values};
     let base = base.map_or_else(Scene::default, |s| s.scene.clone());
-    let scene = kwargs::apply(&base, kwargs).py_err()?;
+    let mut scene = kwargs::apply(&base, kwargs).py_err()?;
+    if let OutputSpec::Sweep(spec) = &mut scene.output {
+        for (name, values) in grid {
+            let param = Param::from_name(&name)
+                .ok_or_else(|| Error::bad_input(format!("{name}: not a sweep parameter")))
+                .py_err()?;
+            let values: Values = serde_json::from_str(&values)
+                .map_err(|e| Error::bad_input(format!("{name}: {e}")))
+                .py_err()?;
+            spec.grid.0.push((param, values));
+        }
+    }
+    let scene = kwargs::checked(scene).py_err()?;
     work::run(py, move |_| sweep_tables(&scene, max_runs))
 }
 

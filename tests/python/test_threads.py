@@ -89,18 +89,20 @@ def engine_threads():
 
 
 def test_ctrl_c_stops_a_long_run_within_a_second():
-    """A run of about a minute, interrupted after 0.5 s as Ctrl-C does
-    (`_thread.interrupt_main` raises SIGINT's effect in the main thread),
+    """A run of about 10 s (a minute on a busy machine), interrupted after
+    0.5 s as Ctrl-C does (`_thread.interrupt_main` raises SIGINT's effect in the main thread),
     raises KeyboardInterrupt within a second; the engine is usable after."""
     linux = os.path.isdir("/proc/self/task")
     # Threads named so before the call (the engine's thread pool, made by
     # an earlier call from the engine's thread, inherits its name).
+    # (a thread of a call just returned may still be ending: let it end).
+    time.sleep(0.1)
     before = engine_threads() if linux else 0
     timer = threading.Timer(0.5, _thread.interrupt_main)
     start = time.perf_counter()
     timer.start()
     with pytest.raises(KeyboardInterrupt):
-        jl.simulate(integrator="symplectic-euler", t_end=5e6, sample_every=1e6)
+        jl.simulate(integrator="symplectic-euler", t_end=1e6, sample_every=1e5)
     elapsed = time.perf_counter() - start
     timer.join()
     assert elapsed < 1.5, f"stopped after {elapsed:.2f} s"
@@ -109,6 +111,6 @@ def test_ctrl_c_stops_a_long_run_within_a_second():
         deadline = time.perf_counter() + 1.0
         while engine_threads() > before and time.perf_counter() < deadline:
             time.sleep(0.01)
-        assert engine_threads() == before, "the interrupted simulation still runs"
+        assert engine_threads() <= before, "the interrupted simulation still runs"
     run = jl.simulate(n=6, t_end=1500, sample_every=500)
     assert run.t[-1] == 1500
