@@ -47,11 +47,12 @@ def busy_reason():
     return None
 
 
-@pytest.mark.skipif(busy_reason() is not None, reason=busy_reason() or "")
 def test_two_threads_run_two_simulations_at_once():
-    """Two simulations in two threads keep two cores busy: the process's
-    CPU time grows clearly faster than the wall clock while they run (it
-    could not with the GIL held). Best of three tries, a generous bound."""
+    """Two simulations in two threads run at the same time: the second call
+    starts before the first returns (it could not if the first held the GIL
+    for its whole run). On a machine with a core free, the process's CPU
+    time also grows clearly faster than the wall clock (best of three tries,
+    a generous bound); on a busy one that half is reported, not skipped."""
     import resource
 
     def cpu():
@@ -59,21 +60,36 @@ def test_two_threads_run_two_simulations_at_once():
         return r.ru_utime + r.ru_stime
 
     def parallel():
-        threads = [threading.Thread(target=jl.simulate, kwargs=WORK) for _ in range(2)]
+        spans = []
+
+        def timed():
+            begin = time.perf_counter()
+            jl.simulate(**WORK)
+            spans.append((begin, time.perf_counter()))
+
+        threads = [threading.Thread(target=timed) for _ in range(2)]
         c, t = cpu(), time.perf_counter()
         for th in threads:
             th.start()
         for th in threads:
             th.join()
-        return (cpu() - c) / (time.perf_counter() - t)
+        (a0, a1), (b0, b1) = sorted(spans)
+        overlap = (min(a1, b1) - b0) / min(a1 - a0, b1 - b0)
+        return overlap, (cpu() - c) / (time.perf_counter() - t)
 
     jl.simulate(**WORK)  # warm
-    rates = []
+    results = []
     for _ in range(3):
-        rates.append(parallel())
-        if rates[-1] > 1.4:
+        results.append(parallel())
+        if results[-1][1] > 1.4:
             break
-    assert max(rates) > 1.4, f"CPU seconds per wall second with two threads: {rates}"
+    assert max(o for o, _ in results) > 0.5, f"the two calls hardly overlapped: {results}"
+    reason = busy_reason()
+    if reason is None:
+        rates = [r for _, r in results]
+        assert max(rates) > 1.4, f"CPU seconds per wall second with two threads: {rates}"
+    else:
+        print(f"two-core CPU-rate check not made: {reason}")
 
 
 def engine_threads():
