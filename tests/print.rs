@@ -40,7 +40,19 @@ fn picture(
 /// are printed smaller at a page narrower than they are (docs/formats.md,
 /// "What is left"). The test fails when another figure breaks a rule, and
 /// when one of these no longer does (then take it off the list).
-const NOT_YET: &[(&str, &str)] = &[];
+const NOT_YET: &[(&str, &str)] = &[
+    // Filmstrips: N snapshots side by side, 960–1626 px at screen.
+    ("1c", "paper"),
+    ("3", "paper"),
+    ("3", "paper-wide"),
+    ("4a", "paper"),
+    ("4a", "paper-wide"),
+    // Drawings of the ladder (fixed 760–904 px layouts).
+    ("2b", "paper"),
+    ("2d", "paper"),
+    ("S3", "paper"),
+    ("S4", "paper"),
+];
 
 /// Every catalogue figure at every style: each text box inside the page,
 /// no two overlapping, none under 6 pt at a print style.
