@@ -157,7 +157,8 @@ fn draw_legend(area: &Area<'_>, c: &CellChart) -> Result<()> {
         y += 14;
         area.draw(&Text::new(bar.label.clone(), (8, y), text.clone()))
             .map_err(plot_error)?;
-        y += 22;
+        // The label's line, then half a tick label above the bar's top.
+        y += 32;
         let steps = 32;
         let (h, w) = (140, 18);
         for i in 0..steps {

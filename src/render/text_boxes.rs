@@ -40,8 +40,9 @@ impl Picture {
     }
 
     /// What breaks the layout rules at `style`, one line each (empty: none).
+    /// Text is measured in the style's font, as it was laid out.
     pub fn layout_problems(&self, style: &Style) -> Vec<String> {
-        let boxes = self.text_boxes();
+        let boxes = style.apply(|| self.text_boxes());
         let (w, h) = (self.width(), self.height());
         let pt = style.pt_per_px(w);
         let mut problems = Vec::new();

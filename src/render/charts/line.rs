@@ -142,7 +142,7 @@ where
     };
     // A title that fits on one line is the chart's caption; a longer one is
     // wrapped and shrunk to the chart's width (`fit_title`), never cut.
-    let width = root.dim_in_pixel().0;
+    let width = area.dim_in_pixel().0;
     let one_line = spec.title.as_deref().is_none_or(|t| {
         fit_title(t, width).lines.len() == 1 && fit_title(t, width).size == size::TITLE
     });
@@ -194,12 +194,29 @@ where
     let (xscale, yscale) = (spec.x.scale, spec.y.scale);
     let xf = move |v: &f64| tick_label(*v, xscale);
     let yf = move |v: &f64| tick_label(*v, yscale);
+    // As many x labels as fit side by side with a gap (at most 7) at a
+    // print style.
+    let plot_w = {
+        let (px, _) = chart.plotting_area().get_pixel_range();
+        (px.end - px.start) as f32
+    };
+    let xr = chart.x_range();
+    let widest = end_labels(xr.start, xr.end, xscale)
+        .iter()
+        .map(|t| style::text_width(t, size::TICK))
+        .fold(0.0f32, f32::max);
+    // (Print styles only: the screen keeps its seven, and its goldens.)
+    let x_count = if crate::render::Style::current().is_print() {
+        ((plot_w / (widest + 14.0)).floor() as usize).clamp(2, 7)
+    } else {
+        7
+    };
     let mut mesh = chart.configure_mesh();
     mesh.x_desc(spec.x.label.as_str())
         .y_desc(spec.y.label.as_str())
         .x_label_formatter(&xf)
         .y_label_formatter(&yf)
-        .x_labels(7)
+        .x_labels(x_count)
         .y_labels(7);
     // At a print style the minor grid is one faint line between major
     // ones (a full minor mesh prints as a grey fog at column width).

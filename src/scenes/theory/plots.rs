@@ -213,9 +213,9 @@ fn dispersion_panel(
     chart(&spec, 300, 250)
 }
 
-/// The shared key of the dispersion panels, drawn as one row.
+/// The shared key of the dispersion panels: entries left to right, a new
+/// row where the next would pass the width.
 fn dispersion_key(width: u32) -> Result<Picture> {
-    let mut p = Picture::new(width as f32, 34.0);
     let entries: [(&str, Rgb, u8); 6] = [
         ("ω₊ closed form × √2", RED, 0),
         ("ω₊ as printed", RED, 1),
@@ -228,17 +228,41 @@ fn dispersion_key(width: u32) -> Result<Picture> {
         .iter()
         .map(|e| 34.0 + style::text_width(e.0, size::TICK) + 22.0)
         .collect();
-    let mut x = 0.5 * (width as f32 - widths.iter().sum::<f32>());
-    let y = 17.0;
-    for (e, w) in entries.iter().zip(&widths) {
-        match e.2 {
-            0 => pen::line(&mut p, (x, y), (x + 26.0, y), 2.0, e.1),
-            1 => pen::polyline(&mut p, &[(x, y), (x + 26.0, y)], 2.0, e.1, true),
-            _ => pen::dot(&mut p, (x + 13.0, y), 3.5, e.1),
+    let room = width as f32 - 2.0 * size::MARGIN as f32;
+    let mut rows: Vec<Vec<usize>> = vec![vec![]];
+    let mut used = 0.0;
+    for (k, w) in widths.iter().enumerate() {
+        if used + w > room && rows.last().is_some_and(|r| !r.is_empty()) {
+            rows.push(vec![]);
+            used = 0.0;
         }
-        let at = (x + 34.0, y);
-        p.text(e.0, at, size::TICK, DARK, (HAlign::Left, VAlign::Middle));
-        x += w;
+        used += w;
+        if let Some(r) = rows.last_mut() {
+            r.push(k);
+        }
+    }
+    const ROW: f32 = 26.0;
+    let mut p = Picture::new(width as f32, 8.0 + ROW * rows.len() as f32);
+    for (j, row) in rows.iter().enumerate() {
+        let total: f32 = row.iter().map(|&k| widths[k]).sum();
+        let mut x = 0.5 * (width as f32 - total);
+        let y = 17.0 + ROW * j as f32;
+        for &k in row {
+            let e = entries[k];
+            match e.2 {
+                0 => pen::line(&mut p, (x, y), (x + 26.0, y), 2.0, e.1),
+                1 => pen::polyline(&mut p, &[(x, y), (x + 26.0, y)], 2.0, e.1, true),
+                _ => pen::dot(&mut p, (x + 13.0, y), 3.5, e.1),
+            }
+            p.text(
+                e.0,
+                (x + 34.0, y),
+                size::TICK,
+                DARK,
+                (HAlign::Left, VAlign::Middle),
+            );
+            x += widths[k];
+        }
     }
     Ok(p)
 }
