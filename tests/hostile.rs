@@ -409,3 +409,44 @@ fn max_runs_reads_like_the_other_caps_and_a_refused_sweep_leaves_nothing() {
     assert_eq!(out.status.code(), Some(2), "{}", stderr_of(&out));
     assert!(!refused.join("shards").exists(), "{:?}", names(&refused));
 }
+
+// ------------------------------------------------------- 5. the machine says no
+
+/// When no thread can be created (RLIMIT_NPROC of 1, set in the child
+/// before it runs ladder; as root the limit is not enforced, so the child
+/// first becomes user `nobody`), the rayon pool panicked ("The global
+/// thread pool has not been initialized"): now ladder runs on the threads
+/// it can get (here its own) and says so in one note.
+#[test]
+fn no_threads_to_spare_is_not_a_panic() {
+    use std::os::unix::fs::PermissionsExt;
+    use std::os::unix::process::CommandExt;
+    let dir = TempDir::new("nproc");
+    std::fs::set_permissions(dir.path(), std::fs::Permissions::from_mode(0o777)).unwrap();
+    let d = dir.path().to_str().unwrap();
+    let mut cmd = ladder_cmd(&["figure", "3", "--out", d]);
+    // SAFETY: only async-signal-safe calls between fork and exec.
+    unsafe {
+        cmd.pre_exec(|| {
+            if libc::geteuid() == 0 {
+                if libc::setgid(65534) != 0 || libc::setuid(65534) != 0 {
+                    return Err(std::io::Error::last_os_error());
+                }
+            }
+            let one = libc::rlimit {
+                rlim_cur: 1,
+                rlim_max: 1,
+            };
+            if libc::setrlimit(libc::RLIMIT_NPROC, &one) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        });
+    }
+    let out = cmd.output().unwrap();
+    let err = stderr_of(&out);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("running with"), "{err}");
+    assert!(dir.join("figure-3.png").is_file());
+}
