@@ -407,27 +407,26 @@ pub fn gather(dir: &Path, max_runs: usize) -> Result<(Plan, Vec<Record>)> {
     let mut by_run: BTreeMap<usize, (&Path, &Record)> = BTreeMap::new();
     for (path, f) in &read {
         for r in &f.records {
-            if let Some((other, earlier)) = by_run.insert(r.run, (path, r)) {
-                if earlier != r {
-                    return Err(bad(
-                        path,
-                        &format!(
-                            "run {} differs from the same run in {}; remove the wrong shard and rerun it",
-                            r.run,
-                            file_name(other)
-                        ),
-                    ));
-                }
+            if let Some((other, earlier)) = by_run.insert(r.run, (path, r))
+                && earlier != r
+            {
+                return Err(bad(
+                    path,
+                    &format!(
+                        "run {} differs from the same run in {}; remove the wrong shard and rerun it",
+                        r.run,
+                        file_name(other)
+                    ),
+                ));
             }
         }
     }
     if by_run.len() < total {
-        let done: BTreeMap<usize, ()> = by_run.keys().map(|&k| (k, ())).collect();
         return Err(Error::bad_input(missing_message(
             &sdir,
             &plan.scene.name,
             &read,
-            done.len(),
+            by_run.len(),
             total,
         )));
     }
