@@ -143,13 +143,16 @@ pub struct LimitExceeded {
 
 impl fmt::Display for LimitExceeded {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // As many digits as it takes for the two numbers to differ.
+        let (value, cap) = (1..=17)
+            .map(|digits| (count_to(self.value, digits), count_to(self.cap, digits)))
+            .find(|(v, c)| v != c)
+            .unwrap_or_else(|| (count(self.value), count(self.cap)));
         write!(
             f,
-            "this needs {} {} ({}), past the cap of {}",
-            count(self.value),
+            "this needs {value} {} ({}), past the cap of {cap}",
             self.resource.unit(),
             self.detail,
-            count(self.cap)
         )
     }
 }
@@ -252,15 +255,44 @@ impl Limits {
 /// A count for messages: integers up to 10^6 in full, larger ones as
 /// 4.0e13, infinity as "infinitely many".
 pub fn count(x: f64) -> String {
+    count_to(x, 1)
+}
+
+/// [`count`] with `digits` decimals (of the mantissa, past 10^6).
+fn count_to(x: f64, digits: usize) -> String {
     if !x.is_finite() {
         "infinitely many".into()
     } else if x.abs() < 1e6 && x.fract() == 0.0 {
         format!("{x}")
     } else if x.abs() < 1e6 {
-        format!("{x:.1}")
+        format!("{x:.digits$}")
     } else {
-        format!("{x:.1e}")
+        format!("{x:.digits$e}")
     }
+}
+
+/// Most runs of one sweep, whatever `--max-runs` says: its points and
+/// records are held in memory (about 0.3 kB a run at N = 10, plus 16
+/// bytes per block), so 10^7 runs take about 3 GB. A range, not a cap.
+pub const MAX_SWEEP_RUNS: usize = 10_000_000;
+
+/// Parses a cap on a count of runs the way the other caps are written:
+/// a whole number, in any float notation (`1e7`), or `inf` (no cap).
+pub fn parse_runs_cap(text: &str) -> Result<usize, String> {
+    let x: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{text}' is not a number (e.g. 200000, 1e6 or inf)"))?;
+    if x == f64::INFINITY {
+        return Ok(usize::MAX);
+    }
+    if x.is_nan() || x < 1.0 || x.fract() != 0.0 {
+        return Err(format!(
+            "'{text}' is not a whole number of runs, 1 or more (or inf)"
+        ));
+    }
+    // `as` saturates past usize::MAX.
+    Ok(x as usize)
 }
 
 #[cfg(test)]
@@ -294,6 +326,18 @@ mod tests {
             "{text}"
         );
         assert!(!text.contains("--"), "the library names no flag: {text}");
+        // A value just past the cap is printed with the digits that show it.
+        let e = l
+            .check(Resource::MoviePixels, 5_000_000_001.0, String::new)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("5.000000001e9") && e.contains("cap of 5.000000000e9"),
+            "{e}"
+        );
+        assert_eq!(parse_runs_cap("1e7"), Ok(10_000_000));
+        assert_eq!(parse_runs_cap("inf"), Ok(usize::MAX));
+        assert!(parse_runs_cap("0").is_err() && parse_runs_cap("2.5").is_err());
         let nan = l.check(Resource::BlockSteps, f64::NAN, String::new);
         assert!(nan.is_err());
         let mut raised = l;

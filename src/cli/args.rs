@@ -589,11 +589,12 @@ pub struct SweepArgs {
     pub shard: Option<String>,
     #[command(flatten)]
     pub figure_format: FigureFormat,
-    /// Largest number of runs accepted
+    /// Largest number of runs accepted (e.g. 1e6; inf: no cap)
     #[arg(
         long,
         value_name = "N",
         default_value_t = crate::scene::sweep::DEFAULT_MAX_RUNS,
+        value_parser = crate::limits::parse_runs_cap,
         help_heading = "Limits (docs/limits.md)"
     )]
     pub max_runs: usize,

@@ -183,6 +183,8 @@ pub fn run(cli: Cli) -> Result<()> {
                 .map(|f| scene::file::load(f))
                 .collect::<Result<Vec<_>>>()?;
             args.formats.check_covers(&scenes)?;
+            let sources: Vec<String> = args.files.iter().map(|f| f.display().to_string()).collect();
+            check_distinct_outputs(&scenes, &sources, &args.out.out, &outputs)?;
             if args.check {
                 for (file, s) in args.files.iter().zip(&scenes) {
                     output::print(&format!(
@@ -721,6 +723,27 @@ fn theory(args: &TheoryArgs) -> Result<()> {
     }
 }
 
+/// Refuses two scenes of one command that would write one file (the same
+/// scene file twice, or two files with one `name`); `sources` say where
+/// each scene comes from.
+fn check_distinct_outputs(
+    scenes: &[Scene],
+    sources: &[String],
+    out: &std::path::Path,
+    outputs: &Outputs,
+) -> Result<()> {
+    let targets: Vec<(std::path::PathBuf, String)> = scenes
+        .iter()
+        .zip(sources)
+        .flat_map(|(s, src)| {
+            scenes::file_names_for(s, outputs)
+                .into_iter()
+                .map(move |name| (out.join(name), src.clone()))
+        })
+        .collect();
+    output::check_distinct(&targets)
+}
+
 /// Renders `scenes` into `out` in parallel (rayon), each file written
 /// atomically as soon as it is ready, with a progress bar and a summary.
 fn render_into(
@@ -735,6 +758,8 @@ fn render_into(
     use rayon::prelude::*;
     convert::check_out_dir(out)?;
     // Every target, index.html included, before anything is rendered.
+    let names: Vec<String> = scenes.iter().map(|s| format!("scene {}", s.name)).collect();
+    check_distinct_outputs(scenes, &names, out, outputs)?;
     let mut targets: Vec<std::path::PathBuf> = scenes
         .iter()
         .flat_map(|s| scenes::file_names_for(s, outputs))

@@ -13,7 +13,7 @@ use std::time::{Duration, Instant};
 
 pub fn sweep(args: &SweepArgs) -> Result<()> {
     if let Some(SweepCommand::Gather { dir, figure_format }) = &args.command {
-        return gather(dir, &figure_format.outputs()?);
+        return gather(dir, &figure_format.outputs()?, args.max_runs);
     }
     let outputs = args.figure_format.outputs()?;
     let scene = convert::sweep_scene(args)?;
@@ -29,9 +29,52 @@ pub fn sweep(args: &SweepArgs) -> Result<()> {
     };
     let out = &args.out.out;
     let sdir = shard::shards_dir(out);
-    crate::output::check_writable(&sdir.join(shard.file_name(&plan.scene.name)))?;
+    // Every target before any run: the shard file, and (unsharded) the
+    // results.
+    let mut targets = vec![sdir.join(shard.file_name(&plan.scene.name))];
+    if args.shard.is_none() {
+        targets.extend(result_names(&plan, &outputs).iter().map(|n| out.join(n)));
+    }
+    let fresh = !sdir.exists();
+    let result = check_and_run(args, &plan, shard, &targets, &outputs);
+    if result.is_err() && fresh {
+        // A refused or failed sweep leaves no empty shards/ of ours.
+        let _ = std::fs::remove_dir(&sdir);
+    }
+    result
+}
+
+/// The names of a sweep's result files (`crate::sweep::outputs`): the
+/// chart in each format when one or two parameters vary, the CSV, the
+/// JSON.
+fn result_names(plan: &Plan, outputs: &Outputs) -> Vec<String> {
+    let stem = format!("sweep-{}", plan.scene.name);
+    let mut names: Vec<String> = if plan.varied().len() <= 2 {
+        outputs
+            .figures
+            .as_slice()
+            .iter()
+            .map(|f| format!("{stem}.{}", f.extension()))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    names.push(format!("{stem}.csv"));
+    names.push(format!("{stem}.json"));
+    names
+}
+
+fn check_and_run(
+    args: &SweepArgs,
+    plan: &Plan,
+    shard: Shard,
+    targets: &[std::path::PathBuf],
+    outputs: &Outputs,
+) -> Result<()> {
+    crate::output::check_targets(targets)?;
+    let out = &args.out.out;
     let mine = shard.indices(plan.len());
-    let mut done: Vec<Record> = match shard::earlier(&plan, shard, out) {
+    let mut done: Vec<Record> = match shard::earlier(plan, shard, out)? {
         Earlier::None => Vec::new(),
         Earlier::Resumed(r) => {
             if !r.is_empty() {
@@ -56,11 +99,11 @@ pub fn sweep(args: &SweepArgs) -> Result<()> {
         .copied()
         .filter(|i| done.binary_search_by_key(i, |r| r.run).is_err())
         .collect();
-    run_in_chunks(&plan, shard, out, &todo, &mut done)?;
+    run_in_chunks(plan, shard, out, &todo, &mut done)?;
     let path = shard::write(
         out,
         &plan.scene.name,
-        &ShardFile::new(&plan, shard, done.clone()),
+        &ShardFile::new(plan, shard, done.clone()),
     )?;
     if args.shard.is_some() {
         eprintln!(
@@ -76,7 +119,7 @@ pub fn sweep(args: &SweepArgs) -> Result<()> {
         );
         return Ok(());
     }
-    write_outputs(&plan, &done, out, &outputs, start)
+    write_outputs(plan, &done, out, outputs, start)
 }
 
 /// Runs `todo` in chunks, rewriting the shard file after each (so that a
@@ -156,16 +199,8 @@ fn write_outputs(
 }
 
 /// `ladder sweep gather DIR`.
-fn gather(dir: &Path, outputs: &Outputs) -> Result<()> {
+fn gather(dir: &Path, outputs: &Outputs, max_runs: usize) -> Result<()> {
     let start = Instant::now();
-    let (scene, first, records) = shard::gather(dir)?;
-    let plan = Plan::new(&scene, usize::MAX)?.map_err(|e| Error::bad_input(format!("{e}")))?;
-    if first != plan.fingerprint {
-        return Err(Error::bad_input(format!(
-            "the shards in {} were made by another version of ladder (fingerprint {first}, this one computes {}); rerun them with this version",
-            shard::shards_dir(dir).display(),
-            plan.fingerprint
-        )));
-    }
+    let (plan, records) = shard::gather(dir, max_runs)?;
     write_outputs(&plan, &records, dir, outputs, start)
 }

@@ -54,7 +54,8 @@ where
 }
 
 /// Fails early, before any work, when `path` cannot be written: its folder
-/// cannot be created or written (a probe file is created and removed), or
+/// cannot be created or written (a probe, a new temporary file, is created
+/// and removed), or
 /// something other than a regular file is in the way. Removes stale
 /// temporary files of ours from the folder.
 pub fn check_writable(path: &Path) -> Result<()> {
@@ -68,17 +69,32 @@ pub fn check_targets(paths: &[PathBuf]) -> Result<()> {
     for dir in &dirs {
         ensure_dir(dir)?;
         temp::remove_stale(dir);
-        let probe = dir.join(format!(".ladder-probe-{}", std::process::id()));
-        fs::OpenOptions::new()
-            .write(true)
-            .create(true)
-            .truncate(true)
-            .open(&probe)
-            .map_err(|e| io_error(dir, &e))?;
-        // Best effort: the probe is empty and hidden.
-        let _ = fs::remove_file(probe);
+        // A new file under a random name (never through a symlink planted
+        // in the folder), removed at once.
+        drop(TempFile::create(&dir.join("ladder-probe")).map_err(|e| io_error(dir, &e))?);
     }
     paths.iter().try_for_each(|p| check_kind(p))
+}
+
+/// Refuses (exit 2) a command whose outputs share a path: `targets` are
+/// (path, what makes it), e.g. the scene file. Two writers of one path
+/// would race on it and leave one's picture beside the other's data.
+pub fn check_distinct(targets: &[(PathBuf, String)]) -> Result<()> {
+    let mut seen: std::collections::BTreeMap<&Path, &str> = std::collections::BTreeMap::new();
+    for (path, source) in targets {
+        if let Some(first) = seen.insert(path.as_path(), source.as_str()) {
+            let by = if first == source.as_str() {
+                format!("{source} is given twice")
+            } else {
+                format!("by {first} and by {source}")
+            };
+            return Err(Error::bad_input(format!(
+                "{} would be written twice by one command ({by}); give each scene its own name",
+                path.display()
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// `Ok` when `path` does not exist or is a regular file (not a symlink).
@@ -138,6 +154,10 @@ pub fn io_error(path: &Path, e: &io::Error) -> Error {
     use io::ErrorKind as K;
     let user =
         |reason: &str| Error::bad_input(format!("cannot write to {}: {reason}", path.display()));
+    #[cfg(unix)]
+    if e.raw_os_error() == Some(libc::ELOOP) {
+        return user("too many levels of symbolic links (a symlink loop in the path)");
+    }
     match e.kind() {
         K::PermissionDenied => user("permission denied"),
         K::NotFound => user("no such file or directory"),

@@ -13,5 +13,7 @@ pub mod files;
 pub mod stream;
 pub mod temp;
 
-pub use files::{check_targets, check_writable, ensure_dir, write_atomic, write_atomic_with};
+pub use files::{
+    check_distinct, check_targets, check_writable, ensure_dir, write_atomic, write_atomic_with,
+};
 pub use stream::{eprint, print};

@@ -1,8 +1,18 @@
-//! Temporary files of atomic writes: named `.NAME.tmp-PID` beside their
-//! target, registered while they live, and removed when the write fails,
+//! Temporary files of atomic writes: named `.NAME.tmp-TOKEN` beside their
+//! target (TOKEN: 16 random hexadecimal digits), created new (`O_EXCL`,
+//! which never follows a symlink planted under the name) and held under
+//! an exclusive advisory lock (`flock`) from creation until they are
+//! renamed into place or removed. They are removed when the write fails,
 //! when the program is interrupted (SIGINT, SIGTERM, SIGHUP: a handler
 //! thread removes every live one, then lets the signal end the process),
-//! and when a later run finds them stale (their process is gone).
+//! and when a later run finds them stale.
+//!
+//! Stale means provably ours and provably dead: a regular file of our
+//! naming, owned by our user, whose lock a non-blocking `flock` attempt
+//! obtains (the process that wrote it is gone, wherever it ran: the lock
+//! is held by the open file, so a live writer on another machine sharing
+//! the folder, or in another PID namespace, keeps its file). A name alone,
+//! or a process id, never decides.
 
 use std::ffi::OsStr;
 use std::fs;
@@ -29,7 +39,27 @@ fn registry() -> MutexGuard<'static, Registry> {
     REGISTRY.lock().unwrap_or_else(|p| p.into_inner())
 }
 
-/// `.NAME.tmp-PID` beside `path` (hidden, one per target and process).
+/// How many random names [`TempFile::create`] tries before it gives up
+/// (each clash is a file of that name already there, ours or not).
+const ATTEMPTS: usize = 16;
+
+/// A fresh random token: 16 hexadecimal digits. The hasher's keys come
+/// from the operating system's randomness (once per process, then
+/// stepped); the process id, a counter and the clock are mixed in.
+fn token() -> String {
+    use std::hash::{BuildHasher, Hasher};
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static COUNTER: AtomicU64 = AtomicU64::new(0);
+    let mut h = std::collections::hash_map::RandomState::new().build_hasher();
+    h.write_u32(std::process::id());
+    h.write_u64(COUNTER.fetch_add(1, Ordering::Relaxed));
+    if let Ok(t) = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH) {
+        h.write_u128(t.as_nanos());
+    }
+    format!("{:016x}", h.finish())
+}
+
+/// `.NAME.tmp-TOKEN` beside `path`, with a fresh random token.
 pub fn temp_path(path: &Path) -> PathBuf {
     let name = path
         .file_name()
@@ -39,10 +69,11 @@ pub fn temp_path(path: &Path) -> PathBuf {
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
         _ => PathBuf::from("."),
     };
-    dir.join(format!(".{name}.tmp-{}", std::process::id()))
+    dir.join(format!(".{name}.tmp-{}", token()))
 }
 
-/// A registered temporary file, removed on drop unless persisted.
+/// A registered temporary file, locked while it lives, removed on drop
+/// unless persisted.
 pub struct TempFile {
     path: PathBuf,
     file: fs::File,
@@ -50,36 +81,65 @@ pub struct TempFile {
 }
 
 impl TempFile {
-    /// Creates the temporary file for `target` (a fresh file: a stale one
-    /// of this name is removed first; `create_new` never follows a
-    /// symlink planted there).
+    /// Creates a temporary file for `target`: a new file under a random
+    /// name (`create_new`: an existing file or a symlink under that name
+    /// is never opened; another name is tried), locked before it is
+    /// registered. A file whose lock cannot be taken at once, or whose
+    /// name no longer leads to it once locked (a cleaner of another
+    /// process judged it in between), is given up for another name.
     pub fn create(target: &Path) -> io::Result<Self> {
-        let path = temp_path(target);
-        let mut reg = registry();
-        if reg.terminating {
-            return Err(io::Error::new(io::ErrorKind::Interrupted, "interrupted"));
+        let mut last = io::Error::new(io::ErrorKind::AlreadyExists, "no free temporary name");
+        for _ in 0..ATTEMPTS {
+            let path = temp_path(target);
+            let mut reg = registry();
+            if reg.terminating {
+                return Err(io::Error::new(io::ErrorKind::Interrupted, "interrupted"));
+            }
+            let file = match fs::OpenOptions::new()
+                .write(true)
+                .create_new(true)
+                .open(&path)
+            {
+                Ok(f) => f,
+                Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {
+                    last = e;
+                    continue;
+                }
+                Err(e) => return Err(e),
+            };
+            match lock::try_exclusive(&file) {
+                Ok(true) if lock::same_file(&file, &path) => {
+                    reg.live.push(path.clone());
+                    return Ok(Self {
+                        path,
+                        file,
+                        done: false,
+                    });
+                }
+                Ok(_) => {
+                    // Someone else holds it or removed it: leave it to them.
+                    last = io::Error::new(io::ErrorKind::AlreadyExists, "temporary file taken");
+                }
+                Err(e) => {
+                    let _ = fs::remove_file(&path);
+                    return Err(e);
+                }
+            }
         }
-        match fs::remove_file(&path) {
-            Err(e) if e.kind() != io::ErrorKind::NotFound => return Err(e),
-            _ => {}
-        }
-        let file = fs::OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&path)?;
-        reg.live.push(path.clone());
-        Ok(Self {
-            path,
-            file,
-            done: false,
-        })
+        Err(last)
+    }
+
+    /// The temporary file's path.
+    pub fn path(&self) -> &Path {
+        &self.path
     }
 
     pub fn file(&mut self) -> &mut fs::File {
         &mut self.file
     }
 
-    /// Syncs and closes the file, then renames it onto `target`.
+    /// Syncs the file, then renames it onto `target` (the lock goes with
+    /// the file when it is closed).
     pub fn persist(mut self, target: &Path) -> io::Result<()> {
         self.file.sync_all()?;
         let mut reg = registry();
@@ -147,79 +207,130 @@ pub fn install_signal_cleanup() {
     });
 }
 
-/// Whether `name` is one of our temporary names, `.NAME.tmp-PID` (or the
-/// writability probe `.ladder-probe-PID`); returns the PID.
-pub fn our_temp_pid(name: &OsStr) -> Option<u32> {
-    let name = name.to_str()?;
-    let rest = name.strip_prefix('.')?;
-    let digits = match rest.strip_prefix("ladder-probe-") {
-        Some(d) => d,
-        None => {
-            let (stem, d) = rest.rsplit_once(".tmp-")?;
-            if stem.is_empty() {
-                return None;
-            }
-            d
-        }
+/// Whether `name` is one of our temporary names, `.NAME.tmp-TOKEN` with
+/// a token of 16 hexadecimal digits.
+pub fn is_our_temp_name(name: &OsStr) -> bool {
+    let Some(name) = name.to_str() else {
+        return false;
     };
-    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
-        return None;
-    }
-    digits.parse().ok()
+    let Some((stem, token)) = name
+        .strip_prefix('.')
+        .and_then(|rest| rest.rsplit_once(".tmp-"))
+    else {
+        return false;
+    };
+    !stem.is_empty() && token.len() == 16 && token.bytes().all(|b| b.is_ascii_hexdigit())
 }
 
-/// Whether process `pid` is running (on Unix, `kill(pid, 0)`; elsewhere
-/// assumed running, so nothing is removed).
-pub fn process_alive(pid: u32) -> bool {
-    #[cfg(unix)]
-    {
-        let Ok(pid) = libc::pid_t::try_from(pid) else {
-            return false;
-        };
-        if pid <= 0 {
-            return true;
-        }
-        // SAFETY: signal 0 only checks that the process exists.
-        let r = unsafe { libc::kill(pid, 0) };
-        r == 0 || io::Error::last_os_error().raw_os_error() == Some(libc::EPERM)
-    }
-    #[cfg(not(unix))]
-    {
-        let _ = pid;
-        true
-    }
-}
-
-/// Removes the stale temporary files in `dir`: regular files of our
-/// naming whose process is gone, or of this process's PID but not live
-/// here (left by an earlier process that had the same PID). Returns the
-/// paths removed. Errors reading the folder are ignored (the write that
-/// follows reports them).
+/// Removes the stale temporary files in `dir`: those of our naming,
+/// regular files of our user, not live in this process, whose lock is
+/// free (see the module's notes). Returns the paths removed. Errors
+/// reading the folder are ignored (the write that follows reports them).
 pub fn remove_stale(dir: &Path) -> Vec<PathBuf> {
     let Ok(entries) = fs::read_dir(dir) else {
         return Vec::new();
     };
-    let me = std::process::id();
     let mut removed = Vec::new();
     for entry in entries.flatten() {
-        let Some(pid) = our_temp_pid(&entry.file_name()) else {
-            continue;
-        };
-        let regular = entry.file_type().map(|t| t.is_file()).unwrap_or(false);
-        if !regular {
+        if !is_our_temp_name(&entry.file_name()) {
             continue;
         }
         let path = entry.path();
-        let stale = if pid == me {
-            !registry().live.contains(&path)
-        } else {
-            !process_alive(pid)
-        };
-        if stale && fs::remove_file(&path).is_ok() {
+        if registry().live.contains(&path) {
+            continue;
+        }
+        if lock::remove_if_dead(&path) {
             removed.push(path);
         }
     }
     removed
+}
+
+/// Advisory locks on temporary files (Unix `flock`; elsewhere no file is
+/// ever judged dead).
+mod lock {
+    use std::fs;
+    use std::io;
+    use std::path::Path;
+
+    /// Takes the exclusive lock on `file` without waiting: `Ok(false)`
+    /// when another open file holds it.
+    #[cfg(unix)]
+    pub fn try_exclusive(file: &fs::File) -> io::Result<bool> {
+        use std::os::unix::io::AsRawFd;
+        // SAFETY: flock on a file descriptor we own.
+        let r = unsafe { libc::flock(file.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) };
+        if r == 0 {
+            return Ok(true);
+        }
+        let e = io::Error::last_os_error();
+        match e.raw_os_error() {
+            Some(libc::EWOULDBLOCK) => Ok(false),
+            // A file system without locks: the file is ours (created new),
+            // but no later run will ever judge it dead.
+            Some(libc::ENOLCK) | Some(libc::EOPNOTSUPP) => Ok(true),
+            _ => Err(e),
+        }
+    }
+
+    #[cfg(not(unix))]
+    pub fn try_exclusive(_: &fs::File) -> io::Result<bool> {
+        Ok(true)
+    }
+
+    /// Whether `path` (not followed) is the very file `file` is open on.
+    #[cfg(unix)]
+    pub fn same_file(file: &fs::File, path: &Path) -> bool {
+        use std::os::unix::fs::MetadataExt;
+        match (file.metadata(), fs::symlink_metadata(path)) {
+            (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+            _ => false,
+        }
+    }
+
+    #[cfg(not(unix))]
+    pub fn same_file(_: &fs::File, path: &Path) -> bool {
+        path.is_file()
+    }
+
+    /// Removes `path` when it is provably a dead temporary file of ours:
+    /// opened without following a link and without blocking (a FIFO
+    /// does not hang us), a regular file owned by this user, its lock
+    /// obtained, and the name still leading to it. The lock is held while
+    /// the file is removed.
+    #[cfg(unix)]
+    pub fn remove_if_dead(path: &Path) -> bool {
+        use std::os::unix::fs::{MetadataExt, OpenOptionsExt};
+        let Ok(file) = fs::OpenOptions::new()
+            .read(true)
+            .custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK)
+            .open(path)
+        else {
+            return false;
+        };
+        let Ok(meta) = file.metadata() else {
+            return false;
+        };
+        // SAFETY: geteuid has no preconditions.
+        let me = unsafe { libc::geteuid() };
+        if !meta.is_file() || meta.uid() != me {
+            return false;
+        }
+        // ENOLCK / EOPNOTSUPP say "true" for a writer; a cleaner must
+        // not take that as dead.
+        use std::os::unix::io::AsRawFd;
+        // SAFETY: flock on a file descriptor we own.
+        let r = unsafe { libc::flock(file.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) };
+        if r != 0 || !same_file(&file, path) {
+            return false;
+        }
+        fs::remove_file(path).is_ok()
+    }
+
+    #[cfg(not(unix))]
+    pub fn remove_if_dead(_: &Path) -> bool {
+        false
+    }
 }
 
 #[cfg(test)]
@@ -228,18 +339,28 @@ mod tests {
 
     #[test]
     fn our_names_and_only_ours() {
-        let pid = |s: &str| our_temp_pid(OsStr::new(s));
-        assert_eq!(pid(".figure-3.png.tmp-31979"), Some(31979));
-        assert_eq!(pid(".ladder-probe-12"), Some(12));
-        assert_eq!(pid("figure-3.png.tmp-31979"), None);
-        assert_eq!(pid(".figure-3.png.tmp-"), None);
-        assert_eq!(pid(".figure-3.png.tmp-12a"), None);
-        assert_eq!(pid("..tmp-5"), None);
-        assert_eq!(pid(".notes.txt"), None);
+        let ours = |s: &str| is_our_temp_name(OsStr::new(s));
+        assert!(ours(".figure-3.png.tmp-0123456789abcdef"));
+        assert!(ours(
+            &temp_path(Path::new("out/a.gif"))
+                .file_name()
+                .unwrap()
+                .to_string_lossy()
+        ));
+        assert!(!ours("figure-3.png.tmp-0123456789abcdef"));
+        assert!(
+            !ours(".figure-3.png.tmp-31979"),
+            "the old PID naming is not ours"
+        );
+        assert!(!ours(".figure-3.png.tmp-0123456789abcdeg"));
+        assert!(!ours("..tmp-0123456789abcdef"));
+        assert!(!ours(".notes.txt"));
     }
 
     #[test]
-    fn this_process_is_alive() {
-        assert!(process_alive(std::process::id()));
+    fn tokens_differ() {
+        let a = temp_path(Path::new("x"));
+        let b = temp_path(Path::new("x"));
+        assert_ne!(a, b);
     }
 }

@@ -83,6 +83,13 @@ impl Plan {
         let runs = axes
             .iter()
             .fold(1usize, |n, (_, v)| n.saturating_mul(v.len()));
+        if runs > crate::limits::MAX_SWEEP_RUNS {
+            return Err(Error::bad_input(format!(
+                "this sweep has {} runs; a sweep holds at most {} runs in memory (docs/limits.md), whatever its cap: split the grid into several sweeps",
+                crate::limits::count(runs as f64),
+                crate::limits::count(crate::limits::MAX_SWEEP_RUNS as f64)
+            )));
+        }
         if runs > max_runs {
             return Ok(Err(TooManyRuns {
                 runs,

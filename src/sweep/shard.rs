@@ -54,6 +54,16 @@ impl Shard {
         (self.k - 1..runs).step_by(self.n).collect()
     }
 
+    /// How many runs of a grid of `runs` this shard has (the length of
+    /// [`Shard::indices`], without building it).
+    pub fn count(self, runs: usize) -> usize {
+        if self.k > runs {
+            0
+        } else {
+            (runs - self.k) / self.n + 1
+        }
+    }
+
     /// `sweep-NAME.K-of-N.json`.
     pub fn file_name(self, name: &str) -> String {
         format!("sweep-{name}.{}-of-{}.json", self.k, self.n)
@@ -91,7 +101,7 @@ impl ShardFile {
             fingerprint: plan.fingerprint.clone(),
             shard,
             runs_total: plan.len(),
-            runs_in_shard: shard.indices(plan.len()).len(),
+            runs_in_shard: shard.count(plan.len()),
             scene: plan.scene.clone(),
             records,
         }
@@ -106,11 +116,154 @@ impl ShardFile {
             .map_err(|e| Error::failed(format!("cannot encode a shard file: {e}")))
     }
 
-    /// Reads a shard file; `None` with the reason when it is not one.
+    /// Reads a shard file; the reason when it is not one. Only a regular
+    /// file of at most [`MAX_SHARD_BYTES`] is read (a FIFO, a device or a
+    /// link to one is refused without blocking).
     pub fn read(path: &Path) -> std::result::Result<ShardFile, String> {
-        let bytes = std::fs::read(path).map_err(|e| e.to_string().to_lowercase())?;
+        let bytes = read_bounded(path, MAX_SHARD_BYTES)?;
         serde_json::from_slice(&bytes).map_err(|e| format!("not a ladder shard file ({e})"))
     }
+
+    /// Checks this file against the sweep `plan` it claims to belong to:
+    /// its fingerprint, its counts, and every record (index unique, in
+    /// range and of this shard; values sane for the run's N).
+    pub fn validate(&self, plan: &Plan) -> std::result::Result<(), String> {
+        if self.fingerprint != plan.fingerprint {
+            return Err(format!(
+                "made for another sweep (fingerprint {}, this sweep's is {})",
+                self.fingerprint, plan.fingerprint
+            ));
+        }
+        let Shard { k, n } = self.shard;
+        if n == 0 || n > MAX_SHARDS || k == 0 || k > n {
+            return Err(format!("names shard {k}/{n}, which does not exist"));
+        }
+        if self.runs_total != plan.len() {
+            return Err(format!(
+                "says the sweep has {} runs; its plan has {}",
+                self.runs_total,
+                plan.len()
+            ));
+        }
+        let in_shard = self.shard.count(plan.len());
+        if self.runs_in_shard != in_shard {
+            return Err(format!(
+                "says shard {k}/{n} has {} runs; the plan gives it {in_shard}",
+                self.runs_in_shard
+            ));
+        }
+        if self.records.len() > in_shard {
+            return Err(format!(
+                "holds {} records for a shard of {in_shard} runs",
+                self.records.len()
+            ));
+        }
+        let mut last: Option<usize> = None;
+        for r in &self.records {
+            if r.run >= plan.len() || r.run % n != k - 1 {
+                return Err(format!(
+                    "holds run {}, which is not a run of shard {k}/{n} of {} runs",
+                    r.run,
+                    plan.len()
+                ));
+            }
+            if last.is_some_and(|l| l >= r.run) {
+                return Err(format!("holds run {} twice (or out of order)", r.run));
+            }
+            last = Some(r.run);
+            let blocks = plan.scene_at(r.run).model.n;
+            sane(&r.result, blocks).map_err(|m| format!("run {}: {m}", r.run))?;
+        }
+        Ok(())
+    }
+}
+
+/// Largest shard file read: 1 GiB (a shard of 100,000 runs of N = 1000
+/// holds about 0.5 GB of arrival times).
+pub const MAX_SHARD_BYTES: u64 = 1 << 30;
+
+/// The bytes of `path` when it is a regular file (after links) of at most
+/// `max` bytes. Opened without blocking, so a FIFO cannot hang the reader.
+pub fn read_bounded(path: &Path, max: u64) -> std::result::Result<Vec<u8>, String> {
+    use std::io::Read;
+    let mut opts = std::fs::OpenOptions::new();
+    opts.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        opts.custom_flags(libc::O_NONBLOCK);
+    }
+    let file = opts.open(path).map_err(|e| read_error(&e))?;
+    let meta = file.metadata().map_err(|e| read_error(&e))?;
+    if !meta.is_file() {
+        return Err(if meta.is_dir() {
+            "is a folder, not a shard file".into()
+        } else {
+            "is not a regular file (a FIFO, device or socket); only regular files are read".into()
+        });
+    }
+    if meta.len() > max {
+        return Err(format!(
+            "is {} bytes, larger than any shard file ({max} bytes at most)",
+            meta.len()
+        ));
+    }
+    let mut bytes = Vec::new();
+    file.take(max + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| read_error(&e))?;
+    if bytes.len() as u64 > max {
+        return Err(format!("grew past {max} bytes while being read"));
+    }
+    Ok(bytes)
+}
+
+fn read_error(e: &std::io::Error) -> String {
+    let text = e.to_string().to_lowercase();
+    text.split(" (os error").next().unwrap_or(&text).to_string()
+}
+
+/// Whether a record's values can be a run of `blocks` blocks: counts
+/// within the chain, times finite and not negative, a short integrator
+/// name.
+fn sane(r: &super::RunResult, blocks: usize) -> std::result::Result<(), String> {
+    let time = |t: f64| t.is_finite() && t >= 0.0;
+    if r.arrival_times.len() != blocks {
+        return Err(format!(
+            "{} arrival times for a chain of N = {blocks}",
+            r.arrival_times.len()
+        ));
+    }
+    if r.blocks_flipped > blocks || r.front > blocks {
+        return Err(format!(
+            "blocks_flipped {} or front {} past N = {blocks}",
+            r.blocks_flipped, r.front
+        ));
+    }
+    if r.arrival_times.iter().flatten().any(|&t| !time(t)) {
+        return Err("an arrival time that is negative or not finite".into());
+    }
+    if r.t_decided.is_some_and(|t| !time(t))
+        || r.arrival_error.is_some_and(|t| !time(t))
+        || !time(r.dt)
+    {
+        return Err("a time (t_decided, dt, arrival_error) that is negative or not finite".into());
+    }
+    if r.speed.is_some_and(|v| !v.is_finite()) {
+        return Err("a speed that is not finite".into());
+    }
+    let name_ok = !r.integrator.is_empty()
+        && r.integrator.len() <= 64
+        && r.integrator
+            .bytes()
+            .all(|b| b.is_ascii_alphanumeric() || b == b'-' || b == b'_' || b == b' ');
+    if !name_ok {
+        return Err("an integrator name that is not one".into());
+    }
+    if r.message.as_ref().is_some_and(|m| m.len() > 4096) {
+        return Err("a message longer than 4096 bytes".into());
+    }
+    Ok(())
 }
 
 /// What a rerun can keep: the records of an earlier run of the same shard
@@ -119,35 +272,48 @@ pub enum Earlier {
     None,
     /// Kept: the records that belong to this shard.
     Resumed(Vec<Record>),
-    /// A file of another sweep (or unreadable) that will be replaced.
+    /// A file of another sweep (or not a shard file) that will be replaced.
     Stale(String),
 }
 
-/// The records already done for `shard` of `plan` under `dir`.
-pub fn earlier(plan: &Plan, shard: Shard, dir: &Path) -> Earlier {
+/// The records already done for `shard` of `plan` under `dir`. A file of
+/// this sweep and shard whose records do not check out (a run twice, a run
+/// of another shard, absurd values), or a path that is not a regular file,
+/// is bad input naming the file: it is not ours to replace.
+pub fn earlier(plan: &Plan, shard: Shard, dir: &Path) -> Result<Earlier> {
     let path = shards_dir(dir).join(shard.file_name(&plan.scene.name));
-    if !path.exists() {
-        return Earlier::None;
-    }
-    match ShardFile::read(&path) {
-        Ok(f) if f.fingerprint == plan.fingerprint && f.shard == shard => {
-            let mine: Vec<usize> = shard.indices(plan.len());
-            let records = f
-                .records
-                .into_iter()
-                .filter(|r| mine.binary_search(&r.run).is_ok())
-                .collect();
-            Earlier::Resumed(records)
+    match std::fs::symlink_metadata(&path) {
+        Err(_) => return Ok(Earlier::None),
+        Ok(m) if !m.is_file() => {
+            return Err(Error::bad_input(format!(
+                "{}: not a regular file; ladder reads and replaces only regular shard files",
+                path.display()
+            )));
         }
-        Ok(_) => Earlier::Stale(format!(
+        Ok(_) => {}
+    }
+    let f = match ShardFile::read(&path) {
+        Ok(f) => f,
+        Err(e) => {
+            return Ok(Earlier::Stale(format!(
+                "{}: {e}; starting this shard afresh",
+                path.display()
+            )));
+        }
+    };
+    if f.fingerprint != plan.fingerprint || f.shard != shard {
+        return Ok(Earlier::Stale(format!(
             "{} holds another sweep; starting this shard afresh",
             path.display()
-        )),
-        Err(e) => Earlier::Stale(format!(
-            "{}: {e}; starting this shard afresh",
-            path.display()
-        )),
+        )));
     }
+    f.validate(plan).map_err(|m| {
+        Error::bad_input(format!(
+            "{}: {m}; remove it to run this shard afresh",
+            path.display()
+        ))
+    })?;
+    Ok(Earlier::Resumed(f.records))
 }
 
 /// Writes `file` for its shard under `dir`, atomically.
@@ -157,11 +323,13 @@ pub fn write(dir: &Path, name: &str, file: &ShardFile) -> Result<PathBuf> {
     Ok(path)
 }
 
-/// The shard files of `dir/shards`, merged: the sweep scene and every
-/// record in grid order. Refuses a folder without shards, shards of two
-/// sweeps, and a sweep with a shard missing or unfinished (naming it).
-pub fn gather(dir: &Path) -> Result<(Scene, String, Vec<Record>)> {
-    // (the sweep scene, the shards' fingerprint, the records)
+/// The shard files of `dir/shards`, merged: the sweep's plan (rebuilt
+/// from the first shard's scene, refused past `max_runs` runs) and every
+/// record in grid order. Every file is checked against that plan (its
+/// fingerprint, counts and records; its file name's K/N); refuses a folder
+/// without shards, shards of two sweeps, two shards that disagree on a
+/// run, and a sweep with a shard missing or unfinished (naming it).
+pub fn gather(dir: &Path, max_runs: usize) -> Result<(Plan, Vec<Record>)> {
     let sdir = shards_dir(dir);
     let entries = std::fs::read_dir(&sdir).map_err(|_| {
         Error::bad_input(format!(
@@ -185,10 +353,19 @@ pub fn gather(dir: &Path) -> Result<(Scene, String, Vec<Record>)> {
             sdir.display()
         )));
     }
+    let bad = |path: &Path, m: &str| Error::bad_input(format!("{}: {m}", path.display()));
     let mut read: Vec<(PathBuf, ShardFile)> = Vec::with_capacity(files.len());
-    for (path, _, _) in &files {
-        let f = ShardFile::read(path)
-            .map_err(|e| Error::bad_input(format!("{}: {e}", path.display())))?;
+    for (path, _, shard) in &files {
+        let f = ShardFile::read(path).map_err(|e| bad(path, &e))?;
+        if f.shard != *shard {
+            return Err(bad(
+                path,
+                &format!(
+                    "holds shard {}/{}, not the {}/{} its name says",
+                    f.shard.k, f.shard.n, shard.k, shard.n
+                ),
+            ));
+        }
         read.push((path.clone(), f));
     }
     let (first_path, first) = &read[0];
@@ -207,29 +384,54 @@ pub fn gather(dir: &Path) -> Result<(Scene, String, Vec<Record>)> {
             other.fingerprint
         )));
     }
-    let total = first.runs_total;
-    let mut by_run: BTreeMap<usize, Record> = BTreeMap::new();
-    for (_, f) in &read {
+    let plan = Plan::new(&first.scene, max_runs)
+        .map_err(|e| bad(first_path, &format!("its sweep scene is not valid: {e}")))?
+        .map_err(|e| {
+            bad(
+                first_path,
+                &format!("{e}; raise the cap with --max-runs {}", e.runs),
+            )
+        })?;
+    if first.fingerprint != plan.fingerprint {
+        return Err(Error::bad_input(format!(
+            "the shards in {} were made by another version of ladder, or edited (fingerprint {}, this one computes {} from their scene); rerun them with this version",
+            sdir.display(),
+            first.fingerprint,
+            plan.fingerprint
+        )));
+    }
+    for (path, f) in &read {
+        f.validate(&plan).map_err(|m| bad(path, &m))?;
+    }
+    let total = plan.len();
+    let mut by_run: BTreeMap<usize, (&Path, &Record)> = BTreeMap::new();
+    for (path, f) in &read {
         for r in &f.records {
-            if r.run < total {
-                by_run.entry(r.run).or_insert_with(|| r.clone());
+            if let Some((other, earlier)) = by_run.insert(r.run, (path, r))
+                && earlier != r
+            {
+                return Err(bad(
+                    path,
+                    &format!(
+                        "run {} differs from the same run in {}; remove the wrong shard and rerun it",
+                        r.run,
+                        file_name(other)
+                    ),
+                ));
             }
         }
     }
     if by_run.len() < total {
         return Err(Error::bad_input(missing_message(
             &sdir,
-            &first.scene.name,
+            &plan.scene.name,
             &read,
-            &by_run,
+            by_run.len(),
             total,
         )));
     }
-    Ok((
-        first.scene.clone(),
-        first.fingerprint.clone(),
-        by_run.into_values().collect(),
-    ))
+    let records = by_run.into_values().map(|(_, r)| r.clone()).collect();
+    Ok((plan, records))
 }
 
 /// Which shard is missing or unfinished.
@@ -237,10 +439,10 @@ fn missing_message(
     sdir: &Path,
     name: &str,
     read: &[(PathBuf, ShardFile)],
-    by_run: &BTreeMap<usize, Record>,
+    done: usize,
     total: usize,
 ) -> String {
-    let missing_runs = total - by_run.len();
+    let missing_runs = total - done;
     // The split with most shard files present names what is missing.
     let mut splits: BTreeMap<usize, Vec<&ShardFile>> = BTreeMap::new();
     for (_, f) in read {
@@ -289,6 +491,12 @@ fn missing_message(
             )
         })
         .collect();
+    if unfinished.is_empty() {
+        return format!(
+            "{missing_runs} of {total} runs of sweep {name} are in no shard file of {}; rerun the shards, then gather again",
+            sdir.display()
+        );
+    }
     format!(
         "{missing_runs} of {total} runs are missing: shard{} {} of sweep {name} did not finish; rerun {} with the same --shard to resume, then gather again",
         if unfinished.len() > 1 { "s" } else { "" },
