@@ -1,8 +1,8 @@
 //! Every domain wall a wave of its own (SPEC section 9), checked against a
 //! detector written here, and outcomes proved by the state.
 
-use jacobs_ladder::scene::{Flip, Method, OutputSpec, Scene};
 use jacobs_ladder::scene::sweep::SweepSpec;
+use jacobs_ladder::scene::{Flip, Method, OutputSpec, Scene};
 use jacobs_ladder::sim::IntegratorKind;
 use jacobs_ladder::sim::waves::{Fate, WaveKind};
 use jacobs_ladder::sweep::outcome::Outcome;
@@ -79,7 +79,12 @@ fn assert_waves_match(run: &jacobs_ladder::scenes::run::SceneRun, changes: &[(f6
     let n = run.trajectory.arrival_times.len();
     for i in 0..n {
         if let Some(k) = changes.iter().position(|c| c.1 == i) {
-            assert!(used[k], "block {}'s first change at {}", i + 1, changes[k].0);
+            assert!(
+                used[k],
+                "block {}'s first change at {}",
+                i + 1,
+                changes[k].0
+            );
         }
     }
 }
@@ -204,5 +209,9 @@ fn a_slow_escape_near_the_chain_length_edge_is_not_called_pinned() {
     let r = run_point(&s, &spec).unwrap();
     assert_eq!(r.outcome, Outcome::Propagated, "{:?}", (r.outcome, r.front));
     // It did wait: block 3 flipped after 20 000 τ.
-    assert!(r.arrival_times[2].unwrap() > 20_000.0, "{:?}", r.arrival_times[2]);
+    assert!(
+        r.arrival_times[2].unwrap() > 20_000.0,
+        "{:?}",
+        r.arrival_times[2]
+    );
 }

@@ -20,8 +20,8 @@ mod kernel;
 
 use super::integrators::{ImplicitDamping, Plan};
 use super::observables::ArrivalDetector;
-use super::waves::WaveTracker;
 use super::protocol::{Drive, Piece};
+use super::waves::WaveTracker;
 use super::{
     DivergenceWatch, IntegratorConfig, IntegratorKind, Isa, Rhs, Scenario, State, Stepping,
     StopRule, StopView, Trajectory, check_every, proved_at_rest, simulate_until, stop_times,
