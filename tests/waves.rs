@@ -190,8 +190,10 @@ fn a_pinned_antikink_is_proved_at_rest_and_its_wave_stopped() {
     let w2 = jacobs_ladder::theory::stability::smallest_omega_sq(&ladder, &st.q);
     assert!(w2 > 10.0 * tol.margin, "ω²_min = {w2}");
     // The sweep calls it pinned, decided by the proof (after the drive).
-    let mut spec = SweepSpec::default();
-    spec.cap = 20_000.0;
+    let spec = SweepSpec {
+        cap: 20_000.0,
+        ..SweepSpec::default()
+    };
     let r = run_point(&s, &spec).unwrap();
     assert_eq!(r.outcome, Outcome::Pinned, "{r:?}");
     assert!(r.t_decided.unwrap() > 1000.0);
@@ -204,8 +206,10 @@ fn a_pinned_antikink_is_proved_at_rest_and_its_wave_stopped() {
 #[test]
 fn a_slow_escape_near_the_chain_length_edge_is_not_called_pinned() {
     let s = scene(60.0, 185, &[0.0], 4000.0);
-    let mut spec = SweepSpec::default();
-    spec.cap = 80_000.0;
+    let spec = SweepSpec {
+        cap: 80_000.0,
+        ..SweepSpec::default()
+    };
     let r = run_point(&s, &spec).unwrap();
     assert_eq!(r.outcome, Outcome::Propagated, "{:?}", (r.outcome, r.front));
     // It did wait: block 3 flipped after 20 000 τ.
