@@ -69,9 +69,8 @@ fn run() -> Result<(), String> {
         .parse()
         .map_err(|e: jacobs_ladder::Error| e.to_string())?;
     let config = IntegratorConfig::fixed(kind, dt);
-    let reached = |_t: f64, arrivals: &[Option<f64>]| {
-        arrivals.len() >= 2 && arrivals[arrivals.len() - 2].is_some()
-    };
+    let reached =
+        |v: &sim::StopView| v.arrivals.len() >= 2 && v.arrivals[v.arrivals.len() - 2].is_some();
     let stop: &sim::StopRule = match stop_rule.as_str() {
         "never" => &sim::run_to_end,
         "reached" => &reached,

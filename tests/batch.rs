@@ -173,9 +173,8 @@ fn a_stop_rule_ends_runs_where_the_portable_path_ends_them() {
     let scenarios = mixed();
     let config = IntegratorConfig::paper();
     // Decided once five blocks have flipped, or past 200 τ.
-    let stop = |t: f64, arrivals: &[Option<f64>]| {
-        arrivals.iter().filter(|a| a.is_some()).count() >= 5 || t > 200.0
-    };
+    let stop =
+        |v: &sim::StopView| v.arrivals.iter().filter(|a| a.is_some()).count() >= 5 || v.t > 200.0;
     assert_batch_matches_portable(&scenarios, &config, &stop);
     let verlet = IntegratorConfig::fixed(IntegratorKind::Verlet, 0.25);
     assert_batch_matches_portable(&scenarios, &verlet, &stop);

@@ -574,9 +574,8 @@ pub struct SweepArgs {
     /// [default: 100000]
     #[arg(long, value_name = "T", help_heading = "Outcome")]
     pub cap: Option<f64>,
-    /// A wave that has not moved for this many times its longest
-    /// inter-arrival gap has stopped [default: 10]
-    #[arg(long, value_name = "K", help_heading = "Outcome")]
+    /// Removed (an error if given): outcomes are proved by the state
+    #[arg(long, value_name = "K", help_heading = "Outcome", hide = true)]
     pub quiet: Option<f64>,
     /// Name of the output files, sweep-NAME.* [default: the file's name, or custom]
     #[arg(long, value_name = "NAME")]

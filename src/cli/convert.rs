@@ -198,8 +198,11 @@ pub fn sweep_scene(args: &SweepArgs) -> Result<Scene> {
     if let Some(cap) = args.cap {
         spec.cap = cap;
     }
-    if let Some(quiet) = args.quiet {
-        spec.quiet = quiet;
+    if args.quiet.is_some() {
+        return Err(Error::bad_input(format!(
+            "--quiet: {}",
+            crate::scene::sweep::QUIET_REMOVED
+        )));
     }
     args.run.apply(&mut scene)?;
     if args.run.t_end.is_some()

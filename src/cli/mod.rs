@@ -368,8 +368,11 @@ pub struct SimulateReport {
     pub steps: u64,
     pub force_evals: u64,
     pub wall_seconds: f64,
+    /// The first wave's arrival times (per block, the first sign change).
     pub arrival_times: Vec<Option<f64>>,
     pub final_theta_deg: Vec<f64>,
+    /// Every wave of the run and block N's fate (SPEC section 9).
+    pub waves: crate::sim::waves::Waves,
 }
 
 fn simulate(args: &SimulateArgs) -> Result<()> {
@@ -429,6 +432,7 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         wall_seconds,
         arrival_times: traj.arrival_times.clone(),
         final_theta_deg: traj.final_theta_deg(),
+        waves: traj.waves.clone(),
     };
     if args.json {
         output::print(&format!("{}\n", to_json(&report)?))

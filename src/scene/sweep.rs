@@ -403,12 +403,11 @@ pub struct SweepSpec {
     /// The varied parameters and their values; every other parameter is
     /// the scene's.
     pub grid: Grid,
-    /// A run whose wave has not moved (no new arrival) for this many times
-    /// its longest inter-arrival gap, counted from its last arrival or
-    /// the drive's end, whichever is later, has stopped for good
-    /// (docs/sweeps.md). Default 10.
-    #[serde(default = "default_quiet")]
-    pub quiet: f64,
+    /// Removed: the quiet-time rule no longer decides outcomes (the state
+    /// does, SPEC section 9). Still read, so that an old file gets a clear
+    /// error rather than an unknown key.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub quiet: Option<f64>,
     /// The latest time a run may reach while its outcome is undecided, τ.
     /// Default 100 000 (25 times the paper's 4000 τ).
     #[serde(default = "default_cap")]
@@ -416,10 +415,6 @@ pub struct SweepSpec {
     /// Charts drawn from the results.
     #[serde(default)]
     pub charts: SweepCharts,
-}
-
-fn default_quiet() -> f64 {
-    10.0
 }
 
 fn default_cap() -> f64 {
@@ -430,12 +425,17 @@ impl Default for SweepSpec {
     fn default() -> Self {
         Self {
             grid: Grid::default(),
-            quiet: default_quiet(),
+            quiet: None,
             cap: default_cap(),
             charts: SweepCharts::default(),
         }
     }
 }
+
+/// The error for the removed `quiet` key (and `--quiet`).
+pub const QUIET_REMOVED: &str = "the quiet-time rule is removed: a run is called pinned or \
+     stalled only when its state is proved at rest at a stable equilibrium (docs/sweeps.md); \
+     delete this key (raise `cap` to look longer)";
 
 /// Largest cap on a run's time, τ.
 pub const MAX_CAP: f64 = 1e8;
@@ -530,11 +530,8 @@ impl SweepSpec {
                 ),
             ));
         }
-        if !(self.quiet.is_finite() && self.quiet >= 1.0 && self.quiet <= 1000.0) {
-            return Err((
-                "output.quiet".into(),
-                format!("must be a number of gaps in [1, 1000], got {}", self.quiet),
-            ));
+        if self.quiet.is_some() {
+            return Err(("output.quiet".into(), QUIET_REMOVED.into()));
         }
         if !(self.cap.is_finite() && self.cap >= base.run.t_end && self.cap <= MAX_CAP) {
             return Err((

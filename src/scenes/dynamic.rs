@@ -84,6 +84,8 @@ pub struct RunData {
     /// 2..N−1), when at least three of them flipped.
     pub speed: Option<f64>,
     pub final_theta_deg: Vec<f64>,
+    /// Every wave of the run and block N's fate (SPEC section 9).
+    pub waves: sim::waves::Waves,
     pub frames: Vec<FrameData>,
 }
 
@@ -123,6 +125,7 @@ impl RunData {
             arrival_times: traj.arrival_times.clone(),
             speed: sim::observables::wave_speed(&traj.arrival_times),
             final_theta_deg: traj.final_theta_deg(),
+            waves: traj.waves.clone(),
             frames,
         }
     }

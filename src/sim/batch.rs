@@ -21,9 +21,10 @@ mod kernel;
 use super::integrators::{ImplicitDamping, Plan};
 use super::observables::ArrivalDetector;
 use super::protocol::{Drive, Piece};
+use super::waves::WaveTracker;
 use super::{
     DivergenceWatch, IntegratorConfig, IntegratorKind, Isa, Rhs, Scenario, State, Stepping,
-    StopRule, Trajectory, check_every, simulate_until, stop_times,
+    StopRule, StopView, Trajectory, check_every, proved_at_rest, simulate_until, stop_times,
 };
 use crate::error::Result;
 use crate::model::params::M;
@@ -330,6 +331,8 @@ struct Run<'s> {
     drive: Option<(&'s Drive, [f64; 2])>,
     watch: DivergenceWatch,
     arrivals: ArrivalDetector,
+    /// The waves, fed at every check (`waves`' module doc).
+    tracker: WaveTracker,
     /// The times to land on, and the next of them.
     stops: Vec<f64>,
     next_stop: usize,
@@ -350,8 +353,10 @@ impl<'s> Run<'s> {
         let mut st = scenario.initial.clone();
         rhs.constrain(0.0, &mut st.q, &mut st.v);
         let arrivals = ArrivalDetector::new(0.0, &st.q, &st.v);
+        let tracker = WaveTracker::new(0.0, &st.q, &st.v);
         Self {
             index,
+            tracker,
             drive: rhs.drive(),
             watch: DivergenceWatch::new(ladder, &scenario.protocol, config),
             arrivals,
@@ -456,7 +461,7 @@ impl<'s> Run<'s> {
             if let Err(e) = self.watch.check(&self.rhs, &self.scratch, self.t) {
                 return Some(Err(e));
             }
-            if (job.stop)(self.t, &self.arrivals.arrival) {
+            if self.observe_and_stop(job) {
                 return Some(Ok(self.finish_from(state, lane)));
             }
         }
@@ -465,7 +470,7 @@ impl<'s> Run<'s> {
             if let Err(e) = self.watch.check(&self.rhs, &self.scratch, self.t) {
                 return Some(Err(e));
             }
-            if (job.stop)(self.t, &self.arrivals.arrival) {
+            if self.observe_and_stop(job) {
                 return Some(Ok(self.finish_from(state, lane)));
             }
             self.next_stop += 1;
@@ -474,6 +479,22 @@ impl<'s> Run<'s> {
             }
         }
         None
+    }
+
+    /// At a check, with the state gathered: feeds the wave tracker and
+    /// asks the stop rule.
+    #[cfg(target_arch = "x86_64")]
+    fn observe_and_stop(&mut self, job: &Job) -> bool {
+        let st = &self.scratch;
+        self.tracker
+            .observe(self.t, &st.q, &st.v, &self.arrivals.arrival);
+        (job.stop)(&StopView {
+            t: self.t,
+            arrivals: &self.arrivals.arrival,
+            ladder: self.rhs.ladder,
+            q: &st.q,
+            v: &st.v,
+        })
     }
 
     #[cfg(target_arch = "x86_64")]
@@ -487,13 +508,17 @@ impl<'s> Run<'s> {
     fn finish(&mut self, st: State) -> Trajectory {
         // One force evaluation per step, and Verlet's first acceleration.
         let evals = self.steps + self.rhs.force_evals.min(self.steps);
-        Trajectory::unsampled(
+        let at_rest = proved_at_rest(self.rhs.ladder, self.rhs.protocol(), self.t, &st);
+        let waves = self.tracker.finish(&st.q, at_rest);
+        let mut traj = Trajectory::unsampled(
             st,
             self.t,
             std::mem::take(&mut self.arrivals.arrival),
             self.steps,
             evals,
-        )
+        );
+        traj.waves = waves;
+        traj
     }
 }
 

@@ -12,6 +12,7 @@ pub mod observables;
 pub mod protocol;
 pub mod rhs;
 mod simd;
+pub mod waves;
 
 pub use fused::{Isa, Stepping};
 pub use integrators::{IntegratorConfig, IntegratorKind};
@@ -24,6 +25,7 @@ use crate::model::ladder::itheta;
 use crate::model::params::M;
 use crate::model::{Ladder, Params};
 use observables::{ArrivalDetector, kink_position};
+use waves::{WaveTracker, Waves};
 
 /// The paper's drive time T_d = 1000 τ (10^5 steps of 0.01).
 pub const PAPER_DRIVE_TIME: f64 = 1000.0;
@@ -94,6 +96,9 @@ pub struct Trajectory {
     /// Arrival time per block: the first sign change of its polarisation
     /// sin θ_n (SPEC section 1), `None` where it never flipped.
     pub arrival_times: Vec<Option<f64>>,
+    /// Every domain wall of the run as a wave, and block N's fate
+    /// (`waves`, SPEC section 9).
+    pub waves: Waves,
     /// State at the end of the run: at t_end, or at `t_final` where a stop
     /// rule ended it earlier ([`simulate_until`]).
     pub final_state: State,
@@ -160,15 +165,40 @@ pub struct Sample<'a> {
     pub v: &'a [f64],
 }
 
-/// A stop rule: given the time reached and the arrival times so far, true
-/// once the run has decided what it was run for (a sweep's outcome,
-/// SPEC section 7). Asked at every divergence check (every 5 τ, at most
-/// 512 steps apart, and at every sample time and drive corner).
-pub type StopRule<'a> = dyn Fn(f64, &[Option<f64>]) -> bool + Sync + 'a;
+/// What a stop rule sees: the time reached, the arrival times so far and
+/// the state.
+#[derive(Debug, Clone, Copy)]
+pub struct StopView<'a> {
+    pub t: f64,
+    pub arrivals: &'a [Option<f64>],
+    pub ladder: &'a Ladder,
+    pub q: &'a [f64],
+    pub v: &'a [f64],
+}
+
+/// A stop rule: true once the run has decided what it was run for (a
+/// sweep's outcome, SPEC section 7). Asked at every divergence check
+/// (every 5 τ, at most 512 steps apart, and at every sample time and
+/// drive corner).
+pub type StopRule<'a> = dyn Fn(&StopView) -> bool + Sync + 'a;
 
 /// The stop rule that never stops a run before its t_end.
-pub fn run_to_end(_t: f64, _arrivals: &[Option<f64>]) -> bool {
+pub fn run_to_end(_view: &StopView) -> bool {
     false
+}
+
+/// Whether the state at the end of a run proves the ladder at rest at a
+/// linearly stable equilibrium (`theory::stability`, default tolerances),
+/// not before the drive has ended.
+pub fn proved_at_rest(ladder: &Ladder, protocol: &Protocol, t: f64, st: &State) -> bool {
+    t >= protocol.drive_end()
+        && crate::theory::stability::rest_proof(
+            ladder,
+            &st.q,
+            &st.v,
+            &crate::theory::stability::RestTolerances::default(),
+        )
+        .proved
 }
 
 /// Integrates `scenario` to its end, recording the state at `sample_times`
@@ -295,6 +325,7 @@ pub fn simulate_limited(
             stop: &run_to_end,
             progress,
             limits,
+            every_step: true,
         },
         &mut |sample: &Sample| {
             kept.push(sample, alpha);
@@ -320,6 +351,7 @@ pub fn simulate_until(
         stop,
         progress: &|_| {},
         limits: &limits,
+        every_step: false,
     };
     simulate_streaming(scenario, &[], config, stepping, &hooks, &mut |_| Ok(()))
 }
@@ -333,6 +365,9 @@ pub struct Hooks<'a> {
     pub progress: &'a (dyn Fn(f64) + Sync),
     /// The caps the run must stay within (`limits`).
     pub limits: &'a Limits,
+    /// Feed the wave tracker after every step (exact times of every sign
+    /// change), not only at the checks (`waves`' module doc).
+    pub every_step: bool,
 }
 
 /// The run loop. Hands the state at every sample time to `sink` as it
@@ -361,13 +396,18 @@ pub fn simulate_streaming(
     let mut watch = DivergenceWatch::new(ladder, &scenario.protocol, &config);
     let check_every = check_every(&config);
     let mut arrivals = ArrivalDetector::new(0.0, &st.q, &st.v);
+    let mut tracker = WaveTracker::new(0.0, &st.q, &st.v);
     let mut steps = 0;
     let mut t = 0.0;
     let mut next_sample = 0;
     emit_due(&samples, &mut next_sample, t, &st, sink)?;
     'run: for &stop_at in &stops {
         while t < stop_at {
-            let budget = check_every - steps % check_every;
+            let budget = if hooks.every_step {
+                1
+            } else {
+                check_every - steps % check_every
+            };
             let (t_new, taken) =
                 integrator.advance_many(&mut rhs, &mut st, (t, stop_at), budget, &mut arrivals)?;
             if taken > 0 && t_new <= t {
@@ -379,7 +419,13 @@ pub fn simulate_streaming(
             }
             t = t_new;
             steps += taken;
+            if hooks.every_step {
+                tracker.observe(t, &st.q, &st.v, &arrivals.arrival);
+            }
             if steps.is_multiple_of(check_every) {
+                if !hooks.every_step {
+                    tracker.observe(t, &st.q, &st.v, &arrivals.arrival);
+                }
                 watch.check(&rhs, &st, t)?;
                 (hooks.progress)(t);
                 if steps as f64 > max_steps {
@@ -396,24 +442,39 @@ pub fn simulate_streaming(
                         ),
                     }));
                 }
-                if (hooks.stop)(t, &arrivals.arrival) {
+                let view = StopView {
+                    t,
+                    arrivals: &arrivals.arrival,
+                    ladder,
+                    q: &st.q,
+                    v: &st.v,
+                };
+                if (hooks.stop)(&view) {
                     break 'run;
                 }
             }
         }
+        if !hooks.every_step {
+            tracker.observe(t, &st.q, &st.v, &arrivals.arrival);
+        }
         watch.check(&rhs, &st, t)?;
         emit_due(&samples, &mut next_sample, t, &st, sink)?;
-        if (hooks.stop)(t, &arrivals.arrival) {
+        let view = StopView {
+            t,
+            arrivals: &arrivals.arrival,
+            ladder,
+            q: &st.q,
+            v: &st.v,
+        };
+        if (hooks.stop)(&view) {
             break;
         }
     }
-    Ok(Trajectory::unsampled(
-        st,
-        t,
-        arrivals.arrival,
-        steps,
-        rhs.force_evals,
-    ))
+    let at_rest = proved_at_rest(ladder, &scenario.protocol, t, &st);
+    let waves = tracker.finish(&st.q, at_rest);
+    let mut traj = Trajectory::unsampled(st, t, arrivals.arrival, steps, rhs.force_evals);
+    traj.waves = waves;
+    Ok(traj)
 }
 
 impl Trajectory {
@@ -431,6 +492,7 @@ impl Trajectory {
             velocities: Vec::new(),
             kink_position: Vec::new(),
             arrival_times,
+            waves: Waves::default(),
             final_state,
             t_final,
             steps,

@@ -67,6 +67,11 @@ impl<'a> Rhs<'a> {
         }
     }
 
+    /// What happens to block 1.
+    pub fn protocol(&self) -> &'a Protocol {
+        self.protocol
+    }
+
     pub fn dof(&self) -> usize {
         self.grad.len()
     }

@@ -159,7 +159,7 @@ fn fingerprint(scene: &Scene, spec: &SweepSpec, axes: &[(Param, Vec<f64>)]) -> R
         drive: &'a crate::scene::DriveSpec,
         run: &'a crate::scene::Run,
         axes: Vec<(&'static str, &'a [f64])>,
-        quiet: f64,
+        rule: &'static str,
         cap: f64,
     }
     let key = Key {
@@ -168,7 +168,7 @@ fn fingerprint(scene: &Scene, spec: &SweepSpec, axes: &[(Param, Vec<f64>)]) -> R
         drive: &scene.drive,
         run: &scene.run,
         axes: axes.iter().map(|(p, v)| (p.name(), v.as_slice())).collect(),
-        quiet: spec.quiet,
+        rule: "rest-proof",
         cap: spec.cap,
     };
     let text = serde_json::to_string(&key)

@@ -1,29 +1,25 @@
-//! What the wave of one run did, decided from its arrival times alone
-//! (SPEC section 7; the rule is documented in docs/sweeps.md).
+//! What the wave of one run did (SPEC sections 7 and 9; the rule is
+//! documented in docs/sweeps.md).
 //!
 //! - **propagated**: the wave's front reached block N − 1: blocks 1 to
 //!   N − 1 have all flipped (the free bottom block N is left out: it turns
 //!   its own way). Decided when the last of them flipped.
-//! - otherwise the wave has **stopped** once it has not moved (no new
-//!   arrival) for `quiet` times its longest inter-arrival gap, counted
-//!   from its last arrival or from the end of the drive, whichever is
-//!   later, and not before the scene's nominal t_end. The gaps are those
-//!   of the sorted arrival times, the first counted from the start of the
-//!   first flip (so a wave that only ever moved with the drive waits
-//!   `quiet` × t_1). A stopped wave is **pinned** if its front never got
-//!   past block 2, **stalled** otherwise. The front is the last block n
-//!   such that blocks 1..=n have all flipped: a block that flips on its
-//!   own ahead of the wave (the free end of a kink's chain at α ≤ 46° does,
-//!   within a few hundred τ) counts as motion but not as the wave's
-//!   progress; `blocks_flipped` > `front` shows it.
+//! - **pinned** / **stalled**: the state proves the wave stopped: after
+//!   the drive, the ladder is at rest (kinetic energy and residual forces
+//!   under the tolerances of `theory::stability::RestTolerances`) at a
+//!   linearly stable equilibrium (the smallest eigenvalue ω² of the
+//!   clamped Hessian above the margin). Pinned if its front never got past
+//!   block 2, stalled otherwise ([`stopped_outcome`]). The front is the
+//!   last block n such that blocks 1..=n have all flipped.
 //! - a run that reaches the cap without either is **undecided**; one whose
 //!   integration blew up is **diverged** (decided by the run loop).
 //!
-//! The decision is a pure function of the arrival times and the time
-//! reached, and it replays the history: a run is decided at the first
-//! moment the rule held, whatever the cadence at which it is asked, so
-//! two runs that flip the same blocks at the same times are decided alike.
+//! No waiting time decides anything: near an edge a wave can wait at a
+//! block for tens of thousands of τ and then move on (docs/sweeps.md), so
+//! only a state at rest at a stable equilibrium, which stays there, stops
+//! a run.
 
+use crate::theory::stability::RestTolerances;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -76,53 +72,66 @@ impl fmt::Display for Outcome {
 /// The rule's parameters for one run.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Rule {
-    /// Start of the first flip of block 1 (the wave's clock starts here).
-    pub drive_start: f64,
     /// End of the last flip: nothing stops while block 1 is driven.
     pub drive_end: f64,
-    /// The scene's nominal end: no wave is called stopped before it.
-    pub t_end: f64,
-    /// Quiet time, in multiples of the longest inter-arrival gap.
-    pub quiet: f64,
     /// Latest time reached while undecided.
     pub cap: f64,
+    /// The tolerances of the rest proof (`theory::stability`).
+    pub tolerances: RestTolerances,
 }
 
 /// A decided outcome and when it was decided.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Decision {
     pub outcome: Outcome,
-    /// t_{N−1} for a propagated wave; the end of the quiet time for a
-    /// stopped one; the cap for an undecided one.
+    /// t_{N−1} for a propagated wave; the time the state was proved at
+    /// rest for a stopped one; the cap for an undecided one.
     pub t_decided: f64,
 }
 
+/// The outcome of a wave the state proved stopped with its front at
+/// block `front`: pinned if it never got past block 2, stalled otherwise.
+pub fn stopped_outcome(front: usize) -> Outcome {
+    if front <= 2 {
+        Outcome::Pinned
+    } else {
+        Outcome::Stalled
+    }
+}
+
 impl Rule {
-    /// The decision at time `t` from `arrivals` (one per block, `None`
-    /// where the block has not flipped), or `None` while undecided and
-    /// `t` is before the cap. Arrivals later than `t` are ignored.
-    pub fn decide(&self, arrivals: &[Option<f64>], t: f64) -> Option<Decision> {
+    /// Propagation, from `arrivals` (one per block, `None` where the block
+    /// has not flipped; arrivals later than `t` ignored): the time the last
+    /// of blocks 1..N − 1 flipped, if all have by `t`.
+    pub fn propagated(&self, arrivals: &[Option<f64>], t: f64) -> Option<Decision> {
         let n = arrivals.len();
-        // The front reached block N − 1 when the last of blocks 1..N−1 flipped.
-        let reached = arrivals[..n.saturating_sub(1)]
+        if n < 2 {
+            return None;
+        }
+        arrivals[..n - 1]
             .iter()
             .try_fold(f64::NEG_INFINITY, |m, a| {
                 a.filter(|&a| a <= t).map(|a| m.max(a))
-            });
-        if n >= 2
-            && let Some(t_prop) = reached
-        {
-            // The wave may have stopped before it got there.
-            if let Some(d) = self.stopped_before(arrivals, t_prop) {
-                return Some(d);
-            }
-            return Some(Decision {
+            })
+            .map(|t_prop| Decision {
                 outcome: Outcome::Propagated,
                 t_decided: t_prop,
-            });
-        }
-        if let Some(d) = self.stopped_before(arrivals, t) {
+            })
+    }
+
+    /// The decision at time `t`: propagated (see [`Rule::propagated`]);
+    /// else stopped when `at_rest` (the state at `t` proved at rest at a
+    /// linearly stable equilibrium) and the drive is over, pinned or
+    /// stalled by the front; else undecided at the cap; else `None`.
+    pub fn decide(&self, arrivals: &[Option<f64>], t: f64, at_rest: bool) -> Option<Decision> {
+        if let Some(d) = self.propagated(arrivals, t) {
             return Some(d);
+        }
+        if at_rest && t >= self.drive_end {
+            return Some(Decision {
+                outcome: stopped_outcome(front(arrivals)),
+                t_decided: t,
+            });
         }
         (t >= self.cap).then_some(Decision {
             outcome: Outcome::Undecided,
@@ -130,54 +139,10 @@ impl Rule {
         })
     }
 
-    /// The first time in [0, t] at which the quiet rule held, replaying
-    /// the arrivals in time order.
-    fn stopped_before(&self, arrivals: &[Option<f64>], t: f64) -> Option<Decision> {
-        let mut times: Vec<(f64, usize)> = arrivals
-            .iter()
-            .enumerate()
-            .filter_map(|(i, a)| a.filter(|&a| a <= t).map(|a| (a, i)))
-            .collect();
-        times.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        let mut last = self.drive_start;
-        let mut longest_gap: f64 = 0.0;
-        let mut flipped = vec![false; arrivals.len()];
-        // Before the k-th arrival (k = 0..=len): the history so far.
-        for k in 0..=times.len() {
-            let stop_at = self.quiet_end(last, longest_gap);
-            let next = times.get(k).map_or(f64::INFINITY, |a| a.0);
-            if stop_at < next && stop_at <= t && stop_at <= self.cap {
-                let front = flipped.iter().take_while(|f| **f).count();
-                return Some(Decision {
-                    outcome: stopped_outcome(front),
-                    t_decided: stop_at,
-                });
-            }
-            if let Some(&(a, block)) = times.get(k) {
-                longest_gap = longest_gap.max(a - last);
-                last = last.max(a);
-                flipped[block] = true;
-            }
-        }
-        None
-    }
-
-    /// When a wave last seen at `last`, with longest gap `gap`, is called
-    /// stopped.
-    fn quiet_end(&self, last: f64, gap: f64) -> f64 {
-        let from = last.max(self.drive_end);
-        (from + self.quiet * gap).max(self.t_end)
-    }
-}
-
-/// The outcome of a wave that stopped with its front at block `front`
-/// (SPEC section 7): **pinned** if it never got past block 2 (front ≤ 2),
-/// **stalled** if it stopped in between.
-pub fn stopped_outcome(front: usize) -> Outcome {
-    if front <= 2 {
-        Outcome::Pinned
-    } else {
-        Outcome::Stalled
+    /// Whether the state (`q`, `v`) of `ladder` is proved at rest by this
+    /// rule's tolerances.
+    pub fn at_rest(&self, ladder: &crate::model::Ladder, q: &[f64], v: &[f64]) -> bool {
+        crate::theory::stability::rest_proof(ladder, q, v, &self.tolerances).proved
     }
 }
 
@@ -234,11 +199,9 @@ mod tests {
 
     fn rule() -> Rule {
         Rule {
-            drive_start: 0.0,
             drive_end: 1000.0,
-            t_end: 4000.0,
-            quiet: 10.0,
             cap: 100_000.0,
+            tolerances: RestTolerances::default(),
         }
     }
 
@@ -250,99 +213,52 @@ mod tests {
     fn reaching_block_n_minus_one_is_propagation() {
         // N = 5: block 4 is N − 1; the free block 5 need not flip.
         let a = arr(&[Some(500.0), Some(900.0), Some(1300.0), None, None]);
-        assert_eq!(rule().decide(&a, 1700.0), None);
+        assert_eq!(rule().decide(&a, 1700.0, false), None);
         let b = arr(&[Some(500.0), Some(900.0), Some(1300.0), Some(1700.0), None]);
-        let d = rule().decide(&b, 1705.0).unwrap();
+        let d = rule().decide(&b, 1705.0, false).unwrap();
         assert_eq!(d.outcome, Outcome::Propagated);
         assert_eq!(d.t_decided, 1700.0);
-        // Decided before the nominal window ends.
-        assert!(d.t_decided < rule().t_end);
     }
 
     #[test]
-    fn a_slow_steady_wave_is_never_called_stopped() {
-        // Gaps of 4000 τ, far beyond the paper's window: still moving.
-        let mut a = vec![None; 10];
-        a[0] = Some(500.0);
-        a[1] = Some(950.0);
-        let mut t = 950.0;
-        for slot in a.iter_mut().take(9).skip(2) {
-            t += 4000.0;
-            *slot = Some(t);
-        }
-        // At every moment before t_9 the rule has not fired.
-        for k in 0..400 {
-            let now = k as f64 * (t / 400.0);
-            let seen: Vec<Option<f64>> = a.iter().map(|x| x.filter(|&v| v <= now)).collect();
-            assert_eq!(rule().decide(&seen, now), None, "at t = {now}");
-        }
-        let d = rule().decide(&a, t).unwrap();
-        assert_eq!(d.outcome, Outcome::Propagated);
-        assert_eq!(d.t_decided, t);
-    }
-
-    #[test]
-    fn a_wave_that_stopped_is_stalled_after_the_quiet_time() {
-        // The α = −52° antikink: blocks 1–6, then nothing.
-        let a = arr(&[
-            Some(500.0),
-            Some(945.0),
-            Some(1822.0),
-            Some(6605.0),
-            Some(11279.0),
-            Some(15255.0),
-            None,
-            None,
-            None,
-            None,
-        ]);
-        let gap = 6605.0 - 1822.0;
-        let end = 15255.0 + 10.0 * gap;
-        assert_eq!(rule().decide(&a, end - 1.0), None);
-        let d = rule().decide(&a, end + 3.0).unwrap();
-        assert_eq!(d.outcome, Outcome::Stalled);
-        assert_eq!(d.t_decided, end);
-        // The same history asked much later is decided at the same time.
-        assert_eq!(rule().decide(&a, 90_000.0), Some(d));
-    }
-
-    #[test]
-    fn a_wave_held_at_the_top_is_pinned_not_before_t_end() {
+    fn only_a_state_at_rest_stops_a_wave() {
+        // Held at block 2 for 90 000 τ: still undecided while not at rest,
+        // however long the wait.
         let a = arr(&[Some(500.0), Some(943.0), None, None, None, None]);
-        // Longest gap 500 (0 → t_1); quiet from the drive's end.
-        let d = rule().decide(&a, 10_000.0).unwrap();
+        assert_eq!(rule().decide(&a, 90_000.0, false), None);
+        // At rest: pinned, at that time; not during the drive.
+        let d = rule().decide(&a, 7000.0, true).unwrap();
         assert_eq!(d.outcome, Outcome::Pinned);
-        assert_eq!(d.t_decided, 6000.0);
-        // A short quiet time is held up to the nominal window.
-        let short = Rule {
-            quiet: 1.0,
-            ..rule()
-        };
-        assert_eq!(short.decide(&a, 10_000.0).unwrap().t_decided, 4000.0);
+        assert_eq!(d.t_decided, 7000.0);
+        assert_eq!(rule().decide(&a, 999.0, true), None);
+        // Past block 2: stalled.
+        let b = arr(&[Some(500.0), Some(943.0), Some(1822.0), None, None, None]);
+        assert_eq!(
+            rule().decide(&b, 9000.0, true).unwrap().outcome,
+            Outcome::Stalled
+        );
     }
 
     #[test]
-    fn an_arrival_after_the_quiet_time_does_not_change_the_decision() {
-        // Decided pinned at 6000; a flip at 6002 (between two checks) is
-        // after the decision and does not turn it into propagation.
-        let a = arr(&[Some(500.0), Some(943.0), Some(6002.0), Some(6003.0), None]);
-        let d = rule().decide(&a, 6005.0).unwrap();
-        assert_eq!(d.outcome, Outcome::Pinned);
+    fn stopped_outcome_by_front() {
+        assert_eq!(stopped_outcome(0), Outcome::Pinned);
+        assert_eq!(stopped_outcome(2), Outcome::Pinned);
+        assert_eq!(stopped_outcome(3), Outcome::Stalled);
+        assert_eq!(stopped_outcome(9), Outcome::Stalled);
     }
 
     #[test]
     fn a_block_flipping_ahead_of_the_wave_is_not_propagation() {
         // Block 4 of 5 (N − 1) flips on its own at 200 τ, before the wave.
         let a = arr(&[Some(500.0), Some(900.0), None, Some(200.0), None]);
-        assert_eq!(rule().decide(&a, 1000.0), None);
+        assert_eq!(rule().decide(&a, 1000.0, false), None);
         let b = arr(&[Some(500.0), Some(900.0), Some(1300.0), Some(200.0), None]);
-        let d = rule().decide(&b, 1300.0).unwrap();
+        let d = rule().decide(&b, 1300.0, false).unwrap();
         assert_eq!(d.outcome, Outcome::Propagated);
         assert_eq!(d.t_decided, 1300.0);
-        // Held at block 2 with a stray flip far ahead: pinned.
-        let c = arr(&[Some(500.0), Some(900.0), None, Some(200.0), None]);
+        // Held at block 2 with a stray flip far ahead, at rest: pinned.
         assert_eq!(
-            rule().decide(&c, 50_000.0).unwrap().outcome,
+            rule().decide(&a, 50_000.0, true).unwrap().outcome,
             Outcome::Pinned
         );
     }
@@ -354,8 +270,8 @@ mod tests {
             ..rule()
         };
         let a = arr(&[Some(500.0), Some(943.0), None, None, None]);
-        assert_eq!(r.decide(&a, 4999.0), None);
-        let d = r.decide(&a, 5000.0).unwrap();
+        assert_eq!(r.decide(&a, 4999.0, false), None);
+        let d = r.decide(&a, 5000.0, false).unwrap();
         assert_eq!(d.outcome, Outcome::Undecided);
         assert_eq!(d.t_decided, 5000.0);
     }

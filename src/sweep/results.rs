@@ -92,8 +92,10 @@ struct RunEntry<'a> {
 #[derive(Serialize)]
 struct Rule {
     t_end: f64,
-    quiet: f64,
     cap: f64,
+    kinetic_tolerance: f64,
+    force_tolerance: f64,
+    stability_margin: f64,
     description: &'static str,
 }
 
@@ -135,6 +137,7 @@ pub fn json(plan: &Plan, records: &[Record], files: &[String]) -> Result<Vec<u8>
                 .collect(),
         })
         .collect();
+    let tol = crate::theory::stability::RestTolerances::default();
     let data = SweepData {
         program: "ladder",
         version: env!("CARGO_PKG_VERSION"),
@@ -153,12 +156,16 @@ pub fn json(plan: &Plan, records: &[Record], files: &[String]) -> Result<Vec<u8>
             .collect(),
         rule: Rule {
             t_end: plan.scene.run.t_end,
-            quiet: plan.spec.quiet,
             cap: plan.spec.cap,
-            description: "propagated: block N-1 flipped; otherwise stopped once no block flipped \
-                          for `quiet` times the longest inter-arrival gap after the last arrival \
-                          or the drive's end (and not before t_end): pinned if no block past \
-                          block 2 flipped, stalled otherwise; undecided at the cap (docs/sweeps.md)",
+            kinetic_tolerance: tol.kinetic,
+            force_tolerance: tol.force,
+            stability_margin: tol.margin,
+            description: "propagated: block N-1 flipped; otherwise, after the drive, pinned \
+                          (front <= 2) or stalled once the state is proved at rest (kinetic \
+                          energy and largest residual force under the tolerances) at a linearly \
+                          stable equilibrium (smallest mass-weighted eigenvalue of the clamped \
+                          Hessian above the margin); undecided at the cap (docs/sweeps.md). The \
+                          outcome columns describe the first wave's blocks; `waves` has every wave",
         },
         outcomes,
         theory: super::chart::theory_points(plan),

@@ -19,6 +19,7 @@ use super::outcome::{self, Decision, Outcome, Rule};
 use crate::error::{Error, Result};
 use crate::scene::Scene;
 use crate::scene::sweep::SweepSpec;
+use crate::sim::waves::Waves;
 use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Trajectory};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -54,6 +55,11 @@ pub struct RunResult {
     pub arrival_error: Option<f64>,
     /// Force evaluations of every run made for this point.
     pub force_evals: u64,
+    /// Every wave of the returned run and block N's fate (SPEC section
+    /// 9); the outcome columns describe the first wave's blocks (the
+    /// arrival times above).
+    #[serde(default)]
+    pub waves: Waves,
     /// What went wrong, for a diverged run.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub message: Option<String>,
@@ -62,11 +68,9 @@ pub struct RunResult {
 /// The rule of `scene` (a single-run scene) under `spec`.
 pub fn rule(scene: &Scene, spec: &SweepSpec) -> Rule {
     Rule {
-        drive_start: scene.drive.flips.first().map_or(0.0, |f| f.start),
         drive_end: scene.drive.end(),
-        t_end: scene.run.t_end,
-        quiet: spec.quiet,
         cap: spec.cap,
+        tolerances: Default::default(),
     }
 }
 
@@ -91,6 +95,7 @@ fn diverged(scenario: &Scenario, config: &IntegratorConfig, msg: String, evals: 
         dt: config.dt,
         arrival_error: None,
         force_evals: evals,
+        waves: Waves::default(),
         message: Some(msg),
     }
 }
@@ -162,6 +167,7 @@ struct Decided {
     decision: Decision,
     arrival_times: Vec<Option<f64>>,
     force_evals: u64,
+    waves: Waves,
 }
 
 /// One job of a round: point `point` integrated with `config`.
@@ -181,7 +187,7 @@ fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<De
             c.kind.name(),
             c.dt.to_bits(),
             c.rtol.map(f64::to_bits),
-            [r.drive_start, r.drive_end, r.t_end, r.quiet, r.cap].map(f64::to_bits),
+            [r.drive_end, r.cap].map(f64::to_bits),
         )
     };
     let mut groups: BTreeMap<_, Vec<usize>> = BTreeMap::new();
@@ -197,11 +203,16 @@ fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<De
             .iter()
             .map(|&k| points[jobs[k].point].scenario.clone())
             .collect();
-        let stop = |t: f64, arrivals: &[Option<f64>]| rule.decide(arrivals, t).is_some();
+        // The rest proof only once the arrivals alone do not decide (it
+        // returns at once while the ladder moves).
+        let stop = |v: &sim::StopView| {
+            rule.decide(v.arrivals, v.t, false).is_some()
+                || (v.t >= rule.drive_end && rule.at_rest(v.ladder, v.q, v.v))
+        };
         let runs = sim::batch::simulate_many(&scenarios, &first.config, &stop);
         for (&k, run) in members.iter().zip(runs) {
             out[k] = Some(match run {
-                Ok(traj) => Ok(decided(&rule, traj)),
+                Ok(traj) => Ok(decided(&rule, &points[jobs[k].point].scenario, traj)),
                 Err(Error::Failed(msg)) => Err(msg),
                 Err(Error::Diverged(d)) => Err(d.facts()),
                 Err(e) => return Err(e),
@@ -214,11 +225,14 @@ fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<De
         .collect())
 }
 
-/// The decision a run stopped on: its history replayed at the cap
-/// (`undecided` if it ran to the cap).
-fn decided(rule: &Rule, traj: Trajectory) -> Decided {
+/// The decision a run stopped on: propagation from its arrival times,
+/// else the rest proof at the state it ended in, else `undecided` (it ran
+/// to the cap).
+fn decided(rule: &Rule, scenario: &Scenario, traj: Trajectory) -> Decided {
+    let st = &traj.final_state;
+    let at_rest = rule.at_rest(&scenario.ladder, &st.q, &st.v);
     let decision = rule
-        .decide(&traj.arrival_times, rule.cap)
+        .decide(&traj.arrival_times, traj.t_final, at_rest)
         .unwrap_or(Decision {
             outcome: Outcome::Undecided,
             t_decided: rule.cap,
@@ -227,6 +241,7 @@ fn decided(rule: &Rule, traj: Trajectory) -> Decided {
         decision,
         arrival_times: traj.arrival_times,
         force_evals: traj.force_evals,
+        waves: traj.waves,
     }
 }
 
@@ -396,6 +411,7 @@ fn from_decided(
         dt: config.dt,
         arrival_error,
         force_evals,
+        waves: d.waves.clone(),
         message: None,
     }
 }

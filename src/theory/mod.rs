@@ -14,5 +14,6 @@ pub mod formulas;
 pub mod gravity;
 pub mod linalg;
 pub mod report;
+pub mod stability;
 
 pub use report::TheoryReport;

@@ -1,0 +1,221 @@
+//! Every domain wall a wave of its own (SPEC section 9), checked against a
+//! detector written here, and outcomes proved by the state.
+
+use jacobs_ladder::scene::sweep::SweepSpec;
+use jacobs_ladder::scene::{Flip, Method, OutputSpec, Scene};
+use jacobs_ladder::sim::IntegratorKind;
+use jacobs_ladder::sim::waves::{Fate, WaveKind};
+use jacobs_ladder::sweep::outcome::Outcome;
+use jacobs_ladder::sweep::run::run_point;
+
+/// A scene at `alpha` with flips of block 1 starting at `starts` (each
+/// T_d = 1000 τ), Verlet at dt = 0.25 τ, to `t_end`.
+fn scene(alpha: f64, n: usize, starts: &[f64], t_end: f64) -> Scene {
+    let mut s = Scene::default();
+    s.model.alpha = alpha;
+    s.model.n = n;
+    s.drive.flips = starts
+        .iter()
+        .map(|&start| Flip {
+            start,
+            duration: 1000.0,
+        })
+        .collect();
+    s.run.t_end = t_end;
+    s.run.integrator = Method::Fixed(IntegratorKind::Verlet);
+    s.run.dt = Some(0.25);
+    s.output = OutputSpec::Data;
+    s
+}
+
+/// The test's own detector: from θ_n sampled every `dt`, every sign change
+/// of sin θ_n, as (time by linear interpolation of sin θ, block), in time
+/// order.
+fn sign_changes(times: &[f64], states: &[Vec<f64>]) -> Vec<(f64, usize)> {
+    let n = states[0].len() / 3;
+    let mut out = Vec::new();
+    for k in 1..times.len() {
+        for i in 0..n {
+            let (a, b) = (states[k - 1][3 * i + 2].sin(), states[k][3 * i + 2].sin());
+            if (a >= 0.0) != (b >= 0.0) {
+                let s = a / (a - b);
+                out.push((times[k - 1] + s * (times[k] - times[k - 1]), i));
+            }
+        }
+    }
+    out.sort_by(|x, y| x.0.total_cmp(&y.0));
+    out
+}
+
+/// Runs `s` sampled every 0.25 τ; returns the run and the test detector's
+/// sign changes.
+fn run_and_detect(s: &Scene) -> (jacobs_ladder::scenes::run::SceneRun, Vec<(f64, usize)>) {
+    let samples: Vec<f64> = (0..=(s.run.t_end / 0.25) as usize)
+        .map(|k| k as f64 * 0.25)
+        .collect();
+    let run = jacobs_ladder::scenes::run::simulate(s, &samples).unwrap();
+    let changes = sign_changes(&run.trajectory.times, &run.trajectory.states);
+    (run, changes)
+}
+
+/// Every recorded arrival of every wave is one of the detector's sign
+/// changes (same block, within 0.3 τ, a step and the interpolation), and
+/// every sign change of the detector is some wave's arrival at that block
+/// or a later crossing of a block a wave had already crossed.
+fn assert_waves_match(run: &jacobs_ladder::scenes::run::SceneRun, changes: &[(f64, usize)]) {
+    let waves = &run.trajectory.waves.waves;
+    let mut used = vec![false; changes.len()];
+    for (w, wave) in waves.iter().enumerate() {
+        for (i, a) in wave.arrival_times.iter().enumerate() {
+            let Some(a) = a else { continue };
+            let hit = changes
+                .iter()
+                .position(|&(t, b)| b == i && (t - a).abs() < 0.3)
+                .unwrap_or_else(|| panic!("wave {w} at block {} ({a}): {changes:?}", i + 1));
+            used[hit] = true;
+        }
+    }
+    // The first sign change of every block belongs to some wave.
+    let n = run.trajectory.arrival_times.len();
+    for i in 0..n {
+        if let Some(k) = changes.iter().position(|c| c.1 == i) {
+            assert!(
+                used[k],
+                "block {}'s first change at {}",
+                i + 1,
+                changes[k].0
+            );
+        }
+    }
+}
+
+#[test]
+fn two_flips_launch_a_kink_and_an_antikink() {
+    // α = 60°, N = 10: the kink (first flip) and, 2500 τ later, block 1
+    // turned back: an antikink behind it.
+    let s = scene(60.0, 10, &[0.0, 2500.0], 8000.0);
+    let (run, changes) = run_and_detect(&s);
+    let waves = &run.trajectory.waves.waves;
+    let driven: Vec<_> = waves.iter().filter(|w| w.origin == 1).collect();
+    assert_eq!(driven.len(), 2, "{waves:?}");
+    assert_eq!(driven[0].kind, WaveKind::Kink);
+    assert_eq!(driven[1].kind, WaveKind::Antikink);
+    assert!((driven[0].launched_at - 500.0).abs() < 0.3);
+    assert!((driven[1].launched_at - 3000.0).abs() < 0.3);
+    assert_eq!(driven[0].fate, Fate::End);
+    assert_waves_match(&run, &changes);
+    // The top-level arrival times are the first wave's.
+    for (i, a) in run.trajectory.arrival_times.iter().enumerate().take(9) {
+        assert_eq!(*a, driven[0].arrival_times[i], "block {}", i + 1);
+    }
+}
+
+#[test]
+fn three_flips_at_80_degrees_launch_three_waves() {
+    let s = scene(80.0, 10, &[0.0, 2000.0, 4000.0], 9000.0);
+    let (run, changes) = run_and_detect(&s);
+    let waves = &run.trajectory.waves.waves;
+    let driven: Vec<_> = waves.iter().filter(|w| w.origin == 1).collect();
+    assert_eq!(driven.len(), 3, "{waves:?}");
+    let kinds: Vec<_> = driven.iter().map(|w| w.kind).collect();
+    assert_eq!(
+        kinds,
+        [WaveKind::Kink, WaveKind::Antikink, WaveKind::Kink],
+        "{waves:?}"
+    );
+    assert_waves_match(&run, &changes);
+    // Block 1's three sign changes, at the middle of each flip.
+    let top: Vec<f64> = changes.iter().filter(|c| c.1 == 0).map(|c| c.0).collect();
+    assert_eq!(top.len(), 3);
+    for (w, t) in driven.iter().zip(&top) {
+        assert!((w.launched_at - t).abs() < 0.3, "{} vs {t}", w.launched_at);
+    }
+}
+
+#[test]
+fn movie_11s_two_waves_annihilate_each_other_at_the_same_time() {
+    let entry = jacobs_ladder::catalog::find_any("11").unwrap();
+    let mut s = entry.scene.clone();
+    s.output = OutputSpec::Data;
+    let (run, changes) = run_and_detect(&s);
+    let waves = &run.trajectory.waves.waves;
+    let driven: Vec<usize> = (0..waves.len()).filter(|&k| waves[k].origin == 1).collect();
+    assert_eq!(driven.len(), 2, "{waves:?}");
+    let (a, b) = (&waves[driven[0]], &waves[driven[1]]);
+    assert_eq!(a.kind, WaveKind::Antikink);
+    assert_eq!(b.kind, WaveKind::Kink);
+    let (
+        Fate::Annihilated {
+            with: wa,
+            at: ta,
+            block: ba,
+        },
+        Fate::Annihilated {
+            with: wb,
+            at: tb,
+            block: bb,
+        },
+    ) = (a.fate, b.fate)
+    else {
+        panic!("{:?} / {:?}", a.fate, b.fate);
+    };
+    assert_eq!((wa, wb), (driven[1], driven[0]));
+    assert_eq!(ta, tb);
+    assert_eq!(ba, bb);
+    // At that time and block, the test's detector sees the block change.
+    assert!(
+        changes
+            .iter()
+            .any(|&(t, i)| i + 1 == ba && (t - ta).abs() < 0.3),
+        "{ta} at block {ba}: {changes:?}"
+    );
+    assert_waves_match(&run, &changes);
+}
+
+#[test]
+fn a_pinned_antikink_is_proved_at_rest_and_its_wave_stopped() {
+    // α = −50°, N = 10: pinned at the top (SPEC section 2, item 3).
+    let s = scene(-50.0, 10, &[0.0], 10_000.0);
+    let run = jacobs_ladder::scenes::run::simulate(&s, &[]).unwrap();
+    let waves = &run.trajectory.waves.waves;
+    assert_eq!(waves.len(), 1, "{waves:?}");
+    assert_eq!(waves[0].fate, Fate::Stopped);
+    assert!(waves[0].front <= 2);
+    // The proof itself, at the final state.
+    let st = &run.trajectory.final_state;
+    let ladder = jacobs_ladder::model::Ladder::new(s.model.params().unwrap());
+    let tol = jacobs_ladder::theory::stability::RestTolerances::default();
+    let proof = jacobs_ladder::theory::stability::rest_proof(&ladder, &st.q, &st.v, &tol);
+    assert!(proof.proved, "{proof:?}");
+    let w2 = jacobs_ladder::theory::stability::smallest_omega_sq(&ladder, &st.q);
+    assert!(w2 > 10.0 * tol.margin, "ω²_min = {w2}");
+    // The sweep calls it pinned, decided by the proof (after the drive).
+    let spec = SweepSpec {
+        cap: 20_000.0,
+        ..SweepSpec::default()
+    };
+    let r = run_point(&s, &spec).unwrap();
+    assert_eq!(r.outcome, Outcome::Pinned, "{r:?}");
+    assert!(r.t_decided.unwrap() > 1000.0);
+}
+
+/// The kink at α = 60° on N = 185 blocks waits at block 2 for about
+/// 23 000 τ, then runs to the bottom (docs/sweeps.md): the quiet-time rule
+/// called it pinned; the rest proof never does (its kinetic energy stays
+/// above the tolerance while it creeps), and it propagates.
+#[test]
+fn a_slow_escape_near_the_chain_length_edge_is_not_called_pinned() {
+    let s = scene(60.0, 185, &[0.0], 4000.0);
+    let spec = SweepSpec {
+        cap: 80_000.0,
+        ..SweepSpec::default()
+    };
+    let r = run_point(&s, &spec).unwrap();
+    assert_eq!(r.outcome, Outcome::Propagated, "{:?}", (r.outcome, r.front));
+    // It did wait: block 3 flipped after 20 000 τ.
+    assert!(
+        r.arrival_times[2].unwrap() > 20_000.0,
+        "{:?}",
+        r.arrival_times[2]
+    );
+}
