@@ -116,6 +116,14 @@ fn simulate_auto_rejects_a_pair_further_apart_than_the_tolerance() {
         error <= SIMULATE_TOL,
         "arrival error {error} τ > {SIMULATE_TOL} τ"
     );
+    // The error auto reports (a third of the last pair's difference:
+    // Richardson for a second-order method) is honest: within a factor 3
+    // of the true error against the reference.
+    let estimate = r.integrator.arrival_error.expect("auto reports its error");
+    assert!(
+        (error / 3.0..=3.0 * error).contains(&estimate),
+        "auto reports an arrival error of {estimate:.3e} τ, the reference says {error:.3e} τ"
+    );
 }
 
 /// The tolerance of the sweep test, τ.
