@@ -674,6 +674,7 @@ mod tests {
         let mixed = MixedFormat {
             formats: "pdf,gif".into(),
             scale: 2.0,
+            style: Default::default(),
         };
         let o = mixed.outputs(&movie).unwrap();
         assert_eq!(o.figures.to_string(), "pdf");
@@ -682,6 +683,7 @@ mod tests {
         let bad = MixedFormat {
             formats: "png".into(),
             scale: 100.0,
+            style: Default::default(),
         };
         assert!(
             bad.outputs(&movie)

@@ -579,7 +579,7 @@ mod tests {
     }
 
     #[test]
-    fn markup_runs() {
+    fn markup_runs_split_scripts() {
         assert_eq!(
             markup_runs("e^{−κ(n−1)b}, κb"),
             vec![
