@@ -352,7 +352,7 @@ fn completions_for_each_shell_name_the_commands_and_flags() {
         let out = ladder_ok(&["completions", shell]);
         let text = String::from_utf8_lossy(&out.stdout);
         assert!(text.contains(marker), "{shell}: no '{marker}'");
-        for word in ["movie", "figure", "--alpha", "--quality"] {
+        for word in ["movie", "figure", "alpha", "quality"] {
             assert!(text.contains(word), "{shell}: no '{word}'");
         }
     }

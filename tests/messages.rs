@@ -239,7 +239,7 @@ fn scene_file_types_are_said_in_words_with_an_example() {
         ],
     );
     assert!(!e.contains("struct Flip"), "{e}");
-    let f = scene_file("usize", "[model]\nn = 2.5\n");
+    let f = scene_file("whole", "[model]\nn = 2.5\n");
     let e = bad_input(
         &["render", "--check", &f],
         &[
@@ -248,7 +248,7 @@ fn scene_file_types_are_said_in_words_with_an_example() {
         ],
     );
     assert!(!e.contains("usize"), "{e}");
-    let f = scene_file("f64", "[model]\nalpha = \"sixty\"\n");
+    let f = scene_file("number", "[model]\nalpha = \"sixty\"\n");
     let e = bad_input(
         &["render", "--check", &f],
         &["model.alpha: expected a number"],
