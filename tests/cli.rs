@@ -340,3 +340,59 @@ fn the_theory_table_has_no_latex_labels() {
         }
     }
 }
+
+#[test]
+fn completions_for_each_shell_name_the_commands_and_flags() {
+    for (shell, marker) in [
+        ("bash", "complete -F"),
+        ("zsh", "#compdef ladder"),
+        ("fish", "complete -c ladder"),
+        ("powershell", "Register-ArgumentCompleter"),
+    ] {
+        let out = ladder_ok(&["completions", shell]);
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(text.contains(marker), "{shell}: no '{marker}'");
+        for word in ["movie", "figure", "alpha", "quality"] {
+            assert!(text.contains(word), "{shell}: no '{word}'");
+        }
+    }
+    assert_eq!(ladder(&["completions", "tcsh"]).status.code(), Some(2));
+}
+
+#[test]
+fn the_man_page_is_roff_with_every_command() {
+    let out = ladder_ok(&["man"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains(".TH ladder 1"), "a man page title");
+    for section in [
+        "LADDER MOVIE",
+        "LADDER FIGURE",
+        "LADDER SIMULATE",
+        "LADDER SWEEP",
+    ] {
+        assert!(text.contains(section), "no section {section}");
+    }
+    assert!(text.contains("alpha"), "flags are listed");
+}
+
+#[test]
+fn the_version_names_the_git_commit_when_built_from_a_clone() {
+    let out = ladder_ok(&["--version"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    // The commit of this checkout, asked of git independently of build.rs.
+    let head = Command::new("git")
+        .args(["rev-parse", "--short=12", "HEAD"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output();
+    match head {
+        Ok(h) if h.status.success() => {
+            let commit = String::from_utf8_lossy(&h.stdout).trim().to_string();
+            assert!(
+                text.contains(&format!("commit {commit}")),
+                "'{text}' lacks commit {commit}"
+            );
+        }
+        // Not a clone (a crate tarball): the version alone.
+        _ => assert!(text.contains(env!("CARGO_PKG_VERSION")), "{text}"),
+    }
+}

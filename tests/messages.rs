@@ -217,3 +217,98 @@ fn the_summary_names_what_was_written() {
     assert!(lines[3].contains("wrote movie-7.gif, movie-7-kymograph.png and movie-7.json"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Writes `text` to a scene file in a fresh folder; returns its path.
+fn scene_file(tag: &str, text: &str) -> String {
+    let dir = temp_dir(tag);
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("s.toml");
+    std::fs::write(&path, text).unwrap();
+    path.to_string_lossy().into_owned()
+}
+
+#[test]
+fn scene_file_types_are_said_in_words_with_an_example() {
+    let f = scene_file("flips", "[drive]\nflips = [0, 1500]\n");
+    let e = bad_input(
+        &["render", "--check", &f],
+        &[
+            ":2:10: drive.flips.0: expected a flip",
+            "got the whole number 0",
+            "flips = [{ start = 0, duration = 1000 }",
+        ],
+    );
+    assert!(!e.contains("struct Flip"), "{e}");
+    let f = scene_file("whole", "[model]\nn = 2.5\n");
+    let e = bad_input(
+        &["render", "--check", &f],
+        &[
+            "model.n: expected a whole number, got the number 2.5",
+            "n = 20",
+        ],
+    );
+    assert!(!e.contains("usize"), "{e}");
+    let f = scene_file("number", "[model]\nalpha = \"sixty\"\n");
+    let e = bad_input(
+        &["render", "--check", &f],
+        &["model.alpha: expected a number"],
+    );
+    assert!(!e.contains("f64"), "{e}");
+}
+
+#[test]
+fn an_output_table_without_kind_takes_the_kind_its_keys_say() {
+    // docs/scenes.md: `times` or `panels` make a filmstrip.
+    let f = scene_file("nokind", "[run]\nt_end = 100\n[output]\ntimes = [0, 50]\n");
+    let out = ladder(&["render", "--check", &f]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(text.contains(": figure s (1 run)"), "{text}");
+}
+
+#[test]
+fn an_unknown_key_in_output_is_named_with_its_table_at_its_line() {
+    let f = scene_file(
+        "unknown-output",
+        "[output]\nkind = \"filmstrip\"\ntimez = [0, 900]\n",
+    );
+    bad_input(
+        &["render", "--check", &f],
+        &[":3:1: output.timez: unknown field `timez`"],
+    );
+}
+
+#[test]
+fn an_odd_mp4_size_suggests_the_nearest_even_size_below() {
+    bad_input(
+        &["movie", "4", "--format", "mp4", "--size", "1921x1080"],
+        &["try 1920x1080"],
+    );
+}
+
+#[test]
+fn the_max_flags_belong_to_the_commands_they_limit() {
+    // Not on commands that neither simulate nor write movies...
+    for args in [
+        ["list", "--max-pixels", "5"],
+        ["theory", "--max-block-steps", "5"],
+    ] {
+        let out = ladder(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+    }
+    // ... nor --max-pixels on a command that writes no movie.
+    assert_eq!(
+        ladder(&["simulate", "--max-pixels", "5"]).status.code(),
+        Some(2)
+    );
+    // On a simulating command the cap applies (and is named).
+    bad_input(
+        &["simulate", "--t-end", "1000", "--max-block-steps", "10"],
+        &["--max-block-steps"],
+    );
+}

@@ -417,7 +417,7 @@ pub(crate) fn check_mp4_size(width: u32, height: u32) -> Result<()> {
         // An odd side is as near the even number below as the one above:
         // below (1921 → 1920, the size meant), unless that is under 16.
         let even = |v: u32| {
-            if v % 2 == 0 {
+            if v.is_multiple_of(2) {
                 v
             } else if v > 16 {
                 v - 1

@@ -387,7 +387,10 @@ mod tests {
         let e = parse("[model]\nn = \"ten\"\n", "f", "f")
             .unwrap_err()
             .to_string();
-        assert!(e.starts_with("f:2:5: model.n: invalid type"), "{e}");
+        assert!(
+            e.starts_with("f:2:5: model.n: expected a whole number, got the text \"ten\""),
+            "{e}"
+        );
     }
 
     #[test]
