@@ -43,25 +43,31 @@ fn front_2_is_pinned_and_front_3_is_stalled() {
 
 /// The rule applied to arrival histories that stop at every front: a
 /// history whose blocks 1..=front flipped (at the paper's kink pace,
-/// 220 τ a block after t₁ = 500 τ) and nothing after is decided, after
-/// its quiet time, with the SPEC's outcome.
+/// 220 τ a block after t₁ = 500 τ) and nothing after is decided, once the
+/// state is proved at rest after the drive, with the SPEC's outcome; while
+/// it is not proved at rest it stays undecided until the cap, and then is
+/// `undecided` (SPEC section 9: no quiet time calls a wave stopped).
 #[test]
 fn the_rule_decides_each_stopped_front_as_the_spec_says() {
     let rule = outcome::Rule {
-        drive_start: 0.0,
         drive_end: 1000.0,
-        t_end: 4000.0,
-        quiet: 10.0,
         cap: 1e6,
+        tolerances: Default::default(),
     };
     for front in 1..=8 {
         let mut arrivals = vec![None; 10];
         for (k, a) in arrivals.iter_mut().enumerate().take(front) {
             *a = Some(500.0 + 220.0 * k as f64);
         }
-        let d = rule.decide(&arrivals, 1e6).expect("decided by the cap");
+        let d = rule.decide(&arrivals, 9000.0, true).expect("proved at rest");
         assert_eq!(d.outcome, spec_stopped(front), "front {front}");
         assert_eq!(outcome::front(&arrivals), front);
+        // Not at rest: nothing is decided before the cap, undecided at it.
+        assert_eq!(rule.decide(&arrivals, 9000.0, false), None, "front {front}");
+        let d = rule.decide(&arrivals, 1e6, false).expect("the cap");
+        assert_eq!(d.outcome, Outcome::Undecided, "front {front}");
+        // At rest while block 1 is still driven: not decided.
+        assert_eq!(rule.decide(&arrivals, 900.0, true), None, "front {front}");
     }
 }
 
@@ -236,6 +242,7 @@ theory = false
                     dt: 0.25,
                     arrival_error: None,
                     force_evals: 0,
+                    waves: Default::default(),
                     message: None,
                 },
             }
