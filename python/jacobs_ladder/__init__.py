@@ -571,7 +571,6 @@ def sweep(
     base: Optional[Scene] = None,
     *,
     cap: Optional[float] = None,
-    quiet: Optional[float] = None,
     name: Optional[str] = None,
     max_runs: int = 100_000,
     **keys: Any,
@@ -586,7 +585,8 @@ def sweep(
     - ``base``: the scene swept (default: the paper's). Other keywords
       (``t_end``, ``integrator``, ``tolerance``, scene keys) change it.
     - ``cap``: latest time a run may reach undecided, τ. Default 100000.
-    - ``quiet``: the quiet rule's factor (docs/sweeps.md). Default 10.
+      A run is called stopped only when its state is proved at rest
+      (docs/sweeps.md); otherwise it runs on to the cap.
     - ``name``: the sweep's name (in its JSON). Default the base's.
     - ``max_runs``: refuse a larger grid. Default 100000.
 
@@ -607,8 +607,6 @@ def sweep(
     output: Dict[str, Any] = {"kind": "sweep", "grid": {first: first_values}}
     if cap is not None:
         output["cap"] = cap
-    if quiet is not None:
-        output["quiet"] = quiet
     keys["output"] = output
     if name is not None:
         keys["name"] = name

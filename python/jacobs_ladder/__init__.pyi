@@ -176,10 +176,9 @@ def sweep(
     base: Optional[Scene] = None,
     *,
     cap: Optional[float] = None,
-    quiet: Optional[float] = None,
     name: Optional[str] = None,
     max_runs: int = 100_000,
     **keys: Any,
 ) -> Table:
     """Grid keywords alpha, n, b, gamma, gravity, inertia, drive_time: a
-    list, a value or "start:stop:step". cap: τ (100000); quiet (10)."""
+    list, a value or "start:stop:step". cap: τ (100000)."""
