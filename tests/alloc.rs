@@ -1,5 +1,7 @@
-//! No allocation inside the step loop: a run ten times longer makes exactly
-//! as many allocations (counted by a global allocator in this test binary,
+//! No allocation inside the step loop: a run twice as long makes at most a
+//! few hundred more allocations (the wave tracker allocates per event, a
+//! launched wave or a sign change of block N, never per step), against the
+//! tens of thousands of extra steps it takes (counted by a global allocator in this test binary,
 //! on the thread that runs the simulation only: the test harness's own
 //! thread may allocate at any time).
 
@@ -38,7 +40,7 @@ static GLOBAL: Counting = Counting;
 /// Allocations made by one run of the kink scene of `n` blocks to `t_end`.
 fn allocations(n: usize, t_end: f64, config: &IntegratorConfig, stepping: Stepping) -> u64 {
     let params = Params::paper(60.0).unwrap().with(n, 1.3, 60.0).unwrap();
-    let scenario = Scenario::single_flip(params, 100.0, t_end).unwrap();
+    let scenario = Scenario::single_flip(params, 1000.0, t_end).unwrap();
     COUNTED.with(|c| c.set(true));
     let before = ALLOCATIONS.load(Ordering::Relaxed);
     let traj = sim::simulate_with(&scenario, &[], config, stepping).unwrap();
@@ -46,6 +48,12 @@ fn allocations(n: usize, t_end: f64, config: &IntegratorConfig, stepping: Steppi
     assert!(traj.steps > 0);
     after - before
 }
+
+/// Allocations a longer run may add for events (a wave launched, a sign
+/// change of block N recorded), not steps: the longer runs below take at
+/// least 4 × 10⁴ more steps, so one allocation per step (or per hundred)
+/// exceeds this by far.
+const EVENTS: u64 = 400;
 
 #[test]
 fn step_loop_does_not_allocate() {
@@ -58,14 +66,17 @@ fn step_loop_does_not_allocate() {
     ];
     for config in configs {
         for stepping in [Stepping::Fastest, Stepping::Portable] {
-            let short = allocations(10, 200.0, &config, stepping);
-            let long = allocations(10, 2000.0, &config, stepping);
-            assert_eq!(short, long, "{config:?}, {stepping:?}");
+            let short = allocations(10, 8000.0, &config, stepping);
+            let long = allocations(10, 16000.0, &config, stepping);
+            assert!(
+                long - short <= EVENTS,
+                "{config:?}, {stepping:?}: {short} then {long}"
+            );
         }
     }
     // The chain kernel (N > 32).
     let config = IntegratorConfig::paper();
-    let short = allocations(40, 200.0, &config, Stepping::Fastest);
-    let long = allocations(40, 2000.0, &config, Stepping::Fastest);
-    assert_eq!(short, long, "chain kernel");
+    let short = allocations(40, 24000.0, &config, Stepping::Fastest);
+    let long = allocations(40, 48000.0, &config, Stepping::Fastest);
+    assert!(long - short <= EVENTS, "chain kernel: {short} then {long}");
 }

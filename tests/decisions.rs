@@ -59,7 +59,9 @@ fn the_rule_decides_each_stopped_front_as_the_spec_says() {
         for (k, a) in arrivals.iter_mut().enumerate().take(front) {
             *a = Some(500.0 + 220.0 * k as f64);
         }
-        let d = rule.decide(&arrivals, 9000.0, true).expect("proved at rest");
+        let d = rule
+            .decide(&arrivals, 9000.0, true)
+            .expect("proved at rest");
         assert_eq!(d.outcome, spec_stopped(front), "front {front}");
         assert_eq!(outcome::front(&arrivals), front);
         // Not at rest: nothing is decided before the cap, undecided at it.

@@ -241,10 +241,12 @@ pub fn scripts_as_markup(text: &str) -> std::borrow::Cow<'_, str> {
     if !text.chars().any(missing) {
         return text.into();
     }
+    // Once one script character is missing, every one is typeset as markup,
+    // so that a run such as ⁻⁴ keeps one size and one baseline.
     let mut out = String::with_capacity(text.len() + 8);
     let mut open: Option<Shift> = None;
     for c in text.chars() {
-        let m = if missing(c) { script(c) } else { None };
+        let m = script(c);
         match (m, open) {
             (Some(&(_, shift, plain)), Some(o)) if o == shift => out.push(plain),
             (Some(&(_, shift, plain)), _) => {
