@@ -84,6 +84,8 @@ impl Command {
     }
 }
 
+// One value per process, parsed once: boxing the large variants buys nothing.
+#[allow(clippy::large_enum_variant)]
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Simulate a kink (alpha > 0) or antikink (alpha < 0) driven from the top block
