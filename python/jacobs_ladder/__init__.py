@@ -151,6 +151,8 @@ class Run:
         waves = self.record.get("waves")
         if waves is None:
             return None
+        if isinstance(waves, dict):  # {"waves": [...], "block_n": {...}}
+            waves = waves.get("waves", [])
         out = []
         for w in waves:
             w = dict(w)
@@ -160,6 +162,13 @@ class Run:
                 )
             out.append(w)
         return out
+
+    @property
+    def block_n(self) -> Optional[Dict[str, Any]]:
+        """The free bottom block's own record beside the waves (its sign
+        changes, τ, and final angle), where the engine reports waves."""
+        waves = self.record.get("waves")
+        return waves.get("block_n") if isinstance(waves, dict) else None
 
     def to_dict(self) -> Dict[str, Any]:
         """Every array and record, as a dict (arrays are numpy arrays)."""

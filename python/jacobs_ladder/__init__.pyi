@@ -63,6 +63,9 @@ class Run:
     @property
     def waves(self) -> Optional[List[Dict[str, Any]]]:
         """One record per domain wall, where the engine reports them."""
+    @property
+    def block_n(self) -> Optional[Dict[str, Any]]:
+        """The free bottom block's record beside the waves."""
     def to_dict(self) -> Dict[str, Any]: ...
 
 def simulate(

@@ -37,11 +37,16 @@ impl RenderArgs {
             frames: self.frames,
             size: self.size,
             fps: self.fps,
+            // The command line's default (`--quality high`).
+            quality: jacobs_ladder::cli::QualityArg::High,
         };
         let opts = movie.options()?;
         let mixed = MixedFormat {
             formats: self.formats.clone().unwrap_or_else(|| "png,gif".into()),
             scale: self.scale,
+            // No style flags: a scene's own `[style]` table (the `style`
+            // keyword of `render`) sets its look.
+            style: Default::default(),
         };
         let outputs = mixed.outputs(&opts)?;
         if self.formats.is_some() {

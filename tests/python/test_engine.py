@@ -120,6 +120,9 @@ def test_the_run_carries_the_waves_when_the_engine_reports_them():
     first = waves[0]
     # SPEC section 9: the top-level arrival times are the first wave's.
     assert same_bits(first["arrival_times"], run.arrival_times)
+    assert first["kind"] == "kink"
+    assert first["fate"] == "end"
+    assert run.block_n is not None
 
 
 # ----------------------------------------------------------------- errors
