@@ -30,7 +30,19 @@ import os
 from pathlib import Path
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
-import numpy as np
+
+class _LazyNumpy:
+    """numpy, imported on first use: `import jacobs_ladder` stays fast (numpy
+    alone takes about 120 ms to import); the first array made loads it."""
+
+    def __getattr__(self, name: str) -> Any:
+        import numpy
+
+        globals()["np"] = numpy
+        return getattr(numpy, name)
+
+
+np: Any = _LazyNumpy()
 
 from . import _native
 from ._native import RunError

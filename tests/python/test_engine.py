@@ -249,3 +249,18 @@ def test_catalogue_lists_the_builtin_scenes(ladder):
     assert "3" in ids and "S5" in ids
     for i, kind, _ in jl.catalogue()[:3]:
         assert jl.Scene.builtin(i, kind=kind).kind == kind
+
+
+def test_import_does_not_load_numpy_until_an_array_is_made():
+    """`import jacobs_ladder` stays light (numpy alone takes ~120 ms to
+    import): numpy is loaded by the first call that makes an array."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys, jacobs_ladder as jl\n"
+        "assert 'numpy' not in sys.modules, 'numpy imported by import jacobs_ladder'\n"
+        "run = jl.simulate(integrator='symplectic-euler', t_end=600)\n"
+        "assert 'numpy' in sys.modules and run.theta.shape[1] == 10\n"
+    )
+    subprocess.run([sys.executable, "-c", code], check=True)
