@@ -100,6 +100,11 @@ impl Drive {
         self.knots.iter().map(|k| k.0)
     }
 
+    /// Number of ramps of θ_1 (flips of block 1): pieces on which it moves.
+    pub fn flips(&self) -> usize {
+        self.knots.windows(2).filter(|w| w[0].1 != w[1].1).count()
+    }
+
     /// Time after which the drive does no more work.
     pub fn end(&self) -> f64 {
         self.knots[self.knots.len() - 1].0
