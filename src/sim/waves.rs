@@ -29,6 +29,11 @@
 //! checks, every 5 τ), a block that changes sign twice between two
 //! observations is not seen to change, and the time of a block's first
 //! change is taken from the arrival detector, which sees every step.
+//! Single runs (`sim::simulate_limited`) feed it after every step when the
+//! drive has several flips; with one flip, the one driven wave's times are
+//! the arrival detector's (exact), and it is fed at the checks, which keeps
+//! the fused kernel's speed (a spontaneous wall's later sign changes are
+//! then interpolated between checks).
 
 use super::observables::hermite_root;
 use serde::{Deserialize, Serialize};
