@@ -5,7 +5,13 @@
 use std::process::Command;
 
 fn git(args: &[&str]) -> Option<String> {
-    let out = Command::new("git").args(args).output().ok()?;
+    // GIT_OPTIONAL_LOCKS=0: `git status` must not rewrite .git/index (which
+    // this script watches), or every build would trigger the next one.
+    let out = Command::new("git")
+        .args(args)
+        .env("GIT_OPTIONAL_LOCKS", "0")
+        .output()
+        .ok()?;
     if !out.status.success() {
         return None;
     }
