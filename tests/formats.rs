@@ -243,7 +243,7 @@ fn top_boxes(bytes: &[u8]) -> Vec<(String, usize, usize)> {
 #[cfg(feature = "mp4")]
 #[test]
 fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
-    use jacobs_ladder::encode::{Format, Yuv420};
+    use jacobs_ladder::encode::Format;
     use openh264::formats::YUVSource;
     let scene = movie_scene("4");
     let opts = scenes::MovieOptions {
@@ -320,19 +320,7 @@ fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
             .unwrap_or_else(|| panic!("frame {k} decodes"));
         let (w, h) = yuv.dimensions();
         assert_eq!((w, h), (320, 240));
-        let (ys, us, vs) = yuv.strides();
-        let rows = |plane: &[u8], stride: usize, width: usize, height: usize| -> Vec<u8> {
-            (0..height)
-                .flat_map(|r| plane[r * stride..r * stride + width].to_vec())
-                .collect()
-        };
-        let ours = Yuv420 {
-            width: w,
-            height: h,
-            y: rows(yuv.y(), ys, w, h),
-            u: rows(yuv.u(), us, w / 2, h / 2),
-            v: rows(yuv.v(), vs, w / 2, h / 2),
-        };
+        let ours = common::h264::packed(&yuv);
         let rgb = ours.to_rgb();
         if k == 16 {
             let rgba: Vec<u8> = rgb

@@ -10,8 +10,6 @@
 mod common;
 
 use common::tempdir::TempDir;
-use jacobs_ladder::encode::Yuv420;
-use openh264::formats::YUVSource;
 use std::process::Command;
 
 /// The default's promise: the lowest PSNR of any frame against the GIF
@@ -90,21 +88,7 @@ fn mp4_frames(bytes: &[u8]) -> Vec<Vec<u8>> {
             rest = &rest[4 + n..];
         }
         let yuv = decoder.decode(&annex_b).unwrap().expect("a frame decodes");
-        let (w, h) = yuv.dimensions();
-        let (ys, us, vs) = yuv.strides();
-        let rows = |plane: &[u8], stride: usize, width: usize, height: usize| -> Vec<u8> {
-            (0..height)
-                .flat_map(|r| plane[r * stride..r * stride + width].to_vec())
-                .collect()
-        };
-        let frame = Yuv420 {
-            width: w,
-            height: h,
-            y: rows(yuv.y(), ys, w, h),
-            u: rows(yuv.u(), us, w / 2, h / 2),
-            v: rows(yuv.v(), vs, w / 2, h / 2),
-        };
-        frames.push(frame.to_rgb());
+        frames.push(common::h264::packed(&yuv).to_rgb());
     }
     frames
 }

@@ -3,6 +3,7 @@
 
 pub mod fuzz;
 pub mod golden;
+pub mod h264;
 pub mod kernels;
 pub mod lcg;
 pub mod require;
