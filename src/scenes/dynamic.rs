@@ -2,7 +2,7 @@
 //! (figure S6) and the movies with their kymographs. Each simulation runs
 //! only to its last frame and is sampled only at the times drawn.
 
-use super::run::{self, IntegratorReport, SceneRun};
+use super::run::{self, SceneRun};
 use crate::encode::{Format, MovieWriter, Mp4Quality, png_bytes};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
@@ -13,9 +13,9 @@ use crate::render::compose::{
 use crate::render::fold::{self, Fold};
 use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::{MovieLayout, Picture, style};
-use crate::scene::{Camera, DriveSpec, MIN_BLOCK_PIXELS, Model, OutputSpec, Scene, describe};
+use crate::scene::{Camera, MIN_BLOCK_PIXELS, OutputSpec, Scene, describe};
 use crate::sim::{self, Trajectory};
-use serde::Serialize;
+pub use super::data::{FrameData, RunData};
 use tiny_skia::Pixmap;
 
 /// Movie frame count, size and rate.
@@ -66,68 +66,6 @@ impl MovieOptions {
             )));
         }
         Ok(self)
-    }
-}
-
-/// What the data file says of one run: the scene it ran, the integrator
-/// and accuracy, the arrival times, the final angles and, at each drawn
-/// time, θ_n (degrees, wrapped to (−180°, 180°]) and the centres.
-#[derive(Debug, Clone, Serialize)]
-pub struct RunData {
-    pub label: String,
-    pub model: Model,
-    pub drive: DriveSpec,
-    pub t_end: f64,
-    pub integrator: IntegratorReport,
-    pub arrival_times: Vec<Option<f64>>,
-    /// Speed of the wave in blocks per τ (least squares over blocks
-    /// 2..N−1), when at least three of them flipped.
-    pub speed: Option<f64>,
-    pub final_theta_deg: Vec<f64>,
-    /// Every wave of the run and block N's fate (SPEC section 9).
-    pub waves: sim::waves::Waves,
-    pub frames: Vec<FrameData>,
-}
-
-/// The state drawn at one time.
-#[derive(Debug, Clone, Serialize)]
-pub struct FrameData {
-    pub t: f64,
-    pub theta_deg: Vec<f64>,
-    pub x: Vec<f64>,
-    pub y: Vec<f64>,
-}
-
-impl RunData {
-    pub fn from_run(scene: &Scene, run: &SceneRun) -> Self {
-        Self::new("", scene, run)
-    }
-
-    fn new(label: &str, scene: &Scene, run: &SceneRun) -> Self {
-        let traj = &run.trajectory;
-        let frames = traj
-            .times
-            .iter()
-            .zip(&traj.states)
-            .map(|(&t, q)| FrameData {
-                t,
-                theta_deg: sim::observables::angles_deg(q),
-                x: (0..q.len() / 3).map(|i| q[3 * i]).collect(),
-                y: (0..q.len() / 3).map(|i| q[3 * i + 1]).collect(),
-            })
-            .collect();
-        Self {
-            label: label.to_string(),
-            model: scene.model,
-            drive: scene.drive.clone(),
-            t_end: scene.run.t_end,
-            integrator: run.integrator.clone(),
-            arrival_times: traj.arrival_times.clone(),
-            speed: sim::observables::wave_speed(&traj.arrival_times),
-            final_theta_deg: traj.final_theta_deg(),
-            waves: traj.waves.clone(),
-            frames,
-        }
     }
 }
 

@@ -3,6 +3,7 @@
 //! figures (geometry, formulas, linear theory); `dynamic` the simulated
 //! figures and the movies.
 
+pub mod data;
 pub mod dynamic;
 pub mod run;
 pub mod theory;
@@ -11,8 +12,8 @@ use crate::encode::{Formats, Kind as FormatKind, Mp4Quality};
 use crate::error::{Error, Result};
 use crate::render::Picture;
 use crate::scene::{OutputSpec, Scene, describe};
-pub use dynamic::{MovieOptions, RunData};
-use serde::Serialize;
+pub use data::{DataFile, RunData};
+pub use dynamic::MovieOptions;
 
 /// Which files each scene writes (`--format`, `--scale`).
 #[derive(Debug, Clone, PartialEq)]
@@ -63,21 +64,6 @@ impl Outputs {
 
 /// Number of kymograph rows of a kymograph figure.
 const KYMOGRAPH_ROWS: usize = 400;
-
-/// `<output>.json`: the scene with every parameter, the program that made
-/// the output, and the numbers the picture shows (SPEC section 6).
-#[derive(Debug, Clone, Serialize)]
-pub struct DataFile<'a> {
-    pub program: &'static str,
-    pub version: &'static str,
-    pub title: String,
-    pub parameters: String,
-    pub fidelity: &'static str,
-    pub files: Vec<String>,
-    pub scene: &'a Scene,
-    /// One entry per simulation drawn (empty for the theory figures).
-    pub runs: Vec<RunData>,
-}
 
 /// The file names a scene writes in the default formats, data file last.
 pub fn file_names(scene: &Scene) -> Vec<String> {
