@@ -72,6 +72,10 @@ pub struct Limits {
     pub movie_pixels: f64,
     /// Runs of one sweep. Default 10^5: a 10,000-run sweep passes.
     pub sweep_runs: f64,
+    /// Bytes of one data file (`<output>.json`), estimated before any
+    /// work ([`Limits::check_data_bytes`]). Default 2e9: a 200-frame movie
+    /// of N = 50,000 (about 1.5 GB).
+    pub data_bytes: f64,
 }
 
 impl Default for Limits {
@@ -81,6 +85,7 @@ impl Default for Limits {
             block_samples: 5e7,
             movie_pixels: 5e9,
             sweep_runs: 1e5,
+            data_bytes: 2e9,
         }
     }
 }
@@ -97,14 +102,17 @@ pub enum Resource {
     MoviePixels,
     /// Runs of a sweep.
     SweepRuns,
+    /// Bytes of a data file.
+    DataBytes,
 }
 
 impl Resource {
-    pub const ALL: [Self; 4] = [
+    pub const ALL: [Self; 5] = [
         Self::BlockSteps,
         Self::BlockSamples,
         Self::MoviePixels,
         Self::SweepRuns,
+        Self::DataBytes,
     ];
 
     /// The unit of the count, for messages ("block-steps").
@@ -114,6 +122,7 @@ impl Resource {
             Self::BlockSamples => "block-samples",
             Self::MoviePixels => "pixels",
             Self::SweepRuns => "runs",
+            Self::DataBytes => "bytes",
         }
     }
 
@@ -124,6 +133,7 @@ impl Resource {
             Self::BlockSamples => "samples × N",
             Self::MoviePixels => "frames × width × height",
             Self::SweepRuns => "runs of a sweep",
+            Self::DataBytes => "bytes of a data file",
         }
     }
 }
@@ -185,6 +195,7 @@ impl Limits {
             block_samples: f64::INFINITY,
             movie_pixels: f64::INFINITY,
             sweep_runs: f64::INFINITY,
+            data_bytes: f64::INFINITY,
         }
     }
 
@@ -195,6 +206,7 @@ impl Limits {
             Resource::BlockSamples => self.block_samples,
             Resource::MoviePixels => self.movie_pixels,
             Resource::SweepRuns => self.sweep_runs,
+            Resource::DataBytes => self.data_bytes,
         }
     }
 
@@ -205,6 +217,7 @@ impl Limits {
             Resource::BlockSamples => self.block_samples = cap,
             Resource::MoviePixels => self.movie_pixels = cap,
             Resource::SweepRuns => self.sweep_runs = cap,
+            Resource::DataBytes => self.data_bytes = cap,
         }
     }
 
@@ -249,6 +262,17 @@ impl Limits {
         self.check(Resource::SweepRuns, runs, || {
             format!("{} runs", count(runs))
         })
+    }
+}
+
+impl Limits {
+    /// A data file estimated at `bytes` (`detail` says of what).
+    pub fn check_data_bytes(
+        &self,
+        bytes: f64,
+        detail: impl FnOnce() -> String,
+    ) -> Result<(), LimitExceeded> {
+        self.check(Resource::DataBytes, bytes, detail)
     }
 }
 

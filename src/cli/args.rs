@@ -37,6 +37,7 @@ pub struct LimitArgs {
     pub max_block_steps: Option<f64>,
     pub max_block_samples: Option<f64>,
     pub max_pixels: Option<f64>,
+    pub max_data_bytes: Option<f64>,
 }
 
 /// The caps on a simulation's cost, on the commands that simulate. A
@@ -52,6 +53,10 @@ pub struct SimLimitArgs {
     /// [default: 5e7]
     #[arg(long, value_name = "X")]
     pub max_block_samples: Option<f64>,
+    /// Most bytes of one data file (<output>.json), estimated before any
+    /// work [default: 2e9]
+    #[arg(long, value_name = "X")]
+    pub max_data_bytes: Option<f64>,
 }
 
 /// The cap on a movie's size, on the commands that write movies.
@@ -80,6 +85,7 @@ impl Command {
             max_block_steps: sim.and_then(|l| l.max_block_steps),
             max_block_samples: sim.and_then(|l| l.max_block_samples),
             max_pixels: pixels.and_then(|l| l.max_pixels),
+            max_data_bytes: sim.and_then(|l| l.max_data_bytes),
         }
     }
 }
@@ -239,7 +245,11 @@ pub struct SimulateArgs {
     /// Write theta_n(t) in degrees (wrapped to (-180, 180]) at the sample times to this CSV file
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
-    /// Interval between CSV samples, in tau
+    /// Write the whole state at the sample times to this NumPy .npz file: t,
+    /// theta (radians), x, y, vx, vy, omega (samples x N) and the energies
+    #[arg(long, value_name = "FILE")]
+    pub npz: Option<PathBuf>,
+    /// Interval between CSV and npz samples, in tau
     #[arg(long, default_value_t = 10.0, value_name = "T")]
     pub sample_every: f64,
     /// Code that takes symplectic Euler's steps (the other integrators use

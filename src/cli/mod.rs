@@ -28,8 +28,18 @@ where
     T: Into<OsString> + Clone,
 {
     crate::output::temp::install_signal_cleanup();
+    let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+    // Recorded in every data file (issue 19): what reruns it.
+    let command_line: Vec<String> = args
+        .iter()
+        .map(|a| a.to_string_lossy().into_owned())
+        .collect();
     let result = match Cli::try_parse_from(args) {
-        Ok(cli) => cli.command.limits().install().and_then(|()| run(cli)),
+        Ok(cli) => cli
+            .command
+            .limits()
+            .install()
+            .and_then(|()| run_with(cli, &command_line)),
         Err(e) => return clap_exit(e),
     };
     match result {
@@ -68,6 +78,7 @@ impl LimitArgs {
             Resource::BlockSamples => "--max-block-samples",
             Resource::MoviePixels => "--max-pixels",
             Resource::SweepRuns => "--max-runs",
+            Resource::DataBytes => "--max-data-bytes",
         }
     }
 
@@ -79,6 +90,7 @@ impl LimitArgs {
             (Resource::BlockSteps, self.max_block_steps),
             (Resource::BlockSamples, self.max_block_samples),
             (Resource::MoviePixels, self.max_pixels),
+            (Resource::DataBytes, self.max_data_bytes),
         ] {
             if let Some(v) = value {
                 if v.is_nan() || v <= 0.0 {
@@ -144,8 +156,18 @@ fn one_line(text: &str) -> String {
 }
 
 pub fn run(cli: Cli) -> Result<()> {
+    run_with(cli, &[])
+}
+
+/// [`run`], recording `command_line` (the program's arguments, word by
+/// word) in the data files it writes.
+pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
+    let recorded = |outputs: Outputs| Outputs {
+        command_line: command_line.to_vec(),
+        ..outputs
+    };
     match cli.command {
-        Command::Simulate(args) => simulate(&args),
+        Command::Simulate(args) => simulate(&args, command_line),
         Command::Bench(args) => bench(&args),
         Command::Theory(args) => theory(&args),
         Command::Sweep(args) => sweep::sweep(&args),
@@ -157,26 +179,26 @@ pub fn run(cli: Cli) -> Result<()> {
             output::print(&scene::file::to_toml(&entry.scene)?)
         }
         Command::Figure(args) => {
-            let outputs = args.figure_format.outputs()?;
+            let outputs = recorded(args.figure_format.outputs()?);
             let scenes = figure_scenes(&args)?;
             let movie = MovieOptions::default();
             render_into(&scenes, &args.out, &movie, &outputs, Words::Flags, false)
         }
         Command::Movie(args) => {
             let opts = args.format.options()?;
-            let outputs = Outputs {
+            let outputs = recorded(Outputs {
                 mp4_quality: args.format.mp4_quality(),
                 ..convert::movie_outputs(&args.formats, &opts)?
-            };
+            });
             let scenes = movie_scenes(&args)?;
             render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, false)
         }
         Command::Render(args) => {
             let opts = args.format.options()?;
-            let outputs = Outputs {
+            let outputs = recorded(Outputs {
                 mp4_quality: args.format.mp4_quality(),
                 ..args.formats.outputs(&opts)?
-            };
+            });
             let scenes = args
                 .files
                 .iter()
@@ -203,10 +225,10 @@ pub fn run(cli: Cli) -> Result<()> {
         }
         Command::All(args) => {
             let opts = args.format.options()?;
-            let outputs = Outputs {
+            let outputs = recorded(Outputs {
                 mp4_quality: args.format.mp4_quality(),
                 ..args.formats.outputs(&opts)?
-            };
+            });
             let scenes: Vec<Scene> = catalog::catalogue()?
                 .iter()
                 .map(|e| e.scene.clone())
@@ -344,9 +366,15 @@ fn builtin(kind: Kind) -> Result<Vec<Scene>> {
         .collect())
 }
 
-/// `simulate --json` (SPEC section 5).
+/// `simulate --json` (SPEC section 5), with what reruns it (issue 19):
+/// the program, its build, the command line and the scene.
 #[derive(Serialize, Debug)]
-pub struct SimulateReport {
+pub struct SimulateReport<'a> {
+    #[serde(flatten)]
+    pub made_by: scenes::data::MadeBy<'a>,
+    /// The scene run, every value (a data scene: `ladder scene` writes it
+    /// as TOML, `ladder render` reruns it).
+    pub scene: &'a Scene,
     pub alpha_deg: f64,
     pub n: usize,
     pub b: f64,
@@ -375,7 +403,7 @@ pub struct SimulateReport {
     pub waves: crate::sim::waves::Waves,
 }
 
-fn simulate(args: &SimulateArgs) -> Result<()> {
+fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<()> {
     let run = RunArgs {
         t_end: Some(args.t_end),
         integrator: Some(args.integrator.clone()),
@@ -395,7 +423,7 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
     let scene = convert::scene_from_flags(base, &args.model, &args.drive, &run)?;
     let samples = csv_samples(args, scene.model.n)?;
     let stepping = args.kernel.stepping()?;
-    if let Some(path) = &args.csv {
+    for path in [&args.csv, &args.npz].into_iter().flatten() {
         output::check_writable(path)?;
     }
     let start = Instant::now();
@@ -411,7 +439,15 @@ fn simulate(args: &SimulateArgs) -> Result<()> {
         output::write_atomic_with(path, |f| write_csv(traj, &mut std::io::BufWriter::new(f)))?;
     }
     let params = scene.model.params()?;
+    if let Some(path) = &args.npz {
+        let ladder = crate::model::Ladder::new(params);
+        output::write_atomic_with(path, |f| {
+            scenes::data::write_npz(traj, &ladder, std::io::BufWriter::new(f)).map(drop)
+        })?;
+    }
     let report = SimulateReport {
+        made_by: scenes::data::MadeBy::new(command_line),
+        scene: &scene,
         alpha_deg: scene.model.alpha,
         n: params.n,
         b: params.b,
@@ -518,10 +554,10 @@ fn short(x: f64) -> String {
     scene::describe::num((x / scale).floor() * scale)
 }
 
-/// The CSV's sample times, 0, every, 2 every, ... up to --t-end, within
-/// the cap on samples × N (checked before any is made).
+/// The CSV's and npz's sample times, 0, every, 2 every, ... up to
+/// --t-end, within the cap on samples × N (checked before any is made).
 fn csv_samples(args: &SimulateArgs, n: usize) -> Result<Vec<f64>> {
-    if args.csv.is_none() {
+    if args.csv.is_none() && args.npz.is_none() {
         return Ok(Vec::new());
     }
     let every = args.sample_every;
@@ -790,16 +826,20 @@ fn render_into(
     let written: Vec<Vec<String>> = scenes
         .par_iter()
         .map(|s| {
-            let files = scenes::render_with(s, movie, outputs, &frame_done)
-                .map_err(|e| with_divergence_hint(e, s, words))?;
-            for (name, bytes) in &files {
-                crate::output::write_atomic(&out.join(name), bytes)?;
-            }
+            // Each file written as soon as it is drawn, the data file
+            // streamed into place.
+            let mut files: Vec<String> = Vec::new();
+            scenes::render_to(s, movie, outputs, &frame_done, &mut |name, fill| {
+                crate::output::write_atomic_with(&out.join(name), |f| fill(f))?;
+                files.push(name.to_string());
+                Ok(())
+            })
+            .map_err(|e| with_divergence_hint(e, s, words))?;
             if !one_movie {
                 bar.set_message(format!("{} {}", s.kind().name(), s.name));
                 bar.inc(1);
             }
-            Ok(files.into_iter().map(|(name, _)| name).collect())
+            Ok(files)
         })
         .collect::<Result<_>>()?;
     bar.finish_and_clear();

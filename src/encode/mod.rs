@@ -5,12 +5,13 @@
 //! `mp4`). Vector: SVG ([`svg_bytes`]) and PDF ([`pdf_bytes`]) from a parsed
 //! SVG tree (`usvg::Tree`), the form in which the renderer hands over the
 //! vector description of a picture. [`Format`] names the file formats and
-//! checks what each can hold.
+//! checks what each can hold. Arrays: NumPy's `.npz` ([`npz`]), streamed.
 
 mod format;
 mod gif;
 mod isobmff;
 mod movie;
+pub mod npz;
 #[cfg(feature = "mp4")]
 mod mp4;
 mod pdf;

@@ -2,17 +2,29 @@
 //! what made it and the numbers its picture shows, one [`RunData`] per
 //! simulation drawn.
 
+use super::dynamic::MovieOptions;
 use super::run::{IntegratorReport, SceneRun};
-use crate::scene::{DriveSpec, Model, Scene};
+use super::Outputs;
+use crate::encode::Format;
+use crate::encode::npz::{ArrayWriter, NpzWriter};
+use crate::model::Ladder;
+use crate::render::StyleSpec;
+use crate::scene::{DriveSpec, Model, OutputSpec, Scene};
 use crate::sim;
-use serde::Serialize;
+use serde::ser::SerializeStruct;
+use serde::{Serialize, Serializer};
+use std::io::{self, Seek, Write};
+use std::sync::Arc;
 
 /// `<output>.json`: the scene with every parameter, the program that made
-/// the output, and the numbers the picture shows (SPEC section 6).
+/// the output, and the numbers the picture shows (SPEC section 6); with
+/// `settings` and the scene, what reruns it (issue 19).
 #[derive(Debug, Clone, Serialize)]
 pub struct DataFile<'a> {
-    pub program: &'static str,
-    pub version: &'static str,
+    #[serde(flatten)]
+    pub made_by: MadeBy<'a>,
+    /// How the files were drawn beyond the scene.
+    pub settings: Settings,
     pub title: String,
     pub parameters: String,
     pub fidelity: &'static str,
@@ -20,6 +32,89 @@ pub struct DataFile<'a> {
     pub scene: &'a Scene,
     /// One entry per simulation drawn (empty for the theory figures).
     pub runs: Vec<RunData>,
+}
+
+/// The program that made a data file and the command that asked for it:
+/// `program`, `version`, `git_commit` (the commit it was built from, with
+/// `-modified` for a work tree with changes; null outside a clone),
+/// `build` (`ladder --version`'s words) and `command_line`, word by word
+/// (empty when the library was called directly).
+#[derive(Debug, Clone, Serialize)]
+pub struct MadeBy<'a> {
+    pub program: &'static str,
+    pub version: &'static str,
+    pub git_commit: Option<&'static str>,
+    pub build: &'static str,
+    pub command_line: &'a [String],
+}
+
+impl<'a> MadeBy<'a> {
+    pub fn new(command_line: &'a [String]) -> Self {
+        Self {
+            program: "ladder",
+            version: crate::version::VERSION,
+            git_commit: crate::version::GIT_COMMIT,
+            build: crate::version::LONG,
+            command_line,
+        }
+    }
+}
+
+/// What an output was drawn with besides its scene: the scene rendered
+/// again with these settings gives the same numbers and files.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Settings {
+    /// A movie's frames, size, rate, formats and MP4 quality.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub movie: Option<MovieSettings>,
+    /// A figure's formats and PNG scale.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub figure: Option<FigureSettings>,
+    /// The style in force: the command's style flags over the scene's
+    /// `[style]` (empty: the screen style).
+    pub style: StyleSpec,
+}
+
+/// The settings of a movie (`--frames`, `--size`, `--fps`, `--format`,
+/// `--quality`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MovieSettings {
+    pub frames: usize,
+    pub width: u32,
+    pub height: u32,
+    pub fps: f64,
+    pub formats: Vec<Format>,
+    pub mp4_quality: &'static str,
+}
+
+/// The settings of a figure (`--format`, `--scale`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FigureSettings {
+    pub formats: Vec<Format>,
+    pub scale: f32,
+}
+
+impl Settings {
+    /// The settings `scene` is drawn with under `movie` and `outputs`.
+    pub fn new(scene: &Scene, movie: &MovieOptions, outputs: &Outputs) -> Self {
+        let is_movie = matches!(scene.output, OutputSpec::Movie { .. });
+        let is_figure = !is_movie && !matches!(scene.output, OutputSpec::Data);
+        Self {
+            movie: is_movie.then(|| MovieSettings {
+                frames: movie.frames,
+                width: movie.width,
+                height: movie.height,
+                fps: movie.fps,
+                formats: outputs.movies.as_slice().to_vec(),
+                mp4_quality: outputs.mp4_quality.name(),
+            }),
+            figure: is_figure.then(|| FigureSettings {
+                formats: outputs.figures.as_slice().to_vec(),
+                scale: outputs.scale,
+            }),
+            style: outputs.style.over(scene.style),
+        }
+    }
 }
 
 /// What the data file says of one run: the scene it ran, the integrator
@@ -39,11 +134,16 @@ pub struct RunData {
     pub final_theta_deg: Vec<f64>,
     /// Every wave of the run and block N's fate (SPEC section 9).
     pub waves: sim::waves::Waves,
-    pub frames: Vec<FrameData>,
+    /// The state at each drawn time, one [`FrameData`] each.
+    pub frames: Frames,
+    /// The kymograph drawn from this run (a movie's, a kymograph
+    /// figure's), as numbers; absent where none is drawn.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kymograph: Option<Kymograph>,
 }
 
 /// The state drawn at one time.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrameData {
     pub t: f64,
     pub theta_deg: Vec<f64>,
@@ -51,24 +151,152 @@ pub struct FrameData {
     pub y: Vec<f64>,
 }
 
+/// The sampled states of a run (3 numbers a block: X, Y, θ), shared by
+/// its frames and its kymograph and turned into numbers only as the data
+/// file is written: the data file keeps no second copy of them
+/// (docs/limits.md).
+#[derive(Debug, Default)]
+struct SampleRows {
+    times: Vec<f64>,
+    states: Vec<Vec<f64>>,
+}
+
+/// The frames of a run's data: serialized as a list of [`FrameData`],
+/// made one number at a time.
+#[derive(Debug, Clone, Default)]
+pub struct Frames(Arc<SampleRows>);
+
+impl Frames {
+    /// How many frames.
+    pub fn len(&self) -> usize {
+        self.0.times.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.0.times.is_empty()
+    }
+
+    /// Frame `k`, as the data file writes it.
+    pub fn get(&self, k: usize) -> Option<FrameData> {
+        let q = self.0.states.get(k)?;
+        Some(FrameData {
+            t: self.0.times[k],
+            theta_deg: sim::observables::angles_deg(q),
+            x: Column::new(q, 0).values().collect(),
+            y: Column::new(q, 1).values().collect(),
+        })
+    }
+}
+
+/// One coordinate of every block of a state (0: X, 1: Y, 2: θ in degrees
+/// wrapped as [`sim::observables::angles_deg`], 3: sin θ), serialized as
+/// a list without being collected.
+struct Column<'a> {
+    q: &'a [f64],
+    k: usize,
+}
+
+impl<'a> Column<'a> {
+    fn new(q: &'a [f64], k: usize) -> Self {
+        Self { q, k }
+    }
+
+    fn values(&self) -> impl Iterator<Item = f64> + '_ {
+        self.q.chunks_exact(3).map(|b| match self.k {
+            2 => sim::observables::wrap_deg(b[2].to_degrees()),
+            3 => b[2].sin(),
+            k => b[k],
+        })
+    }
+}
+
+impl Serialize for Column<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(self.values())
+    }
+}
+
+impl Serialize for Frames {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        struct Frame<'a>(f64, &'a [f64]);
+        impl Serialize for Frame<'_> {
+            fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                let mut f = s.serialize_struct("FrameData", 4)?;
+                f.serialize_field("t", &self.0)?;
+                f.serialize_field("theta_deg", &Column::new(self.1, 2))?;
+                f.serialize_field("x", &Column::new(self.1, 0))?;
+                f.serialize_field("y", &Column::new(self.1, 1))?;
+                f.end()
+            }
+        }
+        let rows = &self.0;
+        s.collect_seq(
+            rows.times
+                .iter()
+                .zip(&rows.states)
+                .map(|(&t, q)| Frame(t, q)),
+        )
+    }
+}
+
+/// A kymograph's matrix (issue 19), written as `{"times": [...],
+/// "sin_theta": [[...], ...]}`: `sin_theta[k][i]` is sin θ of block i + 1
+/// at `times[k]`, the colour of the kymograph's row k and column i + 1
+/// (the polarisation, SPEC section 1).
+#[derive(Debug, Clone, Default)]
+pub struct Kymograph(Arc<SampleRows>);
+
+impl Kymograph {
+    /// Row `k`: sin θ of every block at the kymograph's `k`-th time.
+    pub fn row(&self, k: usize) -> Option<Vec<f64>> {
+        let q = self.0.states.get(k)?;
+        Some(Column::new(q, 3).values().collect())
+    }
+}
+
+impl Serialize for Kymograph {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let rows = &self.0;
+        let mut k = s.serialize_struct("Kymograph", 2)?;
+        k.serialize_field("times", &rows.times)?;
+        let matrix: Vec<Column<'_>> = rows.states.iter().map(|q| Column::new(q, 3)).collect();
+        k.serialize_field("sin_theta", &matrix)?;
+        k.end()
+    }
+}
+
 impl RunData {
     pub fn from_run(scene: &Scene, run: &SceneRun) -> Self {
         Self::new("", scene, run)
     }
 
+    /// The data of `run` (its samples copied: the run is drawn after).
     pub(super) fn new(label: &str, scene: &Scene, run: &SceneRun) -> Self {
         let traj = &run.trajectory;
-        let frames = traj
-            .times
-            .iter()
-            .zip(&traj.states)
-            .map(|(&t, q)| FrameData {
-                t,
-                theta_deg: sim::observables::angles_deg(q),
-                x: (0..q.len() / 3).map(|i| q[3 * i]).collect(),
-                y: (0..q.len() / 3).map(|i| q[3 * i + 1]).collect(),
-            })
-            .collect();
+        let rows = SampleRows {
+            times: traj.times.clone(),
+            states: traj.states.clone(),
+        };
+        Self::with_rows(label, scene, run, rows)
+    }
+
+    /// The data of a run drawn as a kymograph, which it consumes: its
+    /// samples move into the data file's frames and matrix, uncopied.
+    pub(super) fn with_kymograph(scene: &Scene, mut run: SceneRun) -> Self {
+        let traj = &mut run.trajectory;
+        let rows = SampleRows {
+            times: std::mem::take(&mut traj.times),
+            states: std::mem::take(&mut traj.states),
+        };
+        // Velocities are not written: free them before the file is.
+        traj.velocities = Vec::new();
+        let mut data = Self::with_rows("", scene, &run, rows);
+        data.kymograph = Some(Kymograph(data.frames.0.clone()));
+        data
+    }
+
+    fn with_rows(label: &str, scene: &Scene, run: &SceneRun, rows: SampleRows) -> Self {
+        let traj = &run.trajectory;
         Self {
             label: label.to_string(),
             model: scene.model,
@@ -79,8 +307,140 @@ impl RunData {
             speed: sim::observables::wave_speed(&traj.arrival_times),
             final_theta_deg: traj.final_theta_deg(),
             waves: traj.waves.clone(),
-            frames,
+            frames: Frames(Arc::new(rows)),
+            kymograph: None,
         }
     }
 }
 
+/// Most bytes one number of a frame or of a kymograph row takes in the
+/// data file (pretty JSON): up to 12 spaces of indentation, up to 24
+/// characters of the number (`-1.2345678901234567e-5`), `,` and a line
+/// break.
+pub const BYTES_PER_VALUE: f64 = 40.0;
+
+/// Bytes per block of each run beyond its frames: the final angles, the
+/// arrival times and every wave's per-block arrival times (a few waves).
+pub const BYTES_PER_BLOCK_RUN: f64 = 400.0;
+
+/// Bytes of a data file beyond its runs: the scene, the settings, the
+/// command line, titles.
+pub const BYTES_FIXED: f64 = 64e3;
+
+/// Numbers of the data file per block and sample of `output`: θ, X and
+/// Y of each frame, and sin θ where a kymograph is drawn.
+fn values_per_block_sample(output: &OutputSpec) -> f64 {
+    match output {
+        OutputSpec::Movie { .. } | OutputSpec::Kymograph => 4.0,
+        OutputSpec::Filmstrip { .. } => 3.0,
+        _ => 0.0,
+    }
+}
+
+/// An upper estimate of the bytes of `scene`'s data file drawn with
+/// `movie` (a kymograph figure with `kymograph_rows` rows), made before
+/// any work (docs/limits.md): per run, samples × N × the numbers of each
+/// block × [`BYTES_PER_VALUE`], plus N × [`BYTES_PER_BLOCK_RUN`]; plus
+/// [`BYTES_FIXED`]. Returns the bytes and the largest samples × N.
+pub fn estimated_bytes(scene: &Scene, movie: &MovieOptions, kymograph_rows: usize) -> (f64, f64) {
+    let per = values_per_block_sample(&scene.output);
+    let mut bytes = BYTES_FIXED;
+    let mut block_samples: f64 = 0.0;
+    for (s, times) in scene.runs() {
+        let samples = match scene.output {
+            OutputSpec::Movie { .. } => movie.frames,
+            OutputSpec::Kymograph => kymograph_rows,
+            _ => times.len(),
+        } as f64;
+        let n = s.model.n as f64;
+        bytes += samples * n * per * BYTES_PER_VALUE + n * BYTES_PER_BLOCK_RUN;
+        block_samples += samples * n;
+    }
+    (bytes, block_samples)
+}
+
+/// Writes `data` as pretty-printed JSON into `w` through a buffer: the
+/// data file is never held whole in memory.
+pub fn write_json<T: Serialize>(w: &mut dyn Write, data: &T) -> io::Result<()> {
+    let mut w = io::BufWriter::with_capacity(1 << 16, w);
+    serde_json::to_writer_pretty(&mut w, data).map_err(io::Error::other)?;
+    w.flush()
+}
+
+/// Names of the `.npz` arrays of [`write_npz`], in the order written.
+pub const NPZ_ARRAYS: [&str; 11] = [
+    "t",
+    "theta",
+    "x",
+    "y",
+    "vx",
+    "vy",
+    "omega",
+    "kinetic_energy",
+    "elastic_energy",
+    "gravitational_energy",
+    "energy",
+];
+
+/// θ wrapped to (−π, π], as the CSV's degrees are to (−180°, 180°].
+fn wrap_rad(theta: f64) -> f64 {
+    let w = theta.rem_euclid(std::f64::consts::TAU);
+    if w > std::f64::consts::PI {
+        w - std::f64::consts::TAU
+    } else {
+        w
+    }
+}
+
+/// Coordinate `k` (0: X, 1: Y, 2: θ) of every block of every sample of
+/// `rows` (the state's layout, 3 numbers a block), through `f`.
+fn column<W: Write>(
+    a: &mut ArrayWriter<'_, W>,
+    rows: &[Vec<f64>],
+    k: usize,
+    f: fn(f64) -> f64,
+) -> io::Result<()> {
+    rows.iter()
+        .try_for_each(|r| r.chunks_exact(3).try_for_each(|b| a.push(f(b[k]))))
+}
+
+/// The whole state of `traj` at its sample times as NumPy's `.npz`
+/// (SPEC section 9), streamed into `w`: `t` (S), and S × N arrays `theta`
+/// (radians, wrapped to (−π, π]), `x`, `y` (centres, units of s), `vx`,
+/// `vy`, `omega` (θ̇), then per sample the energies (units of k s²):
+/// `kinetic_energy` ½m(Ẋ²+Ẏ²)+½Iθ̇², `elastic_energy`
+/// Σ½k[(L_A−a)²+(L_B−b)²], `gravitational_energy` −mGΣX_n and their sum
+/// `energy` (SPEC section 1). Nothing is held beyond one buffer.
+pub fn write_npz<W: Write + Seek>(
+    traj: &sim::Trajectory,
+    ladder: &Ladder,
+    w: W,
+) -> io::Result<W> {
+    let samples = traj.times.len();
+    let n = ladder.n();
+    let mut npz = NpzWriter::new(w);
+    npz.array("t", &[samples], |a| {
+        traj.times.iter().try_for_each(|&t| a.push(t))
+    })?;
+    let shape = [samples, n];
+    let same = |v: f64| v;
+    npz.array("theta", &shape, |a| column(a, &traj.states, 2, wrap_rad))?;
+    npz.array("x", &shape, |a| column(a, &traj.states, 0, same))?;
+    npz.array("y", &shape, |a| column(a, &traj.states, 1, same))?;
+    npz.array("vx", &shape, |a| column(a, &traj.velocities, 0, same))?;
+    npz.array("vy", &shape, |a| column(a, &traj.velocities, 1, same))?;
+    npz.array("omega", &shape, |a| column(a, &traj.velocities, 2, same))?;
+    let kinetic = |k: usize| ladder.kinetic_energy(&traj.velocities[k]);
+    let elastic = |k: usize| ladder.elastic_energy(&traj.states[k]);
+    let gravity = |k: usize| ladder.energy(&traj.states[k]) - elastic(k);
+    let energies: [(&str, &dyn Fn(usize) -> f64); 4] = [
+        ("kinetic_energy", &kinetic),
+        ("elastic_energy", &elastic),
+        ("gravitational_energy", &gravity),
+        ("energy", &|k| kinetic(k) + ladder.energy(&traj.states[k])),
+    ];
+    for (name, e) in energies {
+        npz.array(name, &[samples], |a| (0..samples).try_for_each(|k| a.push(e(k))))?;
+    }
+    npz.finish()
+}

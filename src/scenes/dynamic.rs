@@ -608,7 +608,7 @@ pub fn movie_at(
         opts.width.max(480),
         opts.height.max(360),
     )?;
-    let data = RunData::new("", scene, &plan.run);
+    let data = RunData::with_kymograph(scene, plan.run);
     Ok((writer.finish()?, png_bytes(&kymo)?, data))
 }
 
@@ -641,7 +641,7 @@ pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Picture, RunDat
     let title = describe::title(scene);
     let (w, h) = crate::render::Style::current().frame((820, 560));
     let image = kymograph_chart(&title, &run.trajectory, scene.model.n, w, h)?;
-    Ok((image.into(), RunData::new("", scene, &run)))
+    Ok((image.into(), RunData::with_kymograph(scene, run)))
 }
 
 /// The kymograph of sin θ_n of `traj`: blocks across, time down, as a

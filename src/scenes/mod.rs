@@ -31,6 +31,10 @@ pub struct Outputs {
     /// Style flags (`--style`, `--width` …), over each scene's `[style]`.
     /// Default: none.
     pub style: crate::render::StyleSpec,
+    /// The command line that asked for the files, word by word, recorded
+    /// in each data file (issue 19). Default: empty (the library called
+    /// directly).
+    pub command_line: Vec<String>,
 }
 
 impl Default for Outputs {
@@ -41,6 +45,7 @@ impl Default for Outputs {
             scale: 1.0,
             mp4_quality: Mp4Quality::default(),
             style: crate::render::StyleSpec::default(),
+            command_line: Vec::new(),
         }
     }
 }
@@ -151,7 +156,43 @@ pub fn render_with(
     outputs: &Outputs,
     frame_done: &(dyn Fn() + Sync),
 ) -> Result<Vec<(String, Vec<u8>)>> {
-    style_of(scene, outputs)?.apply(|| render_styled(scene, movie, outputs, frame_done))
+    let mut files = Vec::new();
+    render_to(scene, movie, outputs, frame_done, &mut |name, fill| {
+        let mut bytes = Vec::new();
+        fill(&mut bytes).map_err(|e| Error::failed(format!("cannot encode {name}: {e}")))?;
+        files.push((name.to_string(), bytes));
+        Ok(())
+    })?;
+    Ok(files)
+}
+
+/// How a file's bytes are made: written into the writer given (a file
+/// being written, or memory), so that a data file is streamed.
+pub type Fill<'a> = &'a dyn Fn(&mut dyn std::io::Write) -> std::io::Result<()>;
+
+/// [`render_with`], handing each file to `sink` (its name, how to write
+/// it) as soon as it is drawn, in [`file_names_for`] order: the data file,
+/// last, is encoded straight into where `sink` writes it, never held whole
+/// in memory (docs/limits.md).
+pub fn render_to(
+    scene: &Scene,
+    movie: &MovieOptions,
+    outputs: &Outputs,
+    frame_done: &(dyn Fn() + Sync),
+    sink: &mut dyn FnMut(&str, Fill<'_>) -> Result<()>,
+) -> Result<()> {
+    if !matches!(scene.output, OutputSpec::Sweep(_)) {
+        let (bytes, block_samples) = data::estimated_bytes(scene, movie, KYMOGRAPH_ROWS);
+        crate::limits::Limits::active().check_data_bytes(bytes, || {
+            format!(
+                "the data file of {} {}, {} samples × N",
+                scene.kind().name(),
+                scene.name,
+                crate::limits::count(block_samples)
+            )
+        })?;
+    }
+    style_of(scene, outputs)?.apply(|| render_styled(scene, movie, outputs, frame_done, sink))
 }
 
 /// The style a scene's figures are drawn in: the flags over its `[style]`.
@@ -169,12 +210,16 @@ fn render_styled(
     movie: &MovieOptions,
     outputs: &Outputs,
     frame_done: &(dyn Fn() + Sync),
-) -> Result<Vec<(String, Vec<u8>)>> {
+    sink: &mut dyn FnMut(&str, Fill<'_>) -> Result<()>,
+) -> Result<()> {
     if let OutputSpec::Sweep(_) = scene.output {
         // Its own data file: the sweep's JSON (crate::sweep::results).
-        return crate::sweep::render(scene, &outputs.figures, outputs.scale);
+        let files = crate::sweep::render(scene, &outputs.figures, outputs.scale)?;
+        return files
+            .iter()
+            .try_for_each(|(name, bytes)| sink(name, &|w| w.write_all(bytes)));
     }
-    let (mut bytes, runs) = match &scene.output {
+    let (bytes, runs) = match &scene.output {
         OutputSpec::Theory(_)
         | OutputSpec::Filmstrip { .. }
         | OutputSpec::Arrivals { .. }
@@ -201,14 +246,12 @@ fn render_styled(
             let run = run::simulate(scene, &[])?;
             (vec![], vec![RunData::from_run(scene, &run)])
         }
-        OutputSpec::Sweep(_) => {
-            return crate::sweep::render(scene, &outputs.figures, outputs.scale);
-        }
+        OutputSpec::Sweep(_) => unreachable!("a sweep returned above"),
     };
     let names = file_names_for(scene, outputs);
     let data = DataFile {
-        program: "ladder",
-        version: env!("CARGO_PKG_VERSION"),
+        made_by: data::MadeBy::new(&outputs.command_line),
+        settings: data::Settings::new(scene, movie, outputs),
         title: describe::title(scene),
         parameters: describe::parameters(scene),
         fidelity: scene.fidelity().name(),
@@ -216,8 +259,10 @@ fn render_styled(
         scene,
         runs,
     };
-    let json = serde_json::to_vec_pretty(&data)
-        .map_err(|e| Error::failed(format!("cannot encode the data file: {e}")))?;
-    bytes.push(json);
-    Ok(names.into_iter().zip(bytes).collect())
+    let (data_name, pictures) = names.split_last().expect("a data file is always named");
+    for (name, b) in pictures.iter().zip(&bytes) {
+        sink(name, &|w| w.write_all(b))?;
+    }
+    drop(bytes);
+    sink(data_name, &|w| data::write_json(w, &data))
 }
