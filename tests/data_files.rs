@@ -226,3 +226,23 @@ fn simulate_json_and_a_data_scene_rerun_to_the_same_numbers() {
     assert_eq!(run["waves"], report["waves"]);
     assert!(data["settings"].get("movie").is_none() && data["settings"].get("figure").is_none());
 }
+
+#[test]
+fn a_sweep_s_data_file_records_its_command() {
+    let dir = TempDir::new("data-sweep");
+    let args = words(&[
+        "sweep",
+        "--alpha",
+        "60,70",
+        "--n",
+        "4",
+        "--name",
+        "rec",
+        "--out",
+        dir.path().to_str().unwrap(),
+    ]);
+    ladder(&args);
+    let data = json(&dir.join("sweep-rec.json"));
+    check_made_by(&data, &args);
+    assert_eq!(data["scene"]["model"]["n"], 4);
+}

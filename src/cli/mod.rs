@@ -170,7 +170,7 @@ pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
         Command::Simulate(args) => simulate(&args, command_line),
         Command::Bench(args) => bench(&args),
         Command::Theory(args) => theory(&args),
-        Command::Sweep(args) => sweep::sweep(&args),
+        Command::Sweep(args) => sweep::sweep(&args, command_line),
         Command::List => output::print(&catalog::listing()?),
         Command::Completions(args) => output::print(&completions(args.shell)?),
         Command::Man => output::print(&man_page()?),

@@ -11,11 +11,15 @@ use crate::sweep::{Plan, Record};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-pub fn sweep(args: &SweepArgs) -> Result<()> {
+pub fn sweep(args: &SweepArgs, command_line: &[String]) -> Result<()> {
+    let recorded = |outputs: Outputs| Outputs {
+        command_line: command_line.to_vec(),
+        ..outputs
+    };
     if let Some(SweepCommand::Gather { dir, figure_format }) = &args.command {
-        return gather(dir, &figure_format.outputs()?, args.max_runs);
+        return gather(dir, &recorded(figure_format.outputs()?), args.max_runs);
     }
-    let outputs = args.figure_format.outputs()?;
+    let outputs = recorded(args.figure_format.outputs()?);
     let scene = convert::sweep_scene(args)?;
     let plan = Plan::new(&scene, args.max_runs)?.map_err(|e| {
         Error::bad_input(format!(
@@ -171,7 +175,16 @@ fn write_outputs(
 ) -> Result<()> {
     let stem = format!("sweep-{}", plan.scene.name);
     let files = crate::scenes::style_of(&plan.scene, outputs)?
-        .apply(|| crate::sweep::outputs(plan, records, &stem, &outputs.figures, outputs.scale))?;
+        .apply(|| {
+            crate::sweep::outputs(
+                plan,
+                records,
+                &stem,
+                &outputs.figures,
+                outputs.scale,
+                &outputs.command_line,
+            )
+        })?;
     for (name, bytes) in &files {
         crate::output::write_atomic(&out.join(name), bytes)?;
     }

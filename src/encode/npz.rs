@@ -224,7 +224,7 @@ impl<W: Write + Seek> NpzWriter<W> {
             dir.extend_from_slice(&e.size.to_le_bytes());
             dir.extend_from_slice(&e.size.to_le_bytes());
             dir.extend_from_slice(&(e.name.len() as u16).to_le_bytes());
-            dir.extend_from_slice(&[0; 8]); // extra, comment, disk
+            dir.extend_from_slice(&[0; 6]); // extra, comment, disk
             dir.extend_from_slice(&[0; 2]); // internal attributes
             dir.extend_from_slice(&0o100644u32.wrapping_shl(16).to_le_bytes());
             dir.extend_from_slice(&e.offset.to_le_bytes());
@@ -285,6 +285,19 @@ mod tests {
         }
         let h = npy_header(&[3]);
         assert!(String::from_utf8_lossy(&h).contains("'shape': (3,), }"));
+    }
+
+    #[test]
+    fn central_directory_entries_are_46_bytes_and_the_name() {
+        let mut w = NpzWriter::new(io::Cursor::new(Vec::new()));
+        w.array("ab", &[1], |a| a.push(1.5)).unwrap();
+        let b = w.finish().unwrap().into_inner();
+        let end = b.len() - 22;
+        let size = u32::from_le_bytes(b[end + 12..end + 16].try_into().unwrap());
+        assert_eq!(size as usize, 46 + "ab.npy".len());
+        let at = u32::from_le_bytes(b[end + 16..end + 20].try_into().unwrap()) as usize;
+        assert_eq!(&b[at + 46..at + 52], b"ab.npy");
+        assert_eq!(at + size as usize, end);
     }
 
     #[test]

@@ -214,7 +214,12 @@ fn render_styled(
 ) -> Result<()> {
     if let OutputSpec::Sweep(_) = scene.output {
         // Its own data file: the sweep's JSON (crate::sweep::results).
-        let files = crate::sweep::render(scene, &outputs.figures, outputs.scale)?;
+        let files = crate::sweep::render(
+            scene,
+            &outputs.figures,
+            outputs.scale,
+            &outputs.command_line,
+        )?;
         return files
             .iter()
             .try_for_each(|(name, bytes)| sink(name, &|w| w.write_all(bytes)));

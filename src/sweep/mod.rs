@@ -193,6 +193,7 @@ pub fn outputs(
     stem: &str,
     formats: &crate::encode::Formats,
     scale: f32,
+    command_line: &[String],
 ) -> Result<Vec<(String, Vec<u8>)>> {
     let chart = chart::chart(plan, records)?;
     let mut names = Vec::new();
@@ -217,7 +218,7 @@ pub fn outputs(
     ));
     files.push((
         format!("{stem}.json"),
-        results::json(plan, records, &names)?,
+        results::json(plan, records, &names, command_line)?,
     ));
     Ok(files)
 }
@@ -229,6 +230,7 @@ pub fn render(
     scene: &Scene,
     formats: &crate::encode::Formats,
     scale: f32,
+    command_line: &[String],
 ) -> Result<Vec<(String, Vec<u8>)>> {
     let plan = Plan::new(scene, crate::scene::sweep::DEFAULT_MAX_RUNS)?.map_err(|e| {
         Error::bad_input(format!(
@@ -237,5 +239,5 @@ pub fn render(
     })?;
     let all: Vec<usize> = (0..plan.len()).collect();
     let records = plan.run(&all, &|| {})?;
-    outputs(&plan, &records, &scene.stem(), formats, scale)
+    outputs(&plan, &records, &scene.stem(), formats, scale, command_line)
 }

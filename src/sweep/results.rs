@@ -101,8 +101,9 @@ struct Rule {
 
 #[derive(Serialize)]
 struct SweepData<'a> {
-    program: &'static str,
-    version: &'static str,
+    /// The program, its build and the command line (issue 19).
+    #[serde(flatten)]
+    made_by: crate::scenes::data::MadeBy<'a>,
     title: String,
     parameters: String,
     files: &'a [String],
@@ -120,7 +121,12 @@ struct SweepData<'a> {
 /// The JSON beside the CSV: the sweep (scene, axes, rule, fingerprint),
 /// the count of each outcome, the linear theory along α, and every run
 /// with its arrival times.
-pub fn json(plan: &Plan, records: &[Record], files: &[String]) -> Result<Vec<u8>> {
+pub fn json(
+    plan: &Plan,
+    records: &[Record],
+    files: &[String],
+    command_line: &[String],
+) -> Result<Vec<u8>> {
     let outcomes = counts(records)
         .into_iter()
         .map(|(o, c)| (o.name().to_string(), c.into()))
@@ -139,8 +145,7 @@ pub fn json(plan: &Plan, records: &[Record], files: &[String]) -> Result<Vec<u8>
         .collect();
     let tol = crate::theory::stability::RestTolerances::default();
     let data = SweepData {
-        program: "ladder",
-        version: env!("CARGO_PKG_VERSION"),
+        made_by: crate::scenes::data::MadeBy::new(command_line),
         title: describe::title(&plan.scene),
         parameters: describe::parameters(&plan.scene),
         files,
