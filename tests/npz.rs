@@ -207,7 +207,12 @@ fn npz_reads_back_equal_to_the_csv_at_the_same_times() {
     assert!(flipped, "the kink crossed the chain: some θ went to −α");
     // The last sample is t_end: its angles are the report's final ones.
     let last = samples - 1;
-    for (i, th) in report["final_theta_deg"].as_array().unwrap().iter().enumerate() {
+    for (i, th) in report["final_theta_deg"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .enumerate()
+    {
         let deg = a["theta"].at(last, i).to_degrees();
         assert!((deg - th.as_f64().unwrap()).abs() < 1e-9, "block {i}");
     }
@@ -238,7 +243,11 @@ fn npz_reads_back_equal_to_the_csv_at_the_same_times() {
     // python3's zipfile, then numpy, where present.
     let script = "import sys, zipfile; z = zipfile.ZipFile(sys.argv[1]); \
                   assert z.testzip() is None; print(len(z.namelist()))";
-    let python = Command::new("python3").arg("-c").arg(script).arg(&npz).output();
+    let python = Command::new("python3")
+        .arg("-c")
+        .arg(script)
+        .arg(&npz)
+        .output();
     let has_python = python.as_ref().is_ok_and(|o| o.status.code().is_some());
     if require(
         "npz_reads_back_equal_to_the_csv_at_the_same_times",
@@ -261,7 +270,11 @@ fn npz_reads_back_equal_to_the_csv_at_the_same_times() {
             let text = String::from_utf8_lossy(&o.stdout).to_string();
             assert!(text.starts_with(&format!("({samples}, {n})")), "{text}");
             let value: f64 = text.split_whitespace().last().unwrap().parse().unwrap();
-            assert_eq!(value, a["theta"].at(last, n - 1), "numpy reads the same bits");
+            assert_eq!(
+                value,
+                a["theta"].at(last, n - 1),
+                "numpy reads the same bits"
+            );
         } else {
             note("npz: numpy is not installed in python3; numpy.load not tried");
         }
@@ -284,7 +297,11 @@ fn npz_is_written_atomically_and_never_through_a_link() {
         .unwrap();
     #[cfg(unix)]
     {
-        assert_eq!(out.status.code(), Some(2), "a symlink in the way is refused");
+        assert_eq!(
+            out.status.code(),
+            Some(2),
+            "a symlink in the way is refused"
+        );
         assert_eq!(std::fs::read_to_string(&target).unwrap(), "keep me");
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.contains("symbolic link"), "{err}");

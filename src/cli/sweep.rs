@@ -174,17 +174,16 @@ fn write_outputs(
     start: Instant,
 ) -> Result<()> {
     let stem = format!("sweep-{}", plan.scene.name);
-    let files = crate::scenes::style_of(&plan.scene, outputs)?
-        .apply(|| {
-            crate::sweep::outputs(
-                plan,
-                records,
-                &stem,
-                &outputs.figures,
-                outputs.scale,
-                &outputs.command_line,
-            )
-        })?;
+    let files = crate::scenes::style_of(&plan.scene, outputs)?.apply(|| {
+        crate::sweep::outputs(
+            plan,
+            records,
+            &stem,
+            &outputs.figures,
+            outputs.scale,
+            &outputs.command_line,
+        )
+    })?;
     for (name, bytes) in &files {
         crate::output::write_atomic(&out.join(name), bytes)?;
     }

@@ -11,9 +11,9 @@ mod format;
 mod gif;
 mod isobmff;
 mod movie;
-pub mod npz;
 #[cfg(feature = "mp4")]
 mod mp4;
+pub mod npz;
 mod pdf;
 mod pdf_font;
 mod png;

@@ -2,9 +2,9 @@
 //! what made it and the numbers its picture shows, one [`RunData`] per
 //! simulation drawn.
 
+use super::Outputs;
 use super::dynamic::MovieOptions;
 use super::run::{IntegratorReport, SceneRun};
-use super::Outputs;
 use crate::encode::Format;
 use crate::encode::npz::{ArrayWriter, NpzWriter};
 use crate::model::Ladder;
@@ -411,11 +411,7 @@ fn column<W: Write>(
 /// `kinetic_energy` ½m(Ẋ²+Ẏ²)+½Iθ̇², `elastic_energy`
 /// Σ½k[(L_A−a)²+(L_B−b)²], `gravitational_energy` −mGΣX_n and their sum
 /// `energy` (SPEC section 1). Nothing is held beyond one buffer.
-pub fn write_npz<W: Write + Seek>(
-    traj: &sim::Trajectory,
-    ladder: &Ladder,
-    w: W,
-) -> io::Result<W> {
+pub fn write_npz<W: Write + Seek>(traj: &sim::Trajectory, ladder: &Ladder, w: W) -> io::Result<W> {
     let samples = traj.times.len();
     let n = ladder.n();
     let mut npz = NpzWriter::new(w);
@@ -440,7 +436,9 @@ pub fn write_npz<W: Write + Seek>(
         ("energy", &|k| kinetic(k) + ladder.energy(&traj.states[k])),
     ];
     for (name, e) in energies {
-        npz.array(name, &[samples], |a| (0..samples).try_for_each(|k| a.push(e(k))))?;
+        npz.array(name, &[samples], |a| {
+            (0..samples).try_for_each(|k| a.push(e(k)))
+        })?;
     }
     npz.finish()
 }

@@ -2,6 +2,7 @@
 //! (figure S6) and the movies with their kymographs. Each simulation runs
 //! only to its last frame and is sampled only at the times drawn.
 
+pub use super::data::{FrameData, RunData};
 use super::run::{self, SceneRun};
 use crate::encode::{Format, MovieWriter, Mp4Quality, png_bytes};
 use crate::error::{Error, Result};
@@ -15,7 +16,6 @@ use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::{MovieLayout, Picture, style};
 use crate::scene::{Camera, MIN_BLOCK_PIXELS, OutputSpec, Scene, describe};
 use crate::sim::{self, Trajectory};
-pub use super::data::{FrameData, RunData};
 use tiny_skia::Pixmap;
 
 /// Movie frame count, size and rate.
