@@ -164,6 +164,7 @@ fn a_movie_s_data_file_reruns_to_the_same_numbers() {
     for v in rows[0].as_array().unwrap() {
         assert!((v.as_f64().unwrap() - 70f64.to_radians().sin()).abs() < 1e-9);
     }
+}
 
 #[test]
 fn a_kymograph_figure_records_its_matrix_and_settings() {
