@@ -254,3 +254,39 @@ fn a_sweep_s_data_file_records_its_command() {
     check_made_by(&data, &args);
     assert_eq!(data["runs"].as_array().unwrap().len(), 2, "α = 60°, 70°");
 }
+
+/// A data file past its cap (docs/limits.md) is refused before any work,
+/// with the flag that raises it, and nothing is written: a 400-row
+/// kymograph of N = 100,000 is an estimated 6.4 GB of JSON.
+#[test]
+fn a_data_file_past_the_cap_is_refused_with_its_flag() {
+    let dir = TempDir::new("data-cap");
+    let out = dir.join("out");
+    let args = words(&[
+        "figure",
+        "--view",
+        "kymograph",
+        "--n",
+        "100000",
+        "--t-end",
+        "10",
+        "--name",
+        "big",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let start = std::time::Instant::now();
+    let o = Command::new(BIN).args(&args).output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("bytes") && err.contains("--max-data-bytes") && err.contains("figure big"),
+        "{err}"
+    );
+    assert!(start.elapsed().as_secs() < 20, "refused before the run");
+    let written: Vec<_> = std::fs::read_dir(&out)
+        .map(|d| d.map(|e| e.unwrap().file_name()).collect())
+        .unwrap_or_default();
+    assert!(written.is_empty(), "{written:?}");
+}
