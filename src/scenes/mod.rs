@@ -165,6 +165,7 @@ pub fn render_with(
     outputs: &Outputs,
     frame_done: &(dyn Fn() + Sync),
 ) -> Result<Vec<(String, Vec<u8>)>> {
+    let scene = &scene.with_auto_window()?;
     style_of(scene, outputs)?.apply(|| render_styled(scene, movie, outputs, frame_done))
 }
 
