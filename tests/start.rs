@@ -8,6 +8,8 @@
 //!
 //! Run in release: `cargo test --release --test start`.
 
+#![allow(clippy::field_reassign_with_default)]
+
 mod common;
 
 use common::tempdir::TempDir;
