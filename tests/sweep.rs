@@ -90,7 +90,7 @@ fn three_concurrent_shards_gather_into_the_unsharded_files_byte_for_byte() {
     let csv = std::fs::read_to_string(whole.join("sweep-g.csv")).unwrap();
     assert_eq!(csv.lines().count(), 9, "{csv}");
     assert!(csv.starts_with(
-        "run,alpha,n,b,gamma,gravity,inertia,drive_time,outcome,blocks_flipped,front,speed,t_decided\n"
+        "run,alpha,n,b,gamma,gravity,inertia,drive_time,outcome,blocks_flipped,front,speed,t_decided,waves\n"
     ));
     assert!(whole.join("sweep-g.png").is_file());
 
@@ -634,4 +634,59 @@ fn the_friction_figure_shows_what_its_caption_says() {
             assert!((0.15..0.25).contains(&s), "the paper's G/γ: {speeds:?}");
         }
     }
+}
+
+/// A sweep whose drive flips block 1 twice has two waves per run: the CSV
+/// says how many and gives each wave's kind, launch, front and fate in its
+/// own columns (docs/sweeps.md, "The files"); the outcome columns stay the
+/// first wave's. Expected: the first flip launches a kink at α > 0, the
+/// second (block 1 turned back) an antikink (the tracker's definition,
+/// `sim::waves`), launched at the second flip's midpoint or later. (The
+/// second flip starts before the first wave is decided: a sweep's run
+/// ends at its outcome.)
+#[test]
+fn a_two_flip_sweep_has_per_wave_columns() {
+    let dir = tmp("two-flips");
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("two.toml");
+    std::fs::write(
+        &scene,
+        "name = \"two\"\n[model]\nn = 10\n[drive]\nflips = [{ start = 0, duration = 1000 }, \
+         { start = 1000, duration = 1000 }]\n[run]\nt_end = 6000\nintegrator = \"verlet\"\n\
+         dt = 0.25\n[output]\nkind = \"sweep\"\n[output.grid]\nalpha = [60, 70]\n",
+    )
+    .unwrap();
+    ok(&ladder(&[
+        "render",
+        scene.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]));
+    let csv = std::fs::read_to_string(dir.join("figure-two.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| {
+        header
+            .iter()
+            .position(|h| *h == name)
+            .unwrap_or_else(|| panic!("no column {name}: {header:?}"))
+    };
+    for line in lines {
+        let row: Vec<&str> = line.split(',').collect();
+        assert_eq!(row.len(), header.len(), "{line}");
+        assert_eq!(row[col("waves")], "2", "{line}");
+        assert_eq!(row[col("wave1_kind")], "kink", "{line}");
+        assert_eq!(row[col("wave2_kind")], "antikink", "{line}");
+        assert_eq!(row[col("wave1_launched_at")], "500", "{line}");
+        let second: f64 = row[col("wave2_launched_at")].parse().unwrap();
+        assert!(second >= 1500.0, "{line}");
+        for k in [1, 2] {
+            let fate = row[col(&format!("wave{k}_fate"))];
+            assert!(
+                ["end", "stopped", "annihilated", "undecided"].contains(&fate),
+                "{line}"
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }

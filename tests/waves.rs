@@ -219,3 +219,107 @@ fn a_slow_escape_near_the_chain_length_edge_is_not_called_pinned() {
         r.arrival_times[2]
     );
 }
+
+/// The smallest mass-weighted eigenvalue ω² of the clamped Hessian at
+/// `q`, computed here independently: a dense Hessian by central
+/// differences of the analytic gradient (every free coordinate moved on
+/// its own), symmetrised, scaled by M^(−1/2) on both sides, and nalgebra's
+/// dense symmetric eigenvalues.
+fn dense_smallest_omega_sq(ladder: &jacobs_ladder::model::Ladder, q: &[f64]) -> f64 {
+    let free = q.len() - 3;
+    let h_step = 1e-5;
+    let mut h = nalgebra::DMatrix::<f64>::zeros(free, free);
+    let (mut gp, mut gm) = (vec![0.0; q.len()], vec![0.0; q.len()]);
+    for j in 0..free {
+        let mut qp = q.to_vec();
+        qp[3 + j] += h_step;
+        ladder.gradient(&qp, &mut gp);
+        qp[3 + j] -= 2.0 * h_step;
+        ladder.gradient(&qp, &mut gm);
+        for i in 0..free {
+            h[(i, j)] = (gp[3 + i] - gm[3 + i]) / (2.0 * h_step);
+        }
+    }
+    let inertia = ladder.params.inertia;
+    let w = |k: usize| if k % 3 == 2 { inertia.sqrt() } else { 1.0 };
+    let scaled = nalgebra::DMatrix::from_fn(free, free, |i, j| {
+        0.5 * (h[(i, j)] + h[(j, i)]) / (w(i) * w(j))
+    });
+    scaled.symmetric_eigen().eigenvalues.min()
+}
+
+/// The rest proof's stability verdict agrees with dense eigenvalues on
+/// small chains (stable hanging states, marginal unstretched ones, and
+/// perturbed ones with negative directions), and a state at rest with zero
+/// force at a marginal equilibrium is not proved: the proof must not
+/// ignore the Hessian.
+#[test]
+fn the_rest_proof_decides_stability_by_the_hessian() {
+    use jacobs_ladder::model::{Ladder, Params};
+    use jacobs_ladder::sim::relax::{RelaxConfig, hanging};
+    use jacobs_ladder::theory::stability::{RestTolerances, is_stable, rest_proof};
+    let tol = RestTolerances::default();
+    let mut verdicts = (0, 0);
+    for alpha in [60.0, -50.0, 86.0, 20.0] {
+        for n in [3, 5, 8] {
+            let p = Params::paper(alpha).unwrap().with(n, 1.3, alpha).unwrap();
+            let ladder = Ladder::new(p);
+            let ground = ladder.ground_state();
+            let hung = hanging(&ladder, &ground, &RelaxConfig::default())
+                .unwrap()
+                .q;
+            let mut bent = hung.clone();
+            for (k, x) in bent.iter_mut().enumerate().skip(3) {
+                *x += 0.3 * ((k * 7919) as f64).sin();
+            }
+            for q in [&ground, &hung, &bent] {
+                let dense = dense_smallest_omega_sq(&ladder, q);
+                for margin in [tol.margin, 1e-4, -1e-3] {
+                    if (dense - margin).abs() < 1e-6 {
+                        continue; // too close to call by finite differences
+                    }
+                    let want = dense > margin;
+                    assert_eq!(
+                        is_stable(&ladder, q, margin),
+                        want,
+                        "α = {alpha}, N = {n}, margin {margin}: dense ω²_min = {dense:e}"
+                    );
+                    if want {
+                        verdicts.0 += 1
+                    } else {
+                        verdicts.1 += 1
+                    }
+                }
+            }
+            // At rest with no force: the hanging state is proved only
+            // where the dense ω²_min clears the margin.
+            let rest = vec![0.0; hung.len()];
+            let proof = rest_proof(&ladder, &hung, &rest, &tol);
+            let dense = dense_smallest_omega_sq(&ladder, &hung);
+            if (dense - tol.margin).abs() > 1e-6 {
+                assert_eq!(proof.proved, dense > tol.margin, "α = {alpha}, N = {n}");
+            }
+        }
+    }
+    assert!(
+        verdicts.0 > 5 && verdicts.1 > 5,
+        "both verdicts tested: {verdicts:?}"
+    );
+    // Without gravity the ground state is an equilibrium with zero force
+    // whose springs-only Hessian CᵀC has N − 1 zero modes (3(N − 1) free
+    // coordinates, 2(N − 1) springs): marginal, never proved.
+    let flat = Params::new(10, 1.3, 60.0, 0.02, 0.0, 0.25).unwrap();
+    let ladder = Ladder::new(flat);
+    let q = ladder.ground_state();
+    let v = vec![0.0; q.len()];
+    let proof = rest_proof(&ladder, &q, &v, &tol);
+    assert!(
+        proof.force <= tol.force && proof.kinetic == 0.0,
+        "{proof:?}"
+    );
+    assert!(dense_smallest_omega_sq(&ladder, &q) < 1e-8);
+    assert!(
+        !proof.proved,
+        "a marginal equilibrium was proved: {proof:?}"
+    );
+}

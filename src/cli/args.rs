@@ -168,6 +168,17 @@ pub struct ModelArgs {
     /// Moment of inertia I of a block, in units of m s^2, 1e-6 to 1e6 [default: 0.25]
     #[arg(long, value_name = "I")]
     pub inertia: Option<f64>,
+    /// How the run starts: ground (at rest, springs at rest length) or
+    /// relaxed (at rest hanging under gravity, block 1 clamped) [default: ground]
+    #[arg(long, value_name = "START")]
+    pub start: Option<StartArg>,
+}
+
+/// `--start`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum StartArg {
+    Ground,
+    Relaxed,
 }
 
 /// The drive of block 1 (`[drive]`).

@@ -4,7 +4,7 @@
 
 use super::args::{
     CameraArg, DriveArgs, FigureFormat, GridArgs, KernelArg, MixedFormat, ModelArgs, MovieFormat,
-    QualityArg, RunArgs, StyleArgs, SweepArgs, ViewArg,
+    QualityArg, RunArgs, StartArg, StyleArgs, SweepArgs, ViewArg,
 };
 use crate::encode::{self, Formats, Kind as FormatKind};
 use crate::error::{Error, Result};
@@ -25,6 +25,7 @@ impl ModelArgs {
             || self.gamma.is_some()
             || self.gravity.is_some()
             || self.inertia.is_some()
+            || self.start.is_some()
     }
 
     fn apply(&self, scene: &mut Scene) {
@@ -35,6 +36,10 @@ impl ModelArgs {
         m.gamma = self.gamma.unwrap_or(m.gamma);
         m.gravity = self.gravity.unwrap_or(m.gravity);
         m.inertia = self.inertia.unwrap_or(m.inertia);
+        m.start = self.start.map_or(m.start, |s| match s {
+            StartArg::Ground => sim::Start::Ground,
+            StartArg::Relaxed => sim::Start::Relaxed,
+        });
     }
 }
 
@@ -388,9 +393,19 @@ fn check_fits_entry(
 /// fields where it had none) and its caption dropped (it describes the
 /// original).
 fn custom_base(origin: Origin<'_>) -> Scene {
-    let mut scene = origin.map(|(_, s)| s.clone()).unwrap_or_default();
+    let mut scene = origin
+        .map(|(_, s)| s.clone())
+        .unwrap_or_else(auto_window_base);
     scene.caption = None;
     scene
+}
+
+/// The paper's scene with `t_end = "auto"`: a movie or figure given no
+/// `--t-end` shows every wave's fate (`Scene::with_auto_window`).
+fn auto_window_base() -> Scene {
+    let mut s = Scene::default();
+    s.run.t_end = crate::scene::AUTO_T_END;
+    s
 }
 
 /// `scene` under `name`, or under a name made from what differs from its
@@ -405,7 +420,7 @@ fn named(mut scene: Scene, origin: Origin<'_>, name: Option<&str>) -> Scene {
         (None, None) => {
             let paper = Scene {
                 output: paper_output(&scene.output),
-                ..Scene::default()
+                ..auto_window_base()
             };
             describe::derived_name(&scene, &paper)
         }

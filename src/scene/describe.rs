@@ -296,6 +296,9 @@ pub fn derived_name(scene: &Scene, base: &Scene) -> String {
             parts.push(format!("{key}{}", token(x)));
         }
     }
+    if m.start != b.start {
+        parts.push(m.start.to_string());
+    }
     let (d, bd) = (&scene.drive.flips, &base.drive.flips);
     let starts = |f: &[super::Flip]| f.iter().map(|f| f.start).collect::<Vec<_>>();
     if starts(d) != starts(bd) {
@@ -310,7 +313,12 @@ pub fn derived_name(scene: &Scene, base: &Scene) -> String {
     }
     let (r, br) = (&scene.run, &base.run);
     if r.t_end != br.t_end {
-        parts.push(format!("to{}", token(r.t_end)));
+        let t = if r.t_end == super::AUTO_T_END {
+            "auto".to_string()
+        } else {
+            token(r.t_end)
+        };
+        parts.push(format!("to{t}"));
     }
     if r.integrator != br.integrator {
         parts.push(r.integrator.to_string());

@@ -54,6 +54,18 @@ pub fn parse(text: &str, origin: &str, default_name: &str) -> Result<Scene> {
             _ => default_name.to_string(),
         };
     }
+    // A movie or figure that sets no window shows every wave's fate.
+    let sets_t_end = doc
+        .get_ref()
+        .get("run")
+        .is_some_and(|r| r.get_ref().get("t_end").is_some());
+    if !sets_t_end
+        && matches!(scene.kind(), super::Kind::Movie | super::Kind::Figure)
+        && scene.fidelity() == super::Fidelity::Simulation
+        && !matches!(scene.output, super::OutputSpec::Sweep(_))
+    {
+        scene.run.t_end = super::AUTO_T_END;
+    }
     scene.check().map_err(|(key, msg)| {
         let span = span_of(doc.get_ref(), &key);
         located(text, origin, span, Some(&key), &msg)

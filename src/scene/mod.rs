@@ -16,7 +16,7 @@ pub mod sweep;
 
 use crate::error::{Error, Result};
 use crate::model::Params;
-use crate::sim::{Drive, IntegratorConfig, IntegratorKind, Scenario};
+use crate::sim::{Drive, IntegratorConfig, IntegratorKind, Scenario, Start};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -87,6 +87,11 @@ pub struct Model {
     pub gravity: f64,
     /// Moment of inertia I of a block, in m s². Default 0.25 (m s²/4).
     pub inertia: f64,
+    /// How the run starts: `ground` (at rest in the ground state, springs
+    /// at rest length) or `relaxed` (at rest hanging under gravity with
+    /// block 1 clamped, `sim::relax`). Default `ground` (docs/model.md,
+    /// "The hanging start", gives the measurement behind it).
+    pub start: Start,
 }
 
 impl Default for Model {
@@ -100,6 +105,7 @@ impl Default for Model {
             gamma: 0.02,
             gravity: 2e-4,
             inertia: 0.25,
+            start: Start::default(),
         }
     }
 }
@@ -155,6 +161,7 @@ impl ModelPatch {
             gamma: self.gamma.unwrap_or(m.gamma),
             gravity: self.gravity.unwrap_or(m.gravity),
             inertia: self.inertia.unwrap_or(m.inertia),
+            start: m.start,
         }
     }
 }
@@ -340,7 +347,11 @@ impl<'de> Deserialize<'de> for Method {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Run {
-    /// End of the simulated window [0, t_end], in τ. Default 4000.
+    /// End of the simulated window [0, t_end], in τ, or `"auto"` (held as
+    /// +∞ until [`Scene::with_auto_window`] resolves it: until every wave
+    /// has a fate, plus a margin, `sim::window`). Default 4000; a movie or
+    /// figure whose file or flags set none uses `"auto"`.
+    #[serde(with = "t_end_value")]
     pub t_end: f64,
     /// `auto` (default) or explicit-euler, symplectic-euler, verlet, rk4,
     /// dopri5.
@@ -365,6 +376,54 @@ impl Default for Run {
             rtol: None,
             tolerance: 0.1,
         }
+    }
+}
+
+/// `run.t_end = "auto"` before it is resolved ([`Scene::with_auto_window`]).
+pub const AUTO_T_END: f64 = f64::INFINITY;
+
+/// `t_end` in a scene file: a number of τ or `"auto"` ([`AUTO_T_END`]).
+mod t_end_value {
+    use super::AUTO_T_END;
+    use serde::{Deserializer, Serializer, de};
+
+    pub fn serialize<S: Serializer>(t: &f64, s: S) -> Result<S::Ok, S::Error> {
+        if *t == AUTO_T_END {
+            s.serialize_str("auto")
+        } else {
+            s.serialize_f64(*t)
+        }
+    }
+
+    struct Visitor;
+
+    impl de::Visitor<'_> for Visitor {
+        type Value = f64;
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("a time in τ or \"auto\"")
+        }
+        fn visit_f64<E: de::Error>(self, x: f64) -> Result<f64, E> {
+            Ok(x)
+        }
+        fn visit_i64<E: de::Error>(self, x: i64) -> Result<f64, E> {
+            Ok(x as f64)
+        }
+        fn visit_u64<E: de::Error>(self, x: u64) -> Result<f64, E> {
+            Ok(x as f64)
+        }
+        fn visit_str<E: de::Error>(self, s: &str) -> Result<f64, E> {
+            if s == "auto" {
+                Ok(AUTO_T_END)
+            } else {
+                Err(E::custom(format!(
+                    "must be a time in τ or \"auto\", got \"{s}\""
+                )))
+            }
+        }
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+        d.deserialize_any(Visitor)
     }
 }
 
@@ -683,13 +742,48 @@ impl Scene {
         }
     }
 
-    /// The simulation of this (single-run) scene: ground state of sign α
-    /// at rest, block 1 driven as `drive` says, over [0, t_end].
+    /// The simulation of this (single-run) scene: at rest in the ground
+    /// state of sign α or hanging from it (`model.start`), block 1 driven
+    /// as `drive` says, over [0, t_end].
     pub fn scenario(&self) -> Result<Scenario> {
         let params = self.model.params()?;
         crate::sim::check_simulable(&params)?;
         let drive = self.drive.drive(params.alpha)?;
-        Scenario::with_drive(params, drive, self.run.t_end)
+        Scenario::with_drive(params, drive, self.run.t_end)?.started(self.model.start)
+    }
+
+    /// This scene with `run.t_end = "auto"` resolved (`sim::window`): the
+    /// longest automatic window of its runs (every panel or curve that
+    /// sets no `t_end` of its own). A scene with a number keeps it.
+    pub fn with_auto_window(&self) -> Result<Scene> {
+        let mut out = self.clone();
+        if self.run.t_end != AUTO_T_END
+            || self.fidelity() != Fidelity::Simulation
+            || matches!(self.output, OutputSpec::Sweep(_))
+        {
+            return Ok(out);
+        }
+        let mut t_end: f64 = 0.0;
+        for (mut v, _) in self.runs() {
+            if v.run.t_end != AUTO_T_END {
+                continue;
+            }
+            v.run.t_end = crate::sim::window::AUTO_CAP;
+            let scenario = v.scenario()?;
+            let config = match v.run.fixed_config()? {
+                Some(c) => c,
+                None => IntegratorConfig::auto(crate::theory::dispersion::omega_max_clamped(
+                    &scenario.ladder.params,
+                )?),
+            };
+            t_end = t_end.max(crate::sim::window::auto_window(&scenario, &config)?.t_end);
+        }
+        out.run.t_end = if t_end > 0.0 {
+            t_end
+        } else {
+            Run::default().t_end
+        };
+        Ok(out)
     }
 
     /// Checks every field; `Err((key path, message))` names the first bad
@@ -728,10 +822,10 @@ impl Scene {
             return Err((format!("drive.flips.{k}"), msg));
         }
         let r = &self.run;
-        if !(r.t_end.is_finite() && r.t_end > 0.0) {
+        if !((r.t_end.is_finite() || r.t_end == AUTO_T_END) && r.t_end > 0.0) {
             return bad(
                 "run.t_end",
-                format!("must be a finite time > 0, got {}", r.t_end),
+                format!("must be a finite time > 0 or \"auto\", got {}", r.t_end),
             );
         }
         if let Some(dt) = r.dt

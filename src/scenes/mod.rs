@@ -181,6 +181,7 @@ pub fn render_to(
     frame_done: &(dyn Fn() + Sync),
     sink: &mut dyn FnMut(&str, Fill<'_>) -> Result<()>,
 ) -> Result<()> {
+    let scene = &scene.with_auto_window()?;
     if !matches!(scene.output, OutputSpec::Sweep(_)) {
         let (bytes, block_samples) = data::estimated_bytes(scene, movie, KYMOGRAPH_ROWS);
         crate::limits::Limits::active().check_data_bytes(bytes, || {

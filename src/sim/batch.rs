@@ -494,6 +494,7 @@ impl<'s> Run<'s> {
             ladder: self.rhs.ladder,
             q: &st.q,
             v: &st.v,
+            waves: &self.tracker,
         })
     }
 

@@ -10,13 +10,16 @@ pub mod integrators;
 mod lanes;
 pub mod observables;
 pub mod protocol;
+pub mod relax;
 pub mod rhs;
 mod simd;
 pub mod waves;
+pub mod window;
 
 pub use fused::{Isa, Stepping};
 pub use integrators::{IntegratorConfig, IntegratorKind};
 pub use protocol::{Drive, Piece, Protocol};
+pub use relax::Start;
 pub use rhs::{Rhs, State};
 
 use crate::error::{Error, Result, num};
@@ -174,6 +177,8 @@ pub struct StopView<'a> {
     pub ladder: &'a Ladder,
     pub q: &'a [f64],
     pub v: &'a [f64],
+    /// The waves so far (`waves`).
+    pub waves: &'a WaveTracker,
 }
 
 /// A stop rule: true once the run has decided what it was run for (a
@@ -453,6 +458,7 @@ pub fn simulate_streaming(
                     ladder,
                     q: &st.q,
                     v: &st.v,
+                    waves: &tracker,
                 };
                 if (hooks.stop)(&view) {
                     break 'run;
@@ -470,6 +476,7 @@ pub fn simulate_streaming(
             ladder,
             q: &st.q,
             v: &st.v,
+            waves: &tracker,
         };
         if (hooks.stop)(&view) {
             break;

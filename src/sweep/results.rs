@@ -8,16 +8,27 @@ use super::{Plan, Record};
 use crate::error::{Error, Result};
 use crate::scene::describe;
 use crate::scene::sweep::Param;
+use crate::sim::waves::{Fate, WaveKind};
 use serde::Serialize;
 use std::fmt::Write;
 
 /// The CSV columns after the parameters.
 pub const RESULT_COLUMNS: [&str; 5] = ["outcome", "blocks_flipped", "front", "speed", "t_decided"];
 
-/// `run,alpha,n,b,gamma,gravity,inertia,drive_time,outcome,blocks_flipped,front,speed,t_decided`:
+/// The columns of each wave where a sweep launches more than one
+/// (`wave2_kind`, ...; see [`csv`]).
+pub const WAVE_COLUMNS: [&str; 5] = ["kind", "launched_at", "front", "fate", "fate_at"];
+
+/// `run,alpha,n,b,gamma,gravity,inertia,drive_time,outcome,blocks_flipped,front,speed,t_decided,waves`:
 /// every parameter of every run (the varied ones and the base's), then
-/// what the wave did. Speed in blocks/τ (empty when fewer than three
-/// blocks past block 2 flipped), t_decided in τ (empty for a diverged run).
+/// what the first wave did (the one block 1's first flip launches: the
+/// outcome columns describe it), then how many waves the run had. Speed in
+/// blocks/τ (empty when fewer than three blocks past block 2 flipped),
+/// t_decided in τ (empty for a diverged run). Where some run had more than
+/// one wave, every wave k up to the most any run had follows in
+/// `wavek_kind,wavek_launched_at,wavek_front,wavek_fate,wavek_fate_at`
+/// (kink or antikink, τ, block, end/stopped/annihilated/undecided, the
+/// annihilation's time; empty where the run had fewer waves).
 pub fn csv(plan: &Plan, records: &[Record]) -> String {
     let mut out = String::from("run");
     for p in Param::ALL {
@@ -28,6 +39,18 @@ pub fn csv(plan: &Plan, records: &[Record]) -> String {
         out.push(',');
         out.push_str(c);
     }
+    out.push_str(",waves");
+    let most = records
+        .iter()
+        .map(|r| r.result.waves.waves.len())
+        .max()
+        .unwrap_or(0);
+    let per_wave = if most > 1 { most } else { 0 };
+    for k in 1..=per_wave {
+        for c in WAVE_COLUMNS {
+            let _ = write!(out, ",wave{k}_{c}");
+        }
+    }
     out.push('\n');
     for r in records {
         let scene = plan.scene_at(r.run);
@@ -36,17 +59,43 @@ pub fn csv(plan: &Plan, records: &[Record]) -> String {
             let _ = write!(out, ",{}", p.get(&scene));
         }
         let res = &r.result;
-        let _ = writeln!(
+        let _ = write!(
             out,
-            ",{},{},{},{},{}",
+            ",{},{},{},{},{},{}",
             res.outcome,
             res.blocks_flipped,
             res.front,
             res.speed
                 .map_or(String::new(), |v| format!("{}", sig(v, 6))),
             res.t_decided
-                .map_or(String::new(), |t| format!("{}", sig(t, 9)))
+                .map_or(String::new(), |t| format!("{}", sig(t, 9))),
+            res.waves.waves.len()
         );
+        for k in 0..per_wave {
+            match res.waves.waves.get(k) {
+                Some(w) => {
+                    let kind = match w.kind {
+                        WaveKind::Kink => "kink",
+                        WaveKind::Antikink => "antikink",
+                    };
+                    let (fate, at) = match w.fate {
+                        Fate::End => ("end", None),
+                        Fate::Stopped => ("stopped", None),
+                        Fate::Annihilated { at, .. } => ("annihilated", Some(at)),
+                        Fate::Undecided => ("undecided", None),
+                    };
+                    let _ = write!(
+                        out,
+                        ",{kind},{},{},{fate},{}",
+                        sig(w.launched_at, 9),
+                        w.front,
+                        at.map_or(String::new(), |t| format!("{}", sig(t, 9)))
+                    );
+                }
+                None => out.push_str(",,,,,"),
+            }
+        }
+        out.push('\n');
     }
     out
 }

@@ -72,7 +72,7 @@ pub fn residual_force(ladder: &Ladder, q: &[f64]) -> f64 {
 }
 
 /// Masses of the free coordinates in order (m, m, I per block 2..N).
-fn free_masses(ladder: &Ladder) -> Vec<f64> {
+pub fn free_masses(ladder: &Ladder) -> Vec<f64> {
     let inertia = ladder.params.inertia;
     (1..ladder.n()).flat_map(|_| [M, M, inertia]).collect()
 }
@@ -144,6 +144,30 @@ fn cholesky(a: &BandSymmetric, shift: f64, mass: &[f64]) -> Option<Vec<f64>> {
         }
     }
     Some(u)
+}
+
+/// The solution x of (`a` + `shift` · diag(`mass`)) x = `rhs` by band
+/// Cholesky (O(n · width²)), or `None` where that matrix is not positive
+/// definite: the damped Newton step of `sim::relax`.
+pub fn solve_shifted(a: &BandSymmetric, shift: f64, mass: &[f64], rhs: &[f64]) -> Option<Vec<f64>> {
+    let u = cholesky(a, -shift, mass)?;
+    let n = a.dim();
+    let (p, w) = (a.width, a.width + 1);
+    // Uᵀ y = rhs, then U x = y; u[k w + d] = U[k][k + d].
+    let mut y = rhs.to_vec();
+    for i in 0..n {
+        for k in i.saturating_sub(p)..i {
+            y[i] -= u[k * w + i - k] * y[k];
+        }
+        y[i] /= u[i * w];
+    }
+    for i in (0..n).rev() {
+        for j in i + 1..(i + w).min(n) {
+            y[i] -= u[i * w + j - i] * y[j];
+        }
+        y[i] /= u[i * w];
+    }
+    Some(y)
 }
 
 /// Whether the clamped Hessian at `q` exceeds `margin` times the mass
