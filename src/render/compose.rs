@@ -560,11 +560,19 @@ impl StripPlan {
         } else {
             0.0
         };
-        let captions: Vec<String> = frames.iter().map(|f| snapshot::time_label(f.time)).collect();
+        let captions: Vec<String> = frames
+            .iter()
+            .map(|f| snapshot::time_label(f.time))
+            .collect();
         let widest = |two: bool| {
             captions
                 .iter()
-                .flat_map(|c| two_lines(c, two).lines().map(str::to_string).collect::<Vec<_>>())
+                .flat_map(|c| {
+                    two_lines(c, two)
+                        .lines()
+                        .map(str::to_string)
+                        .collect::<Vec<_>>()
+                })
                 .map(|l| style::text_width(&l, size::LABEL))
                 .fold(0.0f32, f32::max)
         };

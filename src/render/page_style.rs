@@ -506,7 +506,10 @@ mod tests {
         assert_eq!(s.max_height_pt(), Some(540.0));
         // 20 pt text composed down to 10 pt: twice the 0.75 px per pt frame.
         let (w, h) = s.fit_box().unwrap();
-        assert!((w - 960.0 * 1.5).abs() < 0.1 && (h - 540.0 * 1.5).abs() < 0.1, "{w} {h}");
+        assert!(
+            (w - 960.0 * 1.5).abs() < 0.1 && (h - 540.0 * 1.5).abs() < 0.1,
+            "{w} {h}"
+        );
         assert_eq!(Style::default().fit_box(), None);
     }
 

@@ -412,7 +412,10 @@ fn fitted_line(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
 pub fn arrivals_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     let (spec, data) = arrivals_chart(scene)?;
     let (w, h) = crate::render::Style::current().frame((820, 560));
-    Ok((Picture::from(charts::line_chart(&spec, w, h)?).fit_page(), data))
+    Ok((
+        Picture::from(charts::line_chart(&spec, w, h)?).fit_page(),
+        data,
+    ))
 }
 
 /// What [`arrivals_figure`] draws: the chart's series (each wave's marks,
@@ -466,7 +469,10 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
             let name = match (several, label.is_empty()) {
                 (false, true) => wave_name(alpha),
                 (false, false) => label.clone(),
-                (true, true) => format!("{word} from t/τ = {launched} (α = {}°)", describe::num(alpha)),
+                (true, true) => format!(
+                    "{word} from t/τ = {launched} (α = {}°)",
+                    describe::num(alpha)
+                ),
                 (true, false) => format!("{label}, {word} from t/τ = {launched}"),
             };
             let color = style::series_color(k + 1);
@@ -646,7 +652,10 @@ impl MoviePlan {
         self.columns
             .iter()
             .map(|c| {
-                let at = (c.region.x + 0.5 * c.region.w, c.region.y - COLUMN_NUMBER_BAND);
+                let at = (
+                    c.region.x + 0.5 * c.region.w,
+                    c.region.y - COLUMN_NUMBER_BAND,
+                );
                 (format!("{}", c.start + 1), at)
             })
             .collect()
@@ -656,8 +665,7 @@ impl MoviePlan {
     /// is folded (as filmstrips number theirs), onto the frames'
     /// `background`.
     fn number_columns(&self, background: &mut Pixmap) {
-        let mut canvas =
-            crate::render::Raster::with_transform(background, self.layout.transform());
+        let mut canvas = crate::render::Raster::with_transform(background, self.layout.transform());
         let color = style::mix(style::GREY, style::DARK, 0.3);
         let align = (style::HAlign::Center, style::VAlign::Top);
         for (text, at) in self.column_numbers() {
@@ -830,7 +838,10 @@ pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Picture, RunDat
     let title = describe::title(scene);
     let (w, h) = crate::render::Style::current().frame((820, 560));
     let image = kymograph_chart(&title, &run.trajectory, scene.model.n, w, h)?;
-    Ok((Picture::from(image).fit_page(), RunData::new("", scene, &run)))
+    Ok((
+        Picture::from(image).fit_page(),
+        RunData::new("", scene, &run),
+    ))
 }
 
 /// The kymograph of sin θ_n of `traj`: blocks across, time down, as a

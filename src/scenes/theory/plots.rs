@@ -170,9 +170,12 @@ pub fn dispersion(input: &FigureInput) -> Result<Picture> {
     // On a narrow page two panels a row, each half the page (six panels
     // one a row would print taller than a page).
     let (cols, size) = if narrow() {
-        let half = (page_width(FIGURE_WIDTH) as f32 - 2.0 * size::MARGIN as f32 - size::GAP as f32)
-            / 2.0;
-        (2, (half.floor() as u32, (half * 250.0 / 300.0).round() as u32))
+        let half =
+            (page_width(FIGURE_WIDTH) as f32 - 2.0 * size::MARGIN as f32 - size::GAP as f32) / 2.0;
+        (
+            2,
+            (half.floor() as u32, (half * 250.0 / 300.0).round() as u32),
+        )
     } else {
         (3, fit((300, 250)))
     };
