@@ -320,41 +320,6 @@ fn tempdir(name: &str) -> std::path::PathBuf {
     d
 }
 
-#[test]
-#[ignore]
-fn zz_diagnose() {
-    let ids: Vec<String> = std::env::var("DIAG_IDS")
-        .unwrap_or_default()
-        .split(',')
-        .map(String::from)
-        .collect();
-    for entry in catalog::entries(Kind::Figure).unwrap() {
-        if !ids.is_empty() && ids[0] != "" && !ids.contains(&entry.id) {
-            continue;
-        }
-        let mut runs = None;
-        for name in StyleName::ALL {
-            let style = Style::named(name);
-            let pic = picture(&entry.scene, &style, &mut runs);
-            let found = pic.layout_problems(&style);
-            let pt = style.pt_per_px(pic.width());
-            eprintln!(
-                "== {} {} design {}x{} page {:.0}x{:.0}pt problems {}",
-                entry.id,
-                name.name(),
-                pic.width(),
-                pic.height(),
-                pic.width() * pt,
-                pic.height() * pt,
-                found.len()
-            );
-            for p in found.iter().take(6) {
-                eprintln!("   {p}");
-            }
-        }
-    }
-}
-
 /// A print page is never taller than the style allows: S5's six panels
 /// went one a row (1254 pt) at paper; Fig. 3's four strips of seven
 /// snapshots would be taller still. The cap: 9.5 in (684 pt), an APS
@@ -480,8 +445,10 @@ fn arrivals_draw_every_wave_with_its_fitted_line() {
 fn folded_movies_number_their_columns() {
     use jacobs_ladder::scenes::MovieOptions;
     use jacobs_ladder::scenes::dynamic;
-    let mut s = Scene::default();
-    s.name = "n150".into();
+    let mut s = Scene {
+        name: "n150".into(),
+        ..Default::default()
+    };
     s.model.n = 150;
     s.run.t_end = 300.0;
     let opts = MovieOptions {
