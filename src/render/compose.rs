@@ -12,7 +12,8 @@ use crate::model::Ladder;
 use tiny_skia::{Pixmap, PixmapPaint, Transform};
 
 /// One picture of a composition with an optional label above it (drawn at
-/// its top left, e.g. "(a1)") and an optional caption centred below it.
+/// its top left, e.g. "(a1)") and an optional caption centred below it
+/// (one line per `\n`).
 pub struct Panel {
     pub image: Picture,
     pub label: Option<String>,
@@ -88,8 +89,14 @@ fn bands(panels: &[Panel]) -> (u32, u32) {
     } else {
         0
     };
+    let lines = panels
+        .iter()
+        .filter_map(|p| p.caption.as_ref())
+        .map(|c| c.lines().count().max(1))
+        .max()
+        .unwrap_or(0);
     let c = if caption {
-        (size::LABEL * 1.7) as u32
+        (size::LABEL * (0.5 + 1.2 * lines as f32)) as u32
     } else {
         0
     };
@@ -204,11 +211,14 @@ fn draw_panel(
         out.text(l, at, size::PANEL_LABEL, DARK, (HAlign::Left, VAlign::Top));
     }
     if let Some(c) = &p.caption {
-        let at = (
-            x as f32 + 0.5 * cw as f32,
-            (y + lh + ih) as f32 + 0.3 * size::LABEL,
-        );
-        out.text(c, at, size::LABEL, DARK, (HAlign::Center, VAlign::Top));
+        // One text per line, each centred under the image.
+        for (k, line) in c.lines().enumerate() {
+            let at = (
+                x as f32 + 0.5 * cw as f32,
+                (y + lh + ih) as f32 + (0.3 + 1.2 * k as f32) * size::LABEL,
+            );
+            out.text(line, at, size::LABEL, DARK, (HAlign::Center, VAlign::Top));
+        }
     }
 }
 
@@ -252,6 +262,12 @@ pub struct FilmstripOptions {
     /// as its columns need and as tall as `frame_size`, and the snapshots
     /// wrap into rows. Ignored with a fixed `view`.
     pub min_block_pixels: Option<f32>,
+    /// The box, in pixels, the whole strip (margins, title and captions
+    /// included) must fit at a print style (default: none, the strip is
+    /// as wide as its snapshots need). Snapshots then wrap into rows and
+    /// shrink, keeping their aspect ratio, so that the strip fits; a time
+    /// caption wider than its snapshot goes on two lines.
+    pub fit: Option<(u32, u32)>,
 }
 
 /// A labelled pointer beside a filmstrip snapshot at a point of the chain.
@@ -267,8 +283,23 @@ pub struct ChainMark {
     pub side: HAlign,
 }
 
-/// Font size of a [`ChainMark`]'s label.
-const MARK_TEXT: f32 = 11.0;
+/// Font size of a [`ChainMark`]'s label: 11 px, and at a print style at
+/// least the smallest print text (SPEC section 10).
+fn mark_text() -> f32 {
+    at_least_print_min(11.0)
+}
+
+/// `px` pixels, or more at a print style: enough for
+/// [`super::page_style::MIN_PRINT_TEXT_PT`] plus a tenth of a point, when
+/// the picture is printed at the style's own scale.
+pub fn at_least_print_min(px: f32) -> f32 {
+    let style = super::Style::current();
+    if !style.is_print() {
+        return px;
+    }
+    let min = (super::page_style::MIN_PRINT_TEXT_PT + 0.1) * style.px_per_pt();
+    px.max(min.ceil())
+}
 /// Pixels from the chain to a mark's tip, of its triangle, and from the
 /// triangle to the label.
 const MARK_CLEAR: f32 = 3.0;
@@ -324,7 +355,7 @@ fn draw_mark(
     canvas.text(
         &mark.label,
         (base + dir * MARK_SPACE, y),
-        MARK_TEXT,
+        mark_text(),
         mark.color,
         (align, VAlign::Middle),
     );
@@ -332,7 +363,7 @@ fn draw_mark(
 
 /// Pixels a mark reaches beyond the chain on its side.
 fn mark_room(mark: &ChainMark) -> f32 {
-    MARK_CLEAR + MARK_ARROW + MARK_SPACE + style::text_width(&mark.label, MARK_TEXT) + 2.0
+    MARK_CLEAR + MARK_ARROW + MARK_SPACE + style::text_width(&mark.label, mark_text()) + 2.0
 }
 
 /// Widest a folded snapshot may be, in pixels; a longer ladder is drawn
@@ -344,12 +375,31 @@ const MAX_FOLDED_ROW: u32 = 1800;
 /// Tallest strip of folded snapshots, in pixels: below
 /// [`super::picture::MAX_RASTER_SIDE`] with room for a figure's title.
 const MAX_FOLDED_HEIGHT: u32 = 7600;
+/// A strip fitted into a box takes the fewest rows that draw the ladder at
+/// least this share of the largest any number of rows would.
+const FIT_SHARE: f32 = 0.8;
+
+/// Snapshots with marks are drawn at no less than this share of their
+/// width: the marks' words need the room beside the chain.
+const MARKED_SHARE: f32 = 0.8;
+
+/// A time caption, on two lines ("t/τ =" over the time) when `two`.
+fn two_lines(caption: &str, two: bool) -> String {
+    if two {
+        caption.replacen(" = ", " =\n", 1)
+    } else {
+        caption.to_string()
+    }
+}
+
 /// Gap between the snapshots of a strip, in pixels: folded snapshots get
 /// more, so that their columns group visibly.
 const SNAPSHOT_GAP: u32 = 6;
 const FOLDED_SNAPSHOT_GAP: u32 = 24;
 /// Font size of the block numbers above the columns of a folded ladder.
-const COLUMN_NUMBER: f32 = 10.0;
+fn column_number() -> f32 {
+    at_least_print_min(10.0)
+}
 /// Pixels between a folded snapshot's frame and what it holds.
 const FOLDED_PAD: f32 = 4.0;
 
@@ -384,6 +434,8 @@ struct StripPlan {
     /// Snapshots per row and the gap between them.
     per_row: usize,
     gap: u32,
+    /// Whether the time captions go on two lines ("t/τ =" over the time).
+    two_line: bool,
 }
 
 /// Pixels per s of `snap` drawn into `region`: the length of every block.
@@ -415,13 +467,14 @@ impl StripPlan {
             fold: None,
             per_row: frames.len().max(1),
             gap: SNAPSHOT_GAP,
+            two_line: false,
         };
         let Some(min) = opts.min_block_pixels.filter(|_| opts.view.is_none()) else {
-            return Ok(whole);
+            return Ok(whole.fitted(frames, opts));
         };
         let probe = whole.columns[0].snapshot(frames[0].q)?;
         if block_pixels(whole.columns[0].region, &probe) >= min {
-            return Ok(whole);
+            return Ok(whole.fitted(frames, opts));
         }
         // Room for the marks beside every column, on their sides.
         let room = |side: HAlign| {
@@ -436,7 +489,7 @@ impl StripPlan {
         let (left, right) = (room(HAlign::Left), room(HAlign::Right));
         let gap = fold::COLUMN_GAP.max(left + right);
         let (left, right) = (left + FOLDED_PAD, right + FOLDED_PAD);
-        let top = (FOLDED_PAD + 1.5 * COLUMN_NUMBER).ceil();
+        let top = (FOLDED_PAD + 1.5 * column_number()).ceil();
         let column_h = (h as f32 - top - FOLDED_PAD).max(1.0);
         // The ladder's window inside each column, after the margin.
         let height = (column_h - 2.0 * margin_within(column_h)) as f64;
@@ -469,7 +522,10 @@ impl StripPlan {
             .collect();
         let cols = columns.len() as f32;
         let width = (left + cols * column_w + (cols - 1.0) * gap + right).ceil() as u32;
-        let row = MAX_FOLDED_ROW - 2 * size::MARGIN;
+        let row = opts
+            .fit
+            .map_or(MAX_FOLDED_ROW, |(w, _)| w.min(MAX_FOLDED_ROW))
+            .saturating_sub(2 * size::MARGIN);
         let fits = ((row + FOLDED_SNAPSHOT_GAP) / (width + FOLDED_SNAPSHOT_GAP)).max(1) as usize;
         // Many snapshots: rows wider than MAX_FOLDED_ROW rather than a
         // strip taller than a picture may be.
@@ -482,7 +538,80 @@ impl StripPlan {
             fold: Some(folded),
             per_row: frames.len().div_ceil(rows.max(1)).max(1),
             gap: FOLDED_SNAPSHOT_GAP,
+            two_line: false,
         })
+    }
+
+    /// The whole-ladder plan fitted into `opts.fit`: of the ways to wrap
+    /// the snapshots into rows (each snapshot at most its natural size,
+    /// its aspect ratio kept, and as tall as the box leaves room for), the
+    /// one with the fewest rows that draws the ladder at least
+    /// [`FIT_SHARE`] as large as the best does. Snapshots with marks keep
+    /// [`MARKED_SHARE`] of their width (the marks' words need it).
+    /// Unchanged without a box.
+    fn fitted(self, frames: &[Frame<'_>], opts: &FilmstripOptions) -> StripPlan {
+        let Some((box_w, box_h)) = opts.fit else {
+            return self;
+        };
+        let (w, h) = self.size;
+        let (m, gap) = (size::MARGIN as f32, self.gap as f32);
+        let title = if opts.title.is_some() || opts.label.is_some() {
+            (size::TITLE * 1.8).floor()
+        } else {
+            0.0
+        };
+        let captions: Vec<String> = frames
+            .iter()
+            .map(|f| snapshot::time_label(f.time))
+            .collect();
+        let widest = |two: bool| {
+            captions
+                .iter()
+                .flat_map(|c| {
+                    two_lines(c, two)
+                        .lines()
+                        .map(str::to_string)
+                        .collect::<Vec<_>>()
+                })
+                .map(|l| style::text_width(&l, size::LABEL))
+                .fold(0.0f32, f32::max)
+        };
+        let marked = opts.marks.iter().any(|m| !m.is_empty());
+        let n = frames.len().max(1);
+        // (rows, width, height, two-line captions, ladder scale) of each way.
+        let mut ways = Vec::new();
+        for rows in 1..=n {
+            let k = n.div_ceil(rows);
+            let room = (box_w as f32 - 2.0 * m - (k as f32 - 1.0) * gap) / k as f32;
+            let cw = room.min(w as f32).floor();
+            if cw < 8.0 || (marked && cw < MARKED_SHARE * w as f32) {
+                continue;
+            }
+            let two = widest(false) > cw + gap - 2.0;
+            if two && widest(true) > cw + gap - 2.0 {
+                continue;
+            }
+            let lines = if two { 2.0 } else { 1.0 };
+            let caption = (size::LABEL * (0.5 + 1.2 * lines)).floor();
+            let tall = (box_h as f32 - 2.0 * m - title - (rows as f32 - 1.0) * gap) / rows as f32
+                - caption;
+            let ch = (h as f32 * cw / w as f32).min(tall).floor();
+            if ch < 24.0 {
+                continue;
+            }
+            let scale = (cw / w as f32).min(ch / h as f32);
+            ways.push((rows, cw as u32, ch as u32, two, scale));
+        }
+        let best = ways.iter().map(|w| w.4).fold(0.0f32, f32::max);
+        let Some(&(rows, cw, ch, two, _)) = ways.iter().find(|w| w.4 >= FIT_SHARE * best) else {
+            return self;
+        };
+        let mut plan = self;
+        plan.size = (cw, ch);
+        plan.columns[0].region = Region::full(cw, ch);
+        plan.per_row = n.div_ceil(rows);
+        plan.two_line = two;
+        plan
     }
 
     /// The snapshot of `frame` with its `marks`.
@@ -504,7 +633,7 @@ impl StripPlan {
             let at = (c.region.x + 0.5 * c.region.w, FOLDED_PAD);
             let first = format!("{}", c.start + 1);
             let top = (HAlign::Center, VAlign::Top);
-            img.text(&first, at, COLUMN_NUMBER, number, top);
+            img.text(&first, at, column_number(), number, top);
         }
         for mark in marks {
             let (j, at) = folded.locate(mark.at);
@@ -566,7 +695,8 @@ fn strip_panels(
     for (k, f) in frames.iter().enumerate() {
         let marks = opts.marks.get(k).map_or(&[][..], |m| m.as_slice());
         let img = plan.picture(f, marks)?;
-        panels.push(Panel::new(img).caption(snapshot::time_label(f.time)));
+        let caption = two_lines(&snapshot::time_label(f.time), plan.two_line);
+        panels.push(Panel::new(img).caption(caption));
     }
     let mut layout = Layout::columns(plan.per_row);
     layout.gap = plan.gap;

@@ -149,6 +149,15 @@ pub const PT_PER_IN: f32 = 72.0;
 pub const MM_PER_IN: f32 = 25.4;
 /// Smallest text a print style may set, in points (SPEC section 10).
 pub const MIN_PRINT_TEXT_PT: f32 = 6.0;
+/// Tallest a figure may print at a print style without a page height, in
+/// points: 9.5 in, the text height of an APS (Physical Review) page less
+/// room for the caption's first lines (the page's text block is about
+/// 9.6–10 in).
+pub const MAX_FIGURE_HEIGHT_PT: f32 = 9.5 * PT_PER_IN;
+/// Text size, in points, down to which a figure composed for a style with
+/// larger text (a slide's 20 pt) may be set, so that filmstrips and
+/// panels fit one slide.
+pub const SMALLEST_COMPOSED_TEXT_PT: f32 = 10.0;
 
 impl Style {
     /// The style `name` with its own sizes.
@@ -212,6 +221,26 @@ impl Style {
             None => w * natural.1 as f32 / natural.0.max(1) as f32,
         };
         (w as u32, h.round().max(60.0) as u32)
+    }
+
+    /// Tallest a figure may print, in points: the page height where the
+    /// style fixes one (a slide: 7.5 in), else [`MAX_FIGURE_HEIGHT_PT`] at a
+    /// print style; none at screen.
+    pub fn max_height_pt(&self) -> Option<f32> {
+        self.is_print()
+            .then(|| self.height_pt.unwrap_or(MAX_FIGURE_HEIGHT_PT))
+    }
+
+    /// The box, in design pixels, that composed figures (filmstrips,
+    /// panels of drawings) are laid out to fit at a print style: the page
+    /// width by [`Style::max_height_pt`], enlarged where the style's text is
+    /// above [`SMALLEST_COMPOSED_TEXT_PT`] (a slide: twice) so that text may
+    /// print down to that size.
+    pub fn fit_box(&self) -> Option<(f32, f32)> {
+        let (w, h) = (self.width_pt?, self.max_height_pt()?);
+        let zoom = (self.font_pt / SMALLEST_COMPOSED_TEXT_PT).max(1.0);
+        let px = self.px_per_pt() * zoom;
+        Some((w * px, h * px))
     }
 
     /// Points per design pixel of a picture `design_width` pixels wide: the
@@ -464,6 +493,24 @@ mod tests {
         assert!(parse_length("3").is_err());
         assert!(parse_length("3 furlongs").is_err());
         assert!(parse_length("0.1in").is_err());
+    }
+
+    #[test]
+    fn fit_boxes() {
+        let p = Style::named(StyleName::Paper);
+        // 9.5 in = 684 pt; 15/8 px per pt at 8 pt text.
+        assert_eq!(p.max_height_pt(), Some(684.0));
+        let (w, h) = p.fit_box().unwrap();
+        assert!((w - 243.0 * 15.0 / 8.0).abs() < 1e-3 && (h - 684.0 * 15.0 / 8.0).abs() < 1e-3);
+        let s = Style::named(StyleName::Slide);
+        assert_eq!(s.max_height_pt(), Some(540.0));
+        // 20 pt text composed down to 10 pt: twice the 0.75 px per pt frame.
+        let (w, h) = s.fit_box().unwrap();
+        assert!(
+            (w - 960.0 * 1.5).abs() < 0.1 && (h - 540.0 * 1.5).abs() < 0.1,
+            "{w} {h}"
+        );
+        assert_eq!(Style::default().fit_box(), None);
     }
 
     #[test]

@@ -127,6 +127,27 @@ impl Picture {
         self.pop();
     }
 
+    /// The picture on the page of the style in force ([`Style::current`]):
+    /// unchanged at screen; at a print style widened with white, the
+    /// picture centred, to the page's width in design pixels, and further
+    /// when it would print taller than [`Style::max_height_pt`] (then the
+    /// whole picture prints smaller, centred on a page of that height).
+    pub fn fit_page(self) -> Picture {
+        let style = Style::current();
+        let (Some(w_pt), Some(max_h)) = (style.width_pt, style.max_height_pt()) else {
+            return self;
+        };
+        let page = w_pt * style.px_per_pt();
+        let tall = self.height * w_pt / max_h;
+        let width = self.width.max(page).max(tall);
+        if width <= self.width + 0.5 {
+            return self;
+        }
+        let mut out = Picture::new(width, self.height);
+        out.place(&self, ((0.5 * (width - self.width)).floor(), 0.0));
+        out
+    }
+
     /// The picture at 100 %: `pixel_size()` pixels.
     pub fn to_pixmap(&self) -> Result<Pixmap> {
         self.rasterize(1.0)

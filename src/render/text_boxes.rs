@@ -46,6 +46,14 @@ impl Picture {
         let (w, h) = (self.width(), self.height());
         let pt = style.pt_per_px(w);
         let mut problems = Vec::new();
+        if let Some(max) = style.max_height_pt()
+            && h * pt > max + 0.5
+        {
+            problems.push(format!(
+                "the page is {:.0} pt tall, more than {max:.0} pt",
+                h * pt
+            ));
+        }
         let tol = 0.5;
         for b in &boxes {
             let [x0, y0, x1, y1] = b.rect;

@@ -40,16 +40,32 @@ pub fn title(scene: &Scene) -> String {
 /// A title made from the fields.
 pub fn generated_title(scene: &Scene) -> String {
     let m = &scene.model;
-    let mut t = wave(m);
     let default = Model::default();
+    let mut extra = String::new();
     if m.n != default.n {
-        t.push_str(&format!(", N = {}", m.n));
+        extra.push_str(&format!(", N = {}", m.n));
     }
     if m.b != default.b {
-        t.push_str(&format!(", b/s = {}", num(m.b)));
+        extra.push_str(&format!(", b/s = {}", num(m.b)));
     }
-    if scene.drive.flips.len() > 1 {
-        t = format!("{} flips of block 1, {t}", scene.drive.flips.len());
+    let flips = scene.drive.flips.len();
+    let mut t = format!("{}{extra}", wave(m));
+    if flips > 1 {
+        t = format!("{flips} flips of block 1, {t}");
+    }
+    // Arrival times of curves of both signs, or of several flips, show
+    // kinks and antikinks: the title says so rather than name one.
+    if let OutputSpec::Arrivals { .. } = &scene.output {
+        let alphas: Vec<f64> = scene.runs().iter().map(|(s, _)| s.model.alpha).collect();
+        let both = alphas.iter().any(|a| *a > 0.0) && alphas.iter().any(|a| *a < 0.0);
+        if both || flips > 1 {
+            let flips = if flips > 1 {
+                format!(", {flips} flips of block 1")
+            } else {
+                String::new()
+            };
+            return format!("arrival times of kinks and antikinks{flips}{extra}");
+        }
     }
     match &scene.output {
         OutputSpec::Movie {

@@ -13,8 +13,8 @@ use crate::render::compose::{
 };
 use crate::render::fold::{self, Fold};
 use crate::render::snapshot::{self, Region, Snapshot, View};
-use crate::render::{MovieLayout, Picture, style};
-use crate::scene::{Camera, MIN_BLOCK_PIXELS, OutputSpec, Scene, describe};
+use crate::render::{Canvas, MovieLayout, Picture, style};
+use crate::scene::{Camera, DriveSpec, MIN_BLOCK_PIXELS, Model, OutputSpec, Scene, describe};
 use crate::sim::{self, Trajectory};
 use tiny_skia::Pixmap;
 
@@ -162,7 +162,13 @@ impl Strip {
     /// pixels (default [`strip_frame`]) sharing one scale, a long ladder
     /// folded into columns so that no block is shorter than
     /// [`MIN_BLOCK_PIXELS`], and with several flips the walls marked.
-    fn new(label: &str, scene: &Scene, times: &[f64], frame: Option<(u32, u32)>) -> Result<Strip> {
+    fn new(
+        label: &str,
+        scene: &Scene,
+        times: &[f64],
+        frame: Option<(u32, u32)>,
+        fit: Option<(u32, u32)>,
+    ) -> Result<Strip> {
         let run = run::simulate(scene, times)?;
         let ladder = Ladder::new(scene.model.params()?);
         let traj = &run.trajectory;
@@ -187,6 +193,7 @@ impl Strip {
             view: None,
             marks,
             min_block_pixels: Some(MIN_BLOCK_PIXELS as f32),
+            fit,
         };
         Ok(Strip { run, ladder, opts })
     }
@@ -205,15 +212,27 @@ impl Strip {
     }
 }
 
+/// The box each of `count` strips must fit at a print style, one strip a
+/// row under the figure's title on the style's page
+/// ([`crate::render::Style::fit_box`]); none at screen.
+fn strip_fit(count: usize) -> Option<(u32, u32)> {
+    let (w, h) = crate::render::Style::current().fit_box()?;
+    let (m, gap) = (style::size::MARGIN as f32, style::size::GAP as f32);
+    let title = (style::size::TITLE * 1.8).floor();
+    let n = count.max(1) as f32;
+    let each = (h - 2.0 * m - title - (n - 1.0) * gap) / n;
+    Some(((w - 2.0 * m).floor() as u32, each.max(1.0).floor() as u32))
+}
+
 /// The strips of a filmstrip scene, one per panel, with their data.
 fn strips(scene: &Scene, frame: Option<(u32, u32)>) -> Result<Vec<(Strip, RunData)>> {
     let labels = panel_labels(scene);
-    scene
-        .runs()
-        .iter()
+    let runs = scene.runs();
+    let fit = strip_fit(runs.len());
+    runs.iter()
         .zip(&labels)
         .map(|((s, times), label)| {
-            let strip = Strip::new(label, s, times, frame)?;
+            let strip = Strip::new(label, s, times, frame, fit)?;
             let data = RunData::new(label, s, &strip.run);
             Ok((strip, data))
         })
@@ -233,7 +252,9 @@ fn strips_layout(scene: &Scene, panels: &[Panel]) -> Layout {
         .map(|p| p.image.pixel_size().0)
         .max()
         .unwrap_or(0);
-    let two = panels.len() > 2 && 2 * widest <= MAX_STRIP_ROW;
+    // At a print style the strips were fitted one a row.
+    let print = crate::render::Style::current().is_print();
+    let two = !print && panels.len() > 2 && 2 * widest <= MAX_STRIP_ROW;
     let layout = |columns| Layout::columns(columns).title(describe::title(scene));
     // Tall strips (of folded ladders) go side by side rather than make a
     // figure taller than a picture may be.
@@ -259,7 +280,7 @@ pub fn filmstrip_figure(
         data.push(d);
     }
     let layout = strips_layout(scene, &panels);
-    Ok((compose::compose_picture(&panels, &layout)?, data))
+    Ok((compose::compose_picture(&panels, &layout)?.fit_page(), data))
 }
 
 /// For a test of the filmstrips: where [`filmstrip_figure`] draws every
@@ -299,9 +320,45 @@ pub fn fitted_speed(arrivals: &[Option<f64>]) -> Option<f64> {
     sim::observables::wave_speed(arrivals).map(|v| 1000.0 * v)
 }
 
-/// The arrival-time chart (figure S6): t_n against n for each curve; one
-/// colour and marker per |α|, antikinks dashed.
+/// The least-squares line t = t₀ + n/v through the arrival times of blocks
+/// 2..N−1 (the points [`sim::observables::wave_speed`] fits), drawn over
+/// the blocks the wave reached: its two ends, or `None` when fewer than
+/// three blocks flipped.
+fn fitted_line(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
+    let v = sim::observables::wave_speed(arrivals)?;
+    let last = arrivals.len().saturating_sub(1);
+    let pts: Vec<(f64, f64)> = (1..last)
+        .filter_map(|i| arrivals[i].map(|t| (i as f64 + 1.0, t)))
+        .collect();
+    let n = pts.len() as f64;
+    let (mn, mt) = pts
+        .iter()
+        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
+    let reached: Vec<f64> = arrivals
+        .iter()
+        .enumerate()
+        .filter_map(|(i, t)| t.map(|_| i as f64 + 1.0))
+        .collect();
+    let (lo, hi) = (reached.first()?, reached.last()?);
+    Some(vec![(*lo, mt + (lo - mn) / v), (*hi, mt + (hi - mn) / v)])
+}
+
+/// The arrival-time chart (figure S6): t_n against n for every wave of
+/// every run (from the run's waves record), each wave its own colour of
+/// the palette and its own marker, with its fitted line (solid for a
+/// kink, dashed for an antikink) and its fitted speed in the legend.
 pub fn arrivals_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+    let (spec, data) = arrivals_chart(scene)?;
+    let (w, h) = crate::render::Style::current().frame((820, 560));
+    Ok((
+        Picture::from(charts::line_chart(&spec, w, h)?).fit_page(),
+        data,
+    ))
+}
+
+/// What [`arrivals_figure`] draws: the chart's series (each wave's marks,
+/// labelled, then its fitted line, unlabelled) and the runs' data.
+pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
     let runs = scene.runs();
     let labels = panel_labels(scene);
     let n_max = runs.iter().map(|(s, _)| s.model.n).max().unwrap_or(10);
@@ -310,42 +367,66 @@ pub fn arrivals_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
         Axis::new("arrival time tₙ / τ"),
     )
     .title(describe::title(scene));
-    let markers = [Marker::Circle, Marker::Square, Marker::Triangle];
-    let mut groups: Vec<f64> = Vec::new();
+    let markers = [
+        Marker::Circle,
+        Marker::Square,
+        Marker::Triangle,
+        Marker::Cross,
+    ];
+    let mut k = 0;
     let mut data = Vec::with_capacity(runs.len());
     for ((s, _), label) in runs.iter().zip(&labels) {
         let run = run::simulate(s, &[])?;
+        let traj = &run.trajectory;
         let alpha = s.model.alpha;
-        let k = match groups.iter().position(|g| *g == alpha.abs()) {
-            Some(k) => k,
-            None => {
-                groups.push(alpha.abs());
-                groups.len() - 1
-            }
-        };
-        let arrivals = &run.trajectory.arrival_times;
-        let pts: Vec<(f64, f64)> = arrivals
+        // Each wave of the run; a run without a waves record is one wave.
+        let kind_of = |w: &sim::waves::Wave| w.kind == sim::waves::WaveKind::Kink;
+        let mut waves: Vec<(bool, f64, Vec<Option<f64>>)> = traj
+            .waves
+            .waves
             .iter()
-            .enumerate()
-            .filter_map(|(i, t)| t.map(|t| (i as f64 + 1.0, t)))
+            .map(|w| (kind_of(w), w.launched_at, w.arrival_times.clone()))
             .collect();
-        let speed =
-            fitted_speed(arrivals).map_or("stalls".to_string(), |v| format!("{v:.1} blocks/1000τ"));
-        let name = if label.is_empty() {
-            wave_name(alpha)
-        } else {
-            label.clone()
-        };
-        let mut series = Series::line(format!("{name}: {speed}"), pts, style::series_color(k + 1))
-            .with_marker(markers[k % 3]);
-        if alpha < 0.0 {
-            series = series.dashed();
+        if waves.is_empty() {
+            waves.push((alpha > 0.0, 0.0, traj.arrival_times.clone()));
         }
-        spec = spec.series(series);
+        let several = waves.len() > 1;
+        for (kink, launched, arrivals) in waves {
+            let pts: Vec<(f64, f64)> = arrivals
+                .iter()
+                .enumerate()
+                .filter_map(|(i, t)| t.map(|t| (i as f64 + 1.0, t)))
+                .collect();
+            if pts.is_empty() {
+                continue;
+            }
+            let speed = fitted_speed(&arrivals)
+                .map_or("stalls".to_string(), |v| format!("{v:.1} blocks/1000τ"));
+            let word = if kink { "kink" } else { "antikink" };
+            let launched = describe::num(launched.round());
+            let name = match (several, label.is_empty()) {
+                (false, true) => wave_name(alpha),
+                (false, false) => label.clone(),
+                (true, true) => format!(
+                    "{word} from t/τ = {launched} (α = {}°)",
+                    describe::num(alpha)
+                ),
+                (true, false) => format!("{label}, {word} from t/τ = {launched}"),
+            };
+            let color = style::series_color(k + 1);
+            spec = spec.series(
+                Series::scatter(format!("{name}: {speed}"), pts, color, markers[k % 4])
+                    .with_width(1.5),
+            );
+            if let Some(line) = fitted_line(&arrivals) {
+                let fit = Series::line("", line, color).with_width(1.5);
+                spec = spec.series(if kink { fit } else { fit.dashed() });
+            }
+            k += 1;
+        }
         data.push(RunData::new(label, s, &run));
     }
-    let (w, h) = crate::render::Style::current().frame((820, 560));
-    Ok((charts::line_chart(&spec, w, h)?.into(), data))
+    Ok((spec, data))
 }
 
 /// Frame times of a movie: `frames` times evenly over [0, t_end].
@@ -414,6 +495,10 @@ fn folded_columns(ladder: &Ladder, states: &[Vec<f64>], region: Region) -> Vec<C
         .collect()
 }
 
+/// Height of the band above a folded movie's columns that holds their
+/// numbers, design pixels.
+const COLUMN_NUMBER_BAND: f32 = 1.3 * style::size::TICK;
+
 /// What a movie draws before any pixel: its run, its layout and the
 /// columns of its ladder with their cameras.
 struct MoviePlan {
@@ -467,8 +552,10 @@ impl MoviePlan {
             }
             Camera::Auto => {
                 let band = 1.6 * style::size::LABEL;
+                // A band above the columns for their first blocks' numbers.
                 let inner = Region {
-                    h: (region.h - band).max(1.0),
+                    y: region.y + COLUMN_NUMBER_BAND,
+                    h: (region.h - band - COLUMN_NUMBER_BAND).max(1.0),
                     ..region
                 };
                 let time = Region {
@@ -492,6 +579,36 @@ impl MoviePlan {
             time_band,
             lab_scale,
         })
+    }
+
+    /// Each column's number (its first block) and where it is drawn, top
+    /// centre in design pixels: none unless the ladder is folded.
+    fn column_numbers(&self) -> Vec<(String, (f32, f32))> {
+        if self.time_band.is_none() {
+            return Vec::new();
+        }
+        self.columns
+            .iter()
+            .map(|c| {
+                let at = (
+                    c.region.x + 0.5 * c.region.w,
+                    c.region.y - COLUMN_NUMBER_BAND,
+                );
+                (format!("{}", c.start + 1), at)
+            })
+            .collect()
+    }
+
+    /// The number of each column's first block above it, when the ladder
+    /// is folded (as filmstrips number theirs), onto the frames'
+    /// `background`.
+    fn number_columns(&self, background: &mut Pixmap) {
+        let mut canvas = crate::render::Raster::with_transform(background, self.layout.transform());
+        let color = style::mix(style::GREY, style::DARK, 0.3);
+        let align = (style::HAlign::Center, style::VAlign::Top);
+        for (text, at) in self.column_numbers() {
+            canvas.text(&text, at, style::size::TICK, color, align);
+        }
     }
 
     /// The snapshot of column `c` at frame `k`.
@@ -557,6 +674,22 @@ pub fn movie_block_pixels(scene: &Scene, opts: &MovieOptions) -> Result<(Region,
     Ok((plan.layout.ladder, frames))
 }
 
+/// For a test of folded movies: each column's number and where its text's
+/// top centre is, in the frame's pixels (none when the ladder is not
+/// folded).
+pub fn movie_column_numbers(
+    scene: &Scene,
+    opts: &MovieOptions,
+) -> Result<Vec<(String, (f32, f32))>> {
+    let plan = MoviePlan::new(scene, &opts.validated()?)?;
+    let s = plan.layout.scale;
+    Ok(plan
+        .column_numbers()
+        .into_iter()
+        .map(|(t, (x, y))| (t, (x * s, y * s)))
+        .collect())
+}
+
 /// A movie's files: its bytes in each format, the kymograph PNG, its data.
 pub type MovieFiles = (Vec<(Format, Vec<u8>)>, Vec<u8>, RunData);
 
@@ -591,7 +724,8 @@ pub fn movie_at(
     let layout = &plan.layout;
     let heat = layout.heat_map(&traj.states, n)?;
     // What every frame shares is drawn once; each frame starts from a copy.
-    let background = layout.background(&plan.title, scene.run.t_end, n)?;
+    let mut background = layout.background(&plan.title, scene.run.t_end, n)?;
+    plan.number_columns(&mut background);
     let mut canvas = style::white_pixmap(opts.width, opts.height)
         .ok_or_else(|| Error::failed("the movie frame does not fit in memory"))?;
     let frames = traj.states.len();
@@ -627,7 +761,8 @@ pub fn movie_frame(scene: &Scene, opts: &MovieOptions, k: usize) -> Result<Pixma
     let n = plan.ladder.n();
     let layout = &plan.layout;
     let heat = layout.heat_map(&traj.states, n)?;
-    let background = layout.background(&plan.title, scene.run.t_end, n)?;
+    let mut background = layout.background(&plan.title, scene.run.t_end, n)?;
+    plan.number_columns(&mut background);
     let mut canvas = background.clone();
     let shown = (k + 1) as f32 / frames as f32;
     plan.draw_frame(&mut canvas, &background, &heat, k, shown)?;
@@ -641,7 +776,10 @@ pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Picture, RunDat
     let title = describe::title(scene);
     let (w, h) = crate::render::Style::current().frame((820, 560));
     let image = kymograph_chart(&title, &run.trajectory, scene.model.n, w, h)?;
-    Ok((image.into(), RunData::with_kymograph(scene, run)))
+    Ok((
+        Picture::from(image).fit_page(),
+        RunData::with_kymograph(scene, run),
+    ))
 }
 
 /// The kymograph of sin θ_n of `traj`: blocks across, time down, as a

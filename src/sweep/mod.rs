@@ -199,7 +199,8 @@ pub fn outputs(
     let mut names = Vec::new();
     let mut files = Vec::with_capacity(formats.as_slice().len() + 2);
     if let Some(c) = chart {
-        let picture = crate::render::Picture::from(c);
+        // On the style's page (a slide: no taller than the slide).
+        let picture = crate::render::Picture::from(c).fit_page();
         for (f, bytes) in formats
             .as_slice()
             .iter()

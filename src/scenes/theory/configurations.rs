@@ -23,8 +23,9 @@ pub fn ground_states(input: &FigureInput) -> Result<Picture> {
     let plus = Ladder::new(input.params(n, b, alpha)?);
     let minus = Ladder::new(input.params(n, b, -alpha)?);
     let (qp, qm) = (plus.ground_state(), minus.ground_state());
+    let size = super::cells(LADDER_SIZE, 3);
     let with_arrows = |ladder: &Ladder, q: &[f64]| -> Result<Picture> {
-        let mut p = configuration(ladder, q, None, LADDER_SIZE)?;
+        let mut p = configuration(ladder, q, None, size)?;
         orientation_arrows(&mut p, ladder, q)?;
         Ok(p)
     };
@@ -35,7 +36,7 @@ pub fn ground_states(input: &FigureInput) -> Result<Picture> {
         Panel::new(with_arrows(&minus, &qm)?)
             .label("(ii)")
             .caption(format!("α = {}", signed_deg(-alpha))),
-        Panel::new(configuration(&plus, &qp, Some(&qm), LADDER_SIZE)?)
+        Panel::new(configuration(&plus, &qp, Some(&qm), size)?)
             .label("(iii)")
             .caption("(i) over (ii) in grey"),
     ];
@@ -96,8 +97,16 @@ pub fn gapless(input: &FigureInput) -> Result<Picture> {
     let p = input.params(n, b, 0.0)?;
     let (a, q) = gapless_configuration(&p, n, b)?;
     let ladder = Ladder::new(p);
-    let snap = configuration(&ladder, &q, None, LADDER_SIZE)?;
-    let chart = gapless_potential(a, b)?;
+    // On a narrow page the chart goes under the ladder, as wide as the page.
+    let narrow = super::body_room().is_some_and(|r| r < 600.0);
+    let (size, chart_size) = if narrow {
+        let w = super::body_room().unwrap_or(560.0).floor() as u32;
+        ((160, 448), (w, w * 440 / 560))
+    } else {
+        (super::cells(LADDER_SIZE, 3), super::cells((560, 440), 1))
+    };
+    let snap = configuration(&ladder, &q, None, size)?;
+    let chart = gapless_potential(a, b, chart_size)?;
     let panels = vec![
         Panel::new(snap)
             .label("(a)")
@@ -106,18 +115,18 @@ pub fn gapless(input: &FigureInput) -> Result<Picture> {
             .label("(b)")
             .caption("a single minimum at θ = 0"),
     ];
-    let body = grid(&panels, 2)?;
+    let body = grid(&panels, if narrow { 1 } else { 2 })?;
     let notes = format!(
         "b/s = {b}, a = √(b² + 4s²) = {a:.3} s: the A links are as long as the diagonal of a \
          pair of flat blocks, the blocks lie flat (θ = 0) and the double well of Fig. 2c \
-         degenerates into one flat-bottomed minimum (U − U_{{min}} ∝ θ⁴): the bistability and \
+         degenerates into one flat-bottomed minimum (U − U_{{min}} grows as θ⁴): the bistability and \
          the gap ω₊(0) are lost."
     );
     frame(&input.title, &body, &notes, 760)
 }
 
 /// U(θ) for the gapless lengths with the minimum marked.
-fn gapless_potential(a: f64, b: f64) -> Result<Picture> {
+fn gapless_potential(a: f64, b: f64, (w, h): (u32, u32)) -> Result<Picture> {
     let points: Vec<(f64, f64)> = (0..=720)
         .filter_map(|k| {
             let th = -89.75 + 179.5 * k as f64 / 720.0;
@@ -136,7 +145,7 @@ fn gapless_potential(a: f64, b: f64) -> Result<Picture> {
         Marker::Circle,
     ));
     spec.legend = Legend::Auto;
-    Ok(line_chart(&spec, 560, 440)?.into())
+    Ok(line_chart(&spec, w, h)?.into())
 }
 
 /// A residual that is zero to rounding as "< 10⁻¹²", otherwise 2 decimals.
@@ -154,7 +163,7 @@ pub fn zero_modes(input: &FigureInput) -> Result<Picture> {
     let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha);
     let p = input.params(n, b, alpha)?;
     let ladder = Ladder::new(p);
-    let size = (200, 500);
+    let size = super::cells((200, 500), 4);
     let mut model = Vec::new();
     let mut paper = Vec::new();
     let mut residuals = Vec::new();

@@ -52,6 +52,48 @@ impl FigureInput {
     }
 }
 
+/// The width, in pixels, a figure's body may take at a print style (the
+/// composed page less its margins, [`crate::render::Style::fit_box`]);
+/// none at screen.
+fn body_room() -> Option<f32> {
+    let (w, _) = crate::render::Style::current().fit_box()?;
+    Some(w - 2.0 * size::MARGIN as f32)
+}
+
+/// The size of each of `columns` cells of a grid whose natural cell is
+/// `natural`: unchanged at screen; at a print style narrowed, aspect kept,
+/// so that the row fits [`body_room`].
+fn cells(natural: (u32, u32), columns: usize) -> (u32, u32) {
+    let Some(room) = body_room() else {
+        return natural;
+    };
+    let c = columns.max(1) as f32;
+    let w = ((room - (c - 1.0) * size::GAP as f32) / c).floor();
+    let w = w.min(natural.0 as f32).max(20.0);
+    let h = natural.1 as f32 * w / natural.0 as f32;
+    (w as u32, h.round() as u32)
+}
+
+/// How much a drawing `width` pixels wide is scaled down to fit
+/// [`body_room`] (1 at screen or when it fits).
+fn drawing_scale(width: f32) -> f32 {
+    body_room().map_or(1.0, |room| (room / width).min(1.0))
+}
+
+/// `body` scaled by `scale` (a drawing laid out for the screen, on a
+/// narrower page).
+fn scaled(body: &Picture, scale: f32) -> Picture {
+    if scale >= 1.0 {
+        return body.clone();
+    }
+    let (w, h) = (body.width() * scale, body.height() * scale);
+    let mut out = Picture::new(w.ceil(), h.ceil());
+    out.push(tiny_skia::Transform::from_scale(scale, scale));
+    body.draw(&mut out);
+    out.pop();
+    out
+}
+
 /// Renders one static figure at 100 %.
 pub fn render(figure: TheoryFigure, input: &FigureInput) -> Result<Pixmap> {
     picture(figure, input)?.to_pixmap()
@@ -59,6 +101,10 @@ pub fn render(figure: TheoryFigure, input: &FigureInput) -> Result<Pixmap> {
 
 /// One static figure as a picture (PNG at any scale, SVG, PDF).
 pub fn picture(figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {
+    Ok(drawn(figure, input)?.fit_page())
+}
+
+fn drawn(figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {
     match figure {
         TheoryFigure::UnitSchematic => schematic::unit(input),
         TheoryFigure::GravityPotential => plots::gravity_potential(input),
@@ -80,6 +126,7 @@ const NOTE_LINE: f32 = 1.35 * size::LABEL;
 fn frame(title: &str, body: &Picture, notes: &str, min_width: u32) -> Result<Picture> {
     let m = size::MARGIN;
     let (bw, bh) = body.pixel_size();
+    let min_width = crate::render::Style::current().frame((min_width, 1)).0;
     let width = (bw + 2 * m).max(min_width);
     let lines = style::wrap_text(notes, (width - 2 * m) as f32, size::LABEL);
     let title_h = (1.8 * size::TITLE) as u32;

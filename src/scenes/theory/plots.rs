@@ -167,11 +167,23 @@ pub fn dispersion(input: &FigureInput) -> Result<Picture> {
         .map(|s| s.closed_form_rescaled[1].max(s.numerical[1]))
         .fold(0.0, f64::max);
     let y_max = (top * 1.08 * 2.0).ceil() / 2.0;
+    // On a narrow page two panels a row, each half the page (six panels
+    // one a row would print taller than a page).
+    let (cols, size) = if narrow() {
+        let half =
+            (page_width(FIGURE_WIDTH) as f32 - 2.0 * size::MARGIN as f32 - size::GAP as f32) / 2.0;
+        (
+            2,
+            (half.floor() as u32, (half * 250.0 / 300.0).round() as u32),
+        )
+    } else {
+        (3, fit((300, 250)))
+    };
     let mut panels = Vec::new();
     for (l, d) in lines.iter().zip(&dots) {
-        panels.push(Panel::new(dispersion_panel(l, d, y_max)?));
+        panels.push(Panel::new(dispersion_panel(l, d, y_max, size)?));
     }
-    let mut body = grid(&panels, columns(3))?;
+    let mut body = grid(&panels, cols)?;
     body = stack(&body, &dispersion_key(body.pixel_size().0)?);
     let notes = "ω₀ = √(k/m) = 1/τ, I = m s²/4, constraint δv_{n} = (−1)ⁿ(s/2) sin α δθ_{n}. The printed closed form is √2 too small for this ω₀ \
                  (docs/paper-errata.md item 9): it is exact if ω₀ is read as √(2k/m). The \
@@ -185,6 +197,7 @@ fn dispersion_panel(
     lines: &DispersionCurve,
     dots: &DispersionCurve,
     y_max: f64,
+    (w, h): (u32, u32),
 ) -> Result<Picture> {
     let mut spec = ChartSpec::new(
         Axis::new("qb").range(-PI, PI),
@@ -210,7 +223,7 @@ fn dispersion_panel(
         spec = spec.series(Series::scatter("", pts, color, Marker::Circle).with_width(1.0));
     }
     spec.legend = Legend::Hidden;
-    chart(&spec, 300, 250)
+    Ok(line_chart(&spec, w, h)?.into())
 }
 
 /// The shared key of the dispersion panels: entries left to right, a new

@@ -18,8 +18,13 @@ const W: u32 = 880;
 const H: u32 = 620;
 const SCALE: f64 = 215.0;
 const ORIGIN: Pt = (470.0, 150.0);
-/// Annotation text size.
-const TEXT: f32 = 19.0;
+/// Annotation text size: 19 px, more where the drawing is scaled down to
+/// fit a print page (so that it prints at no less than the smallest print
+/// text).
+fn text_size() -> f32 {
+    let scale = super::drawing_scale(W as f32);
+    crate::render::compose::at_least_print_min(0.0).max(19.0 * scale) / scale
+}
 
 /// Pixel position of the model point [x (down), y (across)].
 fn px(p: [f64; 2]) -> Pt {
@@ -38,7 +43,7 @@ fn mid(a: Pt, b: Pt) -> Pt {
 }
 
 fn text(p: &mut Picture, s: &str, at: Pt, c: Rgb, align: (HAlign, VAlign)) {
-    p.text(s, at, TEXT, c, align);
+    p.text(s, at, text_size(), c, align);
 }
 
 const MIDDLE: (HAlign, VAlign) = (HAlign::Center, VAlign::Middle);
@@ -65,6 +70,7 @@ pub fn unit(input: &FigureInput) -> Result<Picture> {
          At θ = α: Δx = b − s sin α, Δy = s cos α, and the B link hangs straight down.",
         ladder.a
     );
+    let p = super::scaled(&p, super::drawing_scale(W as f32));
     frame(&input.title, &p, &notes, W)
 }
 
