@@ -72,6 +72,11 @@ pub struct Limits {
     pub movie_pixels: f64,
     /// Runs of one sweep. Default 10^5: a 10,000-run sweep passes.
     pub sweep_runs: f64,
+    /// Estimated operations of one theory figure (`theory::cost`, about a
+    /// nanosecond each on the project's machine). Default 6e10: about a
+    /// minute; Fig. 2d at N = 20,000 is 5.2 × 10^10, every figure of the
+    /// catalogue under 10^9.
+    pub theory_work: f64,
 }
 
 impl Default for Limits {
@@ -81,6 +86,7 @@ impl Default for Limits {
             block_samples: 5e7,
             movie_pixels: 5e9,
             sweep_runs: 1e5,
+            theory_work: 6e10,
         }
     }
 }
@@ -97,14 +103,17 @@ pub enum Resource {
     MoviePixels,
     /// Runs of a sweep.
     SweepRuns,
+    /// Estimated operations of a theory figure.
+    TheoryWork,
 }
 
 impl Resource {
-    pub const ALL: [Self; 4] = [
+    pub const ALL: [Self; 5] = [
         Self::BlockSteps,
         Self::BlockSamples,
         Self::MoviePixels,
         Self::SweepRuns,
+        Self::TheoryWork,
     ];
 
     /// The unit of the count, for messages ("block-steps").
@@ -114,6 +123,7 @@ impl Resource {
             Self::BlockSamples => "block-samples",
             Self::MoviePixels => "pixels",
             Self::SweepRuns => "runs",
+            Self::TheoryWork => "operations",
         }
     }
 
@@ -124,6 +134,7 @@ impl Resource {
             Self::BlockSamples => "samples × N",
             Self::MoviePixels => "frames × width × height",
             Self::SweepRuns => "runs of a sweep",
+            Self::TheoryWork => "estimated operations of a theory figure",
         }
     }
 }
@@ -185,6 +196,7 @@ impl Limits {
             block_samples: f64::INFINITY,
             movie_pixels: f64::INFINITY,
             sweep_runs: f64::INFINITY,
+            theory_work: f64::INFINITY,
         }
     }
 
@@ -195,6 +207,7 @@ impl Limits {
             Resource::BlockSamples => self.block_samples,
             Resource::MoviePixels => self.movie_pixels,
             Resource::SweepRuns => self.sweep_runs,
+            Resource::TheoryWork => self.theory_work,
         }
     }
 
@@ -205,6 +218,7 @@ impl Limits {
             Resource::BlockSamples => self.block_samples = cap,
             Resource::MoviePixels => self.movie_pixels = cap,
             Resource::SweepRuns => self.sweep_runs = cap,
+            Resource::TheoryWork => self.theory_work = cap,
         }
     }
 
