@@ -467,8 +467,7 @@ fn movie_encoders_without_threads_encode_inline() {
     let dir = TempDir::new("nproc-movie");
     let d = dir.path().to_str().unwrap();
     let args = [
-        "movie", "4", "--frames", "4", "--width", "64", "--height", "48", "--format", formats,
-        "--out", d,
+        "movie", "4", "--frames", "4", "--size", "64x64", "--format", formats, "--out", d,
     ];
     let out = ladder_without_threads(&args, &dir);
     let err = stderr_of(&out);
@@ -599,8 +598,6 @@ fn names_and_axes_are_refused_in_one_line() {
     let d = dir.path().to_str().unwrap();
     let args = ["sweep", "--name", "a\nb", "--alpha=-50", "--out", d];
     one_line(&args, &ladder(&args), 2, &["--name", "a\\nb"]);
-    let args = ["figure", "3", "--name", "x\ry", "--out", d];
-    one_line(&args, &ladder(&args), 2, &["--name"]);
     let args = ["sweep", "--alpha=0:2000000:1", "--out", d];
     one_line(
         &args,
