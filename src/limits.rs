@@ -76,6 +76,11 @@ pub struct Limits {
     /// work ([`Limits::check_data_bytes`]). Default 2e9: a 200-frame movie
     /// of N = 50,000 (about 1.5 GB).
     pub data_bytes: f64,
+    /// Estimated operations of one theory figure (`theory::cost`, about a
+    /// nanosecond each on the project's machine). Default 6e10: about a
+    /// minute; Fig. 2d at N = 20,000 is 5.2 × 10^10, every figure of the
+    /// catalogue under 10^9.
+    pub theory_work: f64,
 }
 
 impl Default for Limits {
@@ -86,6 +91,7 @@ impl Default for Limits {
             movie_pixels: 5e9,
             sweep_runs: 1e5,
             data_bytes: 2e9,
+            theory_work: 6e10,
         }
     }
 }
@@ -104,6 +110,8 @@ pub enum Resource {
     SweepRuns,
     /// Bytes of a data file.
     DataBytes,
+    /// Estimated operations of a theory figure.
+    TheoryWork,
 }
 
 impl Resource {
@@ -113,6 +121,7 @@ impl Resource {
         Self::MoviePixels,
         Self::SweepRuns,
         Self::DataBytes,
+        Self::TheoryWork,
     ];
 
     /// The unit of the count, for messages ("block-steps").
@@ -123,6 +132,7 @@ impl Resource {
             Self::MoviePixels => "pixels",
             Self::SweepRuns => "runs",
             Self::DataBytes => "bytes",
+            Self::TheoryWork => "operations",
         }
     }
 
@@ -134,6 +144,7 @@ impl Resource {
             Self::MoviePixels => "frames × width × height",
             Self::SweepRuns => "runs of a sweep",
             Self::DataBytes => "bytes of a data file",
+            Self::TheoryWork => "estimated operations of a theory figure",
         }
     }
 }
@@ -196,6 +207,7 @@ impl Limits {
             movie_pixels: f64::INFINITY,
             sweep_runs: f64::INFINITY,
             data_bytes: f64::INFINITY,
+            theory_work: f64::INFINITY,
         }
     }
 
@@ -207,6 +219,7 @@ impl Limits {
             Resource::MoviePixels => self.movie_pixels,
             Resource::SweepRuns => self.sweep_runs,
             Resource::DataBytes => self.data_bytes,
+            Resource::TheoryWork => self.theory_work,
         }
     }
 
@@ -218,6 +231,7 @@ impl Limits {
             Resource::MoviePixels => self.movie_pixels = cap,
             Resource::SweepRuns => self.sweep_runs = cap,
             Resource::DataBytes => self.data_bytes = cap,
+            Resource::TheoryWork => self.theory_work = cap,
         }
     }
 

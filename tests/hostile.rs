@@ -412,19 +412,14 @@ fn max_runs_reads_like_the_other_caps_and_a_refused_sweep_leaves_nothing() {
 
 // ------------------------------------------------------- 5. the machine says no
 
-/// When no thread can be created (RLIMIT_NPROC of 1, set in the child
-/// before it runs ladder; as root the limit is not enforced, so the child
-/// first becomes user `nobody`), the rayon pool panicked ("The global
-/// thread pool has not been initialized"): now ladder runs on the threads
-/// it can get (here its own) and says so in one note.
-#[test]
-fn no_threads_to_spare_is_not_a_panic() {
+/// `ladder ARGS` with no thread to spare: RLIMIT_NPROC of 1, set in the
+/// child before it runs ladder (as root the limit is not enforced, so the
+/// child first becomes user `nobody`; `dir` must be writable for it).
+fn ladder_without_threads(args: &[&str], dir: &TempDir) -> Output {
     use std::os::unix::fs::PermissionsExt;
     use std::os::unix::process::CommandExt;
-    let dir = TempDir::new("nproc");
     std::fs::set_permissions(dir.path(), std::fs::Permissions::from_mode(0o777)).unwrap();
-    let d = dir.path().to_str().unwrap();
-    let mut cmd = ladder_cmd(&["figure", "3", "--out", d]);
+    let mut cmd = ladder_cmd(args);
     // SAFETY: only async-signal-safe calls between fork and exec.
     unsafe {
         cmd.pre_exec(|| {
@@ -441,10 +436,190 @@ fn no_threads_to_spare_is_not_a_panic() {
             Ok(())
         });
     }
-    let out = cmd.output().unwrap();
+    cmd.output().unwrap()
+}
+
+/// When no thread can be created the rayon pool panicked ("The global
+/// thread pool has not been initialized"): now ladder runs on the threads
+/// it can get (here its own) and says so in one note.
+#[test]
+fn no_threads_to_spare_is_not_a_panic() {
+    let dir = TempDir::new("nproc");
+    let d = dir.path().to_str().unwrap();
+    let out = ladder_without_threads(&["figure", "3", "--out", d], &dir);
     let err = stderr_of(&out);
     assert!(!err.contains("panicked"), "{err}");
     assert_eq!(out.status.code(), Some(0), "{err}");
     assert!(err.contains("running with"), "{err}");
     assert!(dir.join("figure-3.png").is_file());
+}
+
+/// The GIF and MP4 encoders each ran on a thread of their own, started
+/// with `std::thread::spawn`, which panics when the machine refuses it:
+/// now they encode on the caller's thread, and the movie is the same.
+#[test]
+fn movie_encoders_without_threads_encode_inline() {
+    let formats = if cfg!(feature = "mp4") {
+        "gif,mp4"
+    } else {
+        "gif"
+    };
+    let dir = TempDir::new("nproc-movie");
+    let d = dir.path().to_str().unwrap();
+    let args = [
+        "movie", "4", "--frames", "4", "--size", "64x64", "--format", formats, "--out", d,
+    ];
+    let out = ladder_without_threads(&args, &dir);
+    let err = stderr_of(&out);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    // The same bytes as with threads.
+    let free = TempDir::new("free-movie");
+    let f = free.path().to_str().unwrap();
+    let mut a = args.to_vec();
+    *a.last_mut().unwrap() = f;
+    ok(&a, &ladder(&a));
+    for ext in formats.split(',') {
+        let name = format!("movie-4.{ext}");
+        let inline = std::fs::read(dir.join(&name)).unwrap();
+        assert_eq!(inline, std::fs::read(free.join(&name)).unwrap(), "{name}");
+    }
+}
+
+// ------------------------------------------------------- 6. the user's words
+
+/// A file in `dir` with a figure scene: `extra` lines at the top, then
+/// `output` as its `[output]` table.
+fn scene_file(dir: &TempDir, name: &str, top: &str, output: &str) -> String {
+    let p = dir.join(format!("{name}.toml"));
+    std::fs::write(
+        &p,
+        format!("name = \"{name}\"\n{top}\n[output]\n{output}\n"),
+    )
+    .unwrap();
+    p.to_str().unwrap().to_string()
+}
+
+/// A control character in a title or a label became "internal SVG could
+/// not be parsed", exit 1: it is the user's input, refused where it is
+/// written (file, key), exit 2, by `render` and `render --check`.
+#[test]
+fn a_control_character_in_a_title_is_located() {
+    let dir = TempDir::new("control");
+    let o = dir.join("out");
+    let o = o.to_str().unwrap();
+    let theory = "kind = \"theory\"\nfigure = \"unit-schematic\"";
+    for (name, top, key) in [
+        ("bell", "title = \"ring\\u0007 ring\"", "title"),
+        ("esc", "label = \"Fig.\\u001b[31m\"", "label"),
+    ] {
+        let f = scene_file(&dir, name, top, theory);
+        for args in [
+            vec!["render", &f, "--out", o],
+            vec!["render", "--check", &f],
+        ] {
+            one_line(
+                &args,
+                &ladder(&args),
+                2,
+                &[&format!("{name}.toml"), key, "control"],
+            );
+        }
+    }
+}
+
+/// A GIF's delays are 16-bit counts of 1/100 s: `--fps 0.001` asked for a
+/// frame every 1000 s, and the GIF showed each for 655.35 s. Refused, with
+/// the range that is honoured.
+#[test]
+fn a_frame_rate_past_the_gifs_delays_is_refused_with_the_range() {
+    let dir = TempDir::new("fps");
+    let d = dir.path().to_str().unwrap();
+    let args = ["movie", "4", "--fps", "0.001", "--frames", "2", "--out", d];
+    one_line(&args, &ladder(&args), 2, &["0.0016", "50", "0.001"]);
+    assert!(names(dir.path()).is_empty());
+    let args = ["movie", "4", "--fps", "0.002", "--frames", "2", "--out", d];
+    ok(&args, &ladder(&args));
+}
+
+/// `render --check` passed theory files that rendering then refused (a
+/// figure without the list it draws one curve of): both run the same
+/// checks now, and refuse the same files with the same located line.
+#[test]
+fn render_check_refuses_what_render_refuses() {
+    let dir = TempDir::new("check");
+    let o = dir.join("out");
+    let o = o.to_str().unwrap();
+    for (name, output, key) in [
+        (
+            "nolist",
+            "kind = \"theory\"\nfigure = \"dispersion\"",
+            "output.alphas",
+        ),
+        (
+            "noedge",
+            "kind = \"theory\"\nfigure = \"edge-mode\"\nalphas = []",
+            "output.alphas",
+        ),
+        (
+            "nocurve",
+            "kind = \"theory\"\nfigure = \"gravity-potential\"",
+            "output.a_over_b",
+        ),
+        (
+            "nomode",
+            "kind = \"theory\"\nfigure = \"zero-modes\"",
+            "output.modes",
+        ),
+        (
+            "ab",
+            "kind = \"theory\"\nfigure = \"gravity-potential\"\na_over_b = [0.5]",
+            "output.a_over_b",
+        ),
+    ] {
+        let f = scene_file(&dir, name, "", output);
+        let check = ["render", "--check", f.as_str()];
+        let render = ["render", f.as_str(), "--out", o];
+        let (c, r) = (ladder(&check), ladder(&render));
+        one_line(&check, &c, 2, &[&format!("{name}.toml"), key]);
+        assert_eq!(
+            stderr_of(&c),
+            stderr_of(&r),
+            "{name}: check and render differ"
+        );
+    }
+}
+
+/// A newline in `--name` split the error line; the per-axis bound named no
+/// way out.
+#[test]
+fn names_and_axes_are_refused_in_one_line() {
+    let dir = TempDir::new("words");
+    let d = dir.path().to_str().unwrap();
+    let args = ["sweep", "--name", "a\nb", "--alpha=-50", "--out", d];
+    one_line(&args, &ladder(&args), 2, &["--name", "a\\nb"]);
+    let args = ["sweep", "--alpha=0:2000000:1", "--out", d];
+    one_line(
+        &args,
+        &ladder(&args),
+        2,
+        &["1000000", "no flag raises", "coarser step"],
+    );
+}
+
+/// `ladder scene 3` prints figure 3; movie 3 was out of reach. Now
+/// `ladder scene movie 3` (or `movie-3`) prints it.
+#[test]
+fn scene_prints_a_movie_whose_id_is_also_a_figures() {
+    let figure = ladder(&["scene", "3"]);
+    ok(&["scene", "3"], &figure);
+    let movie = ladder(&["scene", "movie", "3"]);
+    ok(&["scene", "movie", "3"], &movie);
+    assert_ne!(figure.stdout, movie.stdout);
+    let text = String::from_utf8_lossy(&movie.stdout);
+    assert!(text.contains("Movie 3"), "{text}");
+    assert_eq!(ladder(&["scene", "movie-3"]).stdout, movie.stdout);
+    assert_eq!(ladder(&["scene", "figure", "3"]).stdout, figure.stdout);
+    let args = ["scene", "film", "3"];
+    one_line(&args, &ladder(&args), 2, &["film", "movie 3"]);
 }

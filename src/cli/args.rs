@@ -38,6 +38,7 @@ pub struct LimitArgs {
     pub max_block_samples: Option<f64>,
     pub max_pixels: Option<f64>,
     pub max_data_bytes: Option<f64>,
+    pub max_theory_work: Option<f64>,
 }
 
 /// The caps on a simulation's cost, on the commands that simulate. A
@@ -68,6 +69,16 @@ pub struct PixelLimitArgs {
     pub max_pixels: Option<f64>,
 }
 
+/// The cap on a theory figure's cost, on the commands that draw them.
+#[derive(Args, Debug, Clone, Default)]
+#[command(next_help_heading = "Limits (docs/limits.md)")]
+pub struct TheoryLimitArgs {
+    /// Most estimated operations of one theory figure (about 1 ns each;
+    /// Fig. 2d at N = 20000 is 5.2e10) [default: 6e10]
+    #[arg(long, value_name = "X")]
+    pub max_theory_work: Option<f64>,
+}
+
 impl Command {
     /// The caps the command's flags set (the defaults for a command that
     /// has none).
@@ -86,6 +97,12 @@ impl Command {
             max_block_samples: sim.and_then(|l| l.max_block_samples),
             max_pixels: pixels.and_then(|l| l.max_pixels),
             max_data_bytes: sim.and_then(|l| l.max_data_bytes),
+            max_theory_work: match self {
+                Self::Figure(a) => a.theory_limits.max_theory_work,
+                Self::Render(a) => a.theory_limits.max_theory_work,
+                Self::All(a) => a.theory_limits.max_theory_work,
+                _ => None,
+            },
         }
     }
 }
@@ -408,6 +425,8 @@ pub struct FigureArgs {
     pub figure_format: FigureFormat,
     #[command(flatten)]
     pub limits: SimLimitArgs,
+    #[command(flatten)]
+    pub theory_limits: TheoryLimitArgs,
 }
 
 /// `--format` and `--scale` of figures.
@@ -512,12 +531,16 @@ pub struct RenderArgs {
     pub limits: SimLimitArgs,
     #[command(flatten)]
     pub pixel_limits: PixelLimitArgs,
+    #[command(flatten)]
+    pub theory_limits: TheoryLimitArgs,
 }
 
 #[derive(Args, Debug)]
 pub struct SceneArgs {
-    /// Built-in figure or movie ID (see `ladder list`)
-    pub id: String,
+    /// Built-in figure or movie ID (see `ladder list`), optionally after
+    /// its kind: `3` is figure 3; `movie 3` (or `movie-3`) is movie 3
+    #[arg(num_args = 1..=2, value_name = "[KIND] ID", required = true)]
+    pub id: Vec<String>,
 }
 
 #[derive(Args, Debug)]
@@ -533,6 +556,8 @@ pub struct AllArgs {
     pub limits: SimLimitArgs,
     #[command(flatten)]
     pub pixel_limits: PixelLimitArgs,
+    #[command(flatten)]
+    pub theory_limits: TheoryLimitArgs,
 }
 
 #[derive(Args, Debug)]

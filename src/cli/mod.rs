@@ -79,6 +79,7 @@ impl LimitArgs {
             Resource::MoviePixels => "--max-pixels",
             Resource::SweepRuns => "--max-runs",
             Resource::DataBytes => "--max-data-bytes",
+            Resource::TheoryWork => "--max-theory-work",
         }
     }
 
@@ -91,6 +92,7 @@ impl LimitArgs {
             (Resource::BlockSamples, self.max_block_samples),
             (Resource::MoviePixels, self.max_pixels),
             (Resource::DataBytes, self.max_data_bytes),
+            (Resource::TheoryWork, self.max_theory_work),
         ] {
             if let Some(v) = value {
                 if v.is_nan() || v <= 0.0 {
@@ -175,7 +177,7 @@ pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
         Command::Completions(args) => output::print(&completions(args.shell)?),
         Command::Man => output::print(&man_page()?),
         Command::Scene(args) => {
-            let entry = catalog::find_any(&args.id)?;
+            let entry = scene_entry(&args.id)?;
             output::print(&scene::file::to_toml(&entry.scene)?)
         }
         Command::Figure(args) => {
@@ -208,6 +210,10 @@ pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
             let sources: Vec<String> = args.files.iter().map(|f| f.display().to_string()).collect();
             check_distinct_outputs(&scenes, &sources, &args.out.out, &outputs)?;
             if args.check {
+                // The checks rendering makes before its work, in one place.
+                for (file, s) in args.files.iter().zip(&scenes) {
+                    scenes::check(s, &opts, &outputs).map_err(|e| in_file(file, e))?;
+                }
                 for (file, s) in args.files.iter().zip(&scenes) {
                     output::print(&format!(
                         "{}: {} {} ({} run{}): {}\n",
@@ -235,6 +241,44 @@ pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
                 .collect();
             render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, true)
         }
+    }
+}
+
+/// `e` from the scene of `file`, the file named before its message (an
+/// error of bad input; the others are the run's own).
+fn in_file(file: &std::path::Path, e: Error) -> Error {
+    match e {
+        Error::BadInput(m) => Error::bad_input(format!("{}: {m}", file.display())),
+        e => e,
+    }
+}
+
+/// The catalogue entry `ladder scene` names: `ID` (a figure first, then a
+/// movie), `KIND ID` or `KIND-ID` (KIND `figure` or `movie`).
+fn scene_entry(words: &[String]) -> Result<&'static Entry> {
+    let kind_of = |word: &str| match word.to_ascii_lowercase().as_str() {
+        "figure" | "fig" => Some(Kind::Figure),
+        "movie" => Some(Kind::Movie),
+        _ => None,
+    };
+    match words {
+        [kind, id] => match kind_of(kind) {
+            Some(k) => catalog::find(k, id),
+            None => Err(Error::bad_input(format!(
+                "'{}' is not a kind of scene: say `figure {id}` or `movie {id}`",
+                kind.escape_debug()
+            ))),
+        },
+        [id] => match id
+            .split_once('-')
+            .and_then(|(k, rest)| Some((kind_of(k)?, rest)))
+        {
+            Some((k, rest)) => catalog::find(k, rest),
+            None => catalog::find_any(id),
+        },
+        _ => Err(Error::bad_input(
+            "ladder scene takes an ID, or a kind and an ID",
+        )),
     }
 }
 
@@ -809,6 +853,10 @@ fn render_into(
         targets.push(out.join("index.html"));
     }
     output::check_targets(&targets)?;
+    // Every scene's checks and costs before any is rendered.
+    for s in scenes {
+        scenes::check(s, movie, outputs).map_err(|e| with_divergence_hint(e, s, words))?;
+    }
     warn_replaced(scenes, out)?;
     let start = Instant::now();
     // One movie: a bar over its frames; several scenes: over the scenes.

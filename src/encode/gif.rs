@@ -149,41 +149,73 @@ pub struct GifWriter {
 
 /// A thread owning the encoder: frames go in through a channel, in order,
 /// and the GIF bytes come out when the channel closes. The output does not
-/// depend on the timing of the two threads.
-struct LzwStage {
-    frames: std::sync::mpsc::SyncSender<gif::Frame<'static>>,
-    done: std::thread::JoinHandle<Result<Vec<u8>>>,
+/// depend on the timing of the two threads. Where no thread can be started
+/// (a limit on processes), the caller's thread compresses each frame as it
+/// comes, with the same bytes out.
+enum LzwStage {
+    Thread {
+        frames: std::sync::mpsc::SyncSender<gif::Frame<'static>>,
+        done: std::thread::JoinHandle<Result<Vec<u8>>>,
+    },
+    Inline(gif::Encoder<Vec<u8>>),
 }
 
 /// Frames that may wait for compression: bounds the memory held.
 const LZW_QUEUE: usize = 16;
 
+/// Compresses one frame and appends it.
+fn write_frame(encoder: &mut gif::Encoder<Vec<u8>>, mut frame: gif::Frame<'static>) -> Result<()> {
+    frame.make_lzw_pre_encoded();
+    encoder
+        .write_lzw_pre_encoded_frame(&frame)
+        .map_err(gif_error)
+}
+
 impl LzwStage {
-    fn start(mut encoder: gif::Encoder<Vec<u8>>) -> Self {
+    fn start(encoder: gif::Encoder<Vec<u8>>) -> Self {
         let (frames, inbox) = std::sync::mpsc::sync_channel::<gif::Frame<'static>>(LZW_QUEUE);
-        let done = std::thread::spawn(move || {
-            for mut frame in inbox {
-                frame.make_lzw_pre_encoded();
-                encoder
-                    .write_lzw_pre_encoded_frame(&frame)
-                    .map_err(gif_error)?;
+        // The encoder goes to the thread through a slot, so that it stays
+        // here when the thread cannot be started.
+        let slot = std::sync::Arc::new(std::sync::Mutex::new(Some(encoder)));
+        let theirs = std::sync::Arc::clone(&slot);
+        let spawned = std::thread::Builder::new()
+            .name("gif-lzw".into())
+            .spawn(move || {
+                let taken = theirs.lock().unwrap_or_else(|p| p.into_inner()).take();
+                let mut encoder =
+                    taken.ok_or_else(|| Error::failed("the GIF encoder was not handed over"))?;
+                for frame in inbox {
+                    write_frame(&mut encoder, frame)?;
+                }
+                encoder.into_inner().map_err(gif_error)
+            });
+        match spawned {
+            Ok(done) => Self::Thread { frames, done },
+            Err(_) => {
+                let encoder = slot.lock().unwrap_or_else(|p| p.into_inner()).take();
+                Self::Inline(encoder.expect("the thread never started, so it took nothing"))
             }
-            encoder.into_inner().map_err(gif_error)
-        });
-        Self { frames, done }
+        }
     }
 
-    fn send(&self, frame: gif::Frame<'static>) -> Result<()> {
-        self.frames
-            .send(frame)
-            .map_err(|_| Error::failed("the GIF encoder stopped early"))
+    fn send(&mut self, frame: gif::Frame<'static>) -> Result<()> {
+        match self {
+            Self::Thread { frames, .. } => frames
+                .send(frame)
+                .map_err(|_| Error::failed("the GIF encoder stopped early")),
+            Self::Inline(encoder) => write_frame(encoder, frame),
+        }
     }
 
     fn finish(self) -> Result<Vec<u8>> {
-        drop(self.frames);
-        self.done
-            .join()
-            .map_err(|_| Error::failed("the GIF encoder thread panicked"))?
+        match self {
+            Self::Thread { frames, done } => {
+                drop(frames);
+                done.join()
+                    .map_err(|_| Error::failed("the GIF encoder thread panicked"))?
+            }
+            Self::Inline(encoder) => encoder.into_inner().map_err(gif_error),
+        }
     }
 }
 
@@ -362,11 +394,24 @@ fn changed_rect(prev: &[u8], cur: &[u8], w: usize) -> Option<Rect> {
 /// plays as written. Faster movies are refused, not slowed down or thinned.
 pub const GIF_MAX_FPS: f64 = 50.0;
 
+/// Lowest frame rate a GIF plays at its real speed: a frame's delay is a
+/// 16-bit count of hundredths of a second, at most 655.35 s, so one frame
+/// per 655 s (0.0016 frames per second, rounded up so every delay fits).
+/// Slower movies are refused, not played faster.
+pub const GIF_MIN_FPS: f64 = 0.0016;
+
 /// Refuses frame rates a GIF cannot play at their real speed.
 pub(crate) fn check_gif_fps(fps: f64) -> Result<()> {
     if !(fps.is_finite() && fps > 0.0) {
         return Err(Error::bad_input(format!(
             "the frame rate must be a number above 0, got {fps}"
+        )));
+    }
+    if fps < GIF_MIN_FPS {
+        return Err(Error::bad_input(format!(
+            "a GIF plays at least {GIF_MIN_FPS} frames per second (a frame shows at most \
+             655.35 s: delays are 16-bit counts of 1/100 s), got {fps}; ask for \
+             {GIF_MIN_FPS} to {GIF_MAX_FPS}, or for MP4"
         )));
     }
     if fps > GIF_MAX_FPS {
@@ -415,6 +460,12 @@ mod tests {
         let w = GifWriter::new(4, 4, 30.0).unwrap();
         let total: u32 = (0..30).map(|k| w.delay(k) as u32).sum();
         assert_eq!(total, 100);
+        // At the slowest rate allowed every delay fits its 16 bits
+        // (100 / 0.0016 = 62,500 hundredths, under 65,535); below it the
+        // delay would be cut to 655.35 s and the movie play faster.
+        let slow = GifWriter::new(4, 4, GIF_MIN_FPS).unwrap();
+        assert!((0..3).all(|k| f64::from(slow.delay(k)) == (100.0 / GIF_MIN_FPS).round()));
+        assert!(check_gif_fps(100.0 / 65_536.0).is_err());
     }
 
     #[test]

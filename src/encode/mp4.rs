@@ -35,10 +35,25 @@ pub struct Mp4Writer {
     width: u32,
     height: u32,
     frames: usize,
-    to_encoder: SyncSender<Yuv420>,
-    /// Buffers the encoder has finished with, for reuse.
-    spare: Receiver<Yuv420>,
-    done: Option<JoinHandle<Result<Mp4Track>>>,
+    stage: Stage,
+}
+
+/// Where frames are encoded: on a thread of its own while the caller draws
+/// the next ones, or, where no thread can be started (a limit on
+/// processes), on the caller's thread as each comes (the same bytes).
+enum Stage {
+    Thread {
+        to_encoder: SyncSender<Yuv420>,
+        /// Buffers the encoder has finished with, for reuse.
+        spare: Receiver<Yuv420>,
+        done: Option<JoinHandle<Result<Mp4Track>>>,
+    },
+    Inline {
+        encoder: Box<Encoder>,
+        track: Mp4Track,
+        yuv: Option<Yuv420>,
+        sample: Vec<u8>,
+    },
 }
 
 impl Mp4Writer {
@@ -78,22 +93,17 @@ impl Mp4Writer {
             .vui(VuiConfig::bt709());
         let encoder = Encoder::with_api_config(OpenH264API::from_source(), config)
             .map_err(|e| Error::failed(format!("the H.264 encoder did not start: {e}")))?;
-        let (to_encoder, inbox) = sync_channel::<Yuv420>(QUEUE);
-        let (give_back, spare) = sync_channel::<Yuv420>(QUEUE + 2);
         let track = Mp4Track {
             width,
             height,
             fps,
             ..Mp4Track::default()
         };
-        let done = std::thread::spawn(move || encode_all(encoder, track, inbox, give_back));
         Ok(Self {
             width,
             height,
             frames: 0,
-            to_encoder,
-            spare,
-            done: Some(done),
+            stage: Stage::start(encoder, track),
         })
     }
 
@@ -114,14 +124,32 @@ impl Mp4Writer {
             )));
         }
         let (w, h) = (self.width as usize, self.height as usize);
-        let mut yuv = self.spare.try_recv().unwrap_or_else(|_| Yuv420::new(w, h));
-        rgba_to_yuv420(pixmap.data(), w, h, &mut yuv);
-        if self.to_encoder.send(yuv).is_err() {
-            // The encoder thread ended: report why.
-            return Err(match self.done.take().map(JoinHandle::join) {
-                Some(Ok(Err(e))) => e,
-                _ => Error::failed("the H.264 encoder stopped early"),
-            });
+        match &mut self.stage {
+            Stage::Thread {
+                to_encoder,
+                spare,
+                done,
+            } => {
+                let mut yuv = spare.try_recv().unwrap_or_else(|_| Yuv420::new(w, h));
+                rgba_to_yuv420(pixmap.data(), w, h, &mut yuv);
+                if to_encoder.send(yuv).is_err() {
+                    // The encoder thread ended: report why.
+                    return Err(match done.take().map(JoinHandle::join) {
+                        Some(Ok(Err(e))) => e,
+                        _ => Error::failed("the H.264 encoder stopped early"),
+                    });
+                }
+            }
+            Stage::Inline {
+                encoder,
+                track,
+                yuv,
+                sample,
+            } => {
+                let yuv = yuv.get_or_insert_with(|| Yuv420::new(w, h));
+                rgba_to_yuv420(pixmap.data(), w, h, yuv);
+                encode_one(encoder, track, yuv, sample)?;
+            }
         }
         self.frames += 1;
         Ok(())
@@ -129,13 +157,17 @@ impl Mp4Writer {
 
     /// Finishes the stream and returns the MP4 bytes.
     pub fn finish(self) -> Result<Vec<u8>> {
-        drop(self.to_encoder);
-        let done = self
-            .done
-            .ok_or_else(|| Error::failed("the H.264 encoder stopped early"))?;
-        let track = done
-            .join()
-            .map_err(|_| Error::failed("the H.264 encoder thread panicked"))??;
+        let track = match self.stage {
+            Stage::Thread {
+                to_encoder, done, ..
+            } => {
+                drop(to_encoder);
+                let done = done.ok_or_else(|| Error::failed("the H.264 encoder stopped early"))?;
+                done.join()
+                    .map_err(|_| Error::failed("the H.264 encoder thread panicked"))??
+            }
+            Stage::Inline { track, .. } => track,
+        };
         if track.sizes.len() != self.frames {
             return Err(Error::failed(format!(
                 "the H.264 encoder returned {} of {} frames",
@@ -144,6 +176,43 @@ impl Mp4Writer {
             )));
         }
         mp4_file(&track)
+    }
+}
+
+impl Stage {
+    /// The encoder on a thread of its own, or inline where none can start.
+    fn start(encoder: Encoder, track: Mp4Track) -> Self {
+        let (to_encoder, inbox) = sync_channel::<Yuv420>(QUEUE);
+        let (give_back, spare) = sync_channel::<Yuv420>(QUEUE + 2);
+        // The encoder and track go to the thread through a slot, so that
+        // they stay here when the thread cannot be started.
+        let slot = std::sync::Arc::new(std::sync::Mutex::new(Some((encoder, track))));
+        let theirs = std::sync::Arc::clone(&slot);
+        let spawned = std::thread::Builder::new()
+            .name("h264".into())
+            .spawn(move || {
+                let taken = theirs.lock().unwrap_or_else(|p| p.into_inner()).take();
+                let (encoder, track) =
+                    taken.ok_or_else(|| Error::failed("the H.264 encoder was not handed over"))?;
+                encode_all(encoder, track, inbox, give_back)
+            });
+        match spawned {
+            Ok(done) => Self::Thread {
+                to_encoder,
+                spare,
+                done: Some(done),
+            },
+            Err(_) => {
+                let taken = slot.lock().unwrap_or_else(|p| p.into_inner()).take();
+                let (encoder, track) = taken.expect("the thread never started, so it took nothing");
+                Self::Inline {
+                    encoder: Box::new(encoder),
+                    track,
+                    yuv: None,
+                    sample: Vec::new(),
+                }
+            }
+        }
     }
 }
 
@@ -156,42 +225,54 @@ fn encode_all(
 ) -> Result<Mp4Track> {
     let mut sample = Vec::new();
     for yuv in inbox {
-        let (w, h) = (yuv.width, yuv.height);
-        let src = YUVSlices::new((&yuv.y, &yuv.u, &yuv.v), (w, h), (w, w / 2, w / 2));
-        let stream = encoder
-            .encode(&src)
-            .map_err(|e| Error::failed(format!("H.264 encoding failed: {e}")))?;
-        if stream.frame_type() == FrameType::Skip {
-            return Err(Error::failed("the H.264 encoder skipped a frame"));
-        }
-        let key = stream.frame_type() == FrameType::IDR;
-        sample.clear();
-        for l in 0..stream.num_layers() {
-            let Some(layer) = stream.layer(l) else {
-                continue;
-            };
-            for n in 0..layer.nal_count() {
-                let Some(bytes) = layer.nal_unit(n) else {
-                    continue;
-                };
-                for unit in annex_b_units(bytes) {
-                    match unit[0] & 0x1f {
-                        7 => track.sps = unit.to_vec(),
-                        8 => track.pps = unit.to_vec(),
-                        _ => {
-                            sample.extend_from_slice(&(unit.len() as u32).to_be_bytes());
-                            sample.extend_from_slice(unit);
-                        }
-                    }
-                }
-            }
-        }
-        if sample.is_empty() {
-            return Err(Error::failed("the H.264 encoder returned an empty frame"));
-        }
-        track.push_sample(&sample, key);
+        encode_one(&mut encoder, &mut track, &yuv, &mut sample)?;
         // The caller may have stopped taking buffers back; that is fine.
         let _ = give_back.try_send(yuv);
     }
     Ok(track)
+}
+
+/// Encodes one frame and appends it to `track` as one sample (`sample`
+/// is scratch).
+fn encode_one(
+    encoder: &mut Encoder,
+    track: &mut Mp4Track,
+    yuv: &Yuv420,
+    sample: &mut Vec<u8>,
+) -> Result<()> {
+    let (w, h) = (yuv.width, yuv.height);
+    let src = YUVSlices::new((&yuv.y, &yuv.u, &yuv.v), (w, h), (w, w / 2, w / 2));
+    let stream = encoder
+        .encode(&src)
+        .map_err(|e| Error::failed(format!("H.264 encoding failed: {e}")))?;
+    if stream.frame_type() == FrameType::Skip {
+        return Err(Error::failed("the H.264 encoder skipped a frame"));
+    }
+    let key = stream.frame_type() == FrameType::IDR;
+    sample.clear();
+    for l in 0..stream.num_layers() {
+        let Some(layer) = stream.layer(l) else {
+            continue;
+        };
+        for n in 0..layer.nal_count() {
+            let Some(bytes) = layer.nal_unit(n) else {
+                continue;
+            };
+            for unit in annex_b_units(bytes) {
+                match unit[0] & 0x1f {
+                    7 => track.sps = unit.to_vec(),
+                    8 => track.pps = unit.to_vec(),
+                    _ => {
+                        sample.extend_from_slice(&(unit.len() as u32).to_be_bytes());
+                        sample.extend_from_slice(unit);
+                    }
+                }
+            }
+        }
+    }
+    if sample.is_empty() {
+        return Err(Error::failed("the H.264 encoder returned an empty frame"));
+    }
+    track.push_sample(sample, key);
+    Ok(())
 }

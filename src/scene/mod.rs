@@ -803,9 +803,18 @@ impl Scene {
                 "name",
                 format!(
                     "must be 1 to 64 letters, digits, '-', '_' or '.' (not first), got '{}'",
-                    self.name
+                    self.name.escape_debug()
                 ),
             );
+        }
+        for (key, text, lines) in [
+            ("label", &self.label, false),
+            ("title", &self.title, false),
+            ("caption", &self.caption, true),
+        ] {
+            if let Some(t) = text {
+                check_text(key, t, lines)?;
+            }
         }
         check_model(
             "model",
@@ -870,6 +879,7 @@ impl Scene {
                     ));
                 }
                 for (k, p) in panels.iter().enumerate() {
+                    check_text(&format!("{key}.{k}.label"), &p.label, false)?;
                     let m = p.model.apply(&self.model);
                     check_model(&format!("{key}.{k}.model"), &m, simulated)?;
                     if let Some(t) = p.t_end
@@ -906,6 +916,26 @@ impl Scene {
             OutputSpec::Sweep(spec) => spec.check(Scene::check, self),
             _ => Ok(()),
         }
+    }
+}
+
+/// Refuses a control character in a text drawn on a picture (a title, a
+/// label): most cannot be written in SVG at all, and none draws. A
+/// caption (`lines`) may hold line breaks and tabs.
+pub fn check_text(key: &str, text: &str, lines: bool) -> std::result::Result<(), (String, String)> {
+    match text
+        .chars()
+        .find(|c| c.is_control() && !(lines && matches!(c, '\n' | '\t')))
+    {
+        Some(c) => Err((
+            key.into(),
+            format!(
+                "must not contain control characters, got U+{:04X} in \"{}\"",
+                u32::from(c),
+                text.escape_debug()
+            ),
+        )),
+        None => Ok(()),
     }
 }
 
@@ -1001,6 +1031,29 @@ fn check_theory(t: &TheorySpec) -> std::result::Result<(), (String, String)> {
         return Err((
             "output".into(),
             format!("at most {MAX_PANELS} alphas, a_over_b or modes"),
+        ));
+    }
+    // The list each figure draws one curve or panel of: never empty.
+    let needs = match t.figure {
+        TheoryFigure::Dispersion | TheoryFigure::EdgeMode => {
+            Some(("alphas", t.alphas.is_empty(), "alphas = [25, 60]"))
+        }
+        TheoryFigure::GravityPotential => {
+            Some(("a_over_b", t.a_over_b.is_empty(), "a_over_b = [1.2, 1.6]"))
+        }
+        TheoryFigure::ZeroModes => Some((
+            "modes",
+            t.modes.is_empty(),
+            "modes = [{ m = 1, epsilon = 0.1 }]",
+        )),
+        _ => None,
+    };
+    if let Some((key, true, example)) = needs {
+        return Err((
+            format!("output.{key}"),
+            format!(
+                "this figure draws one curve or panel per entry and needs at least one, e.g. {example}"
+            ),
         ));
     }
     if let Some(a) = t

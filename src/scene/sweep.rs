@@ -144,6 +144,11 @@ impl Param {
 /// Largest number of values of one axis (the run cap bounds the product).
 pub const MAX_AXIS_VALUES: usize = 1_000_000;
 
+/// What the message of [`MAX_AXIS_VALUES`] adds: it is a range, which no
+/// cap raises (the grid's runs have their own cap).
+const AXIS_HINT: &str = " (a fixed range that no flag raises: use a coarser step; \
+                         the runs of the whole grid have their own cap)";
+
 /// One piece of an axis: an inclusive range or a single number.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Piece {
@@ -192,7 +197,9 @@ impl Values {
                 Piece::Value(v) => return Err(format!("{v} is not a finite number")),
             }
             if out.len() > MAX_AXIS_VALUES {
-                return Err(format!("more than {MAX_AXIS_VALUES} values on one axis"));
+                return Err(format!(
+                    "more than {MAX_AXIS_VALUES} values on one axis{AXIS_HINT}"
+                ));
             }
         }
         if out.is_empty() {
@@ -241,7 +248,7 @@ pub fn range_values(text: &str) -> Result<Vec<f64>, String> {
     let count = ((b - a) / h + 1e-6).floor() + 1.0;
     if !(count.is_finite() && count <= MAX_AXIS_VALUES as f64) {
         return Err(format!(
-            "range '{text}' has more than {MAX_AXIS_VALUES} values"
+            "range '{text}' has more than {MAX_AXIS_VALUES} values{AXIS_HINT}"
         ));
     }
     let decimals = [start, stop, step]

@@ -205,6 +205,32 @@ pub fn style_of(scene: &Scene, outputs: &Outputs) -> Result<crate::render::Style
         .map_err(|e| Error::bad_input(format!("{}: style: {e}", scene.name)))
 }
 
+/// Every check [`render_with`] makes before its work, without the work:
+/// the style, the list a theory figure draws and its cost
+/// (`theory::check_cost`), a movie's frames × pixels, and the cost of
+/// each simulation (`run::check_cost`: `auto`'s halvings included).
+/// `render --check` runs it; rendering runs it for every scene first.
+pub fn check(scene: &Scene, movie: &MovieOptions, outputs: &Outputs) -> Result<()> {
+    style_of(scene, outputs)?;
+    match &scene.output {
+        OutputSpec::Theory(spec) => {
+            let input = theory::FigureInput::new(describe::title(scene), &scene.model, spec);
+            theory::check_cost(spec.figure, &input)?;
+            Ok(())
+        }
+        // A sweep checks its grid and runs itself (`crate::sweep`).
+        OutputSpec::Sweep(_) => Ok(()),
+        OutputSpec::Movie { .. } => {
+            crate::limits::Limits::active().check_movie(movie.frames, movie.width, movie.height)?;
+            run::check_cost(scene, movie.frames)
+        }
+        _ => scene
+            .runs()
+            .iter()
+            .try_for_each(|(s, samples)| run::check_cost(s, samples.len())),
+    }
+}
+
 /// [`render_with`] with the scene's style in force.
 fn render_styled(
     scene: &Scene,

@@ -70,6 +70,25 @@ fn short(x: f64) -> String {
     }
 }
 
+/// Refuses, before any work, a run of `scene` with `samples` sample
+/// times past the caps in force: its integrator's steps × N and samples
+/// × N, and for `auto` every halving it may make (`sim::auto::worst_case`).
+pub fn check_cost(scene: &Scene, samples: usize) -> Result<()> {
+    let scenario = scene.scenario()?;
+    let limits = crate::limits::Limits::active();
+    match scene.run.fixed_config()? {
+        Some(config) => {
+            sim::check_cost(&scenario, samples, &config, &limits)?;
+        }
+        None => {
+            let params = scene.model.params()?;
+            let omega_max = crate::theory::dispersion::omega_max_clamped(&params)?;
+            sim::auto::worst_case(&scenario, samples, omega_max, &limits)?;
+        }
+    }
+    Ok(())
+}
+
 /// Runs a single-run scene, recording the state at `samples`.
 pub fn simulate(scene: &Scene, samples: &[f64]) -> Result<SceneRun> {
     simulate_with(scene, samples, Stepping::Fastest, &|_| {})

@@ -9,9 +9,18 @@
 //! about a third of the difference (Richardson), so accepting a difference
 //! of at most the tolerance keeps the returned run's arrival times within
 //! about a third of it; that estimate is what is reported.
+//!
+//! The cost of the worst case, every halving down to dt / 2^[`MAX_HALVINGS`]
+//! (about 2^11 − 1 = 2047 times the first run), is checked against the cap
+//! on steps × N before any run starts ([`worst_case`]): a run that the cap
+//! would stop part way is refused at once, not after minutes of work.
 
-use super::{IntegratorConfig, IntegratorKind, Scenario, Stepping, Trajectory, simulate_observed};
-use crate::error::{Error, Result};
+use super::{
+    Cost, IntegratorConfig, IntegratorKind, Scenario, Stepping, Trajectory, check_cost,
+    simulate_observed,
+};
+use crate::error::{Error, Result, num};
+use crate::limits::{Limits, Resource, count};
 
 /// Most halvings of the step before `auto` gives up (dt / 2^10).
 pub const MAX_HALVINGS: u32 = 10;
@@ -57,6 +66,7 @@ pub fn simulate_verified_observed(
     let simulate = |scenario: &Scenario, samples: &[f64], config: &IntegratorConfig| {
         simulate_observed(scenario, samples, config, Stepping::Fastest, progress)
     };
+    worst_case(scenario, sample_times.len(), omega_max, &Limits::active())?;
     let mut dt = IntegratorConfig::auto(omega_max).dt;
     let mut total = 0;
     // The first pair of runs is independent: both cores take one each.
@@ -121,6 +131,54 @@ pub fn simulate_verified_observed(
          hint: raise the tolerance, or name an integrator and step",
         0.5 * dt
     )))
+}
+
+/// The cost of every run `auto` may make for `scenario` with `samples`
+/// sample times: the first step dt from `omega_max` and each halving down
+/// to dt / 2^[`MAX_HALVINGS`] (the coarse run of each pair unsampled, but
+/// counted with the samples' stops, an upper bound). Refuses, before any
+/// work, a worst case past `limits`' cap on steps × N ([`Error::Limit`],
+/// whose detail says it is the halvings' total), and a first pair of runs
+/// that is itself refused ([`check_cost`]). A halving whose step is too
+/// small to advance time ends the sum: `auto` stops there with that error.
+pub fn worst_case(
+    scenario: &Scenario,
+    samples: usize,
+    omega_max: f64,
+    limits: &Limits,
+) -> Result<Cost> {
+    let dt = IntegratorConfig::auto(omega_max).dt;
+    let first = check_cost(scenario, samples, &verlet(dt), limits)?;
+    check_cost(scenario, samples, &verlet(0.5 * dt), limits)?;
+    let mut total = first;
+    let mut finest = dt;
+    for k in 1..=MAX_HALVINGS {
+        let step = dt / f64::from(1u32 << k);
+        match check_cost(scenario, samples, &verlet(step), &Limits::none()) {
+            Ok(c) => {
+                total.steps += c.steps;
+                total.block_steps += c.block_steps;
+                finest = step;
+            }
+            Err(Error::BadInput(_)) => break,
+            Err(e) => return Err(e),
+        }
+    }
+    limits
+        .check(Resource::BlockSteps, total.block_steps, || {
+            format!(
+                "the auto integrator's worst case: {} steps in all, its runs at dt = {} halved \
+                 down to {} to verify the arrival times, up to t_end = {}, times N = {}; \
+                 or name an integrator and step",
+                count(total.steps),
+                num(dt),
+                num(finest),
+                num(scenario.t_end),
+                scenario.ladder.n()
+            )
+        })
+        .map_err(Error::Limit)?;
+    Ok(total)
 }
 
 fn verlet(dt: f64) -> IntegratorConfig {

@@ -7,6 +7,7 @@
 
 pub mod bloch;
 pub mod compatibility;
+pub mod cost;
 pub mod dispersion;
 pub mod edge;
 pub mod figures;

@@ -12,12 +12,14 @@ mod plots;
 mod schematic;
 
 use crate::error::Result;
+use crate::limits::{Limits, Resource};
 use crate::model::{Ladder, Params};
 use crate::render::compose::{self, Layout, Panel};
 use crate::render::snapshot::{self, Snapshot};
 use crate::render::style::{self, DARK, HAlign, VAlign, size};
 use crate::render::{Canvas, Picture};
 use crate::scene::{Model, TheoryFigure, TheorySpec, ZeroMode};
+use crate::theory::cost::{self, Work};
 use tiny_skia::Pixmap;
 
 /// What a static figure draws: its title, the model's N, b and α, and
@@ -99,8 +101,49 @@ pub fn render(figure: TheoryFigure, input: &FigureInput) -> Result<Pixmap> {
     picture(figure, input)?.to_pixmap()
 }
 
-/// One static figure as a picture (PNG at any scale, SVG, PDF).
+/// What drawing `figure` for `input` costs (`theory::cost`).
+pub fn work(figure: TheoryFigure, input: &FigureInput) -> Work {
+    let n = input.model.n;
+    match figure {
+        TheoryFigure::GroundStates => Work::configurations(n, 3),
+        TheoryFigure::Gapless => Work::configurations(n, 1),
+        TheoryFigure::ZeroModes => Work::zero_modes(n, input.modes.len()),
+        // Each angle at both signs (the two panels).
+        TheoryFigure::EdgeMode => Work::surface_modes(n, 2 * input.alphas.len()),
+        TheoryFigure::UnitSchematic
+        | TheoryFigure::GravityPotential
+        | TheoryFigure::Dispersion
+        | TheoryFigure::Winding
+        | TheoryFigure::Barrier => Work::fixed(),
+    }
+}
+
+/// Refuses, before any work, a figure whose estimated cost
+/// ([`work`]) is past the cap in force on theory work, or whose dense
+/// matrices would not fit in [`cost::MAX_DENSE_BYTES`].
+pub fn check_cost(figure: TheoryFigure, input: &FigureInput) -> Result<Work> {
+    let w = work(figure, input);
+    let n = input.model.n;
+    if w.dense_bytes > cost::MAX_DENSE_BYTES {
+        return Err(crate::error::Error::bad_input(format!(
+            "this figure would hold {:.1e} bytes of dense matrices at N = {n}, past the {:.0e} \
+             a theory figure may hold (docs/limits.md); ask for fewer blocks",
+            w.dense_bytes,
+            cost::MAX_DENSE_BYTES
+        )));
+    }
+    Limits::active().check(Resource::TheoryWork, w.operations, || {
+        // The scene file's word for the figure ("ground-states").
+        let name = serde_json::to_string(&figure).unwrap_or_default();
+        format!("figure = {name} at N = {n}")
+    })?;
+    Ok(w)
+}
+
+/// One static figure as a picture (PNG at any scale, SVG, PDF), its cost
+/// checked first ([`check_cost`]).
 pub fn picture(figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {
+    check_cost(figure, input)?;
     Ok(drawn(figure, input)?.fit_page())
 }
 

@@ -1,0 +1,145 @@
+//! Costs checked before work (issue 22, family 4): the worst case of
+//! `auto`'s halvings and the cost of every theory figure are estimated and
+//! refused before any work, naming the flag that raises the cap, in
+//! `render` and in `render --check` alike; the catalogue passes the
+//! default caps.
+
+mod common;
+
+use common::tempdir::TempDir;
+use jacobs_ladder::limits::Limits;
+use jacobs_ladder::scenes::{self, MovieOptions, Outputs};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+/// Runs ladder with `args`, killing it after `limit` (then `None`): a
+/// refusal before work answers at once, while the old code computed for
+/// minutes.
+fn ladder_within(args: &[&str], limit: Duration) -> Option<Output> {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(args)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the ladder binary runs");
+    let start = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            return None;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    Some(child.wait_with_output().unwrap())
+}
+
+/// Exit 2, one line, every needle in it, within `limit`.
+fn refused(args: &[&str], limit: Duration, needles: &[&str]) {
+    let out = ladder_within(args, limit)
+        .unwrap_or_else(|| panic!("{args:?}: still computing after {limit:?}, not refused"));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: '{n}' not in {err}");
+    }
+}
+
+/// The `[output]` table of a theory figure at `n` blocks.
+fn theory_scene(dir: &TempDir, name: &str, figure: &str, n: usize, lists: &str) -> String {
+    let text = format!(
+        "name = \"{name}\"\n[model]\nn = {n}\n[output]\nkind = \"theory\"\nfigure = \"{figure}\"\n{lists}\n"
+    );
+    let p = dir.join(format!("{name}.toml"));
+    std::fs::write(&p, text).unwrap();
+    p.to_str().unwrap().to_string()
+}
+
+/// `auto` halves its step up to 10 times, each run twice as long as the
+/// last: the worst case is 2047 times the first run. The old code costed
+/// each run alone, so a cap of 10^6 steps × N passed the first runs of
+/// this one (1.6 × 10^5 each at N = 10, dt = 0.25, t_end = 4000) and would
+/// have refused only the sixth halving, after the work of the first five.
+/// Now the sum over all halvings, 16,000 × 2047 × 10 = 3.3 × 10^8
+/// block-steps, is refused before any run, naming the flag.
+#[test]
+fn autos_halvings_are_costed_before_the_first_run() {
+    let args = [
+        "simulate",
+        "--integrator",
+        "auto",
+        "--max-block-steps",
+        "1e6",
+    ];
+    refused(
+        &args,
+        Duration::from_secs(20),
+        &["--max-block-steps", "auto", "3.3e8", "halved"],
+    );
+    // With the cap raised past the worst case it runs.
+    let args = [
+        "simulate",
+        "--integrator",
+        "auto",
+        "--max-block-steps",
+        "3.4e8",
+    ];
+    let out = ladder_within(&args, Duration::from_secs(120)).expect("runs");
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// A ground-states drawing at N = 100,000 took about a quarter of an hour
+/// (quadratic in N) before any cap; the zero-mode figure at N = 20,000
+/// would fill 19 GB with a dense matrix (48 N² bytes). Both are refused at
+/// once, by `render` and by `render --check` alike.
+#[test]
+fn theory_figures_are_costed_before_work() {
+    let dir = TempDir::new("theory-cost");
+    let out = dir.join("out");
+    let o = out.to_str().unwrap();
+    let big = theory_scene(&dir, "big", "ground-states", 100_000, "");
+    let limit = Duration::from_secs(30);
+    for args in [
+        vec!["render", &big, "--out", o],
+        vec!["render", "--check", &big],
+    ] {
+        refused(
+            &args,
+            limit,
+            &["--max-theory-work", "ground-states", "N = 100000"],
+        );
+    }
+    let modes = "modes = [{ m = 1, epsilon = 0.1 }]";
+    let s4 = theory_scene(&dir, "s4", "zero-modes", 20_000, modes);
+    for args in [
+        vec!["render", &s4, "--out", o],
+        vec!["render", "--check", &s4],
+    ] {
+        refused(&args, limit, &["bytes", "N = 20000"]);
+    }
+    assert!(!out.join("figure-big.png").exists());
+    // Raised, the same file passes the check (the cap is what refused it).
+    let args = ["render", "--check", &big, "--max-theory-work", "2e12"];
+    let ok = ladder_within(&args, limit).expect("the check answers");
+    assert_eq!(ok.status.code(), Some(0));
+}
+
+/// Every scene of the catalogue passes the checks rendering makes before
+/// its work (the worst case of `auto` included) at the default caps.
+#[test]
+fn the_catalogue_passes_the_default_caps() {
+    Limits::default().install();
+    let (movie, outputs) = (MovieOptions::default(), Outputs::default());
+    for e in jacobs_ladder::catalog::catalogue().unwrap() {
+        if let Err(err) = scenes::check(&e.scene, &movie, &outputs) {
+            panic!("{} {}: {err}", e.kind().name(), e.id);
+        }
+    }
+}
