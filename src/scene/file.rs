@@ -38,7 +38,10 @@ pub fn parse(text: &str, origin: &str, default_name: &str) -> Result<Scene> {
         let (span, key) = match unknown_key(doc.get_ref(), e.message()) {
             Some((path, at)) => (Some(at), Some(path)),
             None => {
-                let key = span.clone().and_then(|s| key_at(doc.get_ref(), s.start));
+                let key = span.clone().and_then(|s| {
+                    key_at(doc.get_ref(), s.start)
+                        .or_else(|| table_at(text, doc.get_ref(), s.start))
+                });
                 match key
                     .as_deref()
                     .and_then(|k| typed_key(text, doc.get_ref(), k, e.message()))
@@ -217,6 +220,20 @@ fn typed_key(
     let mut hits = Vec::new();
     walk(text, t, &written, &mut vec![table.to_string()], &mut hits);
     if hits.len() == 1 { hits.pop() } else { None }
+}
+
+/// The top-level table whose `[header]` starts at byte `offset` (where
+/// serde places an error about the table as a whole).
+fn table_at(text: &str, doc: &DeTable<'_>, offset: usize) -> Option<String> {
+    doc.iter()
+        .filter(|(_, v)| matches!(v.get_ref(), DeValue::Table(_)))
+        .find(|(k, _)| {
+            k.span().start >= offset
+                && text
+                    .get(offset..k.span().start)
+                    .is_some_and(|t| !t.contains('\n'))
+        })
+        .map(|(k, _)| k.get_ref().to_string())
 }
 
 /// Reads and parses the scene file at `path`; a scene without `name` is
