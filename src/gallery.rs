@@ -1,9 +1,11 @@
 //! `index.html`: every figure and movie the run wrote, in a grid a reader
-//! can scan, each with one caption, the level of the model behind it, its
-//! parameters and links to all its files.
+//! can scan, each with one caption, its parameters and links to all its
+//! files. The level of the model behind each entry is said once per
+//! section, in a sentence, and named in a word on each card.
 //!
-//! The HTML and CSS live in template files under `assets/gallery/`; this
-//! module only fills their `{{key}}` placeholders with escaped text.
+//! The HTML, CSS and the script that packs the grid without holes live in
+//! template files under `assets/gallery/`; this module only fills their
+//! `{{key}}` placeholders with escaped text.
 
 use crate::catalog;
 use crate::error::Result;
@@ -18,6 +20,8 @@ mod template {
     pub const CONTENTS: &str = include_str!("../assets/gallery/contents.html");
     pub const CONTENTS_ENTRY: &str = include_str!("../assets/gallery/contents-entry.html");
     pub const CARD: &str = include_str!("../assets/gallery/card.html");
+    pub const LEVEL: &str = include_str!("../assets/gallery/level.html");
+    pub const SCRIPT: &str = include_str!("../assets/gallery/layout.js");
     pub const IMAGE: &str = include_str!("../assets/gallery/image.html");
     pub const VIDEO: &str = include_str!("../assets/gallery/video.html");
     pub const LINK: &str = include_str!("../assets/gallery/link.html");
@@ -68,10 +72,47 @@ pub fn index_html(items: &[Item<'_>]) -> Result<String> {
             template::CONTENTS,
             &[("id", id), ("heading", heading), ("entries", &entries)],
         ));
-        let cards: String = of_kind.iter().map(|it| card(it)).collect();
+        let levels = levels(&of_kind);
+        let level_of = |scene: &Scene| {
+            let sentence = describe::model_level(scene);
+            let k = levels.iter().position(|(s, _)| *s == sentence).unwrap_or(0);
+            format!(
+                "<a href=\"#{id}-level-{}\">{}</a>",
+                k + 1,
+                escape(scene.fidelity().name())
+            )
+        };
+        let cards: String = of_kind
+            .iter()
+            .map(|it| card(it, &level_of(it.scene)))
+            .collect();
+        let said: String = levels
+            .iter()
+            .enumerate()
+            .map(|(k, (sentence, labels))| {
+                let labels = if levels.len() > 1 {
+                    format!("<b>{}:</b> ", escape(&labels.join(", ")))
+                } else {
+                    String::new()
+                };
+                fill(
+                    template::LEVEL,
+                    &[
+                        ("id", &format!("{id}-level-{}", k + 1)),
+                        ("labels", &labels),
+                        ("sentence", &escape(sentence)),
+                    ],
+                )
+            })
+            .collect();
         sections.push_str(&fill(
             template::SECTION,
-            &[("id", id), ("heading", heading), ("cards", &cards)],
+            &[
+                ("id", id),
+                ("heading", heading),
+                ("levels", &said),
+                ("cards", &cards),
+            ],
         ));
     }
     let version = env!("CARGO_PKG_VERSION");
@@ -83,8 +124,24 @@ pub fn index_html(items: &[Item<'_>]) -> Result<String> {
             ("absent", &escape(&catalog::absent_summary()?)),
             ("contents", &contents),
             ("sections", &sections),
+            ("script", template::SCRIPT),
         ],
     ))
+}
+
+/// The model levels of a section's items, each sentence once with the
+/// labels of the items it is said of, in the order first met.
+fn levels(items: &[&Item<'_>]) -> Vec<(String, Vec<String>)> {
+    let mut out: Vec<(String, Vec<String>)> = Vec::new();
+    for it in items {
+        let sentence = describe::model_level(it.scene);
+        let name = label(it.scene);
+        match out.iter_mut().find(|(s, _)| *s == sentence) {
+            Some((_, labels)) => labels.push(name),
+            None => out.push((sentence, vec![name])),
+        }
+    }
+    out
 }
 
 /// The bold lead of a caption and of a contents entry: the scene's label
@@ -121,8 +178,12 @@ fn contents_entry(scene: &Scene) -> String {
 }
 
 /// A file's base name and extension: "movie-4-kymograph.png" →
-/// ("movie-4-kymograph", "png").
+/// ("movie-4-kymograph", "png"). A PNG preview of a figure asked in
+/// vector formats only ("figure-3-preview.png") has its figure's base.
 fn split_name(file: &str) -> (&str, &str) {
+    if let Some(base) = file.strip_suffix(crate::scenes::PREVIEW) {
+        return (base, "png");
+    }
     file.rsplit_once('.').unwrap_or((file, ""))
 }
 
@@ -180,8 +241,17 @@ fn pictures(it: &Item<'_>) -> Vec<Shown> {
         .collect()
 }
 
-/// What a link to `file` says: "PNG", "kymograph (PNG)", "data (JSON)".
+/// What a link to `file` says: "PNG", "kymograph (PNG)", "data (JSON)",
+/// "preview (PNG)".
 fn link_text(scene: &Scene, file: &str) -> String {
+    if file.ends_with(crate::scenes::PREVIEW) {
+        let (base, _) = split_name(file);
+        let figure = link_text(scene, &format!("{base}.png"));
+        return match figure.strip_suffix(" (PNG)") {
+            Some(what) => format!("{what} preview (PNG)"),
+            None => "preview (PNG)".into(),
+        };
+    }
     let (base, ext) = split_name(file);
     let format = match ext {
         "json" => return "data (JSON)".into(),
@@ -194,7 +264,9 @@ fn link_text(scene: &Scene, file: &str) -> String {
     }
 }
 
-fn card(it: &Item<'_>) -> String {
+/// One entry of the page; `level` names the model level in a word (a
+/// link to the section's sentence).
+fn card(it: &Item<'_>, level: &str) -> String {
     let scene = it.scene;
     let title = describe::title(scene);
     let pictures: String = pictures(it)
@@ -251,7 +323,7 @@ fn card(it: &Item<'_>) -> String {
             ("pictures", &pictures),
             ("label", &escape(&label(scene))),
             ("caption", &caption),
-            ("level", &escape(&describe::model_level(scene))),
+            ("level", level),
             ("parameters", &escape(&describe::parameters(scene))),
             ("files", &files.join(" · ")),
         ],
@@ -302,10 +374,13 @@ mod tests {
     fn one_caption_and_no_title_twice() {
         let scene = catalog::find(Kind::Movie, "4").unwrap().scene.clone();
         let files = crate::scenes::file_names(&scene);
-        let html = card(&Item {
-            scene: &scene,
-            files,
-        });
+        let html = card(
+            &Item {
+                scene: &scene,
+                files,
+            },
+            "simulation",
+        );
         assert_eq!(html.matches("<figcaption>").count(), 1);
         let title = title_body(&scene);
         let caption = html.split("<figcaption>").nth(1).unwrap();
@@ -344,7 +419,7 @@ mod tests {
                 }
             ]
         );
-        let html = card(&it);
+        let html = card(&it, "simulation");
         for f in &files {
             assert!(html.contains(&format!("href=\"{f}\"")), "{f} not linked");
         }

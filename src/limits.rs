@@ -115,7 +115,7 @@ pub enum Resource {
 }
 
 impl Resource {
-    pub const ALL: [Self; 5] = [
+    pub const ALL: [Self; 6] = [
         Self::BlockSteps,
         Self::BlockSamples,
         Self::MoviePixels,

@@ -1,7 +1,9 @@
 //! The gallery page `index.html` as a reader meets it: every file it names
-//! exists, every picture has one caption and words for its alt text, and,
-//! in a real browser (Debian's `chromium`, headless), every image and
-//! video loads. The browser test saves screenshots under
+//! exists, every picture has one caption and words for its alt text, the
+//! model level is said once per section, a figure asked only as PDF still
+//! shows a PNG preview, and, in a real browser (Debian's `chromium`,
+//! headless), every image and video loads, the grid has no holes and the
+//! page is under 7,000 px tall at 1400 px wide. The browser test saves screenshots under
 //! `target/tmp/gallery/` to look at. Without chromium it fails under CI
 //! and is reported as skipped elsewhere (`common::require`; `.ci/run`
 //! installs chromium).
@@ -46,18 +48,16 @@ fn attributes(html: &str, attr: &str) -> Vec<String> {
         .collect()
 }
 
-#[test]
-fn every_link_and_picture_of_the_page_is_a_file_the_run_wrote() {
-    let dir = render_all("links", None);
-    let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
-    let written: BTreeSet<String> = std::fs::read_dir(&dir)
+/// Every file the page names was written, and every file written is named.
+fn check_links(dir: &Path, html: &str) -> BTreeSet<String> {
+    let written: BTreeSet<String> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .filter(|f| f != "index.html")
         .collect();
-    let linked: BTreeSet<String> = attributes(&html, "href")
+    let linked: BTreeSet<String> = attributes(html, "href")
         .into_iter()
-        .chain(attributes(&html, "src"))
+        .chain(attributes(html, "src"))
         .filter(|h| !h.starts_with('#'))
         .collect();
     for f in &linked {
@@ -72,28 +72,81 @@ fn every_link_and_picture_of_the_page_is_a_file_the_run_wrote() {
             "{f} was written but the page does not link it"
         );
     }
+    written
+}
+
+/// The cards of the page, each from its `<figure` to its `</figure>`.
+fn cards(html: &str) -> Vec<&str> {
+    html.split("<figure class=\"card")
+        .skip(1)
+        .map(|c| c.split("</figure>").next().unwrap())
+        .collect()
+}
+
+/// The paragraphs `<p class="level" ...>` of the page, without their tags.
+fn level_sentences(html: &str) -> Vec<&str> {
+    html.split("<p class=\"level\"")
+        .skip(1)
+        .map(|p| {
+            let p = p.split_once('>').unwrap().1;
+            let p = p.split("</p>").next().unwrap();
+            // "<b>Fig. 1c, Fig. 3:</b> Simulated: …" → the sentence.
+            p.rsplit_once("</b> ").map_or(p, |(_, s)| s)
+        })
+        .collect()
+}
+
+#[test]
+fn every_link_and_picture_of_the_page_is_a_file_the_run_wrote() {
+    let dir = render_all("links", None);
+    let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
+    let written = check_links(&dir, &html);
     // One card per scene, each with exactly one caption, and alt text in words.
     // One data file per scene: as many cards, the paper's 13 figures and 9
     // movies at least.
-    let cards = html.matches("<figure class=\"card").count();
+    let n_cards = html.matches("<figure class=\"card").count();
     let scenes = written.iter().filter(|f| f.ends_with(".json")).count();
     assert!(
-        cards == scenes && cards >= 22,
-        "{cards} cards, {scenes} scenes"
+        n_cards == scenes && n_cards >= 22,
+        "{n_cards} cards, {scenes} scenes"
     );
-    assert_eq!(html.matches("<figcaption>").count(), cards);
+    assert_eq!(html.matches("<figcaption>").count(), n_cards);
     for alt in attributes(&html, "alt") {
         assert!(
             alt.len() > 40 && !alt.contains(".png") && !alt.contains(".gif"),
             "alt text should describe the picture: {alt}"
         );
     }
-    // The model level is a sentence, never a bare word.
-    for level in html.split("<p class=\"level\">").skip(1) {
-        let sentence = level.split("</p>").next().unwrap();
+    // The model level is a sentence, never a bare word, said once per
+    // section (not on each of the 20-odd simulated cards); each card names
+    // its level in a word, linked to the sentence.
+    let levels = level_sentences(&html);
+    assert!(!levels.is_empty());
+    for sentence in &levels {
         assert!(
             sentence.split_whitespace().count() > 6 && sentence.ends_with('.'),
             "{sentence}"
+        );
+    }
+    let simulated = "Simulated: the full nonlinear equations";
+    let said = html.matches(simulated).count();
+    let sections = html.matches("<section id=\"figures\"").count()
+        + html.matches("<section id=\"movies\"").count();
+    let distinct: BTreeSet<&&str> = levels.iter().filter(|s| s.starts_with(simulated)).collect();
+    assert!(
+        said == levels.iter().filter(|s| s.starts_with(simulated)).count()
+            && said <= sections * distinct.len(),
+        "the simulation sentence is said {said} times ({} kinds, {sections} sections)",
+        distinct.len()
+    );
+    for card in cards(&html) {
+        assert!(
+            !card.contains(simulated),
+            "a card repeats the level: {card}"
+        );
+        assert!(
+            card.contains("<span class=\"key\">Model:</span> <a href=\"#"),
+            "a card without its level: {card}"
         );
     }
     // A movie's title is drawn in its picture and listed in the contents,
@@ -106,6 +159,45 @@ fn every_link_and_picture_of_the_page_is_a_file_the_run_wrote() {
         .unwrap();
     assert!(!caption.contains("kink, α = 60°"), "{caption}");
     assert!(html.contains("Not made here: figures 1a, 1b, 2a, 4b, S1 and S2"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn figures_asked_without_png_still_show_a_png_preview() {
+    // `ladder all --format pdf,mp4` (issue 20): every figure card shows a
+    // PNG preview, the PDF is linked, and no full PNG is written.
+    let formats = if cfg!(feature = "mp4") {
+        "pdf,mp4"
+    } else {
+        "pdf,gif"
+    };
+    let dir = render_all("preview", Some(formats));
+    let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
+    let written = check_links(&dir, &html);
+    assert!(!written.contains("figure-3.png"), "a PNG nobody asked for");
+    let cards = cards(&html);
+    assert!(cards.len() >= 22, "{} cards", cards.len());
+    for card in cards {
+        let pictures = card.matches("<img ").count() + card.matches("<video ").count();
+        assert!(pictures >= 1, "a card without a picture: {card}");
+        for src in attributes(card, "src") {
+            if src.ends_with(".png") {
+                assert!(src.ends_with("-preview.png"), "{src}");
+                let bytes = std::fs::read(dir.join(&src)).unwrap();
+                assert!(bytes.starts_with(b"\x89PNG\r\n\x1a\n"), "{src} is no PNG");
+            }
+        }
+    }
+    let figure3 = html.split("id=\"figure-3\"").nth(1).unwrap();
+    let figure3 = figure3.split("</figure>").next().unwrap();
+    assert!(
+        figure3.contains("<img src=\"figure-3-preview.png\""),
+        "{figure3}"
+    );
+    assert!(figure3.contains("href=\"figure-3.pdf\">PDF<"), "{figure3}");
+    // A movie's kymograph is a figure too: PDF, and its PNG preview.
+    assert!(written.contains("movie-4-kymograph.pdf"), "{written:?}");
+    assert!(html.contains("<img src=\"movie-4-kymograph-preview.png\""));
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -167,15 +259,30 @@ fn chromium(browser: &Path, profile: &Path, extra: &[String], page: &Path) -> St
 }
 
 /// A page script that waits for every image and video of the page to load
-/// or fail (lazy images made eager), then writes the outcome, and the
-/// page's height, into the DOM as JSON in `<pre id="check">`.
+/// or fail (lazy images made eager), then writes the outcome, the page's
+/// height and its largest hole into the DOM as JSON in `<pre
+/// id="check">`. A hole is the space between two cards one above the
+/// other in a column of a grid, beyond the grid's gap.
 const CHECK_SCRIPT: &str = r#"<script>
 window.addEventListener('load', () => {
   const media = [...document.querySelectorAll('img, video')];
-  const report = { height: 0, media: [] };
+  const report = { height: 0, hole: 0, media: [] };
   let pending = media.length;
   const finish = () => {
     report.height = document.documentElement.scrollHeight;
+    for (const grid of document.querySelectorAll('.grid')) {
+      const gap = parseFloat(getComputedStyle(grid).rowGap) || 0;
+      const gapX = parseFloat(getComputedStyle(grid).columnGap) || 0;
+      const boxes = [...grid.children].map(c => c.getBoundingClientRect());
+      for (const x of new Set(boxes.map(b => b.left + 1))) {
+        const column = boxes.filter(b => b.left <= x && b.right > x)
+          .sort((a, b) => a.top - b.top);
+        for (let i = 1; i < column.length; i++) {
+          const space = column[i].top - column[i - 1].bottom - Math.max(gap, gapX);
+          report.hole = Math.max(report.hole, space);
+        }
+      }
+    }
     const pre = document.createElement('pre');
     pre.id = 'check';
     pre.textContent = JSON.stringify(report);
@@ -202,14 +309,23 @@ window.addEventListener('load', () => {
 });
 </script>"#;
 
-/// What the check script found: (src, loaded) per image and video, and the
-/// page's height in pixels.
+/// What the check script found in a window `width` pixels wide.
+struct Checked {
+    /// (src, loaded) per image and video.
+    media: Vec<(String, bool)>,
+    /// The page's height, pixels.
+    height: u32,
+    /// The largest hole of a grid, pixels.
+    hole: f64,
+}
+
 fn check_in_browser(
     browser: &Path,
     dir: &Path,
     page_html: &str,
     name: &str,
-) -> (Vec<(String, bool)>, u32) {
+    width: u32,
+) -> Checked {
     let page = dir.join(name);
     std::fs::write(
         &page,
@@ -221,7 +337,7 @@ fn check_in_browser(
         &dir.join("profile-check"),
         &[
             "--virtual-time-budget=20000".into(),
-            "--window-size=1400,1000".into(),
+            format!("--window-size={width},1000"),
             "--dump-dom".into(),
         ],
         &page,
@@ -245,7 +361,11 @@ fn check_in_browser(
             )
         })
         .collect();
-    (media, v["height"].as_u64().unwrap_or(0) as u32)
+    Checked {
+        media,
+        height: v["height"].as_u64().unwrap_or(0) as u32,
+        hole: v["hole"].as_f64().unwrap_or(f64::INFINITY),
+    }
 }
 
 fn tail(s: &str) -> &str {
@@ -285,7 +405,11 @@ fn every_image_and_video_loads_in_a_real_browser() {
         assert!(html.contains(&format!("href=\"{f}\"")), "{f} not linked");
     }
 
-    let (media, height) = check_in_browser(&browser, &dir, &html, "check.html");
+    let Checked {
+        media,
+        height,
+        hole,
+    } = check_in_browser(&browser, &dir, &html, "check.html", 1400);
     assert_eq!(media.len(), expected, "every picture reported: {media:?}");
     let broken: Vec<&String> = media.iter().filter(|(_, ok)| !ok).map(|(s, _)| s).collect();
     assert!(broken.is_empty(), "broken in the browser: {broken:?}");
@@ -299,7 +423,7 @@ fn every_image_and_video_loads_in_a_real_browser() {
         "<video src=\"missing.mp4\"",
         1,
     );
-    let (media, _) = check_in_browser(&browser, &dir, &bad, "check-bad.html");
+    let media = check_in_browser(&browser, &dir, &bad, "check-bad.html", 1400).media;
     let failed: BTreeSet<&str> = media
         .iter()
         .filter(|(_, ok)| !ok)
@@ -316,6 +440,12 @@ fn every_image_and_video_loads_in_a_real_browser() {
     let shots = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("gallery");
     std::fs::create_dir_all(&shots).unwrap();
     let index = dir.join("index.html");
+    let phone = check_in_browser(&browser, &dir, &html, "check-phone.html", 420);
+    eprintln!(
+        "gallery: {height} px tall at 1400 px wide (largest hole {hole:.0} px), {} px at 420 px \
+         (largest hole {:.0} px)",
+        phone.height, phone.hole
+    );
     for (file, width, h) in [
         ("index-1400.png", 1400, height.clamp(600, 16_000)),
         ("index-420.png", 420, 2400),
@@ -336,8 +466,20 @@ fn every_image_and_video_loads_in_a_real_browser() {
         assert!(meta.len() > 10_000, "{} is nearly empty", shot.display());
         eprintln!("screenshot: {}", shot.display());
     }
-    // A wide screen shows more than one card per row: the page is a grid,
-    // not one tall column.
-    assert!(height < 12_000, "page height {height} px at 1400 px wide");
+    // A wide screen shows three cards a row, packed: the page was 9,100 px
+    // tall at 1400 px with holes of 700 px under short cards.
+    assert!(height < 7_000, "page height {height} px at 1400 px wide");
+    // A hole: more than about five lines of caption text left empty (the
+    // packing leaves at most a few lines where a wide card needs two
+    // columns; the grid before left up to 700 px).
+    assert!(
+        hole < 100.0,
+        "a hole of {hole:.0} px in the grid at 1400 px"
+    );
+    assert!(
+        phone.hole < 100.0,
+        "a hole of {:.0} px at 420 px",
+        phone.hole
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -284,6 +284,76 @@ fn an_unknown_key_in_output_is_named_with_its_table_at_its_line() {
 }
 
 #[test]
+fn a_wrong_type_in_output_names_file_line_key_and_form() {
+    // serde reads `[output]` as a whole: its message named no key.
+    let f = scene_file("times5", "[model]\nn = 10\n\n[output]\ntimes = 5\n");
+    bad_input(
+        &["render", "--check", &f],
+        &[
+            "s.toml:5:9: output.times: expected a list [ ... ], got the whole number 5",
+            "for example times = [0, 900, 1100, 1350]",
+        ],
+    );
+}
+
+#[test]
+fn a_mixed_movie_format_says_what_each_file_takes() {
+    // png and pdf were dropped without a word: now the kymograph takes
+    // them, at --scale, and one line says so.
+    let dir = temp_dir("mixed");
+    let d = dir.to_str().unwrap();
+    let out = ladder(&[
+        "movie",
+        "7",
+        "--frames",
+        "4",
+        "--size",
+        "160x120",
+        "--format",
+        "gif,png,pdf,svg",
+        "--scale",
+        "2",
+        "--out",
+        d,
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(
+        stderr.lines().next().unwrap(),
+        "ladder: --format gif,png,pdf,svg: writing the movie as GIF and its kymograph as PNG \
+         and PDF and SVG"
+    );
+    for f in [
+        "movie-7.gif",
+        "movie-7-kymograph.png",
+        "movie-7-kymograph.pdf",
+        "movie-7-kymograph.svg",
+    ] {
+        assert!(dir.join(f).is_file(), "{f} not written: {stderr}");
+    }
+    assert!(
+        std::fs::read(dir.join("movie-7-kymograph.pdf"))
+            .unwrap()
+            .starts_with(b"%PDF")
+    );
+    // --scale 2: the kymograph PNG has twice the pixels of --scale 1's
+    // (480 × 360, the smallest kymograph, at 160 × 120 frames).
+    let png = std::fs::read(dir.join("movie-7-kymograph.png")).unwrap();
+    let size = |b: &[u8]| {
+        (
+            u32::from_be_bytes(b[16..20].try_into().unwrap()),
+            u32::from_be_bytes(b[20..24].try_into().unwrap()),
+        )
+    };
+    assert_eq!(size(&png), (960, 720));
+    bad_input(
+        &["movie", "7", "--format", "pdf", "--out", d],
+        &["--format pdf: no movie format"],
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
 fn an_odd_mp4_size_suggests_the_nearest_even_size_below() {
     bad_input(
         &["movie", "4", "--format", "mp4", "--size", "1921x1080"],

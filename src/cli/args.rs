@@ -372,8 +372,9 @@ pub struct MovieArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub format: MovieFormat,
-    /// File formats, comma-separated: gif, mp4 (H.264; frame width and
-    /// height must be even)
+    /// File formats, comma-separated: gif, mp4 for the movie (H.264; frame
+    /// width and height must be even); png, svg, pdf for its kymograph
+    /// (png if none)
     #[arg(
         long = "format",
         default_value = "gif",
@@ -381,6 +382,15 @@ pub struct MovieArgs {
         help_heading = "Movie format"
     )]
     pub formats: String,
+    /// Scale of the kymograph's PNG: 2 draws it with twice the pixels each
+    /// way (0.25..=8)
+    #[arg(
+        long,
+        default_value_t = 1.0,
+        value_name = "S",
+        help_heading = "Movie format"
+    )]
+    pub scale: f32,
     #[command(flatten)]
     pub limits: SimLimitArgs,
     #[command(flatten)]

@@ -589,15 +589,47 @@ impl MixedFormat {
     }
 }
 
-/// The movie formats of `ladder movie`, checked against the frame size
-/// and rate.
-pub fn movie_outputs(list: &str, movie: &MovieOptions) -> Result<Outputs> {
-    let movies = formats_of(list, FormatKind::Movie)?;
+/// The formats of `ladder movie`: the movie formats of `list` (gif, mp4),
+/// checked against the frame size and rate, and its figure formats (png,
+/// svg, pdf; PNG if none) for the movie's kymograph, whose PNG is
+/// `scale` times the movie's pixels.
+pub fn movie_outputs(list: &str, movie: &MovieOptions, scale: f32) -> Result<Outputs> {
+    let (figures, movies) =
+        encode::parse_mixed(list).map_err(|e| Error::bad_input(format!("--format: {e}")))?;
+    let movies = movies.ok_or_else(|| {
+        Error::bad_input(format!(
+            "--format {list}: no movie format; a movie is gif or mp4 (and its kymograph \
+             png, svg or pdf), e.g. --format gif,pdf"
+        ))
+    })?;
     check_movie_formats(&movies, movie)?;
-    Ok(Outputs {
+    let outputs = Outputs {
+        figures: figures.unwrap_or_else(|| Formats::default_for(FormatKind::Figure)),
         movies,
         ..Outputs::default()
-    })
+    };
+    with_scale(outputs, scale)
+}
+
+/// For a `--format` list of `ladder movie` that names figure formats as
+/// well as movie formats: one line saying which file takes which (the
+/// movie the movie formats, its kymograph the figure formats).
+pub fn movie_formats_line(list: &str, outputs: &Outputs) -> Option<String> {
+    let (figures, _) = encode::parse_mixed(list).ok()?;
+    figures?;
+    let names = |f: &Formats| {
+        let v: Vec<String> = f
+            .as_slice()
+            .iter()
+            .map(|f| f.name().to_uppercase())
+            .collect();
+        v.join(" and ")
+    };
+    Some(format!(
+        "--format {list}: writing the movie as {} and its kymograph as {}",
+        names(&outputs.movies),
+        names(&outputs.figures)
+    ))
 }
 
 /// Every movie format can take the frame size and rate (before any work).
@@ -678,13 +710,21 @@ mod tests {
     #[test]
     fn formats_are_checked_before_work() {
         let movie = MovieOptions::default();
-        let e = movie_outputs("pdf", &movie).unwrap_err().to_string();
+        let e = movie_outputs("pdf", &movie, 1.0).unwrap_err().to_string();
+        assert!(e.starts_with("--format pdf: no movie format"), "{e}");
+        let o = movie_outputs("gif,mp4,png,pdf", &movie, 2.0).unwrap();
         assert_eq!(
-            e,
-            "--format: a movie cannot be pdf; a movie can be gif, mp4"
+            (o.movies.to_string(), o.figures.to_string()),
+            ("gif,mp4".into(), "png,pdf".into())
         );
+        assert_eq!(
+            movie_formats_line("gif,mp4,png,pdf", &o).unwrap(),
+            "--format gif,mp4,png,pdf: writing the movie as GIF and MP4 and its kymograph \
+             as PNG and PDF"
+        );
+        assert_eq!(movie_formats_line("gif", &o), None);
         let fast = MovieOptions { fps: 60.0, ..movie };
-        let e = movie_outputs("gif", &fast).unwrap_err().to_string();
+        let e = movie_outputs("gif", &fast, 1.0).unwrap_err().to_string();
         assert!(e.starts_with("--fps: a GIF plays at most 50"), "{e}");
         let mixed = MixedFormat {
             formats: "pdf,gif".into(),

@@ -190,9 +190,12 @@ pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
             let opts = args.format.options()?;
             let outputs = recorded(Outputs {
                 mp4_quality: args.format.mp4_quality(),
-                ..convert::movie_outputs(&args.formats, &opts)?
+                ..convert::movie_outputs(&args.formats, &opts, args.scale)?
             });
             let scenes = movie_scenes(&args)?;
+            if let Some(line) = convert::movie_formats_line(&args.formats, &outputs) {
+                output::eprint(&format!("ladder: {line}\n"))?;
+            }
             render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, false)
         }
         Command::Render(args) => {
@@ -839,6 +842,11 @@ fn render_into(
     index: bool,
 ) -> Result<()> {
     let (out, verbose) = (out.out.as_path(), out.verbose);
+    // The gallery shows a PNG of every figure: one is made if none is asked.
+    let outputs = &Outputs {
+        preview: index,
+        ..outputs.clone()
+    };
     use rayon::prelude::*;
     convert::check_out_dir(out)?;
     // Every target, index.html included, before anything is rendered.

@@ -37,10 +37,19 @@ pub fn parse(text: &str, origin: &str, default_name: &str) -> Result<Scene> {
         let span = e.span().map(back);
         let (span, key) = match unknown_key(doc.get_ref(), e.message()) {
             Some((path, at)) => (Some(at), Some(path)),
-            None => (
-                span.clone(),
-                span.and_then(|s| key_at(doc.get_ref(), s.start)),
-            ),
+            None => {
+                let key = span.clone().and_then(|s| {
+                    key_at(doc.get_ref(), s.start)
+                        .or_else(|| table_at(text, doc.get_ref(), s.start))
+                });
+                match key
+                    .as_deref()
+                    .and_then(|k| typed_key(text, doc.get_ref(), k, e.message()))
+                {
+                    Some((path, at)) => (Some(at), Some(path)),
+                    None => (span, key),
+                }
+            }
         };
         let message = words::plain(e.message(), key.as_deref());
         located(text, origin, span, key.as_deref(), &message)
@@ -173,6 +182,70 @@ fn unknown_key(doc: &DeTable<'_>, message: &str) -> Option<(String, Range<usize>
         None
     }
     find(doc, name, &mut Vec::new())
+}
+
+/// For serde's "invalid type: integer `5`, expected …" placed at a whole
+/// table (serde reads an `[output]` table of one kind as a whole, and
+/// says no more), the dotted path and span of the one key under `table`
+/// whose value is written as serde quotes it.
+fn typed_key(
+    text: &str,
+    doc: &DeTable<'_>,
+    table: &str,
+    message: &str,
+) -> Option<(String, Range<usize>)> {
+    let got = message
+        .strip_prefix("invalid type: ")?
+        .split(", expected")
+        .next()?;
+    let written = match got.split('`').nth(1) {
+        Some(v) => v.to_string(),
+        None => got.strip_prefix("string ")?.to_string(),
+    };
+    let mut here = doc.get(table.split('.').next()?)?;
+    for part in table.split('.').skip(1) {
+        here = here.get_ref().get(part)?;
+    }
+    let DeValue::Table(t) = here.get_ref() else {
+        return None;
+    };
+    fn walk(
+        text: &str,
+        t: &DeTable<'_>,
+        written: &str,
+        path: &mut Vec<String>,
+        hits: &mut Vec<(String, Range<usize>)>,
+    ) {
+        for (k, v) in t.iter() {
+            path.push(k.get_ref().to_string());
+            match v.get_ref() {
+                DeValue::Table(inner) => walk(text, inner, written, path, hits),
+                DeValue::Array(_) => {}
+                _ if text.get(v.span()).map(str::trim) == Some(written) => {
+                    hits.push((path.join("."), v.span()));
+                }
+                _ => {}
+            }
+            path.pop();
+        }
+    }
+    let mut hits = Vec::new();
+    walk(text, t, &written, &mut vec![table.to_string()], &mut hits);
+    if hits.len() == 1 { hits.pop() } else { None }
+}
+
+/// The top-level table whose `[header]` starts at byte `offset` (where
+/// serde places an error about the table as a whole).
+fn table_at(text: &str, doc: &DeTable<'_>, offset: usize) -> Option<String> {
+    doc.iter()
+        .filter(|(_, v)| matches!(v.get_ref(), DeValue::Table(_)))
+        .find(|(k, _)| {
+            k.span().start >= offset
+                && text
+                    .get(offset..k.span().start)
+                    .is_some_and(|t| !t.contains('\n'))
+        })
+        .map(|(k, _)| k.get_ref().to_string())
 }
 
 /// Reads and parses the scene file at `path`; a scene without `name` is
@@ -402,6 +475,19 @@ mod tests {
         assert!(
             e.starts_with("f:2:5: model.n: expected a whole number, got the text \"ten\""),
             "{e}"
+        );
+    }
+
+    #[test]
+    fn a_wrong_type_in_output_names_its_key() {
+        // serde reads `[output]` as a whole and places the error at it.
+        let e = parse("[model]\nn = 10\n\n[output]\ntimes = 5\n", "f", "f")
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            e,
+            "f:5:9: output.times: expected a list [ ... ], got the whole number 5; for example \
+             times = [0, 900, 1100, 1350]"
         );
     }
 

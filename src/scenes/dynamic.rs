@@ -4,7 +4,7 @@
 
 pub use super::data::{FrameData, RunData};
 use super::run::{self, SceneRun};
-use crate::encode::{Format, MovieWriter, Mp4Quality, png_bytes};
+use crate::encode::{Format, MovieWriter, Mp4Quality};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::charts::{self, Axis, ChartSpec, Kymograph, Marker, Series};
@@ -14,7 +14,7 @@ use crate::render::compose::{
 use crate::render::fold::{self, Fold};
 use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::{Canvas, MovieLayout, Picture, style};
-use crate::scene::{Camera, DriveSpec, MIN_BLOCK_PIXELS, Model, OutputSpec, Scene, describe};
+use crate::scene::{Camera, MIN_BLOCK_PIXELS, OutputSpec, Scene, describe};
 use crate::sim::{self, Trajectory};
 use tiny_skia::Pixmap;
 
@@ -690,11 +690,22 @@ pub fn movie_column_numbers(
         .collect())
 }
 
-/// A movie's files: its bytes in each format, the kymograph PNG, its data.
-pub type MovieFiles = (Vec<(Format, Vec<u8>)>, Vec<u8>, RunData);
+/// A movie's files: its bytes in each format, its kymograph (a figure,
+/// written in the figure formats asked for), its data.
+pub type MovieFiles = (Vec<(Format, Vec<u8>)>, MovieKymograph, RunData);
+
+/// The kymograph beside a movie: a picture like any figure's, and the
+/// scale at which its PNG has the movie's pixels (above 640 × 480 the
+/// chart is laid out at the movie layout's design size and drawn scaled
+/// up, so its text grows with the movie's).
+pub struct MovieKymograph {
+    pub picture: Picture,
+    /// PNG pixels per picture pixel at `--scale 1`.
+    pub png_scale: f32,
+}
 
 /// A movie: its bytes in each of `formats` (GIF, MP4: the same frames),
-/// the kymograph PNG and the run's data. Each frame shows the ladder on
+/// its kymograph and the run's data. Each frame shows the ladder on
 /// the left and, on the right, the kymograph of sin θ_n up to that frame;
 /// the layout scales with the frame size (`render::MovieLayout`);
 /// `frame_done` is called after each frame (for a progress bar).
@@ -735,7 +746,7 @@ pub fn movie_at(
         writer.push_frame(&canvas)?;
         frame_done();
     }
-    let kymo = kymograph_image(
+    let kymo = kymograph_picture(
         &plan.title,
         traj,
         n,
@@ -743,7 +754,7 @@ pub fn movie_at(
         opts.height.max(360),
     )?;
     let data = RunData::with_kymograph(scene, plan.run);
-    Ok((writer.finish()?, png_bytes(&kymo)?, data))
+    Ok((writer.finish()?, kymo, data))
 }
 
 /// Frame `k` of a movie exactly as [`movie`] draws it (for tests and
@@ -803,6 +814,29 @@ pub fn kymograph_image(
         .tree()
         .ok_or_else(|| Error::failed("the kymograph's SVG could not be parsed"))?;
     charts::rasterize_tree(tree, width, height)
+}
+
+/// The kymograph of [`kymograph_image`] as a picture (for every figure
+/// format) with the scale at which its PNG is `width × height`.
+pub fn kymograph_picture(
+    title: &str,
+    traj: &Trajectory,
+    n: usize,
+    width: u32,
+    height: u32,
+) -> Result<MovieKymograph> {
+    let scale = MovieLayout::new(width, height, n).scale.max(1.0);
+    let design = |v: u32| ((v as f32 / scale).round() as u32).max(60);
+    let (w, h) = if scale <= 1.0 {
+        (width, height)
+    } else {
+        (design(width), design(height))
+    };
+    let chart = kymograph_chart(title, traj, n, w, h)?;
+    Ok(MovieKymograph {
+        png_scale: width as f32 / w as f32,
+        picture: chart.into(),
+    })
 }
 
 /// The kymograph chart (SVG and raster) of sin θ_n of `traj`.

@@ -8,7 +8,7 @@ pub mod dynamic;
 pub mod run;
 pub mod theory;
 
-use crate::encode::{Formats, Kind as FormatKind, Mp4Quality};
+use crate::encode::{Format, Formats, Kind as FormatKind, Mp4Quality};
 use crate::error::{Error, Result};
 use crate::render::Picture;
 use crate::scene::{OutputSpec, Scene, describe};
@@ -18,10 +18,14 @@ pub use dynamic::MovieOptions;
 /// Which files each scene writes (`--format`, `--scale`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Outputs {
-    /// Formats of figures (and of nothing else). Default: PNG.
+    /// Formats of figures, a movie's kymograph among them. Default: PNG.
     pub figures: Formats,
-    /// Formats of movies. Default: GIF. A movie's kymograph is a PNG.
+    /// Formats of movies. Default: GIF.
     pub movies: Formats,
+    /// Whether each figure (and kymograph) asked in formats without PNG
+    /// also gets a `<name>-preview.png`, for the gallery to show.
+    /// Default: false.
+    pub preview: bool,
     /// Pixels per design pixel of PNG figures: 2 gives the same layout
     /// with twice the pixels each way. SVG and PDF are vector and keep the
     /// design size (PDF: 0.75 pt per design pixel). Default: 1.
@@ -42,6 +46,7 @@ impl Default for Outputs {
         Self {
             figures: Formats::default_for(FormatKind::Figure),
             movies: Formats::default_for(FormatKind::Movie),
+            preview: false,
             scale: 1.0,
             mp4_quality: Mp4Quality::default(),
             style: crate::render::StyleSpec::default(),
@@ -65,6 +70,42 @@ impl Outputs {
         }
         Ok(self)
     }
+
+    /// Whether figures get a PNG preview: asked for, and no PNG among
+    /// the figure formats.
+    pub fn needs_preview(&self) -> bool {
+        self.preview && !self.figures.contains(Format::Png)
+    }
+
+    /// The figure formats to encode: those asked, then PNG for the
+    /// preview when [`Outputs::needs_preview`].
+    fn encoded_figures(&self) -> Result<Formats> {
+        if !self.needs_preview() {
+            return Ok(self.figures.clone());
+        }
+        let mut list = self.figures.as_slice().to_vec();
+        list.push(Format::Png);
+        Ok(Formats::new(&list, FormatKind::Figure)?)
+    }
+}
+
+/// What ends the name of a figure's PNG preview (`figure-3-preview.png`).
+pub const PREVIEW: &str = "-preview.png";
+
+/// `<base>.<ext>` for each figure format, then the preview's name when
+/// [`Outputs::needs_preview`]: the names of the bytes of
+/// [`Outputs::encoded_figures`], in order.
+fn figure_names(base: &str, outputs: &Outputs) -> Vec<String> {
+    let mut names: Vec<String> = outputs
+        .figures
+        .as_slice()
+        .iter()
+        .map(|f| format!("{base}.{}", f.extension()))
+        .collect();
+    if outputs.needs_preview() {
+        names.push(format!("{base}{PREVIEW}"));
+    }
+    names
 }
 
 /// Number of kymograph rows of a kymograph figure.
@@ -86,26 +127,16 @@ pub fn file_names_for(scene: &Scene, outputs: &Outputs) -> Vec<String> {
                 .iter()
                 .map(|f| format!("{stem}.{}", f.extension()))
                 .collect();
-            v.push(format!("{stem}-kymograph.png"));
+            v.extend(figure_names(&format!("{stem}-kymograph"), outputs));
             v
         }
         OutputSpec::Data => vec![],
         OutputSpec::Sweep(_) => {
-            let mut v: Vec<String> = outputs
-                .figures
-                .as_slice()
-                .iter()
-                .map(|f| format!("{stem}.{}", f.extension()))
-                .collect();
+            let mut v = figure_names(&stem, outputs);
             v.push(format!("{stem}.csv"));
             v
         }
-        _ => outputs
-            .figures
-            .as_slice()
-            .iter()
-            .map(|f| format!("{stem}.{}", f.extension()))
-            .collect(),
+        _ => figure_names(&stem, outputs),
     };
     names.push(format!("{stem}.json"));
     names
@@ -241,12 +272,7 @@ fn render_styled(
 ) -> Result<()> {
     if let OutputSpec::Sweep(_) = scene.output {
         // Its own data file: the sweep's JSON (crate::sweep::results).
-        let files = crate::sweep::render(
-            scene,
-            &outputs.figures,
-            outputs.scale,
-            &outputs.command_line,
-        )?;
+        let files = sweep_files(scene, outputs)?;
         return files
             .iter()
             .try_for_each(|(name, bytes)| sink(name, &|w| w.write_all(bytes)));
@@ -258,7 +284,7 @@ fn render_styled(
         | OutputSpec::Kymograph => {
             let (picture, runs) = figure_picture(scene)?;
             (
-                figure_bytes(&picture, &outputs.figures, outputs.scale)?,
+                figure_bytes(&picture, &outputs.encoded_figures()?, outputs.scale)?,
                 runs,
             )
         }
@@ -271,7 +297,13 @@ fn render_styled(
                 frame_done,
             )?;
             let mut v: Vec<Vec<u8>> = movies.into_iter().map(|(_, b)| b).collect();
-            v.push(kymo);
+            // The kymograph is a figure: every figure format, its PNG at
+            // the movie's pixels times `--scale`.
+            v.extend(figure_bytes(
+                &kymo.picture,
+                &outputs.encoded_figures()?,
+                kymo.png_scale * outputs.scale,
+            )?);
             (v, vec![run])
         }
         OutputSpec::Data => {
@@ -297,4 +329,33 @@ fn render_styled(
     }
     drop(bytes);
     sink(data_name, &|w| data::write_json(w, &data))
+}
+
+/// A sweep's files ([`crate::sweep::render`]), its PNG renamed the
+/// preview when the formats asked have none.
+fn sweep_files(scene: &Scene, outputs: &Outputs) -> Result<Vec<(String, Vec<u8>)>> {
+    let mut files = crate::sweep::render(
+        scene,
+        &outputs.encoded_figures()?,
+        outputs.scale,
+        &outputs.command_line,
+    )?;
+    if outputs.needs_preview() {
+        let (png, preview) = (
+            format!("{}.png", scene.stem()),
+            format!("{}{PREVIEW}", scene.stem()),
+        );
+        let json = format!("{}.json", scene.stem());
+        for (name, bytes) in &mut files {
+            if *name == png {
+                name.clone_from(&preview);
+            } else if *name == json {
+                // Its list of files names the preview as written.
+                let text = String::from_utf8_lossy(bytes)
+                    .replace(&format!("\"{png}\""), &format!("\"{preview}\""));
+                *bytes = text.into_bytes();
+            }
+        }
+    }
+    Ok(files)
 }
