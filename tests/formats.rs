@@ -704,7 +704,7 @@ fn bad_formats_sizes_and_outs_are_one_line_exit_2() {
         ),
         (
             &["movie", "4", "--format", "pdf", "--out", o],
-            "--format: a movie cannot be pdf",
+            "--format pdf: no movie format; a movie is gif or mp4",
         ),
         (
             &["all", "--format", "png,webm", "--out", o],
