@@ -58,33 +58,57 @@ fn theory_scene(dir: &TempDir, name: &str, figure: &str, n: usize, lists: &str) 
 }
 
 /// `auto` halves its step up to 10 times, each run twice as long as the
-/// last: the worst case is 2047 times the first run. The old code costed
-/// each run alone, so a cap of 10^6 steps × N passed the first runs of
-/// this one (1.6 × 10^5 each at N = 10, dt = 0.25, t_end = 4000) and would
-/// have refused only the sixth halving, after the work of the first five.
-/// Now the sum over all halvings, 16,000 × 2047 × 10 = 3.3 × 10^8
-/// block-steps, is refused before any run, naming the flag.
+/// last: every halving would be 2047 times the first run. The old code
+/// costed each run alone, as it came, so it could compute for minutes and
+/// then refuse. Now its budget is set before any run: the first pair must
+/// fit under the cap (else it is refused at once, naming the flag), and
+/// only the halvings that keep the total under the cap are made; a run
+/// that needs more ends with the cap's error, never past the cap.
+/// At N = 10, t_end = 4000, the runs at dt = 0.25 and 0.125 are 1.6 × 10^5
+/// and 3.2 × 10^5 steps × N; the next, at 0.0625, 6.4 × 10^5.
 #[test]
-fn autos_halvings_are_costed_before_the_first_run() {
+fn autos_halvings_are_budgeted_before_the_first_run() {
+    // The first pair, 4.8e5, is past a cap of 4e5: refused before work.
+    refused(
+        &[
+            "simulate",
+            "--integrator",
+            "auto",
+            "--max-block-steps",
+            "4e5",
+        ],
+        Duration::from_secs(20),
+        &["--max-block-steps", "auto", "first two runs", "480060"],
+    );
+    // A cap of 1e6 allows the first pair but not the next halving
+    // (4.8e5 + 6.4e5 = 1.12e6): a tolerance no pair meets ends after the
+    // first pair (at dt = 0.25 and 0.125), naming what the next halving
+    // would need.
+    refused(
+        &[
+            "simulate",
+            "--integrator",
+            "auto",
+            "--tolerance",
+            "1e-6",
+            "--max-block-steps",
+            "1e6",
+        ],
+        Duration::from_secs(20),
+        &[
+            "--max-block-steps",
+            "one more halving",
+            "1.1e6",
+            "dt = 0.125 τ",
+        ],
+    );
+    // The same cap with the default tolerance: the first pair verifies.
     let args = [
         "simulate",
         "--integrator",
         "auto",
         "--max-block-steps",
         "1e6",
-    ];
-    refused(
-        &args,
-        Duration::from_secs(20),
-        &["--max-block-steps", "auto", "3.3e8", "halved"],
-    );
-    // With the cap raised past the worst case it runs.
-    let args = [
-        "simulate",
-        "--integrator",
-        "auto",
-        "--max-block-steps",
-        "3.4e8",
     ];
     let out = ladder_within(&args, Duration::from_secs(120)).expect("runs");
     assert_eq!(

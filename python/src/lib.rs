@@ -91,7 +91,11 @@ fn sweep_tables(scene: &Scene, max_runs: usize) -> Result<(String, String)> {
     let records = plan.run(&all, &|| {})?;
     let stem = format!("sweep-{}", plan.scene.name);
     let names = [format!("{stem}.csv"), format!("{stem}.json")];
-    let json = results::json(&plan, &records, &names)?;
+    // What made it: the Python process's own command line.
+    let argv: Vec<String> = std::env::args_os()
+        .map(|a| a.to_string_lossy().into_owned())
+        .collect();
+    let json = results::json(&plan, &records, &names, &argv)?;
     Ok((
         results::csv(&plan, &records),
         String::from_utf8_lossy(&json).into_owned(),

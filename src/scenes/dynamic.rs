@@ -226,6 +226,9 @@ fn strip_fit(count: usize) -> Option<(u32, u32)> {
 
 /// The strips of a filmstrip scene, one per panel, with their data.
 fn strips(scene: &Scene, frame: Option<(u32, u32)>) -> Result<Vec<(Strip, RunData)>> {
+    // `t_end = "auto"` resolved here too, for callers of this function
+    // that did not go through `scenes::render_to` (a no-op when resolved).
+    let scene = &scene.with_auto_window()?;
     let labels = panel_labels(scene);
     let runs = scene.runs();
     let fit = strip_fit(runs.len());
@@ -359,6 +362,9 @@ pub fn arrivals_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
 /// What [`arrivals_figure`] draws: the chart's series (each wave's marks,
 /// labelled, then its fitted line, unlabelled) and the runs' data.
 pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
+    // `t_end = "auto"` resolved here too, for callers of this function
+    // that did not go through `scenes::render_to` (a no-op when resolved).
+    let scene = &scene.with_auto_window()?;
     let runs = scene.runs();
     let labels = panel_labels(scene);
     let n_max = runs.iter().map(|(s, _)| s.model.n).max().unwrap_or(10);
@@ -516,6 +522,9 @@ struct MoviePlan {
 
 impl MoviePlan {
     fn new(scene: &Scene, opts: &MovieOptions) -> Result<Self> {
+        // `t_end = "auto"` resolved here too, for callers of this function
+        // that did not go through `scenes::render_to` (a no-op when resolved).
+        let scene = &scene.with_auto_window()?;
         let camera = match scene.output {
             OutputSpec::Movie { camera } => camera,
             _ => Camera::Fixed,
@@ -782,6 +791,9 @@ pub fn movie_frame(scene: &Scene, opts: &MovieOptions, k: usize) -> Result<Pixma
 
 /// A kymograph figure: sin θ_n of the scene's run over `frames` rows.
 pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Picture, RunData)> {
+    // `t_end = "auto"` resolved here too, for callers of this function
+    // that did not go through `scenes::render_to` (a no-op when resolved).
+    let scene = &scene.with_auto_window()?;
     let times = frame_times(scene.run.t_end, frames);
     let run = run::simulate(scene, &times)?;
     let title = describe::title(scene);

@@ -212,6 +212,9 @@ pub fn render_to(
     frame_done: &(dyn Fn() + Sync),
     sink: &mut dyn FnMut(&str, Fill<'_>) -> Result<()>,
 ) -> Result<()> {
+    // The data file records the scene as asked (`t_end = "auto"` reruns to
+    // the same window); everything drawn uses the window found.
+    let asked = scene;
     let scene = &scene.with_auto_window()?;
     if !matches!(scene.output, OutputSpec::Sweep(_)) {
         let (bytes, block_samples) = data::estimated_bytes(scene, movie, KYMOGRAPH_ROWS);
@@ -224,7 +227,8 @@ pub fn render_to(
             )
         })?;
     }
-    style_of(scene, outputs)?.apply(|| render_styled(scene, movie, outputs, frame_done, sink))
+    style_of(scene, outputs)?
+        .apply(|| render_styled(asked, scene, movie, outputs, frame_done, sink))
 }
 
 /// The style a scene's figures are drawn in: the flags over its `[style]`.
@@ -264,6 +268,7 @@ pub fn check(scene: &Scene, movie: &MovieOptions, outputs: &Outputs) -> Result<(
 
 /// [`render_with`] with the scene's style in force.
 fn render_styled(
+    asked: &Scene,
     scene: &Scene,
     movie: &MovieOptions,
     outputs: &Outputs,
@@ -320,7 +325,7 @@ fn render_styled(
         parameters: describe::parameters(scene),
         fidelity: scene.fidelity().name(),
         files: names.clone(),
-        scene,
+        scene: asked,
         runs,
     };
     let (data_name, pictures) = names.split_last().expect("a data file is always named");

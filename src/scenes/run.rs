@@ -73,9 +73,27 @@ fn short(x: f64) -> String {
 /// Refuses, before any work, a run of `scene` with `samples` sample
 /// times past the caps in force: its integrator's steps × N and samples
 /// × N, and for `auto` every halving it may make (`sim::auto::worst_case`).
+///
+/// With `t_end = "auto"` the window is not known before its own run
+/// (`sim::window`), so that run is what is checked here: one run to the
+/// automatic window's cap at the integrator's first step. The runs drawn
+/// after it are checked again, with the window found, before they start.
 pub fn check_cost(scene: &Scene, samples: usize) -> Result<()> {
-    let scenario = scene.scenario()?;
     let limits = crate::limits::Limits::active();
+    if scene.run.t_end == crate::scene::AUTO_T_END {
+        let mut capped = scene.clone();
+        capped.run.t_end = sim::window::AUTO_CAP;
+        let scenario = capped.scenario()?;
+        let config = match scene.run.fixed_config()? {
+            Some(config) => config,
+            None => sim::IntegratorConfig::auto(crate::theory::dispersion::omega_max_clamped(
+                &scene.model.params()?,
+            )?),
+        };
+        sim::check_cost(&scenario, 0, &config, &limits)?;
+        return Ok(());
+    }
+    let scenario = scene.scenario()?;
     match scene.run.fixed_config()? {
         Some(config) => {
             sim::check_cost(&scenario, samples, &config, &limits)?;
@@ -103,6 +121,9 @@ pub fn simulate_with(
     stepping: Stepping,
     progress: &(dyn Fn(f64) + Sync),
 ) -> Result<SceneRun> {
+    // `t_end = "auto"` resolved here for callers that did not (a no-op
+    // when it is a number).
+    let scene = &scene.with_auto_window()?;
     let scenario = scene.scenario()?;
     match scene.run.fixed_config()? {
         Some(config) => {

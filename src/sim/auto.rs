@@ -10,17 +10,20 @@
 //! of at most the tolerance keeps the returned run's arrival times within
 //! about a third of it; that estimate is what is reported.
 //!
-//! The cost of the worst case, every halving down to dt / 2^[`MAX_HALVINGS`]
-//! (about 2^11 − 1 = 2047 times the first run), is checked against the cap
-//! on steps × N before any run starts ([`worst_case`]): a run that the cap
-//! would stop part way is refused at once, not after minutes of work.
+//! What `auto` may spend is decided before any run starts ([`worst_case`]):
+//! the first pair of runs must fit under the cap on steps × N (else the
+//! run is refused at once), and only the halvings whose runs keep the total
+//! under the cap are made. A run that would need a finer step than the
+//! budget allows ends with the cap's error naming what it needs, so `auto`
+//! never computes past the cap. Every halving down to dt / 2^[`MAX_HALVINGS`]
+//! would be about 2^11 − 1 = 2047 times the first run.
 
 use super::{
     Cost, IntegratorConfig, IntegratorKind, Scenario, Stepping, Trajectory, check_cost,
     simulate_observed,
 };
 use crate::error::{Error, Result, num};
-use crate::limits::{Limits, Resource, count};
+use crate::limits::{Limits, Resource};
 
 /// Most halvings of the step before `auto` gives up (dt / 2^10).
 pub const MAX_HALVINGS: u32 = 10;
@@ -66,8 +69,8 @@ pub fn simulate_verified_observed(
     let simulate = |scenario: &Scenario, samples: &[f64], config: &IntegratorConfig| {
         simulate_observed(scenario, samples, config, Stepping::Fastest, progress)
     };
-    worst_case(scenario, sample_times.len(), omega_max, &Limits::active())?;
-    let mut dt = IntegratorConfig::auto(omega_max).dt;
+    let budget = worst_case(scenario, sample_times.len(), omega_max, &Limits::active())?;
+    let mut dt = budget.dt;
     let mut total = 0;
     // The first pair of runs is independent: both cores take one each.
     let (first_coarse, first_fine) = rayon::join(
@@ -84,7 +87,7 @@ pub fn simulate_verified_observed(
     }
     let mut first_fine = Some(first_fine);
     let mut last_difference = f64::INFINITY;
-    for _ in 0..MAX_HALVINGS {
+    for _ in 0..budget.pairs {
         let config = verlet(0.5 * dt);
         let run = match first_fine.take() {
             Some(r) => r,
@@ -126,59 +129,98 @@ pub fn simulate_verified_observed(
     } else {
         "the runs still disagree on which blocks flip".to_string()
     };
+    if let Some(next) = budget.next_block_steps {
+        // A finer step would pass the cap: raising it is the remedy.
+        return Err(Error::Limit(crate::limits::LimitExceeded {
+            resource: Resource::BlockSteps,
+            value: next,
+            cap: Limits::active().cap(Resource::BlockSteps),
+            detail: format!(
+                "the auto integrator's runs with one more halving of the step, to verify this \
+                 run within {tolerance} τ: at dt = {} τ {what}; or raise the tolerance, or name \
+                 an integrator and step",
+                num(dt)
+            ),
+        }));
+    }
     Err(Error::failed(format!(
         "the auto integrator could not verify this run within {tolerance} τ: at dt = {} τ {what}; \
          hint: raise the tolerance, or name an integrator and step",
-        0.5 * dt
+        num(dt)
     )))
 }
 
-/// The cost of every run `auto` may make for `scenario` with `samples`
-/// sample times: the first step dt from `omega_max` and each halving down
-/// to dt / 2^[`MAX_HALVINGS`] (the coarse run of each pair unsampled, but
-/// counted with the samples' stops, an upper bound). Refuses, before any
-/// work, a worst case past `limits`' cap on steps × N ([`Error::Limit`],
-/// whose detail says it is the halvings' total), and a first pair of runs
-/// that is itself refused ([`check_cost`]). A halving whose step is too
-/// small to advance time ends the sum: `auto` stops there with that error.
+/// What `auto` may spend on `scenario`, decided before any run: its first
+/// pair of runs (dt from `omega_max` and dt/2) and then as many further
+/// halvings, down to dt / 2^[`MAX_HALVINGS`], as keep the total of steps ×
+/// N under `limits`' cap (each run counted with the samples' stops, an
+/// upper bound).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Budget {
+    /// Pairs of runs compared at most (1 = the first pair only).
+    pub pairs: u32,
+    /// Steps and steps × N of every run within the budget.
+    pub total: Cost,
+    /// Steps × N with one pair more (`None`: every halving fits).
+    pub next_block_steps: Option<f64>,
+    /// The first step, τ.
+    pub dt: f64,
+}
+
+/// The [`Budget`] of `auto` for `scenario` with `samples` sample times.
+/// Refuses, before any work, a first pair of runs past `limits`' cap on
+/// steps × N ([`Error::Limit`]) or a single run that is itself refused
+/// ([`check_cost`]). Halvings that would pass the cap are left out of the
+/// budget: the runs never compute past the cap, and a run that needs them
+/// ends with [`Error::Limit`] saying so ([`simulate_verified`]).
 pub fn worst_case(
     scenario: &Scenario,
     samples: usize,
     omega_max: f64,
     limits: &Limits,
-) -> Result<Cost> {
+) -> Result<Budget> {
     let dt = IntegratorConfig::auto(omega_max).dt;
-    let first = check_cost(scenario, samples, &verlet(dt), limits)?;
-    check_cost(scenario, samples, &verlet(0.5 * dt), limits)?;
-    let mut total = first;
-    let mut finest = dt;
-    for k in 1..=MAX_HALVINGS {
-        let step = dt / f64::from(1u32 << k);
-        match check_cost(scenario, samples, &verlet(step), &Limits::none()) {
-            Ok(c) => {
-                total.steps += c.steps;
-                total.block_steps += c.block_steps;
-                finest = step;
-            }
-            Err(Error::BadInput(_)) => break,
-            Err(e) => return Err(e),
-        }
-    }
+    let mut total = check_cost(scenario, samples, &verlet(dt), limits)?;
+    let second = check_cost(scenario, samples, &verlet(0.5 * dt), limits)?;
+    total.steps += second.steps;
+    total.block_steps += second.block_steps;
     limits
         .check(Resource::BlockSteps, total.block_steps, || {
             format!(
-                "the auto integrator's worst case: {} steps in all, its runs at dt = {} halved \
-                 down to {} to verify the arrival times, up to t_end = {}, times N = {}; \
-                 or name an integrator and step",
-                count(total.steps),
+                "the auto integrator's first two runs, at dt = {} and {}, to t_end = {}, times \
+                 N = {}; or name an integrator and step",
                 num(dt),
-                num(finest),
+                num(0.5 * dt),
                 num(scenario.t_end),
                 scenario.ladder.n()
             )
         })
         .map_err(Error::Limit)?;
-    Ok(total)
+    let mut pairs = 1;
+    let mut next_block_steps = None;
+    for k in 2..=MAX_HALVINGS {
+        let step = dt / f64::from(1u32 << k);
+        let c = match check_cost(scenario, samples, &verlet(step), &Limits::none()) {
+            Ok(c) => c,
+            // A step too small to advance time: `auto` stops there.
+            Err(Error::BadInput(_)) => break,
+            Err(e) => return Err(e),
+        };
+        let with = total.block_steps + c.block_steps;
+        if with > limits.cap(Resource::BlockSteps) {
+            next_block_steps = Some(with);
+            break;
+        }
+        total.steps += c.steps;
+        total.block_steps = with;
+        pairs += 1;
+    }
+    Ok(Budget {
+        pairs,
+        total,
+        next_block_steps,
+        dt,
+    })
 }
 
 fn verlet(dt: f64) -> IntegratorConfig {
