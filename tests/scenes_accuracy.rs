@@ -23,7 +23,10 @@ const REFERENCE_RTOL: f64 = 1e-10;
 fn catalogue_runs() -> Vec<(String, Scene)> {
     let mut out: Vec<(String, Scene)> = Vec::new();
     for e in catalog::catalogue().unwrap() {
-        for (k, (s, _)) in e.scene.runs().into_iter().enumerate() {
+        // Each run over the window it is drawn over (`t_end = "auto"`
+        // resolved as rendering resolves it).
+        let scene = e.scene.with_auto_window().unwrap();
+        for (k, (s, _)) in scene.runs().into_iter().enumerate() {
             let what = format!("{} {} run {}", e.kind().name(), e.id, k + 1);
             match out
                 .iter_mut()
