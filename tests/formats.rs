@@ -184,47 +184,6 @@ fn movie_scene(id: &str) -> scene::Scene {
 }
 
 #[cfg(feature = "mp4")]
-/// Every frame of a GIF, composited (disposal "keep", transparent index
-/// leaves the pixel as it was), as RGB.
-fn gif_frames(bytes: &[u8]) -> (usize, usize, Vec<Vec<u8>>) {
-    let mut opts = gif::DecodeOptions::new();
-    opts.set_color_output(gif::ColorOutput::Indexed);
-    let mut d = opts.read_info(bytes).unwrap();
-    let (w, h) = (d.width() as usize, d.height() as usize);
-    let global = d.global_palette().unwrap().to_vec();
-    let mut screen = vec![255u8; w * h * 3];
-    let mut out = Vec::new();
-    while let Some(f) = d.read_next_frame().unwrap() {
-        let pal = f.palette.clone().unwrap_or_else(|| global.clone());
-        for y in 0..f.height as usize {
-            for x in 0..f.width as usize {
-                let i = f.buffer[y * f.width as usize + x];
-                if Some(i) == f.transparent {
-                    continue;
-                }
-                let at = 3 * ((f.top as usize + y) * w + f.left as usize + x);
-                screen[at..at + 3].copy_from_slice(&pal[3 * i as usize..3 * i as usize + 3]);
-            }
-        }
-        out.push(screen.clone());
-    }
-    (w, h, out)
-}
-
-#[cfg(feature = "mp4")]
-/// Peak signal-to-noise ratio of two RGB buffers, dB.
-fn psnr(a: &[u8], b: &[u8]) -> f64 {
-    assert_eq!(a.len(), b.len());
-    let mse = a
-        .iter()
-        .zip(b)
-        .map(|(&x, &y)| (x as f64 - y as f64).powi(2))
-        .sum::<f64>()
-        / a.len() as f64;
-    10.0 * (255.0f64 * 255.0 / mse.max(1e-12)).log10()
-}
-
-#[cfg(feature = "mp4")]
 /// The top-level boxes of an MP4: (type, offset, size).
 fn top_boxes(bytes: &[u8]) -> Vec<(String, usize, usize)> {
     let mut out = Vec::new();
@@ -285,7 +244,12 @@ fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
     let pps = track.picture_parameter_set().unwrap().to_vec();
 
     // Decoded back with OpenH264's decoder: frame k is the GIF's frame k.
-    let (gw, gh, gif_rgb) = gif_frames(gif);
+    let common::gif::GifFrames {
+        width: gw,
+        height: gh,
+        frames: gif_rgb,
+        ..
+    } = common::gif::decode(gif);
     assert_eq!((gw, gh, gif_rgb.len()), (320, 240, 24));
     let mut decoder = openh264::decoder::Decoder::new().unwrap();
     let start = |v: &mut Vec<u8>, nal: &[u8]| {
@@ -333,7 +297,7 @@ fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
                 .unwrap();
             dump("movie-4-mp4-frame-16.png", &png);
         }
-        let p = psnr(&rgb, &gif_rgb[k as usize]);
+        let p = common::gif::psnr(&rgb, &gif_rgb[k as usize]);
         assert!(p >= 30.0, "frame {k}: PSNR {p:.1} dB");
         if k % 8 == 0 {
             eprintln!("frame {k}: PSNR {p:.1} dB against the GIF");

@@ -37,31 +37,6 @@ fn movie_4(dir: &TempDir, extra: &[&str]) -> (Vec<u8>, Vec<u8>) {
     )
 }
 
-/// Every frame of a GIF, composited, as RGB.
-fn gif_frames(bytes: &[u8]) -> Vec<Vec<u8>> {
-    let mut opts = gif::DecodeOptions::new();
-    opts.set_color_output(gif::ColorOutput::Indexed);
-    let mut d = opts.read_info(bytes).unwrap();
-    let w = d.width() as usize;
-    let global = d.global_palette().unwrap().to_vec();
-    let mut screen = vec![255u8; w * d.height() as usize * 3];
-    let mut out = Vec::new();
-    while let Some(f) = d.read_next_frame().unwrap() {
-        let pal = f.palette.clone().unwrap_or_else(|| global.clone());
-        for y in 0..f.height as usize {
-            for x in 0..f.width as usize {
-                let i = f.buffer[y * f.width as usize + x];
-                if Some(i) != f.transparent {
-                    let at = 3 * ((f.top as usize + y) * w + f.left as usize + x);
-                    screen[at..at + 3].copy_from_slice(&pal[3 * i as usize..3 * i as usize + 3]);
-                }
-            }
-        }
-        out.push(screen.clone());
-    }
-    out
-}
-
 /// Every frame of an MP4, decoded by OpenH264's decoder, as RGB.
 fn mp4_frames(bytes: &[u8]) -> Vec<Vec<u8>> {
     let mut reader =
@@ -93,24 +68,14 @@ fn mp4_frames(bytes: &[u8]) -> Vec<Vec<u8>> {
     frames
 }
 
-/// Peak signal-to-noise ratio of two RGB buffers, in dB (10 log10 of
-/// 255² over the mean squared difference).
-fn psnr(a: &[u8], b: &[u8]) -> f64 {
-    assert_eq!(a.len(), b.len());
-    let mse = a
-        .iter()
-        .zip(b)
-        .map(|(&x, &y)| (x as f64 - y as f64).powi(2))
-        .sum::<f64>()
-        / a.len() as f64;
-    10.0 * (255.0f64 * 255.0 / mse.max(1e-12)).log10()
-}
-
 /// The PSNR of each MP4 frame against the GIF's frame.
 fn frame_psnrs(gif: &[u8], mp4: &[u8]) -> Vec<f64> {
-    let (g, m) = (gif_frames(gif), mp4_frames(mp4));
+    let (g, m) = (common::gif::decode(gif).frames, mp4_frames(mp4));
     assert_eq!(g.len(), m.len(), "the same number of frames");
-    g.iter().zip(&m).map(|(a, b)| psnr(a, b)).collect()
+    g.iter()
+        .zip(&m)
+        .map(|(a, b)| common::gif::psnr(a, b))
+        .collect()
 }
 
 #[test]

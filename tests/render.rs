@@ -59,38 +59,17 @@ fn same_input_gives_identical_bytes() {
     );
 }
 
-/// Decodes a GIF into composited RGB frames and their delays.
-fn decode(bytes: &[u8]) -> (u16, u16, Vec<Vec<u8>>, Vec<u16>) {
-    let mut opts = gif::DecodeOptions::new();
-    opts.set_color_output(gif::ColorOutput::Indexed);
-    let mut d = opts.read_info(bytes).unwrap();
-    let (w, h) = (d.width(), d.height());
-    let pal = d.global_palette().unwrap().to_vec();
-    let mut canvas = vec![0u8; w as usize * h as usize * 3];
-    let (mut frames, mut delays) = (Vec::new(), Vec::new());
-    while let Some(f) = d.read_next_frame().unwrap() {
-        for y in 0..f.height as usize {
-            for x in 0..f.width as usize {
-                let idx = f.buffer[y * f.width as usize + x];
-                if Some(idx) == f.transparent {
-                    continue;
-                }
-                let o = ((f.top as usize + y) * w as usize + f.left as usize + x) * 3;
-                canvas[o..o + 3].copy_from_slice(&pal[idx as usize * 3..idx as usize * 3 + 3]);
-            }
-        }
-        frames.push(canvas.clone());
-        delays.push(f.delay);
-    }
-    (w, h, frames, delays)
-}
-
 #[test]
 fn gif_round_trip() {
     let l = ladder(60.0);
     let frames = sweep(&l, 12, 200, 300);
     let bytes = gif_of(&frames, 30.0);
-    let (w, h, decoded, delays) = decode(&bytes);
+    let common::gif::GifFrames {
+        width: w,
+        height: h,
+        frames: decoded,
+        delays,
+    } = common::gif::decode(&bytes);
     assert_eq!((w, h), (200, 300));
     assert_eq!(decoded.len(), 12);
     assert_eq!(delays.iter().map(|&d| d as u32).sum::<u32>(), 40); // 12 frames at 30 fps = 0.4 s
@@ -132,7 +111,7 @@ fn unchanged_frames_still_count() {
     let l = ladder(60.0);
     let f = sweep(&l, 1, 100, 120).remove(0);
     let bytes = gif_of(&[f.clone(), f.clone(), f], 10.0);
-    let (_, _, frames, delays) = decode(&bytes);
+    let common::gif::GifFrames { frames, delays, .. } = common::gif::decode(&bytes);
     assert_eq!(frames.len(), 3);
     assert_eq!(delays, vec![10, 10, 10]);
     assert_eq!(frames[0], frames[2]);

@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod fuzz;
+pub mod gif;
 pub mod golden;
 pub mod h264;
 pub mod kernels;
