@@ -129,6 +129,36 @@ fn the_files_of_a_different_scene_are_replaced_only_with_a_warning() {
     assert_eq!(recorded_scene(&dir, "movie-k.json")["model"]["alpha"], 71.0);
 }
 
+/// A scene whose words (caption, title, label) were edited is the same
+/// scene: its files are replaced without a warning; a changed N warns.
+#[test]
+fn an_edited_caption_replaces_its_own_files_silently() {
+    let dir = TempDir::new("names-caption");
+    let file = dir.path().join("w.toml");
+    let write = |caption: &str, n: usize| {
+        std::fs::write(
+            &file,
+            format!(
+                "name = \"w\"\ncaption = \"{caption}\"\ntitle = \"{caption}\"\n\
+                 [model]\nn = {n}\n[run]\nt_end = 10\n[output]\nkind = \"data\"\n"
+            ),
+        )
+        .unwrap();
+    };
+    let path = file.to_str().unwrap().to_string();
+    write("one", 4);
+    ok_in(&dir, &["render", &path]);
+    write("two", 4);
+    let same = ok_in(&dir, &["render", &path]);
+    assert!(!same.contains("warning"), "only the words changed: {same}");
+    write("two", 5);
+    let other = ok_in(&dir, &["render", &path]);
+    assert!(
+        other.contains("warning: replacing the files of data-w"),
+        "{other}"
+    );
+}
+
 #[test]
 fn figure_and_movie_without_an_id_list_the_catalogue() {
     for (kind, some_id) in [("movie", "Movie 11"), ("figure", "Fig. 3")] {

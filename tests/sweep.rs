@@ -104,7 +104,7 @@ fn three_concurrent_shards_gather_into_the_unsharded_files_byte_for_byte() {
     let csv = std::fs::read_to_string(whole.join("sweep-g.csv")).unwrap();
     assert_eq!(csv.lines().count(), 9, "{csv}");
     assert!(csv.starts_with(
-        "run,alpha,n,b,gamma,gravity,inertia,drive_time,outcome,blocks_flipped,front,speed,t_decided,waves\n"
+        "run,alpha,n,b,gamma,gravity,inertia,drive_time,outcome,blocks_flipped,front,speed,t_decided,block_n_turned_at,waves\n"
     ));
     assert!(whole.join("sweep-g.png").is_file());
 
@@ -456,8 +456,9 @@ fn a_diverging_fixed_step_is_a_diverged_row_not_a_failed_sweep() {
     let rows: Vec<&str> = csv.lines().skip(1).collect();
     assert_eq!(rows.len(), 2);
     for r in rows {
-        // outcome, blocks flipped, front, speed, t_decided, waves.
-        assert!(r.ends_with(",diverged,0,0,,,0"), "{r}");
+        // outcome, blocks flipped, front, speed, t_decided,
+        // block_n_turned_at, waves.
+        assert!(r.ends_with(",diverged,0,0,,,,0"), "{r}");
     }
     let json = std::fs::read_to_string(dir.join("sweep-x.json")).unwrap();
     assert!(json.contains("diverged at t ="), "the message says when");
@@ -703,5 +704,52 @@ fn a_two_flip_sweep_has_per_wave_columns() {
             );
         }
     }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The pinning chart draws the front up to N − 1 and block N's own turn
+/// apart (SPEC section 9): in the CSV, `front` never passes N − 1 and
+/// `block_n_turned_at` is filled exactly where block N fell over first; in
+/// the chart, the legend names both marks.
+#[test]
+fn the_sweep_keeps_block_n_apart_from_the_front() {
+    let dir = tmp("block-n");
+    let d = dir.to_str().unwrap();
+    ok(&ladder(&[
+        "sweep",
+        "--alpha",
+        "40,48,49,60",
+        "--n",
+        "10",
+        "--integrator",
+        "verlet",
+        "--dt",
+        "0.25",
+        "--name",
+        "b",
+        "--format",
+        "svg",
+        "--out",
+        d,
+    ]));
+    let csv = std::fs::read_to_string(dir.join("sweep-b.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    for line in lines {
+        let row: Vec<&str> = line.split(',').collect();
+        let alpha: f64 = row[col("alpha")].parse().unwrap();
+        assert_eq!(row[col("outcome")], "propagated", "{line}");
+        assert_eq!(row[col("front")], "9", "{line}");
+        assert_eq!(row[col("blocks_flipped")] == "10", alpha <= 48.0, "{line}");
+        assert_eq!(
+            !row[col("block_n_turned_at")].is_empty(),
+            alpha <= 48.0,
+            "{line}"
+        );
+    }
+    let svg = std::fs::read_to_string(dir.join("sweep-b.svg")).unwrap();
+    assert!(svg.contains("block N turned first"), "no block N mark");
+    assert!(svg.contains("annihilated at"), "no meeting mark");
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -199,6 +199,52 @@ fn a_pinned_antikink_is_proved_at_rest_and_its_wave_stopped() {
     assert!(r.t_decided.unwrap() > 1000.0);
 }
 
+/// Block N is free and turns its own way: kept out of the front (which
+/// stops at N − 1) and recorded apart (SPEC section 9, "front and block
+/// N"). In the pinning sweep's setting (N = 10) the bottom block falls over
+/// on its own at α = 40° (at about 136 τ, before block 1 changes sign) and
+/// at 48° (just before the kink arrives): the wall it launches annihilates
+/// the driven kink. At 49° it has not turned when block N − 1 flips. Every
+/// time checked against this test's own detector.
+#[test]
+fn block_n_is_kept_apart_from_the_front() {
+    for (alpha, falls) in [(40.0, true), (48.0, true), (49.0, false)] {
+        let s = scene(alpha, 10, &[0.0], 4000.0);
+        let r = run_point(&s, &SweepSpec::default()).unwrap();
+        assert_eq!(r.outcome, Outcome::Propagated, "α = {alpha}°: {r:?}");
+        assert_eq!(r.front, 9, "α = {alpha}°: the front stops at N − 1");
+        let t_decided = r.t_decided.unwrap();
+        // The test's detector on the same scene, sampled every 0.25 τ.
+        let mut again = s.clone();
+        again.run.t_end = (t_decided / 0.25).ceil() * 0.25;
+        let (_, changes) = run_and_detect(&again);
+        let first = |block: usize| changes.iter().find(|c| c.1 == block).map(|c| c.0);
+        let t_block_n = first(9).filter(|&t| t <= t_decided);
+        assert_eq!(t_block_n.is_some(), falls, "α = {alpha}°: {changes:?}");
+        match (r.block_n_turned_at, t_block_n) {
+            (Some(a), Some(b)) => {
+                assert!((a - b).abs() < 0.3, "α = {alpha}°: {a} against {b}");
+                // Before block N − 1 flipped: on its own, not following.
+                assert!(a < first(8).unwrap(), "α = {alpha}°");
+            }
+            (a, b) => assert_eq!(a, b, "α = {alpha}°"),
+        }
+        let driven = r.waves.waves.iter().find(|w| w.origin == 1).unwrap();
+        if falls {
+            let Fate::Annihilated { with, .. } = driven.fate else {
+                panic!("α = {alpha}°: {:?}", r.waves)
+            };
+            assert_eq!(r.waves.waves[with].origin, 10, "α = {alpha}°");
+        } else {
+            assert_eq!(driven.fate, Fate::End, "α = {alpha}°");
+        }
+    }
+    // At 40° block N turns before block 1 changes sign (the drive's sign
+    // change is at 500 τ, the middle of its 1000 τ turn).
+    let r = run_point(&scene(40.0, 10, &[0.0], 4000.0), &SweepSpec::default()).unwrap();
+    assert!(r.block_n_turned_at.unwrap() < r.arrival_times[0].unwrap());
+}
+
 /// The kink at α = 60° on N = 185 blocks waits at block 2 for about
 /// 23 000 τ, then runs to the bottom (docs/sweeps.md): the quiet-time rule
 /// called it pinned; the rest proof never does (its kinetic energy stays

@@ -543,8 +543,12 @@ class Table(dict):
     CSV ``ladder sweep`` writes, in its order and grid order: ``run``, the
     parameters (``alpha`` ... ``drive_time``), ``outcome`` (strings:
     propagated, stalled, pinned, diverged, undecided), ``blocks_flipped``,
-    ``front``, ``speed`` (blocks/τ) and ``t_decided`` (τ); NaN where the
-    CSV is empty. ``csv`` is the CSV's text, ``json`` the sweep's JSON
+    ``front`` (≤ N − 1), ``speed`` (blocks/τ), ``t_decided`` (τ),
+    ``block_n_turned_at`` (τ) and ``waves``, then, where a run had more
+    than one wave, ``wave1_kind``, ``wave1_launched_at``, ``wave1_front``,
+    ``wave1_fate``, ``wave1_fate_at``, ... (kinds and fates as strings);
+    NaN where a number is empty, -1 where a whole number is, "" where a
+    string is. ``csv`` is the CSV's text, ``json`` the sweep's JSON
     (every run's arrival times) as a dict."""
 
     csv: str
@@ -559,10 +563,12 @@ class Table(dict):
         cols: Dict[str, Any] = {}
         for j, name in enumerate(header):
             values = [r[j] for r in body]
-            if name == "outcome":
+            if name == "outcome" or name.endswith(("_kind", "_fate")):
                 cols[name] = np.array(values, dtype=str)
-            elif name in ("run", "n", "blocks_flipped", "front"):
-                cols[name] = np.array([int(v) for v in values], dtype=np.int64)
+            elif name in ("run", "n", "blocks_flipped", "front", "waves") or (
+                name.startswith("wave") and name.endswith("_front")
+            ):
+                cols[name] = np.array([int(v) if v else -1 for v in values], dtype=np.int64)
             else:
                 cols[name] = np.array([float(v) if v else np.nan for v in values], dtype=float)
         super().__init__(cols)

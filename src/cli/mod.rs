@@ -941,7 +941,7 @@ fn warn_replaced(scenes: &[Scene], out: &std::path::Path) -> Result<()> {
             .ok()
             .and_then(|mut v| v.get_mut("scene").map(serde_json::Value::take));
         let new = serde_json::to_value(s).ok();
-        if old.is_some() && old == new {
+        if old.is_some() && old.as_ref().map(without_words) == new.as_ref().map(without_words) {
             continue;
         }
         let what = match old.and_then(|v| serde_json::from_value::<Scene>(v).ok()) {
@@ -956,6 +956,18 @@ fn warn_replaced(scenes: &[Scene], out: &std::path::Path) -> Result<()> {
         ))?;
     }
     Ok(())
+}
+
+/// A recorded scene without its words (label, title, caption): a scene
+/// whose caption was edited is still the same scene.
+fn without_words(scene: &serde_json::Value) -> serde_json::Value {
+    let mut v = scene.clone();
+    if let Some(map) = v.as_object_mut() {
+        for key in ["label", "title", "caption"] {
+            map.remove(key);
+        }
+    }
+    v
 }
 
 /// "1 file", "3 files".

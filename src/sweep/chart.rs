@@ -31,6 +31,11 @@ fn width() -> u32 {
     crate::render::Style::current().frame((WIDTH, 1)).0
 }
 
+/// Height of the front panel at the screen style, pixels: room for its
+/// six-entry legend inside the plot at every style, so that its |α| axis
+/// lines up with the panels below.
+const FRONT_HEIGHT: u32 = 380;
+
 /// The colour of each outcome.
 pub fn outcome_color(o: Outcome) -> Rgb {
     match o {
@@ -159,7 +164,7 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
     // Kinks drawn a little above, antikinks a little below their front,
     // so that neither hides the other: 5 px each way (the markers' radius
     // and a gap) on the panel's ~200 px of plot, at most half a block.
-    let px_per_block = 200.0 / (n_max as f64 + 0.9);
+    let px_per_block = (FRONT_HEIGHT - 100) as f64 / (n_max as f64 + 0.9);
     let d = (5.0 / px_per_block).clamp(0.18, 0.45);
     let offsets = if fold { [d, -d] } else { [0.0, 0.0] };
     for ((wave, marker, keep), dy) in waves.iter().zip(offsets) {
@@ -179,6 +184,42 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
             };
             front = front.series(Series::scatter(label, pts, outcome_color(o), *marker));
         }
+    }
+    // Beside the front, what is not the front: the free block N's own turn
+    // (at N), and where the wave the drive launched met a wall coming the
+    // other way (outcome::front, docs/sweeps.md "Spontaneous flips").
+    let dy_of = |r: &Record| {
+        waves
+            .iter()
+            .zip(offsets)
+            .find(|((_, _, keep), _)| keep(r))
+            .map_or(0.0, |(_, dy)| dy)
+    };
+    let turned: Vec<(f64, f64)> = records
+        .iter()
+        .filter(|r| r.result.block_n_turned_at.is_some())
+        .map(|r| (x_of(r), r.result.arrival_times.len() as f64 + dy_of(r)))
+        .collect();
+    if !turned.is_empty() {
+        front = front.series(Series::scatter(
+            "block N turned first",
+            turned,
+            style::DARK,
+            Marker::Triangle,
+        ));
+    }
+    let met: Vec<(f64, f64)> = records
+        .iter()
+        .filter_map(|r| Some((r, driven_wave_met_at(r)?)))
+        .map(|(r, block)| (x_of(r), block as f64 + dy_of(r)))
+        .collect();
+    if !met.is_empty() {
+        front = front.series(Series::scatter(
+            "annihilated at",
+            met,
+            style::DARK,
+            Marker::Cross,
+        ));
     }
     // A log axis when the speeds span more than a decade (near 90° the
     // whole chain flips at once), else linear, so that ticks show.
@@ -220,13 +261,24 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
         speed.title = Some("no run propagated far enough to measure a speed".into());
     }
     let mut panels = vec![
-        (line_chart(&front, width(), 300)?, 300),
+        (line_chart(&front, width(), FRONT_HEIGHT)?, FRONT_HEIGHT),
         (line_chart(&speed, width(), 260)?, 260),
     ];
     if param == Param::Alpha && plan.spec.charts.theory {
         panels.extend(theory_panel(plan, x_label, fold, Some((width(), x_range)))?);
     }
     stack(&panels)
+}
+
+/// The block where the wave the drive launched (the first wave from block
+/// 1) was annihilated by a wall coming the other way, if it was.
+fn driven_wave_met_at(r: &Record) -> Option<usize> {
+    use crate::sim::waves::Fate;
+    let w = r.result.waves.waves.iter().find(|w| w.origin == 1)?;
+    match w.fate {
+        Fate::Annihilated { block, .. } => Some(block),
+        _ => None,
+    }
 }
 
 /// ω₊(0) and ΔU against α (or |α|), one panel each; `x_range` pins the

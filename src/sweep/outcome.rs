@@ -10,7 +10,10 @@
 //!   linearly stable equilibrium (the smallest eigenvalue ω² of the
 //!   clamped Hessian above the margin). Pinned if its front never got past
 //!   block 2, stalled otherwise ([`stopped_outcome`]). The front is the
-//!   last block n such that blocks 1..=n have all flipped.
+//!   last block n ≤ N − 1 such that blocks 1..=n have all flipped: block N
+//!   is free and turns its own way (at small |α| it falls over on its own
+//!   before the wave arrives), so its turn is recorded beside the front
+//!   (`RunResult::block_n_turned_at`), never counted in it.
 //! - a run that reaches the cap without either is **undecided**; one whose
 //!   integration blew up is **diverged** (decided by the run loop).
 //!
@@ -146,10 +149,26 @@ impl Rule {
     }
 }
 
-/// The last block the wave reached: the largest n such that blocks
-/// 1..=n have all flipped (0 if block 1 has not).
+/// The last block the wave reached: the largest n ≤ N − 1 such that
+/// blocks 1..=n have all flipped (0 if block 1 has not). Block N, the free
+/// bottom block, is left out: whether it has turned by the time block
+/// N − 1 flips says when the run was looked at, not how far the wave got
+/// (its turn is kept apart, [`block_n_turned_at`]).
 pub fn front(arrivals: &[Option<f64>]) -> usize {
-    arrivals.iter().take_while(|a| a.is_some()).count()
+    let above_n = arrivals.len().saturating_sub(1).max(1).min(arrivals.len());
+    arrivals[..above_n]
+        .iter()
+        .take_while(|a| a.is_some())
+        .count()
+}
+
+/// When block N (the free bottom block, the last of `arrivals`) first
+/// turned, if it has.
+pub fn block_n_turned_at(arrivals: &[Option<f64>]) -> Option<f64> {
+    if arrivals.len() < 2 {
+        return None;
+    }
+    arrivals.last().copied().flatten()
 }
 
 /// Number of blocks that flipped.
@@ -313,6 +332,15 @@ mod tests {
         ]);
         assert_eq!(front(&together), 9);
         assert_eq!(speed(&together), None);
+        assert_eq!(block_n_turned_at(&together), None);
+        // Block N turned on its own before the wave reached block N − 1
+        // (|α| = 40°, N = 10: at 136 τ, before the drive): the front still
+        // stops at N − 1, and block N's turn is recorded apart.
+        let mut all = together.clone();
+        all[9] = Some(135.9);
+        assert_eq!(front(&all), 9);
+        assert_eq!(blocks_flipped(&all), 10);
+        assert_eq!(block_n_turned_at(&all), Some(135.9));
         // The kink at 89°: blocks 2–4 together, then 5–9 together.
         let groups = arr(&[
             Some(500.0),

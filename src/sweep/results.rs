@@ -13,18 +13,28 @@ use serde::Serialize;
 use std::fmt::Write;
 
 /// The CSV columns after the parameters.
-pub const RESULT_COLUMNS: [&str; 5] = ["outcome", "blocks_flipped", "front", "speed", "t_decided"];
+pub const RESULT_COLUMNS: [&str; 6] = [
+    "outcome",
+    "blocks_flipped",
+    "front",
+    "speed",
+    "t_decided",
+    "block_n_turned_at",
+];
 
 /// The columns of each wave where a sweep launches more than one
 /// (`wave2_kind`, ...; see [`csv`]).
 pub const WAVE_COLUMNS: [&str; 5] = ["kind", "launched_at", "front", "fate", "fate_at"];
 
-/// `run,alpha,n,b,gamma,gravity,inertia,drive_time,outcome,blocks_flipped,front,speed,t_decided,waves`:
+/// `run,alpha,n,b,gamma,gravity,inertia,drive_time,outcome,blocks_flipped,front,speed,t_decided,block_n_turned_at,waves`:
 /// every parameter of every run (the varied ones and the base's), then
-/// what the first wave did (the one block 1's first flip launches: the
-/// outcome columns describe it), then how many waves the run had. Speed in
-/// blocks/τ (empty when fewer than three blocks past block 2 flipped),
-/// t_decided in τ (empty for a diverged run). Where some run had more than
+/// what the chain did from the top (the outcome columns: how far the flip
+/// got down blocks 1..N − 1, `front` ≤ N − 1, and `blocks_flipped` of all
+/// N), then when the free bottom block N first turned (empty if it had
+/// not by t_decided; before block N − 1's arrival it fell over on its own
+/// and sent a wall of its own up the chain), then how many waves the run
+/// had. Speed in blocks/τ (empty when fewer than three blocks past block 2
+/// flipped), t_decided in τ (empty for a diverged run). Where some run had more than
 /// one wave, every wave k up to the most any run had follows in
 /// `wavek_kind,wavek_launched_at,wavek_front,wavek_fate,wavek_fate_at`
 /// (kink or antikink, τ, block, end/stopped/annihilated/undecided, the
@@ -61,13 +71,15 @@ pub fn csv(plan: &Plan, records: &[Record]) -> String {
         let res = &r.result;
         let _ = write!(
             out,
-            ",{},{},{},{},{},{}",
+            ",{},{},{},{},{},{},{}",
             res.outcome,
             res.blocks_flipped,
             res.front,
             res.speed
                 .map_or(String::new(), |v| format!("{}", sig(v, 6))),
             res.t_decided
+                .map_or(String::new(), |t| format!("{}", sig(t, 9))),
+            res.block_n_turned_at
                 .map_or(String::new(), |t| format!("{}", sig(t, 9))),
             res.waves.waves.len()
         );
@@ -219,7 +231,9 @@ pub fn json(
                           energy and largest residual force under the tolerances) at a linearly \
                           stable equilibrium (smallest mass-weighted eigenvalue of the clamped \
                           Hessian above the margin); undecided at the cap (docs/sweeps.md). The \
-                          outcome columns describe the first wave's blocks; `waves` has every wave",
+                          outcome columns describe blocks 1 to N-1 from the top (front <= N-1); \
+                          block_n_turned_at is when the free block N first turned; `waves` has \
+                          every wave",
         },
         outcomes,
         theory: super::chart::theory_points(plan),

@@ -36,8 +36,14 @@ pub struct RunResult {
     pub outcome: Outcome,
     /// Blocks whose polarisation changed sign.
     pub blocks_flipped: usize,
-    /// The last block the wave reached (blocks 1..=front all flipped).
+    /// The last block the wave reached: blocks 1..=front all flipped,
+    /// front ≤ N − 1 (block N is kept apart: `block_n_turned_at`).
     pub front: usize,
+    /// When block N, the free bottom block, first turned, if it had by
+    /// `t_decided` (τ). Before block N − 1's arrival: it fell over on its
+    /// own and launched a wall of its own up the chain (at small |α|).
+    #[serde(default)]
+    pub block_n_turned_at: Option<f64>,
     /// Blocks per τ, least squares over blocks 3..N−1; `None` when fewer
     /// than three of them flipped or they flip in groups
     /// (`outcome::speed`).
@@ -56,8 +62,8 @@ pub struct RunResult {
     /// Force evaluations of every run made for this point.
     pub force_evals: u64,
     /// Every wave of the returned run and block N's fate (SPEC section
-    /// 9); the outcome columns describe the first wave's blocks (the
-    /// arrival times above).
+    /// 9); the outcome columns describe the chain's blocks from the top
+    /// (the arrival times above), whichever wave flipped them.
     #[serde(default)]
     pub waves: Waves,
     /// What went wrong, for a diverged run.
@@ -88,6 +94,7 @@ fn diverged(scenario: &Scenario, config: &IntegratorConfig, msg: String, evals: 
         outcome: Outcome::Diverged,
         blocks_flipped: 0,
         front: 0,
+        block_n_turned_at: None,
         speed: None,
         t_decided: None,
         arrival_times: vec![None; scenario.ladder.n()],
@@ -404,6 +411,7 @@ fn from_decided(
         outcome: decision.outcome,
         blocks_flipped: outcome::blocks_flipped(&arrivals),
         front: outcome::front(&arrivals),
+        block_n_turned_at: outcome::block_n_turned_at(&arrivals),
         speed: outcome::speed(&arrivals),
         t_decided: Some(decision.t_decided),
         arrival_times: arrivals,

@@ -246,6 +246,19 @@ def test_sweep_equals_the_cli_csv(ladder, tmp_path):
     }
 
 
+def test_sweep_table_reads_per_wave_and_block_n_columns():
+    """At α = 40° the free block N falls over on its own and launches a
+    second wave, so the CSV has per-wave columns (kinds and fates are
+    words); block N's turn is a time there and NaN at 60°."""
+    table = jl.sweep(alpha=[40, 60], n=10, integrator="verlet", dt=0.25)
+    assert list(table["front"]) == [9, 9]
+    assert list(table["waves"]) == [2, 1]
+    assert table["block_n_turned_at"][0] < 500 and np.isnan(table["block_n_turned_at"][1])
+    assert list(table["wave1_kind"]) == ["antikink", "kink"]
+    assert list(table["wave2_kind"]) == ["kink", ""]
+    assert table["wave1_fate"][0] == "annihilated" and table["wave2_front"][1] == -1
+
+
 def test_sweep_to_pandas():
     pd = pytest.importorskip("pandas", reason="pandas is not installed: to_pandas untested")
     table = jl.sweep(alpha="60:70:10", n=6)
