@@ -361,10 +361,11 @@ pub fn edge_mode(input: &FigureInput) -> Result<Picture> {
     let notes = format!(
         "N = {n}, b/s = {b}; surface zero mode of the chain with the B nodes pinned \
                  (the paper's edge mode), found as the null vector of the model's compatibility \
-                 matrix and normalised to max |δθ_{{n}}| = 1. κ = b⁻¹ ln|(b + 2s sin α)/(b − 2s sin α)| changes sign \
+                 matrix and normalised to max |δθ_{{n}}| = 1 (dots), against {} (lines). κ = b⁻¹ ln|(b + 2s sin α)/(b − 2s sin α)| changes sign \
                  with α: the mode decays from the top for α > 0 (κ > 0) and from the bottom for \
                  α < 0 (κ < 0). \
                  Beyond |α| ≈ {:.1}° (b < 2s|sin α|) c₂/c₁ < 0 and δθ_{{n}} alternates in sign.",
+        crate::theory::formulas::EDGE_DECAY,
         (0.5 * b).min(1.0).asin().to_degrees()
     );
     frame(&input.title, &body, &notes, page_width(FIGURE_WIDTH))
@@ -393,22 +394,21 @@ fn edge_panel(input: &FigureInput, sign: f64) -> Result<Picture> {
             e.n.iter()
                 .map(|&n| n as f64)
                 .zip(e.numerical.iter().copied());
-        spec = spec
-            .series(Series::line(
-                format!(
-                    "{}, κb = {}",
-                    crate::theory::formulas::EDGE_DECAY,
-                    format!("{kb:.2}").replace('-', "−")
-                ),
-                line.collect(),
-                color,
-            ))
-            .series(Series::scatter(
-                format!("α = {}, numerical", signed_deg(sign * alpha)),
-                dots.collect(),
-                color,
-                Marker::Circle,
-            ));
+        // One legend entry per α (the notes say which is the formula and
+        // which the numerical mode), so that the legend fits inside the
+        // plot at every style.
+        let mut formula = Series::line("", line.collect(), color);
+        formula.label = None;
+        spec = spec.series(formula).series(Series::scatter(
+            format!(
+                "α = {}: κb = {}",
+                signed_deg(sign * alpha),
+                format!("{kb:.2}").replace('-', "−")
+            ),
+            dots.collect(),
+            color,
+            Marker::Circle,
+        ));
     }
     spec.y = spec.y.range(1e-9, 3.0);
     chart(&spec, 440, 420)
