@@ -413,12 +413,21 @@ fn arrivals_draw_every_wave_with_its_fitted_line() {
                 .contains(&format!("{v:.1} blocks/1000τ"))
         );
     }
-    // Every wave that travels has its line; one that stalls (the antikink
-    // at α = −50°, pinned near the top) has none, and says so.
+    // Every wave that travels has its line; one that stops (the antikink
+    // at α = −50°, proved pinned at block 2) has none, and says so.
     let travels = labelled
         .iter()
-        .filter(|s| !s.label.as_ref().unwrap().contains("stalls"))
+        .filter(|s| s.label.as_ref().unwrap().contains("blocks/1000τ"))
         .count();
+    assert!(
+        labelled.iter().any(|s| s
+            .label
+            .as_ref()
+            .unwrap()
+            .ends_with("α = −50°: pinned at block 2")),
+        "{:?}",
+        labelled.iter().map(|s| &s.label).collect::<Vec<_>>()
+    );
     assert!(travels >= 4, "{travels} of {waves} waves travel");
     assert_eq!(fits, travels, "every travelling wave has its fitted line");
     let title = spec.title.unwrap();

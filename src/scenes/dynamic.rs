@@ -387,17 +387,17 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
         let alpha = s.model.alpha;
         // Each wave of the run; a run without a waves record is one wave.
         let kind_of = |w: &sim::waves::Wave| w.kind == sim::waves::WaveKind::Kink;
-        let mut waves: Vec<(bool, f64, Vec<Option<f64>>)> = traj
+        let mut waves: Vec<(bool, f64, Vec<Option<f64>>, Option<&sim::waves::Wave>)> = traj
             .waves
             .waves
             .iter()
-            .map(|w| (kind_of(w), w.launched_at, w.arrival_times.clone()))
+            .map(|w| (kind_of(w), w.launched_at, w.arrival_times.clone(), Some(w)))
             .collect();
         if waves.is_empty() {
-            waves.push((alpha > 0.0, 0.0, traj.arrival_times.clone()));
+            waves.push((alpha > 0.0, 0.0, traj.arrival_times.clone(), None));
         }
         let several = waves.len() > 1;
-        for (kink, launched, arrivals) in waves {
+        for (kink, launched, arrivals, wave) in waves {
             let pts: Vec<(f64, f64)> = arrivals
                 .iter()
                 .enumerate()
@@ -407,7 +407,7 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
                 continue;
             }
             let speed = fitted_speed(&arrivals)
-                .map_or("stalls".to_string(), |v| format!("{v:.1} blocks/1000τ"));
+                .map_or_else(|| without_speed(wave), |v| format!("{v:.1} blocks/1000τ"));
             let word = if kink { "kink" } else { "antikink" };
             let launched = describe::num(launched.round());
             let name = match (several, label.is_empty()) {
@@ -433,6 +433,22 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
         data.push(RunData::new(label, s, &run));
     }
     Ok((spec, data))
+}
+
+/// What the legend says of a wave with no fitted speed, from its fate
+/// (SPEC section 9): where the state proved it stopped (pinned if it never
+/// got past block 2, as a sweep says), where it was annihilated, or that
+/// it has no speed.
+fn without_speed(wave: Option<&sim::waves::Wave>) -> String {
+    use sim::waves::Fate;
+    match wave.map(|w| (w.fate, w.front)) {
+        // The sweeps' words (docs/sweeps.md): pinned if the front never got
+        // past block 2, stalled otherwise.
+        Some((Fate::Stopped, front)) if front <= 2 => format!("pinned at block {front}"),
+        Some((Fate::Stopped, front)) => format!("stalled at block {front}"),
+        Some((Fate::Annihilated { block, .. }, _)) => format!("annihilated at block {block}"),
+        _ => "no speed".to_string(),
+    }
 }
 
 /// Frame times of a movie: `frames` times evenly over [0, t_end].
