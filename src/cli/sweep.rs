@@ -16,7 +16,10 @@ pub fn sweep(args: &SweepArgs, command_line: &[String]) -> Result<()> {
         command_line: command_line.to_vec(),
         ..outputs
     };
-    if let Some(SweepCommand::Gather { dir, figure_format }) = &args.command {
+    if let Some(SweepCommand::Gather {
+        dir, figure_format, ..
+    }) = &args.command
+    {
         return gather(dir, &recorded(figure_format.outputs()?), args.max_runs);
     }
     let outputs = recorded(args.figure_format.outputs()?);
@@ -76,6 +79,10 @@ fn check_and_run(
     outputs: &Outputs,
 ) -> Result<()> {
     crate::output::check_targets(targets)?;
+    if args.shard.is_none() {
+        // The CSV and JSON this process will write, before any run.
+        crate::sweep::json::check_estimate(plan, &crate::limits::Limits::active())?;
+    }
     let out = &args.out.out;
     let mine = shard.indices(plan.len());
     let mut done: Vec<Record> = match shard::earlier(plan, shard, out)? {
@@ -174,24 +181,21 @@ fn write_outputs(
     start: Instant,
 ) -> Result<()> {
     let stem = format!("sweep-{}", plan.scene.name);
-    let files = crate::scenes::style_of(&plan.scene, outputs)?.apply(|| {
-        crate::sweep::outputs(
-            plan,
-            records,
-            &stem,
-            &outputs.figures,
-            outputs.scale,
-            &outputs.command_line,
-        )
+    let options = crate::sweep::OutputOptions {
+        formats: &outputs.figures,
+        scale: outputs.scale,
+        command_line: &outputs.command_line,
+        rename: &|name| name,
+    };
+    let names = crate::scenes::style_of(&plan.scene, outputs)?.apply(|| {
+        crate::sweep::write_outputs(plan, records, &stem, &options, &mut |name, fill| {
+            crate::output::write_atomic_with(&out.join(name), |f| fill(f))
+        })
     })?;
-    for (name, bytes) in &files {
-        crate::output::write_atomic(&out.join(name), bytes)?;
-    }
     let counts: Vec<String> = crate::sweep::results::counts(records)
         .iter()
         .map(|(o, c)| format!("{c} {o}"))
         .collect();
-    let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
     eprintln!(
         "ladder: sweep {}: {} runs ({}) in {:.2} s; wrote {} into {}",
         plan.scene.name,
