@@ -6,7 +6,7 @@ use super::args::{SweepArgs, SweepCommand};
 use super::convert;
 use crate::error::{Error, Result};
 use crate::scenes::Outputs;
-use crate::sweep::shard::{self, Earlier, Shard, ShardFile};
+use crate::sweep::shard::{self, Earlier, Shard};
 use crate::sweep::{Plan, Record};
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -111,11 +111,7 @@ fn check_and_run(
         .filter(|i| done.binary_search_by_key(i, |r| r.run).is_err())
         .collect();
     run_in_chunks(plan, shard, out, &todo, &mut done)?;
-    let path = shard::write(
-        out,
-        &plan.scene.name,
-        &ShardFile::new(plan, shard, done.clone()),
-    )?;
+    let path = shard::write_records(out, plan, shard, &done)?;
     if args.shard.is_some() {
         eprintln!(
             "ladder: shard {}/{} of sweep {}: {} runs ({} new) in {:.2} s → {}; when every shard is done: ladder sweep gather {}",
@@ -156,11 +152,7 @@ fn run_in_chunks(
         done.sort_by_key(|r| r.run);
         at = end;
         if at < todo.len() {
-            shard::write(
-                out,
-                &plan.scene.name,
-                &ShardFile::new(plan, shard, done.clone()),
-            )?;
+            shard::write_records(out, plan, shard, done)?;
             // Chunks of a few seconds: frequent checkpoints, few rewrites.
             if t0.elapsed() < Duration::from_secs(2) {
                 chunk = (2 * chunk).min(4096);
