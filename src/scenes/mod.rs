@@ -253,8 +253,8 @@ pub fn check(scene: &Scene, movie: &MovieOptions, outputs: &Outputs) -> Result<(
             theory::check_cost(spec.figure, &input)?;
             Ok(())
         }
-        // A sweep checks its grid and runs itself (`crate::sweep`).
-        OutputSpec::Sweep(_) => Ok(()),
+        // Its grid's runs and its files' bytes (`crate::sweep::checked`).
+        OutputSpec::Sweep(_) => crate::sweep::checked(scene).map(drop),
         OutputSpec::Movie { .. } => {
             crate::limits::Limits::active().check_movie(movie.frames, movie.width, movie.height)?;
             run::check_cost(scene, movie.frames)

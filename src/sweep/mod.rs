@@ -253,6 +253,20 @@ pub struct OutputOptions<'a> {
     pub rename: &'a dyn Fn(String) -> String,
 }
 
+/// The plan of a sweep scene rendered as a figure ([`render_to`]), with
+/// every check made before its runs: its runs against the default cap,
+/// its files' estimated bytes against the cap in force. `render --check`
+/// makes them too.
+pub fn checked(scene: &Scene) -> Result<Plan> {
+    let plan = Plan::new(scene, crate::scene::sweep::DEFAULT_MAX_RUNS)?.map_err(|e| {
+        Error::bad_input(format!(
+            "{e}; run it with `ladder sweep FILE --max-runs N` to raise the cap"
+        ))
+    })?;
+    json::check_estimate(&plan, &crate::limits::Limits::active())?;
+    Ok(plan)
+}
+
 /// Runs a whole sweep scene in this process (no shards, no resume) and
 /// hands its files under `figure-NAME` (a catalogue figure) to `sink`
 /// ([`write_outputs`]). Its runs and its files' estimated bytes are
@@ -262,12 +276,7 @@ pub fn render_to(
     output: &OutputOptions<'_>,
     sink: &mut dyn FnMut(&str, crate::scenes::Fill<'_>) -> Result<()>,
 ) -> Result<Vec<String>> {
-    let plan = Plan::new(scene, crate::scene::sweep::DEFAULT_MAX_RUNS)?.map_err(|e| {
-        Error::bad_input(format!(
-            "{e}; run it with `ladder sweep FILE --max-runs N` to raise the cap"
-        ))
-    })?;
-    json::check_estimate(&plan, &crate::limits::Limits::active())?;
+    let plan = checked(scene)?;
     let all: Vec<usize> = (0..plan.len()).collect();
     let records = plan.run(&all, &|| {})?;
     write_outputs(&plan, &records, &scene.stem(), output, sink)
