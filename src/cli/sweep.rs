@@ -78,11 +78,11 @@ fn check_and_run(
     targets: &[std::path::PathBuf],
     outputs: &Outputs,
 ) -> Result<()> {
-    crate::output::check_targets(targets)?;
     if args.shard.is_none() {
-        // The CSV and JSON this process will write, before any run.
+        // The CSV and JSON this process will write, before anything.
         crate::sweep::json::check_estimate(plan, &crate::limits::Limits::active())?;
     }
+    crate::output::check_targets(targets)?;
     let out = &args.out.out;
     let mine = shard.indices(plan.len());
     let mut done: Vec<Record> = match shard::earlier(plan, shard, out)? {
