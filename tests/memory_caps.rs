@@ -256,7 +256,11 @@ fn the_estimate_of_real_sweeps_is_an_upper_bound_within_four() {
             "",
         ),
         (40, "alpha = \"50:70:1\"\ngamma = [0.02, 0.04]", ""),
-        (10, "alpha = \"50:62:0.25\"\ngamma = [0.02, 0.04]", two_flips),
+        (
+            10,
+            "alpha = \"50:62:0.25\"\ngamma = [0.02, 0.04]",
+            two_flips,
+        ),
     ] {
         let scene = sweep_scene(n, grid, drive);
         let plan = plan_of(&scene);
@@ -312,7 +316,9 @@ fn a_sweep_past_its_data_cap_is_refused_before_any_run() {
     let grid = "alpha = \"-50:-60:-2\"\ngamma = [0.01, 0.02, 0.04]";
     std::fs::write(
         &file,
-        format!("name = \"s\"\n[model]\nn = 10\n[output]\nkind = \"sweep\"\n[output.grid]\n{grid}\n"),
+        format!(
+            "name = \"s\"\n[model]\nn = 10\n[output]\nkind = \"sweep\"\n[output.grid]\n{grid}\n"
+        ),
     )
     .unwrap();
     let plan = plan_of(&sweep_scene(10, grid, ""));
@@ -348,11 +354,7 @@ fn a_sweep_past_its_data_cap_is_refused_before_any_run() {
         "--max-data-bytes",
         &at,
     ]);
-    assert!(
-        o.status.success(),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let written = std::fs::metadata(out.join("sweep-s.json")).unwrap().len();
     assert!(written as f64 <= cap, "{written} past the estimate {cap}");
     // Gather counts the files it is about to write.
@@ -361,11 +363,7 @@ fn a_sweep_past_its_data_cap_is_refused_before_any_run() {
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("--max-data-bytes"), "{err}");
     let o = ladder(&["sweep", "gather", out_s, "--max-data-bytes", &at]);
-    assert!(
-        o.status.success(),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -406,7 +404,10 @@ fn a_simulation_at_the_cap_on_samples_stays_within_its_bound() {
     });
     match refused {
         Err(Error::Limit(l)) => assert_eq!(l.resource, Resource::BlockSamples),
-        other => panic!("expected the cap on samples × N, got {:?}", other.map(|t| t.steps)),
+        other => panic!(
+            "expected the cap on samples × N, got {:?}",
+            other.map(|t| t.steps)
+        ),
     }
     assert!(peak < 10_000_000, "refused before any work: {peak} bytes");
     let start = std::time::Instant::now();
@@ -459,11 +460,17 @@ fn a_movies_memory_does_not_grow_with_its_frames() {
             fps: 10.0,
         };
         let ((), peak, _) = measure(|| {
-            scenes::render_to(&scene, &movie, &Outputs::default(), &|| {}, &mut |name, fill| {
-                let mut f = std::fs::File::create(dir.join(name)).unwrap();
-                fill(&mut f).unwrap();
-                Ok(())
-            })
+            scenes::render_to(
+                &scene,
+                &movie,
+                &Outputs::default(),
+                &|| {},
+                &mut |name, fill| {
+                    let mut f = std::fs::File::create(dir.join(name)).unwrap();
+                    fill(&mut f).unwrap();
+                    Ok(())
+                },
+            )
             .unwrap()
         });
         let encoded: u64 = std::fs::read_dir(&dir)
@@ -513,10 +520,7 @@ fn a_sweep_holds_a_bounded_number_of_bytes_per_run() {
                 let records = plan.run(&all, &|| {}).unwrap();
                 (plan, records)
             });
-            let lists: usize = records
-                .iter()
-                .map(|r| 1 + r.result.waves.waves.len())
-                .sum();
+            let lists: usize = records.iter().map(|r| 1 + r.result.waves.waves.len()).sum();
             (plan.len(), live, lists)
         };
         let (r0, l0, w0) = held(small);

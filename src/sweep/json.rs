@@ -37,15 +37,17 @@ struct Runs<'a> {
 
 impl Serialize for Runs<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.collect_seq(self.records.iter().map(|r| RunEntry {
-            record: r,
-            point: self
-                .plan
-                .axes
-                .iter()
-                .zip(&self.plan.points[r.run])
-                .map(|((p, _), v)| (p.name().to_string(), json_number(*v)))
-                .collect(),
+        s.collect_seq(self.records.iter().map(|r| {
+            RunEntry {
+                record: r,
+                point: self
+                    .plan
+                    .axes
+                    .iter()
+                    .zip(&self.plan.points[r.run])
+                    .map(|((p, _), v)| (p.name().to_string(), json_number(*v)))
+                    .collect(),
+            }
         }))
     }
 }
