@@ -264,8 +264,7 @@ pub fn check_estimate(plan: &Plan, limits: &Limits) -> Result<(), LimitExceeded>
 pub fn check_size(plan: &Plan, json: u64, csv: u64, limits: &Limits) -> Result<(), LimitExceeded> {
     let detail = |what: &str| {
         format!(
-            "the {what} of sweep {}, counted from its {} runs and their waves; the runs are \
-             kept in shards/",
+            "the {what} of sweep {}, counted from its {} runs and their waves",
             plan.scene.name,
             crate::limits::count(plan.len() as f64)
         )
