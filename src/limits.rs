@@ -310,8 +310,10 @@ fn count_to(x: f64, digits: usize) -> String {
 }
 
 /// Most runs of one sweep, whatever `--max-runs` says: its points and
-/// records are held in memory (about 0.3 kB a run at N = 10, plus 16
-/// bytes per block), so 10^7 runs take about 3 GB. A range, not a cap.
+/// records are held in memory (0.4 kB a run, plus 16 bytes per block for
+/// the run's arrival times and each wave's: 0.7 kB at N = 10 with one
+/// wave, measured in tests/memory_caps.rs), so 10^7 runs take about 7 GB.
+/// A range, not a cap.
 pub const MAX_SWEEP_RUNS: usize = 10_000_000;
 
 /// Parses a cap on a count of runs the way the other caps are written:

@@ -80,13 +80,15 @@ fn sweep(
 }
 
 fn sweep_tables(scene: &Scene, max_runs: usize) -> Result<(String, String)> {
-    use jacobs_ladder::sweep::{Plan, results};
+    use jacobs_ladder::sweep::{Plan, json, results};
     let plan = Plan::new(scene, max_runs)?.map_err(|e| {
         Error::bad_input(format!(
             "{e}; ask for fewer, or raise the cap with max_runs={}",
             e.runs
         ))
     })?;
+    // The files' bytes, estimated before any run (docs/limits.md).
+    json::check_estimate(&plan, &jacobs_ladder::limits::Limits::active())?;
     let all: Vec<usize> = (0..plan.len()).collect();
     let records = plan.run(&all, &|| {})?;
     let stem = format!("sweep-{}", plan.scene.name);
@@ -95,10 +97,13 @@ fn sweep_tables(scene: &Scene, max_runs: usize) -> Result<(String, String)> {
     let argv: Vec<String> = std::env::args_os()
         .map(|a| a.to_string_lossy().into_owned())
         .collect();
-    let json = results::json(&plan, &records, &names, &argv)?;
+    // Python takes the JSON as one string: here it is held whole.
+    let mut bytes = Vec::new();
+    json::write(&mut bytes, &plan, &records, &names, &argv)
+        .map_err(|e| Error::failed(format!("cannot encode the sweep's data file: {e}")))?;
     Ok((
         results::csv(&plan, &records),
-        String::from_utf8_lossy(&json).into_owned(),
+        String::from_utf8_lossy(&bytes).into_owned(),
     ))
 }
 

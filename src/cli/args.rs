@@ -60,6 +60,16 @@ pub struct SimLimitArgs {
     pub max_data_bytes: Option<f64>,
 }
 
+/// The cap on a data file's bytes alone, on `sweep gather` (which runs
+/// nothing, and writes the sweep's CSV and JSON).
+#[derive(Args, Debug, Clone, Default)]
+#[command(next_help_heading = "Limits (docs/limits.md)")]
+pub struct DataLimitArgs {
+    /// Most bytes of one data file (the sweep's .json or .csv) [default: 2e9]
+    #[arg(long, value_name = "X")]
+    pub max_data_bytes: Option<f64>,
+}
+
 /// The cap on a movie's size, on the commands that write movies.
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Limits (docs/limits.md)")]
@@ -96,7 +106,13 @@ impl Command {
             max_block_steps: sim.and_then(|l| l.max_block_steps),
             max_block_samples: sim.and_then(|l| l.max_block_samples),
             max_pixels: pixels.and_then(|l| l.max_pixels),
-            max_data_bytes: sim.and_then(|l| l.max_data_bytes),
+            max_data_bytes: match self {
+                Self::Sweep(SweepArgs {
+                    command: Some(SweepCommand::Gather { limits, .. }),
+                    ..
+                }) => limits.max_data_bytes,
+                _ => sim.and_then(|l| l.max_data_bytes),
+            },
             max_theory_work: match self {
                 Self::Figure(a) => a.theory_limits.max_theory_work,
                 Self::Render(a) => a.theory_limits.max_theory_work,
@@ -668,6 +684,8 @@ pub enum SweepCommand {
         dir: PathBuf,
         #[command(flatten)]
         figure_format: FigureFormat,
+        #[command(flatten)]
+        limits: DataLimitArgs,
     },
 }
 

@@ -6,7 +6,7 @@ use super::args::{SweepArgs, SweepCommand};
 use super::convert;
 use crate::error::{Error, Result};
 use crate::scenes::Outputs;
-use crate::sweep::shard::{self, Earlier, Shard, ShardFile};
+use crate::sweep::shard::{self, Earlier, Shard};
 use crate::sweep::{Plan, Record};
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -16,7 +16,10 @@ pub fn sweep(args: &SweepArgs, command_line: &[String]) -> Result<()> {
         command_line: command_line.to_vec(),
         ..outputs
     };
-    if let Some(SweepCommand::Gather { dir, figure_format }) = &args.command {
+    if let Some(SweepCommand::Gather {
+        dir, figure_format, ..
+    }) = &args.command
+    {
         return gather(dir, &recorded(figure_format.outputs()?), args.max_runs);
     }
     let outputs = recorded(args.figure_format.outputs()?);
@@ -75,6 +78,10 @@ fn check_and_run(
     targets: &[std::path::PathBuf],
     outputs: &Outputs,
 ) -> Result<()> {
+    if args.shard.is_none() {
+        // The CSV and JSON this process will write, before anything.
+        crate::sweep::json::check_estimate(plan, &crate::limits::Limits::active())?;
+    }
     crate::output::check_targets(targets)?;
     let out = &args.out.out;
     let mine = shard.indices(plan.len());
@@ -104,11 +111,7 @@ fn check_and_run(
         .filter(|i| done.binary_search_by_key(i, |r| r.run).is_err())
         .collect();
     run_in_chunks(plan, shard, out, &todo, &mut done)?;
-    let path = shard::write(
-        out,
-        &plan.scene.name,
-        &ShardFile::new(plan, shard, done.clone()),
-    )?;
+    let path = shard::write_records(out, plan, shard, &done)?;
     if args.shard.is_some() {
         eprintln!(
             "ladder: shard {}/{} of sweep {}: {} runs ({} new) in {:.2} s → {}; when every shard is done: ladder sweep gather {}",
@@ -149,11 +152,7 @@ fn run_in_chunks(
         done.sort_by_key(|r| r.run);
         at = end;
         if at < todo.len() {
-            shard::write(
-                out,
-                &plan.scene.name,
-                &ShardFile::new(plan, shard, done.clone()),
-            )?;
+            shard::write_records(out, plan, shard, done)?;
             // Chunks of a few seconds: frequent checkpoints, few rewrites.
             if t0.elapsed() < Duration::from_secs(2) {
                 chunk = (2 * chunk).min(4096);
@@ -174,24 +173,21 @@ fn write_outputs(
     start: Instant,
 ) -> Result<()> {
     let stem = format!("sweep-{}", plan.scene.name);
-    let files = crate::scenes::style_of(&plan.scene, outputs)?.apply(|| {
-        crate::sweep::outputs(
-            plan,
-            records,
-            &stem,
-            &outputs.figures,
-            outputs.scale,
-            &outputs.command_line,
-        )
+    let options = crate::sweep::OutputOptions {
+        formats: &outputs.figures,
+        scale: outputs.scale,
+        command_line: &outputs.command_line,
+        rename: &|name| name,
+    };
+    let names = crate::scenes::style_of(&plan.scene, outputs)?.apply(|| {
+        crate::sweep::write_outputs(plan, records, &stem, &options, &mut |name, fill| {
+            crate::output::write_atomic_with(&out.join(name), |f| fill(f))
+        })
     })?;
-    for (name, bytes) in &files {
-        crate::output::write_atomic(&out.join(name), bytes)?;
-    }
     let counts: Vec<String> = crate::sweep::results::counts(records)
         .iter()
         .map(|(o, c)| format!("{c} {o}"))
         .collect();
-    let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
     eprintln!(
         "ladder: sweep {}: {} runs ({}) in {:.2} s; wrote {} into {}",
         plan.scene.name,

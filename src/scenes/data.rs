@@ -176,6 +176,15 @@ impl Frames {
         self.0.times.is_empty()
     }
 
+    /// Each sample's time and state (3 numbers a block), as simulated.
+    pub fn rows(&self) -> impl Iterator<Item = (f64, &[f64])> + '_ {
+        let rows = &self.0;
+        rows.times
+            .iter()
+            .copied()
+            .zip(rows.states.iter().map(Vec::as_slice))
+    }
+
     /// Frame `k`, as the data file writes it.
     pub fn get(&self, k: usize) -> Option<FrameData> {
         let q = self.0.states.get(k)?;
@@ -283,16 +292,23 @@ impl RunData {
     /// The data of a run drawn as a kymograph, which it consumes: its
     /// samples move into the data file's frames and matrix, uncopied.
     pub(super) fn with_kymograph(scene: &Scene, mut run: SceneRun) -> Self {
+        let mut data = Self::taking_samples("", scene, &mut run);
+        data.kymograph = Some(Kymograph(data.frames.0.clone()));
+        data
+    }
+
+    /// The data of `run`, its samples moved (uncopied) into the data's
+    /// frames, from which the run is then drawn ([`Frames::rows`]: a
+    /// filmstrip's snapshots); its velocities, which the data file does
+    /// not write, are freed.
+    pub(super) fn taking_samples(label: &str, scene: &Scene, run: &mut SceneRun) -> Self {
         let traj = &mut run.trajectory;
         let rows = SampleRows {
             times: std::mem::take(&mut traj.times),
             states: std::mem::take(&mut traj.states),
         };
-        // Velocities are not written: free them before the file is.
         traj.velocities = Vec::new();
-        let mut data = Self::with_rows("", scene, &run, rows);
-        data.kymograph = Some(Kymograph(data.frames.0.clone()));
-        data
+        Self::with_rows(label, scene, run, rows)
     }
 
     fn with_rows(label: &str, scene: &Scene, run: &SceneRun, rows: SampleRows) -> Self {

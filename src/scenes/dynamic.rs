@@ -198,17 +198,17 @@ impl Strip {
         Ok(Strip { run, ladder, opts })
     }
 
-    fn frames(&self) -> Vec<Frame<'_>> {
-        let traj = &self.run.trajectory;
-        traj.times
-            .iter()
-            .zip(&traj.states)
-            .map(|(&time, q)| Frame { time, q })
+    /// The snapshots, from the samples the strip's data took from its run
+    /// (`RunData::taking_samples`: drawn and written from one copy).
+    fn frames<'a>(data: &'a RunData) -> Vec<Frame<'a>> {
+        data.frames
+            .rows()
+            .map(|(time, q)| Frame { time, q })
             .collect()
     }
 
-    fn picture(&self) -> Result<Picture> {
-        compose::filmstrip_picture(&self.ladder, &self.frames(), &self.opts)
+    fn picture(&self, data: &RunData) -> Result<Picture> {
+        compose::filmstrip_picture(&self.ladder, &Self::frames(data), &self.opts)
     }
 }
 
@@ -235,8 +235,8 @@ fn strips(scene: &Scene, frame: Option<(u32, u32)>) -> Result<Vec<(Strip, RunDat
     runs.iter()
         .zip(&labels)
         .map(|((s, times), label)| {
-            let strip = Strip::new(label, s, times, frame, fit)?;
-            let data = RunData::new(label, s, &strip.run);
+            let mut strip = Strip::new(label, s, times, frame, fit)?;
+            let data = RunData::taking_samples(label, s, &mut strip.run);
             Ok((strip, data))
         })
         .collect()
@@ -279,7 +279,7 @@ pub fn filmstrip_figure(
     let mut panels = Vec::with_capacity(strips.len());
     let mut data = Vec::with_capacity(strips.len());
     for (strip, d) in strips {
-        panels.push(Panel::new(strip.picture()?));
+        panels.push(Panel::new(strip.picture(&d)?));
         data.push(d);
     }
     let layout = strips_layout(scene, &panels);
@@ -292,14 +292,14 @@ pub fn filmstrip_geometry(scene: &Scene, frame: Option<(u32, u32)>) -> Result<Ve
     let strips = strips(scene, frame)?;
     let panels = strips
         .iter()
-        .map(|(s, _)| Ok(Panel::new(s.picture()?)))
+        .map(|(s, d)| Ok(Panel::new(s.picture(d)?)))
         .collect::<Result<Vec<_>>>()?;
     let (size, origins) = compose::panel_origins(&panels, &strips_layout(scene, &panels))?;
     strips
         .iter()
         .zip(origins)
-        .map(|((s, _), at)| {
-            let g = compose::filmstrip_geometry(&s.ladder, &s.frames(), &s.opts)?;
+        .map(|((s, d), at)| {
+            let g = compose::filmstrip_geometry(&s.ladder, &Strip::frames(d), &s.opts)?;
             Ok(g.placed(at, size))
         })
         .collect()

@@ -253,8 +253,8 @@ pub fn check(scene: &Scene, movie: &MovieOptions, outputs: &Outputs) -> Result<(
             theory::check_cost(spec.figure, &input)?;
             Ok(())
         }
-        // A sweep checks its grid and runs itself (`crate::sweep`).
-        OutputSpec::Sweep(_) => Ok(()),
+        // Its grid's runs and its files' bytes (`crate::sweep::checked`).
+        OutputSpec::Sweep(_) => crate::sweep::checked(scene).map(drop),
         OutputSpec::Movie { .. } => {
             crate::limits::Limits::active().check_movie(movie.frames, movie.width, movie.height)?;
             run::check_cost(scene, movie.frames)
@@ -276,11 +276,8 @@ fn render_styled(
     sink: &mut dyn FnMut(&str, Fill<'_>) -> Result<()>,
 ) -> Result<()> {
     if let OutputSpec::Sweep(_) = scene.output {
-        // Its own data file: the sweep's JSON (crate::sweep::results).
-        let files = sweep_files(scene, outputs)?;
-        return files
-            .iter()
-            .try_for_each(|(name, bytes)| sink(name, &|w| w.write_all(bytes)));
+        // Its own data file: the sweep's JSON (crate::sweep::json).
+        return sweep_files(scene, outputs, sink);
     }
     let (bytes, runs) = match &scene.output {
         OutputSpec::Theory(_)
@@ -336,31 +333,30 @@ fn render_styled(
     sink(data_name, &|w| data::write_json(w, &data))
 }
 
-/// A sweep's files ([`crate::sweep::render`]), its PNG renamed the
-/// preview when the formats asked have none.
-fn sweep_files(scene: &Scene, outputs: &Outputs) -> Result<Vec<(String, Vec<u8>)>> {
-    let mut files = crate::sweep::render(
-        scene,
-        &outputs.encoded_figures()?,
-        outputs.scale,
-        &outputs.command_line,
-    )?;
-    if outputs.needs_preview() {
-        let (png, preview) = (
-            format!("{}.png", scene.stem()),
-            format!("{}{PREVIEW}", scene.stem()),
-        );
-        let json = format!("{}.json", scene.stem());
-        for (name, bytes) in &mut files {
-            if *name == png {
-                name.clone_from(&preview);
-            } else if *name == json {
-                // Its list of files names the preview as written.
-                let text = String::from_utf8_lossy(bytes)
-                    .replace(&format!("\"{png}\""), &format!("\"{preview}\""));
-                *bytes = text.into_bytes();
-            }
+/// A sweep's files ([`crate::sweep::render_to`]), handed to `sink`, its
+/// PNG named the preview when the formats asked have none (and so listed
+/// in its JSON).
+fn sweep_files(
+    scene: &Scene,
+    outputs: &Outputs,
+    sink: &mut dyn FnMut(&str, Fill<'_>) -> Result<()>,
+) -> Result<()> {
+    let png = format!("{}.png", scene.stem());
+    let preview = format!("{}{PREVIEW}", scene.stem());
+    let needs_preview = outputs.needs_preview();
+    let rename = |name: String| {
+        if needs_preview && name == png {
+            preview.clone()
+        } else {
+            name
         }
-    }
-    Ok(files)
+    };
+    let formats = outputs.encoded_figures()?;
+    let options = crate::sweep::OutputOptions {
+        formats: &formats,
+        scale: outputs.scale,
+        command_line: &outputs.command_line,
+        rename: &rename,
+    };
+    crate::sweep::render_to(scene, &options, sink).map(drop)
 }

@@ -5,7 +5,8 @@
 //!   `[output] kind = "sweep"`;
 //! - [`outcome`] decides what a run's wave did from its arrival times;
 //! - [`run`] runs one point with the scene's integrator (`auto` verified);
-//! - [`results`] writes the CSV and JSON, byte-identical between runs;
+//! - [`results`] writes the CSV and [`json`] the JSON, byte-identical
+//!   between runs; the JSON streamed, both estimated before any run;
 //! - [`shard`] splits a sweep over processes or machines, resumes, gathers;
 //! - [`chart`] draws the results.
 //!
@@ -13,6 +14,7 @@
 //! charts; it knows no command-line flag.
 
 pub mod chart;
+pub mod json;
 pub mod outcome;
 pub mod results;
 pub mod run;
@@ -184,61 +186,98 @@ fn fnv1a(bytes: &[u8]) -> u64 {
 }
 
 /// The files of a sweep's results under `stem` (`sweep-NAME` or
-/// `figure-NAME`), as (file name, bytes): the chart in each of `formats`
-/// (when one or two parameters vary; PNG at `scale`), the CSV and the
-/// JSON, in that order.
-pub fn outputs(
+/// `figure-NAME`), each handed to `sink` (its name, how to write it): the
+/// chart in each of `formats` (when one or two parameters vary; PNG at
+/// `scale`), the CSV and the JSON, in that order, every name passed
+/// through `rename` first. The JSON is written straight into where `sink`
+/// writes it, never held whole in memory. Before anything is handed over,
+/// the CSV's and the JSON's sizes (counted from the records) are checked
+/// against the cap on a data file's bytes. Returns the names.
+pub fn write_outputs(
     plan: &Plan,
     records: &[Record],
     stem: &str,
-    formats: &crate::encode::Formats,
-    scale: f32,
-    command_line: &[String],
-) -> Result<Vec<(String, Vec<u8>)>> {
+    output: &OutputOptions<'_>,
+    sink: &mut dyn FnMut(&str, crate::scenes::Fill<'_>) -> Result<()>,
+) -> Result<Vec<String>> {
     let chart = chart::chart(plan, records)?;
     let mut names = Vec::new();
-    let mut files = Vec::with_capacity(formats.as_slice().len() + 2);
+    let mut pictures = Vec::new();
     if let Some(c) = chart {
         // On the style's page (a slide: no taller than the slide).
         let picture = crate::render::Picture::from(c).fit_page();
-        for (f, bytes) in formats
+        for (f, bytes) in output
+            .formats
             .as_slice()
             .iter()
-            .zip(picture.encode(formats, scale)?)
+            .zip(picture.encode(output.formats, output.scale)?)
         {
-            let name = format!("{stem}.{}", f.extension());
-            names.push(name.clone());
-            files.push((name, bytes));
+            names.push((output.rename)(format!("{stem}.{}", f.extension())));
+            pictures.push(bytes);
         }
     }
-    names.push(format!("{stem}.csv"));
-    names.push(format!("{stem}.json"));
-    files.push((
-        format!("{stem}.csv"),
-        results::csv(plan, records).into_bytes(),
-    ));
-    files.push((
-        format!("{stem}.json"),
-        results::json(plan, records, &names, command_line)?,
-    ));
-    Ok(files)
+    names.push((output.rename)(format!("{stem}.csv")));
+    names.push((output.rename)(format!("{stem}.json")));
+    let csv = results::csv(plan, records);
+    let json_bytes = json::size(plan, records, &names, output.command_line)
+        .map_err(|e| Error::failed(format!("cannot encode the sweep's data file: {e}")))?;
+    json::check_size(
+        plan,
+        json_bytes,
+        csv.len() as u64,
+        &crate::limits::Limits::active(),
+    )?;
+    for (name, bytes) in names.iter().zip(&pictures) {
+        sink(name, &|w| w.write_all(bytes))?;
+    }
+    drop(pictures);
+    let [.., csv_name, json_name] = names.as_slice() else {
+        unreachable!("the CSV and the JSON are always named")
+    };
+    sink(csv_name, &|w| w.write_all(csv.as_bytes()))?;
+    sink(json_name, &|w| {
+        json::write(w, plan, records, &names, output.command_line)
+    })?;
+    Ok(names)
 }
 
-/// Runs a whole sweep scene in this process (no shards, no resume) and
-/// returns its files under `figure-NAME` (a catalogue figure), the chart
-/// in each of `formats`.
-pub fn render(
-    scene: &Scene,
-    formats: &crate::encode::Formats,
-    scale: f32,
-    command_line: &[String],
-) -> Result<Vec<(String, Vec<u8>)>> {
+/// How a sweep's files are drawn and named ([`write_outputs`]).
+pub struct OutputOptions<'a> {
+    /// The chart's formats.
+    pub formats: &'a crate::encode::Formats,
+    /// The PNG's scale.
+    pub scale: f32,
+    /// The command line the JSON records.
+    pub command_line: &'a [String],
+    /// What each file is called (the catalogue renames a preview PNG).
+    pub rename: &'a dyn Fn(String) -> String,
+}
+
+/// The plan of a sweep scene rendered as a figure ([`render_to`]), with
+/// every check made before its runs: its runs against the default cap,
+/// its files' estimated bytes against the cap in force. `render --check`
+/// makes them too.
+pub fn checked(scene: &Scene) -> Result<Plan> {
     let plan = Plan::new(scene, crate::scene::sweep::DEFAULT_MAX_RUNS)?.map_err(|e| {
         Error::bad_input(format!(
             "{e}; run it with `ladder sweep FILE --max-runs N` to raise the cap"
         ))
     })?;
+    json::check_estimate(&plan, &crate::limits::Limits::active())?;
+    Ok(plan)
+}
+
+/// Runs a whole sweep scene in this process (no shards, no resume) and
+/// hands its files under `figure-NAME` (a catalogue figure) to `sink`
+/// ([`write_outputs`]). Its runs and its files' estimated bytes are
+/// checked against their caps before any run.
+pub fn render_to(
+    scene: &Scene,
+    output: &OutputOptions<'_>,
+    sink: &mut dyn FnMut(&str, crate::scenes::Fill<'_>) -> Result<()>,
+) -> Result<Vec<String>> {
+    let plan = checked(scene)?;
     let all: Vec<usize> = (0..plan.len()).collect();
     let records = plan.run(&all, &|| {})?;
-    outputs(&plan, &records, &scene.stem(), formats, scale, command_line)
+    write_outputs(&plan, &records, &scene.stem(), output, sink)
 }

@@ -5,11 +5,8 @@
 
 use super::outcome::Outcome;
 use super::{Plan, Record};
-use crate::error::{Error, Result};
-use crate::scene::describe;
 use crate::scene::sweep::Param;
 use crate::sim::waves::{Fate, WaveKind};
-use serde::Serialize;
 use std::fmt::Write;
 
 /// The CSV columns after the parameters.
@@ -134,115 +131,4 @@ pub fn counts(records: &[Record]) -> Vec<(Outcome, usize)> {
         })
         .filter(|(_, c)| *c > 0)
         .collect()
-}
-
-#[derive(Serialize)]
-struct Axis<'a> {
-    param: &'static str,
-    values: &'a [f64],
-}
-
-#[derive(Serialize)]
-struct RunEntry<'a> {
-    #[serde(flatten)]
-    record: &'a Record,
-    /// The varied parameters' values.
-    point: serde_json::Map<String, serde_json::Value>,
-}
-
-#[derive(Serialize)]
-struct Rule {
-    t_end: f64,
-    cap: f64,
-    kinetic_tolerance: f64,
-    force_tolerance: f64,
-    stability_margin: f64,
-    description: &'static str,
-}
-
-#[derive(Serialize)]
-struct SweepData<'a> {
-    /// The program, its build and the command line (issue 19).
-    #[serde(flatten)]
-    made_by: crate::scenes::data::MadeBy<'a>,
-    title: String,
-    parameters: String,
-    files: &'a [String],
-    fingerprint: &'a str,
-    scene: &'a crate::scene::Scene,
-    axes: Vec<Axis<'a>>,
-    rule: Rule,
-    outcomes: serde_json::Map<String, serde_json::Value>,
-    /// The linear theory at each α of the grid (when α varies).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    theory: Vec<super::chart::TheoryPoint>,
-    runs: Vec<RunEntry<'a>>,
-}
-
-/// The JSON beside the CSV: the sweep (scene, axes, rule, fingerprint),
-/// the count of each outcome, the linear theory along α, and every run
-/// with its arrival times.
-pub fn json(
-    plan: &Plan,
-    records: &[Record],
-    files: &[String],
-    command_line: &[String],
-) -> Result<Vec<u8>> {
-    let outcomes = counts(records)
-        .into_iter()
-        .map(|(o, c)| (o.name().to_string(), c.into()))
-        .collect();
-    let runs = records
-        .iter()
-        .map(|r| RunEntry {
-            record: r,
-            point: plan
-                .axes
-                .iter()
-                .zip(&plan.points[r.run])
-                .map(|((p, _), v)| (p.name().to_string(), json_number(*v)))
-                .collect(),
-        })
-        .collect();
-    let tol = crate::theory::stability::RestTolerances::default();
-    let data = SweepData {
-        made_by: crate::scenes::data::MadeBy::new(command_line),
-        title: describe::title(&plan.scene),
-        parameters: describe::parameters(&plan.scene),
-        files,
-        fingerprint: &plan.fingerprint,
-        scene: &plan.scene,
-        axes: plan
-            .axes
-            .iter()
-            .map(|(p, v)| Axis {
-                param: p.name(),
-                values: v,
-            })
-            .collect(),
-        rule: Rule {
-            t_end: plan.scene.run.t_end,
-            cap: plan.spec.cap,
-            kinetic_tolerance: tol.kinetic,
-            force_tolerance: tol.force,
-            stability_margin: tol.margin,
-            description: "propagated: block N-1 flipped; otherwise, after the drive, pinned \
-                          (front <= 2) or stalled once the state is proved at rest (kinetic \
-                          energy and largest residual force under the tolerances) at a linearly \
-                          stable equilibrium (smallest mass-weighted eigenvalue of the clamped \
-                          Hessian above the margin); undecided at the cap (docs/sweeps.md). The \
-                          outcome columns describe blocks 1 to N-1 from the top (front <= N-1); \
-                          block_n_turned_at is when the free block N first turned; `waves` has \
-                          every wave",
-        },
-        outcomes,
-        theory: super::chart::theory_points(plan),
-        runs,
-    };
-    serde_json::to_vec_pretty(&data)
-        .map_err(|e| Error::failed(format!("cannot encode the sweep's data file: {e}")))
-}
-
-fn json_number(v: f64) -> serde_json::Value {
-    serde_json::Number::from_f64(v).map_or(serde_json::Value::Null, serde_json::Value::Number)
 }

@@ -316,10 +316,43 @@ pub fn earlier(plan: &Plan, shard: Shard, dir: &Path) -> Result<Earlier> {
     Ok(Earlier::Resumed(f.records))
 }
 
-/// Writes `file` for its shard under `dir`, atomically.
-pub fn write(dir: &Path, name: &str, file: &ShardFile) -> Result<PathBuf> {
-    let path = shards_dir(dir).join(file.shard.file_name(name));
-    crate::output::write_atomic(&path, &file.to_bytes()?)?;
+/// The shard file of `records` (in grid order) for `shard` of `plan`,
+/// borrowed: the same fields, in the same order, as [`ShardFile`].
+#[derive(Serialize)]
+struct ShardRef<'a> {
+    program: &'static str,
+    version: &'static str,
+    fingerprint: &'a str,
+    shard: Shard,
+    runs_total: usize,
+    runs_in_shard: usize,
+    scene: &'a Scene,
+    records: &'a [Record],
+}
+
+/// Writes the shard file of `records` (sorted by run) for `shard` of
+/// `plan` under `dir`, atomically, the same bytes as
+/// [`ShardFile::new`]'s [`ShardFile::to_bytes`], streamed into the file: neither the records nor
+/// the encoded file are copied in memory (a sweep rewrites it after every
+/// chunk of runs).
+pub fn write_records(dir: &Path, plan: &Plan, shard: Shard, records: &[Record]) -> Result<PathBuf> {
+    debug_assert!(records.windows(2).all(|w| w[0].run < w[1].run));
+    let file = ShardRef {
+        program: "ladder",
+        version: env!("CARGO_PKG_VERSION"),
+        fingerprint: &plan.fingerprint,
+        shard,
+        runs_total: plan.len(),
+        runs_in_shard: shard.count(plan.len()),
+        scene: &plan.scene,
+        records,
+    };
+    let path = shards_dir(dir).join(shard.file_name(&plan.scene.name));
+    crate::output::write_atomic_with(&path, |f| {
+        let mut w = std::io::BufWriter::with_capacity(1 << 16, f);
+        serde_json::to_writer(&mut w, &file).map_err(std::io::Error::other)?;
+        std::io::Write::flush(&mut w)
+    })?;
     Ok(path)
 }
 
