@@ -143,11 +143,14 @@ impl Mp4Writer {
         let (w, h) = (self.width as usize, self.height as usize);
         let data = match self.palette {
             Some(pal) => {
-                self.shown.clear();
-                self.shown.extend(pixmap.data().chunks_exact(4).flat_map(|p| {
-                    let [r, g, b] = pal.color(pal.index([p[0], p[1], p[2]]));
-                    [r, g, b, 255]
-                }));
+                self.shown.resize(pixmap.data().len(), 255);
+                let pairs = self
+                    .shown
+                    .chunks_exact_mut(4)
+                    .zip(pixmap.data().chunks_exact(4));
+                for (to, p) in pairs {
+                    to[..3].copy_from_slice(&pal.color(pal.index([p[0], p[1], p[2]])));
+                }
                 &self.shown[..]
             }
             None => pixmap.data(),

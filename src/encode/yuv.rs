@@ -125,6 +125,13 @@ fn chroma_offsets(u: f32, v: f32) -> [f32; 3] {
     [1.5748 * cr, -0.187_324 * cb - 0.468_124 * cr, 1.8556 * cb]
 }
 
+/// `x` rounded to a whole level and clipped to 0–255, as a decoder makes
+/// a channel (a cast, not `round`, which is a library call without SSE4.1).
+#[inline(always)]
+fn round_clip(x: f32) -> f32 {
+    ((x + 0.5).clamp(0.0, 255.0) as u8) as f32
+}
+
 /// A luma code value in full-range units.
 #[inline(always)]
 fn luma_level(y: u8) -> f32 {
@@ -139,7 +146,7 @@ fn decoded_error(y: u8, t: [f32; 3], d: &[[f32; 3]; 2]) -> f32 {
     let mut e = 0.0;
     for dr in d {
         for c in 0..3 {
-            let x = (level + dr[c]).round().clamp(0.0, 255.0) - t[c];
+            let x = round_clip(level + dr[c]) - t[c];
             e += x * x;
         }
     }
@@ -170,6 +177,11 @@ fn fitted_luma(t: [u8; 3], d: &[[f32; 3]; 2]) -> u8 {
         }
     }
     y *= 1.0 / 6.0;
+    let inside = d.iter().flatten().all(|&dc| y + dc > 0.0 && y + dc < 255.0);
+    if inside {
+        // No channel clipped: least squares is exact (most drawn colours).
+        return (y * (219.0 / 255.0) + 16.5).clamp(0.0, 255.0) as u8;
+    }
     for _ in 0..4 {
         let (mut sum, mut n) = (0.0f32, 0.0f32);
         for dr in d {
@@ -194,7 +206,7 @@ fn fitted_luma(t: [u8; 3], d: &[[f32; 3]; 2]) -> u8 {
         }
         y = next;
     }
-    let code = (y * (219.0 / 255.0) + 16.0).round().clamp(0.0, 255.0) as u8;
+    let code = (y * (219.0 / 255.0) + 16.5).clamp(0.0, 255.0) as u8;
     let mut best = (decoded_error(code, t, d), code);
     for c in [code.saturating_sub(1), code.saturating_add(1)] {
         let e = decoded_error(c, t, d);
@@ -254,23 +266,59 @@ fn convert(rgba: &[u8], width: usize, height: usize, out: &mut Yuv420) {
             *v = chroma(KCR, r, g, bl);
         }
     }
-    let (y_rows, (u, v)) = (out.y.chunks_exact_mut(width), (&out.u, &out.v));
+    let Yuv420 { y: ys, u, v, .. } = out;
     // Drawn frames are mostly runs of one colour under one chroma: the
-    // previous pixel's answer is reused when nothing differs.
+    // previous answer is reused when nothing differs, and a block of one
+    // colour whose chroma neighbours (all a bilinear upsampler reads) hold
+    // its own chroma is fitted once for its four pixels.
     let mut last: Option<([u8; 3], [[f32; 3]; 2], u8)> = None;
-    for (j, (ys, px)) in y_rows.zip(rgba.chunks_exact(stride)).enumerate() {
-        for (i, (y, p)) in ys.iter_mut().zip(px.chunks_exact(4)).enumerate() {
-            let k = (j / 2) * cw + i / 2;
-            let own = chroma_offsets(u[k] as f32, v[k] as f32);
-            let spread = chroma_offsets(upsampled(u, cw, ch, i, j), upsampled(v, cw, ch, i, j));
-            let (t, d) = ([p[0], p[1], p[2]], [own, spread]);
-            *y = match last {
-                Some((lt, ld, ly)) if lt == t && ld == d => ly,
-                _ => fitted_luma(t, &d),
-            };
-            last = Some((t, d, *y));
+    let mut fit = |t: [u8; 3], d: [[f32; 3]; 2]| match last {
+        Some((lt, ld, ly)) if lt == t && ld == d => ly,
+        _ => {
+            let y = fitted_luma(t, &d);
+            last = Some((t, d, y));
+            y
+        }
+    };
+    let colour = |i: usize, j: usize| {
+        let p = &rgba[4 * (j * width + i)..][..3];
+        [p[0], p[1], p[2]]
+    };
+    for m in 0..ch {
+        for x in 0..cw {
+            let k = m * cw + x;
+            let t = colour(2 * x, 2 * m);
+            let one_colour = [(1, 0), (0, 1), (1, 1)]
+                .iter()
+                .all(|&(a, b)| colour(2 * x + a, 2 * m + b) == t);
+            if one_colour && flat_around(u, cw, ch, x, m) && flat_around(v, cw, ch, x, m) {
+                let own = chroma_offsets(u[k] as f32, v[k] as f32);
+                let y = fit(t, [own, own]);
+                for (a, b) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                    ys[(2 * m + b) * width + 2 * x + a] = y;
+                }
+                continue;
+            }
+            for (a, b) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                let (i, j) = (2 * x + a, 2 * m + b);
+                let own = chroma_offsets(u[k] as f32, v[k] as f32);
+                let spread = chroma_offsets(upsampled(u, cw, ch, i, j), upsampled(v, cw, ch, i, j));
+                ys[j * width + i] = fit(colour(i, j), [own, spread]);
+            }
         }
     }
+}
+
+/// Whether every chroma sample a bilinear upsampler reads for block
+/// (`x`, `m`) (its own, the next column's, the rows above and below)
+/// equals the block's own.
+#[inline(always)]
+fn flat_around(plane: &[u8], cw: usize, ch: usize, x: usize, m: usize) -> bool {
+    let c = plane[m * cw + x];
+    let cols = [x, (x + 1).min(cw - 1)];
+    let rows = [m.saturating_sub(1), m, (m + 1).min(ch - 1)];
+    rows.iter()
+        .all(|&r| cols.iter().all(|&q| plane[r * cw + q] == c))
 }
 
 #[cfg(test)]
