@@ -225,13 +225,13 @@ fn upsampled(plane: &[u8], cw: usize, ch: usize, i: usize, j: usize) -> f32 {
     let (x, m) = (i / 2, j / 2);
     let row = |r: usize| {
         let at = |x: usize| plane[r * cw + x.min(cw - 1)] as f32;
-        if i % 2 == 0 {
+        if i.is_multiple_of(2) {
             at(x)
         } else {
             0.5 * (at(x) + at(x + 1))
         }
     };
-    let other = if j % 2 == 0 {
+    let other = if j.is_multiple_of(2) {
         m.saturating_sub(1)
     } else {
         (m + 1).min(ch - 1)
