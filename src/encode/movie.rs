@@ -3,6 +3,7 @@
 
 use super::format::{Format, Kind, Mp4Quality, check_movie_frame};
 use super::gif::GifWriter;
+
 #[cfg(feature = "mp4")]
 use super::mp4::Mp4Writer;
 use crate::error::{Error, Result};
@@ -48,13 +49,15 @@ impl MovieWriter {
             check_movie_frame(f, width, height, fps)?;
         }
         let gif = if formats.contains(&Format::Gif) {
-            Some(GifWriter::new(width, height, fps)?)
+            Some(GifWriter::with_palette(width, height, fps, gif_palette())?)
         } else {
             None
         };
         #[cfg(feature = "mp4")]
         let mp4 = if formats.contains(&Format::Mp4) {
-            Some(Mp4Writer::with_quality(width, height, fps, quality)?)
+            // The MP4 shows the GIF's colours, whether or not a GIF is
+            // written (the same MP4 either way).
+            Some(Mp4Writer::with_quality(width, height, fps, quality)?.showing(gif_palette()))
         } else {
             None
         };
@@ -103,4 +106,9 @@ impl MovieWriter {
         }
         Ok(out)
     }
+}
+
+/// The palette of every movie's GIF, in whose colours the MP4 is encoded.
+fn gif_palette() -> &'static super::gif::Palette {
+    super::gif::Palette::scene()
 }

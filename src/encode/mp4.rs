@@ -9,6 +9,7 @@
 //! does not depend on its neighbours and the bytes are reproducible.
 
 use super::format::Mp4Quality;
+use super::gif::Palette;
 use super::isobmff::{Mp4Track, annex_b_units, mp4_file};
 use super::yuv::{Yuv420, rgba_to_yuv420};
 use crate::error::{Error, Result};
@@ -35,6 +36,10 @@ pub struct Mp4Writer {
     width: u32,
     height: u32,
     frames: usize,
+    /// The palette each frame is mapped to before conversion, if any.
+    palette: Option<&'static Palette>,
+    /// Scratch: the frame in the palette's colours.
+    shown: Vec<u8>,
     stage: Stage,
 }
 
@@ -103,8 +108,20 @@ impl Mp4Writer {
             width,
             height,
             frames: 0,
+            palette: None,
+            shown: Vec::new(),
             stage: Stage::start(encoder, track),
         })
+    }
+
+    /// Encodes every frame in `palette`'s colours (each pixel its nearest
+    /// entry), as the GIF of the same frames shows them: what a viewer
+    /// compares the MP4 with. The movies' palette is made for their
+    /// drawings (drawn frame against the GIF: 46–51 dB), so this costs the
+    /// drawing little and gains the MP4 about 0.8 dB against the GIF.
+    pub fn showing(mut self, palette: &'static Palette) -> Self {
+        self.palette = Some(palette);
+        self
     }
 
     /// Number of frames pushed so far.
@@ -124,6 +141,20 @@ impl Mp4Writer {
             )));
         }
         let (w, h) = (self.width as usize, self.height as usize);
+        let data = match self.palette {
+            Some(pal) => {
+                self.shown.resize(pixmap.data().len(), 255);
+                let pairs = self
+                    .shown
+                    .chunks_exact_mut(4)
+                    .zip(pixmap.data().chunks_exact(4));
+                for (to, p) in pairs {
+                    to[..3].copy_from_slice(&pal.color(pal.index([p[0], p[1], p[2]])));
+                }
+                &self.shown[..]
+            }
+            None => pixmap.data(),
+        };
         match &mut self.stage {
             Stage::Thread {
                 to_encoder,
@@ -131,7 +162,7 @@ impl Mp4Writer {
                 done,
             } => {
                 let mut yuv = spare.try_recv().unwrap_or_else(|_| Yuv420::new(w, h));
-                rgba_to_yuv420(pixmap.data(), w, h, &mut yuv);
+                rgba_to_yuv420(data, w, h, &mut yuv);
                 if to_encoder.send(yuv).is_err() {
                     // The encoder thread ended: report why.
                     return Err(match done.take().map(JoinHandle::join) {
@@ -147,7 +178,7 @@ impl Mp4Writer {
                 sample,
             } => {
                 let yuv = yuv.get_or_insert_with(|| Yuv420::new(w, h));
-                rgba_to_yuv420(pixmap.data(), w, h, yuv);
+                rgba_to_yuv420(data, w, h, yuv);
                 encode_one(encoder, track, yuv, sample)?;
             }
         }
