@@ -167,3 +167,29 @@ fn the_catalogue_passes_the_default_caps() {
         }
     }
 }
+
+/// A sweep keeps its runs in a shard file that a reader takes up to 1 GiB:
+/// a shard estimated past it (70 runs of N = 100 000, about 1.1 GB of
+/// arrival times) is refused before any run, naming the fewest shards that
+/// fit, unsharded or as one shard of one; nothing is written.
+#[test]
+fn a_shard_file_past_what_gather_reads_is_refused_before_work() {
+    let dir = TempDir::new("caps-shard");
+    let out = dir.path().join("o");
+    let out = out.to_str().unwrap();
+    for shard in [None, Some("1/1")] {
+        let mut args = vec!["sweep", "--alpha", "20:89:1", "--n", "100000", "--out", out];
+        if let Some(s) = shard {
+            args.extend(["--shard", s]);
+        }
+        refused(
+            &args,
+            Duration::from_secs(20),
+            &["shard", "at least 3 shards", "--shard K/3"],
+        );
+        assert!(
+            !dir.path().join("o").exists(),
+            "{args:?} wrote into its folder"
+        );
+    }
+}

@@ -82,6 +82,8 @@ fn check_and_run(
         // The CSV and JSON this process will write, before anything.
         crate::sweep::json::check_estimate(plan, &crate::limits::Limits::active())?;
     }
+    // Every sweep keeps its runs in a shard file (one for the whole).
+    shard::check_estimate(plan, shard)?;
     crate::output::check_targets(targets)?;
     let out = &args.out.out;
     let mine = shard.indices(plan.len());

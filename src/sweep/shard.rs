@@ -182,6 +182,29 @@ impl ShardFile {
 /// holds about 0.5 GB of arrival times).
 pub const MAX_SHARD_BYTES: u64 = 1 << 30;
 
+/// Checks, before any run, that `shard`'s file fits what a reader takes
+/// ([`MAX_SHARD_BYTES`]): its estimate is the sweep JSON's estimate
+/// (`json::estimate`, an upper bound) shared out by runs. Past it, the
+/// message names the fewest shards that fit.
+pub fn check_estimate(plan: &Plan, shard: Shard) -> Result<()> {
+    let runs = plan.len().max(1) as f64;
+    let whole = super::json::estimate(plan).json;
+    let mine = whole * shard.count(plan.len()) as f64 / runs;
+    if mine <= MAX_SHARD_BYTES as f64 {
+        return Ok(());
+    }
+    let fewest = (whole / MAX_SHARD_BYTES as f64).ceil() as usize + 1;
+    Err(Error::bad_input(format!(
+        "shard {}/{} of sweep {} would write about {:.1e} bytes of records, past the {} GiB \
+         a shard file may hold; split the sweep into at least {fewest} shards (--shard K/{fewest})",
+        shard.k,
+        shard.n,
+        plan.scene.name,
+        mine,
+        MAX_SHARD_BYTES >> 30
+    )))
+}
+
 /// The bytes of `path` when it is a regular file (after links) of at most
 /// `max` bytes. Opened without blocking, so a FIFO cannot hang the reader.
 pub fn read_bounded(path: &Path, max: u64) -> std::result::Result<Vec<u8>, String> {
