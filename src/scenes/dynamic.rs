@@ -387,7 +387,7 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
         let alpha = s.model.alpha;
         // Each wave of the run; a run without a waves record is one wave.
         let kind_of = |w: &sim::waves::Wave| w.kind == sim::waves::WaveKind::Kink;
-        let mut waves: Vec<(bool, f64, Vec<Option<f64>>, Option<&sim::waves::Wave>)> = traj
+        let mut waves: Vec<DrawnWave<'_>> = traj
             .waves
             .waves
             .iter()
@@ -434,6 +434,10 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
     }
     Ok((spec, data))
 }
+
+/// A wave of the arrivals chart: kink or not, launched at, its arrival
+/// times, and its record (none for a run without a waves record).
+type DrawnWave<'a> = (bool, f64, Vec<Option<f64>>, Option<&'a sim::waves::Wave>);
 
 /// What the legend says of a wave with no fitted speed, from its fate
 /// (SPEC section 9): where the state proved it stopped (pinned if it never
