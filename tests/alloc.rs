@@ -18,83 +18,22 @@ use jacobs_ladder::model::Params;
 use jacobs_ladder::scene::{self, Scene};
 use jacobs_ladder::scenes::{self, MovieOptions, Outputs};
 use jacobs_ladder::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Stepping};
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::io::Write as _;
-use std::sync::Mutex;
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
-struct Counting;
-
-static ALLOCATIONS: AtomicU64 = AtomicU64::new(0);
-
-/// Live heap bytes of every thread, and their peak since the last reset.
-static LIVE: AtomicU64 = AtomicU64::new(0);
-static PEAK: AtomicU64 = AtomicU64::new(0);
-/// Whether [`LIVE`] and [`PEAK`] are kept (off: no cost to other tests).
-static MEASURING: AtomicBool = AtomicBool::new(false);
-
-/// One test of this binary at a time.
-static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
-
-fn grew(bytes: usize) {
-    if MEASURING.load(Ordering::Relaxed) {
-        let live = LIVE.fetch_add(bytes as u64, Ordering::Relaxed) + bytes as u64;
-        PEAK.fetch_max(live, Ordering::Relaxed);
-    }
-}
-
-fn shrank(bytes: usize) {
-    if MEASURING.load(Ordering::Relaxed) {
-        // Saturating: memory allocated before the measure began may be freed.
-        let _ = LIVE.fetch_update(Ordering::Relaxed, Ordering::Relaxed, |l| {
-            Some(l.saturating_sub(bytes as u64))
-        });
-    }
-}
-
-thread_local! {
-    /// Whether this thread's allocations are counted.
-    static COUNTED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
-}
-
-// SAFETY: forwards to the system allocator; only counts.
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        if COUNTED.with(|c| c.get()) {
-            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        }
-        grew(layout.size());
-        // SAFETY: same contract as the caller's.
-        unsafe { System.alloc(layout) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        shrank(layout.size());
-        // SAFETY: same contract as the caller's.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        if COUNTED.with(|c| c.get()) {
-            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        }
-        grew(new_size);
-        // SAFETY: same contract as the caller's.
-        let p = unsafe { System.realloc(ptr, layout, new_size) };
-        shrank(layout.size());
-        p
-    }
-}
+#[path = "common/heap.rs"]
+mod heap;
 
 #[global_allocator]
-static GLOBAL: Counting = Counting;
+static GLOBAL: heap::Counting = heap::Counting;
 
 /// Allocations made by one run of the kink scene of `n` blocks to `t_end`.
 fn allocations(n: usize, t_end: f64, config: &IntegratorConfig, stepping: Stepping) -> u64 {
     let params = Params::paper(60.0).unwrap().with(n, 1.3, 60.0).unwrap();
     let scenario = Scenario::single_flip(params, 1000.0, t_end).unwrap();
-    COUNTED.with(|c| c.set(true));
-    let before = ALLOCATIONS.load(Ordering::Relaxed);
+    heap::count_this_thread(true);
+    let before = heap::allocations();
     let traj = sim::simulate_with(&scenario, &[], config, stepping).unwrap();
-    let after = ALLOCATIONS.load(Ordering::Relaxed);
+    let after = heap::allocations();
     assert!(traj.steps > 0);
     after - before
 }
@@ -107,7 +46,7 @@ const EVENTS: u64 = 400;
 
 #[test]
 fn step_loop_does_not_allocate() {
-    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|p| p.into_inner());
+    let _one = heap::lock();
     let configs = [
         IntegratorConfig::paper(),
         IntegratorConfig::fixed(IntegratorKind::ExplicitEuler, 0.002),
@@ -134,12 +73,8 @@ fn step_loop_does_not_allocate() {
 
 /// The peak of live heap bytes, above what was live before, while `f` runs.
 fn peak_of<R>(f: impl FnOnce() -> R) -> (R, u64) {
-    LIVE.store(0, Ordering::Relaxed);
-    PEAK.store(0, Ordering::Relaxed);
-    MEASURING.store(true, Ordering::Relaxed);
-    let r = f();
-    MEASURING.store(false, Ordering::Relaxed);
-    (r, PEAK.load(Ordering::Relaxed))
+    let (r, peak, _) = heap::measure(f);
+    (r, peak)
 }
 
 /// A scene of `n` blocks drawn as `output` (a TOML `[output]` table's
@@ -187,7 +122,7 @@ fn documented_bound(n: usize, samples: usize) -> f64 {
 
 #[test]
 fn memory_of_a_data_file_stays_within_the_documented_bound() {
-    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|p| p.into_inner());
+    let _one = heap::lock();
     let dir = std::env::temp_dir().join(format!("ladder-alloc-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let rows = 400; // a kymograph figure's rows (scenes::KYMOGRAPH_ROWS)
@@ -245,7 +180,7 @@ fn memory_of_a_data_file_stays_within_the_documented_bound() {
 
 #[test]
 fn a_data_file_past_its_cap_is_refused_before_any_work() {
-    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|p| p.into_inner());
+    let _one = heap::lock();
     let s = scene(100_000, "kind = \"kymograph\"");
     let movie = MovieOptions::default();
     let (estimate, bs) = scenes::data::estimated_bytes(&s, &movie, 400);

@@ -24,81 +24,16 @@ use jacobs_ladder::limits::{Limits, Resource};
 use jacobs_ladder::scene::{self, Scene};
 use jacobs_ladder::scenes::{self, MovieOptions, Outputs};
 use jacobs_ladder::sweep::{self, Plan, Record, json};
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
-struct Counting;
+#[path = "common/heap.rs"]
+mod heap;
 
-/// Live heap bytes of every thread, and their peak since the last reset.
-static LIVE: AtomicU64 = AtomicU64::new(0);
-static PEAK: AtomicU64 = AtomicU64::new(0);
-/// Whether [`LIVE`] and [`PEAK`] are kept.
-static MEASURING: AtomicBool = AtomicBool::new(false);
-
-/// One test of this binary at a time.
-static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
-
-fn grew(bytes: usize) {
-    if MEASURING.load(Ordering::Relaxed) {
-        let live = LIVE.fetch_add(bytes as u64, Ordering::Relaxed) + bytes as u64;
-        PEAK.fetch_max(live, Ordering::Relaxed);
-    }
-}
-
-fn shrank(bytes: usize) {
-    if MEASURING.load(Ordering::Relaxed) {
-        // Saturating: memory allocated before the measure began may be freed.
-        let _ = LIVE.fetch_update(Ordering::Relaxed, Ordering::Relaxed, |l| {
-            Some(l.saturating_sub(bytes as u64))
-        });
-    }
-}
-
-// SAFETY: forwards to the system allocator; only counts.
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        grew(layout.size());
-        // SAFETY: same contract as the caller's.
-        unsafe { System.alloc(layout) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        shrank(layout.size());
-        // SAFETY: same contract as the caller's.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        grew(new_size);
-        // SAFETY: same contract as the caller's.
-        let p = unsafe { System.realloc(ptr, layout, new_size) };
-        shrank(layout.size());
-        p
-    }
-}
+use heap::{lock, measure};
 
 #[global_allocator]
-static GLOBAL: Counting = Counting;
-
-/// The peak of live heap bytes, above what was live before, while `f`
-/// runs, and the bytes still live (allocated by `f`, not freed) after.
-fn measure<R>(f: impl FnOnce() -> R) -> (R, u64, u64) {
-    LIVE.store(0, Ordering::Relaxed);
-    PEAK.store(0, Ordering::Relaxed);
-    MEASURING.store(true, Ordering::Relaxed);
-    let r = f();
-    MEASURING.store(false, Ordering::Relaxed);
-    (
-        r,
-        PEAK.load(Ordering::Relaxed),
-        LIVE.load(Ordering::Relaxed),
-    )
-}
-
-fn lock() -> std::sync::MutexGuard<'static, ()> {
-    ONE_AT_A_TIME.lock().unwrap_or_else(|p| p.into_inner())
-}
+static GLOBAL: heap::Counting = heap::Counting;
 
 fn tmp(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("ladder-memcaps-{}-{name}", std::process::id()));
@@ -325,15 +260,17 @@ fn a_sweep_past_its_data_cap_is_refused_before_any_run() {
     let cap = json::estimate(&plan).json;
     let out = dir.join("out");
     let out_s = out.to_str().unwrap();
-    let under = format!("{}", (cap * (1.0 - 1e-9)).floor());
-    let o = ladder(&[
-        "sweep",
-        file.to_str().unwrap(),
-        "--out",
-        out_s,
-        "--max-data-bytes",
-        &under,
-    ]);
+    let sweep_with_cap = |cap: f64| {
+        ladder(&[
+            "sweep",
+            file.to_str().unwrap(),
+            "--out",
+            out_s,
+            "--max-data-bytes",
+            &format!("{cap}"),
+        ])
+    };
+    let o = sweep_with_cap((cap * (1.0 - 1e-9)).floor());
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
@@ -346,14 +283,7 @@ fn a_sweep_past_its_data_cap_is_refused_before_any_run() {
         "refused before any run: nothing written"
     );
     let at = format!("{}", cap.ceil());
-    let o = ladder(&[
-        "sweep",
-        file.to_str().unwrap(),
-        "--out",
-        out_s,
-        "--max-data-bytes",
-        &at,
-    ]);
+    let o = sweep_with_cap(cap.ceil());
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let written = std::fs::metadata(out.join("sweep-s.json")).unwrap().len();
     assert!(written as f64 <= cap, "{written} past the estimate {cap}");

@@ -195,31 +195,23 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
             .find(|((_, _, keep), _)| keep(r))
             .map_or(0.0, |(_, dy)| dy)
     };
-    let turned: Vec<(f64, f64)> = records
-        .iter()
-        .filter(|r| r.result.block_n_turned_at.is_some())
-        .map(|r| (x_of(r), r.result.arrival_times.len() as f64 + dy_of(r)))
-        .collect();
-    if !turned.is_empty() {
-        front = front.series(Series::scatter(
-            "block N turned first",
-            turned,
-            style::DARK,
-            Marker::Triangle,
-        ));
-    }
-    let met: Vec<(f64, f64)> = records
-        .iter()
-        .filter_map(|r| Some((r, driven_wave_met_at(r)?)))
-        .map(|(r, block)| (x_of(r), block as f64 + dy_of(r)))
-        .collect();
-    if !met.is_empty() {
-        front = front.series(Series::scatter(
-            "annihilated at",
-            met,
-            style::DARK,
-            Marker::Cross,
-        ));
+    // Each mark at the block it names, for the runs that have one.
+    let marks: [(&str, Marker, &dyn Fn(&Record) -> Option<usize>); 2] = [
+        ("block N turned first", Marker::Triangle, &|r: &Record| {
+            r.result
+                .block_n_turned_at
+                .map(|_| r.result.arrival_times.len())
+        }),
+        ("annihilated at", Marker::Cross, &driven_wave_met_at),
+    ];
+    for (label, marker, block_of) in marks {
+        let pts: Vec<(f64, f64)> = records
+            .iter()
+            .filter_map(|r| Some((x_of(r), block_of(r)? as f64 + dy_of(r))))
+            .collect();
+        if !pts.is_empty() {
+            front = front.series(Series::scatter(label, pts, style::DARK, marker));
+        }
     }
     // A log axis when the speeds span more than a decade (near 90° the
     // whole chain flips at once), else linear, so that ticks show.
