@@ -110,6 +110,10 @@ fn x_axis(plan: &Plan) -> (Param, usize, bool) {
     (p, k, fold)
 }
 
+/// A mark of the front panel: its label, its marker, and the block it
+/// marks in a run (none: no mark).
+type BlockMark<'a> = (&'static str, Marker, &'a dyn Fn(&Record) -> Option<usize>);
+
 /// A wave drawn as its own series: name, marker, which records.
 type Wave<'a> = (&'static str, Marker, Box<dyn Fn(&Record) -> bool + 'a>);
 
@@ -196,7 +200,7 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
             .map_or(0.0, |(_, dy)| dy)
     };
     // Each mark at the block it names, for the runs that have one.
-    let marks: [(&str, Marker, &dyn Fn(&Record) -> Option<usize>); 2] = [
+    let marks: [BlockMark<'_>; 2] = [
         ("block N turned first", Marker::Triangle, &|r: &Record| {
             r.result
                 .block_n_turned_at
