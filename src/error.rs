@@ -102,14 +102,4 @@ impl From<crate::model::ParamError> for Error {
     }
 }
 
-/// A user's number for a message: as typed for ordinary magnitudes, in
-/// exponent form when tiny or huge (so that 1e308 does not print 309
-/// digits).
-pub fn num(x: f64) -> String {
-    let a = x.abs();
-    if x.is_finite() && a != 0.0 && !(1e-4..1e9).contains(&a) {
-        format!("{x:e}")
-    } else {
-        format!("{x}")
-    }
-}
+pub use crate::numfmt::plain as num;

@@ -41,6 +41,7 @@ pub mod encode;
 pub mod error;
 pub mod limits;
 pub mod model;
+pub mod numfmt;
 pub mod render;
 pub mod sim;
 pub mod theory;

@@ -99,7 +99,7 @@ impl LimitArgs {
                     return Err(Error::bad_input(format!(
                         "{} must be a number > 0 (inf for no cap), got {}",
                         Self::flag(resource),
-                        crate::error::num(v)
+                        crate::numfmt::plain(v)
                     )));
                 }
                 limits.set(resource, v);
@@ -598,7 +598,7 @@ fn short(x: f64) -> String {
         return format!("{x}");
     }
     let scale = 10f64.powf(x.log10().floor() - 1.0);
-    scene::describe::num((x / scale).floor() * scale)
+    crate::numfmt::typeset((x / scale).floor() * scale)
 }
 
 /// The CSV's and npz's sample times, 0, every, 2 every, ... up to
@@ -611,7 +611,7 @@ fn csv_samples(args: &SimulateArgs, n: usize) -> Result<Vec<f64>> {
     if !(every.is_finite() && every > 0.0) {
         return Err(Error::bad_input(format!(
             "--sample-every must be a finite number > 0, got {}",
-            crate::error::num(every)
+            crate::numfmt::plain(every)
         )));
     }
     let count = (args.t_end / every).floor() + 1.0;

@@ -103,7 +103,7 @@ impl Params {
         if !self.alpha.is_finite() || deg.abs() > 90.0 + 1e-9 {
             return Err(ParamError(format!(
                 "alpha must be a number of degrees with |alpha| <= 90, got {}",
-                crate::error::num(deg)
+                crate::numfmt::plain(deg)
             )));
         }
         if self.n < 2 || self.n > MAX_BLOCKS {
@@ -154,7 +154,7 @@ fn within(name: &str, x: f64, (lo, hi): (f64, f64)) -> Result<(), ParamError> {
     } else {
         Err(ParamError(format!(
             "{name} must be a number between {lo:e} and {hi:e}, got {}",
-            crate::error::num(x)
+            crate::numfmt::plain(x)
         )))
     }
 }
@@ -165,7 +165,7 @@ fn non_negative(name: &str, x: f64) -> Result<(), ParamError> {
     } else {
         Err(ParamError(format!(
             "{name} must be a finite number >= 0, got {}",
-            crate::error::num(x)
+            crate::numfmt::plain(x)
         )))
     }
 }

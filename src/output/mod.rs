@@ -9,6 +9,7 @@
 //! 1); standard output closed by its reader (a broken pipe) is
 //! [`crate::Error::Closed`], which ends the program quietly with success.
 
+pub mod data;
 pub mod files;
 pub mod stream;
 pub mod temp;

@@ -6,18 +6,7 @@
 
 use super::{Camera, DriveSpec, Fidelity, Method, Model, OutputSpec, Scene, TheoryFigure};
 
-/// A number as a reader writes it: 60, 1.3, 0.0002 → 2e-4, with a
-/// typographic minus sign.
-pub fn num(x: f64) -> String {
-    let s = if x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e6) {
-        let e = format!("{x:e}");
-        e.replace("e-", "e−")
-    } else {
-        let r = (x * 1e9).round() / 1e9;
-        format!("{r}")
-    };
-    s.replace('-', "−")
-}
+pub use crate::numfmt::typeset as num;
 
 /// "kink, α = 60°" or "antikink, α = −60°".
 pub fn wave(model: &Model) -> String {

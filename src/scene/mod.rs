@@ -273,9 +273,9 @@ impl DriveSpec {
                     format!(
                         "a flip from {} for {} ends at {}: the duration must be finite and \
                          not lost in the rounding of the start",
-                        crate::error::num(f.start),
-                        crate::error::num(f.duration),
-                        crate::error::num(f.end())
+                        crate::numfmt::plain(f.start),
+                        crate::numfmt::plain(f.duration),
+                        crate::numfmt::plain(f.end())
                     ),
                 ));
             }
@@ -969,7 +969,7 @@ fn check_model(key: &str, m: &Model, simulated: bool) -> std::result::Result<(),
             "b",
             format!(
                 "must be a length from {MIN_LENGTH:e} to {MAX_LENGTH:e}, got {}",
-                crate::error::num(m.b)
+                crate::numfmt::plain(m.b)
             ),
         );
     }
@@ -990,7 +990,7 @@ fn check_model(key: &str, m: &Model, simulated: bool) -> std::result::Result<(),
             "inertia",
             format!(
                 "must be a number from {MIN_INERTIA:e} to {MAX_INERTIA:e}, got {}",
-                crate::error::num(m.inertia)
+                crate::numfmt::plain(m.inertia)
             ),
         );
     }

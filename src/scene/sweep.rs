@@ -591,7 +591,7 @@ impl SweepSpec {
                     v.0.iter()
                         .map(|piece| match piece {
                             Piece::Range { text } => text.replace('-', "−"),
-                            Piece::Value(x) => super::describe::num(*x),
+                            Piece::Value(x) => crate::numfmt::typeset(*x),
                         })
                         .collect();
                 format!("{} = {}", p.symbol(), pieces.join(", "))
@@ -613,9 +613,9 @@ impl SweepSpec {
             })
             .unwrap_or_default();
         let fixed = if self.grid.0.iter().any(|(p, _)| *p == Param::N) {
-            format!("b/s = {}", super::describe::num(m.b))
+            format!("b/s = {}", crate::numfmt::typeset(m.b))
         } else {
-            format!("N = {}, b/s = {}", m.n, super::describe::num(m.b))
+            format!("N = {}, b/s = {}", m.n, crate::numfmt::typeset(m.b))
         };
         match varied.len() {
             0 | 1 => format!(

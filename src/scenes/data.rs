@@ -16,6 +16,8 @@ use serde::{Serialize, Serializer};
 use std::io::{self, Seek, Write};
 use std::sync::Arc;
 
+pub use crate::output::data::{BYTES_PER_VALUE, MadeBy, write_json};
+
 /// `<output>.json`: the scene with every parameter, the program that made
 /// the output, and the numbers the picture shows (SPEC section 6); with
 /// `settings` and the scene, what reruns it (issue 19).
@@ -32,32 +34,6 @@ pub struct DataFile<'a> {
     pub scene: &'a Scene,
     /// One entry per simulation drawn (empty for the theory figures).
     pub runs: Vec<RunData>,
-}
-
-/// The program that made a data file and the command that asked for it:
-/// `program`, `version`, `git_commit` (the commit it was built from, with
-/// `-modified` for a work tree with changes; null outside a clone),
-/// `build` (`ladder --version`'s words) and `command_line`, word by word
-/// (empty when the library was called directly).
-#[derive(Debug, Clone, Serialize)]
-pub struct MadeBy<'a> {
-    pub program: &'static str,
-    pub version: &'static str,
-    pub git_commit: Option<&'static str>,
-    pub build: &'static str,
-    pub command_line: &'a [String],
-}
-
-impl<'a> MadeBy<'a> {
-    pub fn new(command_line: &'a [String]) -> Self {
-        Self {
-            program: "ladder",
-            version: crate::version::VERSION,
-            git_commit: crate::version::GIT_COMMIT,
-            build: crate::version::LONG,
-            command_line,
-        }
-    }
 }
 
 /// What an output was drawn with besides its scene: the scene rendered
@@ -329,12 +305,6 @@ impl RunData {
     }
 }
 
-/// Most bytes one number of a frame or of a kymograph row takes in the
-/// data file (pretty JSON): up to 12 spaces of indentation, up to 24
-/// characters of the number (`-1.2345678901234567e-5`), `,` and a line
-/// break.
-pub const BYTES_PER_VALUE: f64 = 40.0;
-
 /// Bytes per block of each run beyond its frames: the final angles, the
 /// arrival times and every wave's per-block arrival times (a few waves).
 pub const BYTES_PER_BLOCK_RUN: f64 = 400.0;
@@ -373,14 +343,6 @@ pub fn estimated_bytes(scene: &Scene, movie: &MovieOptions, kymograph_rows: usiz
         block_samples += samples * n;
     }
     (bytes, block_samples)
-}
-
-/// Writes `data` as pretty-printed JSON into `w` through a buffer: the
-/// data file is never held whole in memory.
-pub fn write_json<T: Serialize>(w: &mut dyn Write, data: &T) -> io::Result<()> {
-    let mut w = io::BufWriter::with_capacity(1 << 16, w);
-    serde_json::to_writer_pretty(&mut w, data).map_err(io::Error::other)?;
-    w.flush()
 }
 
 /// Names of the `.npz` arrays of [`write_npz`], in the order written.

@@ -197,9 +197,7 @@ pub fn render_with(
     Ok(files)
 }
 
-/// How a file's bytes are made: written into the writer given (a file
-/// being written, or memory), so that a data file is streamed.
-pub type Fill<'a> = &'a dyn Fn(&mut dyn std::io::Write) -> std::io::Result<()>;
+pub use crate::output::data::Fill;
 
 /// [`render_with`], handing each file to `sink` (its name, how to write
 /// it) as soon as it is drawn, in [`file_names_for`] order: the data file,

@@ -199,8 +199,8 @@ pub fn critical_step(scene: &Scene, kind: sim::IntegratorKind) -> Result<Critica
     for s in &runs {
         let params = s.model.params()?;
         let omega_max = crate::theory::dispersion::omega_max_clamped(&params)?;
-        let damping = crate::bench::damping_rate(&params);
-        predicted = predicted.min(crate::bench::predicted_dt(kind, omega_max, damping));
+        let damping = sim::step_bounds::damping_rate(&params);
+        predicted = predicted.min(sim::step_bounds::predicted_dt(kind, omega_max, damping));
         scenarios.push(s.scenario()?);
     }
     let bounded = |dt: f64| -> Result<bool> {

@@ -10,7 +10,8 @@
 #[cfg(target_arch = "x86_64")]
 mod kernel;
 
-use super::fused::{Batch, Isa, MAX_BLOCKS, Stepping};
+use super::fused::MAX_BLOCKS;
+use super::stepping::{Batch, Isa, Stepping};
 use super::observables::ArrivalDetector;
 use super::protocol::{Drive, Piece};
 use super::rhs::{Rhs, State};

@@ -12,11 +12,13 @@ pub mod observables;
 pub mod protocol;
 pub mod relax;
 pub mod rhs;
+pub mod step_bounds;
+pub mod stepping;
 mod simd;
 pub mod waves;
 pub mod window;
 
-pub use fused::{Isa, Stepping};
+pub use stepping::{Isa, Stepping};
 pub use integrators::{IntegratorConfig, IntegratorKind};
 pub use protocol::{Drive, Piece, Protocol};
 pub use relax::Start;

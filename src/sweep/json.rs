@@ -66,7 +66,7 @@ struct Rule {
 struct SweepData<'a> {
     /// The program, its build and the command line (issue 19).
     #[serde(flatten)]
-    made_by: crate::scenes::data::MadeBy<'a>,
+    made_by: crate::output::data::MadeBy<'a>,
     title: String,
     parameters: String,
     files: &'a [String],
@@ -93,7 +93,7 @@ fn data<'a>(
         .collect();
     let tol = crate::theory::stability::RestTolerances::default();
     SweepData {
-        made_by: crate::scenes::data::MadeBy::new(command_line),
+        made_by: crate::output::data::MadeBy::new(command_line),
         title: describe::title(&plan.scene),
         parameters: describe::parameters(&plan.scene),
         files,
@@ -138,7 +138,7 @@ pub fn write(
     files: &[String],
     command_line: &[String],
 ) -> io::Result<()> {
-    crate::scenes::data::write_json(w, &data(plan, records, files, command_line))
+    crate::output::data::write_json(w, &data(plan, records, files, command_line))
 }
 
 /// The exact size of [`write`]'s JSON, counted without keeping it.
@@ -173,9 +173,9 @@ fn json_number(v: f64) -> serde_json::Value {
 /// Most bytes one number of a run's lists (an arrival time, `null`)
 /// takes in the JSON: up to 14 spaces of indentation (a wave's arrival
 /// times; 8 for the run's own), up to 24 characters, a comma and a line
-/// break (`crate::scenes::data::BYTES_PER_VALUE`; measured: 28 and 34
+/// break (`crate::output::data::BYTES_PER_VALUE`; measured: 28 and 34
 /// bytes for times of 18 characters).
-pub const BYTES_PER_VALUE: f64 = crate::scenes::data::BYTES_PER_VALUE;
+pub const BYTES_PER_VALUE: f64 = crate::output::data::BYTES_PER_VALUE;
 
 /// Bytes of one run's entry beyond its lists of N numbers: its fields,
 /// its point and block N's fate (measured: 0.75 kB at N = 10), with room

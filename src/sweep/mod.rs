@@ -198,7 +198,7 @@ pub fn write_outputs(
     records: &[Record],
     stem: &str,
     output: &OutputOptions<'_>,
-    sink: &mut dyn FnMut(&str, crate::scenes::Fill<'_>) -> Result<()>,
+    sink: &mut dyn FnMut(&str, crate::output::data::Fill<'_>) -> Result<()>,
 ) -> Result<Vec<String>> {
     let chart = chart::chart(plan, records)?;
     let mut names = Vec::new();
@@ -274,7 +274,7 @@ pub fn checked(scene: &Scene) -> Result<Plan> {
 pub fn render_to(
     scene: &Scene,
     output: &OutputOptions<'_>,
-    sink: &mut dyn FnMut(&str, crate::scenes::Fill<'_>) -> Result<()>,
+    sink: &mut dyn FnMut(&str, crate::output::data::Fill<'_>) -> Result<()>,
 ) -> Result<Vec<String>> {
     let plan = checked(scene)?;
     let all: Vec<usize> = (0..plan.len()).collect();

@@ -143,7 +143,7 @@ impl TheoryReport {
             "Linear theory, N = {}, b/s = {}, α = {}°",
             self.n,
             self.b,
-            crate::scene::describe::num(self.alpha_deg)
+            crate::numfmt::typeset(self.alpha_deg)
         );
         for (name, value, note) in self.rows() {
             let _ = writeln!(out, "  {name:<34} {value:>14}  {note}");

@@ -1,0 +1,51 @@
+//! Numbers as text, a leaf that every floor may use: [`plain`] for a
+//! message (as the user typed it, exponent form when tiny or huge) and
+//! [`typeset`] for a picture or a title (as a reader writes it, with a
+//! typographic minus sign).
+
+/// A user's number for a message: as typed for ordinary magnitudes, in
+/// exponent form when tiny or huge (so that 1e308 does not print 309
+/// digits).
+pub fn plain(x: f64) -> String {
+    let a = x.abs();
+    if x.is_finite() && a != 0.0 && !(1e-4..1e9).contains(&a) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
+/// A number as a reader writes it: 60, 1.3, 0.0002 → 2e-4, with a
+/// typographic minus sign.
+pub fn typeset(x: f64) -> String {
+    let s = if x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e6) {
+        let e = format!("{x:e}");
+        e.replace("e-", "e−")
+    } else {
+        let r = (x * 1e9).round() / 1e9;
+        format!("{r}")
+    };
+    s.replace('-', "−")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plain_keeps_ordinary_numbers_and_shortens_extremes() {
+        assert_eq!(plain(1.3), "1.3");
+        assert_eq!(plain(-60.0), "-60");
+        assert_eq!(plain(1e308), "1e308");
+        assert_eq!(plain(2e-5), "2e-5");
+        assert_eq!(plain(0.0), "0");
+    }
+
+    #[test]
+    fn typeset_uses_the_minus_sign_and_rounds_noise() {
+        assert_eq!(typeset(-60.0), "−60");
+        assert_eq!(typeset(2e-4), "2e−4");
+        assert_eq!(typeset(0.1 + 0.2), "0.3");
+        assert_eq!(typeset(1.5e6), "1.5e6");
+    }
+}
