@@ -55,5 +55,6 @@ pub mod scene;
 pub mod sweep;
 
 pub use error::{Error, Result};
+pub mod front;
 pub mod gallery;
 pub mod scenes;

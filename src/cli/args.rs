@@ -326,7 +326,7 @@ pub struct MovieFormat {
     #[arg(long, default_value_t = 200, help_heading = "Movie format")]
     pub frames: usize,
     /// Frame size WxH in pixels, each side 64 to 4096
-    #[arg(long, default_value = "640x480", value_name = "WxH", value_parser = parse_size, help_heading = "Movie format")]
+    #[arg(long, default_value = crate::front::options::DEFAULT_SIZE, value_name = "WxH", value_parser = crate::front::options::parse_size, help_heading = "Movie format")]
     pub size: (u32, u32),
     /// Frames per second
     #[arg(long, default_value_t = 25.0, help_heading = "Movie format")]
@@ -351,15 +351,6 @@ pub enum QualityArg {
     Standard,
     High,
     Best,
-}
-
-fn parse_size(s: &str) -> std::result::Result<(u32, u32), String> {
-    let bad = || format!("expected WxH such as 640x480, got '{s}'");
-    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
-    Ok((
-        w.trim().parse().map_err(|_| bad())?,
-        h.trim().parse().map_err(|_| bad())?,
-    ))
 }
 
 #[derive(Args, Debug)]

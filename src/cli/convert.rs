@@ -6,15 +6,15 @@ use super::args::{
     CameraArg, DriveArgs, FigureFormat, GridArgs, KernelArg, MixedFormat, ModelArgs, MovieFormat,
     QualityArg, RunArgs, StartArg, StyleArgs, SweepArgs, ViewArg,
 };
-use crate::encode::{self, Formats, Kind as FormatKind};
+use crate::encode;
 use crate::error::{Error, Result};
+use crate::front;
 use crate::render::page_style::parse_length;
 use crate::render::{FontChoice, Length, StyleName, StyleSpec, TextMode};
 use crate::scene::sweep::{Param, SweepSpec, Values};
-use crate::scene::{Camera, DriveSpec, Kind, Method, OutputSpec, Scene, describe};
+use crate::scene::{Camera, DriveSpec, Method, OutputSpec, Scene, describe};
 use crate::scenes::{MovieOptions, Outputs};
 use crate::sim;
-use std::path::Path;
 
 impl ModelArgs {
     /// Whether any model flag was given.
@@ -159,7 +159,7 @@ impl GridArgs {
 /// outcome flags applied, validated; an error names the flag.
 pub fn sweep_scene(args: &SweepArgs) -> Result<Scene> {
     // `--out` names the folder of the sweep's files, as for every command.
-    check_out_dir(&args.out.out)?;
+    crate::front::render::check_out_dir(&args.out.out)?;
     let grid = args.grid.given();
     let mut scene = match &args.file {
         Some(path) => {
@@ -441,23 +441,11 @@ fn paper_output(output: &OutputSpec) -> OutputSpec {
 }
 
 impl MovieFormat {
-    /// The movie options, validated, within the cap on frames × pixels
-    /// (`limits::Limits::active`).
+    /// The movie options, validated ([`front::options::movie_options`]).
     pub fn options(&self) -> Result<MovieOptions> {
-        let opts = MovieOptions {
-            frames: self.frames,
-            width: self.size.0,
-            height: self.size.1,
-            fps: self.fps,
-        }
-        .validated()
-        .map_err(|e| Error::bad_input(format!("--frames/--size/--fps: {e}")))?;
-        crate::limits::Limits::active().check_movie(opts.frames, opts.width, opts.height)?;
-        Ok(opts)
+        front::options::movie_options(self.frames, self.size, self.fps)
     }
-}
 
-impl MovieFormat {
     /// `--quality`, as the encoder's level.
     pub fn mp4_quality(&self) -> encode::Mp4Quality {
         match self.quality {
@@ -467,18 +455,6 @@ impl MovieFormat {
             QualityArg::Best => encode::Mp4Quality::Best,
         }
     }
-}
-
-/// `--format` of a kind, worded as the flag.
-fn formats_of(list: &str, kind: FormatKind) -> Result<Formats> {
-    Formats::parse(list, kind).map_err(|e| Error::bad_input(format!("--format: {e}")))
-}
-
-/// `--scale`, checked.
-fn with_scale(outputs: Outputs, scale: f32) -> Result<Outputs> {
-    Outputs { scale, ..outputs }
-        .validated()
-        .map_err(|e| Error::bad_input(format!("--scale: {e}")))
 }
 
 impl FigureFormat {
@@ -491,15 +467,19 @@ impl FigureFormat {
                  or --format svg,pdf for vector files"
             )));
         }
-        let figures = formats_of(&self.formats, FormatKind::Figure)?;
-        with_scale(
-            Outputs {
-                figures,
-                style: self.style.spec()?,
-                ..Outputs::default()
-            },
-            self.scale,
-        )
+        front::options::figure_outputs(&self.formats, self.scale, self.style.spec()?)
+    }
+}
+
+impl MixedFormat {
+    /// `ladder render`: every scene has a format of its kind in the list.
+    pub fn check_covers(&self, scenes: &[Scene]) -> Result<()> {
+        front::options::check_covers(&self.formats, scenes)
+    }
+
+    /// The figure and movie formats of `ladder all` and `ladder render`.
+    pub fn outputs(&self, movie: &MovieOptions) -> Result<Outputs> {
+        front::options::mixed_outputs(&self.formats, self.scale, self.style.spec()?, movie)
     }
 }
 
@@ -547,128 +527,6 @@ impl StyleArgs {
     }
 }
 
-impl MixedFormat {
-    /// `ladder render`: every scene must have a format of its kind in the
-    /// list (a list that names only figure formats writes no movie, and
-    /// one that names only movie formats no figure).
-    pub fn check_covers(&self, scenes: &[Scene]) -> Result<()> {
-        let (figures, movies) = encode::parse_mixed(&self.formats)
-            .map_err(|e| Error::bad_input(format!("--format: {e}")))?;
-        for s in scenes {
-            let missing = match s.kind() {
-                Kind::Movie if movies.is_none() => Some("gif or mp4"),
-                Kind::Figure if figures.is_none() => Some("png, svg or pdf"),
-                _ => None,
-            };
-            if let Some(formats) = missing {
-                return Err(Error::bad_input(format!(
-                    "--format {}: {} is a {}, written as {formats}; add one of them to the list",
-                    self.formats,
-                    s.name,
-                    s.kind().name()
-                )));
-            }
-        }
-        Ok(())
-    }
-
-    /// The figure and movie formats of `ladder all` and `ladder render`,
-    /// checked against the movie's frame size and rate.
-    pub fn outputs(&self, movie: &MovieOptions) -> Result<Outputs> {
-        let (figures, movies) = encode::parse_mixed(&self.formats)
-            .map_err(|e| Error::bad_input(format!("--format: {e}")))?;
-        let defaults = Outputs::default();
-        let outputs = Outputs {
-            figures: figures.unwrap_or(defaults.figures),
-            movies: movies.unwrap_or(defaults.movies),
-            style: self.style.spec()?,
-            ..defaults
-        };
-        check_movie_formats(&outputs.movies, movie)?;
-        with_scale(outputs, self.scale)
-    }
-}
-
-/// The formats of `ladder movie`: the movie formats of `list` (gif, mp4),
-/// checked against the frame size and rate, and its figure formats (png,
-/// svg, pdf; PNG if none) for the movie's kymograph, whose PNG is
-/// `scale` times the movie's pixels.
-pub fn movie_outputs(list: &str, movie: &MovieOptions, scale: f32) -> Result<Outputs> {
-    let (figures, movies) =
-        encode::parse_mixed(list).map_err(|e| Error::bad_input(format!("--format: {e}")))?;
-    let movies = movies.ok_or_else(|| {
-        Error::bad_input(format!(
-            "--format {list}: no movie format; a movie is gif or mp4 (and its kymograph \
-             png, svg or pdf), e.g. --format gif,pdf"
-        ))
-    })?;
-    check_movie_formats(&movies, movie)?;
-    let outputs = Outputs {
-        figures: figures.unwrap_or_else(|| Formats::default_for(FormatKind::Figure)),
-        movies,
-        ..Outputs::default()
-    };
-    with_scale(outputs, scale)
-}
-
-/// For a `--format` list of `ladder movie` that names figure formats as
-/// well as movie formats: one line saying which file takes which (the
-/// movie the movie formats, its kymograph the figure formats).
-pub fn movie_formats_line(list: &str, outputs: &Outputs) -> Option<String> {
-    let (figures, _) = encode::parse_mixed(list).ok()?;
-    figures?;
-    let names = |f: &Formats| {
-        let v: Vec<String> = f
-            .as_slice()
-            .iter()
-            .map(|f| f.name().to_uppercase())
-            .collect();
-        v.join(" and ")
-    };
-    Some(format!(
-        "--format {list}: writing the movie as {} and its kymograph as {}",
-        names(&outputs.movies),
-        names(&outputs.figures)
-    ))
-}
-
-/// Every movie format can take the frame size and rate (before any work).
-fn check_movie_formats(formats: &Formats, movie: &MovieOptions) -> Result<()> {
-    for &f in formats.as_slice() {
-        encode::check_movie_size(f, movie.width, movie.height)
-            .map_err(|e| Error::bad_input(format!("--size: {e}")))?;
-        encode::check_movie_fps(f, movie.fps)
-            .map_err(|e| Error::bad_input(format!("--fps: {e}")))?;
-    }
-    Ok(())
-}
-
-/// File extensions that make `--out` look like a file name.
-const FILE_EXTENSIONS: [&str; 8] = ["png", "svg", "pdf", "gif", "mp4", "json", "html", "toml"];
-
-/// `--out` names a folder: refuse an existing file, and a path that does
-/// not exist yet but ends like a file name (`--out x.svg`).
-pub fn check_out_dir(out: &Path) -> Result<()> {
-    let shown = out.display();
-    if out.exists() && !out.is_dir() {
-        return Err(Error::bad_input(format!(
-            "--out is a folder, and {shown} is a file; give a folder (the files are named after the scene, e.g. figure-3.png)"
-        )));
-    }
-    let ext = out
-        .extension()
-        .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    if let Some(ext) = ext.filter(|e| FILE_EXTENSIONS.contains(&e.as_str()))
-        && !out.exists()
-    {
-        return Err(Error::bad_input(format!(
-            "--out is a folder, not a file name: got {shown}; use --out DIR (the files are \
-             named after the scene) and --format {ext}"
-        )));
-    }
-    Ok(())
-}
-
 impl KernelArg {
     /// The stepping asked for, if this CPU can run it.
     pub fn stepping(self) -> Result<sim::Stepping> {
@@ -694,59 +552,6 @@ impl KernelArg {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn out_must_be_a_folder() {
-        assert!(check_out_dir(Path::new("some/new/dir")).is_ok());
-        let e = check_out_dir(Path::new("x.svg")).unwrap_err().to_string();
-        assert!(e.starts_with("--out is a folder"), "{e}");
-        assert!(e.contains("--format svg"), "{e}");
-        let e = check_out_dir(Path::new("Cargo.toml"))
-            .unwrap_err()
-            .to_string();
-        assert!(e.contains("is a file"), "{e}");
-    }
-
-    #[test]
-    fn formats_are_checked_before_work() {
-        let movie = MovieOptions::default();
-        let e = movie_outputs("pdf", &movie, 1.0).unwrap_err().to_string();
-        assert!(e.starts_with("--format pdf: no movie format"), "{e}");
-        let o = movie_outputs("gif,mp4,png,pdf", &movie, 2.0).unwrap();
-        assert_eq!(
-            (o.movies.to_string(), o.figures.to_string()),
-            ("gif,mp4".into(), "png,pdf".into())
-        );
-        assert_eq!(
-            movie_formats_line("gif,mp4,png,pdf", &o).unwrap(),
-            "--format gif,mp4,png,pdf: writing the movie as GIF and MP4 and its kymograph \
-             as PNG and PDF"
-        );
-        assert_eq!(movie_formats_line("gif", &o), None);
-        let fast = MovieOptions { fps: 60.0, ..movie };
-        let e = movie_outputs("gif", &fast, 1.0).unwrap_err().to_string();
-        assert!(e.starts_with("--fps: a GIF plays at most 50"), "{e}");
-        let mixed = MixedFormat {
-            formats: "pdf,gif".into(),
-            scale: 2.0,
-            style: Default::default(),
-        };
-        let o = mixed.outputs(&movie).unwrap();
-        assert_eq!(o.figures.to_string(), "pdf");
-        assert_eq!(o.movies.to_string(), "gif");
-        assert_eq!(o.scale, 2.0);
-        let bad = MixedFormat {
-            formats: "png".into(),
-            scale: 100.0,
-            style: Default::default(),
-        };
-        assert!(
-            bad.outputs(&movie)
-                .unwrap_err()
-                .to_string()
-                .starts_with("--scale: ")
-        );
-    }
 
     #[test]
     fn sweep_keys_are_worded_as_flags() {

@@ -11,6 +11,7 @@ pub use args::*;
 
 use crate::catalog::{self, Entry};
 use crate::error::{Error, Result};
+use crate::front;
 use crate::limits::{Limits, Resource};
 use crate::output;
 use crate::scene::{self, Kind, Scene};
@@ -190,10 +191,10 @@ pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
             let opts = args.format.options()?;
             let outputs = recorded(Outputs {
                 mp4_quality: args.format.mp4_quality(),
-                ..convert::movie_outputs(&args.formats, &opts, args.scale)?
+                ..front::options::movie_outputs(&args.formats, &opts, args.scale)?
             });
             let scenes = movie_scenes(&args)?;
-            if let Some(line) = convert::movie_formats_line(&args.formats, &outputs) {
+            if let Some(line) = front::options::movie_formats_line(&args.formats, &outputs) {
                 output::eprint(&format!("ladder: {line}\n"))?;
             }
             render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, false)
@@ -211,7 +212,7 @@ pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
                 .collect::<Result<Vec<_>>>()?;
             args.formats.check_covers(&scenes)?;
             let sources: Vec<String> = args.files.iter().map(|f| f.display().to_string()).collect();
-            check_distinct_outputs(&scenes, &sources, &args.out.out, &outputs)?;
+            front::render::check_distinct_outputs(&scenes, &sources, &args.out.out, &outputs)?;
             if args.check {
                 // The checks rendering makes before its work, in one place.
                 for (file, s) in args.files.iter().zip(&scenes) {
@@ -810,29 +811,8 @@ fn theory(args: &TheoryArgs) -> Result<()> {
     }
 }
 
-/// Refuses two scenes of one command that would write one file (the same
-/// scene file twice, or two files with one `name`); `sources` say where
-/// each scene comes from.
-fn check_distinct_outputs(
-    scenes: &[Scene],
-    sources: &[String],
-    out: &std::path::Path,
-    outputs: &Outputs,
-) -> Result<()> {
-    let targets: Vec<(std::path::PathBuf, String)> = scenes
-        .iter()
-        .zip(sources)
-        .flat_map(|(s, src)| {
-            scenes::file_names_for(s, outputs)
-                .into_iter()
-                .map(move |name| (out.join(name), src.clone()))
-        })
-        .collect();
-    output::check_distinct(&targets)
-}
-
-/// Renders `scenes` into `out` in parallel (rayon), each file written
-/// atomically as soon as it is ready, with a progress bar and a summary.
+/// Renders `scenes` into `out` ([`front::render::into_folder`]) with a
+/// progress bar, then says what it wrote.
 fn render_into(
     scenes: &[Scene],
     out: &OutArgs,
@@ -842,30 +822,6 @@ fn render_into(
     index: bool,
 ) -> Result<()> {
     let (out, verbose) = (out.out.as_path(), out.verbose);
-    // The gallery shows a PNG of every figure: one is made if none is asked.
-    let outputs = &Outputs {
-        preview: index,
-        ..outputs.clone()
-    };
-    use rayon::prelude::*;
-    convert::check_out_dir(out)?;
-    // Every target, index.html included, before anything is rendered.
-    let names: Vec<String> = scenes.iter().map(|s| format!("scene {}", s.name)).collect();
-    check_distinct_outputs(scenes, &names, out, outputs)?;
-    let mut targets: Vec<std::path::PathBuf> = scenes
-        .iter()
-        .flat_map(|s| scenes::file_names_for(s, outputs))
-        .map(|name| out.join(name))
-        .collect();
-    if index {
-        targets.push(out.join("index.html"));
-    }
-    output::check_targets(&targets)?;
-    // Every scene's checks and costs before any is rendered.
-    for s in scenes {
-        scenes::check(s, movie, outputs).map_err(|e| with_divergence_hint(e, s, words))?;
-    }
-    warn_replaced(scenes, out)?;
     let start = Instant::now();
     // One movie: a bar over its frames; several scenes: over the scenes.
     let one_movie = scenes.len() == 1 && scenes[0].kind() == Kind::Movie;
@@ -874,45 +830,23 @@ fn render_into(
     } else {
         progress_bar(scenes.len() as u64, "rendering")
     };
-    let frame_done = || {
-        if one_movie {
-            bar.inc(1);
-        }
-    };
-    let written: Vec<Vec<String>> = scenes
-        .par_iter()
-        .map(|s| {
-            // Each file written as soon as it is drawn, the data file
-            // streamed into place.
-            let mut files: Vec<String> = Vec::new();
-            scenes::render_to(s, movie, outputs, &frame_done, &mut |name, fill| {
-                crate::output::write_atomic_with(&out.join(name), |f| fill(f))?;
-                files.push(name.to_string());
-                Ok(())
-            })
-            .map_err(|e| with_divergence_hint(e, s, words))?;
+    let progress = front::render::Progress {
+        frame: &|| {
+            if one_movie {
+                bar.inc(1);
+            }
+        },
+        scene: &|s| {
             if !one_movie {
                 bar.set_message(format!("{} {}", s.kind().name(), s.name));
                 bar.inc(1);
             }
-            Ok(files)
-        })
-        .collect::<Result<_>>()?;
+        },
+        hint: &|e, s| with_divergence_hint(e, s, words),
+    };
+    let files = front::render::into_folder(scenes, out, movie, outputs, index, &progress);
     bar.finish_and_clear();
-    let mut files: Vec<String> = written.iter().flatten().cloned().collect();
-    if index {
-        let items: Vec<crate::gallery::Item<'_>> = scenes
-            .iter()
-            .zip(&written)
-            .map(|(scene, files)| crate::gallery::Item {
-                scene,
-                files: files.clone(),
-            })
-            .collect();
-        let page = crate::gallery::index_html(&items)?;
-        crate::output::write_atomic(&out.join("index.html"), page.as_bytes())?;
-        files.push("index.html".into());
-    }
+    let files = files?;
     if verbose {
         let list: String = files
             .iter()
@@ -922,123 +856,15 @@ fn render_into(
     }
     output::eprint(&format!(
         "ladder: {} into {} in {:.2} s\n",
-        summary(scenes, &files, index),
+        front::render::summary(scenes, &files, index),
         out.display(),
         start.elapsed().as_secs_f64()
     ))
 }
 
-/// Says so, one line a scene, where a scene's files replace those of a
-/// different scene: its data file in `out` (`<stem>.json`) records the
-/// scene that made them. The same scene again replaces them silently.
-fn warn_replaced(scenes: &[Scene], out: &std::path::Path) -> Result<()> {
-    for s in scenes {
-        let data = out.join(format!("{}.json", s.stem()));
-        let Ok(text) = std::fs::read_to_string(&data) else {
-            continue;
-        };
-        let old = serde_json::from_str::<serde_json::Value>(&text)
-            .ok()
-            .and_then(|mut v| v.get_mut("scene").map(serde_json::Value::take));
-        let new = serde_json::to_value(s).ok();
-        if old.is_some() && old.as_ref().map(without_words) == new.as_ref().map(without_words) {
-            continue;
-        }
-        let what = match old.and_then(|v| serde_json::from_value::<Scene>(v).ok()) {
-            Some(o) => format!(" ({})", scene::describe::parameters(&o)),
-            None => String::new(),
-        };
-        output::eprint(&format!(
-            "ladder: warning: replacing the files of {}, which {} says were made from a \
-             different scene{what}; give --name (or the scene's name) to keep both\n",
-            s.stem(),
-            data.display()
-        ))?;
-    }
-    Ok(())
-}
-
-/// A recorded scene without its words (label, title, caption): a scene
-/// whose caption was edited is still the same scene.
-fn without_words(scene: &serde_json::Value) -> serde_json::Value {
-    let mut v = scene.clone();
-    if let Some(map) = v.as_object_mut() {
-        for key in ["label", "title", "caption"] {
-            map.remove(key);
-        }
-    }
-    v
-}
-
-/// "1 file", "3 files".
-fn count(n: usize, one: &str, many: &str) -> String {
-    format!("{n} {}", if n == 1 { one } else { many })
-}
-
-/// What a render wrote, in words: the files by name for one scene
-/// ("wrote figure-3.png and figure-3.json (figure 3)"), else the count of
-/// each kind ("wrote 13 figures and 9 movies, each with its data file, and
-/// index.html (54 files)").
-fn summary(scenes: &[Scene], files: &[String], index: bool) -> String {
-    let and_list = |items: &[String]| match items {
-        [] => String::new(),
-        [one] => one.clone(),
-        [init @ .., last] => format!("{} and {last}", init.join(", ")),
-    };
-    if let [one] = scenes {
-        return format!(
-            "wrote {} ({} {})",
-            and_list(files),
-            one.kind().name(),
-            one.name
-        );
-    }
-    let mut parts = Vec::new();
-    for (kind, one, many) in [
-        (Kind::Figure, "figure", "figures"),
-        (Kind::Movie, "movie", "movies"),
-        (Kind::Data, "data run", "data runs"),
-    ] {
-        let n = scenes.iter().filter(|s| s.kind() == kind).count();
-        if n > 0 {
-            parts.push(count(n, one, many));
-        }
-    }
-    let page = if index { ", and index.html" } else { "" };
-    format!(
-        "wrote {}, each with its data file{page} ({})",
-        and_list(&parts),
-        count(files.len(), "file", "files")
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_summary_names_what_was_written() {
-        let fig = catalog::find(Kind::Figure, "3").unwrap().scene.clone();
-        let movie = catalog::find(Kind::Movie, "4").unwrap().scene.clone();
-        let names = |s: &Scene| scenes::file_names(s);
-        assert_eq!(
-            summary(std::slice::from_ref(&fig), &names(&fig), false),
-            "wrote figure-3.png and figure-3.json (figure 3)"
-        );
-        assert_eq!(
-            summary(std::slice::from_ref(&movie), &names(&movie), false),
-            "wrote movie-4.gif, movie-4-kymograph.png and movie-4.json (movie 4)"
-        );
-        let both = [fig.clone(), movie.clone()];
-        let mut files = [names(&fig), names(&movie)].concat();
-        files.push("index.html".into());
-        assert_eq!(
-            summary(&both, &files, true),
-            "wrote 1 figure and 1 movie, each with its data file, and index.html (6 files)"
-        );
-        assert_eq!(count(1, "file", "files"), "1 file");
-        assert_eq!(count(0, "file", "files"), "0 files");
-    }
 
     #[test]
     fn short_numbers_round_down_to_two_digits() {

@@ -1,0 +1,276 @@
+//! Rendering scenes into a folder, as `ladder figure|movie|render|all`
+//! and Python's `Scene.save` both do: every target checked before any
+//! work, each file written atomically as soon as it is drawn (the data
+//! file streamed into place), the scenes in parallel, the gallery page
+//! last.
+
+use crate::error::{Error, Result};
+use crate::output;
+use crate::scene::{self, Kind, Scene};
+use crate::scenes::{self, MovieOptions, Outputs};
+use std::path::{Path, PathBuf};
+
+/// What a front end is told while a folder is rendered.
+pub struct Progress<'a> {
+    /// After each frame of a movie.
+    pub frame: &'a (dyn Fn() + Sync),
+    /// After each scene, its files written.
+    pub scene: &'a (dyn Fn(&Scene) + Sync),
+    /// A failed scene's error, worded for the front end (a divergence's
+    /// hint names flags or scene-file keys).
+    pub hint: &'a (dyn Fn(Error, &Scene) -> Error + Sync),
+}
+
+impl Progress<'_> {
+    /// Nothing shown; errors as they are.
+    pub fn quiet() -> Progress<'static> {
+        Progress {
+            frame: &|| {},
+            scene: &|_| {},
+            hint: &|e, _| e,
+        }
+    }
+}
+
+/// Renders `scenes` into the folder `out`, in parallel (rayon), each file
+/// written atomically as soon as it is ready; with `index`, a PNG of every
+/// figure and `out/index.html` (the gallery) too. Every target, every
+/// scene's checks and costs come before any rendering. Returns the names
+/// of the files written, in order, the gallery page last.
+pub fn into_folder(
+    scenes: &[Scene],
+    out: &Path,
+    movie: &MovieOptions,
+    outputs: &Outputs,
+    index: bool,
+    progress: &Progress<'_>,
+) -> Result<Vec<String>> {
+    use rayon::prelude::*;
+    // The gallery shows a PNG of every figure: one is made if none is asked.
+    let outputs = &Outputs {
+        preview: index,
+        ..outputs.clone()
+    };
+    check_out_dir(out)?;
+    // Every target, index.html included, before anything is rendered.
+    let names: Vec<String> = scenes.iter().map(|s| format!("scene {}", s.name)).collect();
+    check_distinct_outputs(scenes, &names, out, outputs)?;
+    let mut targets: Vec<PathBuf> = scenes
+        .iter()
+        .flat_map(|s| scenes::file_names_for(s, outputs))
+        .map(|name| out.join(name))
+        .collect();
+    if index {
+        targets.push(out.join("index.html"));
+    }
+    output::check_targets(&targets)?;
+    // Every scene's checks and costs before any is rendered.
+    for s in scenes {
+        scenes::check(s, movie, outputs).map_err(|e| (progress.hint)(e, s))?;
+    }
+    warn_replaced(scenes, out)?;
+    let written: Vec<Vec<String>> = scenes
+        .par_iter()
+        .map(|s| {
+            // Each file written as soon as it is drawn, the data file
+            // streamed into place.
+            let mut files: Vec<String> = Vec::new();
+            scenes::render_to(s, movie, outputs, progress.frame, &mut |name, fill| {
+                output::write_atomic_with(&out.join(name), |f| fill(f))?;
+                files.push(name.to_string());
+                Ok(())
+            })
+            .map_err(|e| (progress.hint)(e, s))?;
+            (progress.scene)(s);
+            Ok(files)
+        })
+        .collect::<Result<_>>()?;
+    let mut files: Vec<String> = written.iter().flatten().cloned().collect();
+    if index {
+        let items: Vec<crate::gallery::Item<'_>> = scenes
+            .iter()
+            .zip(&written)
+            .map(|(scene, files)| crate::gallery::Item {
+                scene,
+                files: files.clone(),
+            })
+            .collect();
+        let page = crate::gallery::index_html(&items)?;
+        output::write_atomic(&out.join("index.html"), page.as_bytes())?;
+        files.push("index.html".into());
+    }
+    Ok(files)
+}
+
+/// Refuses two scenes of one command that would write one file (the same
+/// scene file twice, or two files with one `name`); `sources` say where
+/// each scene comes from.
+pub fn check_distinct_outputs(
+    scenes: &[Scene],
+    sources: &[String],
+    out: &Path,
+    outputs: &Outputs,
+) -> Result<()> {
+    let targets: Vec<(PathBuf, String)> = scenes
+        .iter()
+        .zip(sources)
+        .flat_map(|(s, src)| {
+            scenes::file_names_for(s, outputs)
+                .into_iter()
+                .map(move |name| (out.join(name), src.clone()))
+        })
+        .collect();
+    output::check_distinct(&targets)
+}
+
+
+/// File extensions that make `--out` look like a file name.
+const FILE_EXTENSIONS: [&str; 8] = ["png", "svg", "pdf", "gif", "mp4", "json", "html", "toml"];
+
+/// `--out` names a folder: refuse an existing file, and a path that does
+/// not exist yet but ends like a file name (`--out x.svg`).
+pub fn check_out_dir(out: &Path) -> Result<()> {
+    let shown = out.display();
+    if out.exists() && !out.is_dir() {
+        return Err(Error::bad_input(format!(
+            "--out is a folder, and {shown} is a file; give a folder (the files are named after the scene, e.g. figure-3.png)"
+        )));
+    }
+    let ext = out
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    if let Some(ext) = ext.filter(|e| FILE_EXTENSIONS.contains(&e.as_str()))
+        && !out.exists()
+    {
+        return Err(Error::bad_input(format!(
+            "--out is a folder, not a file name: got {shown}; use --out DIR (the files are \
+             named after the scene) and --format {ext}"
+        )));
+    }
+    Ok(())
+}
+
+/// Says so, one line a scene, where a scene's files replace those of a
+/// different scene: its data file in `out` (`<stem>.json`) records the
+/// scene that made them. The same scene again replaces them silently.
+pub fn warn_replaced(scenes: &[Scene], out: &Path) -> Result<()> {
+    for s in scenes {
+        let data = out.join(format!("{}.json", s.stem()));
+        let Ok(text) = std::fs::read_to_string(&data) else {
+            continue;
+        };
+        let old = serde_json::from_str::<serde_json::Value>(&text)
+            .ok()
+            .and_then(|mut v| v.get_mut("scene").map(serde_json::Value::take));
+        let new = serde_json::to_value(s).ok();
+        if old.is_some() && old.as_ref().map(without_words) == new.as_ref().map(without_words) {
+            continue;
+        }
+        let what = match old.and_then(|v| serde_json::from_value::<Scene>(v).ok()) {
+            Some(o) => format!(" ({})", scene::describe::parameters(&o)),
+            None => String::new(),
+        };
+        output::eprint(&format!(
+            "ladder: warning: replacing the files of {}, which {} says were made from a \
+             different scene{what}; give --name (or the scene's name) to keep both\n",
+            s.stem(),
+            data.display()
+        ))?;
+    }
+    Ok(())
+}
+
+/// A recorded scene without its words (label, title, caption): a scene
+/// whose caption was edited is still the same scene.
+fn without_words(scene: &serde_json::Value) -> serde_json::Value {
+    let mut v = scene.clone();
+    if let Some(map) = v.as_object_mut() {
+        for key in ["label", "title", "caption"] {
+            map.remove(key);
+        }
+    }
+    v
+}
+
+/// "1 file", "3 files".
+fn count(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
+/// What a render wrote, in words: the files by name for one scene
+/// ("wrote figure-3.png and figure-3.json (figure 3)"), else the count of
+/// each kind ("wrote 13 figures and 9 movies, each with its data file, and
+/// index.html (54 files)").
+pub fn summary(scenes: &[Scene], files: &[String], index: bool) -> String {
+    let and_list = |items: &[String]| match items {
+        [] => String::new(),
+        [one] => one.clone(),
+        [init @ .., last] => format!("{} and {last}", init.join(", ")),
+    };
+    if let [one] = scenes {
+        return format!(
+            "wrote {} ({} {})",
+            and_list(files),
+            one.kind().name(),
+            one.name
+        );
+    }
+    let mut parts = Vec::new();
+    for (kind, one, many) in [
+        (Kind::Figure, "figure", "figures"),
+        (Kind::Movie, "movie", "movies"),
+        (Kind::Data, "data run", "data runs"),
+    ] {
+        let n = scenes.iter().filter(|s| s.kind() == kind).count();
+        if n > 0 {
+            parts.push(count(n, one, many));
+        }
+    }
+    let page = if index { ", and index.html" } else { "" };
+    format!(
+        "wrote {}, each with its data file{page} ({})",
+        and_list(&parts),
+        count(files.len(), "file", "files")
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn out_must_be_a_folder() {
+        assert!(check_out_dir(Path::new("some/new/dir")).is_ok());
+        let e = check_out_dir(Path::new("x.svg")).unwrap_err().to_string();
+        assert!(e.starts_with("--out is a folder"), "{e}");
+        assert!(e.contains("--format svg"), "{e}");
+        let e = check_out_dir(Path::new("Cargo.toml"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("is a file"), "{e}");
+    }
+
+    #[test]
+    fn the_summary_names_what_was_written() {
+        let fig = crate::catalog::find(Kind::Figure, "3").unwrap().scene.clone();
+        let movie = crate::catalog::find(Kind::Movie, "4").unwrap().scene.clone();
+        let names = |s: &Scene| scenes::file_names(s);
+        assert_eq!(
+            summary(std::slice::from_ref(&fig), &names(&fig), false),
+            "wrote figure-3.png and figure-3.json (figure 3)"
+        );
+        assert_eq!(
+            summary(std::slice::from_ref(&movie), &names(&movie), false),
+            "wrote movie-4.gif, movie-4-kymograph.png and movie-4.json (movie 4)"
+        );
+        let both = [fig.clone(), movie.clone()];
+        let mut files = [names(&fig), names(&movie)].concat();
+        files.push("index.html".into());
+        assert_eq!(
+            summary(&both, &files, true),
+            "wrote 1 figure and 1 movie, each with its data file, and index.html (6 files)"
+        );
+        assert_eq!(count(1, "file", "files"), "1 file");
+        assert_eq!(count(0, "file", "files"), "0 files");
+    }
+}
