@@ -8,8 +8,8 @@
 use crate::error::{Error, Result};
 use crate::model::Params;
 use crate::scene::Scene;
-use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Trajectory};
 pub use crate::sim::step_bounds::{damping_rate, predicted_dt, stability_function};
+use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Trajectory};
 use serde::{Deserialize, Serialize};
 use std::time::Instant;
 

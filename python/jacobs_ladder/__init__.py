@@ -283,17 +283,9 @@ def catalogue() -> List[Tuple[str, str, str]]:
 
 # --------------------------------------------------------------- scenes
 
-_MOVIE_DEFAULTS = dict(frames=200, size=(640, 480), fps=25.0)
-
-
-def _size(size: Union[str, Tuple[int, int], None]) -> Tuple[int, int]:
-    if size is None:
-        return _MOVIE_DEFAULTS["size"]
-    if isinstance(size, str):
-        w, sep, h = size.lower().partition("x")
-        if not sep:
-            raise ValueError(f"size: expected WxH such as 640x480, got '{size}'")
-        return int(w), int(h)
+# The render options' defaults (frames, size, fps, scale, formats) are the
+# library's (jacobs_ladder::front::options::RenderOptions): a keyword left
+# at None is not sent.
     w, h = size
     return int(w), int(h)
 
@@ -391,10 +383,10 @@ class Scene:
     def _args(self, format, frames, size, fps, scale):
         return dict(
             formats=_format(format),
-            frames=int(_MOVIE_DEFAULTS["frames"] if frames is None else frames),
-            size=_size(size),
-            fps=float(_MOVIE_DEFAULTS["fps"] if fps is None else fps),
-            scale=float(1.0 if scale is None else scale),
+            frames=frames,
+            size=size,
+            fps=fps,
+            scale=scale,
         )
 
     def render(

@@ -13,7 +13,6 @@
 //! Errors are `ValueError`s naming the key path, as a scene file's do
 //! (`model.alpha: must be degrees with 0 < |alpha| < 90, got 120`).
 
-use jacobs_ladder::cli::DriveArgs;
 use jacobs_ladder::scene::Scene;
 use jacobs_ladder::{Error, Result};
 use serde_json::{Map, Value};
@@ -30,8 +29,12 @@ pub fn apply(scene: &Scene, kwargs: &str) -> Result<Scene> {
     let kwargs: Map<String, Value> = serde_json::from_str(kwargs)
         .map_err(|e| Error::bad_input(format!("keywords must be plain values: {e}")))?;
     let mut scene = scene.clone();
-    let drive = drive_args(&kwargs)?;
-    drive.apply(&mut scene);
+    let (drive_time, flips, second_flip) = drive_args(&kwargs)?;
+    if drive_time.is_some() || flips.is_some() || second_flip.is_some() {
+        scene.drive = scene
+            .drive
+            .reshaped(drive_time, flips.as_deref(), second_flip);
+    }
     let mut value = serde_json::to_value(&scene)
         .map_err(|e| Error::failed(format!("cannot encode the scene: {e}")))?;
     for (key, v) in kwargs {
@@ -70,8 +73,11 @@ pub fn checked(scene: Scene) -> Result<Scene> {
     Ok(scene)
 }
 
-/// The drive keywords, typed as the flags are.
-fn drive_args(kwargs: &Map<String, Value>) -> Result<DriveArgs> {
+/// The drive keywords (`drive_time`, `flips`, `second_flip`), typed as
+/// the flags are.
+type DriveKeywords = (Option<f64>, Option<Vec<f64>>, Option<f64>);
+
+fn drive_args(kwargs: &Map<String, Value>) -> Result<DriveKeywords> {
     fn get<T: serde::de::DeserializeOwned>(
         kwargs: &Map<String, Value>,
         key: &str,
@@ -84,12 +90,12 @@ fn drive_args(kwargs: &Map<String, Value>) -> Result<DriveArgs> {
                 .map_err(|_| Error::bad_input(format!("{key}: must be {what}, got {v}"))),
         }
     }
-    let args = DriveArgs {
-        drive_time: get(kwargs, "drive_time", "a time in τ")?,
-        flips: get(kwargs, "flips", "a list of start times in τ")?,
-        second_flip: get(kwargs, "second_flip", "a time in τ")?,
-    };
-    if args.flips.is_some() && args.second_flip.is_some() {
+    let args: DriveKeywords = (
+        get(kwargs, "drive_time", "a time in τ")?,
+        get(kwargs, "flips", "a list of start times in τ")?,
+        get(kwargs, "second_flip", "a time in τ")?,
+    );
+    if args.1.is_some() && args.2.is_some() {
         return Err(Error::bad_input(
             "flips and second_flip: give one (second_flip=T is flips=[0, T])",
         ));

@@ -6,9 +6,9 @@ use crate::arrays;
 use crate::errors::IntoPy;
 use crate::kwargs;
 use crate::work;
-use jacobs_ladder::cli::{MixedFormat, MovieFormat};
+use jacobs_ladder::front::{self, options::RenderOptions};
 use jacobs_ladder::scene::{Kind, Scene};
-use jacobs_ladder::{Error, Result, catalog, output, scene, scenes};
+use jacobs_ladder::{Error, Result, catalog, scene, scenes};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::path::PathBuf;
@@ -19,40 +19,52 @@ pub struct PyScene {
     pub scene: Scene,
 }
 
-/// The render options of the command line (`--format`, `--frames`,
-/// `--size`, `--fps`, `--scale`), checked by its own code.
+/// The render options (`format`, `frames`, `size`, `fps`, `scale`): each
+/// left out (None) keeps the library's default
+/// ([`front::options::RenderOptions`]), and each is checked by the
+/// library's own code, as the command line's flags are.
 #[derive(FromPyObject)]
 #[pyo3(from_item_all)]
 pub struct RenderArgs {
     formats: Option<String>,
-    frames: usize,
-    size: (u32, u32),
-    fps: f64,
-    scale: f32,
+    frames: Option<usize>,
+    size: Option<SizeArg>,
+    fps: Option<f64>,
+    scale: Option<f32>,
+}
+
+/// A frame size: `"640x480"` or `(640, 480)`.
+#[derive(FromPyObject)]
+enum SizeArg {
+    Text(String),
+    Pair((u32, u32)),
 }
 
 impl RenderArgs {
     fn outputs(&self, scene: &Scene) -> Result<(scenes::MovieOptions, scenes::Outputs)> {
-        let movie = MovieFormat {
-            frames: self.frames,
-            size: self.size,
-            fps: self.fps,
-            // The command line's default (`--quality high`).
-            quality: jacobs_ladder::cli::QualityArg::High,
+        let defaults = RenderOptions::default();
+        let size = match &self.size {
+            None => defaults.size,
+            Some(SizeArg::Pair(pair)) => *pair,
+            Some(SizeArg::Text(text)) => front::options::parse_size(text)
+                .map_err(|e| Error::bad_input(format!("size: {e}")))?,
         };
-        let opts = movie.options()?;
-        let mixed = MixedFormat {
-            formats: self.formats.clone().unwrap_or_else(|| "png,gif".into()),
-            scale: self.scale,
-            // No style flags: a scene's own `[style]` table (the `style`
-            // keyword of `render`) sets its look.
-            style: Default::default(),
+        // No style flags: a scene's own `[style]` table (the `style`
+        // keyword of `render`) sets its look.
+        let options = RenderOptions {
+            formats: self.formats.clone().unwrap_or(defaults.formats),
+            frames: self.frames.unwrap_or(defaults.frames),
+            size,
+            fps: self.fps.unwrap_or(defaults.fps),
+            scale: self.scale.unwrap_or(defaults.scale),
+            ..defaults
         };
-        let outputs = mixed.outputs(&opts)?;
+        let movie = options.movie()?;
+        let outputs = options.outputs(&movie)?;
         if self.formats.is_some() {
-            mixed.check_covers(std::slice::from_ref(scene))?;
+            front::options::check_covers(&options.formats, std::slice::from_ref(scene))?;
         }
-        Ok((opts, outputs))
+        Ok((movie, outputs))
     }
 }
 
@@ -189,20 +201,16 @@ impl PyScene {
         let scene = self.scene.clone();
         work::run(py, move |_| {
             let (opts, outputs) = args.outputs(&scene)?;
-            jacobs_ladder::cli::convert::check_out_dir(&dir)?;
-            let targets: Vec<PathBuf> = scenes::file_names_for(&scene, &outputs)
-                .iter()
-                .map(|n| dir.join(n))
-                .collect();
-            output::check_targets(&targets)?;
-            let files = scenes::render_with(&scene, &opts, &outputs, &|| {})?;
-            let mut written = Vec::with_capacity(files.len());
-            for (name, bytes) in &files {
-                let path = dir.join(name);
-                output::write_atomic(&path, bytes)?;
-                written.push(path);
-            }
-            Ok(written)
+            let progress = front::render::Progress::quiet();
+            let files = front::render::into_folder(
+                std::slice::from_ref(&scene),
+                &dir,
+                &opts,
+                &outputs,
+                false,
+                &progress,
+            )?;
+            Ok(files.iter().map(|name| dir.join(name)).collect())
         })
     }
 }

@@ -12,7 +12,7 @@ use crate::front;
 use crate::render::page_style::parse_length;
 use crate::render::{FontChoice, Length, StyleName, StyleSpec, TextMode};
 use crate::scene::sweep::{Param, SweepSpec, Values};
-use crate::scene::{Camera, DriveSpec, Method, OutputSpec, Scene, describe};
+use crate::scene::{Camera, Method, OutputSpec, Scene, describe};
 use crate::scenes::{MovieOptions, Outputs};
 use crate::sim;
 
@@ -48,22 +48,14 @@ impl DriveArgs {
         self.drive_time.is_some() || self.flips.is_some() || self.second_flip.is_some()
     }
 
-    /// The drive flags onto `scene`'s drive (also the Python keywords
-    /// `drive_time`, `flips`, `second_flip`).
+    /// The drive flags onto `scene`'s drive ([`DriveSpec::reshaped`]).
     pub fn apply(&self, scene: &mut Scene) {
-        if !self.any() {
-            return;
+        if self.any() {
+            scene.drive =
+                scene
+                    .drive
+                    .reshaped(self.drive_time, self.flips.as_deref(), self.second_flip);
         }
-        let duration = self
-            .drive_time
-            .or_else(|| scene.drive.flips.first().map(|f| f.duration))
-            .unwrap_or(sim::PAPER_DRIVE_TIME);
-        let starts: Vec<f64> = match (&self.flips, self.second_flip) {
-            (Some(f), _) => f.clone(),
-            (None, Some(t)) => vec![0.0, t],
-            (None, None) => scene.drive.flips.iter().map(|f| f.start).collect(),
-        };
-        scene.drive = DriveSpec::flips_at(&starts, duration);
     }
 }
 

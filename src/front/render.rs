@@ -123,7 +123,6 @@ pub fn check_distinct_outputs(
     output::check_distinct(&targets)
 }
 
-
 /// File extensions that make `--out` look like a file name.
 const FILE_EXTENSIONS: [&str; 8] = ["png", "svg", "pdf", "gif", "mp4", "json", "html", "toml"];
 
@@ -252,8 +251,14 @@ mod tests {
 
     #[test]
     fn the_summary_names_what_was_written() {
-        let fig = crate::catalog::find(Kind::Figure, "3").unwrap().scene.clone();
-        let movie = crate::catalog::find(Kind::Movie, "4").unwrap().scene.clone();
+        let fig = crate::catalog::find(Kind::Figure, "3")
+            .unwrap()
+            .scene
+            .clone();
+        let movie = crate::catalog::find(Kind::Movie, "4")
+            .unwrap()
+            .scene
+            .clone();
         let names = |s: &Scene| scenes::file_names(s);
         assert_eq!(
             summary(std::slice::from_ref(&fig), &names(&fig), false),

@@ -3,8 +3,8 @@
 //! the file loader to locate.
 
 use super::{AUTO_T_END, Fidelity, MAX_FLIPS, MAX_PANELS, MAX_TIMES, Method, Panel, TheoryFigure};
-use crate::sim::IntegratorKind;
 use super::{Model, OutputSpec, Scene, TheorySpec};
+use crate::sim::IntegratorKind;
 
 impl Scene {
     /// Checks every field; `Err((key path, message))` names the first bad

@@ -51,6 +51,28 @@ impl Flip {
 }
 
 impl DriveSpec {
+    /// The drive with the shortcuts of the command line and of Python's
+    /// keywords applied: `drive_time` (the duration of every flip; default
+    /// the first flip's, or the paper's T_d), `flips` (the start of each
+    /// flip) or `second_flip` (flips at 0 and there). Starts left out keep
+    /// this drive's.
+    pub fn reshaped(
+        &self,
+        drive_time: Option<f64>,
+        flips: Option<&[f64]>,
+        second_flip: Option<f64>,
+    ) -> DriveSpec {
+        let duration = drive_time
+            .or_else(|| self.flips.first().map(|f| f.duration))
+            .unwrap_or(crate::sim::PAPER_DRIVE_TIME);
+        let starts: Vec<f64> = match (flips, second_flip) {
+            (Some(f), _) => f.to_vec(),
+            (None, Some(t)) => vec![0.0, t],
+            (None, None) => self.flips.iter().map(|f| f.start).collect(),
+        };
+        DriveSpec::flips_at(&starts, duration)
+    }
+
     /// Flips at `start_k`, each over `duration`.
     pub fn flips_at(starts: &[f64], duration: f64) -> Self {
         Self {

@@ -79,7 +79,6 @@ impl Default for Scene {
     }
 }
 
-
 /// How much model an output needs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]

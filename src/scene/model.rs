@@ -2,8 +2,8 @@
 //! patch of them.
 
 use crate::error::Result;
-use crate::sim::Start;
 use crate::model::Params;
+use crate::sim::Start;
 use serde::{Deserialize, Serialize};
 
 /// The model's parameters (SPEC section 1, `[model]` in a scene file).
@@ -101,7 +101,6 @@ impl ModelPatch {
         }
     }
 }
-
 
 /// Whether a panel leaves the model as it is (its patch is empty).
 pub(crate) fn is_default_patch(p: &ModelPatch) -> bool {

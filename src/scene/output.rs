@@ -1,8 +1,8 @@
 //! `[output]`: what a scene renders, its panels, its camera, and the
 //! figures of the linear theory.
 
-use super::{Fidelity, sweep};
 use super::model::{ModelPatch, is_default_patch};
+use super::{Fidelity, sweep};
 use serde::{Deserialize, Serialize};
 
 /// What a scene renders (`[output]`; `kind` picks the variant).

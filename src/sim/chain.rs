@@ -11,10 +11,10 @@
 mod kernel;
 
 use super::fused::MAX_BLOCKS;
-use super::stepping::{Batch, Isa, Stepping};
 use super::observables::ArrivalDetector;
 use super::protocol::{Drive, Piece};
 use super::rhs::{Rhs, State};
+use super::stepping::{Batch, Isa, Stepping};
 use crate::model::params::M;
 
 /// The chain stepper of one run: its instruction set and its arrays.

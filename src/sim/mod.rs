@@ -12,17 +12,17 @@ pub mod observables;
 pub mod protocol;
 pub mod relax;
 pub mod rhs;
+mod simd;
 pub mod step_bounds;
 pub mod stepping;
-mod simd;
 pub mod waves;
 pub mod window;
 
-pub use stepping::{Isa, Stepping};
 pub use integrators::{IntegratorConfig, IntegratorKind};
 pub use protocol::{Drive, Piece, Protocol};
 pub use relax::Start;
 pub use rhs::{Rhs, State};
+pub use stepping::{Isa, Stepping};
 
 use crate::error::{Error, Result, num};
 use crate::limits::{Limits, Resource};

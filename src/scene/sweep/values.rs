@@ -2,10 +2,10 @@
 //! them: ranges `"start:stop:step"` (inclusive, rounded to the decimals
 //! written) and single numbers, in any mix.
 
+use super::Param;
 use serde::de::{self, SeqAccess, Visitor};
 use serde::ser::SerializeSeq;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
-use super::Param;
 use std::fmt;
 
 /// Largest number of values of one axis (the run cap bounds the product).
