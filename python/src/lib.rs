@@ -76,35 +76,28 @@ fn sweep(
         }
     }
     let scene = kwargs::checked(scene).py_err()?;
-    work::run(py, move |_| sweep_tables(&scene, max_runs))
+    work::run(py, move |stop| sweep_tables(&scene, max_runs, stop))
 }
 
-fn sweep_tables(scene: &Scene, max_runs: usize) -> Result<(String, String)> {
-    use jacobs_ladder::sweep::{Plan, json, results};
-    let plan = Plan::new(scene, max_runs)?.map_err(|e| {
-        Error::bad_input(format!(
-            "{e}; ask for fewer, or raise the cap with max_runs={}",
-            e.runs
-        ))
-    })?;
+fn sweep_tables(scene: &Scene, max_runs: usize, stop: &work::Stop) -> Result<(String, String)> {
+    use jacobs_ladder::front;
+    let plan = front::sweep::plan(scene, max_runs, &|runs| format!("max_runs={runs}"))?;
     // The files' bytes, estimated before any run (docs/limits.md).
-    json::check_estimate(&plan, &jacobs_ladder::limits::Limits::active())?;
+    jacobs_ladder::sweep::json::check_estimate(&plan, &jacobs_ladder::limits::Limits::active())?;
     let all: Vec<usize> = (0..plan.len()).collect();
-    let records = plan.run(&all, &|| {})?;
-    let stem = format!("sweep-{}", plan.scene.name);
-    let names = [format!("{stem}.csv"), format!("{stem}.json")];
+    let mut records = Vec::new();
+    // Ctrl-C is noticed after each run (the runs unwind) and between chunks.
+    let tick = || stop.check(0.0);
+    front::sweep::run_in_chunks(&plan, &all, &mut records, &tick, &mut |_| {
+        stop.check(0.0);
+        Ok(())
+    })?;
     // What made it: the Python process's own command line.
     let argv: Vec<String> = std::env::args_os()
         .map(|a| a.to_string_lossy().into_owned())
         .collect();
     // Python takes the JSON as one string: here it is held whole.
-    let mut bytes = Vec::new();
-    json::write(&mut bytes, &plan, &records, &names, &argv)
-        .map_err(|e| Error::failed(format!("cannot encode the sweep's data file: {e}")))?;
-    Ok((
-        results::csv(&plan, &records),
-        String::from_utf8_lossy(&bytes).into_owned(),
-    ))
+    front::sweep::tables(&plan, &records, &argv)
 }
 
 /// The built-in scenes: (ID, kind, title) in catalogue order.

@@ -5,11 +5,12 @@
 use super::args::{SweepArgs, SweepCommand};
 use super::convert;
 use crate::error::{Error, Result};
+use crate::front;
 use crate::scenes::Outputs;
 use crate::sweep::shard::{self, Earlier, Shard};
 use crate::sweep::{Plan, Record};
 use std::path::Path;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 pub fn sweep(args: &SweepArgs, command_line: &[String]) -> Result<()> {
     let recorded = |outputs: Outputs| Outputs {
@@ -24,12 +25,7 @@ pub fn sweep(args: &SweepArgs, command_line: &[String]) -> Result<()> {
     }
     let outputs = recorded(args.figure_format.outputs()?);
     let scene = convert::sweep_scene(args)?;
-    let plan = Plan::new(&scene, args.max_runs)?.map_err(|e| {
-        Error::bad_input(format!(
-            "{e}; ask for fewer, or raise the cap with --max-runs {}",
-            e.runs
-        ))
-    })?;
+    let plan = front::sweep::plan(&scene, args.max_runs, &|runs| format!("--max-runs {runs}"))?;
     let shard = match &args.shard {
         Some(s) => Shard::parse(s).map_err(|m| Error::bad_input(format!("--shard: {m}")))?,
         None => Shard::WHOLE,
@@ -40,7 +36,11 @@ pub fn sweep(args: &SweepArgs, command_line: &[String]) -> Result<()> {
     // results.
     let mut targets = vec![sdir.join(shard.file_name(&plan.scene.name))];
     if args.shard.is_none() {
-        targets.extend(result_names(&plan, &outputs).iter().map(|n| out.join(n)));
+        targets.extend(
+            front::sweep::result_names(&plan, &outputs)
+                .iter()
+                .map(|n| out.join(n)),
+        );
     }
     let fresh = !sdir.exists();
     let result = check_and_run(args, &plan, shard, &targets, &outputs);
@@ -49,26 +49,6 @@ pub fn sweep(args: &SweepArgs, command_line: &[String]) -> Result<()> {
         let _ = std::fs::remove_dir(&sdir);
     }
     result
-}
-
-/// The names of a sweep's result files (`crate::sweep::outputs`): the
-/// chart in each format when one or two parameters vary, the CSV, the
-/// JSON.
-fn result_names(plan: &Plan, outputs: &Outputs) -> Vec<String> {
-    let stem = format!("sweep-{}", plan.scene.name);
-    let mut names: Vec<String> = if plan.varied().len() <= 2 {
-        outputs
-            .figures
-            .as_slice()
-            .iter()
-            .map(|f| format!("{stem}.{}", f.extension()))
-            .collect()
-    } else {
-        Vec::new()
-    };
-    names.push(format!("{stem}.csv"));
-    names.push(format!("{stem}.json"));
-    names
 }
 
 fn check_and_run(
@@ -131,8 +111,9 @@ fn check_and_run(
     write_outputs(plan, &done, out, outputs, start)
 }
 
-/// Runs `todo` in chunks, rewriting the shard file after each (so that a
-/// killed run loses at most one chunk), with a progress bar.
+/// Runs `todo` in chunks ([`front::sweep::run_in_chunks`]), rewriting
+/// the shard file after each (so that a killed run loses at most one
+/// chunk), with a progress bar.
 fn run_in_chunks(
     plan: &Plan,
     shard: Shard,
@@ -141,32 +122,14 @@ fn run_in_chunks(
     done: &mut Vec<Record>,
 ) -> Result<()> {
     let bar = super::progress_bar(todo.len() as u64, "sweep");
-    let threads = rayon::current_num_threads().max(1);
-    // Runs go through the batch kernel a chunk at a time (one run per SIMD
-    // lane): start with enough to fill every core's lanes several times.
-    let mut chunk = (64 * threads).max(128);
-    let mut at = 0;
-    while at < todo.len() {
-        let end = (at + chunk).min(todo.len());
-        let t0 = Instant::now();
-        let records = plan.run(&todo[at..end], &|| bar.inc(1))?;
-        done.extend(records);
-        done.sort_by_key(|r| r.run);
-        at = end;
-        if at < todo.len() {
-            shard::write_records(out, plan, shard, done)?;
-            // Chunks of a few seconds: frequent checkpoints, few rewrites.
-            if t0.elapsed() < Duration::from_secs(2) {
-                chunk = (2 * chunk).min(4096);
-            }
-        }
-    }
+    let result = front::sweep::run_in_chunks(plan, todo, done, &|| bar.inc(1), &mut |done| {
+        shard::write_records(out, plan, shard, done).map(drop)
+    });
     bar.finish_and_clear();
-    Ok(())
+    result
 }
 
-/// `sweep-NAME.png` (or .svg, .pdf: one or two varied parameters), `.csv`,
-/// `.json`.
+/// The result files of a whole sweep, and what they say.
 fn write_outputs(
     plan: &Plan,
     records: &[Record],
@@ -174,18 +137,7 @@ fn write_outputs(
     outputs: &Outputs,
     start: Instant,
 ) -> Result<()> {
-    let stem = format!("sweep-{}", plan.scene.name);
-    let options = crate::sweep::OutputOptions {
-        formats: &outputs.figures,
-        scale: outputs.scale,
-        command_line: &outputs.command_line,
-        rename: &|name| name,
-    };
-    let names = crate::scenes::style_of(&plan.scene, outputs)?.apply(|| {
-        crate::sweep::write_outputs(plan, records, &stem, &options, &mut |name, fill| {
-            crate::output::write_atomic_with(&out.join(name), |f| fill(f))
-        })
-    })?;
+    let names = front::sweep::write_outputs(plan, records, out, outputs)?;
     let counts: Vec<String> = crate::sweep::results::counts(records)
         .iter()
         .map(|(o, c)| format!("{c} {o}"))
