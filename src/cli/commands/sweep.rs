@@ -2,8 +2,8 @@
 //! resume; `ladder sweep gather DIR` merges the shards. Everything the
 //! user typed is validated before anything is written.
 
-use super::args::{SweepArgs, SweepCommand};
-use super::convert;
+use crate::cli::args::{SweepArgs, SweepCommand};
+use crate::cli::convert;
 use crate::error::{Error, Result};
 use crate::front;
 use crate::scenes::Outputs;
@@ -121,7 +121,7 @@ fn run_in_chunks(
     todo: &[usize],
     done: &mut Vec<Record>,
 ) -> Result<()> {
-    let bar = super::progress_bar(todo.len() as u64, "sweep");
+    let bar = crate::cli::progress::progress_bar(todo.len() as u64, "sweep");
     let result = front::sweep::run_in_chunks(plan, todo, done, &|| bar.inc(1), &mut |done| {
         shard::write_records(out, plan, shard, done).map(drop)
     });

@@ -1,0 +1,190 @@
+//! `ladder simulate`: one run from the flags, its table or JSON, and its
+//! CSV and NPZ.
+
+use crate::cli::convert;
+use crate::cli::hints::{Words, with_divergence_hint};
+use crate::cli::progress::time_bar;
+use crate::cli::*;
+use crate::error::{Error, Result};
+use crate::limits::Limits;
+use crate::output;
+use crate::scene::{self, Scene};
+use crate::scenes;
+use crate::sim;
+use serde::Serialize;
+use std::time::Instant;
+
+/// `simulate --json` (SPEC section 5), with what reruns it (issue 19):
+/// the program, its build, the command line and the scene.
+#[derive(Serialize, Debug)]
+pub struct SimulateReport<'a> {
+    #[serde(flatten)]
+    pub made_by: scenes::data::MadeBy<'a>,
+    /// The scene run, every value (a data scene: `ladder scene` writes it
+    /// as TOML, `ladder render` reruns it).
+    pub scene: &'a Scene,
+    pub alpha_deg: f64,
+    pub n: usize,
+    pub b: f64,
+    pub a: f64,
+    pub gamma: f64,
+    pub gravity: f64,
+    pub inertia: f64,
+    /// The scheme that made the numbers below.
+    pub integrator: String,
+    /// `auto` when the program chose it.
+    pub requested_integrator: String,
+    pub dt: f64,
+    pub rtol: Option<f64>,
+    /// `auto` only: estimated largest error of the arrival times, in τ.
+    pub arrival_error: Option<f64>,
+    pub t_end: f64,
+    pub drive_time: f64,
+    pub flips: Vec<f64>,
+    pub steps: u64,
+    pub force_evals: u64,
+    pub wall_seconds: f64,
+    /// The first wave's arrival times (per block, the first sign change).
+    pub arrival_times: Vec<Option<f64>>,
+    pub final_theta_deg: Vec<f64>,
+    /// Every wave of the run and block N's fate (SPEC section 9).
+    pub waves: crate::sim::waves::Waves,
+}
+
+pub(crate) fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<()> {
+    let run = RunArgs {
+        t_end: Some(args.t_end),
+        integrator: Some(args.integrator.clone()),
+        dt: args.dt,
+        tol: args.tol.clone(),
+    };
+    let base = Scene {
+        output: scene::OutputSpec::Data,
+        ..Scene::default()
+    };
+    let method = convert::parse_method(&args.integrator)?;
+    if args.dt.is_some() && method == scene::Method::Auto {
+        return Err(Error::bad_input(
+            "--dt: the auto integrator picks its own step; name an integrator to set --dt",
+        ));
+    }
+    let scene = convert::scene_from_flags(base, &args.model, &args.drive, &run)?;
+    let samples = csv_samples(args, scene.model.n)?;
+    let stepping = args.kernel.stepping()?;
+    for path in [&args.csv, &args.npz].into_iter().flatten() {
+        output::check_writable(path)?;
+    }
+    let start = Instant::now();
+    let bar = time_bar(scene.run.t_end);
+    let result = scenes::run::simulate_with(&scene, &samples, stepping, &|t| {
+        bar.set_position(bar.position().max(t as u64));
+    });
+    bar.finish_and_clear();
+    let result = result.map_err(|e| with_divergence_hint(e, &scene, Words::Flags))?;
+    let wall_seconds = start.elapsed().as_secs_f64();
+    let traj = &result.trajectory;
+    if let Some(path) = &args.csv {
+        output::write_atomic_with(path, |f| write_csv(traj, &mut std::io::BufWriter::new(f)))?;
+    }
+    let params = scene.model.params()?;
+    if let Some(path) = &args.npz {
+        let ladder = crate::model::Ladder::new(params);
+        output::write_atomic_with(path, |f| {
+            scenes::data::write_npz(traj, &ladder, std::io::BufWriter::new(f)).map(drop)
+        })?;
+    }
+    let report = SimulateReport {
+        made_by: scenes::data::MadeBy::new(command_line),
+        scene: &scene,
+        alpha_deg: scene.model.alpha,
+        n: params.n,
+        b: params.b,
+        a: params.a(),
+        gamma: params.gamma,
+        gravity: params.gravity,
+        inertia: params.inertia,
+        integrator: result.integrator.name.clone(),
+        requested_integrator: result.integrator.requested.clone(),
+        dt: result.integrator.dt,
+        rtol: result.integrator.rtol,
+        arrival_error: result.integrator.arrival_error,
+        t_end: scene.run.t_end,
+        drive_time: scene.drive.flips.first().map_or(0.0, |f| f.duration),
+        flips: scene.drive.flips.iter().map(|f| f.start).collect(),
+        steps: traj.steps,
+        force_evals: traj.force_evals,
+        wall_seconds,
+        arrival_times: traj.arrival_times.clone(),
+        final_theta_deg: traj.final_theta_deg(),
+        waves: traj.waves.clone(),
+    };
+    if args.json {
+        output::print(&format!("{}\n", to_json(&report)?))
+    } else {
+        output::print(&simulate_table(&report))
+    }
+}
+
+/// The CSV's and npz's sample times, 0, every, 2 every, ... up to
+/// --t-end, within the cap on samples × N (checked before any is made).
+pub(crate) fn csv_samples(args: &SimulateArgs, n: usize) -> Result<Vec<f64>> {
+    if args.csv.is_none() && args.npz.is_none() {
+        return Ok(Vec::new());
+    }
+    let every = args.sample_every;
+    if !(every.is_finite() && every > 0.0) {
+        return Err(Error::bad_input(format!(
+            "--sample-every must be a finite number > 0, got {}",
+            crate::numfmt::plain(every)
+        )));
+    }
+    let count = (args.t_end / every).floor() + 1.0;
+    Limits::active().check_samples(count, n)?;
+    let mut times = Vec::new();
+    times
+        .try_reserve_exact(count as usize)
+        .map_err(|_| Error::failed("not enough memory for the CSV's sample times"))?;
+    times.extend((0..count as usize).map(|k| k as f64 * every));
+    Ok(times)
+}
+
+pub(crate) fn simulate_table(r: &SimulateReport) -> String {
+    let step = r
+        .rtol
+        .map_or(format!("dt = {}", r.dt), |x| format!("rtol = {x:e}"));
+    let chosen = match (r.requested_integrator.as_str(), r.arrival_error) {
+        ("auto", Some(e)) => format!(" (chosen by auto; arrival times within about {e:.2e} τ)"),
+        _ => String::new(),
+    };
+    let mut s = format!(
+        "alpha = {}°, N = {}, b = {}, a = {:.6}; {} with {step}{chosen}; {} steps, {} force evaluations, {:.3} s\n",
+        r.alpha_deg, r.n, r.b, r.a, r.integrator, r.steps, r.force_evals, r.wall_seconds
+    );
+    s.push_str("block  arrival t/τ   final θ (deg)\n");
+    for (i, (t, th)) in r.arrival_times.iter().zip(&r.final_theta_deg).enumerate() {
+        let t = t.map_or("never".to_string(), |t| format!("{t:.2}"));
+        s.push_str(&format!("{:>5}  {:>11}   {:>13.3}\n", i + 1, t, th));
+    }
+    s
+}
+
+/// The CSV of θ_n(t) in degrees, streamed row by row into `w`.
+pub(crate) fn write_csv(
+    traj: &sim::Trajectory,
+    w: &mut impl std::io::Write,
+) -> std::io::Result<()> {
+    let n = traj.final_state.q.len() / 3;
+    write!(w, "t")?;
+    for i in 1..=n {
+        write!(w, ",theta_{i}_deg")?;
+    }
+    writeln!(w)?;
+    for (t, q) in traj.times.iter().zip(&traj.states) {
+        write!(w, "{t}")?;
+        for th in sim::observables::angles_deg(q) {
+            write!(w, ",{th:.6}")?;
+        }
+        writeln!(w)?;
+    }
+    w.flush()
+}

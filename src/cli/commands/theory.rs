@@ -1,0 +1,18 @@
+//! `ladder theory`: the linear theory's numbers for one ladder.
+
+use crate::cli::*;
+use crate::error::Result;
+use crate::output;
+use crate::scene;
+
+pub(crate) fn theory(args: &TheoryArgs) -> Result<()> {
+    let m = scene::Model::default();
+    let params =
+        crate::model::Params::new(args.n, args.b, args.alpha, m.gamma, m.gravity, m.inertia)?;
+    let report = crate::theory::TheoryReport::compute(&params)?;
+    if args.json {
+        output::print(&format!("{}\n", to_json(&report)?))
+    } else {
+        output::print(&report.to_table())
+    }
+}
