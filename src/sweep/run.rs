@@ -13,7 +13,7 @@
 //! the lanes, such as [`run_point`]'s one point, runs one run at a time
 //! through `sim::simulate_until`. Both give the same results bit for bit:
 //! the batch kernel reproduces the one-run trajectories exactly
-//! (tests/sweep.rs runs 30 points at once and each alone).
+//! (tests/integration/sweep.rs runs 30 points at once and each alone).
 
 use super::outcome::{self, Decision, Outcome, Rule};
 use crate::error::{Error, Result};

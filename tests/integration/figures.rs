@@ -3,9 +3,8 @@
 //! (`LADDER_BLESS=1 cargo test --release --test figures` regenerates them).
 //! `LADDER_FIGURE_DIR=DIR` also writes every figure to DIR for inspection.
 
-mod common;
 
-use common::golden::check;
+use crate::common::golden::check;
 use jacobs_ladder::catalog;
 use jacobs_ladder::encode::png_bytes;
 use jacobs_ladder::scene::{Kind, OutputSpec, TheoryFigure, describe};

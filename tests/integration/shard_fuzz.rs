@@ -5,9 +5,8 @@
 //! genuine one, or the answer is bad input naming the file; never a
 //! panic, never other records.
 
-mod common;
 
-use common::tempdir::TempDir;
+use crate::common::tempdir::TempDir;
 use jacobs_ladder::error::Error;
 use jacobs_ladder::sweep::shard::{self, Earlier, Shard};
 use proptest::prelude::*;

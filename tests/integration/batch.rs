@@ -3,9 +3,8 @@
 //! any mix of scenarios, more runs than lanes, runs ending at different
 //! times, stop rules, divergence, and every instruction set this CPU has.
 
-mod common;
 
-use common::lcg::Lcg;
+use crate::common::lcg::Lcg;
 use jacobs_ladder::model::{Ladder, Params};
 use jacobs_ladder::sim::{
     self, Drive, IntegratorConfig, IntegratorKind, Isa, Protocol, Scenario, State, Stepping,

@@ -16,7 +16,7 @@
 
 #![allow(clippy::field_reassign_with_default)]
 
-mod common;
+use crate::common;
 
 use jacobs_ladder::scene::sweep::SweepSpec;
 use jacobs_ladder::scene::{DriveSpec, Scene};

@@ -5,9 +5,8 @@
 
 #![allow(clippy::field_reassign_with_default)]
 
-mod common;
 
-use common::golden::check;
+use crate::common::golden::check;
 use jacobs_ladder::catalog;
 use jacobs_ladder::model::ladder::itheta;
 use jacobs_ladder::scene::{self, Kind, Scene};

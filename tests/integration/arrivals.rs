@@ -9,9 +9,8 @@
 //! block's arrival by more than one sample interval, or a missed or
 //! invented flip, fails.
 
-mod common;
 
-use common::tempdir::TempDir;
+use crate::common::tempdir::TempDir;
 use std::process::Command;
 
 /// Sample interval of the CSV, τ.

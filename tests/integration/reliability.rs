@@ -6,9 +6,9 @@
 //! /dev/full, a tmpfs mount), that part fails under CI and is reported as
 //! skipped elsewhere (`common::require`).
 
-mod common;
+use crate::common;
 
-use common::tempdir::TempDir;
+use crate::common::tempdir::TempDir;
 use std::io::Read;
 use std::path::Path;
 use std::process::{Child, Command, ExitStatus, Output, Stdio};
@@ -405,7 +405,7 @@ fn only_regular_files_are_replaced() {
 
 /// Temporary files stayed forever after a kill, and later runs kept them:
 /// a later run removes stale files of our naming (no process holds their
-/// lock), and keeps everyone else's (tests/hostile.rs checks the locked,
+/// lock), and keeps everyone else's (tests/integration/hostile.rs checks the locked,
 /// linked and foreign cases).
 #[test]
 fn a_later_run_removes_stale_temporary_files() {

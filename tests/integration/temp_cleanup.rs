@@ -1,10 +1,10 @@
 //! The work of the SIGINT/SIGTERM handler (`output::temp`), without the
 //! signal: every live temporary file is removed, and none can be created
 //! or renamed into place afterwards. In a test binary of its own, since it
-//! leaves this process "terminating". (`tests/reliability.rs` sends the
+//! leaves this process "terminating". (`tests/integration/reliability.rs` sends the
 //! real signals to the binary.)
 
-mod common;
+use crate::common;
 
 use jacobs_ladder::output::temp::{TempFile, remove_all_live};
 use std::io::Write;

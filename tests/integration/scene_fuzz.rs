@@ -2,7 +2,7 @@
 //! built from the keys of docs/scenes.md with hostile values (extreme,
 //! non-finite, wrong-typed numbers; odd names; overlapping or huge flip
 //! lists), with a fixed seed, in the normal suite. Where the mutation fuzz
-//! of `tests/scene_files.rs` mostly breaks the syntax, these files are
+//! of `tests/integration/scene_files.rs` mostly breaks the syntax, these files are
 //! well-formed TOML, so they reach the checks of every value. Properties:
 //!
 //! - the parser never panics; a refusal is one line with exit status 2;
@@ -15,9 +15,8 @@
 //! byte) another sequence (the issue asks for a run of at least 10
 //! minutes: about 3 000 000 cases).
 
-mod common;
 
-use common::fuzz;
+use crate::common::fuzz;
 use jacobs_ladder::error::Error;
 use jacobs_ladder::limits::Limits;
 use jacobs_ladder::scene::{Fidelity, file};

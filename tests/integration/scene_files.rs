@@ -3,10 +3,9 @@
 //! files mutated at random never make the parser panic and always give
 //! exit 0 or 2.
 
-mod common;
 
-use common::fuzz;
-use common::tempdir::TempDir;
+use crate::common::fuzz;
+use crate::common::tempdir::TempDir;
 use jacobs_ladder::catalog;
 use jacobs_ladder::error::Error;
 use jacobs_ladder::scene::{self, file};

@@ -10,9 +10,8 @@
 
 #![allow(clippy::field_reassign_with_default)]
 
-mod common;
 
-use common::tempdir::TempDir;
+use crate::common::tempdir::TempDir;
 use jacobs_ladder::model::Ladder;
 use jacobs_ladder::scene::Scene;
 use jacobs_ladder::sim::{self, IntegratorConfig, IntegratorKind, Start, State};

@@ -1,10 +1,9 @@
 //! Golden images of the renderer (`LADDER_BLESS=1 cargo test --test golden`
 //! regenerates them; look at every one before committing).
 
-mod common;
 
-use common::golden::check;
-use common::scenes::{domain_wall, kink_state, ladder};
+use crate::common::golden::check;
+use crate::common::scenes::{domain_wall, kink_state, ladder};
 use jacobs_ladder::render::charts::{self, line_chart};
 use jacobs_ladder::render::compose::{self, filmstrip};
 use jacobs_ladder::render::snapshot::render_snapshot;

@@ -6,9 +6,9 @@
 //! `LADDER_FORMATS_DIR=DIR` also writes every file made here to DIR for
 //! inspection (`pdftoppm`, a browser, a video player).
 
-mod common;
+use crate::common;
 
-use common::golden::check;
+use crate::common::golden::check;
 use jacobs_ladder::catalog;
 use jacobs_ladder::encode;
 use jacobs_ladder::render::Picture;

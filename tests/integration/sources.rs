@@ -4,9 +4,9 @@
 //! tight tolerance instead of the sweep's Verlet) and with this file's own
 //! arithmetic (least squares, front) instead of the program's.
 //!
-//! - tests/sweep.rs: the α = −52° antikink stops with its front at block 6
+//! - tests/integration/sweep.rs: the α = −52° antikink stops with its front at block 6
 //!   (regression value of the sweep's `auto` run);
-//! - tests/sweep.rs and the `friction` figure's caption: where friction
+//! - tests/integration/sweep.rs and the `friction` figure's caption: where friction
 //!   dominates (G/γ ≤ 0.005), the antikink runs at about 0.30 G/γ blocks/τ
 //!   (regression value of Verlet at dt = 0.25 τ).
 //!

@@ -1,8 +1,8 @@
-//! Issue 23's bullets that no other test file covered: the inertia's unit
+//! What a newcomer meets outside the program: the inertia's unit
 //! in parameter lines, docs/model.md's value of a, no tracked Python
 //! caches, and a release profile without full debug info. (Names,
-//! messages, completions, man page, gallery and MP4 PSNR: tests/names.rs,
-//! tests/messages.rs, tests/cli.rs, tests/gallery.rs, tests/mp4_quality.rs.)
+//! messages, completions, man page, gallery and MP4 PSNR: tests/integration/names.rs,
+//! tests/integration/messages.rs, tests/integration/cli.rs, tests/integration/gallery.rs, tests/integration/mp4_quality.rs.)
 
 use jacobs_ladder::scene::Model;
 use jacobs_ladder::scene::describe;

@@ -7,9 +7,9 @@
 //!
 //! Run in release: `cargo test --release --test kernels`.
 
-mod common;
+use crate::common;
 
-use common::kernels;
+use crate::common::kernels;
 use jacobs_ladder::model::Params;
 use jacobs_ladder::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Stepping, Trajectory};
 
@@ -146,7 +146,7 @@ fn worst_difference(what: &str, a: &[Option<f64>], b: &[Option<f64>]) -> f64 {
 /// C ≤ 3 (the "about 1e-2 τ" a first-order method with a constant of
 /// order one gives at dt = 0.01; measured: C = 0.09 at −50°, 1.3–1.9
 /// elsewhere, growing with the blocks the wave has crossed; 33 times
-/// tighter than the 1 τ bracket of tests/arrivals.rs); (2) that it is first
+/// tighter than the 1 τ bracket of tests/integration/arrivals.rs); (2) that it is first
 /// order: the error at dt/2 is between 0.3 and 0.7 of the error at dt on
 /// each scene whose error is not at rounding level; (3) the Richardson
 /// estimate 2 |t(dt) − t(dt/2)| within a factor 2 of the true error.

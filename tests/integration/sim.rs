@@ -1,9 +1,9 @@
 //! Simulation core: forces, ground states, energy decay, convergence orders
 //! and the paper's qualitative results (SPEC section 2).
 
-mod common;
+use crate::common;
 
-use common::lcg::Lcg;
+use crate::common::lcg::Lcg;
 use jacobs_ladder::model::{Ladder, Params};
 use jacobs_ladder::sim::{
     self, Drive, IntegratorConfig, IntegratorKind, Protocol, Scenario, State, Stepping, Trajectory,

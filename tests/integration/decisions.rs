@@ -8,11 +8,11 @@
 //! - every outcome's colour, in the phase diagram's cells (SVG and PNG
 //!   pixels) and legend swatches, against the table in docs/sweeps.md.
 //!
-//! The `auto` acceptance rule is in tests/auto_acceptance.rs.
+//! The `auto` acceptance rule is in tests/integration/auto_acceptance.rs.
 //!
 //! Run in release: `cargo test --release --test decisions`.
 
-mod common;
+use crate::common;
 
 use jacobs_ladder::scene::file;
 use jacobs_ladder::sweep::outcome::{self, Outcome, stopped_outcome};
@@ -77,7 +77,7 @@ fn the_rule_decides_each_stopped_front_as_the_spec_says() {
 /// front the test reads off its own arrival times (blocks 1..=n flipped),
 /// and the set covers both sides of the boundary. α = −50° is the paper's
 /// pinned antikink (SPEC section 2, item 3); α = −52° and −51.2° antikinks
-/// stop in the bulk (tests/sources.rs checks −52° with dopri5); the run at
+/// stop in the bulk (tests/integration/sources.rs checks −52° with dopri5); the run at
 /// −51.2° stops with its front at block 3 exactly, the boundary's other
 /// side (regression value: a sweep over −50.6°…−51.8° in steps of 0.2°
 /// gives front 2 up to −50.8° and front 3 from −51° to −51.8°, so −51.2° is

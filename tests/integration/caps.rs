@@ -4,9 +4,8 @@
 //! `render` and in `render --check` alike; the catalogue passes the
 //! default caps.
 
-mod common;
 
-use common::tempdir::TempDir;
+use crate::common::tempdir::TempDir;
 use jacobs_ladder::limits::Limits;
 use jacobs_ladder::scenes::{self, MovieOptions, Outputs};
 use std::process::{Command, Output, Stdio};

@@ -1,9 +1,9 @@
 //! Determinism, GIF round trip, degenerate input, and atomic output.
 
-mod common;
+use crate::common;
 
-use common::golden::rgba;
-use common::scenes::{domain_wall, kink_state, ladder, ladder_with};
+use crate::common::golden::rgba;
+use crate::common::scenes::{domain_wall, kink_state, ladder, ladder_with};
 use jacobs_ladder::encode::{GifWriter, Palette, TRANSPARENT_INDEX, png_bytes};
 use jacobs_ladder::output::{check_writable, write_atomic, write_atomic_with};
 use jacobs_ladder::render::charts::{self, line_chart};

@@ -5,9 +5,8 @@
 //! the same numbers. And the kymograph's matrix is in the data file, equal
 //! to sin θ of the frames it is drawn from.
 
-mod common;
 
-use common::tempdir::TempDir;
+use crate::common::tempdir::TempDir;
 use jacobs_ladder::scene::{self, Scene};
 use serde_json::Value;
 use std::path::Path;

@@ -8,7 +8,7 @@
 //! and is reported as skipped elsewhere (`common::require`; `.ci/run`
 //! installs chromium).
 
-mod common;
+use crate::common;
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};

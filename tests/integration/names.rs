@@ -4,9 +4,8 @@
 //! different scene says so; `ladder figure` / `ladder movie` with nothing
 //! to make list the catalogue.
 
-mod common;
 
-use common::tempdir::TempDir;
+use crate::common::tempdir::TempDir;
 use std::process::{Command, Output};
 
 fn ladder(args: &[&str]) -> Output {

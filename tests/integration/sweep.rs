@@ -2,7 +2,7 @@
 //! byte-identical between runs and between a sharded and an unsharded
 //! sweep, resume, gather, and bad input.
 
-mod common;
+use crate::common;
 
 use jacobs_ladder::scene::sweep::{Grid, Param, SweepSpec, Values};
 use jacobs_ladder::scene::{OutputSpec, Scene};

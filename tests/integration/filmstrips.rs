@@ -3,9 +3,8 @@
 //! its snapshot and the image; the catalogue's filmstrips (N ≤ 20) drawn
 //! as before, one ladder a snapshot.
 
-mod common;
 
-use common::golden::check;
+use crate::common::golden::check;
 use jacobs_ladder::catalog;
 use jacobs_ladder::render::compose::StripGeometry;
 use jacobs_ladder::render::{Item, Picture, style};

@@ -6,10 +6,9 @@
 //! present its zipfile module checks the archive; when numpy is present,
 //! numpy.load reads it.
 
-mod common;
 
-use common::require::{note, require};
-use common::tempdir::TempDir;
+use crate::common::require::{note, require};
+use crate::common::tempdir::TempDir;
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command;

@@ -6,9 +6,9 @@
 //! trades bytes for fidelity.
 #![cfg(feature = "mp4")]
 
-mod common;
+use crate::common;
 
-use common::tempdir::TempDir;
+use crate::common::tempdir::TempDir;
 use jacobs_ladder::encode::Yuv420;
 use std::process::Command;
 

@@ -1,0 +1,46 @@
+//! The integration tests, one binary with a module per behaviour (as
+//! resvg's `tests/integration`): each module links the library once, and
+//! its tests run side by side with every other module's. `common` holds
+//! the helpers (tools' presence, temporary folders, goldens, decoders).
+//!
+//! The two tests that count the heap's allocations (`tests/alloc.rs`,
+//! `tests/memory_caps.rs`) stay binaries of their own: a counting global
+//! allocator would count every other test's allocations too.
+
+mod common;
+
+mod arrivals;
+mod auto_acceptance;
+mod batch;
+mod bench;
+mod caps;
+mod cli;
+mod data_files;
+mod decisions;
+mod docs_and_packaging;
+mod figures;
+mod filmstrips;
+mod formats;
+mod gallery;
+mod golden;
+mod hostile;
+mod kernels;
+mod messages;
+mod mp4_quality;
+mod names;
+mod npz;
+mod print;
+mod reliability;
+mod render;
+mod scene_files;
+mod scene_fuzz;
+mod scenes;
+mod scenes_accuracy;
+mod shard_fuzz;
+mod sim;
+mod sources;
+mod start;
+mod sweep;
+mod temp_cleanup;
+mod theory;
+mod waves;
