@@ -9,7 +9,6 @@
 //! block's arrival by more than one sample interval, or a missed or
 //! invented flip, fails.
 
-
 use crate::common::tempdir::TempDir;
 use std::process::Command;
 

@@ -3,7 +3,6 @@
 //! any mix of scenarios, more runs than lanes, runs ending at different
 //! times, stop rules, divergence, and every instruction set this CPU has.
 
-
 use crate::common::lcg::Lcg;
 use jacobs_ladder::model::{Ladder, Params};
 use jacobs_ladder::sim::{

@@ -4,7 +4,6 @@
 //! `render` and in `render --check` alike; the catalogue passes the
 //! default caps.
 
-
 use crate::common::tempdir::TempDir;
 use jacobs_ladder::limits::Limits;
 use jacobs_ladder::scenes::{self, MovieOptions, Outputs};

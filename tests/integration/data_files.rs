@@ -5,7 +5,6 @@
 //! the same numbers. And the kymograph's matrix is in the data file, equal
 //! to sin θ of the frames it is drawn from.
 
-
 use crate::common::tempdir::TempDir;
 use jacobs_ladder::scene::{self, Scene};
 use serde_json::Value;

@@ -3,7 +3,6 @@
 //! (`LADDER_BLESS=1 cargo test --release --test figures` regenerates them).
 //! `LADDER_FIGURE_DIR=DIR` also writes every figure to DIR for inspection.
 
-
 use crate::common::golden::check;
 use jacobs_ladder::catalog;
 use jacobs_ladder::encode::png_bytes;

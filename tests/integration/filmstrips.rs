@@ -3,7 +3,6 @@
 //! its snapshot and the image; the catalogue's filmstrips (N ≤ 20) drawn
 //! as before, one ladder a snapshot.
 
-
 use crate::common::golden::check;
 use jacobs_ladder::catalog;
 use jacobs_ladder::render::compose::StripGeometry;

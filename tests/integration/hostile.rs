@@ -2,7 +2,6 @@
 //! is touched, no shard file is trusted, every cost is checked before
 //! work, and the user's words are checked where they enter.
 
-
 use crate::common::tempdir::TempDir;
 use std::path::Path;
 use std::process::{Command, Output, Stdio};

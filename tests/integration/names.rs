@@ -4,7 +4,6 @@
 //! different scene says so; `ladder figure` / `ladder movie` with nothing
 //! to make list the catalogue.
 
-
 use crate::common::tempdir::TempDir;
 use std::process::{Command, Output};
 

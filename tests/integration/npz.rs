@@ -6,7 +6,6 @@
 //! present its zipfile module checks the archive; when numpy is present,
 //! numpy.load reads it.
 
-
 use crate::common::require::{note, require};
 use crate::common::tempdir::TempDir;
 use std::collections::BTreeMap;

@@ -3,7 +3,6 @@
 //! files mutated at random never make the parser panic and always give
 //! exit 0 or 2.
 
-
 use crate::common::fuzz;
 use crate::common::tempdir::TempDir;
 use jacobs_ladder::catalog;

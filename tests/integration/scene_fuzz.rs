@@ -15,7 +15,6 @@
 //! byte) another sequence (the issue asks for a run of at least 10
 //! minutes: about 3 000 000 cases).
 
-
 use crate::common::fuzz;
 use jacobs_ladder::error::Error;
 use jacobs_ladder::limits::Limits;

@@ -5,7 +5,6 @@
 
 #![allow(clippy::field_reassign_with_default)]
 
-
 use crate::common::golden::check;
 use jacobs_ladder::catalog;
 use jacobs_ladder::model::ladder::itheta;

@@ -5,7 +5,6 @@
 //! genuine one, or the answer is bad input naming the file; never a
 //! panic, never other records.
 
-
 use crate::common::tempdir::TempDir;
 use jacobs_ladder::error::Error;
 use jacobs_ladder::sweep::shard::{self, Earlier, Shard};

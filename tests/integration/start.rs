@@ -10,7 +10,6 @@
 
 #![allow(clippy::field_reassign_with_default)]
 
-
 use crate::common::tempdir::TempDir;
 use jacobs_ladder::model::Ladder;
 use jacobs_ladder::scene::Scene;
