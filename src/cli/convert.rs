@@ -236,7 +236,9 @@ pub fn movie_scene(
         };
     }
     let scene = scene_from_flags(scene, model, drive, run)?;
-    Ok(named(scene, origin, name))
+    // Checked again with its name: a name that climbs out of --out (`../x`),
+    // makes folders (`a/b`) or is empty is refused as a scene file's is.
+    checked(named(scene, origin, name))
 }
 
 /// A custom figure: a filmstrip at `times` (or a kymograph or arrival
@@ -282,7 +284,9 @@ pub fn figure_scene(
         }
     }
     let scene = scene_from_flags(scene, model, drive, run)?;
-    Ok(named(scene, origin, name))
+    // Checked again with its name: a name that climbs out of --out (`../x`),
+    // makes folders (`a/b`) or is empty is refused as a scene file's is.
+    checked(named(scene, origin, name))
 }
 
 /// A theory figure (`ladder figure 2c --b 1.5`): the model flags applied.
@@ -293,7 +297,9 @@ fn finish_theory(
     (model, drive, run): (&ModelArgs, &DriveArgs, &RunArgs),
 ) -> Result<Scene> {
     let scene = scene_from_flags(scene, model, drive, run)?;
-    Ok(named(scene, origin, name))
+    // Checked again with its name: a name that climbs out of --out (`../x`),
+    // makes folders (`a/b`) or is empty is refused as a scene file's is.
+    checked(named(scene, origin, name))
 }
 
 /// Refuses a flag that a built-in figure's panels (or curves) set each for

@@ -120,7 +120,7 @@ pub fn check_distinct_outputs(
                 .map(move |name| (out.join(name), src.clone()))
         })
         .collect();
-    output::check_distinct(&targets)
+    output::check_distinct(&targets, "give each scene its own name")
 }
 
 /// File extensions that make `--out` look like a file name.

@@ -76,25 +76,64 @@ pub fn check_targets(paths: &[PathBuf]) -> Result<()> {
     paths.iter().try_for_each(|p| check_kind(p))
 }
 
-/// Refuses (exit 2) a command whose outputs share a path: `targets` are
-/// (path, what makes it), e.g. the scene file. Two writers of one path
+/// Refuses (exit 2) a command whose outputs name one file: `targets` are
+/// (path, what makes it), e.g. the scene file; `hint` says how to part
+/// them. Two writers of one file
 /// would race on it and leave one's picture beside the other's data.
-pub fn check_distinct(targets: &[(PathBuf, String)]) -> Result<()> {
-    let mut seen: std::collections::BTreeMap<&Path, &str> = std::collections::BTreeMap::new();
+/// Paths are compared as files, not as text: `x`, `./x` and `link/x`
+/// (a link to this folder) are one file ([`file_identity`]).
+pub fn check_distinct(targets: &[(PathBuf, String)], hint: &str) -> Result<()> {
+    let mut seen: std::collections::BTreeMap<PathBuf, &str> = std::collections::BTreeMap::new();
     for (path, source) in targets {
-        if let Some(first) = seen.insert(path.as_path(), source.as_str()) {
+        if let Some(first) = seen.insert(file_identity(path), source.as_str()) {
             let by = if first == source.as_str() {
                 format!("{source} is given twice")
             } else {
                 format!("by {first} and by {source}")
             };
             return Err(Error::bad_input(format!(
-                "{} would be written twice by one command ({by}); give each scene its own name",
+                "{} would be written twice by one command ({by}); {hint}",
                 path.display()
             )));
         }
     }
     Ok(())
+}
+
+/// The file `path` names, as one path: its folder with every link and
+/// `.`/`..` resolved (as far as the folder exists), then its name.
+fn file_identity(path: &Path) -> PathBuf {
+    let absolute = if path.is_absolute() {
+        path.to_path_buf()
+    } else {
+        std::env::current_dir().unwrap_or_default().join(path)
+    };
+    let (Some(dir), Some(name)) = (absolute.parent(), absolute.file_name()) else {
+        return absolute;
+    };
+    // The deepest existing ancestor, resolved; the rest appended as typed.
+    let mut existing = dir.to_path_buf();
+    let mut rest = Vec::new();
+    loop {
+        if let Ok(real) = fs::canonicalize(&existing) {
+            let mut out = real;
+            for part in rest.iter().rev() {
+                out.push(part);
+            }
+            out.push(name);
+            return out;
+        }
+        match (
+            existing.file_name().map(|n| n.to_os_string()),
+            existing.parent(),
+        ) {
+            (Some(last), Some(parent)) => {
+                rest.push(last);
+                existing = parent.to_path_buf();
+            }
+            _ => return absolute,
+        }
+    }
 }
 
 /// `Ok` when `path` does not exist or is a regular file (not a symlink).

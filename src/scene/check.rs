@@ -140,10 +140,31 @@ impl Scene {
     }
 }
 
-/// Refuses a control character in a text drawn on a picture (a title, a
+/// Longest label or title, in characters: a title is drawn on one or two
+/// lines of a picture (the longest built-in one has 72).
+pub const MAX_TITLE_CHARS: usize = 300;
+
+/// Longest caption, in characters: a paragraph of the gallery and the
+/// data file (the longest built-in one has about 1800).
+pub const MAX_CAPTION_CHARS: usize = 10_000;
+
+/// Refuses a text longer than its cap (drawing a title costs time that
+/// grows faster than its length), or a control character in a text drawn on a picture (a title, a
 /// label): most cannot be written in SVG at all, and none draws. A
 /// caption (`lines`) may hold line breaks and tabs.
 pub fn check_text(key: &str, text: &str, lines: bool) -> std::result::Result<(), (String, String)> {
+    let cap = if lines {
+        MAX_CAPTION_CHARS
+    } else {
+        MAX_TITLE_CHARS
+    };
+    let chars = text.chars().count();
+    if chars > cap {
+        return Err((
+            key.into(),
+            format!("must be at most {cap} characters, got {chars}"),
+        ));
+    }
     match text
         .chars()
         .find(|c| c.is_control() && !(lines && matches!(c, '\n' | '\t')))

@@ -29,6 +29,7 @@ mod messages;
 mod mp4_quality;
 mod names;
 mod npz;
+mod output_paths;
 mod print;
 mod reliability;
 mod render;

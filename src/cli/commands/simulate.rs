@@ -71,7 +71,12 @@ pub(crate) fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<(
     let scene = convert::scene_from_flags(base, &args.model, &args.drive, &run)?;
     let samples = csv_samples(args, scene.model.n)?;
     let stepping = args.kernel.stepping()?;
-    for path in [&args.csv, &args.npz].into_iter().flatten() {
+    let targets: Vec<(std::path::PathBuf, String)> = [(&args.csv, "--csv"), (&args.npz, "--npz")]
+        .into_iter()
+        .filter_map(|(p, flag)| Some((p.clone()?, flag.to_string())))
+        .collect();
+    output::check_distinct(&targets, "give each its own file")?;
+    for (path, _) in &targets {
         output::check_writable(path)?;
     }
     let start = Instant::now();
