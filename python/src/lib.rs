@@ -92,12 +92,8 @@ fn sweep_tables(scene: &Scene, max_runs: usize, stop: &work::Stop) -> Result<(St
         stop.check(0.0);
         Ok(())
     })?;
-    // What made it: the Python process's own command line.
-    let argv: Vec<String> = std::env::args_os()
-        .map(|a| a.to_string_lossy().into_owned())
-        .collect();
     // Python takes the JSON as one string: here it is held whole.
-    front::sweep::tables(&plan, &records, &argv)
+    front::sweep::tables(&plan, &records)
 }
 
 /// The built-in scenes: (ID, kind, title) in catalogue order.

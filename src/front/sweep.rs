@@ -78,7 +78,10 @@ pub fn run_in_chunks(
 
 /// Writes the result files of a whole sweep into `out` (`sweep-NAME.png`,
 /// or .svg, .pdf, when one or two parameters vary; `.csv`; `.json`), each
-/// atomically; returns their names.
+/// atomically; returns their names. The files depend on the sweep only:
+/// not on the program's path, the output folder, or whether the runs came
+/// from shards, so their JSON records no command line (its scene reruns
+/// it: `ladder sweep FILE`).
 pub fn write_outputs(
     plan: &Plan,
     records: &[Record],
@@ -89,7 +92,7 @@ pub fn write_outputs(
     let options = crate::sweep::OutputOptions {
         formats: &outputs.figures,
         scale: outputs.scale,
-        command_line: &outputs.command_line,
+        command_line: &[],
         rename: &|name| name,
     };
     crate::scenes::style_of(&plan.scene, outputs)?.apply(|| {
@@ -99,18 +102,14 @@ pub fn write_outputs(
     })
 }
 
-/// The CSV and the JSON of a whole sweep as text, as [`write_outputs`]
-/// writes them into files (for a front end that hands them over in
-/// memory); `command_line` is recorded in the JSON.
-pub fn tables(
-    plan: &Plan,
-    records: &[Record],
-    command_line: &[String],
-) -> Result<(String, String)> {
+/// The CSV and the JSON of a whole sweep as text, the bytes
+/// [`write_outputs`] writes into files (for a front end that hands them
+/// over in memory).
+pub fn tables(plan: &Plan, records: &[Record]) -> Result<(String, String)> {
     let stem = format!("sweep-{}", plan.scene.name);
     let names = [format!("{stem}.csv"), format!("{stem}.json")];
     let mut bytes = Vec::new();
-    crate::sweep::json::write(&mut bytes, plan, records, &names, command_line)
+    crate::sweep::json::write(&mut bytes, plan, records, &names, &[])
         .map_err(|e| Error::failed(format!("cannot encode the sweep's data file: {e}")))?;
     let json = String::from_utf8(bytes)
         .map_err(|_| Error::failed("the sweep's data file is not UTF-8"))?;
