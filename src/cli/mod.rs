@@ -13,11 +13,9 @@ pub use args::*;
 
 use crate::catalog::{self};
 use crate::error::{Error, Result};
-use crate::front;
 use crate::limits::{Limits, Resource};
 use crate::output;
-use crate::scene::{self, Scene};
-use crate::scenes::{self, MovieOptions, Outputs};
+use crate::scene::{self};
 use clap::Parser;
 use serde::Serialize;
 use std::ffi::OsString;
@@ -165,10 +163,7 @@ pub fn run(cli: Cli) -> Result<()> {
 /// [`run`], recording `command_line` (the program's arguments, word by
 /// word) in the data files it writes.
 pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
-    let recorded = |outputs: Outputs| Outputs {
-        command_line: command_line.to_vec(),
-        ..outputs
-    };
+    use commands::render;
     match cli.command {
         Command::Simulate(args) => commands::simulate::simulate(&args, command_line),
         Command::Bench(args) => commands::bench::bench(&args),
@@ -178,102 +173,13 @@ pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
         Command::Completions(args) => output::print(&commands::docs::completions(args.shell)?),
         Command::Man => output::print(&commands::docs::man_page()?),
         Command::Scene(args) => {
-            let entry = commands::render::scene_entry(&args.id)?;
+            let entry = render::scene_entry(&args.id)?;
             output::print(&scene::file::to_toml(&entry.scene)?)
         }
-        Command::Figure(args) => {
-            let outputs = recorded(args.figure_format.outputs()?);
-            let scenes = commands::render::figure_scenes(&args)?;
-            let movie = MovieOptions::default();
-            commands::render::render_into(
-                &scenes,
-                &args.out,
-                &movie,
-                &outputs,
-                hints::Words::Flags,
-                false,
-            )
-        }
-        Command::Movie(args) => {
-            let opts = args.format.options()?;
-            let outputs = recorded(Outputs {
-                mp4_quality: args.format.mp4_quality(),
-                ..front::options::movie_outputs(&args.formats, &opts, args.scale)?
-            });
-            let scenes = commands::render::movie_scenes(&args)?;
-            if let Some(line) = front::options::movie_formats_line(&args.formats, &outputs) {
-                output::eprint(&format!("ladder: {line}\n"))?;
-            }
-            commands::render::render_into(
-                &scenes,
-                &args.out,
-                &opts,
-                &outputs,
-                hints::Words::Flags,
-                false,
-            )
-        }
-        Command::Render(args) => {
-            let opts = args.format.options()?;
-            let outputs = recorded(Outputs {
-                mp4_quality: args.format.mp4_quality(),
-                ..args.formats.outputs(&opts)?
-            });
-            let scenes = args
-                .files
-                .iter()
-                .map(|f| scene::file::load(f))
-                .collect::<Result<Vec<_>>>()?;
-            args.formats.check_covers(&scenes)?;
-            let sources: Vec<String> = args.files.iter().map(|f| f.display().to_string()).collect();
-            front::render::check_distinct_outputs(&scenes, &sources, &args.out.out, &outputs)?;
-            if args.check {
-                // The checks rendering makes before its work, in one place.
-                for (file, s) in args.files.iter().zip(&scenes) {
-                    scenes::check(s, &opts, &outputs)
-                        .map_err(|e| commands::render::in_file(file, e))?;
-                }
-                for (file, s) in args.files.iter().zip(&scenes) {
-                    output::print(&format!(
-                        "{}: {} {} ({} run{}): {}\n",
-                        file.display(),
-                        s.kind().name(),
-                        s.name,
-                        s.runs().len(),
-                        if s.runs().len() == 1 { "" } else { "s" },
-                        scene::describe::parameters(s)
-                    ))?;
-                }
-                return Ok(());
-            }
-            commands::render::render_into(
-                &scenes,
-                &args.out,
-                &opts,
-                &outputs,
-                hints::Words::Keys,
-                false,
-            )
-        }
-        Command::All(args) => {
-            let opts = args.format.options()?;
-            let outputs = recorded(Outputs {
-                mp4_quality: args.format.mp4_quality(),
-                ..args.formats.outputs(&opts)?
-            });
-            let scenes: Vec<Scene> = catalog::catalogue()?
-                .iter()
-                .map(|e| e.scene.clone())
-                .collect();
-            commands::render::render_into(
-                &scenes,
-                &args.out,
-                &opts,
-                &outputs,
-                hints::Words::Flags,
-                true,
-            )
-        }
+        Command::Figure(args) => render::figure(&args, command_line),
+        Command::Movie(args) => render::movie(&args, command_line),
+        Command::Render(args) => render::render(&args, command_line),
+        Command::All(args) => render::all(&args, command_line),
     }
 }
 

@@ -195,3 +195,95 @@ pub(crate) fn render_into(
         start.elapsed().as_secs_f64()
     ))
 }
+
+/// `ladder figure`: a built-in figure, all of them, or a filmstrip (or
+/// kymograph, arrival chart) of the user's own ladder.
+pub(crate) fn figure(args: &FigureArgs, command_line: &[String]) -> Result<()> {
+    let outputs = recorded(args.figure_format.outputs()?, command_line);
+    let scenes = figure_scenes(args)?;
+    let movie = MovieOptions::default();
+    render_into(&scenes, &args.out, &movie, &outputs, Words::Flags, false)
+}
+
+/// `ladder movie`: a built-in movie, all of them, or the user's own.
+pub(crate) fn movie(args: &MovieArgs, command_line: &[String]) -> Result<()> {
+    let opts = args.format.options()?;
+    let outputs = recorded(
+        Outputs {
+            mp4_quality: args.format.mp4_quality(),
+            ..front::options::movie_outputs(&args.formats, &opts, args.scale)?
+        },
+        command_line,
+    );
+    let scenes = movie_scenes(args)?;
+    if let Some(line) = front::options::movie_formats_line(&args.formats, &outputs) {
+        output::eprint(&format!("ladder: {line}\n"))?;
+    }
+    render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, false)
+}
+
+/// `ladder render FILE...`: scene files, or with `--check` only the checks
+/// rendering makes before its work.
+pub(crate) fn render(args: &RenderArgs, command_line: &[String]) -> Result<()> {
+    let (opts, outputs) = mixed(&args.format, &args.formats, command_line)?;
+    let scenes = args
+        .files
+        .iter()
+        .map(|f| scene::file::load(f))
+        .collect::<Result<Vec<_>>>()?;
+    args.formats.check_covers(&scenes)?;
+    let sources: Vec<String> = args.files.iter().map(|f| f.display().to_string()).collect();
+    front::render::check_distinct_outputs(&scenes, &sources, &args.out.out, &outputs)?;
+    if !args.check {
+        return render_into(&scenes, &args.out, &opts, &outputs, Words::Keys, false);
+    }
+    // The checks rendering makes before its work, in one place.
+    for (file, s) in args.files.iter().zip(&scenes) {
+        crate::scenes::check(s, &opts, &outputs).map_err(|e| in_file(file, e))?;
+    }
+    for (file, s) in args.files.iter().zip(&scenes) {
+        output::print(&format!(
+            "{}: {} {} ({} run{}): {}\n",
+            file.display(),
+            s.kind().name(),
+            s.name,
+            s.runs().len(),
+            if s.runs().len() == 1 { "" } else { "s" },
+            scene::describe::parameters(s)
+        ))?;
+    }
+    Ok(())
+}
+
+/// `ladder all`: every built-in figure and movie, and the gallery page.
+pub(crate) fn all(args: &AllArgs, command_line: &[String]) -> Result<()> {
+    let (opts, outputs) = mixed(&args.format, &args.formats, command_line)?;
+    let scenes: Vec<Scene> = catalog::catalogue()?
+        .iter()
+        .map(|e| e.scene.clone())
+        .collect();
+    render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, true)
+}
+
+/// The movie options and the outputs of `render` and `all`.
+fn mixed(
+    format: &MovieFormat,
+    formats: &MixedFormat,
+    command_line: &[String],
+) -> Result<(MovieOptions, Outputs)> {
+    let opts = format.options()?;
+    let outputs = Outputs {
+        mp4_quality: format.mp4_quality(),
+        ..formats.outputs(&opts)?
+    };
+    Ok((opts, recorded(outputs, command_line)))
+}
+
+/// `outputs`, recording `command_line` (the program's arguments, word by
+/// word) in the data files they write.
+fn recorded(outputs: Outputs, command_line: &[String]) -> Outputs {
+    Outputs {
+        command_line: command_line.to_vec(),
+        ..outputs
+    }
+}
