@@ -79,6 +79,9 @@ pub fn parse(text: &str, origin: &str, default_name: &str) -> Result<Scene> {
         let span = span_of(doc.get_ref(), &key);
         located(text, origin, span, Some(&key), &msg)
     })?;
+    if let Some(a) = &scene.apparatus {
+        scene.apparatus = Some(a.converted(scene.model.alpha));
+    }
     Ok(scene)
 }
 
