@@ -87,8 +87,8 @@ pub const SQUARE_PLATE_ADDED_MASS: f64 = 0.579;
 pub const SQUARE_PLATE_CD: f64 = 1.17;
 /// The paper's G, which "stiff" links are given (k = m g*/(s G)).
 pub const STIFF_GRAVITY: f64 = 2e-4;
-/// The paper's γ/√G (0.02 at G = 2e-4): "paper" damping keeps it.
-pub const PAPER_GAMMA_PER_ROOT_G: f64 = 0.02 / 0.014142135623730951;
+/// The paper's γ/√G, 0.02/√(2e-4) = √2: "paper" damping keeps it.
+pub const PAPER_GAMMA_PER_ROOT_G: f64 = std::f64::consts::SQRT_2;
 
 /// `[apparatus]`: the ladder as built, in cm, g, s (N/m for k).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
