@@ -37,12 +37,16 @@ pub fn nodes(q: &[f64], i: usize) -> ([f64; 2], [f64; 2]) {
     ([x - R * t[0], y - R * t[1]], [x + R * t[0], y + R * t[1]])
 }
 
-/// The ladder model: parameters plus the derived rest length a.
+/// The ladder model: parameters plus the derived rest length a, and the
+/// terms of SPEC section 12 (`media`; none for the paper's model).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ladder {
     pub params: Params,
     /// Rest length of the A springs, a = sqrt(b² + 4 s² cos²α).
     pub a: f64,
+    /// Added mass, drag, links and friction; the paper's model has none,
+    /// and its force loop ([`Ladder::gradient_with`]) never reads them.
+    pub terms: super::media::Terms,
 }
 
 impl Ladder {
@@ -50,7 +54,13 @@ impl Ladder {
         Self {
             a: params.a(),
             params,
+            terms: super::media::Terms::default(),
         }
+    }
+
+    /// The same ladder with the terms of SPEC section 12.
+    pub fn with_terms(self, terms: super::media::Terms) -> Self {
+        Self { terms, ..self }
     }
 
     pub fn n(&self) -> usize {

@@ -2,6 +2,8 @@
 //! Knows nothing else of the project.
 
 pub mod ladder;
+pub mod links;
+pub mod media;
 pub mod params;
 pub mod trig;
 

@@ -48,6 +48,9 @@ impl Scene {
                 format!("at most {MAX_FLIPS} flips, got {}", self.drive.flips.len()),
             );
         }
+        if let Some(a) = &self.apparatus {
+            a.check().map_err(|(k, m)| (format!("apparatus.{k}"), m))?;
+        }
         if let Err((k, msg)) = self.drive.check() {
             return Err((format!("drive.flips.{k}"), msg));
         }

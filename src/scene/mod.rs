@@ -10,6 +10,7 @@
 //! Floors: this module knows the model and the simulation's types (it
 //! builds [`Params`] and [`Scenario`]); it knows no command-line flag.
 
+pub mod apparatus;
 pub mod check;
 pub mod describe;
 pub mod drive;
@@ -61,6 +62,10 @@ pub struct Scene {
     /// Default: the `screen` style; command-line flags override it.
     #[serde(skip_serializing_if = "crate::render::StyleSpec::is_empty")]
     pub style: crate::render::StyleSpec,
+    /// The ladder as built, in physical units (SPEC section 12,
+    /// `[apparatus]`, `scene::apparatus`). Default none: the model's units.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub apparatus: Option<apparatus::Apparatus>,
 }
 
 impl Default for Scene {
@@ -75,6 +80,7 @@ impl Default for Scene {
             run: Run::default(),
             output: OutputSpec::default(),
             style: crate::render::StyleSpec::default(),
+            apparatus: None,
         }
     }
 }
@@ -214,6 +220,9 @@ impl Scene {
     /// state of sign α or hanging from it (`model.start`), block 1 driven
     /// as `drive` says, over [0, t_end].
     pub fn scenario(&self) -> Result<Scenario> {
+        if let Some(a) = &self.apparatus {
+            return a.scenario(self);
+        }
         let params = self.model.params()?;
         crate::sim::check_simulable(&params)?;
         let drive = self.drive.drive(params.alpha)?;
@@ -226,6 +235,7 @@ impl Scene {
     pub fn with_auto_window(&self) -> Result<Scene> {
         let mut out = self.clone();
         if self.run.t_end != AUTO_T_END
+            || self.apparatus.is_some()
             || self.fidelity() != Fidelity::Simulation
             || matches!(self.output, OutputSpec::Sweep(_))
         {

@@ -58,7 +58,9 @@ pub fn simulate_many_with(
     stop: &StopRule,
 ) -> Vec<Result<Trajectory>> {
     let valid = config.validated();
-    let isa = match (&valid, batch_isa(stepping)) {
+    // The batch kernels compute the paper's forces only (`model::media`).
+    let paper = scenarios.iter().all(|sc| sc.ladder.terms.is_paper());
+    let isa = match (&valid, batch_isa(stepping).filter(|_| paper)) {
         (Ok(c), Some(isa))
             if matches!(
                 c.kind,

@@ -73,6 +73,42 @@ impl Scenario {
     }
 }
 
+/// Refuses an integrator that cannot integrate the ladder's terms
+/// (`model::media`): symplectic Euler and velocity Verlet kick with forces
+/// of the positions only (their damping is the linear γ, folded into the
+/// kick), so added mass (a mass matrix that depends on θ, and velocity
+/// terms), quadratic drag and pin friction need a scheme that evaluates
+/// a(q, v): explicit Euler, rk4 or dopri5 (`auto` picks rk4 for them).
+/// Stiffer or tension-only links are forces of the positions: every
+/// scheme takes them.
+pub fn check_terms(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
+    let t = &ladder.terms;
+    if !t.velocity_dependent()
+        || !matches!(
+            config.kind,
+            IntegratorKind::SymplecticEuler | IntegratorKind::Verlet
+        )
+    {
+        return Ok(());
+    }
+    let mut what = Vec::new();
+    if t.added_mass != 0.0 || t.added_inertia != 0.0 {
+        what.push("added mass (a mass matrix that turns with the block)");
+    }
+    if t.drag != 0.0 {
+        what.push("quadratic drag");
+    }
+    if t.friction.is_some() {
+        what.push("pin friction");
+    }
+    Err(Error::bad_input(format!(
+        "integrator {} cannot integrate {}: its kick takes forces of the positions only; \
+         use rk4, dopri5, explicit-euler or auto",
+        config.kind.name(),
+        what.join(", ")
+    )))
+}
+
 /// `simulate` needs 0 < |α| < 90° (SPEC section 5).
 /// α is read to 1e-9° (`Params::alpha_deg`), so a smaller |α| counts as 0.
 pub fn check_simulable(params: &Params) -> Result<()> {
@@ -395,6 +431,14 @@ pub fn simulate_streaming(
     sink: &mut dyn FnMut(&Sample) -> Result<()>,
 ) -> Result<Trajectory> {
     let config = config.validated()?;
+    check_terms(&scenario.ladder, &config)?;
+    // The fused and chain kernels compute the paper's forces only: a
+    // ladder with any term of SPEC section 12 takes the portable path.
+    let stepping = if scenario.ladder.terms.is_paper() {
+        stepping
+    } else {
+        Stepping::Portable
+    };
     let samples = sorted_samples(sample_times, scenario.t_end)?;
     let limits = hooks.limits;
     check_cost(scenario, samples.len(), &config, limits)?;
@@ -600,6 +644,9 @@ impl DivergenceWatch {
             return Err(self.diverged(t, "a block turned more than four times"));
         }
         let ladder = rhs.ladder;
+        if !ladder.terms.is_paper() {
+            return self.check_terms(rhs, st, t);
+        }
         let elastic = ladder.elastic_energy(&st.q);
         if elastic > self.max_elastic {
             return Err(self.diverged(t, "the springs stretched beyond any physical state"));
@@ -609,6 +656,25 @@ impl DivergenceWatch {
             let gravity: f64 = st.q.iter().step_by(3).sum();
             let potential = elastic - M * ladder.params.gravity * gravity;
             let e = ladder.kinetic_energy(&st.v) + potential;
+            self.undriven_min = self.undriven_min.min(e);
+            if e > self.undriven_min + self.max_growth {
+                return Err(self.diverged(t, "the energy grew while nothing drove the ladder"));
+            }
+        }
+        Ok(())
+    }
+
+    /// [`DivergenceWatch::check`]'s energy tests for a ladder with terms:
+    /// the links' elastic energy (per unit stiffness) and the kinetic
+    /// energy with added mass.
+    fn check_terms(&mut self, rhs: &Rhs, st: &State, t: f64) -> Result<()> {
+        let terms = &rhs.ladder.terms;
+        let elastic = terms.links.elastic_energy(rhs.ladder, &st.q);
+        if elastic > self.max_elastic * terms.links.stiffness {
+            return Err(self.diverged(t, "the springs stretched beyond any physical state"));
+        }
+        if t >= self.drive_end {
+            let e = rhs.mechanical_energy(st);
             self.undriven_min = self.undriven_min.min(e);
             if e > self.undriven_min + self.max_growth {
                 return Err(self.diverged(t, "the energy grew while nothing drove the ladder"));

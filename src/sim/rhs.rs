@@ -5,7 +5,8 @@
 
 use super::protocol::{Drive, Protocol};
 use crate::model::Ladder;
-use crate::model::ladder::{ForceScratch, ix, iy};
+use crate::model::ladder::{ForceScratch, itheta, ix, iy};
+use crate::model::media::{self, Terms};
 use crate::model::params::{M, R};
 
 /// Positions q and velocities v, both in the model's layout [X, Y, θ per block].
@@ -39,6 +40,10 @@ pub struct Rhs<'a> {
     scratch: ForceScratch,
     /// Number of force (gradient) evaluations so far.
     pub force_evals: u64,
+    /// The ladder's terms of SPEC section 12 (`model::media`), and
+    /// scratch for their generalised forces.
+    terms: Terms,
+    force: Vec<f64>,
 }
 
 impl<'a> Rhs<'a> {
@@ -64,7 +69,14 @@ impl<'a> Rhs<'a> {
             grad: vec![0.0; dof],
             scratch: ForceScratch::new(p.n),
             force_evals: 0,
+            terms: ladder.terms,
+            force: Vec::new(),
         }
+    }
+
+    /// The ladder's terms beyond the paper's model.
+    pub fn terms(&self) -> &Terms {
+        &self.terms
     }
 
     /// What happens to block 1.
@@ -128,22 +140,71 @@ impl<'a> Rhs<'a> {
     #[inline]
     pub fn gradient(&mut self, q: &[f64]) -> (&[f64], &[f64]) {
         self.force_evals += 1;
-        self.ladder
-            .gradient_with(q, &mut self.grad, &mut self.scratch);
+        if self.terms.links.is_paper() {
+            self.ladder
+                .gradient_with(q, &mut self.grad, &mut self.scratch);
+        } else {
+            self.terms.links.gradient(self.ladder, q, &mut self.grad);
+        }
         (&self.grad, &self.inv_mass)
     }
 
     /// Full acceleration including damping, −M⁻¹(∂E/∂q + Γ v).
     #[inline]
     pub fn acceleration(&mut self, q: &[f64], v: &[f64], acc: &mut [f64]) {
+        if self.terms.velocity_dependent() {
+            return self.acceleration_with_terms(q, v, acc);
+        }
         self.conservative(q, acc);
         for k in 0..acc.len() {
             acc[k] -= self.damping_rate[k] * v[k];
         }
     }
 
-    /// Mechanical energy: kinetic plus potential.
+    /// The accelerations with added mass, drag and pin friction
+    /// (`model::media`): the generalised forces (links, gravity, linear
+    /// damping, pin friction, drag) through Lagrange's equations of each
+    /// free block, with its velocity terms and M⁻¹ in closed form.
+    fn acceleration_with_terms(&mut self, q: &[f64], v: &[f64], acc: &mut [f64]) {
+        self.gradient(q);
+        let ladder = self.ladder;
+        let t = self.terms;
+        let gamma = ladder.params.gamma;
+        self.force.resize(self.grad.len(), 0.0);
+        for (k, (f, g)) in self.force.iter_mut().zip(&self.grad).enumerate() {
+            let rate = if k % 3 == 2 { gamma * R * R } else { gamma };
+            *f = -g - rate * v[k];
+        }
+        if let Some(friction) = t.friction {
+            friction.add_forces(ladder, &t.links, q, v, &mut self.force);
+        }
+        let j = ladder.params.inertia + t.added_inertia;
+        for i in 0..ladder.n() {
+            let k = 3 * i;
+            if self.inv_mass[k] == 0.0 {
+                acc[k..k + 3].fill(0.0);
+                continue;
+            }
+            let vi = [v[k], v[k + 1], v[k + 2]];
+            let mut qi = [self.force[k], self.force[k + 1], self.force[k + 2]];
+            if t.drag != 0.0 {
+                let d = media::drag_force(t.drag, i, q[itheta(i)], vi);
+                for (a, b) in qi.iter_mut().zip(d) {
+                    *a += b;
+                }
+            }
+            let a = media::block_acceleration(t.added_mass, j, i, q[itheta(i)], vi, qi);
+            acc[k..k + 3].copy_from_slice(&a);
+        }
+    }
+
+    /// Mechanical energy: kinetic plus potential (with the terms'
+    /// kinetic and elastic energies where the ladder has them).
     pub fn mechanical_energy(&self, s: &State) -> f64 {
-        self.ladder.kinetic_energy(&s.v) + self.ladder.energy(&s.q)
+        if self.terms.is_paper() {
+            return self.ladder.kinetic_energy(&s.v) + self.ladder.energy(&s.q);
+        }
+        media::kinetic_energy(self.ladder, &self.terms, &s.q, &s.v, false)
+            + media::potential_energy(self.ladder, &self.terms, &s.q)
     }
 }

@@ -1,0 +1,302 @@
+//! The links between the blocks beyond the paper's two-way springs of unit
+//! stiffness (SPEC section 12): a stiffness κ (in the model's unit k),
+//! tension-only links (tape, ribbon: energy ½ κ max(0, L − ℓ)²), and
+//! Coulomb friction at the pins of a printed linkage.
+//!
+//! The link σ ∈ {A, B} between blocks n and n + 1 joins their σ-nodes
+//! p = X ± r t (A: −, B: +); d = p_{n+1} − p_n, L = |d|, its tension
+//! T = κ (L − ℓ_σ) (zero where a tension-only link is slack, L < ℓ_σ).
+//!
+//! # Pin friction
+//!
+//! A block turns at the geometric rate Ω_n = −(−1)ⁿ θ̇_n (t_n turns
+//! clockwise as θ_n grows when n is even), a link at φ̇ = (d × ḋ)/L². At
+//! each of a link's two pins a Coulomb torque
+//! τ = −μ_p r_p |T| tanh((Ω − φ̇)/ω_ε) acts on the block (generalised
+//! force −(−1)ⁿ τ on θ_n). The massless link takes the opposite torques
+//! and balances them by forces ±(τ₁ + τ₂)/L normal to it at its ends: the
+//! block at the lower end is pushed by −F n̂, the one at the upper end by
+//! +F n̂, with n̂ = ẑ × d/L and F = (τ₁ + τ₂)/L. The friction's power is
+//! then Σ τ (Ω − φ̇) = −Σ μ_p r_p |T| tanh(ω/ω_ε) ω ≤ 0.
+
+use super::ladder::{Ladder, itheta, ix, iy, parity};
+use super::media::frame;
+use super::params::{M, R};
+
+/// The links' stiffness and whether they push.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Links {
+    /// Stiffness κ in units of the model's k (1: the paper's springs).
+    pub stiffness: f64,
+    /// Tape or ribbon: pulls when stretched, pushes nothing when slack.
+    pub tension_only: bool,
+}
+
+impl Default for Links {
+    fn default() -> Self {
+        Self {
+            stiffness: 1.0,
+            tension_only: false,
+        }
+    }
+}
+
+/// One link at a state: its nodes, direction and tension.
+#[derive(Debug, Clone, Copy)]
+pub struct LinkState {
+    /// Upper block (zero-based), the lower one is `upper + 1`.
+    pub upper: usize,
+    /// −1 for an A link, +1 for a B link (the node offset ±r t).
+    pub sign: f64,
+    /// d = p_lower − p_upper and L = |d|.
+    pub d: [f64; 2],
+    pub length: f64,
+    /// Tension T = κ (L − ℓ) (0 for a slack tension-only link).
+    pub tension: f64,
+}
+
+impl Links {
+    /// Whether these are the paper's springs.
+    pub fn is_paper(&self) -> bool {
+        *self == Self::default()
+    }
+
+    /// Tension of a link of rest length `rest` at length `length`.
+    #[inline]
+    pub fn tension(&self, length: f64, rest: f64) -> f64 {
+        let stretch = length - rest;
+        if self.tension_only && stretch < 0.0 {
+            0.0
+        } else {
+            self.stiffness * stretch
+        }
+    }
+
+    /// Every link at `q`: A_1, B_1, A_2, B_2, ...
+    pub fn states<'q>(
+        &self,
+        ladder: &'q Ladder,
+        q: &'q [f64],
+    ) -> impl Iterator<Item = LinkState> + 'q {
+        let links = *self;
+        (0..ladder.n() - 1).flat_map(move |i| {
+            [-1.0, 1.0].map(move |sign| {
+                let (t0, _) = frame(i, q[itheta(i)]);
+                let (t1, _) = frame(i + 1, q[itheta(i + 1)]);
+                let dx = (q[ix(i + 1)] + sign * R * t1[0]) - (q[ix(i)] + sign * R * t0[0]);
+                let dy = (q[iy(i + 1)] + sign * R * t1[1]) - (q[iy(i)] + sign * R * t0[1]);
+                let length = (dx * dx + dy * dy).sqrt();
+                let rest = if sign < 0.0 {
+                    ladder.a
+                } else {
+                    ladder.params.b
+                };
+                LinkState {
+                    upper: i,
+                    sign,
+                    d: [dx, dy],
+                    length,
+                    tension: links.tension(length, rest),
+                }
+            })
+        })
+    }
+
+    /// Elastic energy Σ ½ κ (L − ℓ)², the slack tension-only links left out.
+    pub fn elastic_energy(&self, ladder: &Ladder, q: &[f64]) -> f64 {
+        self.states(ladder, q)
+            .map(|s| 0.5 * s.tension * s.tension / self.stiffness)
+            .sum()
+    }
+
+    /// ∂E/∂q of the links' energy and of gravity (−m G per X_n) written
+    /// into `grad`: ∂E/∂d = T d/L, the node moving with X and turning
+    /// with ∂p/∂θ = ±r ν.
+    pub fn gradient(&self, ladder: &Ladder, q: &[f64], grad: &mut [f64]) {
+        let g = M * ladder.params.gravity;
+        for (k, x) in grad.iter_mut().enumerate().take(3 * ladder.n()) {
+            *x = if k % 3 == 0 { -g } else { 0.0 };
+        }
+        for s in self.states(ladder, q) {
+            if s.tension == 0.0 {
+                continue;
+            }
+            let f = [s.tension * s.d[0] / s.length, s.tension * s.d[1] / s.length];
+            add_node_force(grad, q, s.upper + 1, s.sign, [f[0], f[1]]);
+            add_node_force(grad, q, s.upper, s.sign, [-f[0], -f[1]]);
+        }
+    }
+}
+
+/// Adds the generalised force of a force `f` at the ±-node of block `i`
+/// (sign −1: A, +1: B) to `out`: f on (X, Y), f·(±r ν) on θ.
+#[inline]
+fn add_node_force(out: &mut [f64], q: &[f64], i: usize, sign: f64, f: [f64; 2]) {
+    let (_, nu) = frame(i, q[itheta(i)]);
+    out[ix(i)] += f[0];
+    out[iy(i)] += f[1];
+    out[itheta(i)] += sign * R * (f[0] * nu[0] + f[1] * nu[1]);
+}
+
+/// Coulomb friction at the pins, smoothed: torque μ_p r_p |T| tanh(ω/ω_ε).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PinFriction {
+    /// μ_p r_p: friction coefficient times pin radius, in s.
+    pub mu_rp: f64,
+    /// Smoothing rate ω_ε, in 1/τ.
+    pub omega_eps: f64,
+}
+
+/// A pin's relative turning rate and the torque on its block.
+struct Pin {
+    /// Ω − φ̇.
+    omega: f64,
+    /// τ on the block (geometric, counter-clockwise positive).
+    torque: f64,
+}
+
+impl PinFriction {
+    /// The two pins of link `s`: (upper, lower).
+    fn pins(&self, s: &LinkState, q: &[f64], v: &[f64]) -> (Pin, Pin) {
+        let node_velocity = |i: usize| {
+            let (_, nu) = frame(i, q[itheta(i)]);
+            let w = v[itheta(i)];
+            [
+                v[ix(i)] + s.sign * R * w * nu[0],
+                v[iy(i)] + s.sign * R * w * nu[1],
+            ]
+        };
+        let (u0, u1) = (node_velocity(s.upper), node_velocity(s.upper + 1));
+        let dd = [u1[0] - u0[0], u1[1] - u0[1]];
+        let phi_dot = (s.d[0] * dd[1] - s.d[1] * dd[0]) / (s.length * s.length);
+        let limit = self.mu_rp * s.tension.abs();
+        let pin = |i: usize| {
+            let omega = -parity(i) * v[itheta(i)] - phi_dot;
+            Pin {
+                omega,
+                torque: -limit * (omega / self.omega_eps).tanh(),
+            }
+        };
+        (pin(s.upper), pin(s.upper + 1))
+    }
+
+    /// Adds the friction's generalised forces at (q, v) to `out`: the
+    /// torques on the blocks and the link's balancing forces.
+    pub fn add_forces(
+        &self,
+        ladder: &Ladder,
+        links: &Links,
+        q: &[f64],
+        v: &[f64],
+        out: &mut [f64],
+    ) {
+        for s in links.states(ladder, q) {
+            if s.tension == 0.0 || self.mu_rp == 0.0 {
+                continue;
+            }
+            let (p0, p1) = self.pins(&s, q, v);
+            out[itheta(s.upper)] += -parity(s.upper) * p0.torque;
+            out[itheta(s.upper + 1)] += -parity(s.upper + 1) * p1.torque;
+            let f = (p0.torque + p1.torque) / s.length;
+            let n = [-s.d[1] / s.length, s.d[0] / s.length];
+            add_node_force(out, q, s.upper + 1, s.sign, [-f * n[0], -f * n[1]]);
+            add_node_force(out, q, s.upper, s.sign, [f * n[0], f * n[1]]);
+        }
+    }
+
+    /// Power dissipated at every pin, Σ μ_p r_p |T| tanh(ω/ω_ε) ω ≥ 0.
+    pub fn dissipation(&self, ladder: &Ladder, links: &Links, q: &[f64], v: &[f64]) -> f64 {
+        links
+            .states(ladder, q)
+            .filter(|s| s.tension != 0.0)
+            .map(|s| {
+                let (p0, p1) = self.pins(&s, q, v);
+                -(p0.torque * p0.omega + p1.torque * p1.omega)
+            })
+            .sum()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Params;
+
+    fn bent(alpha: f64) -> (Ladder, Vec<f64>) {
+        let ladder = Ladder::new(Params::paper(alpha).unwrap());
+        let mut q = ladder.ground_state();
+        for (k, x) in q.iter_mut().enumerate() {
+            *x += 0.05 * ((k as f64) * 1.7).sin();
+        }
+        (ladder, q)
+    }
+
+    #[test]
+    fn unit_two_way_links_are_the_papers_springs() {
+        let (ladder, q) = bent(60.0);
+        let (mut a, mut b) = (vec![0.0; q.len()], vec![0.0; q.len()]);
+        ladder.gradient(&q, &mut a);
+        Links::default().gradient(&ladder, &q, &mut b);
+        for (x, y) in a.iter().zip(&b) {
+            assert!((x - y).abs() < 1e-14, "{x} {y}");
+        }
+        let e = Links::default().elastic_energy(&ladder, &q);
+        assert!((e - ladder.elastic_energy(&q)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn link_forces_are_the_energy_gradient() {
+        for links in [
+            Links {
+                stiffness: 3.0,
+                tension_only: false,
+            },
+            Links {
+                stiffness: 50.0,
+                tension_only: true,
+            },
+        ] {
+            let (ladder, q) = bent(-60.0);
+            let mut grad = vec![0.0; q.len()];
+            links.gradient(&ladder, &q, &mut grad);
+            let energy = |q: &[f64]| {
+                let x: f64 = q.iter().step_by(3).sum();
+                links.elastic_energy(&ladder, q) - ladder.params.gravity * x
+            };
+            let h = 1e-6;
+            for k in 0..q.len() {
+                let (mut qp, mut qm) = (q.clone(), q.clone());
+                qp[k] += h;
+                qm[k] -= h;
+                let fd = (energy(&qp) - energy(&qm)) / (2.0 * h);
+                assert!(
+                    (fd - grad[k]).abs() < 1e-7 * links.stiffness,
+                    "{k}: {fd} {}",
+                    grad[k]
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn friction_dissipates_and_its_power_is_its_forces_power() {
+        let (ladder, q) = bent(69.0);
+        let links = Links {
+            stiffness: 1.0,
+            tension_only: false,
+        };
+        let f = PinFriction {
+            mu_rp: 0.03,
+            omega_eps: 0.01,
+        };
+        let v: Vec<f64> = (0..q.len())
+            .map(|k| 0.02 * ((k as f64) * 0.9).cos())
+            .collect();
+        let mut out = vec![0.0; q.len()];
+        f.add_forces(&ladder, &links, &q, &v, &mut out);
+        let power: f64 = out.iter().zip(&v).map(|(a, b)| a * b).sum();
+        let d = f.dissipation(&ladder, &links, &q, &v);
+        assert!(d > 0.0);
+        assert!((power + d).abs() < 1e-12 * d.max(1e-12), "{power} {d}");
+    }
+}
