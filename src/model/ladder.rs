@@ -24,6 +24,14 @@ pub const fn parity(i: usize) -> f64 {
     if i.is_multiple_of(2) { -1.0 } else { 1.0 }
 }
 
+/// In-plane direction t and normal ν = ∂t/∂θ of block `i` at angle θ.
+#[inline]
+pub fn frame(i: usize, theta: f64) -> ([f64; 2], [f64; 2]) {
+    let (s, c) = theta.sin_cos();
+    let p = parity(i);
+    ([s, p * c], [c, -p * s])
+}
+
 /// Orientation t_n = (sin θ_n, (−1)^n cos θ_n) of block `i` at angle `theta`.
 pub fn orientation(i: usize, theta: f64) -> [f64; 2] {
     let (s, c) = super::trig::sin_cos(theta);
@@ -46,7 +54,7 @@ pub struct Ladder {
     pub a: f64,
     /// Added mass, drag, links and friction; the paper's model has none,
     /// and its force loop ([`Ladder::gradient_with`]) never reads them.
-    pub terms: super::media::Terms,
+    pub terms: super::terms::Terms,
 }
 
 impl Ladder {
@@ -54,12 +62,12 @@ impl Ladder {
         Self {
             a: params.a(),
             params,
-            terms: super::media::Terms::default(),
+            terms: super::terms::Terms::default(),
         }
     }
 
     /// The same ladder with the terms of SPEC section 12.
-    pub fn with_terms(self, terms: super::media::Terms) -> Self {
+    pub fn with_terms(self, terms: super::terms::Terms) -> Self {
         Self { terms, ..self }
     }
 

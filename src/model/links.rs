@@ -19,27 +19,9 @@
 //! +F n̂, with n̂ = ẑ × d/L and F = (τ₁ + τ₂)/L. The friction's power is
 //! then Σ τ (Ω − φ̇) = −Σ μ_p r_p |T| tanh(ω/ω_ε) ω ≤ 0.
 
-use super::ladder::{Ladder, itheta, ix, iy, parity};
-use super::media::frame;
+use super::ladder::{Ladder, frame, itheta, ix, iy, parity};
 use super::params::{M, R};
-
-/// The links' stiffness and whether they push.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Links {
-    /// Stiffness κ in units of the model's k (1: the paper's springs).
-    pub stiffness: f64,
-    /// Tape or ribbon: pulls when stretched, pushes nothing when slack.
-    pub tension_only: bool,
-}
-
-impl Default for Links {
-    fn default() -> Self {
-        Self {
-            stiffness: 1.0,
-            tension_only: false,
-        }
-    }
-}
+pub use super::terms::{Links, PinFriction};
 
 /// One link at a state: its nodes, direction and tension.
 #[derive(Debug, Clone, Copy)]
@@ -136,15 +118,6 @@ fn add_node_force(out: &mut [f64], q: &[f64], i: usize, sign: f64, f: [f64; 2]) 
     out[ix(i)] += f[0];
     out[iy(i)] += f[1];
     out[itheta(i)] += sign * R * (f[0] * nu[0] + f[1] * nu[1]);
-}
-
-/// Coulomb friction at the pins, smoothed: torque μ_p r_p |T| tanh(ω/ω_ε).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PinFriction {
-    /// μ_p r_p: friction coefficient times pin radius, in s.
-    pub mu_rp: f64,
-    /// Smoothing rate ω_ε, in 1/τ.
-    pub omega_eps: f64,
 }
 
 /// A pin's relative turning rate and the torque on its block.

@@ -5,6 +5,7 @@ pub mod ladder;
 pub mod links;
 pub mod media;
 pub mod params;
+pub mod terms;
 pub mod trig;
 
 pub use ladder::Ladder;
