@@ -1,7 +1,10 @@
 //! What the three symplectic-Euler steppers (the fused kernel for
 //! N ≤ 32, the chain kernel for longer ladders, and the batch kernel of
-//! sweeps) share: a batch of equal steps, the instruction set a kernel is
-//! compiled for, and which code takes the steps.
+//! sweeps) share: a batch of equal steps, the implicit damping factors,
+//! the instruction set a kernel is compiled for, and which code takes the
+//! steps.
+
+use super::rhs::Rhs;
 
 /// A batch of equal steps: `count` steps of size `h` from `t`; if `lands`,
 /// the last one ends exactly on `t_stop` (as in the portable path).
@@ -89,5 +92,48 @@ impl Stepping {
             Stepping::Fused(isa) => isa.available().then_some(isa),
             Stepping::Portable => None,
         }
+    }
+}
+
+/// Symplectic Euler's factors for step `h`, per coordinate: the decay
+/// d = 1/(1 + h c) of the implicit damping and the kick h M⁻¹ d (zero for
+/// a prescribed coordinate).
+#[derive(Debug, Clone, Default)]
+pub struct ImplicitDamping {
+    pub h: f64,
+    pub decay: Vec<f64>,
+    pub kick: Vec<f64>,
+    /// (decay, kick) for X, Y and θ if every free block has the same ones
+    /// (as the ladder's uniform blocks do) and a prescribed block 1 has no
+    /// kick: what the fused stepper needs.
+    pub uniform: Option<([f64; 3], [f64; 3])>,
+}
+
+impl ImplicitDamping {
+    /// Recomputes the factors for step `h` in place (allocating only the
+    /// first time).
+    pub(crate) fn set(&mut self, rhs: &Rhs, h: f64) {
+        let dof = rhs.damping_rate.len();
+        self.decay.resize(dof, 0.0);
+        self.kick.resize(dof, 0.0);
+        let rates = rhs.damping_rate.iter().zip(rhs.inv_mass());
+        for ((d, kick), (rate, im)) in self.decay.iter_mut().zip(&mut self.kick).zip(rates) {
+            *d = 1.0 / (1.0 + h * rate);
+            *kick = h * im * *d;
+        }
+        self.h = h;
+        self.uniform = self.find_uniform();
+    }
+
+    fn find_uniform(&self) -> Option<([f64; 3], [f64; 3])> {
+        let block = |i: usize| {
+            let at = |v: &[f64]| -> Option<[f64; 3]> { v.get(3 * i..3 * i + 3)?.try_into().ok() };
+            Some((at(&self.decay)?, at(&self.kick)?))
+        };
+        let free = block(1)?;
+        let n = self.decay.len() / 3;
+        let first = block(0)?;
+        let first_ok = first == free || first.1 == [0.0; 3];
+        ((2..n).all(|i| block(i) == Some(free)) && first_ok).then_some(free)
     }
 }
