@@ -4,8 +4,8 @@
 //! rcParams and SciencePlots in spirit).
 //!
 //! Every figure is laid out in *design pixels* with the text sizes of
-//! [`super::style::size`] (axis labels 15 px). A style fixes how many design
-//! pixels a point is, `px_per_pt = size::LABEL / font_pt`, so one scale turns
+//! [`super::theme::size`] (axis labels 15 px). A style fixes how many design
+//! pixels a point is, `px_per_pt = DESIGN_TEXT_PX / font_pt`, so one scale turns
 //! text, line widths, markers and gaps into points together: at `paper`
 //! (8 pt text) an axis label of 15 px prints at 8 pt, a 2 px line at 1.07 pt.
 //! A print style also fixes the page width, so a chart is laid out in a
@@ -16,8 +16,11 @@
 //! ([`Style::current`], set by [`Style::apply`]) that charts and layouts ask
 //! for sizes, the font and the frame, as plotting libraries' rc contexts do.
 
-use super::style::size;
 use std::cell::Cell;
+
+/// Design pixels of text at the style's size: the one scale from which a
+/// style's points follow (`px_per_pt = DESIGN_TEXT_PX / font_pt`).
+pub const DESIGN_TEXT_PX: f32 = 15.0;
 
 /// The named styles of `--style`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -166,7 +169,7 @@ impl Style {
             name,
             width_pt: None,
             height_pt: None,
-            font_pt: size::LABEL * 0.75,
+            font_pt: DESIGN_TEXT_PX * 0.75,
             font: FontChoice::Sans,
             dpi: 96.0,
             text: TextMode::Text,
@@ -205,7 +208,7 @@ impl Style {
     /// Design pixels per point: the one scale from which text, lines,
     /// markers and gaps follow (4/3 at screen, 15/8 at paper).
     pub fn px_per_pt(&self) -> f32 {
-        size::LABEL / self.font_pt
+        DESIGN_TEXT_PX / self.font_pt
     }
 
     /// The design frame a figure whose own size is `natural` is laid out

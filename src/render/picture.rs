@@ -60,6 +60,9 @@ pub struct Picture {
     items: Vec<Item>,
     /// Groups being recorded (their transform and items so far).
     open: Vec<(Transform, Vec<Item>)>,
+    /// The document's title (markup of [`style::runs`]), recorded in every
+    /// file's metadata, never drawn by the encoders.
+    title: Option<String>,
 }
 
 /// Largest side of a raster, in pixels.
@@ -73,7 +76,20 @@ impl Picture {
             height: height.max(1.0),
             items: Vec::new(),
             open: Vec::new(),
+            title: None,
         }
+    }
+
+    /// The picture with `title` as its document title (the metadata of its
+    /// PDF, SVG and PNG files).
+    pub fn titled(mut self, title: impl Into<String>) -> Picture {
+        self.title = Some(title.into());
+        self
+    }
+
+    /// The document title, without markup.
+    pub fn title(&self) -> Option<String> {
+        self.title.as_deref().map(style::plain_text)
     }
 
     /// Design width in pixels.
@@ -145,6 +161,7 @@ impl Picture {
         }
         let mut out = Picture::new(width, self.height);
         out.place(&self, ((0.5 * (width - self.width)).floor(), 0.0));
+        out.title = self.title;
         out
     }
 
@@ -208,24 +225,30 @@ impl Picture {
         } else {
             None
         };
+        let title = self.title();
+        let meta = |svg: Vec<u8>| super::svg::with_metadata(svg, title.as_deref());
         formats
             .as_slice()
             .iter()
             .map(|f| match (f, &tree) {
-                (Format::Png, _) => {
-                    encode::png_bytes(&self.rasterize(style.png_scale(self.width) * scale)?)
-                }
-                (Format::Svg, Some(_)) if real_text => {
-                    Ok(super::svg::document_in_points(self, pt_per_px)?.into_bytes())
-                }
+                (Format::Png, _) => encode::png_bytes_titled(
+                    &self.rasterize(style.png_scale(self.width) * scale)?,
+                    title.as_deref(),
+                ),
+                (Format::Svg, Some(_)) if real_text => Ok(meta(
+                    super::svg::document_in_points(self, pt_per_px)?.into_bytes(),
+                )),
                 // Outlines: a tree whose pixels are 1/96 in (0.75 pt).
-                (Format::Svg, Some(t)) if pt_per_px == 0.75 => Ok(encode::svg_bytes(t)),
-                (Format::Svg, Some(_)) => Ok(encode::svg_bytes(&self.to_tree(pt_per_px / 0.75)?)),
+                (Format::Svg, Some(t)) if pt_per_px == 0.75 => Ok(meta(encode::svg_bytes(t))),
+                (Format::Svg, Some(_)) => Ok(meta(encode::svg_bytes(
+                    &self.to_tree(pt_per_px / 0.75)?,
+                ))),
                 (Format::Pdf, Some(t)) => encode::pdf_bytes(
                     t,
                     encode::PdfOptions {
                         pt_per_px,
                         real_text,
+                        title: title.clone(),
                     },
                 ),
                 _ => Err(Error::failed(format!("a figure cannot be written as {f}"))),

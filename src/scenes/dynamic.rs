@@ -258,7 +258,16 @@ fn strips_layout(scene: &Scene, panels: &[Panel]) -> Layout {
     // At a print style the strips were fitted one a row.
     let print = crate::render::Style::current().is_print();
     let two = !print && panels.len() > 2 && 2 * widest <= MAX_STRIP_ROW;
-    let layout = |columns| Layout::columns(columns).title(describe::title(scene));
+    // Journal styles draw no figure title (the caption is the document's).
+    let titles = crate::render::Theme::current().titles;
+    let layout = |columns| {
+        let l = Layout::columns(columns);
+        if titles {
+            l.title(describe::title(scene))
+        } else {
+            l
+        }
+    };
     // Tall strips (of folded ladders) go side by side rather than make a
     // figure taller than a picture may be.
     let first = if two { 2 } else { 1 };
@@ -881,8 +890,11 @@ fn kymograph_chart(
 ) -> Result<charts::Chart> {
     let states: Vec<&[f64]> = traj.states.iter().map(|q| q.as_slice()).collect();
     let values = charts::polarisation_rows(&states);
+    // An empty title leaves no stray ": " before the quantity.
     let kymo_title = if title.ends_with("sin θₙ") {
         title.to_string()
+    } else if title.trim().is_empty() {
+        "sin θₙ".to_string()
     } else {
         format!("{title}: sin θₙ")
     };

@@ -19,6 +19,17 @@ use std::ops::Range;
 /// Draws `spec` as a `width × height` chart.
 pub fn line_chart(spec: &ChartSpec, width: u32, height: u32) -> Result<Chart> {
     check_size(width, height)?;
+    // Journal styles draw no title: the caption is the document's.
+    let untitled;
+    let spec = if spec.title.is_some() && !crate::render::Theme::current().titles {
+        untitled = ChartSpec {
+            title: None,
+            ..spec.clone()
+        };
+        &untitled
+    } else {
+        spec
+    };
     style::register_plotters_font();
     let (x0, y0) = (data_range(spec, true)?, data_range(spec, false)?);
     let mut pass = Pass {

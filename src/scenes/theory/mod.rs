@@ -167,18 +167,40 @@ const NOTE_LINE: f32 = 1.35 * size::LABEL;
 /// Puts `body` under a centred title with wrapped `notes` below it, on a
 /// white page at least `min_width` pixels wide.
 fn frame(title: &str, body: &Picture, notes: &str, min_width: u32) -> Result<Picture> {
+    let theme = crate::render::Theme::current();
+    // Journal styles carry neither title nor notes: the caption is the
+    // document's.
+    let (title, notes) = if theme.titles {
+        (title, notes)
+    } else {
+        ("", "")
+    };
     let m = size::MARGIN;
     let (bw, bh) = body.pixel_size();
     let min_width = crate::render::Style::current().frame((min_width, 1)).0;
     let width = (bw + 2 * m).max(min_width);
-    let lines = style::wrap_text(notes, (width - 2 * m) as f32, size::LABEL);
-    let title_h = (1.8 * size::TITLE) as u32;
-    let notes_h = (lines.len() as f32 * NOTE_LINE + 0.5 * size::LABEL) as u32;
+    let lines = if notes.is_empty() {
+        Vec::new()
+    } else {
+        style::wrap_text(notes, (width - 2 * m) as f32, size::LABEL)
+    };
+    let title_h = if title.is_empty() {
+        0
+    } else {
+        (1.8 * size::TITLE) as u32
+    };
+    let notes_h = if lines.is_empty() {
+        0
+    } else {
+        (lines.len() as f32 * NOTE_LINE + 0.5 * size::LABEL) as u32
+    };
     let height = m + title_h + bh + notes_h + m;
     let mut out = Picture::new(width as f32, height as f32);
     let centre = 0.5 * width as f32;
     let top = (centre, m as f32);
-    out.text(title, top, size::TITLE, DARK, TOP_CENTRE);
+    if !title.is_empty() {
+        out.text(title, top, size::TITLE, DARK, TOP_CENTRE);
+    }
     out.place(body, (((width - bw) / 2) as f32, (m + title_h) as f32));
     let y0 = (m + title_h + bh) as f32 + 0.4 * size::LABEL;
     for (k, l) in lines.iter().enumerate() {
