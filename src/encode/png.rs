@@ -78,7 +78,11 @@ fn crc32(bytes: &[u8]) -> u32 {
     for &b in bytes {
         c ^= b as u32;
         for _ in 0..8 {
-            c = if c & 1 != 0 { 0xedb8_8320 ^ (c >> 1) } else { c >> 1 };
+            c = if c & 1 != 0 {
+                0xedb8_8320 ^ (c >> 1)
+            } else {
+                c >> 1
+            };
         }
     }
     !c
@@ -127,6 +131,9 @@ mod tests {
         assert!(text.contains(crate::version::VERSION));
         // Without a title: only the program.
         let plain = png_bytes(&p).unwrap();
-        assert_eq!(chunks(&plain).iter().filter(|(k, _)| k == b"iTXt").count(), 0);
+        assert_eq!(
+            chunks(&plain).iter().filter(|(k, _)| k == b"iTXt").count(),
+            0
+        );
     }
 }

@@ -153,10 +153,11 @@ pub const MM_PER_IN: f32 = 25.4;
 /// Smallest text a print style may set, in points (SPEC section 10).
 pub const MIN_PRINT_TEXT_PT: f32 = 6.0;
 /// Tallest a figure may print at a print style without a page height, in
-/// points: 9.5 in, the text height of an APS (Physical Review) page less
-/// room for the caption's first lines (the page's text block is about
-/// 9.6–10 in).
-pub const MAX_FIGURE_HEIGHT_PT: f32 = 9.5 * PT_PER_IN;
+/// points: 4.5 in, so that a figure with its caption takes at most about
+/// half of an APS (Physical Review) page's text block (9.6–10 in) and
+/// floats beside text (the paper's Fig. 3, four rows of seven ladders, is
+/// one PRL column about that tall).
+pub const MAX_FIGURE_HEIGHT_PT: f32 = 4.5 * PT_PER_IN;
 /// Text size, in points, down to which a figure composed for a style with
 /// larger text (a slide's 20 pt) may be set, so that filmstrips and
 /// panels fit one slide.
@@ -501,10 +502,10 @@ mod tests {
     #[test]
     fn fit_boxes() {
         let p = Style::named(StyleName::Paper);
-        // 9.5 in = 684 pt; 15/8 px per pt at 8 pt text.
-        assert_eq!(p.max_height_pt(), Some(684.0));
+        // 4.5 in = 324 pt; 15/8 px per pt at 8 pt text.
+        assert_eq!(p.max_height_pt(), Some(324.0));
         let (w, h) = p.fit_box().unwrap();
-        assert!((w - 243.0 * 15.0 / 8.0).abs() < 1e-3 && (h - 684.0 * 15.0 / 8.0).abs() < 1e-3);
+        assert!((w - 243.0 * 15.0 / 8.0).abs() < 1e-3 && (h - 324.0 * 15.0 / 8.0).abs() < 1e-3);
         let s = Style::named(StyleName::Slide);
         assert_eq!(s.max_height_pt(), Some(540.0));
         // 20 pt text composed down to 10 pt: twice the 0.75 px per pt frame.

@@ -452,10 +452,8 @@ fn draw_ladder(canvas: &mut impl Canvas, map: &Mapping, q: &[f64], pal: &Palette
     let block_w = map.len(0.16, 2.5, 14.0);
     let (a_pen, b_pen) = (
         Pen::new(spring_w, pal.a_spring),
-        Pen::new(spring_w, pal.b_spring).dashed(
-            (3.0 * spring_w).max(2.5),
-            (2.0 * spring_w).max(1.5),
-        ),
+        Pen::new(spring_w, pal.b_spring)
+            .dashed((3.0 * spring_w).max(2.5), (2.0 * spring_w).max(1.5)),
     );
     let mut prev = None;
     for i in 0..n {

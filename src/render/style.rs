@@ -9,9 +9,9 @@
 //! which is fast enough for a time label on every movie frame.
 
 use super::page_style::{FontChoice, Style};
-pub use super::theme::size;
 pub use super::theme::SCRIPT_SCALE;
 use super::theme::palette;
+pub use super::theme::size;
 use crate::encode::Rgb;
 use ab_glyph::{Font, FontRef, PxScale, ScaleFont, point};
 use std::sync::{Arc, Once, OnceLock};

@@ -20,7 +20,7 @@
 //! colour helpers ([`super::style`]) know the theme; nothing here reaches
 //! back to them.
 
-use super::page_style::{FontChoice, MIN_PRINT_TEXT_PT, Style, StyleName};
+use super::page_style::{FontChoice, Style, StyleName};
 use crate::encode::Rgb;
 
 /// Sizes at the screen style, in pixels at 100 % zoom: the base every
@@ -141,10 +141,15 @@ impl Theme {
             style: *style,
             titles: !journal,
             px_per_pt,
-            title: size::TITLE,
+            // Titles and panel titles at a print style: the text's size.
+            title: if print { size::LABEL } else { size::TITLE },
             label: size::LABEL,
             tick,
-            panel_label: if print { size::LABEL } else { size::PANEL_LABEL },
+            panel_label: if print {
+                size::LABEL
+            } else {
+                size::PANEL_LABEL
+            },
             min_text,
             min_script: if print {
                 MIN_SCRIPT_PT * px_per_pt
@@ -163,6 +168,15 @@ impl Theme {
     /// The theme of the style in force ([`Style::current`]).
     pub fn current() -> Theme {
         Theme::of(&Style::current())
+    }
+
+    /// Height of the band a title (one line) takes above what it names.
+    pub fn title_band(&self) -> f32 {
+        if self.is_print() {
+            (1.5 * self.title).floor()
+        } else {
+            (1.8 * self.title).floor()
+        }
     }
 
     /// The font text is set in.
@@ -199,9 +213,6 @@ impl Theme {
         1.0 / self.px_per_pt
     }
 }
-
-/// The smallest text a print style may set, re-exported for layouts.
-pub const MIN_PRINT_PT: f32 = MIN_PRINT_TEXT_PT;
 
 #[cfg(test)]
 mod tests {

@@ -217,8 +217,14 @@ impl Strip {
 /// ([`crate::render::Style::fit_box`]); none at screen.
 fn strip_fit(count: usize) -> Option<(u32, u32)> {
     let (w, h) = crate::render::Style::current().fit_box()?;
-    let (m, gap) = (style::size::MARGIN as f32, style::size::GAP as f32);
-    let title = (style::size::TITLE * 1.8).floor();
+    let theme = crate::render::Theme::current();
+    let (m, gap) = (theme.margin, theme.gap);
+    // The figure's title band, where the style draws titles.
+    let title = if theme.titles {
+        theme.title_band()
+    } else {
+        0.0
+    };
     let n = count.max(1) as f32;
     let each = (h - 2.0 * m - title - (n - 1.0) * gap) / n;
     Some(((w - 2.0 * m).floor() as u32, each.max(1.0).floor() as u32))

@@ -193,7 +193,7 @@ fn draw_colorbar(area: &Area<'_>, label: &str) -> Result<()> {
         .disable_x_axis()
         .y_labels(5)
         .y_label_formatter(&yf)
-        .label_style(font(size::TICK).into_font().color(&rgb(DARK)))
+        .label_style(font(super::tick_px()).into_font().color(&rgb(DARK)))
         .axis_style(rgb(DARK).stroke_width(1))
         .draw()
         .map_err(plot_error)

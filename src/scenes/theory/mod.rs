@@ -213,9 +213,14 @@ fn frame(title: &str, body: &Picture, notes: &str, min_width: u32) -> Result<Pic
 const TOP_CENTRE: (HAlign, VAlign) = (HAlign::Center, VAlign::Top);
 const TOP_LEFT: (HAlign, VAlign) = (HAlign::Left, VAlign::Top);
 
-/// Panels in a grid without a title (the figure frame carries it).
+/// Panels in a grid without a title (the figure frame carries it), and at
+/// a print style without a margin of its own (the frame's is the page's).
 fn grid(panels: &[Panel], columns: usize) -> Result<Picture> {
-    compose::compose_picture(panels, &Layout::columns(columns))
+    let mut layout = Layout::columns(columns);
+    if crate::render::Theme::current().is_print() {
+        layout.margin = 0;
+    }
+    compose::compose_picture(panels, &layout)
 }
 
 /// A snapshot of `q` on `ladder` without the pin support of block 1 (these
