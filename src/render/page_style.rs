@@ -220,9 +220,11 @@ impl Style {
             return natural;
         };
         let w = (w_pt * self.px_per_pt()).round().max(60.0);
+        // From the natural aspect ratio, no taller than the page allows.
         let h = match self.height_pt {
             Some(h_pt) => h_pt * self.px_per_pt(),
-            None => w * natural.1 as f32 / natural.0.max(1) as f32,
+            None => (w * natural.1 as f32 / natural.0.max(1) as f32)
+                .min(MAX_FIGURE_HEIGHT_PT * self.px_per_pt()),
         };
         (w as u32, h.round().max(60.0) as u32)
     }

@@ -212,9 +212,22 @@ impl Strip {
     }
 }
 
-/// The box each of `count` strips must fit at a print style, one strip a
-/// row under the figure's title on the style's page
-/// ([`crate::render::Style::fit_box`]); none at screen.
+/// Strips a row at a print style: two on a page wide enough for two
+/// strips of snapshots side by side (`paper-wide`), where the ladders are
+/// then drawn larger than one strip a row would, else one.
+fn print_columns(count: usize) -> usize {
+    let wide = crate::render::Style::current()
+        .fit_box()
+        .is_some_and(|(w, _)| w >= WIDE_PAGE);
+    if wide && count >= 2 { 2 } else { 1 }
+}
+
+/// Design width from which a print page takes two strips a row.
+const WIDE_PAGE: f32 = 800.0;
+
+/// The box each of `count` strips must fit at a print style, in
+/// [`print_columns`] strips a row under the figure's title on the style's
+/// page ([`crate::render::Style::fit_box`]); none at screen.
 fn strip_fit(count: usize) -> Option<(u32, u32)> {
     let (w, h) = crate::render::Style::current().fit_box()?;
     let theme = crate::render::Theme::current();
@@ -225,9 +238,11 @@ fn strip_fit(count: usize) -> Option<(u32, u32)> {
     } else {
         0.0
     };
-    let n = count.max(1) as f32;
-    let each = (h - 2.0 * m - title - (n - 1.0) * gap) / n;
-    Some(((w - 2.0 * m).floor() as u32, each.max(1.0).floor() as u32))
+    let cols = print_columns(count) as f32;
+    let rows = count.max(1).div_ceil(cols as usize) as f32;
+    let wide = (w - 2.0 * m - (cols - 1.0) * gap) / cols;
+    let each = (h - 2.0 * m - title - (rows - 1.0) * gap) / rows;
+    Some((wide.floor() as u32, each.max(1.0).floor() as u32))
 }
 
 /// The strips of a filmstrip scene, one per panel, with their data.
@@ -261,9 +276,13 @@ fn strips_layout(scene: &Scene, panels: &[Panel]) -> Layout {
         .map(|p| p.image.pixel_size().0)
         .max()
         .unwrap_or(0);
-    // At a print style the strips were fitted one a row.
+    // At a print style the strips were fitted [`print_columns`] a row.
     let print = crate::render::Style::current().is_print();
-    let two = !print && panels.len() > 2 && 2 * widest <= MAX_STRIP_ROW;
+    let two = if print {
+        print_columns(panels.len()) == 2
+    } else {
+        panels.len() > 2 && 2 * widest <= MAX_STRIP_ROW
+    };
     // Journal styles draw no figure title (the caption is the document's).
     let titles = crate::render::Theme::current().titles;
     let layout = |columns| {

@@ -73,13 +73,24 @@ fn cells(natural: (u32, u32), columns: usize) -> (u32, u32) {
     let w = ((room - (c - 1.0) * size::GAP as f32) / c).floor();
     let w = w.min(natural.0 as f32).max(20.0);
     let h = natural.1 as f32 * w / natural.0 as f32;
-    (w as u32, h.round() as u32)
+    // No taller than the page budget leaves after a label and a caption.
+    let tall = body_height().map_or(h, |room| room - 4.0 * size::LABEL);
+    let f = (tall / h).min(1.0);
+    ((w * f).floor() as u32, (h * f).round() as u32)
 }
 
 /// How much a drawing `width` pixels wide is scaled down to fit
 /// [`body_room`] (1 at screen or when it fits).
-fn drawing_scale(width: f32) -> f32 {
-    body_room().map_or(1.0, |room| (room / width).min(1.0))
+fn drawing_scale(width: f32, height: f32) -> f32 {
+    let tall = body_height().map_or(1.0, |room| room / height);
+    body_room().map_or(1.0, |room| (room / width).min(tall).min(1.0))
+}
+
+/// The height, in pixels, a figure's body may take at a print style (the
+/// page budget less the margins); none at screen.
+fn body_height() -> Option<f32> {
+    let (_, h) = crate::render::Style::current().fit_box()?;
+    Some(h - 2.0 * size::MARGIN as f32)
 }
 
 /// `body` scaled by `scale` (a drawing laid out for the screen, on a

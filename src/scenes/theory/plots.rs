@@ -41,7 +41,9 @@ fn fit((w, h): (u32, u32)) -> (u32, u32) {
     let f = if narrow() {
         (page - 2.0 * size::MARGIN as f32 - 8.0) / w as f32
     } else {
-        page / FIGURE_WIDTH as f32
+        // The share of the page the panel has on screen, of the room the
+        // margins and gaps leave.
+        (page - 2.0 * (size::MARGIN + size::GAP) as f32) / FIGURE_WIDTH as f32
     };
     let s = |v: u32| ((v as f32 * f).round() as u32).max(60);
     if narrow() {
@@ -50,7 +52,11 @@ fn fit((w, h): (u32, u32)) -> (u32, u32) {
         let w = s(w);
         return (w, s(h).min((NARROW_ASPECT * w as f32) as u32));
     }
-    (s(w), s(h))
+    // Side by side: no taller than the page budget less the margins.
+    let tall = style.fit_box().map_or(u32::MAX, |(_, bh)| {
+        (bh - 2.0 * size::MARGIN as f32 - 2.0 * size::LABEL) as u32
+    });
+    (s(w), s(h).min(tall))
 }
 
 /// Tallest a chart is, relative to its width, on a narrow page where
