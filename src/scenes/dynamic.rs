@@ -309,15 +309,60 @@ pub fn filmstrip_figure(
     scene: &Scene,
     frame: Option<(u32, u32)>,
 ) -> Result<(Picture, Vec<RunData>)> {
-    let strips = strips(scene, frame)?;
-    let mut panels = Vec::with_capacity(strips.len());
-    let mut data = Vec::with_capacity(strips.len());
-    for (strip, d) in strips {
-        panels.push(Panel::new(strip.picture(&d)?));
-        data.push(d);
+    let mut strips = strips(scene, frame)?;
+    let picture = compose_strips(scene, &strips)?.titled(describe::title(scene));
+    let style = crate::render::Style::current();
+    if let (Err(e), Some(asked)) = (picture.check_print_scale(&style), style.height_pt) {
+        // Too short a page for the style's text: refused, naming the
+        // smallest height that holds the strips (found by bisection of the
+        // layout; the runs are not repeated).
+        let fits = |strips: &mut Vec<(Strip, RunData)>, h: f32| -> Result<bool> {
+            let tall = crate::render::Style {
+                height_pt: Some(h),
+                ..style
+            };
+            tall.apply(|| {
+                let fit = strip_fit(strips.len());
+                for (s, _) in strips.iter_mut() {
+                    s.opts.fit = fit;
+                }
+                let p = compose_strips(scene, strips)?;
+                Ok(p.check_print_scale(&tall).is_ok())
+            })
+        };
+        let (mut lo, mut hi) = (asked, 2000.0f32);
+        if !fits(&mut strips, hi)? {
+            return Err(e);
+        }
+        while hi - lo > 0.5 {
+            let mid = 0.5 * (lo + hi);
+            if fits(&mut strips, mid)? {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        return Err(Error::bad_input(format!(
+            "--height {:.2}in: too short for \"{}\" at {} pt text (it would print its text \
+             smaller); the smallest height that holds it is --height {:.2}in",
+            asked / 72.0,
+            crate::render::style::plain_text(&describe::title(scene)),
+            style.font_pt,
+            (hi / 72.0 * 100.0).ceil() / 100.0
+        )));
     }
+    let data = strips.into_iter().map(|(_, d)| d).collect();
+    Ok((picture, data))
+}
+
+/// The strips drawn and composed into one figure on the style's page.
+fn compose_strips(scene: &Scene, strips: &[(Strip, RunData)]) -> Result<Picture> {
+    let panels = strips
+        .iter()
+        .map(|(s, d)| Ok(Panel::new(s.picture(d)?)))
+        .collect::<Result<Vec<_>>>()?;
     let layout = strips_layout(scene, &panels);
-    Ok((compose::compose_picture(&panels, &layout)?.fit_page(), data))
+    Ok(compose::compose_picture(&panels, &layout)?.fit_page())
 }
 
 /// For a test of the filmstrips: where [`filmstrip_figure`] draws every
@@ -387,10 +432,8 @@ fn fitted_line(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
 pub fn arrivals_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     let (spec, data) = arrivals_chart(scene)?;
     let (w, h) = crate::render::Style::current().frame((820, 560));
-    Ok((
-        Picture::from(charts::line_chart(&spec, w, h)?).fit_page(),
-        data,
-    ))
+    let picture = Picture::from(charts::line_chart(&spec, w, h)?).fit_page();
+    Ok((picture.titled(describe::title(scene)), data))
 }
 
 /// What [`arrivals_figure`] draws: the chart's series (each wave's marks,
@@ -854,7 +897,7 @@ pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Picture, RunDat
     let (w, h) = crate::render::Style::current().frame((820, 560));
     let image = kymograph_chart(&title, &run.trajectory, scene.model.n, w, h)?;
     Ok((
-        Picture::from(image).fit_page(),
+        Picture::from(image).fit_page().titled(title),
         RunData::with_kymograph(scene, run),
     ))
 }
@@ -899,9 +942,10 @@ pub fn kymograph_picture(
         (design(width), design(height))
     };
     let chart = kymograph_chart(title, traj, n, w, h)?;
+    let picture: Picture = chart.into();
     Ok(MovieKymograph {
         png_scale: width as f32 / w as f32,
-        picture: chart.into(),
+        picture: picture.titled(title),
     })
 }
 

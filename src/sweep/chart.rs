@@ -71,11 +71,12 @@ const SHARED_SAVES: u32 = 46;
 /// stack keeps the page budget ([`crate::render::Theme::max_height_pt`]),
 /// none below `least`.
 fn fitted_heights(wanted: &[u32], least: u32) -> Vec<u32> {
-    let theme = crate::render::Theme::current();
-    let Some(max_pt) = theme.max_height_pt.filter(|_| theme.is_print()) else {
+    // The page's height in the design pixels composed figures are laid
+    // out in (a slide's twice its own, Style::fit_box).
+    let Some((_, page)) = crate::render::Style::current().fit_box() else {
         return wanted.to_vec();
     };
-    let budget = (max_pt * theme.px_per_pt).floor() - 2.0;
+    let budget = page.floor() - 2.0;
     // Panels above the last share its axis and give up their label area.
     let last = wanted.len().saturating_sub(1);
     let wanted: Vec<u32> = wanted

@@ -155,7 +155,7 @@ pub fn check_cost(figure: TheoryFigure, input: &FigureInput) -> Result<Work> {
 /// checked first ([`check_cost`]).
 pub fn picture(figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {
     check_cost(figure, input)?;
-    Ok(drawn(figure, input)?.fit_page())
+    Ok(drawn(figure, input)?.fit_page().titled(input.title.clone()))
 }
 
 fn drawn(figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {

@@ -491,8 +491,8 @@ mod tests {
     fn u_curves_avoid_the_spring_and_block_end_colours() {
         for (c, name) in CURVE_COLORS {
             for taken in [palette::SPRING_A, palette::SPRING_B] {
-                let d: i32 = (0..3).map(|k| (c[k] as i32 - taken[k] as i32).abs()).sum();
-                assert!(d > 120, "{name} is too close to {taken:?}");
+                let d = crate::render::theme::delta_e(c, taken);
+                assert!(d > 20.0, "{name} is {d:.1} ΔE from {taken:?}");
             }
         }
     }
