@@ -85,7 +85,7 @@ fn bands(panels: &[Panel]) -> (u32, u32) {
     let label = panels.iter().any(|p| p.label.is_some());
     let caption = panels.iter().any(|p| p.caption.is_some());
     let l = if label {
-        (size::PANEL_LABEL * 1.5) as u32
+        (super::Theme::current().panel_label * 1.5) as u32
     } else {
         0
     };
@@ -209,7 +209,13 @@ fn draw_panel(
     out.place(&p.image, (ix as f32, iy as f32));
     if let Some(l) = &p.label {
         let at = (x as f32 + 2.0, y as f32);
-        out.text(l, at, size::PANEL_LABEL, DARK, (HAlign::Left, VAlign::Top));
+        out.text(
+            l,
+            at,
+            super::Theme::current().panel_label,
+            DARK,
+            (HAlign::Left, VAlign::Top),
+        );
     }
     if let Some(c) = &p.caption {
         // One text per line, each centred under the image.

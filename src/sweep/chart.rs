@@ -63,6 +63,9 @@ pub fn outcome_marker(o: Outcome, antikink: bool) -> Marker {
     }
 }
 
+/// The least height of a stacked panel, pixels (a chart's smallest).
+const LEAST_PANEL: u32 = 120;
+
 /// Pixels a panel whose x axis is shared (labelled below) does not need.
 const SHARED_SAVES: u32 = 46;
 
@@ -76,7 +79,7 @@ fn fitted_heights(wanted: &[u32], least: u32) -> Vec<u32> {
     let Some((_, page)) = crate::render::Style::current().fit_box() else {
         return wanted.to_vec();
     };
-    let budget = page.floor() - 2.0;
+    let budget = page.floor();
     // Panels above the last share its axis and give up their label area.
     let last = wanted.len().saturating_sub(1);
     let wanted: Vec<u32> = wanted
@@ -94,16 +97,25 @@ fn fitted_heights(wanted: &[u32], least: u32) -> Vec<u32> {
     if sum as f32 <= budget {
         return wanted;
     }
-    // The last panel keeps its axis' label area whole.
-    let f = (budget - SHARED_SAVES as f32) / (sum - SHARED_SAVES) as f32;
-    wanted
-        .iter()
-        .enumerate()
-        .map(|(k, h)| {
-            let keep = if k == last { SHARED_SAVES } else { 0 };
-            (((*h - keep) as f32 * f).floor() as u32 + keep).max(least)
-        })
-        .collect()
+    // The last panel keeps its axis' label area whole; none goes below
+    // `least` (then the stack is taller than the page, and the figure is
+    // refused naming the height that holds it: the same heights again).
+    let keep = |k: usize| if k == last { SHARED_SAVES } else { 0 };
+    let at = |f: f32| -> Vec<u32> {
+        wanted
+            .iter()
+            .enumerate()
+            .map(|(k, h)| (((*h - keep(k)) as f32 * f).floor() as u32).max(least) + keep(k))
+            .collect()
+    };
+    // The largest common factor whose heights (each at least `least`)
+    // keep the budget; at the smallest the heights no longer change, so a
+    // page as tall as they need holds them.
+    let mut f = (budget - SHARED_SAVES as f32) / (sum - SHARED_SAVES) as f32;
+    while f > 0.01 && at(f).iter().sum::<u32>() as f32 > budget {
+        f *= 0.97;
+    }
+    at(f)
 }
 
 /// The linear theory at one α: gap ω₊(0) (1/τ) and barrier ΔU per pair
@@ -327,7 +339,7 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
     } else {
         vec![FRONT_HEIGHT, 260]
     };
-    let h = fitted_heights(&wanted, 90);
+    let h = fitted_heights(&wanted, LEAST_PANEL);
     let mut panels = vec![
         (line_chart(&front, width(), h[0])?, h[0]),
         (line_chart(&speed, width(), h[1])?, h[1]),
@@ -521,7 +533,7 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
     } else {
         vec![480]
     };
-    let h = fitted_heights(&wanted, 90);
+    let h = fitted_heights(&wanted, LEAST_PANEL);
     let main = cell_chart(&chart, width(), h[0])?;
     let mut panels = vec![(main, h[0])];
     if theory {

@@ -267,7 +267,7 @@ fn dispersion_key(width: u32) -> Result<Picture> {
     ];
     let widths: Vec<f32> = entries
         .iter()
-        .map(|e| 34.0 + style::text_width(e.0, size::TICK) + 22.0)
+        .map(|e| 34.0 + style::text_width(e.0, crate::render::charts::tick_px()) + 22.0)
         .collect();
     let room = width as f32 - 2.0 * size::MARGIN as f32;
     let mut rows: Vec<Vec<usize>> = vec![vec![]];
@@ -298,7 +298,7 @@ fn dispersion_key(width: u32) -> Result<Picture> {
             p.text(
                 e.0,
                 (x + 34.0, y),
-                size::TICK,
+                crate::render::charts::tick_px(),
                 DARK,
                 (HAlign::Left, VAlign::Middle),
             );
