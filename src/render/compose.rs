@@ -383,7 +383,7 @@ const FIT_SHARE: f32 = 0.8;
 
 /// Snapshots with marks are drawn at no less than this share of their
 /// width: the marks' words need the room beside the chain.
-const MARKED_SHARE: f32 = 0.7;
+const MARKED_SHARE: f32 = 0.8;
 
 /// The time caption of snapshot `k` of a strip: "t/τ = …" under the
 /// first, and under the others (when `once`, at a print style) the time

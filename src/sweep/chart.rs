@@ -66,14 +66,25 @@ pub fn outcome_marker(o: Outcome, antikink: bool) -> Marker {
 /// The least height of a stacked panel, pixels (a chart's smallest).
 const LEAST_PANEL: u32 = 120;
 
+/// Height the front panel's legend (up to six entries, in rows of two
+/// under the plot) may take, pixels.
+const FRONT_LEGEND_ROOM: u32 = 80;
+
+/// The least height of a panel whose y axis says `label`: room for the
+/// rotated label along the plot, and at least [`LEAST_PANEL`].
+fn least_for(label: &str) -> u32 {
+    let along = style::text_width(label, style::size::LABEL) + 36.0;
+    (along.ceil() as u32).max(LEAST_PANEL)
+}
+
 /// Pixels a panel whose x axis is shared (labelled below) does not need.
 const SHARED_SAVES: u32 = 46;
 
 /// Heights of stacked panels that want `wanted` pixels each: as asked at
 /// screen; at a print style scaled down together, if need be, so that the
 /// stack keeps the page budget ([`crate::render::Theme::max_height_pt`]),
-/// none below `least`.
-fn fitted_heights(wanted: &[u32], least: u32) -> Vec<u32> {
+/// none below its `least`.
+fn fitted_heights(wanted: &[u32], least: &[u32]) -> Vec<u32> {
     // The page's height in the design pixels composed figures are laid
     // out in (a slide's twice its own, Style::fit_box).
     let Some((_, page)) = crate::render::Style::current().fit_box() else {
@@ -105,7 +116,7 @@ fn fitted_heights(wanted: &[u32], least: u32) -> Vec<u32> {
         wanted
             .iter()
             .enumerate()
-            .map(|(k, h)| (((*h - keep(k)) as f32 * f).floor() as u32).max(least) + keep(k))
+            .map(|(k, h)| (((*h - keep(k)) as f32 * f).floor() as u32).max(least[k]) + keep(k))
             .collect()
     };
     // The largest common factor whose heights (each at least `least`)
@@ -339,7 +350,18 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
     } else {
         vec![FRONT_HEIGHT, 260]
     };
-    let h = fitted_heights(&wanted, LEAST_PANEL);
+    let mut least: Vec<u32> = [front.y.label.as_str(), speed.y.label.as_str()]
+        .into_iter()
+        .chain(["gap ω₊(0) τ", "barrier ΔU / mgs"])
+        .map(least_for)
+        .collect();
+    // The front panel's legend may go under its plot: room for its rows.
+    least[0] += if width() < 400 {
+        2 * FRONT_LEGEND_ROOM
+    } else {
+        FRONT_LEGEND_ROOM
+    };
+    let h = fitted_heights(&wanted, &least);
     let mut panels = vec![
         (line_chart(&front, width(), h[0])?, h[0]),
         (line_chart(&speed, width(), h[1])?, h[1]),
@@ -533,7 +555,13 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
     } else {
         vec![480]
     };
-    let h = fitted_heights(&wanted, LEAST_PANEL);
+    // The phase diagram keeps room for its colour bar's three ticks.
+    let least = [
+        least_for(py.label()).max(2 * LEAST_PANEL),
+        least_for("gap ω₊(0) τ"),
+        least_for("barrier ΔU / mgs"),
+    ];
+    let h = fitted_heights(&wanted, &least);
     let main = cell_chart(&chart, width(), h[0])?;
     let mut panels = vec![(main, h[0])];
     if theory {
