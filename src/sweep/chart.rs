@@ -64,7 +64,7 @@ pub fn outcome_marker(o: Outcome, antikink: bool) -> Marker {
 }
 
 /// The least height of a stacked panel, pixels (a chart's smallest).
-const LEAST_PANEL: u32 = 120;
+const LEAST_PANEL: u32 = 110;
 
 /// Height the front panel's legend (up to six entries, in rows of two
 /// under the plot) may take, pixels.
@@ -73,7 +73,7 @@ const FRONT_LEGEND_ROOM: u32 = 80;
 /// The least height of a panel whose y axis says `label`: room for the
 /// rotated label along the plot, and at least [`LEAST_PANEL`].
 fn least_for(label: &str) -> u32 {
-    let along = style::text_width(label, style::size::LABEL) + 36.0;
+    let along = style::text_width(label, style::size::LABEL) + 24.0;
     (along.ceil() as u32).max(LEAST_PANEL)
 }
 
@@ -244,7 +244,7 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
     };
     let mut front = ChartSpec::new(
         x_axis().shared(),
-        Axis::new("front: last block reached").range(-0.3, n_max as f64 + 0.6),
+        Axis::new("front (last block)").range(-0.3, n_max as f64 + 0.6),
     )
     .title(title);
     // Every mark at its value (the CSV's front): folded, a wave's colour
@@ -352,7 +352,7 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
     };
     let mut least: Vec<u32> = [front.y.label.as_str(), speed.y.label.as_str()]
         .into_iter()
-        .chain(["gap ω₊(0) τ", "barrier ΔU / mgs"])
+        .chain(["gap ω₊(0) τ", "ΔU / mgs"])
         .map(least_for)
         .collect();
     // The front panel's legend may go under its plot: room for its rows.
@@ -453,14 +453,7 @@ fn theory_panel(
     };
     Ok(vec![
         panel("gap ω₊(0) τ", gap, palette::INK, false, true, gap_h)?,
-        panel(
-            "barrier ΔU / mgs",
-            barrier,
-            palette::INK,
-            true,
-            false,
-            barrier_h,
-        )?,
+        panel("ΔU / mgs", barrier, palette::INK, true, false, barrier_h)?,
     ])
 }
 
@@ -559,7 +552,7 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
     let least = [
         least_for(py.label()).max(2 * LEAST_PANEL),
         least_for("gap ω₊(0) τ"),
-        least_for("barrier ΔU / mgs"),
+        least_for("ΔU / mgs"),
     ];
     let h = fitted_heights(&wanted, &least);
     let main = cell_chart(&chart, width(), h[0])?;
