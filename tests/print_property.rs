@@ -246,14 +246,14 @@ fn widths(doc: &lopdf::Document, font: &lopdf::Dictionary) -> BTreeMap<u32, f64>
     let Some(desc) = font
         .get(b"DescendantFonts")
         .ok()
-        .and_then(|o| resolve(o))
+        .and_then(&resolve)
         .and_then(|o| o.as_array().ok().cloned())
     else {
         return out;
     };
     let Some(cid) = desc
         .first()
-        .and_then(|o| resolve(o))
+        .and_then(&resolve)
         .and_then(|o| o.as_dict().ok().cloned())
     else {
         return out;
@@ -261,7 +261,7 @@ fn widths(doc: &lopdf::Document, font: &lopdf::Dictionary) -> BTreeMap<u32, f64>
     let Some(w) = cid
         .get(b"W")
         .ok()
-        .and_then(|o| resolve(o))
+        .and_then(&resolve)
         .and_then(|o| o.as_array().ok().cloned())
     else {
         return out;
@@ -269,7 +269,7 @@ fn widths(doc: &lopdf::Document, font: &lopdf::Dictionary) -> BTreeMap<u32, f64>
     let mut i = 0;
     while i < w.len() {
         let first = num(&w[i]) as u32;
-        match w.get(i + 1).and_then(|o| resolve(o)) {
+        match w.get(i + 1).and_then(&resolve) {
             Some(lopdf::Object::Array(ws)) => {
                 for (k, v) in ws.iter().enumerate() {
                     out.insert(first + k as u32, num(v));
