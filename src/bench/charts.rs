@@ -207,7 +207,7 @@ fn legend_width(spec: &ChartSpec) -> u32 {
         .series
         .iter()
         .filter_map(|s| s.label.as_deref())
-        .map(|l| style::text_width(l, size::TICK))
+        .map(|l| style::text_width(l, crate::render::charts::tick_px()))
         .fold(0.0, f32::max);
     (text + 28.0 + 34.0 + 8.0).ceil() as u32
 }
@@ -501,7 +501,7 @@ fn stability_spec(report: &StabilityReport, names: &[&str]) -> ChartSpec {
 /// `image` with `text` wrapped underneath it.
 fn with_caption(image: &Pixmap, text: &str) -> Result<Pixmap> {
     let margin = size::MARGIN as f32 * 2.0;
-    let font_size = size::TICK;
+    let font_size = crate::render::charts::tick_px();
     let lines = style::wrap_text(text, image.width() as f32 - 2.0 * margin, font_size);
     let line_h = font_size * 1.45;
     let caption_h = (lines.len() as f32 * line_h + margin).ceil() as u32;

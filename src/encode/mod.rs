@@ -29,8 +29,8 @@ pub use isobmff::{Mp4Track, annex_b_units, mp4_file};
 pub use movie::MovieWriter;
 #[cfg(feature = "mp4")]
 pub use mp4::Mp4Writer;
-pub use pdf::{PdfOptions, pdf_bytes};
-pub use png::png_bytes;
+pub use pdf::{PdfOptions, creator, pdf_bytes};
+pub use png::{png_bytes, png_bytes_titled};
 pub use svg::svg_bytes;
 pub use yuv::{Yuv420, rgba_to_yuv420};
 
@@ -41,14 +41,14 @@ pub type Rgb = [u8; 3];
 pub const WHITE: Rgb = [255, 255, 255];
 
 /// Colours the scene palette ramps to from white: dark grey (blocks, text,
-/// axes), red (A springs, A ends), blue (B ends), green (B springs), and the
-/// two ends of the kymograph's diverging map. `render::style` uses exactly
-/// these values.
+/// axes), vermillion (A springs, A ends), blue (B springs, B ends), bluish
+/// green (the Okabe–Ito colours of `render::theme::palette`), and the two
+/// ends of the kymograph's diverging map.
 pub const PALETTE_ANCHORS: [Rgb; 6] = [
     [34, 34, 34],
-    [214, 39, 40],
-    [31, 119, 180],
-    [44, 160, 44],
+    [213, 94, 0],
+    [0, 114, 178],
+    [0, 158, 115],
     [33, 102, 172],
     [178, 24, 43],
 ];

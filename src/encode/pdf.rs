@@ -3,9 +3,11 @@
 //! i.e. 96 px per inch; a print style's page width over the design width),
 //! vector paths, and text as real text in the fonts the tree's layout
 //! chose, each subset and embedded (`pdf_font`), or as glyph outlines
-//! (`--text outlines`), content compressed with Deflate. PDF 1.4, no dates
-//! or IDs, so the bytes depend only on the picture. pdflatex includes it
-//! with `\includegraphics`.
+//! (`--text outlines`), content compressed with Deflate. PDF 1.5 (the
+//! highest version pdflatex includes without a warning), an Info dictionary
+//! with the figure's title and the program, version and commit that made
+//! it ([`crate::version`]), no dates or IDs, so the bytes depend only on the
+//! picture. pdflatex includes it with `\includegraphics`.
 //!
 //! Written with `pdf-writer` on the tree that the renderer already parses
 //! with resvg's own `usvg`: svg2pdf 0.13 and krilla-svg 0.8 would each have
@@ -22,20 +24,36 @@ use pdf_writer::{Content, Finish, Name, Pdf, Rect, Ref, Str};
 use resvg::usvg::{self, Node, Paint, tiny_skia_path::PathSegment};
 
 /// How a PDF page is made from a tree.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct PdfOptions {
     /// Points per pixel of the tree. Default: 0.75 (96 px per inch).
     pub pt_per_px: f32,
     /// Text as text with embedded fonts (`true`) or as outlines. Default:
     /// text.
     pub real_text: bool,
+    /// The document's title (the Info dictionary's `/Title`). Default:
+    /// none.
+    pub title: Option<String>,
 }
+
+/// What made a figure file: `ladder 0.1.0 (commit 1a2b3c4d5e6f)`, the
+/// creator every figure format records (PDF `/Creator`, SVG `<metadata>`,
+/// PNG `Software`).
+pub fn creator() -> String {
+    format!("ladder {}", crate::version::LONG)
+}
+
+/// The PDF version written: 1.5, the highest pdflatex's default
+/// `\pdfminorversion` accepts without a warning ("found PDF version <1.7>,
+/// but at most version <1.5> allowed"). Nothing we write needs more.
+pub const PDF_VERSION: (u8, u8) = (1, 5);
 
 impl Default for PdfOptions {
     fn default() -> Self {
         Self {
             pt_per_px: 0.75,
             real_text: true,
+            title: None,
         }
     }
 }
@@ -59,6 +77,18 @@ pub fn pdf_bytes(tree: &usvg::Tree, opts: PdfOptions) -> Result<Vec<u8>> {
         (Ref::new(1), Ref::new(2), Ref::new(3), Ref::new(4));
     let mut next = 5;
     let mut pdf = Pdf::new();
+    pdf.set_version(PDF_VERSION.0, PDF_VERSION.1);
+    let info_id = Ref::new(next);
+    next += 1;
+    {
+        let mut info = pdf.document_info(info_id);
+        if let Some(t) = opts.title.as_deref().filter(|t| !t.is_empty()) {
+            info.title(pdf_writer::TextStr(t));
+        }
+        let made_by = creator();
+        info.creator(pdf_writer::TextStr(&made_by));
+        info.producer(pdf_writer::TextStr(&made_by));
+    }
     let font_ids = page.fonts.write(&mut pdf, &mut next)?;
     pdf.catalog(catalog).pages(pages);
     pdf.pages(pages).kids([page_id]).count(1);

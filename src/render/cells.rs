@@ -82,13 +82,13 @@ fn draw_cells(area: &Area<'_>, c: &CellChart) -> Result<()> {
     // (turned on its side) and the gaps between them: at least 64 px.
     let widest =
         c.ys.iter()
-            .map(|&y| style::text_width(&short_number(y), size::TICK))
+            .map(|&y| style::text_width(&short_number(y), crate::render::charts::tick_px()))
             .fold(0.0f32, f32::max);
     let y_area = (widest + size::LABEL + 11.0).floor().max(64.0) as u32;
     // As many x labels as fit side by side with a gap (at most 10).
     let widest_x =
         c.xs.iter()
-            .map(|&x| style::text_width(&short_number(x), size::TICK))
+            .map(|&x| style::text_width(&short_number(x), crate::render::charts::tick_px()))
             .fold(0.0f32, f32::max);
     let plot_w = area.dim_in_pixel().0 as f32 - y_area as f32 - 20.0;
     let x_room = ((plot_w / (widest_x + 12.0)).floor() as usize).clamp(2, 10);
@@ -141,7 +141,9 @@ fn ticks(cells: usize, most: usize) -> usize {
 }
 
 fn draw_legend(area: &Area<'_>, c: &CellChart) -> Result<()> {
-    let text = font(size::TICK).into_font().color(&rgb(DARK));
+    let text = font(crate::render::charts::tick_px())
+        .into_font()
+        .color(&rgb(DARK));
     let mut y = 30;
     for (label, color) in &c.legend {
         area.draw(&Rectangle::new(
@@ -248,7 +250,8 @@ mod tests {
                     label_right = Some(attr("x").unwrap() + size::LABEL);
                 } else if c.ys.iter().any(|&y| short_number(y) == body) {
                     let right = attr("x").unwrap();
-                    ticks_left = ticks_left.min(right - style::text_width(body, size::TICK));
+                    ticks_left = ticks_left
+                        .min(right - style::text_width(body, crate::render::charts::tick_px()));
                 }
             }
             let label_right = label_right.expect("the y label is drawn");

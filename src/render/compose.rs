@@ -85,7 +85,7 @@ fn bands(panels: &[Panel]) -> (u32, u32) {
     let label = panels.iter().any(|p| p.label.is_some());
     let caption = panels.iter().any(|p| p.caption.is_some());
     let l = if label {
-        (size::PANEL_LABEL * 1.5) as u32
+        (super::Theme::current().panel_label * 1.5) as u32
     } else {
         0
     };
@@ -137,7 +137,7 @@ impl Grid {
         let title_h = layout
             .title
             .as_ref()
-            .map_or(0, |_| (size::TITLE * 1.8) as u32);
+            .map_or(0, |_| super::Theme::current().title_band() as u32);
         let (m, g) = (layout.margin, layout.gap);
         let width = 2 * m + col_w.iter().sum::<u32>() + (cols as u32 - 1) * g;
         let cells_h: u32 = row_h.iter().map(|h| h + label_h + caption_h).sum();
@@ -189,7 +189,8 @@ pub fn compose_picture(panels: &[Panel], layout: &Layout) -> Result<Picture> {
     let mut out = Picture::new(width as f32, grid.height as f32);
     if let Some(t) = &layout.title {
         let at = (0.5 * width as f32, m as f32);
-        out.text(t, at, size::TITLE, DARK, (HAlign::Center, VAlign::Top));
+        let size = super::Theme::current().title;
+        out.text(t, at, size, DARK, (HAlign::Center, VAlign::Top));
     }
     for (k, p) in panels.iter().enumerate() {
         let at = grid.image_origin(k, p.image.pixel_size());
@@ -208,7 +209,13 @@ fn draw_panel(
     out.place(&p.image, (ix as f32, iy as f32));
     if let Some(l) = &p.label {
         let at = (x as f32 + 2.0, y as f32);
-        out.text(l, at, size::PANEL_LABEL, DARK, (HAlign::Left, VAlign::Top));
+        out.text(
+            l,
+            at,
+            super::Theme::current().panel_label,
+            DARK,
+            (HAlign::Left, VAlign::Top),
+        );
     }
     if let Some(c) = &p.caption {
         // One text per line, each centred under the image.
@@ -289,16 +296,11 @@ fn mark_text() -> f32 {
     at_least_print_min(11.0)
 }
 
-/// `px` pixels, or more at a print style: enough for
-/// [`super::page_style::MIN_PRINT_TEXT_PT`] plus a tenth of a point, when
-/// the picture is printed at the style's own scale.
+/// `px` pixels, or more at a print style: the style's text size
+/// ([`super::Theme::text_at_least`]), when the picture is printed at the
+/// style's own scale.
 pub fn at_least_print_min(px: f32) -> f32 {
-    let style = super::Style::current();
-    if !style.is_print() {
-        return px;
-    }
-    let min = (super::page_style::MIN_PRINT_TEXT_PT + 0.1) * style.px_per_pt();
-    px.max(min.ceil())
+    super::Theme::current().text_at_least(px)
 }
 /// Pixels from the chain to a mark's tip, of its triangle, and from the
 /// triangle to the label.
@@ -382,6 +384,21 @@ const FIT_SHARE: f32 = 0.8;
 /// Snapshots with marks are drawn at no less than this share of their
 /// width: the marks' words need the room beside the chain.
 const MARKED_SHARE: f32 = 0.8;
+
+/// The time caption of snapshot `k` of a strip: "t/τ = …" under the
+/// first, and under the others (when `once`, at a print style) the time
+/// alone, so that "t/τ =" is said once per row of a strip.
+fn time_caption(k: usize, time: f64, once: bool) -> String {
+    let full = snapshot::time_label(time);
+    if once && k > 0 {
+        full.rsplit(" = ").next().unwrap_or(&full).to_string()
+    } else {
+        full
+    }
+}
+
+/// Margin of a strip fitted into a box (its figure has its own).
+const FIT_MARGIN: u32 = 4;
 
 /// A time caption, on two lines ("t/τ =" over the time) when `two`.
 fn two_lines(caption: &str, two: bool) -> String {
@@ -554,15 +571,16 @@ impl StripPlan {
             return self;
         };
         let (w, h) = self.size;
-        let (m, gap) = (size::MARGIN as f32, self.gap as f32);
+        let (m, gap) = (FIT_MARGIN as f32, self.gap as f32);
         let title = if opts.title.is_some() || opts.label.is_some() {
-            (size::TITLE * 1.8).floor()
+            super::Theme::current().title_band()
         } else {
             0.0
         };
         let captions: Vec<String> = frames
             .iter()
-            .map(|f| snapshot::time_label(f.time))
+            .enumerate()
+            .map(|(k, f)| time_caption(k, f.time, true))
             .collect();
         let widest = |two: bool| {
             captions
@@ -695,11 +713,18 @@ fn strip_panels(
     for (k, f) in frames.iter().enumerate() {
         let marks = opts.marks.get(k).map_or(&[][..], |m| m.as_slice());
         let img = plan.picture(f, marks)?;
-        let caption = two_lines(&snapshot::time_label(f.time), plan.two_line);
+        // Fitted at a print style: "t/τ =" once, at the start of each row.
+        let once = opts.fit.is_some() && plan.fold.is_none();
+        let first_of_row = if once { k % plan.per_row.max(1) } else { k };
+        let text = time_caption(first_of_row, f.time, once);
+        let caption = two_lines(&text, plan.two_line);
         panels.push(Panel::new(img).caption(caption));
     }
     let mut layout = Layout::columns(plan.per_row);
     layout.gap = plan.gap;
+    if opts.fit.is_some() {
+        layout.margin = FIT_MARGIN;
+    }
     // A label without a title still gets the title band, above the frames.
     layout.title = opts
         .title
@@ -720,7 +745,8 @@ pub fn filmstrip_picture(
     let mut strip = compose_picture(&panels, &layout)?;
     if let Some(l) = &opts.label {
         let at = (layout.margin as f32, layout.margin as f32);
-        strip.text(l, at, size::PANEL_LABEL, DARK, (HAlign::Left, VAlign::Top));
+        let size = super::Theme::current().panel_label;
+        strip.text(l, at, size, DARK, (HAlign::Left, VAlign::Top));
     }
     Ok(strip)
 }

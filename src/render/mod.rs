@@ -21,6 +21,7 @@ pub mod snapshot;
 pub mod style;
 mod svg;
 pub mod text_boxes;
+pub mod theme;
 
 pub use canvas::{Canvas, Cap, Pen, Raster};
 pub use charts::{Axis, Chart, ChartSpec, Kymograph, Legend, LineStyle, Marker, Scale, Series};
@@ -30,3 +31,4 @@ pub use page_style::{FontChoice, Length, Style, StyleName, StyleSpec, TextMode};
 pub use picture::{Item, Picture};
 pub use snapshot::{Region, Snapshot, View};
 pub use text_boxes::TextBox;
+pub use theme::Theme;

@@ -4,8 +4,8 @@
 //! rcParams and SciencePlots in spirit).
 //!
 //! Every figure is laid out in *design pixels* with the text sizes of
-//! [`super::style::size`] (axis labels 15 px). A style fixes how many design
-//! pixels a point is, `px_per_pt = size::LABEL / font_pt`, so one scale turns
+//! [`super::theme::size`] (axis labels 15 px). A style fixes how many design
+//! pixels a point is, `px_per_pt = DESIGN_TEXT_PX / font_pt`, so one scale turns
 //! text, line widths, markers and gaps into points together: at `paper`
 //! (8 pt text) an axis label of 15 px prints at 8 pt, a 2 px line at 1.07 pt.
 //! A print style also fixes the page width, so a chart is laid out in a
@@ -16,8 +16,11 @@
 //! ([`Style::current`], set by [`Style::apply`]) that charts and layouts ask
 //! for sizes, the font and the frame, as plotting libraries' rc contexts do.
 
-use super::style::size;
 use std::cell::Cell;
+
+/// Design pixels of text at the style's size: the one scale from which a
+/// style's points follow (`px_per_pt = DESIGN_TEXT_PX / font_pt`).
+pub const DESIGN_TEXT_PX: f32 = 15.0;
 
 /// The named styles of `--style`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -150,10 +153,11 @@ pub const MM_PER_IN: f32 = 25.4;
 /// Smallest text a print style may set, in points (SPEC section 10).
 pub const MIN_PRINT_TEXT_PT: f32 = 6.0;
 /// Tallest a figure may print at a print style without a page height, in
-/// points: 9.5 in, the text height of an APS (Physical Review) page less
-/// room for the caption's first lines (the page's text block is about
-/// 9.6–10 in).
-pub const MAX_FIGURE_HEIGHT_PT: f32 = 9.5 * PT_PER_IN;
+/// points: 4.5 in, so that a figure with its caption takes at most about
+/// half of an APS (Physical Review) page's text block (9.6–10 in) and
+/// floats beside text (the paper's Fig. 3, four rows of seven ladders, is
+/// one PRL column about that tall).
+pub const MAX_FIGURE_HEIGHT_PT: f32 = 4.5 * PT_PER_IN;
 /// Text size, in points, down to which a figure composed for a style with
 /// larger text (a slide's 20 pt) may be set, so that filmstrips and
 /// panels fit one slide.
@@ -166,7 +170,7 @@ impl Style {
             name,
             width_pt: None,
             height_pt: None,
-            font_pt: size::LABEL * 0.75,
+            font_pt: DESIGN_TEXT_PX * 0.75,
             font: FontChoice::Sans,
             dpi: 96.0,
             text: TextMode::Text,
@@ -205,7 +209,7 @@ impl Style {
     /// Design pixels per point: the one scale from which text, lines,
     /// markers and gaps follow (4/3 at screen, 15/8 at paper).
     pub fn px_per_pt(&self) -> f32 {
-        size::LABEL / self.font_pt
+        DESIGN_TEXT_PX / self.font_pt
     }
 
     /// The design frame a figure whose own size is `natural` is laid out
@@ -216,9 +220,11 @@ impl Style {
             return natural;
         };
         let w = (w_pt * self.px_per_pt()).round().max(60.0);
+        // From the natural aspect ratio, no taller than the page allows.
         let h = match self.height_pt {
             Some(h_pt) => h_pt * self.px_per_pt(),
-            None => w * natural.1 as f32 / natural.0.max(1) as f32,
+            None => (w * natural.1 as f32 / natural.0.max(1) as f32)
+                .min(MAX_FIGURE_HEIGHT_PT * self.px_per_pt()),
         };
         (w as u32, h.round().max(60.0) as u32)
     }
@@ -498,10 +504,10 @@ mod tests {
     #[test]
     fn fit_boxes() {
         let p = Style::named(StyleName::Paper);
-        // 9.5 in = 684 pt; 15/8 px per pt at 8 pt text.
-        assert_eq!(p.max_height_pt(), Some(684.0));
+        // 4.5 in = 324 pt; 15/8 px per pt at 8 pt text.
+        assert_eq!(p.max_height_pt(), Some(324.0));
         let (w, h) = p.fit_box().unwrap();
-        assert!((w - 243.0 * 15.0 / 8.0).abs() < 1e-3 && (h - 684.0 * 15.0 / 8.0).abs() < 1e-3);
+        assert!((w - 243.0 * 15.0 / 8.0).abs() < 1e-3 && (h - 324.0 * 15.0 / 8.0).abs() < 1e-3);
         let s = Style::named(StyleName::Slide);
         assert_eq!(s.max_height_pt(), Some(540.0));
         // 20 pt text composed down to 10 pt: twice the 0.75 px per pt frame.

@@ -60,6 +60,12 @@ pub struct Picture {
     items: Vec<Item>,
     /// Groups being recorded (their transform and items so far).
     open: Vec<(Transform, Vec<Item>)>,
+    /// The document's title (markup of [`style::runs`]), recorded in every
+    /// file's metadata, never drawn by the encoders.
+    title: Option<String>,
+    /// The size of what [`Picture::fit_page`] centred on a wider page
+    /// (then the picture would print smaller than the style's text).
+    content: Option<(f32, f32)>,
 }
 
 /// Largest side of a raster, in pixels.
@@ -73,7 +79,21 @@ impl Picture {
             height: height.max(1.0),
             items: Vec::new(),
             open: Vec::new(),
+            title: None,
+            content: None,
         }
+    }
+
+    /// The picture with `title` as its document title (the metadata of its
+    /// PDF, SVG and PNG files).
+    pub fn titled(mut self, title: impl Into<String>) -> Picture {
+        self.title = Some(title.into());
+        self
+    }
+
+    /// The document title, without markup.
+    pub fn title(&self) -> Option<String> {
+        self.title.as_deref().map(style::plain_text)
     }
 
     /// Design width in pixels.
@@ -145,6 +165,8 @@ impl Picture {
         }
         let mut out = Picture::new(width, self.height);
         out.place(&self, ((0.5 * (width - self.width)).floor(), 0.0));
+        out.content = Some(self.content.unwrap_or((self.width, self.height)));
+        out.title = self.title;
         out
     }
 
@@ -201,6 +223,7 @@ impl Picture {
     /// `screen`), text as text or outlines as the style says.
     pub fn encode(&self, formats: &Formats, scale: f32) -> Result<Vec<Vec<u8>>> {
         let style = Style::current();
+        self.check_print_scale(&style)?;
         let pt_per_px = style.pt_per_px(self.width);
         let real_text = style.text == TextMode::Text;
         let tree = if formats.any_vector() {
@@ -208,29 +231,85 @@ impl Picture {
         } else {
             None
         };
+        let title = self.title();
+        let meta = |svg: Vec<u8>| super::svg::with_metadata(svg, title.as_deref());
         formats
             .as_slice()
             .iter()
             .map(|f| match (f, &tree) {
-                (Format::Png, _) => {
-                    encode::png_bytes(&self.rasterize(style.png_scale(self.width) * scale)?)
-                }
-                (Format::Svg, Some(_)) if real_text => {
-                    Ok(super::svg::document_in_points(self, pt_per_px)?.into_bytes())
-                }
+                (Format::Png, _) => encode::png_bytes_titled(
+                    &self.rasterize(style.png_scale(self.width) * scale)?,
+                    title.as_deref(),
+                ),
+                (Format::Svg, Some(_)) if real_text => Ok(meta(
+                    super::svg::document_in_points(self, pt_per_px)?.into_bytes(),
+                )),
                 // Outlines: a tree whose pixels are 1/96 in (0.75 pt).
-                (Format::Svg, Some(t)) if pt_per_px == 0.75 => Ok(encode::svg_bytes(t)),
-                (Format::Svg, Some(_)) => Ok(encode::svg_bytes(&self.to_tree(pt_per_px / 0.75)?)),
+                (Format::Svg, Some(t)) if pt_per_px == 0.75 => Ok(meta(encode::svg_bytes(t))),
+                (Format::Svg, Some(_)) => {
+                    Ok(meta(encode::svg_bytes(&self.to_tree(pt_per_px / 0.75)?)))
+                }
                 (Format::Pdf, Some(t)) => encode::pdf_bytes(
                     t,
                     encode::PdfOptions {
                         pt_per_px,
                         real_text,
+                        title: title.clone(),
                     },
                 ),
                 _ => Err(Error::failed(format!("a figure cannot be written as {f}"))),
             })
             .collect()
+    }
+
+    /// Refuses (exit 2) a picture that would print its text smaller than
+    /// the style's size: one whose content is wider than the page, or
+    /// taller than the page allows, at the style's scale (SPEC section 10:
+    /// text is never scaled to fit). The message names the flag and the
+    /// smallest size that holds the figure. Composed figures at a style
+    /// whose text is above [`super::page_style::SMALLEST_COMPOSED_TEXT_PT`]
+    /// (a slide) may set their text down to that size.
+    pub fn check_print_scale(&self, style: &Style) -> Result<()> {
+        let (Some(w_pt), Some(max_h)) = (style.width_pt, style.max_height_pt()) else {
+            return Ok(());
+        };
+        let zoom = (style.font_pt / super::page_style::SMALLEST_COMPOSED_TEXT_PT).max(1.0);
+        let px_per_pt = style.px_per_pt() * zoom;
+        let (cw, ch) = self.content.unwrap_or((self.width, self.height));
+        let (need_w, need_h) = (cw / px_per_pt, ch / px_per_pt);
+        // Rounding of whole design pixels is no shrinking.
+        let slack = 1.005;
+        let what = self
+            .title()
+            .filter(|t| !t.is_empty())
+            .map_or("the figure".to_string(), |t| format!("\"{t}\""));
+        let size = |pt: f32| format!("{:.2}in", (pt / 72.0 * 100.0).ceil() / 100.0);
+        if need_w > w_pt * slack {
+            return Err(Error::bad_input(format!(
+                "--width {}: too narrow for {what} at {} pt text (it would print its text \
+                 smaller); the smallest width that holds it is --width {}",
+                size(w_pt),
+                style.font_pt,
+                size(need_w)
+            )));
+        }
+        if need_h > max_h * slack {
+            let asked = match style.height_pt {
+                Some(h) => format!("--height {}", size(h)),
+                None => format!(
+                    "the {} page budget of --style {}",
+                    size(max_h),
+                    style.name.name()
+                ),
+            };
+            return Err(Error::bad_input(format!(
+                "{asked}: too short for {what} at {} pt text (it would print its text \
+                 smaller); the smallest height that holds it is --height {}",
+                style.font_pt,
+                size(need_h)
+            )));
+        }
+        Ok(())
     }
 
     /// The picture parsed as an SVG tree with the bundled font: the input

@@ -8,7 +8,8 @@
 
 use super::canvas::{Canvas, Pen, Raster};
 use super::picture::Picture;
-use super::style::{self, DARK, GREEN, GREY, HAlign, RED, VAlign, WHITE, size};
+use super::style::{self, DARK, GREY, HAlign, VAlign, WHITE, size};
+use super::theme::palette;
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::model::Ladder;
@@ -423,10 +424,10 @@ impl Palette {
     fn live() -> Palette {
         Palette {
             block: DARK,
-            a_end: RED,
-            b_end: style::BLUE,
-            a_spring: RED,
-            b_spring: GREEN,
+            a_end: palette::SPRING_A,
+            b_end: palette::SPRING_B,
+            a_spring: palette::SPRING_A,
+            b_spring: palette::SPRING_B,
         }
     }
 
@@ -442,14 +443,17 @@ impl Palette {
     }
 }
 
-/// Springs first, then the blocks on top of them.
+/// Springs first, then the blocks on top of them. B springs are dashed
+/// (dashes three spring widths long, gaps two): the cue besides colour that
+/// tells them from the A springs in grey print and to colour-blind eyes.
 fn draw_ladder(canvas: &mut impl Canvas, map: &Mapping, q: &[f64], pal: &Palette) {
     let n = q.len() / 3;
     let spring_w = map.len(0.045, 1.0, 4.0);
     let block_w = map.len(0.16, 2.5, 14.0);
     let (a_pen, b_pen) = (
         Pen::new(spring_w, pal.a_spring),
-        Pen::new(spring_w, pal.b_spring),
+        Pen::new(spring_w, pal.b_spring)
+            .dashed((3.0 * spring_w).max(2.5), (2.0 * spring_w).max(1.5)),
     );
     let mut prev = None;
     for i in 0..n {

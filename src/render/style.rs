@@ -9,7 +9,10 @@
 //! which is fast enough for a time label on every movie frame.
 
 use super::page_style::{FontChoice, Style};
-use crate::encode::{PALETTE_ANCHORS, PALETTE_EXTRAS, Rgb};
+pub use super::theme::SCRIPT_SCALE;
+use super::theme::palette;
+pub use super::theme::size;
+use crate::encode::Rgb;
 use ab_glyph::{Font, FontRef, PxScale, ScaleFont, point};
 use std::sync::{Arc, Once, OnceLock};
 use tiny_skia::{Color, Pixmap};
@@ -44,62 +47,39 @@ pub fn font_bytes(font: FontChoice) -> &'static [u8] {
     }
 }
 
+// The colours below are names the drawing code has used; every one is a
+// colour of the theme's one palette ([`super::theme::palette`]).
+
 /// Dark grey: blocks, text, axes, the clamp of block 1.
-pub const DARK: Rgb = PALETTE_ANCHORS[0];
-/// Red: A springs and the A end of each block (paper Fig. 2).
-pub const RED: Rgb = PALETTE_ANCHORS[1];
-/// Blue: the B end of each block; ω− curves.
-pub const BLUE: Rgb = PALETTE_ANCHORS[2];
-/// Green: B springs (paper Fig. 2).
-pub const GREEN: Rgb = PALETTE_ANCHORS[3];
+pub const DARK: Rgb = palette::INK;
+/// Vermillion: A springs and the A end of each block; ω₊ curves.
+pub const RED: Rgb = palette::VERMILLION;
+/// Blue: B springs (dashed) and the B end of each block; ω− curves.
+pub const BLUE: Rgb = palette::BLUE;
+/// Bluish green.
+pub const GREEN: Rgb = palette::BLUISH_GREEN;
 /// Negative end of the kymograph's diverging map (sin θ = −1).
-pub const KYMO_NEG: Rgb = PALETTE_ANCHORS[4];
+pub const KYMO_NEG: Rgb = crate::encode::PALETTE_ANCHORS[4];
 /// Positive end of the kymograph's diverging map (sin θ = +1).
-pub const KYMO_POS: Rgb = PALETTE_ANCHORS[5];
+pub const KYMO_POS: Rgb = crate::encode::PALETTE_ANCHORS[5];
 /// Grey: the ground state drawn underneath a deformed state.
-pub const GREY: Rgb = PALETTE_EXTRAS[0];
+pub const GREY: Rgb = palette::GREY;
 /// Background.
 pub const WHITE: Rgb = crate::encode::WHITE;
-/// A few more distinguishable series colours for charts (orange, purple,
-/// brown, pink, olive, cyan), after dark, red, blue, green.
+/// The palette's colours after ink, vermillion, blue and bluish green:
+/// orange, reddish purple, sky blue (then the first ones again).
 pub const SERIES_EXTRA: [Rgb; 6] = [
-    [255, 127, 14],
-    [148, 103, 189],
-    [140, 86, 75],
-    [227, 119, 194],
-    [188, 189, 34],
-    [23, 190, 207],
+    palette::ORANGE,
+    palette::REDDISH_PURPLE,
+    palette::SKY_BLUE,
+    palette::BLUISH_GREEN,
+    palette::VERMILLION,
+    palette::BLUE,
 ];
 
-/// Sizes in pixels at 100 % zoom.
-pub mod size {
-    /// Figure and panel titles.
-    pub const TITLE: f32 = 18.0;
-    /// Axis labels, captions, time labels.
-    pub const LABEL: f32 = 15.0;
-    /// Tick labels and legends.
-    pub const TICK: f32 = 13.0;
-    /// Panel labels such as "(a1)".
-    pub const PANEL_LABEL: f32 = 16.0;
-    /// Outer margin of composed images.
-    pub const MARGIN: u32 = 12;
-    /// Gap between panels.
-    pub const GAP: u32 = 10;
-}
-
-/// Okabe & Ito's colour-blind-safe qualitative palette ("Color Universal
-/// Design", 2008), for chart series: black (our dark grey), vermillion,
-/// blue, bluish green, orange, sky blue, reddish purple. Its yellow is left
-/// out: too pale on white paper.
-pub const OKABE_ITO: [Rgb; 7] = [
-    DARK,
-    [213, 94, 0],
-    [0, 114, 178],
-    [0, 158, 115],
-    [230, 159, 0],
-    [86, 180, 233],
-    [204, 121, 167],
-];
+/// Okabe & Ito's colour-blind-safe qualitative palette, for chart series
+/// ([`palette::SERIES`]).
+pub const OKABE_ITO: [Rgb; 7] = palette::SERIES;
 
 /// The `i`-th chart series colour, from [`OKABE_ITO`]; series should also
 /// differ by dash or marker (the palette repeats after seven).
@@ -325,8 +305,6 @@ impl Shift {
     }
 }
 
-/// Size of super- and subscripts relative to the text.
-pub const SCRIPT_SCALE: f32 = 0.7;
 /// Rise of a superscript's baseline, in units of the text's size.
 pub const SUPER_RISE: f32 = 0.38;
 /// Drop of a subscript's baseline, in units of the text's size.

@@ -26,6 +26,42 @@ pub fn document_in_points(picture: &Picture, pt_per_px: f32) -> Result<String> {
     document_sized(picture, (format!("{}pt", num(w)), format!("{}pt", num(h))))
 }
 
+/// `svg` (a document whose root is `<svg ...>`) with a `<title>` (when
+/// `title` is given) and a `<metadata>` naming the program, version and
+/// commit that made it, as the root's first children.
+pub fn with_metadata(svg: Vec<u8>, title: Option<&str>) -> Vec<u8> {
+    let Ok(text) = String::from_utf8(svg.clone()) else {
+        return svg;
+    };
+    let Some(open) = text.find("<svg") else {
+        return svg;
+    };
+    let Some(end) = text[open..].find('>').map(|e| open + e + 1) else {
+        return svg;
+    };
+    let mut meta = String::from("\n");
+    if let Some(t) = title.filter(|t| !t.is_empty()) {
+        let _ = writeln!(meta, "<title>{}</title>", xml_escape(t));
+    }
+    let _ = write!(
+        meta,
+        "<metadata><creator xmlns=\"http://purl.org/dc/elements/1.1/\">{}</creator></metadata>",
+        xml_escape(&crate::encode::creator())
+    );
+    let mut out = String::with_capacity(text.len() + meta.len());
+    out.push_str(&text[..end]);
+    out.push_str(&meta);
+    out.push_str(&text[end..]);
+    out.into_bytes()
+}
+
+fn xml_escape(t: &str) -> String {
+    t.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
 fn document_sized(picture: &Picture, (width, height): (String, String)) -> Result<String> {
     if picture.has_images() {
         return Err(Error::failed(

@@ -3,7 +3,7 @@
 //! simulation drawn.
 
 use super::Outputs;
-use super::dynamic::MovieOptions;
+use super::options::MovieOptions;
 use super::run::{IntegratorReport, SceneRun};
 use crate::encode::Format;
 use crate::encode::npz::{ArrayWriter, NpzWriter};

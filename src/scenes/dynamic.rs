@@ -3,11 +3,16 @@
 //! only to its last frame and is sampled only at the times drawn.
 
 pub use super::data::{FrameData, RunData};
+use super::kymograph::kymograph_picture;
+pub use super::kymograph::{MovieKymograph, frame_times};
+use super::options::MovieOptions;
+pub use super::options::{MAX_FRAMES, MAX_SIDE, MIN_SIDE};
 use super::run::{self, SceneRun};
+use super::walls::wall_marks;
+pub use super::walls::{Wall, walls};
 use crate::encode::{Format, MovieWriter, Mp4Quality};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
-use crate::render::charts::{self, Axis, ChartSpec, Kymograph, Marker, Series};
 use crate::render::compose::{
     self, ChainMark, FilmstripOptions, Frame, Layout, Panel, StripGeometry,
 };
@@ -15,62 +20,11 @@ use crate::render::fold::{self, Fold};
 use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::{Canvas, MovieLayout, Picture, style};
 use crate::scene::{Camera, MIN_BLOCK_PIXELS, OutputSpec, Scene, describe};
-use crate::sim::{self, Trajectory};
+use crate::sim::Trajectory;
 use tiny_skia::Pixmap;
 
-/// Movie frame count, size and rate.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct MovieOptions {
-    pub frames: usize,
-    pub width: u32,
-    pub height: u32,
-    pub fps: f64,
-}
-
-impl Default for MovieOptions {
-    fn default() -> Self {
-        Self {
-            frames: 200,
-            width: 640,
-            height: 480,
-            fps: 25.0,
-        }
-    }
-}
-
-/// Largest frame count and side accepted: bounded memory and time.
-pub const MAX_FRAMES: usize = 5000;
-pub const MIN_SIDE: u32 = 64;
-pub const MAX_SIDE: u32 = 4096;
-
-impl MovieOptions {
-    pub fn validated(self) -> Result<Self> {
-        if !(2..=MAX_FRAMES).contains(&self.frames) {
-            return Err(Error::bad_input(format!(
-                "a movie needs between 2 and {MAX_FRAMES} frames, got {}",
-                self.frames
-            )));
-        }
-        for side in [self.width, self.height] {
-            if !(MIN_SIDE..=MAX_SIDE).contains(&side) {
-                return Err(Error::bad_input(format!(
-                    "the frame size must be WxH with each side between {MIN_SIDE} and {MAX_SIDE} pixels, got {}x{}",
-                    self.width, self.height
-                )));
-            }
-        }
-        if !(self.fps.is_finite() && self.fps > 0.0 && self.fps <= 100.0) {
-            return Err(Error::bad_input(format!(
-                "the frame rate must be a number of frames per second in (0, 100], got {}",
-                self.fps
-            )));
-        }
-        Ok(self)
-    }
-}
-
 /// "kink α = 60°" or "antikink α = −60°".
-fn wave_name(alpha_deg: f64) -> String {
+pub(crate) fn wave_name(alpha_deg: f64) -> String {
     let kind = if alpha_deg > 0.0 { "kink" } else { "antikink" };
     format!("{kind} α = {}°", describe::num(alpha_deg))
 }
@@ -86,69 +40,6 @@ pub fn strip_frame(n: usize) -> (u32, u32) {
 /// Width of a filmstrip frame with [`wall_marks`]: room for "antikink"
 /// beside the chain.
 const MARKED_FRAME_WIDTH: u32 = 170;
-
-/// A domain wall of the chain: where the polarisation sin θₙ changes sign
-/// between two neighbouring blocks, at `at` blocks (linear between their
-/// centres). A kink has sin θ < 0 above and > 0 below (the flip of
-/// α > 0 → −α at the top); an antikink the reverse.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Wall {
-    pub at: f64,
-    pub kink: bool,
-}
-
-/// The domain walls of state `q`, top to bottom.
-pub fn walls(q: &[f64]) -> Vec<Wall> {
-    let p = sim::observables::polarisation(q);
-    p.windows(2)
-        .enumerate()
-        .filter(|(_, w)| w[0] * w[1] < 0.0)
-        .map(|(i, w)| Wall {
-            at: (i + 1) as f64 + w[0] / (w[0] - w[1]),
-            kink: w[0] < 0.0,
-        })
-        .collect()
-}
-
-/// Walls of opposite kinds closer than this, in blocks, are colliding.
-const COLLISION_BLOCKS: f64 = 1.0;
-
-/// The marks of a snapshot: "kink" on the left of the chain, "antikink" on
-/// the right, and "collision" where a kink and an antikink are less than
-/// [`COLLISION_BLOCKS`] apart (paper Fig. 4a).
-fn wall_marks(q: &[f64]) -> Vec<ChainMark> {
-    let w = walls(q);
-    let mut marks = Vec::new();
-    let mut k = 0;
-    while k < w.len() {
-        if let Some(next) = w.get(k + 1)
-            && next.kink != w[k].kink
-            && next.at - w[k].at < COLLISION_BLOCKS
-        {
-            marks.push(ChainMark {
-                at: 0.5 * (w[k].at + next.at),
-                label: "collision".into(),
-                color: style::DARK,
-                side: style::HAlign::Right,
-            });
-            k += 2;
-            continue;
-        }
-        let (label, color, side) = if w[k].kink {
-            ("kink", style::SERIES_EXTRA[0], style::HAlign::Left)
-        } else {
-            ("antikink", style::SERIES_EXTRA[1], style::HAlign::Right)
-        };
-        marks.push(ChainMark {
-            at: w[k].at,
-            label: label.into(),
-            color,
-            side,
-        });
-        k += 1;
-    }
-    marks
-}
 
 /// A simulated filmstrip: the run, its ladder and how to draw it.
 struct Strip {
@@ -212,16 +103,37 @@ impl Strip {
     }
 }
 
-/// The box each of `count` strips must fit at a print style, one strip a
-/// row under the figure's title on the style's page
-/// ([`crate::render::Style::fit_box`]); none at screen.
+/// Strips a row at a print style: two on a page wide enough for two
+/// strips of snapshots side by side (`paper-wide`), where the ladders are
+/// then drawn larger than one strip a row would, else one.
+fn print_columns(count: usize) -> usize {
+    let wide = crate::render::Style::current()
+        .fit_box()
+        .is_some_and(|(w, _)| w >= WIDE_PAGE);
+    if wide && count >= 2 { 2 } else { 1 }
+}
+
+/// Design width from which a print page takes two strips a row.
+const WIDE_PAGE: f32 = 800.0;
+
+/// The box each of `count` strips must fit at a print style, in
+/// [`print_columns`] strips a row under the figure's title on the style's
+/// page ([`crate::render::Style::fit_box`]); none at screen.
 fn strip_fit(count: usize) -> Option<(u32, u32)> {
     let (w, h) = crate::render::Style::current().fit_box()?;
-    let (m, gap) = (style::size::MARGIN as f32, style::size::GAP as f32);
-    let title = (style::size::TITLE * 1.8).floor();
-    let n = count.max(1) as f32;
-    let each = (h - 2.0 * m - title - (n - 1.0) * gap) / n;
-    Some(((w - 2.0 * m).floor() as u32, each.max(1.0).floor() as u32))
+    let theme = crate::render::Theme::current();
+    let (m, gap) = (theme.margin, theme.gap);
+    // The figure's title band, where the style draws titles.
+    let title = if theme.titles {
+        theme.title_band()
+    } else {
+        0.0
+    };
+    let cols = print_columns(count) as f32;
+    let rows = count.max(1).div_ceil(cols as usize) as f32;
+    let wide = (w - 2.0 * m - (cols - 1.0) * gap) / cols;
+    let each = (h - 2.0 * m - title - (rows - 1.0) * gap) / rows;
+    Some((wide.floor() as u32, each.max(1.0).floor() as u32))
 }
 
 /// The strips of a filmstrip scene, one per panel, with their data.
@@ -255,10 +167,23 @@ fn strips_layout(scene: &Scene, panels: &[Panel]) -> Layout {
         .map(|p| p.image.pixel_size().0)
         .max()
         .unwrap_or(0);
-    // At a print style the strips were fitted one a row.
+    // At a print style the strips were fitted [`print_columns`] a row.
     let print = crate::render::Style::current().is_print();
-    let two = !print && panels.len() > 2 && 2 * widest <= MAX_STRIP_ROW;
-    let layout = |columns| Layout::columns(columns).title(describe::title(scene));
+    let two = if print {
+        print_columns(panels.len()) == 2
+    } else {
+        panels.len() > 2 && 2 * widest <= MAX_STRIP_ROW
+    };
+    // Journal styles draw no figure title (the caption is the document's).
+    let titles = crate::render::Theme::current().titles;
+    let layout = |columns| {
+        let l = Layout::columns(columns);
+        if titles {
+            l.title(describe::title(scene))
+        } else {
+            l
+        }
+    };
     // Tall strips (of folded ladders) go side by side rather than make a
     // figure taller than a picture may be.
     let first = if two { 2 } else { 1 };
@@ -275,15 +200,60 @@ pub fn filmstrip_figure(
     scene: &Scene,
     frame: Option<(u32, u32)>,
 ) -> Result<(Picture, Vec<RunData>)> {
-    let strips = strips(scene, frame)?;
-    let mut panels = Vec::with_capacity(strips.len());
-    let mut data = Vec::with_capacity(strips.len());
-    for (strip, d) in strips {
-        panels.push(Panel::new(strip.picture(&d)?));
-        data.push(d);
+    let mut strips = strips(scene, frame)?;
+    let picture = compose_strips(scene, &strips)?.titled(describe::title(scene));
+    let style = crate::render::Style::current();
+    if let (Err(e), Some(asked)) = (picture.check_print_scale(&style), style.height_pt) {
+        // Too short a page for the style's text: refused, naming the
+        // smallest height that holds the strips (found by bisection of the
+        // layout; the runs are not repeated).
+        let fits = |strips: &mut Vec<(Strip, RunData)>, h: f32| -> Result<bool> {
+            let tall = crate::render::Style {
+                height_pt: Some(h),
+                ..style
+            };
+            tall.apply(|| {
+                let fit = strip_fit(strips.len());
+                for (s, _) in strips.iter_mut() {
+                    s.opts.fit = fit;
+                }
+                let p = compose_strips(scene, strips)?;
+                Ok(p.check_print_scale(&tall).is_ok())
+            })
+        };
+        let (mut lo, mut hi) = (asked, 2000.0f32);
+        if !fits(&mut strips, hi)? {
+            return Err(e);
+        }
+        while hi - lo > 0.5 {
+            let mid = 0.5 * (lo + hi);
+            if fits(&mut strips, mid)? {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        return Err(Error::bad_input(format!(
+            "--height {:.2}in: too short for \"{}\" at {} pt text (it would print its text \
+             smaller); the smallest height that holds it is --height {:.2}in",
+            asked / 72.0,
+            crate::render::style::plain_text(&describe::title(scene)),
+            style.font_pt,
+            (hi / 72.0 * 100.0).ceil() / 100.0
+        )));
     }
+    let data = strips.into_iter().map(|(_, d)| d).collect();
+    Ok((picture, data))
+}
+
+/// The strips drawn and composed into one figure on the style's page.
+fn compose_strips(scene: &Scene, strips: &[(Strip, RunData)]) -> Result<Picture> {
+    let panels = strips
+        .iter()
+        .map(|(s, d)| Ok(Panel::new(s.picture(d)?)))
+        .collect::<Result<Vec<_>>>()?;
     let layout = strips_layout(scene, &panels);
-    Ok((compose::compose_picture(&panels, &layout)?.fit_page(), data))
+    Ok(compose::compose_picture(&panels, &layout)?.fit_page())
 }
 
 /// For a test of the filmstrips: where [`filmstrip_figure`] draws every
@@ -305,7 +275,7 @@ pub fn filmstrip_geometry(scene: &Scene, frame: Option<(u32, u32)>) -> Result<Ve
         .collect()
 }
 
-fn panel_labels(scene: &Scene) -> Vec<String> {
+pub(crate) fn panel_labels(scene: &Scene) -> Vec<String> {
     match &scene.output {
         OutputSpec::Filmstrip { panels, .. } | OutputSpec::Arrivals { curves: panels } => {
             let mut l: Vec<String> = panels.iter().map(|p| p.label.clone()).collect();
@@ -316,148 +286,6 @@ fn panel_labels(scene: &Scene) -> Vec<String> {
         }
         _ => vec![String::new()],
     }
-}
-
-/// Speed in blocks per 1000 τ (see `observables::wave_speed`).
-pub fn fitted_speed(arrivals: &[Option<f64>]) -> Option<f64> {
-    sim::observables::wave_speed(arrivals).map(|v| 1000.0 * v)
-}
-
-/// The least-squares line t = t₀ + n/v through the arrival times of blocks
-/// 2..N−1 (the points [`sim::observables::wave_speed`] fits), drawn over
-/// the blocks the wave reached: its two ends, or `None` when fewer than
-/// three blocks flipped.
-fn fitted_line(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
-    let v = sim::observables::wave_speed(arrivals)?;
-    let last = arrivals.len().saturating_sub(1);
-    let pts: Vec<(f64, f64)> = (1..last)
-        .filter_map(|i| arrivals[i].map(|t| (i as f64 + 1.0, t)))
-        .collect();
-    let n = pts.len() as f64;
-    let (mn, mt) = pts
-        .iter()
-        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
-    let reached: Vec<f64> = arrivals
-        .iter()
-        .enumerate()
-        .filter_map(|(i, t)| t.map(|_| i as f64 + 1.0))
-        .collect();
-    let (lo, hi) = (reached.first()?, reached.last()?);
-    Some(vec![(*lo, mt + (lo - mn) / v), (*hi, mt + (hi - mn) / v)])
-}
-
-/// The arrival-time chart (figure S6): t_n against n for every wave of
-/// every run (from the run's waves record), each wave its own colour of
-/// the palette and its own marker, with its fitted line (solid for a
-/// kink, dashed for an antikink) and its fitted speed in the legend.
-pub fn arrivals_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
-    let (spec, data) = arrivals_chart(scene)?;
-    let (w, h) = crate::render::Style::current().frame((820, 560));
-    Ok((
-        Picture::from(charts::line_chart(&spec, w, h)?).fit_page(),
-        data,
-    ))
-}
-
-/// What [`arrivals_figure`] draws: the chart's series (each wave's marks,
-/// labelled, then its fitted line, unlabelled) and the runs' data.
-pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
-    // `t_end = "auto"` resolved here too, for callers of this function
-    // that did not go through `scenes::render_to` (a no-op when resolved).
-    let scene = &scene.with_auto_window()?;
-    let runs = scene.runs();
-    let labels = panel_labels(scene);
-    let n_max = runs.iter().map(|(s, _)| s.model.n).max().unwrap_or(10);
-    let mut spec = ChartSpec::new(
-        Axis::new("block n").range(0.5, n_max as f64 + 0.5),
-        Axis::new("arrival time tₙ / τ"),
-    )
-    .title(describe::title(scene));
-    let markers = [
-        Marker::Circle,
-        Marker::Square,
-        Marker::Triangle,
-        Marker::Cross,
-    ];
-    let mut k = 0;
-    let mut data = Vec::with_capacity(runs.len());
-    for ((s, _), label) in runs.iter().zip(&labels) {
-        let run = run::simulate(s, &[])?;
-        let traj = &run.trajectory;
-        let alpha = s.model.alpha;
-        // Each wave of the run; a run without a waves record is one wave.
-        let kind_of = |w: &sim::waves::Wave| w.kind == sim::waves::WaveKind::Kink;
-        let mut waves: Vec<DrawnWave<'_>> = traj
-            .waves
-            .waves
-            .iter()
-            .map(|w| (kind_of(w), w.launched_at, w.arrival_times.clone(), Some(w)))
-            .collect();
-        if waves.is_empty() {
-            waves.push((alpha > 0.0, 0.0, traj.arrival_times.clone(), None));
-        }
-        let several = waves.len() > 1;
-        for (kink, launched, arrivals, wave) in waves {
-            let pts: Vec<(f64, f64)> = arrivals
-                .iter()
-                .enumerate()
-                .filter_map(|(i, t)| t.map(|t| (i as f64 + 1.0, t)))
-                .collect();
-            if pts.is_empty() {
-                continue;
-            }
-            let speed = fitted_speed(&arrivals)
-                .map_or_else(|| without_speed(wave), |v| format!("{v:.1} blocks/1000τ"));
-            let word = if kink { "kink" } else { "antikink" };
-            let launched = describe::num(launched.round());
-            let name = match (several, label.is_empty()) {
-                (false, true) => wave_name(alpha),
-                (false, false) => label.clone(),
-                (true, true) => format!(
-                    "{word} from t/τ = {launched} (α = {}°)",
-                    describe::num(alpha)
-                ),
-                (true, false) => format!("{label}, {word} from t/τ = {launched}"),
-            };
-            let color = style::series_color(k + 1);
-            spec = spec.series(
-                Series::scatter(format!("{name}: {speed}"), pts, color, markers[k % 4])
-                    .with_width(1.5),
-            );
-            if let Some(line) = fitted_line(&arrivals) {
-                let fit = Series::line("", line, color).with_width(1.5);
-                spec = spec.series(if kink { fit } else { fit.dashed() });
-            }
-            k += 1;
-        }
-        data.push(RunData::new(label, s, &run));
-    }
-    Ok((spec, data))
-}
-
-/// A wave of the arrivals chart: kink or not, launched at, its arrival
-/// times, and its record (none for a run without a waves record).
-type DrawnWave<'a> = (bool, f64, Vec<Option<f64>>, Option<&'a sim::waves::Wave>);
-
-/// What the legend says of a wave with no fitted speed, from its fate
-/// (SPEC section 9): where the state proved it stopped (pinned if it never
-/// got past block 2, as a sweep says), where it was annihilated, or that
-/// it has no speed.
-fn without_speed(wave: Option<&sim::waves::Wave>) -> String {
-    use sim::waves::Fate;
-    match wave.map(|w| (w.fate, w.front)) {
-        // The sweeps' words (docs/sweeps.md): pinned if the front never got
-        // past block 2, stalled otherwise.
-        Some((Fate::Stopped, front)) if front <= 2 => format!("pinned at block {front}"),
-        Some((Fate::Stopped, front)) => format!("stalled at block {front}"),
-        Some((Fate::Annihilated { block, .. }, _)) => format!("annihilated at block {block}"),
-        _ => "no speed".to_string(),
-    }
-}
-
-/// Frame times of a movie: `frames` times evenly over [0, t_end].
-pub fn frame_times(t_end: f64, frames: usize) -> Vec<f64> {
-    crate::scene::even_times(t_end, frames)
 }
 
 /// A window that follows the kink: `x_span` long (along the ladder),
@@ -723,16 +551,6 @@ pub fn movie_column_numbers(
 /// written in the figure formats asked for), its data.
 pub type MovieFiles = (Vec<(Format, Vec<u8>)>, MovieKymograph, RunData);
 
-/// The kymograph beside a movie: a picture like any figure's, and the
-/// scale at which its PNG has the movie's pixels (above 640 × 480 the
-/// chart is laid out at the movie layout's design size and drawn scaled
-/// up, so its text grows with the movie's).
-pub struct MovieKymograph {
-    pub picture: Picture,
-    /// PNG pixels per picture pixel at `--scale 1`.
-    pub png_scale: f32,
-}
-
 /// A movie: its bytes in each of `formats` (GIF, MP4: the same frames),
 /// its kymograph and the run's data. Each frame shows the ladder on
 /// the left and, on the right, the kymograph of sin θ_n up to that frame;
@@ -807,127 +625,4 @@ pub fn movie_frame(scene: &Scene, opts: &MovieOptions, k: usize) -> Result<Pixma
     let shown = (k + 1) as f32 / frames as f32;
     plan.draw_frame(&mut canvas, &background, &heat, k, shown)?;
     Ok(canvas)
-}
-
-/// A kymograph figure: sin θ_n of the scene's run over `frames` rows.
-pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Picture, RunData)> {
-    // `t_end = "auto"` resolved here too, for callers of this function
-    // that did not go through `scenes::render_to` (a no-op when resolved).
-    let scene = &scene.with_auto_window()?;
-    let times = frame_times(scene.run.t_end, frames);
-    let run = run::simulate(scene, &times)?;
-    let title = describe::title(scene);
-    let (w, h) = crate::render::Style::current().frame((820, 560));
-    let image = kymograph_chart(&title, &run.trajectory, scene.model.n, w, h)?;
-    Ok((
-        Picture::from(image).fit_page(),
-        RunData::with_kymograph(scene, run),
-    ))
-}
-
-/// The kymograph of sin θ_n of `traj`: blocks across, time down, as a
-/// `width × height` image. Above 640 × 480 the chart is laid out at the
-/// size of the movie layout's design frame and drawn scaled up, so its
-/// text and lines grow with the image as the movie's do.
-pub fn kymograph_image(
-    title: &str,
-    traj: &Trajectory,
-    n: usize,
-    width: u32,
-    height: u32,
-) -> Result<Pixmap> {
-    let scale = MovieLayout::new(width, height, n).scale.max(1.0);
-    if scale <= 1.0 {
-        return Ok(kymograph_chart(title, traj, n, width, height)?.pixmap);
-    }
-    let design = |v: u32| ((v as f32 / scale).round() as u32).max(60);
-    let chart = kymograph_chart(title, traj, n, design(width), design(height))?;
-    let tree = chart
-        .tree()
-        .ok_or_else(|| Error::failed("the kymograph's SVG could not be parsed"))?;
-    charts::rasterize_tree(tree, width, height)
-}
-
-/// The kymograph of [`kymograph_image`] as a picture (for every figure
-/// format) with the scale at which its PNG is `width × height`.
-pub fn kymograph_picture(
-    title: &str,
-    traj: &Trajectory,
-    n: usize,
-    width: u32,
-    height: u32,
-) -> Result<MovieKymograph> {
-    let scale = MovieLayout::new(width, height, n).scale.max(1.0);
-    let design = |v: u32| ((v as f32 / scale).round() as u32).max(60);
-    let (w, h) = if scale <= 1.0 {
-        (width, height)
-    } else {
-        (design(width), design(height))
-    };
-    let chart = kymograph_chart(title, traj, n, w, h)?;
-    Ok(MovieKymograph {
-        png_scale: width as f32 / w as f32,
-        picture: chart.into(),
-    })
-}
-
-/// The kymograph chart (SVG and raster) of sin θ_n of `traj`.
-fn kymograph_chart(
-    title: &str,
-    traj: &Trajectory,
-    n: usize,
-    width: u32,
-    height: u32,
-) -> Result<charts::Chart> {
-    let states: Vec<&[f64]> = traj.states.iter().map(|q| q.as_slice()).collect();
-    let values = charts::polarisation_rows(&states);
-    let kymo_title = if title.ends_with("sin θₙ") {
-        title.to_string()
-    } else {
-        format!("{title}: sin θₙ")
-    };
-    let mut k = Kymograph::new(&traj.times, &values, n);
-    k.title = Some(&kymo_title);
-    charts::kymograph(&k, width, height)
-}
-
-#[cfg(test)]
-mod wall_tests {
-    use super::*;
-
-    /// A state with these block angles (degrees); centres unused.
-    fn state(theta_deg: &[f64]) -> Vec<f64> {
-        theta_deg
-            .iter()
-            .flat_map(|t| [0.0, 0.0, t.to_radians()])
-            .collect()
-    }
-
-    #[test]
-    fn walls_are_sign_changes_of_the_polarisation() {
-        // −α above +α: a kink between blocks 2 and 3; back to −α: an
-        // antikink between blocks 5 and 6, nearer block 6.
-        let q = state(&[-60.0, -60.0, 60.0, 60.0, 60.0, -10.0, -60.0]);
-        let w = walls(&q);
-        assert_eq!(w.len(), 2);
-        assert!(w[0].kink && (w[0].at - 2.5).abs() < 1e-12, "{w:?}");
-        assert!(!w[1].kink && w[1].at > 5.5 && w[1].at < 6.0, "{w:?}");
-        let marks = wall_marks(&q);
-        assert_eq!(marks.len(), 2);
-        assert!(marks[0].label == "kink" && marks[0].side == style::HAlign::Left);
-        assert!(marks[1].label == "antikink" && marks[1].side == style::HAlign::Right);
-        assert!(
-            walls(&state(&[60.0; 5])).is_empty(),
-            "a ground state has none"
-        );
-    }
-
-    #[test]
-    fn walls_less_than_a_block_apart_are_a_collision() {
-        let q = state(&[-60.0, -60.0, -20.0, 5.0, -20.0, -60.0]);
-        let marks = wall_marks(&q);
-        assert_eq!(marks.len(), 1, "{marks:?}");
-        assert_eq!(marks[0].label, "collision");
-        assert!((marks[0].at - 4.0).abs() < 1e-9);
-    }
 }

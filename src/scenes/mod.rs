@@ -3,17 +3,21 @@
 //! figures (geometry, formulas, linear theory); `dynamic` the simulated
 //! figures and the movies.
 
+pub mod arrivals;
 pub mod data;
 pub mod dynamic;
+pub mod kymograph;
+pub mod options;
 pub mod run;
 pub mod theory;
+pub mod walls;
 
 use crate::encode::{Format, Formats, Kind as FormatKind, Mp4Quality};
 use crate::error::{Error, Result};
 use crate::render::Picture;
 use crate::scene::{OutputSpec, Scene, describe};
 pub use data::{DataFile, RunData};
-pub use dynamic::MovieOptions;
+pub use options::MovieOptions;
 
 /// Which files each scene writes (`--format`, `--scale`).
 #[derive(Debug, Clone, PartialEq)]
@@ -163,9 +167,9 @@ pub fn figure_picture(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
             Ok((theory::picture(spec.figure, &input)?, vec![]))
         }
         OutputSpec::Filmstrip { .. } => dynamic::filmstrip_figure(scene, None),
-        OutputSpec::Arrivals { .. } => dynamic::arrivals_figure(scene),
+        OutputSpec::Arrivals { .. } => arrivals::arrivals_figure(scene),
         OutputSpec::Kymograph => {
-            let (picture, run) = dynamic::kymograph_figure(scene, KYMOGRAPH_ROWS)?;
+            let (picture, run) = kymograph::kymograph_figure(scene, KYMOGRAPH_ROWS)?;
             Ok((picture, vec![run]))
         }
         OutputSpec::Movie { .. } | OutputSpec::Data | OutputSpec::Sweep(_) => {

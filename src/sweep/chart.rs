@@ -18,6 +18,7 @@ use crate::error::{Error, Result};
 use crate::render::cells::{Cell, CellChart, ShadeBar, cell_chart};
 use crate::render::charts::{Axis, Chart, ChartSpec, Marker, Series, line_chart, rasterize_svg};
 use crate::render::style;
+use crate::render::theme::palette;
 use crate::scene::describe;
 use crate::scene::sweep::Param;
 use serde::Serialize;
@@ -36,15 +37,96 @@ fn width() -> u32 {
 /// lines up with the panels below.
 const FRONT_HEIGHT: u32 = 380;
 
-/// The colour of each outcome.
+/// The colour of each outcome (Okabe–Ito: blue and vermillion stay apart
+/// under deuteranopia and protanopia, where green and red are one olive).
 pub fn outcome_color(o: Outcome) -> Rgb {
     match o {
-        Outcome::Propagated => style::GREEN,
-        Outcome::Stalled => style::SERIES_EXTRA[0],
-        Outcome::Pinned => style::RED,
+        Outcome::Propagated => palette::BLUE,
+        Outcome::Stalled => palette::ORANGE,
+        Outcome::Pinned => palette::VERMILLION,
         Outcome::Diverged => style::DARK,
         Outcome::Undecided => style::GREY,
     }
+}
+
+/// The marker of each outcome, the cue besides colour; an antikink's is
+/// open or upright where a kink's is filled or diagonal, so that a kink
+/// and an antikink at the same point both show.
+pub fn outcome_marker(o: Outcome, antikink: bool) -> Marker {
+    match (o, antikink) {
+        (Outcome::Propagated, false) => Marker::Circle,
+        (Outcome::Propagated, true) => Marker::Ring,
+        (Outcome::Pinned, false) => Marker::Cross,
+        (Outcome::Pinned, true) => Marker::Plus,
+        (Outcome::Stalled, _) => Marker::Triangle,
+        (Outcome::Diverged | Outcome::Undecided, _) => Marker::Square,
+    }
+}
+
+/// The least height of a stacked panel, pixels (a chart's smallest).
+const LEAST_PANEL: u32 = 110;
+
+/// Height the front panel's legend (up to six entries, in rows of two
+/// under the plot) may take, pixels.
+const FRONT_LEGEND_ROOM: u32 = 80;
+
+/// The least height of a panel whose y axis says `label`: room for the
+/// rotated label along the plot, and at least [`LEAST_PANEL`].
+fn least_for(label: &str) -> u32 {
+    let along = style::text_width(label, style::size::LABEL) + 24.0;
+    (along.ceil() as u32).max(LEAST_PANEL)
+}
+
+/// Pixels a panel whose x axis is shared (labelled below) does not need.
+const SHARED_SAVES: u32 = 46;
+
+/// Heights of stacked panels that want `wanted` pixels each: as asked at
+/// screen; at a print style scaled down together, if need be, so that the
+/// stack keeps the page budget ([`crate::render::Theme::max_height_pt`]),
+/// none below its `least`.
+fn fitted_heights(wanted: &[u32], least: &[u32]) -> Vec<u32> {
+    // The page's height in the design pixels composed figures are laid
+    // out in (a slide's twice its own, Style::fit_box).
+    let Some((_, page)) = crate::render::Style::current().fit_box() else {
+        return wanted.to_vec();
+    };
+    let budget = page.floor();
+    // Panels above the last share its axis and give up their label area.
+    let last = wanted.len().saturating_sub(1);
+    let wanted: Vec<u32> = wanted
+        .iter()
+        .enumerate()
+        .map(|(k, h)| {
+            if k < last {
+                h.saturating_sub(SHARED_SAVES)
+            } else {
+                *h
+            }
+        })
+        .collect();
+    let sum: u32 = wanted.iter().sum();
+    if sum as f32 <= budget {
+        return wanted;
+    }
+    // The last panel keeps its axis' label area whole; none goes below
+    // `least` (then the stack is taller than the page, and the figure is
+    // refused naming the height that holds it: the same heights again).
+    let keep = |k: usize| if k == last { SHARED_SAVES } else { 0 };
+    let at = |f: f32| -> Vec<u32> {
+        wanted
+            .iter()
+            .enumerate()
+            .map(|(k, h)| (((*h - keep(k)) as f32 * f).floor() as u32).max(least[k]) + keep(k))
+            .collect()
+    };
+    // The largest common factor whose heights (each at least `least`)
+    // keep the budget; at the smallest the heights no longer change, so a
+    // page as tall as they need holds them.
+    let mut f = (budget - SHARED_SAVES as f32) / (sum - SHARED_SAVES) as f32;
+    while f > 0.01 && at(f).iter().sum::<u32>() as f32 > budget {
+        f *= 0.97;
+    }
+    at(f)
 }
 
 /// The linear theory at one α: gap ω₊(0) (1/τ) and barrier ΔU per pair
@@ -161,17 +243,16 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
         vec![("", Marker::Circle, Box::new(|_: &Record| true))]
     };
     let mut front = ChartSpec::new(
-        x_axis(),
-        Axis::new("front: last block reached").range(-0.3, n_max as f64 + 0.6),
+        x_axis().shared(),
+        Axis::new("front (last block)").range(-0.3, n_max as f64 + 0.6),
     )
     .title(title);
-    // Kinks drawn a little above, antikinks a little below their front,
-    // so that neither hides the other: 5 px each way (the markers' radius
-    // and a gap) on the panel's ~200 px of plot, at most half a block.
-    let px_per_block = (FRONT_HEIGHT - 100) as f64 / (n_max as f64 + 0.9);
-    let d = (5.0 / px_per_block).clamp(0.18, 0.45);
-    let offsets = if fold { [d, -d] } else { [0.0, 0.0] };
-    for ((wave, marker, keep), dy) in waves.iter().zip(offsets) {
+    // Every mark at its value (the CSV's front): folded, a wave's colour
+    // is its kind's (the same as in the speed panel) and its marker its
+    // outcome, a kink's filled, an antikink's open, so that both show where
+    // they coincide; unfolded, the colour is the outcome's.
+    let offsets = [0.0, 0.0];
+    for (i, ((wave, _, keep), dy)) in waves.iter().zip(offsets).enumerate() {
         for o in Outcome::ALL {
             let pts: Vec<(f64, f64)> = records
                 .iter()
@@ -186,7 +267,13 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
             } else {
                 format!("{wave}: {o}")
             };
-            front = front.series(Series::scatter(label, pts, outcome_color(o), *marker));
+            let color = if fold {
+                wave_color(i)
+            } else {
+                outcome_color(o)
+            };
+            let marker = outcome_marker(o, fold && i == 1);
+            front = front.series(Series::scatter(label, pts, color, marker));
         }
     }
     // Beside the front, what is not the front: the free block N's own turn
@@ -231,7 +318,9 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
     } else {
         Axis::new("speed (10⁻³ blocks/τ)")
     };
-    let mut speed = ChartSpec::new(x_axis(), speed_axis);
+    let theory = param == Param::Alpha && plan.spec.charts.theory;
+    let speed_x = if theory { x_axis().shared() } else { x_axis() };
+    let mut speed = ChartSpec::new(speed_x, speed_axis);
     for (i, (wave, marker, keep)) in waves.iter().enumerate() {
         let mut pts: Vec<(f64, f64)> = records
             .iter()
@@ -239,7 +328,7 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
             .map(|r| (x_of(r), r.result.speed.map_or(f64::NAN, |v| unit * v)))
             .collect();
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let color = style::series_color(if fold { 2 * i + 1 } else { 2 });
+        let color = if fold { wave_color(i) } else { palette::BLUE };
         let label = if wave.is_empty() { "speed" } else { wave };
         let mut s = Series::line(label, pts, color).with_marker(*marker);
         if i == 1 {
@@ -256,14 +345,46 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
         speed.series.clear();
         speed.title = Some("no run propagated far enough to measure a speed".into());
     }
+    let wanted: Vec<u32> = if theory {
+        vec![FRONT_HEIGHT, 260, THEORY_PANEL_HEIGHT, THEORY_PANEL_HEIGHT]
+    } else {
+        vec![FRONT_HEIGHT, 260]
+    };
+    let mut least: Vec<u32> = [front.y.label.as_str(), speed.y.label.as_str()]
+        .into_iter()
+        .chain(["gap ω₊(0) τ", "ΔU / mgs"])
+        .map(least_for)
+        .collect();
+    // The front panel's legend may go under its plot: room for its rows.
+    least[0] += if width() < 400 {
+        2 * FRONT_LEGEND_ROOM
+    } else {
+        FRONT_LEGEND_ROOM
+    };
+    let h = fitted_heights(&wanted, &least);
     let mut panels = vec![
-        (line_chart(&front, width(), FRONT_HEIGHT)?, FRONT_HEIGHT),
-        (line_chart(&speed, width(), 260)?, 260),
+        (line_chart(&front, width(), h[0])?, h[0]),
+        (line_chart(&speed, width(), h[1])?, h[1]),
     ];
-    if param == Param::Alpha && plan.spec.charts.theory {
-        panels.extend(theory_panel(plan, x_label, fold, Some((width(), x_range)))?);
+    if theory {
+        panels.extend(theory_panel(
+            plan,
+            x_label,
+            fold,
+            Some((width(), x_range)),
+            (h[2], h[3]),
+        )?);
     }
     stack(&panels)
+}
+
+/// The colour of wave kind `i` (0: kink, 1: antikink) in every panel.
+fn wave_color(i: usize) -> Rgb {
+    if i == 0 {
+        palette::KINK
+    } else {
+        palette::ANTIKINK
+    }
 }
 
 /// The block where the wave the drive launched (the first wave from block
@@ -284,6 +405,7 @@ fn theory_panel(
     x_label: &str,
     fold: bool,
     width_range: Option<(u32, (f64, f64))>,
+    (gap_h, barrier_h): (u32, u32),
 ) -> Result<Vec<(Chart, u32)>> {
     let pts = theory_points(plan);
     let x = |a: f64| if fold { a.abs() } else { a };
@@ -309,7 +431,7 @@ fn theory_panel(
     };
     // Two quantities in two units: one panel each (never one axis for
     // both), each named by its y axis, so no legend covers the curves.
-    let panel = |label: &str, pts: Vec<(f64, f64)>, color, dashed: bool| {
+    let panel = |label: &str, pts: Vec<(f64, f64)>, color, dashed: bool, shared: bool, h: u32| {
         let top = pts
             .iter()
             .map(|p| p.1)
@@ -319,14 +441,19 @@ fn theory_panel(
         if dashed {
             series = series.dashed();
         }
-        let mut spec = ChartSpec::new(xa.clone(), Axis::new(label).range(0.0, 1.1 * top.max(1e-3)))
-            .series(series);
+        let x = if shared {
+            xa.clone().shared()
+        } else {
+            xa.clone()
+        };
+        let mut spec =
+            ChartSpec::new(x, Axis::new(label).range(0.0, 1.1 * top.max(1e-3))).series(series);
         spec.legend = crate::render::charts::Legend::Hidden;
-        line_chart(&spec, width, THEORY_PANEL_HEIGHT).map(|c| (c, THEORY_PANEL_HEIGHT))
+        line_chart(&spec, width, h).map(|c| (c, h))
     };
     Ok(vec![
-        panel("gap ω₊(0) τ", gap, style::BLUE, false)?,
-        panel("barrier ΔU / mgs", barrier, style::RED, true)?,
+        panel("gap ω₊(0) τ", gap, palette::INK, false, true, gap_h)?,
+        panel("ΔU / mgs", barrier, palette::INK, true, false, barrier_h)?,
     ])
 }
 
@@ -415,9 +542,22 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
             to: outcome_color(Outcome::Propagated),
         }),
     };
-    let main = cell_chart(&chart, width(), 480)?;
-    let mut panels = vec![(main, 480)];
-    if px == Param::Alpha && plan.spec.charts.theory {
+    let theory = px == Param::Alpha && plan.spec.charts.theory;
+    let wanted: Vec<u32> = if theory {
+        vec![480, THEORY_PANEL_HEIGHT, THEORY_PANEL_HEIGHT]
+    } else {
+        vec![480]
+    };
+    // The phase diagram keeps room for its colour bar's three ticks.
+    let least = [
+        least_for(py.label()).max(2 * LEAST_PANEL),
+        least_for("gap ω₊(0) τ"),
+        least_for("ΔU / mgs"),
+    ];
+    let h = fitted_heights(&wanted, &least);
+    let main = cell_chart(&chart, width(), h[0])?;
+    let mut panels = vec![(main, h[0])];
+    if theory {
         let even = xs
             .windows(2)
             .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
@@ -427,7 +567,7 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
         } else {
             None
         };
-        panels.extend(theory_panel(plan, px.label(), false, range)?);
+        panels.extend(theory_panel(plan, px.label(), false, range, (h[1], h[2]))?);
     }
     stack(&panels)
 }

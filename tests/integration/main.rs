@@ -32,6 +32,7 @@ mod names;
 mod npz;
 mod output_paths;
 mod print;
+mod print_property;
 mod reliability;
 mod render;
 mod scene_files;

@@ -320,21 +320,26 @@ fn tempdir(name: &str) -> std::path::PathBuf {
     d
 }
 
-/// A print page is never taller than the style allows: S5's six panels
-/// went one a row (1254 pt) at paper; Fig. 3's four strips of seven
-/// snapshots would be taller still. The cap: 9.5 in (684 pt), an APS
-/// page's text height less room for a caption; a slide's own 7.5 in.
+/// A print page is never taller than the style allows, and no figure is
+/// printed smaller than its design to get there: at `paper` and
+/// `paper-wide` every catalogue figure is at most 4.5 in (324 pt) tall
+/// (Fig. 3, four strips of seven ladders, was 645 pt at paper; 4a 682 pt;
+/// the pinning sweep 522 pt), exactly the style's width, and drawn at the
+/// style's own scale; a slide's Fig. 3 keeps the slide's 7.5 in.
 #[test]
 fn print_pages_fit_a_journal_page_and_a_slide() {
-    for (id, name, cap) in [
-        ("S5", StyleName::Paper, 9.5 * 72.0),
-        ("3", StyleName::Paper, 9.5 * 72.0),
-        ("3", StyleName::PaperWide, 9.5 * 72.0),
-        ("3", StyleName::Slide, 7.5 * 72.0),
-    ] {
+    let mut checks: Vec<(String, StyleName, f32)> = Vec::new();
+    for entry in catalog::entries(Kind::Figure).unwrap() {
+        for name in [StyleName::Paper, StyleName::PaperWide] {
+            checks.push((entry.id.to_string(), name, 4.5 * 72.0));
+        }
+    }
+    checks.push(("3".into(), StyleName::Slide, 7.5 * 72.0));
+    let mut runs = std::collections::BTreeMap::new();
+    for (id, name, cap) in checks {
         let style = Style::named(name);
-        let scene = catalog::find(Kind::Figure, id).unwrap().scene.clone();
-        let pic = picture(&scene, &style, &mut None);
+        let scene = catalog::find(Kind::Figure, &id).unwrap().scene.clone();
+        let pic = picture(&scene, &style, runs.entry(id.clone()).or_insert(None));
         let pt = style.pt_per_px(pic.width());
         let (w, h) = (pic.width() * pt, pic.height() * pt);
         assert!(h <= cap + 0.5, "figure {id} at {}: {w}×{h} pt", name.name());
@@ -345,7 +350,133 @@ fn print_pages_fit_a_journal_page_and_a_slide() {
             "figure {id} at {}: {w} pt wide, want {want}",
             name.name()
         );
+        // Not printed smaller than designed (text never scaled to fit).
+        if let Err(e) = pic.check_print_scale(&style) {
+            panic!("figure {id} at {}: {e}", name.name());
+        }
     }
+}
+
+/// A size that cannot hold a figure at the style's text is refused with
+/// exit 2, naming the flag and the smallest size that works; that size is
+/// then accepted. (Fig. 3 at `--height 4in` printed every label at about
+/// 2.5 pt, with no word on stderr.)
+#[test]
+fn too_small_a_page_is_refused_naming_the_flag_and_the_size_that_works() {
+    let dir = tempdir("refused");
+    let ladder = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_ladder"))
+            .args(args)
+            .arg("--out")
+            .arg(&dir)
+            .output()
+            .unwrap()
+    };
+    let out = ladder(&[
+        "figure", "3", "--style", "paper", "--height", "1.5in", "--format", "pdf",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(
+        err.contains("--height 1.50in") && err.contains("smallest"),
+        "{err}"
+    );
+    // "... the smallest height that holds it is --height X.XXin": X works.
+    let smallest = err
+        .trim()
+        .rsplit("--height ")
+        .next()
+        .unwrap()
+        .trim_end_matches("in")
+        .to_string();
+    let asked: f32 = smallest.parse().unwrap();
+    assert!(asked > 1.5 && asked < 4.5, "{err}");
+    let ok = ladder(&[
+        "figure",
+        "3",
+        "--style",
+        "paper",
+        "--height",
+        &format!("{smallest}in"),
+        "--format",
+        "pdf",
+    ]);
+    assert!(
+        ok.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
+    // Too narrow a page: the width named.
+    let out = ladder(&[
+        "figure", "3", "--style", "paper", "--width", "1in", "--format", "pdf",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--width 1.00in") && err.contains("smallest width"),
+        "{err}"
+    );
+}
+
+/// PDF 1.5 (pdflatex's default `\pdfminorversion` includes it without
+/// "found PDF version <1.7>, but at most version <1.5> allowed") with an Info
+/// dictionary; SVG with `<title>` and `<metadata>`; PNG with text chunks:
+/// each names the figure and the program, version and commit.
+#[test]
+fn figure_files_are_pdf_1_5_and_carry_their_metadata() {
+    let dir = tempdir("meta");
+    let out = Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args([
+            "figure",
+            "barrier",
+            "--style",
+            "paper",
+            "--format",
+            "pdf,svg,png",
+            "--out",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let made_by = format!("ladder {}", jacobs_ladder::version::LONG);
+    let title = {
+        let json: serde_json::Value =
+            serde_json::from_slice(&std::fs::read(dir.join("figure-barrier.json")).unwrap())
+                .unwrap();
+        jacobs_ladder::render::style::plain_text(json["title"].as_str().unwrap())
+    };
+    assert!(!title.is_empty());
+    // PDF: the header, and the Info dictionary read back by lopdf.
+    let pdf = std::fs::read(dir.join("figure-barrier.pdf")).unwrap();
+    assert!(pdf.starts_with(b"%PDF-1.5"), "{:?}", &pdf[..8]);
+    let doc = lopdf::Document::load_mem(&pdf).unwrap();
+    assert_eq!(doc.version, "1.5");
+    let info = doc.trailer.get(b"Info").unwrap().as_reference().unwrap();
+    let info = doc.get_dictionary(info).unwrap();
+    let text = |key: &[u8]| lopdf::decode_text_string(info.get(key).unwrap()).unwrap();
+    assert_eq!(text(b"Title"), title);
+    assert_eq!(text(b"Creator"), made_by);
+    assert!(made_by.contains(jacobs_ladder::version::VERSION));
+    // SVG.
+    let svg = std::fs::read_to_string(dir.join("figure-barrier.svg")).unwrap();
+    let escaped = title.replace('&', "&amp;").replace('<', "&lt;");
+    assert!(
+        svg.contains(&format!("<title>{escaped}</title>")),
+        "{}",
+        &svg[..400.min(svg.len())]
+    );
+    assert!(svg.contains("<metadata>") && svg.contains(&made_by));
+    // PNG: a Software text chunk, and the title (UTF-8: iTXt).
+    let png = std::fs::read(dir.join("figure-barrier.png")).unwrap();
+    let has = |needle: &[u8]| png.windows(needle.len()).any(|w| w == needle);
+    assert!(has(format!("tEXtSoftware\0{made_by}").as_bytes()));
+    assert!(has(title.as_bytes()));
 }
 
 /// The arrivals chart (Fig. S6): one labelled series per wave of every run,
@@ -357,7 +488,7 @@ fn print_pages_fit_a_journal_page_and_a_slide() {
 fn arrivals_draw_every_wave_with_its_fitted_line() {
     use jacobs_ladder::render::LineStyle;
     let scene = catalog::find(Kind::Figure, "S6").unwrap().scene.clone();
-    let (spec, data) = scenes::dynamic::arrivals_chart(&scene).unwrap();
+    let (spec, data) = scenes::arrivals::arrivals_chart(&scene).unwrap();
     let waves: usize = data.iter().map(|d| d.waves.waves.len().max(1)).sum();
     let labelled: Vec<_> = spec.series.iter().filter(|s| s.label.is_some()).collect();
     assert_eq!(labelled.len(), waves, "one labelled series per wave");

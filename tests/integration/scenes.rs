@@ -145,8 +145,8 @@ fn movie_10_shows_two_walls_at_once() {
 #[test]
 fn fitted_speed_of_evenly_spaced_arrivals() {
     let arrivals: Vec<Option<f64>> = (0..10).map(|i| Some(100.0 + 250.0 * i as f64)).collect();
-    assert!((dynamic::fitted_speed(&arrivals).unwrap() - 4.0).abs() < 1e-9);
-    assert!(dynamic::fitted_speed(&[Some(1.0), Some(2.0), None, None]).is_none());
+    assert!((scenes::arrivals::fitted_speed(&arrivals).unwrap() - 4.0).abs() < 1e-9);
+    assert!(scenes::arrivals::fitted_speed(&[Some(1.0), Some(2.0), None, None]).is_none());
 }
 
 #[test]
@@ -160,7 +160,8 @@ fn golden_figure_3() {
 fn golden_kymograph_movie_7() {
     let s = movie_scene("7");
     let r = run::simulate(&s, &dynamic::frame_times(s.run.t_end, 60)).unwrap();
-    let image = dynamic::kymograph_image("Movie 7", &r.trajectory, s.model.n, 320, 240).unwrap();
+    let image =
+        scenes::kymograph::kymograph_image("Movie 7", &r.trajectory, s.model.n, 320, 240).unwrap();
     check("kymograph-movie-7", &image);
 }
 

@@ -93,5 +93,15 @@ fn draw_marker<DB: DrawingBackend>(
             backend.draw_line((x - h, y - h), (x + h, y + h), &st)?;
             backend.draw_line((x - h, y + h), (x + h, y - h), &st)
         }
+        Marker::Ring => {
+            let st = rgb(c).stroke_width(2);
+            backend.draw_circle((x, y), (r + 3) as u32, &st, false)
+        }
+        Marker::Plus => {
+            let st = rgb(c).stroke_width(2);
+            let h = r + 2;
+            backend.draw_line((x - h, y), (x + h, y), &st)?;
+            backend.draw_line((x, y - h), (x, y + h), &st)
+        }
     }
 }

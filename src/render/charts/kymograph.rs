@@ -170,6 +170,11 @@ fn draw_colorbar(area: &Area<'_>, label: &str) -> Result<()> {
         .margin_left(8)
         .margin_right(4)
         .caption(label, font(size::LABEL).into_font().color(&rgb(DARK)))
+        // Room under the caption for the upper half of the top tick label.
+        .set_label_area_size(
+            plotters::chart::LabelAreaPosition::Top,
+            (0.7 * super::tick_px()).ceil() as u32,
+        )
         .x_label_area_size(X_LABEL_AREA)
         .right_y_label_area_size(48)
         .build_cartesian_2d(0.0..1.0, -1.0..1.0)
@@ -193,7 +198,7 @@ fn draw_colorbar(area: &Area<'_>, label: &str) -> Result<()> {
         .disable_x_axis()
         .y_labels(5)
         .y_label_formatter(&yf)
-        .label_style(font(size::TICK).into_font().color(&rgb(DARK)))
+        .label_style(font(super::tick_px()).into_font().color(&rgb(DARK)))
         .axis_style(rgb(DARK).stroke_width(1))
         .draw()
         .map_err(plot_error)

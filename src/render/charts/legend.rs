@@ -5,7 +5,7 @@ use super::glyph::{Glyph, LEGEND_LINE};
 use super::ranges::runs;
 use super::{Area, ChartSpec, Ctx, Legend, LineStyle, font, plot_error, rgb};
 use crate::error::Result;
-use crate::render::style::{self, DARK, size};
+use crate::render::style::{self, DARK};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
@@ -47,7 +47,7 @@ where
         .position(pos)
         .margin(8)
         .legend_area_size(28)
-        .label_font(font(size::TICK).into_font().color(&rgb(DARK)))
+        .label_font(font(size_tick()).into_font().color(&rgb(DARK)))
         .background_style(WHITE.mix(0.9))
         .border_style(rgb(DARK).mix(0.4))
         .draw()
@@ -61,8 +61,8 @@ pub(super) fn draw_outside_legend(
     spec: &ChartSpec,
     (x, y): (i32, i32),
 ) -> Result<()> {
-    let row = (size::TICK * 1.55) as i32;
-    let text_style = font(size::TICK)
+    let row = (size_tick() * 1.55) as i32;
+    let text_style = font(size_tick())
         .into_font()
         .color(&rgb(DARK))
         .pos(Pos::new(HPos::Left, VPos::Center));
@@ -72,6 +72,68 @@ pub(super) fn draw_outside_legend(
         .filter_map(|s| s.label.as_ref().map(|l| (s, l)));
     for (k, (s, label)) in labelled.enumerate() {
         let at = (x, y + row / 2 + k as i32 * row);
+        let glyph = Glyph {
+            at,
+            line: s.line,
+            marker: s.marker,
+            color: s.color,
+            width: s.width,
+            offset: LEGEND_LINE / 2,
+        };
+        root.draw(&glyph).map_err(plot_error)?;
+        let text = Text::new(
+            label.as_str(),
+            (at.0 + LEGEND_LINE + 6, at.1),
+            text_style.clone(),
+        );
+        root.draw(&text).map_err(plot_error)?;
+    }
+    Ok(())
+}
+
+/// The grid of a legend under the plot of a chart `width` pixels wide:
+/// (columns, rows, column width, row height, height of the band).
+pub(super) fn below_grid(spec: &ChartSpec, width: u32) -> (usize, usize, i32, i32, u32) {
+    let labels: Vec<&String> = spec
+        .series
+        .iter()
+        .filter_map(|s| s.label.as_ref())
+        .collect();
+    let text = labels
+        .iter()
+        .map(|l| style::text_width(l, size_tick()))
+        .fold(0.0, f32::max);
+    let col_w = (text + LEGEND_LINE as f32 + 6.0 + 14.0).ceil() as i32;
+    let room = (width as i32 - 16).max(col_w);
+    let cols = ((room / col_w.max(1)) as usize).clamp(1, labels.len().max(1));
+    let rows = labels.len().div_ceil(cols);
+    let row = (size_tick() * 1.45).ceil() as i32;
+    (cols, rows, col_w, row, (rows as i32 * row + 6) as u32)
+}
+
+/// Tick and legend text of the theme in force.
+fn size_tick() -> f32 {
+    crate::render::Theme::current().tick
+}
+
+/// A legend under the plot: [`below_grid`]'s columns, filled row by row,
+/// the band's top at pixel `y` of a chart `width` wide.
+pub(super) fn draw_below_legend(root: &Area<'_>, spec: &ChartSpec, y: i32) -> Result<()> {
+    let width = root.dim_in_pixel().0;
+    let (cols, _, col_w, row, _) = below_grid(spec, width);
+    let text_style = font(size_tick())
+        .into_font()
+        .color(&rgb(DARK))
+        .pos(Pos::new(HPos::Left, VPos::Center));
+    let used = cols as i32 * col_w;
+    let x0 = ((width as i32 - used) / 2).max(4);
+    let labelled = spec
+        .series
+        .iter()
+        .filter_map(|s| s.label.as_ref().map(|l| (s, l)));
+    for (k, (s, label)) in labelled.enumerate() {
+        let (c, r) = ((k % cols) as i32, (k / cols) as i32);
+        let at = (x0 + c * col_w, y + row / 2 + r * row);
         let glyph = Glyph {
             at,
             line: s.line,
@@ -101,7 +163,7 @@ fn label_position(legend: Legend) -> Option<SeriesLabelPosition> {
         Legend::LowerLeft => P::LowerLeft,
         Legend::LowerMiddle => P::LowerMiddle,
         Legend::LowerRight => P::LowerRight,
-        Legend::Outside | Legend::Hidden => return None,
+        Legend::Outside | Legend::Below | Legend::Hidden => return None,
     })
 }
 
@@ -144,10 +206,10 @@ pub(super) fn legend_box(spec: &ChartSpec) -> (i32, i32) {
         .collect();
     let text = labels
         .iter()
-        .map(|l| style::text_width(l, size::TICK))
+        .map(|l| style::text_width(l, size_tick()))
         .fold(0.0, f32::max);
     let w = text + 28.0 + 34.0;
-    let h = labels.len() as f32 * (size::TICK * 1.55) + 24.0;
+    let h = labels.len() as f32 * (size_tick() * 1.55) + 24.0;
     (w as i32, h as i32)
 }
 

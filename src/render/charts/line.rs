@@ -2,13 +2,16 @@
 //! equal aspect, legend placement by a probe pass).
 
 use super::glyph::Glyph;
-use super::legend::{auto_legend, draw_legend, draw_outside_legend, has_labels, legend_box};
+use super::legend::{
+    auto_legend, below_grid, draw_below_legend, draw_legend, draw_outside_legend, has_labels,
+    legend_box,
+};
 use super::ranges::{Range2, data_range, equalize, runs};
 use super::ticks::tick_label;
 use super::title::{fit_title, titled};
 use super::{
     Area, Chart, ChartSpec, Ctx, Legend, LineStyle, Marker, Scale, Series, X_LABEL_AREA,
-    check_size, dark_axes, end_labels, font, plot_error, rgb, y_label_area,
+    check_size, dark_axes, end_labels, font, plot_error, rgb, tick_px, y_label_area,
 };
 use crate::error::Result;
 use crate::render::style::{self, DARK, GREY, size};
@@ -19,6 +22,17 @@ use std::ops::Range;
 /// Draws `spec` as a `width × height` chart.
 pub fn line_chart(spec: &ChartSpec, width: u32, height: u32) -> Result<Chart> {
     check_size(width, height)?;
+    // Journal styles draw no title: the caption is the document's.
+    let untitled;
+    let spec = if spec.title.is_some() && !crate::render::Theme::current().titles {
+        untitled = ChartSpec {
+            title: None,
+            ..spec.clone()
+        };
+        &untitled
+    } else {
+        spec
+    };
     style::register_plotters_font();
     let (x0, y0) = (data_range(spec, true)?, data_range(spec, false)?);
     let mut pass = Pass {
@@ -35,6 +49,12 @@ pub fn line_chart(spec: &ChartSpec, width: u32, height: u32) -> Result<Chart> {
     }
     if pass.legend == Legend::Auto {
         pass.legend = probe(spec, pass, (width, height), xr.clone(), yr.clone())?.legend;
+        // A column right of the plot that would take more than a third of
+        // the chart goes under the plot instead, in columns: the plot keeps
+        // its width, the text its size.
+        if pass.legend == Legend::Outside && legend_box(spec).0 as u32 + 8 > width / 3 {
+            pass.legend = Legend::Below;
+        }
         if pass.legend == Legend::Outside && spec.equal_aspect {
             (xr, yr) = equalized(spec, pass, (width, height), x0, y0)?;
         }
@@ -135,8 +155,11 @@ where
     XS::CoordDescType: ValueFormatter<f64>,
     YS::CoordDescType: ValueFormatter<f64>,
 {
+    let below = (pass.legend == Legend::Below).then(|| below_grid(spec, root.dim_in_pixel().0).4);
     let area = if pass.legend == Legend::Outside {
         root.margin(0, 0, 0, legend_box(spec).0 as u32 + 8)
+    } else if let Some(band) = below {
+        root.margin(0, band, 0, 0)
     } else {
         root.clone()
     };
@@ -152,9 +175,11 @@ where
         titled(area, spec.title.as_deref(), width)?
     };
     let mut builder = ChartBuilder::on(&area);
+    // A shared x axis is labelled by the panel below: no room for numbers.
+    let x_area = if spec.x.shared { 4 } else { X_LABEL_AREA };
     builder
         .margin(14)
-        .x_label_area_size(X_LABEL_AREA)
+        .x_label_area_size(x_area)
         .y_label_area_size(y_area);
     if let Some(t) = spec.title.as_ref().filter(|_| one_line) {
         builder.caption(t, font(size::TITLE).into_font().color(&rgb(DARK)));
@@ -177,6 +202,9 @@ where
     }
     if pass.legend == Legend::Outside {
         draw_outside_legend(root, spec, (plot.0.end + 12, plot.1.start))?;
+    } else if let Some(band) = below {
+        let top = root.dim_in_pixel().1 as i32 - band as i32;
+        draw_below_legend(root, spec, top)?;
     } else {
         draw_legend(&mut chart, spec, pass.legend)?;
     }
@@ -192,7 +220,14 @@ where
     Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
 {
     let (xscale, yscale) = (spec.x.scale, spec.y.scale);
-    let xf = move |v: &f64| tick_label(*v, xscale);
+    let shared = spec.x.shared;
+    let xf = move |v: &f64| {
+        if shared {
+            String::new()
+        } else {
+            tick_label(*v, xscale)
+        }
+    };
     let yf = move |v: &f64| tick_label(*v, yscale);
     // As many x labels as fit side by side with a gap (at most 7) at a
     // print style.
@@ -203,7 +238,7 @@ where
     let xr = chart.x_range();
     let widest = end_labels(xr.start, xr.end, xscale)
         .iter()
-        .map(|t| style::text_width(t, size::TICK))
+        .map(|t| style::text_width(t, tick_px()))
         .fold(0.0f32, f32::max);
     // (Print styles only: the screen keeps its seven, and its goldens.)
     let x_count = if crate::render::Style::current().is_print() {
@@ -211,13 +246,24 @@ where
     } else {
         7
     };
+    // As many y labels as fit one above the other with a line between
+    // them, at most 7, at a print style.
+    let plot_h = {
+        let (_, py) = chart.plotting_area().get_pixel_range();
+        (py.end - py.start) as f32
+    };
+    let y_count = if crate::render::Style::current().is_print() {
+        ((plot_h / (2.2 * tick_px())).floor() as usize).clamp(2, 7)
+    } else {
+        7
+    };
     let mut mesh = chart.configure_mesh();
-    mesh.x_desc(spec.x.label.as_str())
+    mesh.x_desc(if shared { "" } else { spec.x.label.as_str() })
         .y_desc(spec.y.label.as_str())
         .x_label_formatter(&xf)
         .y_label_formatter(&yf)
         .x_labels(x_count)
-        .y_labels(7);
+        .y_labels(y_count);
     // At a print style the minor grid is one faint line between major
     // ones (a full minor mesh prints as a grey fog at column width).
     if crate::render::Style::current().is_print() {

@@ -60,7 +60,7 @@ where
     DB: DrawingBackend,
 {
     use super::style::{DARK, size};
-    mesh.label_style(font(size::TICK).into_font().color(&rgb(DARK)))
+    mesh.label_style(font(tick_px()).into_font().color(&rgb(DARK)))
         .axis_desc_style(font(size::LABEL).into_font().color(&rgb(DARK)))
         .axis_style(rgb(DARK).stroke_width(1))
 }
@@ -88,7 +88,7 @@ pub(super) fn y_label_area(ticks: &[String]) -> u32 {
     use super::style::{self, size};
     let widest = ticks
         .iter()
-        .map(|t| style::text_width(t, size::TICK))
+        .map(|t| style::text_width(t, tick_px()))
         .fold(0.0f32, f32::max);
     // Tick mark and its gap (10 px), the label's line (1.3 em), a gap.
     let need = widest + 10.0 + 1.3 * size::LABEL + 6.0;
@@ -115,3 +115,9 @@ pub(super) fn end_labels(lo: f64, hi: f64, scale: Scale) -> Vec<String> {
 }
 
 type Ctx<'a, 'b, X, Y> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, Y>>;
+
+/// Tick labels and legends: the size the theme in force gives them (the
+/// style's text size at a print style).
+pub fn tick_px() -> f32 {
+    crate::render::Theme::current().tick
+}

@@ -18,6 +18,9 @@ pub struct Axis {
     pub label: String,
     pub range: Option<(f64, f64)>,
     pub scale: Scale,
+    /// Shared with a panel stacked below, which labels it: this panel
+    /// draws its ticks without numbers or label.
+    pub shared: bool,
 }
 
 impl Axis {
@@ -38,6 +41,13 @@ impl Axis {
     /// Makes the axis logarithmic.
     pub fn log(mut self) -> Axis {
         self.scale = Scale::Log;
+        self
+    }
+
+    /// Shared with the panel stacked below, which labels it (an axis
+    /// shared by stacked panels is labelled once).
+    pub fn shared(mut self) -> Axis {
+        self.shared = true;
         self
     }
 }
@@ -62,6 +72,11 @@ pub enum Marker {
     Triangle,
     /// A diagonal cross, e.g. for diverged runs.
     Cross,
+    /// An open circle, larger than [`Marker::Circle`]: drawn around a
+    /// filled circle at the same point, both stay visible.
+    Ring,
+    /// An upright cross.
+    Plus,
 }
 
 /// One data series. Non-finite points (and non-positive ones on log axes)
@@ -138,6 +153,9 @@ pub enum Legend {
     LowerMiddle,
     LowerRight,
     Outside,
+    /// In rows of columns under the plot (chosen by `Auto` when a column
+    /// right of the plot would take more than a third of the chart).
+    Below,
     Hidden,
 }
 

@@ -1,6 +1,6 @@
 //! Typesetting of text markup (`^{...}`, `_{...}`) inside plotters' SVG.
 
-use crate::render::style::{self, size};
+use crate::render::style;
 
 /// Rewrites the content of each `<text>` element of plotters' SVG that
 /// holds markup (`^{...}`, `_{...}`) into `<tspan>`s with a smaller size
@@ -21,7 +21,7 @@ pub fn typeset_svg_text(svg: &str) -> String {
         let tag = &rest[open..tag_end];
         let size = attribute(tag, "font-size")
             .and_then(|v| v.parse::<f32>().ok())
-            .unwrap_or(size::TICK);
+            .unwrap_or(super::tick_px());
         out.push_str(&rest[..tag_end]);
         for (shift, run) in style::runs(&rest[tag_end..close]) {
             match shift {

@@ -73,14 +73,16 @@ pub fn fit_title(title: &str, width: u32) -> FittedTitle {
     t
 }
 
-/// The area of `root` below `title` (if any) drawn centred on top in
-/// [`fit_title`]'s lines for a chart `width` pixels wide.
+/// The area of `root` below `title` (if any, and if the style draws
+/// titles: journal styles leave them to the caption) drawn centred on top
+/// in [`fit_title`]'s lines for a chart `width` pixels wide.
 pub(in crate::render) fn titled<'a>(
     root: Area<'a>,
     title: Option<&str>,
     width: u32,
 ) -> Result<Area<'a>> {
     let mut root = root;
+    let title = title.filter(|_| crate::render::Theme::current().titles);
     if let Some(t) = title {
         let fitted = fit_title(t, width);
         for line in &fitted.lines {

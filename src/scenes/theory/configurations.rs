@@ -9,7 +9,7 @@ use crate::model::ladder::nodes;
 use crate::render::charts::line_chart;
 use crate::render::compose::Panel;
 use crate::render::snapshot::{Region, Snapshot, pixel_of};
-use crate::render::style::{self, DARK};
+use crate::render::style::{self, DARK, size};
 use crate::render::{Axis, ChartSpec, Legend, Marker, Picture, Series};
 use crate::theory::figures::{gapless_configuration, zero_mode_shape};
 use crate::theory::gravity;
@@ -97,11 +97,14 @@ pub fn gapless(input: &FigureInput) -> Result<Picture> {
     let p = input.params(n, b, 0.0)?;
     let (a, q) = gapless_configuration(&p, n, b)?;
     let ladder = Ladder::new(p);
-    // On a narrow page the chart goes under the ladder, as wide as the page.
+    // On a narrow page the ladder stays beside the chart, slimmer, and the
+    // chart takes the rest of the row.
     let narrow = super::body_room().is_some_and(|r| r < 600.0);
     let (size, chart_size) = if narrow {
-        let w = super::body_room().unwrap_or(560.0).floor() as u32;
-        ((160, 448), (w, w * 440 / 560))
+        let room = super::body_room().unwrap_or(560.0).floor() as u32;
+        let h = room * 3 / 5;
+        let ladder_w = h / 3;
+        ((ladder_w, h), (room - ladder_w - size::GAP, h))
     } else {
         (super::cells(LADDER_SIZE, 3), super::cells((560, 440), 1))
     };
@@ -115,7 +118,7 @@ pub fn gapless(input: &FigureInput) -> Result<Picture> {
             .label("(b)")
             .caption("a single minimum at θ = 0"),
     ];
-    let body = grid(&panels, if narrow { 1 } else { 2 })?;
+    let body = grid(&panels, 2)?;
     let notes = format!(
         "b/s = {b}, a = √(b² + 4s²) = {a:.3} s: the A links are as long as the diagonal of a \
          pair of flat blocks, the blocks lie flat (θ = 0) and the double well of Fig. 2c \
@@ -135,7 +138,7 @@ fn gapless_potential(a: f64, b: f64, (w, h): (u32, u32)) -> Result<Picture> {
         .collect();
     let mut spec = ChartSpec::new(
         Axis::new("θ (degrees)").range(-90.0, 90.0),
-        Axis::new("U(θ) / (m g s), per pair of blocks"),
+        Axis::new("U(θ) / mgs per pair"),
     )
     .series(Series::line("U(θ), a² = b² + 4s²", points, style::RED))
     .series(Series::scatter(

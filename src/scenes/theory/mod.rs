@@ -73,13 +73,24 @@ fn cells(natural: (u32, u32), columns: usize) -> (u32, u32) {
     let w = ((room - (c - 1.0) * size::GAP as f32) / c).floor();
     let w = w.min(natural.0 as f32).max(20.0);
     let h = natural.1 as f32 * w / natural.0 as f32;
-    (w as u32, h.round() as u32)
+    // No taller than the page budget leaves after a label and a caption.
+    let tall = body_height().map_or(h, |room| room - 4.0 * size::LABEL);
+    let f = (tall / h).min(1.0);
+    ((w * f).floor() as u32, (h * f).round() as u32)
 }
 
 /// How much a drawing `width` pixels wide is scaled down to fit
 /// [`body_room`] (1 at screen or when it fits).
-fn drawing_scale(width: f32) -> f32 {
-    body_room().map_or(1.0, |room| (room / width).min(1.0))
+fn drawing_scale(width: f32, height: f32) -> f32 {
+    let tall = body_height().map_or(1.0, |room| room / height);
+    body_room().map_or(1.0, |room| (room / width).min(tall).min(1.0))
+}
+
+/// The height, in pixels, a figure's body may take at a print style (the
+/// page budget less the margins); none at screen.
+fn body_height() -> Option<f32> {
+    let (_, h) = crate::render::Style::current().fit_box()?;
+    Some(h - 2.0 * size::MARGIN as f32)
 }
 
 /// `body` scaled by `scale` (a drawing laid out for the screen, on a
@@ -144,7 +155,7 @@ pub fn check_cost(figure: TheoryFigure, input: &FigureInput) -> Result<Work> {
 /// checked first ([`check_cost`]).
 pub fn picture(figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {
     check_cost(figure, input)?;
-    Ok(drawn(figure, input)?.fit_page())
+    Ok(drawn(figure, input)?.fit_page().titled(input.title.clone()))
 }
 
 fn drawn(figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {
@@ -167,18 +178,40 @@ const NOTE_LINE: f32 = 1.35 * size::LABEL;
 /// Puts `body` under a centred title with wrapped `notes` below it, on a
 /// white page at least `min_width` pixels wide.
 fn frame(title: &str, body: &Picture, notes: &str, min_width: u32) -> Result<Picture> {
+    let theme = crate::render::Theme::current();
+    // Journal styles carry neither title nor notes: the caption is the
+    // document's.
+    let (title, notes) = if theme.titles {
+        (title, notes)
+    } else {
+        ("", "")
+    };
     let m = size::MARGIN;
     let (bw, bh) = body.pixel_size();
     let min_width = crate::render::Style::current().frame((min_width, 1)).0;
     let width = (bw + 2 * m).max(min_width);
-    let lines = style::wrap_text(notes, (width - 2 * m) as f32, size::LABEL);
-    let title_h = (1.8 * size::TITLE) as u32;
-    let notes_h = (lines.len() as f32 * NOTE_LINE + 0.5 * size::LABEL) as u32;
+    let lines = if notes.is_empty() {
+        Vec::new()
+    } else {
+        style::wrap_text(notes, (width - 2 * m) as f32, size::LABEL)
+    };
+    let title_h = if title.is_empty() {
+        0
+    } else {
+        (1.8 * size::TITLE) as u32
+    };
+    let notes_h = if lines.is_empty() {
+        0
+    } else {
+        (lines.len() as f32 * NOTE_LINE + 0.5 * size::LABEL) as u32
+    };
     let height = m + title_h + bh + notes_h + m;
     let mut out = Picture::new(width as f32, height as f32);
     let centre = 0.5 * width as f32;
     let top = (centre, m as f32);
-    out.text(title, top, size::TITLE, DARK, TOP_CENTRE);
+    if !title.is_empty() {
+        out.text(title, top, size::TITLE, DARK, TOP_CENTRE);
+    }
     out.place(body, (((width - bw) / 2) as f32, (m + title_h) as f32));
     let y0 = (m + title_h + bh) as f32 + 0.4 * size::LABEL;
     for (k, l) in lines.iter().enumerate() {
@@ -191,9 +224,14 @@ fn frame(title: &str, body: &Picture, notes: &str, min_width: u32) -> Result<Pic
 const TOP_CENTRE: (HAlign, VAlign) = (HAlign::Center, VAlign::Top);
 const TOP_LEFT: (HAlign, VAlign) = (HAlign::Left, VAlign::Top);
 
-/// Panels in a grid without a title (the figure frame carries it).
+/// Panels in a grid without a title (the figure frame carries it), and at
+/// a print style without a margin of its own (the frame's is the page's).
 fn grid(panels: &[Panel], columns: usize) -> Result<Picture> {
-    compose::compose_picture(panels, &Layout::columns(columns))
+    let mut layout = Layout::columns(columns);
+    if crate::render::Theme::current().is_print() {
+        layout.margin = 0;
+    }
+    compose::compose_picture(panels, &layout)
 }
 
 /// A snapshot of `q` on `ladder` without the pin support of block 1 (these

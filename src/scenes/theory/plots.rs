@@ -11,6 +11,7 @@ use crate::model::Ladder;
 use crate::render::charts::{line_chart, short_number};
 use crate::render::compose::Panel;
 use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign, size};
+use crate::render::theme::palette;
 use crate::render::{Axis, Canvas, ChartSpec, Legend, Marker, Picture, Series};
 use crate::theory::figures::{
     DispersionCurve, barrier_curve, det_loop, dispersion_curves, edge_mode_profile,
@@ -40,11 +41,27 @@ fn fit((w, h): (u32, u32)) -> (u32, u32) {
     let f = if narrow() {
         (page - 2.0 * size::MARGIN as f32 - 8.0) / w as f32
     } else {
-        page / FIGURE_WIDTH as f32
+        // The share of the page the panel has on screen, of the room the
+        // margins and gaps leave.
+        (page - 2.0 * (size::MARGIN + size::GAP) as f32) / FIGURE_WIDTH as f32
     };
     let s = |v: u32| ((v as f32 * f).round() as u32).max(60);
-    (s(w), s(h))
+    if narrow() {
+        // Panels stack in one column: each no taller than NARROW_ASPECT of
+        // its width, so that two stacked keep the page budget.
+        let w = s(w);
+        return (w, s(h).min((NARROW_ASPECT * w as f32) as u32));
+    }
+    // Side by side: no taller than the page budget less the margins.
+    let tall = style.fit_box().map_or(u32::MAX, |(_, bh)| {
+        (bh - 2.0 * size::MARGIN as f32 - 2.0 * size::LABEL) as u32
+    });
+    (s(w), s(h).min(tall))
 }
+
+/// Tallest a chart is, relative to its width, on a narrow page where
+/// panels stack (two such and the margins fit 4.5 in at 3.375 in).
+const NARROW_ASPECT: f32 = 0.6;
 
 /// The page's width in design pixels: `screen` at the screen style.
 fn page_width(screen: u32) -> u32 {
@@ -74,7 +91,7 @@ pub fn gravity_potential(input: &FigureInput) -> Result<Picture> {
     let curves = potential_curves(b, &input.a_over_b, 1441);
     let mut spec = ChartSpec::new(
         Axis::new("θ (degrees)").range(-90.0, 90.0),
-        Axis::new("U(θ) / (m g s), per pair of blocks"),
+        Axis::new("U(θ) / mgs per pair"),
     );
     let mut minima = Vec::new();
     for (i, c) in curves.iter().enumerate() {
@@ -96,6 +113,7 @@ pub fn gravity_potential(input: &FigureInput) -> Result<Picture> {
         .collect();
     let insets = potential_insets(input, &which)?;
     let body = grid(&[Panel::new(plot), Panel::new(insets)], columns(2))?;
+    // (At `paper` the insets are one row of four under the chart.)
     let notes = format!(
         "Linkage limit, b/s = {b}: U(θ) = −mg√(2(a² + b²) − 4s²cos²θ − (a² − b²)²/(4s²cos²θ)), \
          a symmetric double well whose minima θ = ±α (cos α = √(a² − b²)/2s) all lie \
@@ -110,10 +128,10 @@ pub fn gravity_potential(input: &FigureInput) -> Result<Picture> {
 /// the block ends drawn in the insets.
 const CURVE_COLORS: [(Rgb, &str); 5] = [
     (DARK, "black"),
-    (style::SERIES_EXTRA[1], "purple"),
-    (style::SERIES_EXTRA[2], "brown"),
-    (style::SERIES_EXTRA[0], "orange"),
-    (style::SERIES_EXTRA[3], "pink"),
+    (palette::REDDISH_PURPLE, "purple"),
+    (palette::SKY_BLUE, "sky blue"),
+    (palette::ORANGE, "orange"),
+    (palette::BLUISH_GREEN, "green"),
 ];
 
 fn curve_color(i: usize) -> Rgb {
@@ -130,6 +148,14 @@ fn color_name(i: usize) -> &'static str {
 fn potential_insets(input: &FigureInput, which: &[usize]) -> Result<Picture> {
     let b = input.model.b;
     let mut panels = Vec::new();
+    // On a narrow page one row of four small ladders under the chart.
+    let (cell, columns, short) = match super::body_room().filter(|r| *r < 600.0) {
+        Some(room) => {
+            let w = ((room - 3.0 * size::GAP as f32) / 4.0).floor() as u32;
+            ((w, w * 3 / 2), 4, true)
+        }
+        None => ((120, 230), 2, false),
+    };
     for &i in which {
         let r = input.a_over_b[i];
         let alpha = gravity::alpha_from_lengths(r * b, b)
@@ -138,15 +164,17 @@ fn potential_insets(input: &FigureInput, which: &[usize]) -> Result<Picture> {
         for sign in [-1.0, 1.0] {
             let l = Ladder::new(input.params(4, b, sign * alpha)?);
             let q = l.ground_state();
-            let mut panel = Panel::new(configuration(&l, &q, None, (120, 230))?)
+            let mut panel = Panel::new(configuration(&l, &q, None, cell)?)
                 .caption(signed_deg((sign * alpha * 10.0).round() / 10.0));
-            if sign < 0.0 {
+            if sign < 0.0 && short {
+                panel = panel.label(format!("a/b = {r}"));
+            } else if sign < 0.0 {
                 panel = panel.label(format!("a/b = {r} ({})", color_name(i)));
             }
             panels.push(panel);
         }
     }
-    grid(&panels, 2)
+    grid(&panels, columns)
 }
 
 /// Number of dispersion samples for lines and for dots.
@@ -174,7 +202,7 @@ pub fn dispersion(input: &FigureInput) -> Result<Picture> {
             (page_width(FIGURE_WIDTH) as f32 - 2.0 * size::MARGIN as f32 - size::GAP as f32) / 2.0;
         (
             2,
-            (half.floor() as u32, (half * 250.0 / 300.0).round() as u32),
+            (half.floor() as u32, (half * 225.0 / 300.0).round() as u32),
         )
     } else {
         (3, fit((300, 250)))
@@ -239,7 +267,7 @@ fn dispersion_key(width: u32) -> Result<Picture> {
     ];
     let widths: Vec<f32> = entries
         .iter()
-        .map(|e| 34.0 + style::text_width(e.0, size::TICK) + 22.0)
+        .map(|e| 34.0 + style::text_width(e.0, crate::render::charts::tick_px()) + 22.0)
         .collect();
     let room = width as f32 - 2.0 * size::MARGIN as f32;
     let mut rows: Vec<Vec<usize>> = vec![vec![]];
@@ -270,7 +298,7 @@ fn dispersion_key(width: u32) -> Result<Picture> {
             p.text(
                 e.0,
                 (x + 34.0, y),
-                size::TICK,
+                crate::render::charts::tick_px(),
                 DARK,
                 (HAlign::Left, VAlign::Middle),
             );
@@ -424,7 +452,7 @@ pub fn barrier(input: &FigureInput) -> Result<Picture> {
         .collect();
     let mut spec = ChartSpec::new(
         Axis::new("equilibrium angle α (degrees)").range(-2.0, 92.0),
-        Axis::new("ΔU / (m g s), per pair of blocks"),
+        Axis::new("ΔU / mgs per pair"),
     )
     .series(Series::line("ΔU(α), closed form", curve, RED))
     .series(Series::scatter(
@@ -462,9 +490,9 @@ mod tests {
     #[test]
     fn u_curves_avoid_the_spring_and_block_end_colours() {
         for (c, name) in CURVE_COLORS {
-            for taken in [RED, BLUE, style::GREEN] {
-                let d: i32 = (0..3).map(|k| (c[k] as i32 - taken[k] as i32).abs()).sum();
-                assert!(d > 120, "{name} is too close to {taken:?}");
+            for taken in [palette::SPRING_A, palette::SPRING_B] {
+                let d = crate::render::theme::delta_e(c, taken);
+                assert!(d > 20.0, "{name} is {d:.1} ΔE from {taken:?}");
             }
         }
     }

@@ -1,7 +1,7 @@
 //! Fig. 2b (and supplement Fig. S2b): one unit of the asymmetric ladder,
 //! drawn from the model's two-block ground state at θ = α: blocks of length
-//! s with their red A and blue B ends, the A link (length a, red) and the B
-//! link (length b, green), the angle θ from the transverse y axis, and the
+//! s with their vermillion A and blue B ends, the A link (length a,
+//! vermillion, solid) and the B link (length b, blue, dashed), the angle θ from the transverse y axis, and the
 //! offsets Δx, Δy of eq:b and eq:del_y. Gravity points down the page.
 
 use super::pen::{self, Pt};
@@ -10,7 +10,7 @@ use crate::encode::Rgb;
 use crate::error::Result;
 use crate::model::Ladder;
 use crate::model::ladder::nodes;
-use crate::render::style::{self, BLUE, DARK, GREEN, GREY, HAlign, RED, VAlign};
+use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign};
 use crate::render::{Canvas, Picture};
 
 /// Canvas size, pixels per s and the pixel position of block n's centre.
@@ -22,7 +22,7 @@ const ORIGIN: Pt = (470.0, 150.0);
 /// fit a print page (so that it prints at no less than the smallest print
 /// text).
 fn text_size() -> f32 {
-    let scale = super::drawing_scale(W as f32);
+    let scale = super::drawing_scale(W as f32, H as f32);
     crate::render::compose::at_least_print_min(0.0).max(19.0 * scale) / scale
 }
 
@@ -63,14 +63,14 @@ pub fn unit(input: &FigureInput) -> Result<Picture> {
     draw_frame_hints(&mut p);
     let notes = format!(
         "Drawn from the model's ground state of two blocks at b/s = {b}, θ = α = {alpha}°, \
-         a = √(b² + 4s²cos²α) = {:.3} s. The A link (red) joins the red A ends of the blocks, \
-         the B link (green) their blue B ends. θ is measured from the transverse y axis \
+         a = √(b² + 4s²cos²α) = {:.3} s. The A link (vermillion, solid) joins the vermillion A ends of \
+         the blocks, the B link (blue, dashed) their blue B ends. θ is measured from the transverse y axis \
          (counter-clockwise for even n, clockwise for odd n); Δx is the gap along gravity \
          between the facing ends, Δy the transverse offset of the centres. \
          At θ = α: Δx = b − s sin α, Δy = s cos α, and the B link hangs straight down.",
         ladder.a
     );
-    let p = super::scaled(&p, super::drawing_scale(W as f32));
+    let p = super::scaled(&p, super::drawing_scale(W as f32, H as f32));
     frame(&input.title, &p, &notes, W)
 }
 
@@ -102,7 +102,8 @@ impl Unit {
 
 fn draw_links_and_blocks(p: &mut Picture, u: &Unit) {
     pen::line(p, u.a1, u.a2, 3.5, RED);
-    pen::line(p, u.b1, u.b2, 3.5, GREEN);
+    // The B link as the ladder drawings draw it: blue and dashed.
+    pen::dashed(p, u.b1, u.b2, 3.5, BLUE);
     for (a, b) in [(u.a1, u.b1), (u.a2, u.b2)] {
         let at = |f: f32| (a.0 + (b.0 - a.0) * f, a.1 + (b.1 - a.1) * f);
         pen::line(p, a, b, 14.0, DARK);
@@ -116,7 +117,7 @@ fn draw_links_and_blocks(p: &mut Picture, u: &Unit) {
     text(p, "a", add(ma, (-22.0, -6.0)), RED, MIDDLE);
     text(p, "A", add(u.a1, (16.0, -10.0)), RED, LEFT);
     let mb = mid(u.b1, u.b2);
-    text(p, "b", add(mb, (16.0, 0.0)), GREEN, LEFT);
+    text(p, "b", add(mb, (16.0, 0.0)), BLUE, LEFT);
     text(p, "B", add(u.b1, (-26.0, 4.0)), BLUE, MIDDLE);
     text(p, "block n", add(u.c1, (120.0, -60.0)), DARK, LEFT);
     let at = add(u.c2, (-60.0, -30.0));

@@ -1,0 +1,283 @@
+//! One [`Theme`] value for a figure, built from its [`Style`]: every text
+//! size (sub- and superscripts included), line width, marker size, margin,
+//! gap and colour the drawing code uses (SPEC section 10).
+//!
+//! Sizes are in *design pixels*, the unit every layout works in; the style
+//! fixes how many design pixels a point is ([`Style::px_per_pt`]), so a
+//! theme's sizes print at the style's points. At a print style every text
+//! but a title prints at the style's size (tick labels and legends
+//! included, 8 pt at `paper`) and sub- and superscripts at no less than
+//! [`MIN_SCRIPT_PT`]; the screen keeps its pixel sizes.
+//!
+//! The one palette is Okabe and Ito's colour-blind-safe set ("Color
+//! Universal Design", 2008), without its yellow (too pale on paper): the
+//! ladder's springs, every chart series and every categorical mark take
+//! their colour from [`palette`]. Every categorical distinction carries a
+//! second cue besides colour (B springs dashed, outcomes by marker, waves
+//! by marker and dash).
+//!
+//! Floors: `theme` knows the style ([`super::page_style`]); the text and
+//! colour helpers ([`super::style`]) know the theme; nothing here reaches
+//! back to them.
+
+use super::page_style::{FontChoice, Style, StyleName};
+use crate::encode::Rgb;
+
+/// Sizes at the screen style, in pixels at 100 % zoom: the base every
+/// theme is derived from.
+pub mod size {
+    /// Figure and panel titles.
+    pub const TITLE: f32 = 18.0;
+    /// Axis labels, captions, time labels: the style's text size
+    /// ([`super::super::page_style::DESIGN_TEXT_PX`]).
+    pub const LABEL: f32 = super::super::page_style::DESIGN_TEXT_PX;
+    /// Tick labels and legends (at the screen style; a print style sets
+    /// them at [`LABEL`]).
+    pub const TICK: f32 = 13.0;
+    /// Panel labels such as "(a1)".
+    pub const PANEL_LABEL: f32 = 16.0;
+    /// Outer margin of composed images.
+    pub const MARGIN: u32 = 12;
+    /// Gap between panels.
+    pub const GAP: u32 = 10;
+}
+
+/// Smallest a sub- or superscript may print, in points (SPEC section 10).
+pub const MIN_SCRIPT_PT: f32 = 5.0;
+
+/// Size of super- and subscripts relative to their text.
+pub const SCRIPT_SCALE: f32 = 0.7;
+
+/// The one palette: Okabe and Ito's colours by name, and the roles the
+/// drawing code gives them.
+pub mod palette {
+    use crate::encode::Rgb;
+
+    /// Ink: text, axes, blocks (Okabe–Ito's black, softened).
+    pub const INK: Rgb = [34, 34, 34];
+    pub const VERMILLION: Rgb = [213, 94, 0];
+    pub const BLUE: Rgb = [0, 114, 178];
+    pub const BLUISH_GREEN: Rgb = [0, 158, 115];
+    pub const ORANGE: Rgb = [230, 159, 0];
+    pub const SKY_BLUE: Rgb = [86, 180, 233];
+    pub const REDDISH_PURPLE: Rgb = [204, 121, 167];
+    /// Mid grey: the ground state drawn underneath, undecided runs.
+    pub const GREY: Rgb = [150, 150, 150];
+    pub const WHITE: Rgb = [255, 255, 255];
+
+    /// The series colours in order (yellow left out: too pale on paper).
+    pub const SERIES: [Rgb; 7] = [
+        INK,
+        VERMILLION,
+        BLUE,
+        BLUISH_GREEN,
+        ORANGE,
+        SKY_BLUE,
+        REDDISH_PURPLE,
+    ];
+
+    /// A springs and the A end of each block (paper Fig. 2), drawn solid.
+    pub const SPRING_A: Rgb = VERMILLION;
+    /// B springs and the B end of each block, drawn dashed: the second
+    /// cue besides colour.
+    pub const SPRING_B: Rgb = BLUE;
+    /// A kink, in every chart (drawn solid, with circles).
+    pub const KINK: Rgb = VERMILLION;
+    /// An antikink, in every chart (drawn dashed, with squares or rings).
+    pub const ANTIKINK: Rgb = BLUE;
+}
+
+/// Everything a figure's drawing code sizes and colours by.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Theme {
+    /// The style the theme was built from.
+    pub style: Style,
+    /// Whether titles are drawn inside the figure: at `screen` and
+    /// `slide`; journal styles leave the title to the caption.
+    pub titles: bool,
+    /// Design pixels per point.
+    pub px_per_pt: f32,
+    /// Titles (screen and slide only).
+    pub title: f32,
+    /// Axis labels, captions, time labels.
+    pub label: f32,
+    /// Tick labels, legends, marks' words, block numbers.
+    pub tick: f32,
+    /// Panel labels "(a)", "(b1)".
+    pub panel_label: f32,
+    /// Smallest text other than scripts, in design pixels: the style's
+    /// size at a print style.
+    pub min_text: f32,
+    /// Smallest a sub- or superscript may be, in design pixels.
+    pub min_script: f32,
+    /// Data lines.
+    pub line: f32,
+    /// Axes, frames.
+    pub thin: f32,
+    /// Marker radius.
+    pub marker: f32,
+    /// Outer margin.
+    pub margin: f32,
+    /// Gap between panels.
+    pub gap: f32,
+    /// Tallest a figure may print, in points (none at screen).
+    pub max_height_pt: Option<f32>,
+}
+
+impl Theme {
+    /// The theme of `style`.
+    pub fn of(style: &Style) -> Theme {
+        let print = style.is_print();
+        let px_per_pt = style.px_per_pt();
+        let journal = matches!(style.name, StyleName::Paper | StyleName::PaperWide);
+        // At a print style every text but titles at the style's size.
+        let tick = if print { size::LABEL } else { size::TICK };
+        let min_text = if print {
+            style.font_pt * px_per_pt
+        } else {
+            0.0
+        };
+        Theme {
+            style: *style,
+            titles: !journal,
+            px_per_pt,
+            // Titles and panel titles at a print style: the text's size.
+            title: if print { size::LABEL } else { size::TITLE },
+            label: size::LABEL,
+            tick,
+            panel_label: if print {
+                size::LABEL
+            } else {
+                size::PANEL_LABEL
+            },
+            min_text,
+            min_script: if print {
+                MIN_SCRIPT_PT * px_per_pt
+            } else {
+                0.0
+            },
+            line: 2.0,
+            thin: 1.0,
+            marker: 4.0,
+            margin: size::MARGIN as f32,
+            gap: size::GAP as f32,
+            max_height_pt: style.max_height_pt(),
+        }
+    }
+
+    /// The theme of the style in force ([`Style::current`]).
+    pub fn current() -> Theme {
+        Theme::of(&Style::current())
+    }
+
+    /// Height of the band a title (one line) takes above what it names.
+    pub fn title_band(&self) -> f32 {
+        if self.is_print() {
+            (1.5 * self.title).floor()
+        } else {
+            (1.8 * self.title).floor()
+        }
+    }
+
+    /// The font text is set in.
+    pub fn font(&self) -> FontChoice {
+        self.style.font
+    }
+
+    /// Whether this is a print style.
+    pub fn is_print(&self) -> bool {
+        self.style.is_print()
+    }
+
+    /// `px` pixels, or at a print style at least the style's text size
+    /// (for words drawn on pictures: marks, block numbers, time labels).
+    pub fn text_at_least(&self, px: f32) -> f32 {
+        px.max(self.min_text)
+    }
+
+    /// The size of a run of text at `size` shifted into a sub- or
+    /// superscript: [`SCRIPT_SCALE`] of it, and at a print style no less
+    /// than [`MIN_SCRIPT_PT`].
+    pub fn script(&self, size: f32) -> f32 {
+        (size * SCRIPT_SCALE).max(self.min_script.min(size))
+    }
+
+    /// The `i`-th series colour (the palette repeats after seven: series
+    /// should also differ by dash or marker).
+    pub fn series(&self, i: usize) -> Rgb {
+        palette::SERIES[i % palette::SERIES.len()]
+    }
+
+    /// Points per design pixel at the style's own scale.
+    pub fn pt_per_px(&self) -> f32 {
+        1.0 / self.px_per_pt
+    }
+}
+
+/// CIE 1976 colour difference ΔE*ab of two sRGB colours (D65): about 2.3
+/// is a just noticeable difference; categorical colours want 20 or more.
+pub fn delta_e(a: Rgb, b: Rgb) -> f64 {
+    let (p, q) = (lab(a), lab(b));
+    ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+}
+
+/// CIELAB (D65) of an sRGB colour.
+fn lab(c: Rgb) -> [f64; 3] {
+    let lin = |v: u8| {
+        let v = v as f64 / 255.0;
+        if v <= 0.04045 {
+            v / 12.92
+        } else {
+            ((v + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    let (r, g, b) = (lin(c[0]), lin(c[1]), lin(c[2]));
+    let x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
+    let y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+    let z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
+    let f = |t: f64| {
+        if t > 216.0 / 24389.0 {
+            t.cbrt()
+        } else {
+            (24389.0 / 27.0 * t + 16.0) / 116.0
+        }
+    };
+    let (fx, fy, fz) = (f(x), f(y), f(z));
+    [116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paper_sets_every_text_at_the_style_size_and_no_title() {
+        let t = Theme::of(&Style::named(StyleName::Paper));
+        assert!(!t.titles);
+        // 15 px at 15/8 px per pt: 8 pt, tick labels included.
+        assert!((t.tick * t.pt_per_px() - 8.0).abs() < 1e-4);
+        assert!((t.label * t.pt_per_px() - 8.0).abs() < 1e-4);
+        // Scripts: 0.7 × 8 = 5.6 pt ≥ 5 pt.
+        assert!(t.script(t.tick) * t.pt_per_px() >= MIN_SCRIPT_PT);
+        // A 9 pt style's scripts: 6.3 pt; a 6 pt one's: held at 5 pt.
+        let mut small = Style::named(StyleName::Paper);
+        small.font_pt = 6.0;
+        let s = Theme::of(&small);
+        assert!((s.script(s.tick) * s.pt_per_px() - 5.0).abs() < 1e-4);
+    }
+
+    #[test]
+    fn screen_and_slide_keep_titles_and_screen_its_pixels() {
+        let screen = Theme::of(&Style::default());
+        assert!(screen.titles);
+        assert_eq!(screen.tick, size::TICK);
+        assert!(Theme::of(&Style::named(StyleName::Slide)).titles);
+    }
+
+    #[test]
+    fn the_springs_take_two_palette_colours() {
+        assert!(palette::SERIES.contains(&palette::SPRING_A));
+        assert!(palette::SERIES.contains(&palette::SPRING_B));
+        assert_ne!(palette::SPRING_A, palette::SPRING_B);
+    }
+}

@@ -1,0 +1,146 @@
+//! The arrivals view: each wave's arrival time at every block, with the
+//! fitted front speed.
+
+use super::data::RunData;
+use super::dynamic::{panel_labels, wave_name};
+use super::run::{self};
+use crate::error::Result;
+use crate::render::charts::{self, Axis, ChartSpec, Marker, Series};
+use crate::render::{Picture, style};
+use crate::scene::{Scene, describe};
+use crate::sim::{self};
+
+/// Speed in blocks per 1000 τ (see `observables::wave_speed`).
+pub fn fitted_speed(arrivals: &[Option<f64>]) -> Option<f64> {
+    sim::observables::wave_speed(arrivals).map(|v| 1000.0 * v)
+}
+
+/// The least-squares line t = t₀ + n/v through the arrival times of blocks
+/// 2..N−1 (the points [`sim::observables::wave_speed`] fits), drawn over
+/// the blocks the wave reached: its two ends, or `None` when fewer than
+/// three blocks flipped.
+fn fitted_line(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
+    let v = sim::observables::wave_speed(arrivals)?;
+    let last = arrivals.len().saturating_sub(1);
+    let pts: Vec<(f64, f64)> = (1..last)
+        .filter_map(|i| arrivals[i].map(|t| (i as f64 + 1.0, t)))
+        .collect();
+    let n = pts.len() as f64;
+    let (mn, mt) = pts
+        .iter()
+        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
+    let reached: Vec<f64> = arrivals
+        .iter()
+        .enumerate()
+        .filter_map(|(i, t)| t.map(|_| i as f64 + 1.0))
+        .collect();
+    let (lo, hi) = (reached.first()?, reached.last()?);
+    Some(vec![(*lo, mt + (lo - mn) / v), (*hi, mt + (hi - mn) / v)])
+}
+
+/// The arrival-time chart (figure S6): t_n against n for every wave of
+/// every run (from the run's waves record), each wave its own colour of
+/// the palette and its own marker, with its fitted line (solid for a
+/// kink, dashed for an antikink) and its fitted speed in the legend.
+pub fn arrivals_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+    let (spec, data) = arrivals_chart(scene)?;
+    let (w, h) = crate::render::Style::current().frame((820, 560));
+    let picture = Picture::from(charts::line_chart(&spec, w, h)?).fit_page();
+    Ok((picture.titled(describe::title(scene)), data))
+}
+
+/// What [`arrivals_figure`] draws: the chart's series (each wave's marks,
+/// labelled, then its fitted line, unlabelled) and the runs' data.
+pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
+    // `t_end = "auto"` resolved here too, for callers of this function
+    // that did not go through `scenes::render_to` (a no-op when resolved).
+    let scene = &scene.with_auto_window()?;
+    let runs = scene.runs();
+    let labels = panel_labels(scene);
+    let n_max = runs.iter().map(|(s, _)| s.model.n).max().unwrap_or(10);
+    let mut spec = ChartSpec::new(
+        Axis::new("block n").range(0.5, n_max as f64 + 0.5),
+        Axis::new("arrival time tₙ / τ"),
+    )
+    .title(describe::title(scene));
+    let markers = [
+        Marker::Circle,
+        Marker::Square,
+        Marker::Triangle,
+        Marker::Cross,
+    ];
+    let mut k = 0;
+    let mut data = Vec::with_capacity(runs.len());
+    for ((s, _), label) in runs.iter().zip(&labels) {
+        let run = run::simulate(s, &[])?;
+        let traj = &run.trajectory;
+        let alpha = s.model.alpha;
+        // Each wave of the run; a run without a waves record is one wave.
+        let kind_of = |w: &sim::waves::Wave| w.kind == sim::waves::WaveKind::Kink;
+        let mut waves: Vec<DrawnWave<'_>> = traj
+            .waves
+            .waves
+            .iter()
+            .map(|w| (kind_of(w), w.launched_at, w.arrival_times.clone(), Some(w)))
+            .collect();
+        if waves.is_empty() {
+            waves.push((alpha > 0.0, 0.0, traj.arrival_times.clone(), None));
+        }
+        let several = waves.len() > 1;
+        for (kink, launched, arrivals, wave) in waves {
+            let pts: Vec<(f64, f64)> = arrivals
+                .iter()
+                .enumerate()
+                .filter_map(|(i, t)| t.map(|t| (i as f64 + 1.0, t)))
+                .collect();
+            if pts.is_empty() {
+                continue;
+            }
+            let speed = fitted_speed(&arrivals)
+                .map_or_else(|| without_speed(wave), |v| format!("{v:.1} blocks/1000τ"));
+            let word = if kink { "kink" } else { "antikink" };
+            let launched = describe::num(launched.round());
+            let name = match (several, label.is_empty()) {
+                (false, true) => wave_name(alpha),
+                (false, false) => label.clone(),
+                (true, true) => format!(
+                    "{word} from t/τ = {launched} (α = {}°)",
+                    describe::num(alpha)
+                ),
+                (true, false) => format!("{label}, {word} from t/τ = {launched}"),
+            };
+            let color = style::series_color(k + 1);
+            spec = spec.series(
+                Series::scatter(format!("{name}: {speed}"), pts, color, markers[k % 4])
+                    .with_width(1.5),
+            );
+            if let Some(line) = fitted_line(&arrivals) {
+                let fit = Series::line("", line, color).with_width(1.5);
+                spec = spec.series(if kink { fit } else { fit.dashed() });
+            }
+            k += 1;
+        }
+        data.push(RunData::new(label, s, &run));
+    }
+    Ok((spec, data))
+}
+
+/// What the legend says of a wave with no fitted speed, from its fate
+/// (SPEC section 9): where the state proved it stopped (pinned if it never
+/// got past block 2, as a sweep says), where it was annihilated, or that
+/// it has no speed.
+fn without_speed(wave: Option<&sim::waves::Wave>) -> String {
+    use sim::waves::Fate;
+    match wave.map(|w| (w.fate, w.front)) {
+        // The sweeps' words (docs/sweeps.md): pinned if the front never got
+        // past block 2, stalled otherwise.
+        Some((Fate::Stopped, front)) if front <= 2 => format!("pinned at block {front}"),
+        Some((Fate::Stopped, front)) => format!("stalled at block {front}"),
+        Some((Fate::Annihilated { block, .. }, _)) => format!("annihilated at block {block}"),
+        _ => "no speed".to_string(),
+    }
+}
+
+/// A wave of the arrivals chart: kink or not, launched at, its arrival
+/// times, and its record (none for a run without a waves record).
+type DrawnWave<'a> = (bool, f64, Vec<Option<f64>>, Option<&'a sim::waves::Wave>);

@@ -1,0 +1,676 @@
+//! A property test of the print rules (SPEC section 10) over figures the
+//! catalogue does not hold: random views (filmstrip, kymograph, arrivals
+//! with 1–4 waves, sweeps over one and two axes, theory plots) at every
+//! style, at random `--width`/`--height`, drawn by the program as PDFs and
+//! read back with an independent reader (lopdf parsing the content stream,
+//! not the program's own picture model). For every glyph the printed size
+//! is the font size times the scale of its text matrix and of the current
+//! transformation (rotated labels as printed), its box is placed from the
+//! font's own advance widths.
+//!
+//! Checked for each figure drawn:
+//! - no glyph under 5 pt; every glyph that is not a sub- or superscript (a
+//!   run at 0.7 of the run beside it) at least the style's text size at a
+//!   journal style (8 pt at `paper`, `paper-wide`), at least 10 pt at a
+//!   slide (composed figures may set their text down to 10 pt there), at
+//!   least 5 pt at `screen`;
+//! - no two text runs overlap (by more than 0.5 pt each way);
+//! - every glyph on the page;
+//! - at `paper` and `paper-wide` the page no taller than 4.5 in (324 pt), or
+//!   than the `--height` asked;
+//! - every two categorical colours on the page (saturated colours, not
+//!   tints) at least [`MIN_CVD_DELTA_E`] apart (CIE76 ΔE) under simulated
+//!   deuteranopia and protanopia (Machado, Oliveira and Fernandes 2009,
+//!   severity 1), where they are apart in normal vision; kymographs and
+//!   phase diagrams (colour ramps) are left out of this one.
+//!
+//! A size the program refuses is a pass when it exits 2 naming the flag and
+//! the smallest size that works ("... is --height 2.75in"); that size is
+//! then drawn and checked like any other.
+//!
+//! `LADDER_PROPERTY_SEED` changes the seed (default fixed),
+//! `LADDER_PROPERTY_DRAWS` the number of figures (default 48),
+//! `LADDER_PROPERTY_BIN` the program tested (default this build's `ladder`;
+//! point it at an older build to see the test fail there).
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// Categorical colours must stay this far apart (CIE76 ΔE) for a dichromat:
+/// Okabe–Ito's closest pair (orange, vermillion) keeps 18 under
+/// deuteranopia; the old A/B springs (#d62728, #2ca02c) kept 7.
+const MIN_CVD_DELTA_E: f64 = 15.0;
+/// How far below the style's size a glyph may print, pt: a picture whose
+/// design is a pixel wider than the page prints 0.3 % smaller (7.98 pt for
+/// 8 pt), invisible; a text scaled to fit is far below (the arrivals
+/// title printed at 3.6 pt).
+const PRINT_TOLERANCE_PT: f64 = 0.05;
+/// Smallest any glyph may print, pt.
+const MIN_SCRIPT_PT: f64 = 5.0;
+
+/// xorshift64*: a small, seeded generator (the draws must repeat).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    }
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+    fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn pick<'a, T>(&mut self, v: &'a [T]) -> &'a T {
+        &v[self.below(v.len())]
+    }
+}
+
+const STYLES: [&str; 4] = ["paper", "paper-wide", "slide", "screen"];
+
+/// One random figure: the command's arguments (without `--out`), the
+/// style, whether colours are categorical, and the height asked (pt).
+#[derive(Clone, Debug)]
+struct Draw {
+    args: Vec<String>,
+    style: &'static str,
+    categorical: bool,
+    height_pt: Option<f64>,
+}
+
+fn draw(rng: &mut Rng, k: usize) -> Draw {
+    let style = STYLES[k % STYLES.len()];
+    let s = |v: &str| v.to_string();
+    let name = format!("p{k}");
+    let mut categorical = true;
+    let mut args: Vec<String> = match rng.below(6) {
+        // Filmstrip, kymograph or arrivals of the user's own ladder.
+        v @ 0..=2 => {
+            let view = ["filmstrip", "kymograph", "arrivals"][v];
+            categorical = view != "kymograph";
+            let n = 6 + rng.below(if view == "arrivals" { 25 } else { 9 });
+            let sign = if rng.below(2) == 0 { 1.0 } else { -1.0 };
+            let alpha = sign * rng.range(52.0, 80.0).round();
+            let waves = if view == "filmstrip" {
+                1 + rng.below(2)
+            } else {
+                1 + rng.below(4)
+            };
+            let flips: Vec<String> = (0..waves).map(|w| format!("{}", w * 1500)).collect();
+            let t_end = 1500.0 * waves as f64 + 60.0 * n as f64 + rng.range(500.0, 1500.0);
+            vec![
+                s("figure"),
+                s("--view"),
+                s(view),
+                format!("--alpha={alpha}"),
+                s("--n"),
+                format!("{n}"),
+                s("--flips"),
+                flips.join(","),
+                s("--t-end"),
+                format!("{}", t_end.round()),
+                s("--name"),
+                name,
+            ]
+        }
+        // A sweep over α, or over α and b (a phase diagram).
+        3 => {
+            let two = rng.below(2) == 0;
+            categorical = !two;
+            let lo = rng.range(40.0, 60.0).round();
+            let mut a = vec![
+                s("sweep"),
+                format!("--alpha={lo}:{}:10", lo + 20.0),
+                s("--n"),
+                format!("{}", 6 + rng.below(4)),
+                s("--name"),
+                name,
+            ];
+            if two {
+                a.extend([s("--b"), s("1.2:1.4:0.1")]);
+            } else if rng.below(2) == 0 {
+                // Both signs: kinks and antikinks folded onto |α|.
+                a[1] = format!("--alpha=-{}:{}:20", lo + 20.0, lo + 20.0);
+            }
+            a
+        }
+        // A theory plot of the catalogue.
+        _ => {
+            let id = *rng.pick(&[
+                "S5",
+                "barrier",
+                "edge-mode",
+                "winding",
+                "2c",
+                "S3",
+                "2d",
+                "S4",
+            ]);
+            vec![s("figure"), s(id)]
+        }
+    };
+    args.extend([s("--style"), s(style), s("--format"), s("pdf")]);
+    let mut height_pt = None;
+    if style == "paper" || style == "paper-wide" {
+        // Half the time a width and/or height of the user's.
+        if rng.below(2) == 0 {
+            let w = rng.range(2.5, 7.5);
+            args.extend([s("--width"), format!("{w:.2}in")]);
+        }
+        if rng.below(3) == 0 {
+            let h = rng.range(1.5, 6.0);
+            args.extend([s("--height"), format!("{h:.2}in")]);
+            height_pt = Some((h * 100.0).round() / 100.0 * 72.0);
+        }
+    }
+    Draw {
+        args,
+        style,
+        categorical,
+        height_pt,
+    }
+}
+
+/// The smallest text, pt, other than sub- and superscripts, at `style`.
+fn min_text_pt(style: &str) -> f64 {
+    match style {
+        "paper" | "paper-wide" => 8.0,
+        "slide" => 10.0,
+        _ => MIN_SCRIPT_PT,
+    }
+}
+
+fn ladder() -> PathBuf {
+    std::env::var_os("LADDER_PROPERTY_BIN")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from(env!("CARGO_BIN_EXE_ladder")))
+}
+
+/// A 2-D affine map as PDF writes it, [a b c d e f].
+type M = [f64; 6];
+
+fn mul(p: &M, q: &M) -> M {
+    // p then q (row vectors: x' = x·p·q).
+    [
+        p[0] * q[0] + p[1] * q[2],
+        p[0] * q[1] + p[1] * q[3],
+        p[2] * q[0] + p[3] * q[2],
+        p[2] * q[1] + p[3] * q[3],
+        p[4] * q[0] + p[5] * q[2] + q[4],
+        p[4] * q[1] + p[5] * q[3] + q[5],
+    ]
+}
+
+fn apply(m: &M, (x, y): (f64, f64)) -> (f64, f64) {
+    (x * m[0] + y * m[2] + m[4], x * m[1] + y * m[3] + m[5])
+}
+
+/// One glyph as printed: its size (pt), its box on the page, and the text
+/// run (BT … ET block) it belongs to.
+#[derive(Clone, Debug)]
+struct Glyph {
+    size: f64,
+    rect: [f64; 4],
+    run: usize,
+}
+
+/// What a page holds: its size, glyphs, and fill and stroke colours.
+struct Page {
+    width: f64,
+    height: f64,
+    glyphs: Vec<Glyph>,
+    colors: Vec<[u8; 3]>,
+}
+
+fn num(o: &lopdf::Object) -> f64 {
+    match o {
+        lopdf::Object::Integer(i) => *i as f64,
+        lopdf::Object::Real(r) => *r as f64,
+        _ => f64::NAN,
+    }
+}
+
+/// Advance widths (1/1000 em) by glyph code of a Type 0 font's descendant.
+fn widths(doc: &lopdf::Document, font: &lopdf::Dictionary) -> BTreeMap<u32, f64> {
+    let mut out = BTreeMap::new();
+    let resolve = |o: &lopdf::Object| -> Option<lopdf::Object> {
+        match o {
+            lopdf::Object::Reference(r) => doc.get_object(*r).ok().cloned(),
+            other => Some(other.clone()),
+        }
+    };
+    let Some(desc) = font
+        .get(b"DescendantFonts")
+        .ok()
+        .and_then(&resolve)
+        .and_then(|o| o.as_array().ok().cloned())
+    else {
+        return out;
+    };
+    let Some(cid) = desc
+        .first()
+        .and_then(&resolve)
+        .and_then(|o| o.as_dict().ok().cloned())
+    else {
+        return out;
+    };
+    let Some(w) = cid
+        .get(b"W")
+        .ok()
+        .and_then(&resolve)
+        .and_then(|o| o.as_array().ok().cloned())
+    else {
+        return out;
+    };
+    let mut i = 0;
+    while i < w.len() {
+        let first = num(&w[i]) as u32;
+        match w.get(i + 1).and_then(&resolve) {
+            Some(lopdf::Object::Array(ws)) => {
+                for (k, v) in ws.iter().enumerate() {
+                    out.insert(first + k as u32, num(v));
+                }
+                i += 2;
+            }
+            Some(o) => {
+                let last = num(&o) as u32;
+                let v = w.get(i + 2).map_or(0.0, num);
+                for c in first..=last {
+                    out.insert(c, v);
+                }
+                i += 3;
+            }
+            None => break,
+        }
+    }
+    out
+}
+
+fn read_pdf(path: &Path) -> Page {
+    let doc = lopdf::Document::load(path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
+    let (_, page_id) = doc.get_pages().into_iter().next().expect("one page");
+    let media = doc
+        .get_dictionary(page_id)
+        .unwrap()
+        .get(b"MediaBox")
+        .unwrap()
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(num)
+        .collect::<Vec<_>>();
+    let fonts: BTreeMap<Vec<u8>, BTreeMap<u32, f64>> = doc
+        .get_page_fonts(page_id)
+        .unwrap()
+        .into_iter()
+        .map(|(name, dict)| (name, widths(&doc, dict)))
+        .collect();
+    let content = lopdf::content::Content::decode(&doc.get_page_content(page_id)).unwrap();
+    let mut ctm: M = [1.0, 0.0, 0.0, 1.0, 0.0, 0.0];
+    let mut stack = Vec::new();
+    let (mut tm, mut font, mut size, mut run) = (ctm, Vec::new(), 1.0, 0usize);
+    let mut glyphs = Vec::new();
+    let mut colors = Vec::new();
+    for op in &content.operations {
+        let a = &op.operands;
+        match op.operator.as_str() {
+            "q" => stack.push(ctm),
+            "Q" => ctm = stack.pop().unwrap_or(ctm),
+            "cm" => {
+                let m: Vec<f64> = a.iter().map(num).collect();
+                ctm = mul(&[m[0], m[1], m[2], m[3], m[4], m[5]], &ctm);
+            }
+            "BT" => {
+                run += 1;
+                tm = [1.0, 0.0, 0.0, 1.0, 0.0, 0.0];
+            }
+            "Tf" => {
+                font = a[0].as_name().unwrap_or(b"").to_vec();
+                size = num(&a[1]);
+            }
+            "Tm" => {
+                let m: Vec<f64> = a.iter().map(num).collect();
+                tm = [m[0], m[1], m[2], m[3], m[4], m[5]];
+            }
+            "Tj" | "TJ" => {
+                let bytes: Vec<u8> = match &a[0] {
+                    lopdf::Object::String(b, _) => b.clone(),
+                    lopdf::Object::Array(parts) => parts
+                        .iter()
+                        .filter_map(|p| p.as_str().ok().map(|s| s.to_vec()))
+                        .flatten()
+                        .collect(),
+                    _ => Vec::new(),
+                };
+                let m = mul(&tm, &ctm);
+                let scale = (m[0] * m[3] - m[1] * m[2]).abs().sqrt();
+                let w = fonts.get(&font);
+                let mut pen = 0.0;
+                for code in bytes.chunks(2) {
+                    let c = if code.len() == 2 {
+                        u16::from_be_bytes([code[0], code[1]]) as u32
+                    } else {
+                        code[0] as u32
+                    };
+                    let adv = w.and_then(|w| w.get(&c)).copied().unwrap_or(500.0) / 1000.0;
+                    // The glyph's box from its advance, 0.2 em below the
+                    // baseline to 0.7 em above (the ink of most glyphs).
+                    let corners = [(pen, -0.2), (pen + adv, -0.2), (pen, 0.7), (pen + adv, 0.7)]
+                        .map(|(x, y)| apply(&m, (x * size, y * size)));
+                    let xs = corners.map(|p| p.0);
+                    let ys = corners.map(|p| p.1);
+                    let min = |v: [f64; 4]| v.iter().copied().fold(f64::INFINITY, f64::min);
+                    let max = |v: [f64; 4]| v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+                    glyphs.push(Glyph {
+                        size: size * scale,
+                        rect: [min(xs), min(ys), max(xs), max(ys)],
+                        run,
+                    });
+                    pen += adv;
+                }
+                tm = [
+                    tm[0],
+                    tm[1],
+                    tm[2],
+                    tm[3],
+                    tm[4] + pen * size * tm[0],
+                    tm[5] + pen * size * tm[1],
+                ];
+            }
+            "rg" | "RG" => {
+                let c: Vec<f64> = a.iter().map(num).collect();
+                if c.len() == 3 {
+                    colors.push([0, 1, 2].map(|k| (c[k] * 255.0).round() as u8));
+                }
+            }
+            _ => {}
+        }
+    }
+    colors.sort();
+    colors.dedup();
+    Page {
+        width: media[2] - media[0],
+        height: media[3] - media[1],
+        glyphs,
+        colors,
+    }
+}
+
+// ---- colour: sRGB → CIELAB, and Machado et al. (2009) dichromacy ----
+
+fn linear(v: u8) -> f64 {
+    let v = v as f64 / 255.0;
+    if v <= 0.04045 {
+        v / 12.92
+    } else {
+        ((v + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+fn lab_of_linear([r, g, b]: [f64; 3]) -> [f64; 3] {
+    let (r, g, b) = (r.clamp(0.0, 1.0), g.clamp(0.0, 1.0), b.clamp(0.0, 1.0));
+    let x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
+    let y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+    let z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
+    let f = |t: f64| {
+        if t > 216.0 / 24389.0 {
+            t.cbrt()
+        } else {
+            (24389.0 / 27.0 * t + 16.0) / 116.0
+        }
+    };
+    [
+        116.0 * f(y) - 16.0,
+        500.0 * (f(x) - f(y)),
+        200.0 * (f(y) - f(z)),
+    ]
+}
+
+/// Machado 2009, severity 1.0, on linear RGB.
+const DEUTAN: [[f64; 3]; 3] = [
+    [0.367322, 0.860646, -0.227968],
+    [0.280085, 0.672501, 0.047413],
+    [-0.011820, 0.042940, 0.968881],
+];
+const PROTAN: [[f64; 3]; 3] = [
+    [0.152286, 1.052583, -0.204868],
+    [0.114503, 0.786281, 0.099216],
+    [-0.003882, -0.048116, 1.051998],
+];
+
+fn lab(c: [u8; 3], sim: Option<&[[f64; 3]; 3]>) -> [f64; 3] {
+    let l = c.map(linear);
+    let l = match sim {
+        None => l,
+        Some(m) => [0, 1, 2].map(|i| m[i][0] * l[0] + m[i][1] * l[1] + m[i][2] * l[2]),
+    };
+    lab_of_linear(l)
+}
+
+fn delta_e(a: [f64; 3], b: [f64; 3]) -> f64 {
+    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+}
+
+/// Categorical colours: saturated (chroma ≥ 30) and neither dark nor a
+/// pale tint (25 ≤ L ≤ 80).
+fn categorical(colors: &[[u8; 3]]) -> Vec<[u8; 3]> {
+    colors
+        .iter()
+        .copied()
+        .filter(|c| {
+            let l = lab(*c, None);
+            l[1].hypot(l[2]) >= 30.0 && (25.0..=80.0).contains(&l[0])
+        })
+        .collect()
+}
+
+/// Everything wrong with one drawn figure.
+fn problems(d: &Draw, page: &Page) -> (Vec<String>, f64) {
+    let mut out = Vec::new();
+    let min_text = min_text_pt(d.style);
+    let mut smallest = f64::INFINITY;
+    // Sizes by run: a run is a script when it is 0.7 of a run beside it.
+    let mut run_size: BTreeMap<usize, f64> = BTreeMap::new();
+    for g in &page.glyphs {
+        run_size.insert(g.run, g.size);
+    }
+    let is_script = |run: usize, size: f64| {
+        [run.wrapping_sub(1), run + 1].iter().any(|r| {
+            run_size
+                .get(r)
+                .is_some_and(|b| (size / b - 0.7).abs() < 0.03)
+        })
+    };
+    for g in &page.glyphs {
+        smallest = smallest.min(g.size);
+        if g.size < MIN_SCRIPT_PT - 0.01 {
+            out.push(format!(
+                "a glyph prints at {:.2} pt (< {MIN_SCRIPT_PT})",
+                g.size
+            ));
+        } else if g.size < min_text - PRINT_TOLERANCE_PT && !is_script(g.run, g.size) {
+            out.push(format!("text prints at {:.2} pt (< {min_text})", g.size));
+        }
+        let r = g.rect;
+        if r[0] < -0.5 || r[1] < -0.5 || r[2] > page.width + 0.5 || r[3] > page.height + 0.5 {
+            out.push(format!(
+                "a glyph at {r:?} leaves the {}×{} page",
+                page.width, page.height
+            ));
+        }
+    }
+    // Runs' boxes, pairwise.
+    let mut runs: BTreeMap<usize, [f64; 4]> = BTreeMap::new();
+    for g in &page.glyphs {
+        let b = runs.entry(g.run).or_insert(g.rect);
+        *b = [
+            b[0].min(g.rect[0]),
+            b[1].min(g.rect[1]),
+            b[2].max(g.rect[2]),
+            b[3].max(g.rect[3]),
+        ];
+    }
+    let boxes: Vec<[f64; 4]> = runs.into_values().collect();
+    for i in 0..boxes.len() {
+        for j in i + 1..boxes.len() {
+            let (a, b) = (boxes[i], boxes[j]);
+            let w = a[2].min(b[2]) - a[0].max(b[0]);
+            let h = a[3].min(b[3]) - a[1].max(b[1]);
+            if w > 0.5 && h > 0.5 {
+                out.push(format!("text runs at {a:?} and {b:?} overlap"));
+            }
+        }
+    }
+    if d.style == "paper" || d.style == "paper-wide" {
+        let cap = d.height_pt.unwrap_or(324.0);
+        if page.height > cap + 0.5 {
+            out.push(format!(
+                "the page is {:.1} pt tall (> {cap:.1})",
+                page.height
+            ));
+        }
+    }
+    if d.categorical {
+        let cats = categorical(&page.colors);
+        for i in 0..cats.len() {
+            for j in i + 1..cats.len() {
+                let (a, b) = (cats[i], cats[j]);
+                if delta_e(lab(a, None), lab(b, None)) <= 10.0 {
+                    continue;
+                }
+                for (name, m) in [("deuteranopia", &DEUTAN), ("protanopia", &PROTAN)] {
+                    let e = delta_e(lab(a, Some(m)), lab(b, Some(m)));
+                    if e < MIN_CVD_DELTA_E {
+                        out.push(format!(
+                            "colours {a:?} and {b:?} are {e:.1} ΔE apart under {name}"
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    out.dedup();
+    (out, smallest)
+}
+
+/// Runs `args` into `dir`; the PDF written, or the refusal's message.
+fn run(args: &[String], dir: &Path) -> Result<PathBuf, (Option<i32>, String)> {
+    let _ = std::fs::remove_dir_all(dir);
+    let out = Command::new(ladder())
+        .args(args)
+        .arg("--out")
+        .arg(dir)
+        .output()
+        .unwrap();
+    if !out.status.success() {
+        return Err((
+            out.status.code(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        ));
+    }
+    std::fs::read_dir(dir)
+        .unwrap()
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .find(|p| p.extension().is_some_and(|x| x == "pdf"))
+        .ok_or((Some(0), "no PDF written".into()))
+}
+
+/// The size a refusal names ("... the smallest height that holds it is
+/// --height 2.75in"): the flag and its value.
+fn named_size(message: &str) -> Option<(String, String)> {
+    let tail = message.trim().rsplit(" is ").next()?;
+    let mut words = tail.split_whitespace();
+    let flag = words.next()?.to_string();
+    let value = words.next()?.to_string();
+    (flag == "--height" || flag == "--width").then_some((flag, value))
+}
+
+#[test]
+fn random_figures_keep_the_print_rules() {
+    let seed: u64 = std::env::var("LADDER_PROPERTY_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0x5eed_1adde5);
+    let count: usize = std::env::var("LADDER_PROPERTY_DRAWS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(48);
+    let mut rng = Rng(seed | 1);
+    let root = std::env::temp_dir().join(format!("ladder-property-{}", std::process::id()));
+    let (mut drawn, mut refused, mut smallest) = (0, 0, f64::INFINITY);
+    let mut failures = Vec::new();
+    for k in 0..count {
+        let mut d = draw(&mut rng, k);
+        let dir = root.join(format!("{k}"));
+        let pdf = match run(&d.args, &dir) {
+            Ok(p) => p,
+            Err((Some(2), msg)) => {
+                // Refused: one line naming the flag and a size that works.
+                refused += 1;
+                let Some((flag, value)) = named_size(&msg) else {
+                    failures.push(format!("{:?}: refused without a size: {msg}", d.args));
+                    continue;
+                };
+                if msg.trim().lines().count() != 1 {
+                    failures.push(format!("{:?}: refusal is not one line: {msg}", d.args));
+                }
+                let at = d.args.iter().position(|a| *a == flag);
+                match at {
+                    Some(i) => d.args[i + 1] = value.clone(),
+                    None => d.args.extend([flag.clone(), value.clone()]),
+                }
+                if flag == "--height" {
+                    d.height_pt = value
+                        .trim_end_matches("in")
+                        .parse::<f64>()
+                        .ok()
+                        .map(|h| h * 72.0);
+                }
+                match run(&d.args, &dir) {
+                    Ok(p) => p,
+                    Err((_, msg)) => {
+                        failures.push(format!("{:?}: the size named fails too: {msg}", d.args));
+                        continue;
+                    }
+                }
+            }
+            Err((code, msg)) => {
+                failures.push(format!("{:?}: exit {code:?}: {msg}", d.args));
+                continue;
+            }
+        };
+        drawn += 1;
+        let page = read_pdf(&pdf);
+        assert!(!page.glyphs.is_empty(), "{:?}: no text read", d.args);
+        let (found, small) = problems(&d, &page);
+        smallest = smallest.min(small);
+        if !found.is_empty() {
+            let shown: Vec<_> = found.iter().take(4).cloned().collect();
+            failures.push(format!(
+                "{} (+{} more) in `ladder {}`",
+                shown.join("; "),
+                found.len().saturating_sub(4),
+                d.args.join(" ")
+            ));
+        }
+    }
+    let _ = std::fs::remove_dir_all(&root);
+    eprintln!(
+        "print property: seed {seed:#x}, {count} figures asked, {drawn} drawn and read \
+         ({refused} first refused with a size that works), smallest glyph {smallest:.2} pt"
+    );
+    assert!(
+        drawn >= count * 3 / 4,
+        "only {drawn} of {count} figures were drawn"
+    );
+    assert!(
+        failures.is_empty(),
+        "{} of {count} figures break the print rules:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
