@@ -17,6 +17,7 @@ pub mod fold;
 pub mod movie_layout;
 pub mod page_style;
 pub mod picture;
+mod picture_files;
 pub mod snapshot;
 pub mod style;
 mod svg;

@@ -1,245 +1,16 @@
-//! Composition: panels in a grid with labels such as "(a1)" and captions,
-//! a common margin and title; filmstrips of snapshots side by side (paper
-//! Fig. 1c and Fig. 3).
+//! Filmstrips: snapshots of a ladder side by side (paper Fig. 1c and
+//! Fig. 3), folded into columns when long, with time labels, wall marks
+//! and the geometry a caller needs to place its own marks.
 
-use super::canvas::{Canvas, Pen};
-use super::fold::{self, Fold};
-use super::picture::Picture;
-use super::snapshot::{self, Region, Snapshot, View};
-use super::style::{self, DARK, HAlign, VAlign, size};
+use super::grid::*;
 use crate::error::{Error, Result};
 use crate::model::Ladder;
-use tiny_skia::{Pixmap, PixmapPaint, Transform};
-
-/// One picture of a composition with an optional label above it (drawn at
-/// its top left, e.g. "(a1)") and an optional caption centred below it
-/// (one line per `\n`).
-pub struct Panel {
-    pub image: Picture,
-    pub label: Option<String>,
-    pub caption: Option<String>,
-}
-
-impl Panel {
-    /// A panel without label or caption: a [`Picture`], a chart, or a
-    /// raster image (which keeps the composition raster-only).
-    pub fn new(image: impl Into<Picture>) -> Panel {
-        Panel {
-            image: image.into(),
-            label: None,
-            caption: None,
-        }
-    }
-
-    /// Sets the label drawn above the image.
-    pub fn label(mut self, label: impl Into<String>) -> Panel {
-        self.label = Some(label.into());
-        self
-    }
-
-    /// Sets the caption drawn below the image.
-    pub fn caption(mut self, caption: impl Into<String>) -> Panel {
-        self.caption = Some(caption.into());
-        self
-    }
-}
-
-/// Grid layout options.
-#[derive(Clone, Debug)]
-pub struct Layout {
-    /// Panels per row (at least 1).
-    pub columns: usize,
-    /// Title centred above everything.
-    pub title: Option<String>,
-    /// Outer margin in pixels.
-    pub margin: u32,
-    /// Gap between panels in pixels.
-    pub gap: u32,
-}
-
-impl Layout {
-    /// `columns` panels per row, the default margin and gap, no title.
-    pub fn columns(columns: usize) -> Layout {
-        Layout {
-            columns,
-            title: None,
-            margin: size::MARGIN,
-            gap: size::GAP,
-        }
-    }
-
-    /// One row holding every panel.
-    pub fn row(count: usize) -> Layout {
-        Layout::columns(count.max(1))
-    }
-
-    /// Sets the title.
-    pub fn title(mut self, title: impl Into<String>) -> Layout {
-        self.title = Some(title.into());
-        self
-    }
-}
-
-/// Heights of the label band above and the caption band below each image.
-fn bands(panels: &[Panel]) -> (u32, u32) {
-    let label = panels.iter().any(|p| p.label.is_some());
-    let caption = panels.iter().any(|p| p.caption.is_some());
-    let l = if label {
-        (super::Theme::current().panel_label * 1.5) as u32
-    } else {
-        0
-    };
-    let lines = panels
-        .iter()
-        .filter_map(|p| p.caption.as_ref())
-        .map(|c| c.lines().count().max(1))
-        .max()
-        .unwrap_or(0);
-    let c = if caption {
-        (size::LABEL * (0.5 + 1.2 * lines as f32)) as u32
-    } else {
-        0
-    };
-    (l, c)
-}
-
-/// Places panels in a grid (row-major) and rasterises the result at 100 %.
-pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
-    compose_picture(panels, layout)?.to_pixmap()
-}
-
-/// Where a grid puts its panels: the picture's size, the title band's
-/// height, and for each panel its cell's top left corner and size.
-struct Grid {
-    width: u32,
-    height: u32,
-    cells: Vec<((u32, u32), (u32, u32))>,
-    bands: (u32, u32),
-}
-
-impl Grid {
-    fn new(panels: &[Panel], layout: &Layout) -> Result<Grid> {
-        if panels.is_empty() || layout.columns == 0 {
-            return Err(Error::bad_input(
-                "a composition needs at least one panel and one column",
-            ));
-        }
-        let cols = layout.columns.min(panels.len());
-        let rows = panels.len().div_ceil(cols);
-        let mut col_w = vec![0u32; cols];
-        let mut row_h = vec![0u32; rows];
-        for (k, p) in panels.iter().enumerate() {
-            let (w, h) = p.image.pixel_size();
-            col_w[k % cols] = col_w[k % cols].max(w);
-            row_h[k / cols] = row_h[k / cols].max(h);
-        }
-        let (label_h, caption_h) = bands(panels);
-        let title_h = layout
-            .title
-            .as_ref()
-            .map_or(0, |_| super::Theme::current().title_band() as u32);
-        let (m, g) = (layout.margin, layout.gap);
-        let width = 2 * m + col_w.iter().sum::<u32>() + (cols as u32 - 1) * g;
-        let cells_h: u32 = row_h.iter().map(|h| h + label_h + caption_h).sum();
-        let height = 2 * m + title_h + cells_h + (rows as u32 - 1) * g;
-        if width > super::picture::MAX_RASTER_SIDE || height > super::picture::MAX_RASTER_SIDE {
-            return Err(snapshot::bad_size(width, height));
-        }
-        let offsets = |sizes: &[u32], extra: u32| -> Vec<u32> {
-            sizes
-                .iter()
-                .scan(0, |acc, s| {
-                    let at = *acc;
-                    *acc += s + extra + g;
-                    Some(at)
-                })
-                .collect()
-        };
-        let (xs, ys) = (offsets(&col_w, 0), offsets(&row_h, label_h + caption_h));
-        let cells = (0..panels.len())
-            .map(|k| {
-                let (c, r) = (k % cols, k / cols);
-                ((m + xs[c], m + title_h + ys[r]), (col_w[c], row_h[r]))
-            })
-            .collect();
-        Ok(Grid {
-            width,
-            height,
-            cells,
-            bands: (label_h, caption_h),
-        })
-    }
-
-    /// Top left corner of panel `k`'s image, centred in its cell.
-    fn image_origin(&self, k: usize, image: (u32, u32)) -> (u32, u32) {
-        let ((x, y), (cw, ih)) = self.cells[k];
-        (
-            x + (cw - image.0) / 2,
-            y + self.bands.0 + (ih - image.1) / 2,
-        )
-    }
-}
-
-/// Places panels in a grid (row-major). Each column is as wide as its
-/// widest picture and each row as tall as its tallest; pictures are
-/// centred in their cells.
-pub fn compose_picture(panels: &[Panel], layout: &Layout) -> Result<Picture> {
-    let grid = Grid::new(panels, layout)?;
-    let (width, m) = (grid.width, layout.margin);
-    let mut out = Picture::new(width as f32, grid.height as f32);
-    if let Some(t) = &layout.title {
-        let at = (0.5 * width as f32, m as f32);
-        let size = super::Theme::current().title;
-        out.text(t, at, size, DARK, (HAlign::Center, VAlign::Top));
-    }
-    for (k, p) in panels.iter().enumerate() {
-        let at = grid.image_origin(k, p.image.pixel_size());
-        draw_panel(&mut out, p, at, grid.cells[k], grid.bands);
-    }
-    Ok(out)
-}
-
-fn draw_panel(
-    out: &mut Picture,
-    p: &Panel,
-    (ix, iy): (u32, u32),
-    ((x, y), (cw, ih)): ((u32, u32), (u32, u32)),
-    (lh, _ch): (u32, u32),
-) {
-    out.place(&p.image, (ix as f32, iy as f32));
-    if let Some(l) = &p.label {
-        let at = (x as f32 + 2.0, y as f32);
-        out.text(
-            l,
-            at,
-            super::Theme::current().panel_label,
-            DARK,
-            (HAlign::Left, VAlign::Top),
-        );
-    }
-    if let Some(c) = &p.caption {
-        // One text per line, each centred under the image.
-        for (k, line) in c.lines().enumerate() {
-            let at = (
-                x as f32 + 0.5 * cw as f32,
-                (y + lh + ih) as f32 + (0.3 + 1.2 * k as f32) * size::LABEL,
-            );
-            out.text(line, at, size::LABEL, DARK, (HAlign::Center, VAlign::Top));
-        }
-    }
-}
-
-/// Copies `src` onto `dst` with its top left at (`x`, `y`).
-pub fn blit(dst: &mut Pixmap, src: &Pixmap, x: u32, y: u32) {
-    dst.draw_pixmap(
-        x as i32,
-        y as i32,
-        src.as_ref(),
-        &PixmapPaint::default(),
-        Transform::identity(),
-        None,
-    );
-}
+use crate::render::canvas::{Canvas, Pen};
+use crate::render::fold::{self, Fold};
+use crate::render::picture::Picture;
+use crate::render::snapshot::{self, Region, Snapshot, View};
+use crate::render::style::{self, DARK, HAlign, VAlign, size};
+use tiny_skia::Pixmap;
 
 /// One frame of a filmstrip: a time and the state at that time.
 #[derive(Clone, Copy, Debug)]
@@ -297,10 +68,10 @@ fn mark_text() -> f32 {
 }
 
 /// `px` pixels, or more at a print style: the style's text size
-/// ([`super::Theme::text_at_least`]), when the picture is printed at the
+/// ([`crate::render::Theme::text_at_least`]), when the picture is printed at the
 /// style's own scale.
 pub fn at_least_print_min(px: f32) -> f32 {
-    super::Theme::current().text_at_least(px)
+    crate::render::Theme::current().text_at_least(px)
 }
 /// Pixels from the chain to a mark's tip, of its triangle, and from the
 /// triangle to the label.
@@ -375,7 +146,7 @@ const MAX_FOLDED_WIDTH: f32 = 4000.0;
 /// the next row.
 const MAX_FOLDED_ROW: u32 = 1800;
 /// Tallest strip of folded snapshots, in pixels: below
-/// [`super::picture::MAX_RASTER_SIDE`] with room for a figure's title.
+/// [`crate::render::picture::MAX_RASTER_SIDE`] with room for a figure's title.
 const MAX_FOLDED_HEIGHT: u32 = 7600;
 /// A strip fitted into a box takes the fewest rows that draw the ladder at
 /// least this share of the largest any number of rows would.
@@ -573,7 +344,7 @@ impl StripPlan {
         let (w, h) = self.size;
         let (m, gap) = (FIT_MARGIN as f32, self.gap as f32);
         let title = if opts.title.is_some() || opts.label.is_some() {
-            super::Theme::current().title_band()
+            crate::render::Theme::current().title_band()
         } else {
             0.0
         };
@@ -668,7 +439,7 @@ impl StripPlan {
             (w - 0.5, h - 0.5),
             (0.5, h - 0.5),
         ];
-        if let Some(path) = super::canvas::polyline_path(&corners, true) {
+        if let Some(path) = crate::render::canvas::polyline_path(&corners, true) {
             let pen = Pen::new(1.0, style::mix(style::WHITE, style::GREY, 0.45));
             img.stroke(&path, &pen);
         }
@@ -745,7 +516,7 @@ pub fn filmstrip_picture(
     let mut strip = compose_picture(&panels, &layout)?;
     if let Some(l) = &opts.label {
         let at = (layout.margin as f32, layout.margin as f32);
-        let size = super::Theme::current().panel_label;
+        let size = crate::render::Theme::current().panel_label;
         strip.text(l, at, size, DARK, (HAlign::Left, VAlign::Top));
     }
     Ok(strip)
@@ -808,27 +579,4 @@ pub fn filmstrip_geometry(
         );
     }
     Ok(out)
-}
-
-/// A composition's size and the top left corner of each panel's image.
-pub type Placement = ((u32, u32), Vec<(u32, u32)>);
-
-/// The top left corners of `panels` composed with `layout`, and the size
-/// of the composition (see [`compose_picture`]).
-pub fn panel_origins(panels: &[Panel], layout: &Layout) -> Result<Placement> {
-    let grid = Grid::new(panels, layout)?;
-    let origins = panels
-        .iter()
-        .enumerate()
-        .map(|(k, p)| grid.image_origin(k, p.image.pixel_size()))
-        .collect();
-    Ok(((grid.width, grid.height), origins))
-}
-
-/// Draws several snapshots into one canvas region by region (no captions):
-/// the building block for custom layouts.
-pub fn draw_snapshots(canvas: &mut Pixmap, items: &[(Region, Snapshot<'_>)]) {
-    for (r, s) in items {
-        snapshot::draw_snapshot(canvas, *r, s);
-    }
 }
