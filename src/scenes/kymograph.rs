@@ -57,6 +57,18 @@ pub fn kymograph_picture(
     width: u32,
     height: u32,
 ) -> Result<MovieKymograph> {
+    // At a print style the kymograph is a figure of the page, as a
+    // kymograph view is: laid out at the page's size, so that its text
+    // prints at the style's size.
+    let style = crate::render::Style::current();
+    if style.is_print() {
+        let (w, h) = style.frame((820, 560));
+        let chart = kymograph_chart(title, traj, n, w, h)?;
+        return Ok(MovieKymograph {
+            png_scale: 1.0,
+            picture: Picture::from(chart).fit_page().titled(title),
+        });
+    }
     let scale = MovieLayout::new(width, height, n).scale.max(1.0);
     let design = |v: u32| ((v as f32 / scale).round() as u32).max(60);
     let (w, h) = if scale <= 1.0 {
