@@ -6,6 +6,7 @@
 //! `LADDER_FORMATS_DIR=DIR` also writes every file made here to DIR for
 //! inspection (`pdftoppm`, a browser, a video player).
 
+#[cfg(feature = "mp4")]
 use crate::common;
 
 use crate::common::golden::check;
