@@ -62,33 +62,7 @@ pub(super) fn draw_outside_legend(
     (x, y): (i32, i32),
 ) -> Result<()> {
     let row = (size_tick() * 1.55) as i32;
-    let text_style = font(size_tick())
-        .into_font()
-        .color(&rgb(DARK))
-        .pos(Pos::new(HPos::Left, VPos::Center));
-    let labelled = spec
-        .series
-        .iter()
-        .filter_map(|s| s.label.as_ref().map(|l| (s, l)));
-    for (k, (s, label)) in labelled.enumerate() {
-        let at = (x, y + row / 2 + k as i32 * row);
-        let glyph = Glyph {
-            at,
-            line: s.line,
-            marker: s.marker,
-            color: s.color,
-            width: s.width,
-            offset: LEGEND_LINE / 2,
-        };
-        root.draw(&glyph).map_err(plot_error)?;
-        let text = Text::new(
-            label.as_str(),
-            (at.0 + LEGEND_LINE + 6, at.1),
-            text_style.clone(),
-        );
-        root.draw(&text).map_err(plot_error)?;
-    }
-    Ok(())
+    draw_entries(root, spec, |k| (x, y + row / 2 + k as i32 * row))
 }
 
 /// The grid of a legend under the plot of a chart `width` pixels wide:
@@ -121,19 +95,27 @@ fn size_tick() -> f32 {
 pub(super) fn draw_below_legend(root: &Area<'_>, spec: &ChartSpec, y: i32) -> Result<()> {
     let width = root.dim_in_pixel().0;
     let (cols, _, col_w, row, _) = below_grid(spec, width);
+    let used = cols as i32 * col_w;
+    let x0 = ((width as i32 - used) / 2).max(4);
+    draw_entries(root, spec, |k| {
+        let (c, r) = ((k % cols) as i32, (k / cols) as i32);
+        (x0 + c * col_w, y + row / 2 + r * row)
+    })
+}
+
+/// Each labelled series of `spec` as a legend entry, glyph then text, the
+/// `k`-th centred vertically at pixel `at(k)` of the whole chart.
+fn draw_entries(root: &Area<'_>, spec: &ChartSpec, at: impl Fn(usize) -> (i32, i32)) -> Result<()> {
     let text_style = font(size_tick())
         .into_font()
         .color(&rgb(DARK))
         .pos(Pos::new(HPos::Left, VPos::Center));
-    let used = cols as i32 * col_w;
-    let x0 = ((width as i32 - used) / 2).max(4);
     let labelled = spec
         .series
         .iter()
         .filter_map(|s| s.label.as_ref().map(|l| (s, l)));
     for (k, (s, label)) in labelled.enumerate() {
-        let (c, r) = ((k % cols) as i32, (k / cols) as i32);
-        let at = (x0 + c * col_w, y + row / 2 + r * row);
+        let at = at(k);
         let glyph = Glyph {
             at,
             line: s.line,
