@@ -73,6 +73,12 @@ impl Crc32 {
 /// The `.npy` header (version 1.0) of a C-order f64 array of `shape`,
 /// padded so that the data starts at a multiple of 64 bytes.
 pub fn npy_header(shape: &[usize]) -> Vec<u8> {
+    npy_header_of("<f8", shape)
+}
+
+/// The `.npy` header (version 1.0) of a C-order array of dtype `descr`
+/// (`<f8`, `<U12`) and `shape` (empty: a 0-d array).
+fn npy_header_of(descr: &str, shape: &[usize]) -> Vec<u8> {
     let dims = match shape {
         [one] => format!("({one},)"),
         _ => format!(
@@ -84,7 +90,7 @@ pub fn npy_header(shape: &[usize]) -> Vec<u8> {
                 .join(", ")
         ),
     };
-    let mut dict = format!("{{'descr': '<f8', 'fortran_order': False, 'shape': {dims}, }}");
+    let mut dict = format!("{{'descr': '{descr}', 'fortran_order': False, 'shape': {dims}, }}");
     // magic (6) + version (2) + length (2) + dict + '\n'
     let unpadded = 10 + dict.len() + 1;
     dict.push_str(&" ".repeat(unpadded.next_multiple_of(64) - unpadded));
@@ -204,6 +210,38 @@ impl<W: Write + Seek> NpzWriter<W> {
             offset: offset as u32,
         });
         self.at = end;
+        Ok(())
+    }
+
+    /// Writes `text` as the 0-d unicode array `name` (dtype `<Un`, UTF-32,
+    /// n its characters): numpy reads it as `str(npz[name])`. For a
+    /// file's metadata (a few kB), made in memory.
+    pub fn text(&mut self, name: &str, text: &str) -> io::Result<()> {
+        let chars: Vec<u32> = text.chars().map(u32::from).collect();
+        let header = npy_header_of(&format!("<U{}", chars.len().max(1)), &[]);
+        let mut bytes = header;
+        bytes.extend(chars.iter().flat_map(|c| c.to_le_bytes()));
+        if chars.is_empty() {
+            bytes.extend_from_slice(&[0; 4]);
+        }
+        let file = format!("{name}.npy");
+        let size = bytes.len() as u64;
+        if size + self.at > ZIP32_MAX {
+            return Err(invalid(format!(
+                "the array {name} would make the .npz larger than 4 GiB"
+            )));
+        }
+        let crc = Crc32::of(&bytes);
+        let local = local_header(&file, crc, size as u32);
+        self.w.write_all(&local)?;
+        self.w.write_all(&bytes)?;
+        self.entries.push(Entry {
+            name: file,
+            crc,
+            size: size as u32,
+            offset: self.at as u32,
+        });
+        self.at += local.len() as u64 + size;
         Ok(())
     }
 

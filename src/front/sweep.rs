@@ -45,7 +45,8 @@ pub fn result_names(plan: &Plan, outputs: &Outputs) -> Vec<String> {
 /// Runs `todo` (run indices of `plan`) in chunks, adding each chunk's
 /// records to `done` (kept in run order) and handing `done` to
 /// `checkpoint` after every chunk but the last (a shard file rewritten,
-/// or a stop asked for noticed); `tick` after each run.
+/// or a stop asked for noticed); `tick` after each run. The sweep's
+/// files are counted as the runs come in ([`run_in_chunks_within`]).
 pub fn run_in_chunks(
     plan: &Plan,
     todo: &[usize],
@@ -53,11 +54,40 @@ pub fn run_in_chunks(
     tick: &(dyn Fn() + Sync),
     checkpoint: &mut dyn FnMut(&[Record]) -> Result<()>,
 ) -> Result<()> {
+    run_in_chunks_within(plan, todo, done, tick, checkpoint, true)
+}
+
+/// [`run_in_chunks`]; with `count_files` (a process that writes the
+/// sweep's CSV and JSON, not one shard of it), after every chunk the
+/// JSON and the CSV of the runs done so far are counted (encoded into a
+/// counter, not kept) against the cap on a data file's bytes
+/// (`--max-data-bytes`, `limits::Limits::active`). Runs can have more
+/// waves than the estimate before work assumed (walls born in the bulk),
+/// and no bound on the waves is known before a run, so this is where the
+/// bound holds: past the cap, `done` is handed to `checkpoint` (the runs
+/// are kept, and a rerun with a raised cap resumes them) and the sweep
+/// stops with the cap's error. The records held in memory take fewer
+/// bytes than that JSON (16 bytes a number, at least 14 in the JSON), so
+/// the cap bounds the sweep's memory too, up to one chunk; near the cap
+/// the chunks shrink to the runs that the room left holds at the largest
+/// bytes a run has taken.
+pub fn run_in_chunks_within(
+    plan: &Plan,
+    todo: &[usize],
+    done: &mut Vec<Record>,
+    tick: &(dyn Fn() + Sync),
+    checkpoint: &mut dyn FnMut(&[Record]) -> Result<()>,
+    count_files: bool,
+) -> Result<()> {
+    let limits = crate::limits::Limits::active();
+    let cap = limits.cap(crate::limits::Resource::DataBytes);
     let threads = rayon::current_num_threads().max(1);
     // Runs go through the batch kernel a chunk at a time (one run per SIMD
     // lane): start with enough to fill every core's lanes several times.
     let mut chunk = (64 * threads).max(128);
     let mut at = 0;
+    // The largest JSON bytes one run has taken so far.
+    let mut per_run: f64 = 0.0;
     while at < todo.len() {
         let end = (at + chunk).min(todo.len());
         let t0 = Instant::now();
@@ -65,15 +95,55 @@ pub fn run_in_chunks(
         done.extend(records);
         done.sort_by_key(|r| r.run);
         at = end;
+        let mut room = usize::MAX;
+        if count_files {
+            let (json, csv) = counted(plan, done)?;
+            per_run = per_run.max(json as f64 / done.len().max(1) as f64);
+            let detail = |what: &str| {
+                format!(
+                    "the {what} of sweep {}, counted from the {} runs done so far of {}; they are \
+                     kept, and a rerun with a higher cap resumes them",
+                    plan.scene.name,
+                    done.len(),
+                    plan.len()
+                )
+            };
+            let over = limits
+                .check_data_bytes(json as f64, || detail("JSON"))
+                .and_then(|()| limits.check_data_bytes(csv as f64, || detail("CSV")));
+            if let Err(e) = over {
+                checkpoint(done)?;
+                return Err(e.into());
+            }
+            if cap.is_finite() && per_run > 0.0 {
+                room = ((cap - json as f64) / per_run).floor().max(1.0) as usize;
+            }
+        }
         if at < todo.len() {
             checkpoint(done)?;
             // Chunks of a few seconds: frequent checkpoints, few rewrites.
             if t0.elapsed() < Duration::from_secs(2) {
                 chunk = (2 * chunk).min(4096);
             }
+            // Near the cap, no chunk larger than the room left holds.
+            chunk = chunk.min(room).max(1);
         }
     }
     Ok(())
+}
+
+/// The bytes of the JSON and the CSV of `records` (the sweep's files,
+/// counted, not kept).
+fn counted(plan: &Plan, records: &[Record]) -> Result<(u64, u64)> {
+    let stem = format!("sweep-{}", plan.scene.name);
+    let names = [
+        format!("{stem}.png"),
+        format!("{stem}.csv"),
+        format!("{stem}.json"),
+    ];
+    let json = crate::sweep::json::size(plan, records, &names, &[])
+        .map_err(|e| Error::failed(format!("cannot encode the sweep's data file: {e}")))?;
+    Ok((json, crate::sweep::results::csv(plan, records).len() as u64))
 }
 
 /// Writes the result files of a whole sweep into `out` (`sweep-NAME.png`,

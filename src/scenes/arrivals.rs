@@ -10,25 +10,19 @@ use crate::render::{Picture, style};
 use crate::scene::{Scene, describe};
 use crate::sim::{self};
 
-/// Speed in blocks per 1000 τ (see `observables::wave_speed`).
+/// The wave speed c in blocks per 1000 τ (`sweep::outcome::wave_speed`,
+/// the one definition the program reports).
 pub fn fitted_speed(arrivals: &[Option<f64>]) -> Option<f64> {
-    sim::observables::wave_speed(arrivals).map(|v| 1000.0 * v)
+    crate::sweep::outcome::wave_speed(arrivals).map(|v| 1000.0 * v)
 }
 
-/// The least-squares line t = t₀ + n/v through the arrival times of blocks
-/// 2..N−1 (the points [`sim::observables::wave_speed`] fits), drawn over
-/// the blocks the wave reached: its two ends, or `None` when fewer than
-/// three blocks flipped.
+/// The least-squares line t = t̄ + (n − n̄)/c through the arrival times
+/// that the wave speed c fits (blocks 3..N−1,
+/// `sweep::outcome::wave_speed_fit`), drawn over the blocks the wave
+/// reached: its two ends, or `None` when there is no speed.
 fn fitted_line(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
-    let v = sim::observables::wave_speed(arrivals)?;
-    let last = arrivals.len().saturating_sub(1);
-    let pts: Vec<(f64, f64)> = (1..last)
-        .filter_map(|i| arrivals[i].map(|t| (i as f64 + 1.0, t)))
-        .collect();
-    let n = pts.len() as f64;
-    let (mn, mt) = pts
-        .iter()
-        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
+    let fit = crate::sweep::outcome::wave_speed_fit(arrivals)?;
+    let (v, (mn, mt)) = (fit.speed, fit.centroid);
     let reached: Vec<f64> = arrivals
         .iter()
         .enumerate()

@@ -104,9 +104,14 @@ pub struct RunData {
     pub t_end: f64,
     pub integrator: IntegratorReport,
     pub arrival_times: Vec<Option<f64>>,
-    /// Speed of the wave in blocks per τ (least squares over blocks
-    /// 2..N−1), when at least three of them flipped.
+    /// The wave speed c in blocks per τ (`sweep::outcome::wave_speed`:
+    /// least squares over blocks 3..N−1, the one definition the program
+    /// reports); `None` when too few flipped in order.
     pub speed: Option<f64>,
+    /// Of blocks 1..N − 1, how many flipped by the end of the run
+    /// (`sweep::outcome::blocks_flipped`: block N, free, is left out, as
+    /// in a sweep's CSV).
+    pub blocks_flipped: usize,
     pub final_theta_deg: Vec<f64>,
     /// Every wave of the run and block N's fate (SPEC section 9).
     pub waves: sim::waves::Waves,
@@ -296,7 +301,8 @@ impl RunData {
             t_end: scene.run.t_end,
             integrator: run.integrator.clone(),
             arrival_times: traj.arrival_times.clone(),
-            speed: sim::observables::wave_speed(&traj.arrival_times),
+            speed: crate::sweep::outcome::wave_speed(&traj.arrival_times),
+            blocks_flipped: crate::sweep::outcome::blocks_flipped(&traj.arrival_times),
             final_theta_deg: traj.final_theta_deg(),
             waves: traj.waves.clone(),
             frames: Frames(Arc::new(rows)),
@@ -360,6 +366,19 @@ pub const NPZ_ARRAYS: [&str; 11] = [
     "energy",
 ];
 
+/// Name of the `.npz` array holding the file's provenance (JSON text,
+/// [`NpzMetadata`]).
+pub const NPZ_METADATA: &str = "metadata";
+
+/// What an `.npz` says of itself (SPEC section 11: every file carries
+/// its provenance): the program that wrote it and the scene it ran.
+#[derive(Debug, Clone, Serialize)]
+pub struct NpzMetadata<'a> {
+    #[serde(flatten)]
+    pub made_by: MadeBy<'a>,
+    pub scene: &'a Scene,
+}
+
 /// θ wrapped to (−π, π], as the CSV's degrees are to (−180°, 180°].
 fn wrap_rad(theta: f64) -> f64 {
     let w = theta.rem_euclid(std::f64::consts::TAU);
@@ -389,7 +408,17 @@ fn column<W: Write>(
 /// `kinetic_energy` ½m(Ẋ²+Ẏ²)+½Iθ̇², `elastic_energy`
 /// Σ½k[(L_A−a)²+(L_B−b)²], `gravitational_energy` −mGΣX_n and their sum
 /// `energy` (SPEC section 1). Nothing is held beyond one buffer.
-pub fn write_npz<W: Write + Seek>(traj: &sim::Trajectory, ladder: &Ladder, w: W) -> io::Result<W> {
+///
+/// Last, `metadata`: the file's provenance as JSON text in a 0-d unicode
+/// array ([`NPZ_METADATA`]; `json.loads(str(npz["metadata"]))`): the
+/// program, version, commit, build, command line and the scene run
+/// ([`NpzMetadata`], docs/formats.md).
+pub fn write_npz<W: Write + Seek>(
+    traj: &sim::Trajectory,
+    ladder: &Ladder,
+    metadata: &NpzMetadata<'_>,
+    w: W,
+) -> io::Result<W> {
     let samples = traj.times.len();
     let n = ladder.n();
     let mut npz = NpzWriter::new(w);
@@ -418,5 +447,7 @@ pub fn write_npz<W: Write + Seek>(traj: &sim::Trajectory, ladder: &Ladder, w: W)
             (0..samples).try_for_each(|k| a.push(e(k)))
         })?;
     }
+    let text = serde_json::to_string(metadata).map_err(io::Error::other)?;
+    npz.text(NPZ_METADATA, &text)?;
     npz.finish()
 }

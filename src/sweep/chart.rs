@@ -46,6 +46,8 @@ pub fn outcome_color(o: Outcome) -> Rgb {
         Outcome::Pinned => palette::VERMILLION,
         Outcome::Diverged => style::DARK,
         Outcome::Undecided => style::GREY,
+        Outcome::Annihilated => palette::REDDISH_PURPLE,
+        Outcome::Failed => palette::BLUISH_GREEN,
     }
 }
 
@@ -58,8 +60,8 @@ pub fn outcome_marker(o: Outcome, antikink: bool) -> Marker {
         (Outcome::Propagated, true) => Marker::Ring,
         (Outcome::Pinned, false) => Marker::Cross,
         (Outcome::Pinned, true) => Marker::Plus,
-        (Outcome::Stalled, _) => Marker::Triangle,
-        (Outcome::Diverged | Outcome::Undecided, _) => Marker::Square,
+        (Outcome::Stalled | Outcome::Annihilated, _) => Marker::Triangle,
+        (Outcome::Diverged | Outcome::Undecided | Outcome::Failed, _) => Marker::Square,
     }
 }
 

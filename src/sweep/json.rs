@@ -113,14 +113,18 @@ fn data<'a>(
             kinetic_tolerance: tol.kinetic,
             force_tolerance: tol.force,
             stability_margin: tol.margin,
-            description: "propagated: block N-1 flipped; otherwise, after the drive, pinned \
+            description: "propagated: the driven wave reached block N-1 (blocks 1 to N-1 \
+                          flipped); annihilated: the driven wave (the first from block 1) met a \
+                          wall running the other way; otherwise, after the drive, pinned \
                           (front <= 2) or stalled once the state is proved at rest (kinetic \
                           energy and largest residual force under the tolerances) at a linearly \
                           stable equilibrium (smallest mass-weighted eigenvalue of the clamped \
-                          Hessian above the margin); undecided at the cap (docs/sweeps.md). The \
-                          outcome columns describe blocks 1 to N-1 from the top (front <= N-1); \
-                          block_n_turned_at is when the free block N first turned; `waves` has \
-                          every wave",
+                          Hessian above the margin); undecided at the cap; diverged when the \
+                          integration blew up; failed when the run could not start (message) \
+                          (docs/sweeps.md). The outcome columns describe blocks 1 to N-1 from \
+                          the top (front <= N-1, blocks_flipped of those N-1); speed is the wave \
+                          speed c over blocks 3 to N-1; block_n_turned_at is when the free block \
+                          N first turned; `waves` has every wave",
         },
         outcomes,
         theory: super::chart::theory_points(plan),

@@ -170,7 +170,7 @@ fn fingerprint(scene: &Scene, spec: &SweepSpec, axes: &[(Param, Vec<f64>)]) -> R
         drive: &scene.drive,
         run: &scene.run,
         axes: axes.iter().map(|(p, v)| (p.name(), v.as_slice())).collect(),
-        rule: "rest-proof",
+        rule: "rest-proof; driven wave; failed points",
         cap: spec.cap,
     };
     let text = serde_json::to_string(&key)

@@ -14,8 +14,15 @@
 //!   is free and turns its own way (at small |α| it falls over on its own
 //!   before the wave arrives), so its turn is recorded beside the front
 //!   (`RunResult::block_n_turned_at`), never counted in it.
+//! - **annihilated**: the wave the drive launched (the first wave from
+//!   block 1) met a wall running the other way (one that the free block N
+//!   launched on its own, at small |α|) and the two annihilated
+//!   ([`of_driven_wave`]): the chain may end flipped, but the driven wave
+//!   did not propagate.
 //! - a run that reaches the cap without either is **undecided**; one whose
-//!   integration blew up is **diverged** (decided by the run loop).
+//!   integration blew up is **diverged** (decided by the run loop); one
+//!   that could not start (its relaxed start found no hanging
+//!   equilibrium) is **failed**, with its reason.
 //!
 //! No waiting time decides anything: near an edge a wave can wait at a
 //! block for tens of thousands of τ and then move on (docs/sweeps.md), so
@@ -40,15 +47,22 @@ pub enum Outcome {
     Diverged,
     /// Neither propagated nor stopped by the cap.
     Undecided,
+    /// The driven wave was annihilated by a wall running the other way.
+    Annihilated,
+    /// The run could not be made (its start found no equilibrium); the
+    /// record's message says why.
+    Failed,
 }
 
 impl Outcome {
-    pub const ALL: [Outcome; 5] = [
+    pub const ALL: [Outcome; 7] = [
         Self::Propagated,
+        Self::Annihilated,
         Self::Stalled,
         Self::Pinned,
         Self::Diverged,
         Self::Undecided,
+        Self::Failed,
     ];
 
     pub fn name(self) -> &'static str {
@@ -58,6 +72,8 @@ impl Outcome {
             Self::Pinned => "pinned",
             Self::Diverged => "diverged",
             Self::Undecided => "undecided",
+            Self::Annihilated => "annihilated",
+            Self::Failed => "failed",
         }
     }
 
@@ -171,9 +187,34 @@ pub fn block_n_turned_at(arrivals: &[Option<f64>]) -> Option<f64> {
     arrivals.last().copied().flatten()
 }
 
-/// Number of blocks that flipped.
+/// How many blocks flipped, counted as the front is: of blocks 1..N − 1
+/// (the chain the driven wave crosses), those whose polarisation changed
+/// sign. Block N, free, is left out (its own turn is
+/// [`block_n_turned_at`]): whether it has turned says when the run was
+/// looked at (a sweep stops at t_{N−1}, a single run goes on to its
+/// t_end), not what the wave did, so a run and a sweep of the same
+/// scene agree on this count (docs/sweeps.md, "The files").
 pub fn blocks_flipped(arrivals: &[Option<f64>]) -> usize {
-    arrivals.iter().filter(|a| a.is_some()).count()
+    let above_n = arrivals.len().saturating_sub(1).max(1).min(arrivals.len());
+    arrivals[..above_n].iter().filter(|a| a.is_some()).count()
+}
+
+/// The outcome word of a run whose rule decided `decided`, told by what
+/// the driven wave did (the first wave launched by block 1, from
+/// `waves`): a driven wave annihilated by a wall running the other way
+/// is [`Outcome::Annihilated`], whatever the chain's blocks did after
+/// (at α = 40°, N = 10, the free block N falls over at 136 τ and its wall
+/// meets the driven kink at block 3: every block ends flipped, but the
+/// kink did not propagate). A diverged or failed run keeps its word.
+pub fn of_driven_wave(decided: Outcome, waves: &crate::sim::waves::Waves) -> Outcome {
+    use crate::sim::waves::Fate;
+    if matches!(decided, Outcome::Diverged | Outcome::Failed) {
+        return decided;
+    }
+    match waves.waves.iter().find(|w| w.origin == 1).map(|w| w.fate) {
+        Some(Fate::Annihilated { .. }) => Outcome::Annihilated,
+        _ => decided,
+    }
 }
 
 /// Shortest time between the arrivals of successive blocks that is still
@@ -185,17 +226,52 @@ pub fn blocks_flipped(arrivals: &[Option<f64>]) -> usize {
 /// |α| = 89°, N = 10, b/s = 1.3: `ladder theory --alpha 89`).
 pub const COLLECTIVE_FLIP_GAP: f64 = 1.0;
 
-/// Speed of the wave in blocks per τ: the inverse least-squares slope of
-/// t_n against n over the blocks past block 2 and before the free bottom
-/// block (n = 3..N−1) that flipped; `None` with fewer than three of them,
-/// no positive slope, or blocks that flip in groups rather than one after
-/// another: when at least half the gaps between successive arrivals are
-/// shorter than [`COLLECTIVE_FLIP_GAP`] (near |α| = 90°: at 89° the
-/// antikink's blocks 2–9 flip within 0.8 τ, the kink's in two groups), a
-/// slope through them is no speed.
-pub fn speed(arrivals: &[Option<f64>]) -> Option<f64> {
+/// The first block (one-based) whose arrival enters the wave speed
+/// [`wave_speed`]: block 1 is driven and block 2 is pushed by it, so
+/// their arrival times follow the drive, not the wave.
+pub const FIRST_SPEED_BLOCK: usize = 3;
+
+/// The least-squares fit behind [`wave_speed`]: the speed c (blocks per
+/// τ) and the centroid (n̄, t̄) of the points fitted, so that the line is
+/// t = t̄ + (n − n̄)/c.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpeedFit {
+    pub speed: f64,
+    pub centroid: (f64, f64),
+}
+
+/// **The wave speed c**, in blocks per τ: the one definition the program
+/// reports (a run's `speed`, the arrivals figure S6's legend and line,
+/// a sweep's `speed` column, `simulate --json`).
+///
+/// The paper measures the kink's and antikink's speeds c_kink and
+/// c_antikink from t_n, the time the wave reaches block n, against n
+/// (Supplement, "Experiment", Fig. S-experiment (d)), and finds them
+/// insensitive to the initial excitation (main text, p. 2). So c is the
+/// inverse least-squares slope of t_n against n over the blocks past the
+/// drive's reach and before the free bottom block, n = 3..N−1
+/// ([`FIRST_SPEED_BLOCK`]; block 1 is driven, block 2 pushed by it, and
+/// block N turns its own way), that flipped. Measured at α = 60°, N = 10:
+/// with drive times T_d = 250, 500, 1000 and 2000 τ this c is 0.007727,
+/// 0.007729, 0.007729 and 0.007728 blocks/τ, where a fit over blocks
+/// 2..N−1 gives 0.007630 to 0.007374 (it follows the drive);
+/// docs/sweeps.md, "The wave speed".
+///
+/// `None` with fewer than three such blocks, no positive slope (blocks
+/// that do not flip in order down the ladder: walls from both ends), or
+/// blocks that flip in groups rather than one after another: when at
+/// least half the gaps between successive arrivals are shorter than
+/// [`COLLECTIVE_FLIP_GAP`] (near |α| = 90°: at 89° the antikink's blocks
+/// 2–9 flip within 0.8 τ, the kink's in two groups), a slope through
+/// them is no speed.
+pub fn wave_speed(arrivals: &[Option<f64>]) -> Option<f64> {
+    wave_speed_fit(arrivals).map(|f| f.speed)
+}
+
+/// [`wave_speed`] with the fitted line's centroid.
+pub fn wave_speed_fit(arrivals: &[Option<f64>]) -> Option<SpeedFit> {
     let n = arrivals.len();
-    let pts: Vec<(f64, f64)> = (2..n.saturating_sub(1))
+    let pts: Vec<(f64, f64)> = (FIRST_SPEED_BLOCK - 1..n.saturating_sub(1))
         .filter_map(|i| arrivals[i].map(|t| (i as f64 + 1.0, t)))
         .collect();
     if pts.len() < 3 {
@@ -209,7 +285,14 @@ pub fn speed(arrivals: &[Option<f64>]) -> Option<f64> {
         return None;
     }
     let slope = crate::sim::observables::least_squares_slope(&pts);
-    (slope.is_finite() && slope > 0.0).then(|| 1.0 / slope)
+    let k = pts.len() as f64;
+    let centroid = pts
+        .iter()
+        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / k, b + p.1 / k));
+    (slope.is_finite() && slope > 0.0).then(|| SpeedFit {
+        speed: 1.0 / slope,
+        centroid,
+    })
 }
 
 #[cfg(test)]
@@ -308,11 +391,11 @@ mod tests {
         assert_eq!(front(&a), 5);
         assert_eq!(blocks_flipped(&a), 5);
         // Blocks 3, 4, 5 one per 100 τ.
-        assert!((speed(&a).unwrap() - 0.01).abs() < 1e-12);
+        assert!((wave_speed(&a).unwrap() - 0.01).abs() < 1e-12);
         let b = arr(&[Some(500.0), None, Some(1000.0), Some(1100.0), None]);
         assert_eq!(front(&b), 1);
         assert_eq!(blocks_flipped(&b), 3);
-        assert_eq!(speed(&b), None);
+        assert_eq!(wave_speed(&b), None);
     }
 
     #[test]
@@ -331,7 +414,7 @@ mod tests {
             None,
         ]);
         assert_eq!(front(&together), 9);
-        assert_eq!(speed(&together), None);
+        assert_eq!(wave_speed(&together), None);
         assert_eq!(block_n_turned_at(&together), None);
         // Block N turned on its own before the wave reached block N − 1
         // (|α| = 40°, N = 10: at 136 τ, before the drive): the front still
@@ -339,7 +422,7 @@ mod tests {
         let mut all = together.clone();
         all[9] = Some(135.9);
         assert_eq!(front(&all), 9);
-        assert_eq!(blocks_flipped(&all), 10);
+        assert_eq!(blocks_flipped(&all), 9);
         assert_eq!(block_n_turned_at(&all), Some(135.9));
         // The kink at 89°: blocks 2–4 together, then 5–9 together.
         let groups = arr(&[
@@ -354,7 +437,7 @@ mod tests {
             Some(1095.5),
             None,
         ]);
-        assert_eq!(speed(&groups), None);
+        assert_eq!(wave_speed(&groups), None);
         // The kink at 88°: blocks 3–5 together (a third of the gaps), then
         // a wave at about 205 τ per block: a speed.
         let mostly_wave = arr(&[
@@ -369,12 +452,55 @@ mod tests {
             Some(1989.9),
             None,
         ]);
-        assert!(speed(&mostly_wave).is_some());
+        assert!(wave_speed(&mostly_wave).is_some());
         // The same blocks 1.1 τ apart: a (fast) wave, 1/1.1 blocks per τ.
         let mut fast = together.clone();
         for (k, a) in fast.iter_mut().enumerate().take(9).skip(1) {
             *a = Some(747.4 + 1.1 * (k - 1) as f64);
         }
-        assert!((speed(&fast).unwrap() - 1.0 / 1.1).abs() < 1e-9);
+        assert!((wave_speed(&fast).unwrap() - 1.0 / 1.1).abs() < 1e-9);
+    }
+
+    #[test]
+    fn an_annihilated_driven_wave_is_not_propagation() {
+        use crate::sim::waves::{Fate, Wave, WaveKind, Waves};
+        let wave = |origin, fate| Wave {
+            kind: WaveKind::Kink,
+            origin,
+            launched_at: 0.0,
+            arrival_times: vec![None; 4],
+            front: origin,
+            fate,
+        };
+        let met = Fate::Annihilated {
+            with: 0,
+            at: 773.4,
+            block: 3,
+        };
+        // α = 40°: block N's wall (listed first) meets the driven kink.
+        let waves = Waves {
+            waves: vec![wave(10, met), wave(1, met)],
+            ..Default::default()
+        };
+        assert_eq!(
+            of_driven_wave(Outcome::Propagated, &waves),
+            Outcome::Annihilated
+        );
+        assert_eq!(of_driven_wave(Outcome::Diverged, &waves), Outcome::Diverged);
+        // Only the driven wave's fate counts: a wall born elsewhere that
+        // annihilated leaves a driven wave that reached the end propagated.
+        let ended = Waves {
+            waves: vec![wave(1, Fate::End), wave(6, met), wave(7, met)],
+            ..Default::default()
+        };
+        assert_eq!(
+            of_driven_wave(Outcome::Propagated, &ended),
+            Outcome::Propagated
+        );
+        assert_eq!(
+            Outcome::from_name("annihilated"),
+            Some(Outcome::Annihilated)
+        );
+        assert_eq!(Outcome::from_name("failed"), Some(Outcome::Failed));
     }
 }

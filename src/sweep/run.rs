@@ -34,7 +34,8 @@ pub const MAX_HALVINGS: u32 = 4;
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RunResult {
     pub outcome: Outcome,
-    /// Blocks whose polarisation changed sign.
+    /// Of blocks 1..N − 1, those whose polarisation changed sign
+    /// (`outcome::blocks_flipped`).
     pub blocks_flipped: usize,
     /// The last block the wave reached: blocks 1..=front all flipped,
     /// front ≤ N − 1 (block N is kept apart: `block_n_turned_at`).
@@ -46,7 +47,7 @@ pub struct RunResult {
     pub block_n_turned_at: Option<f64>,
     /// Blocks per τ, least squares over blocks 3..N−1; `None` when fewer
     /// than three of them flipped or they flip in groups
-    /// (`outcome::speed`).
+    /// (`outcome::wave_speed`, the one definition of the wave speed).
     pub speed: Option<f64>,
     /// When the outcome was decided (`None` for a diverged run).
     pub t_decided: Option<f64>,
@@ -266,11 +267,68 @@ struct AutoState {
 /// Runs the single-run `scenes` (points of one sweep under `spec`) until
 /// each is decided, many at once (see the module's doc); results in the
 /// order of `scenes`, equal to [`run_point`]'s.
+///
+/// A point that cannot start (a relaxed start that finds no hanging
+/// equilibrium: a failed run, not bad input) is a `failed` record with
+/// the reason, and the other points run on (issue 32).
 pub fn run_points(scenes: &[Scene], spec: &SweepSpec) -> Result<Vec<RunResult>> {
-    let points: Vec<Prepared> = scenes
-        .par_iter()
-        .map(|s| prepare(s, spec))
-        .collect::<Result<_>>()?;
+    let prepared: Vec<Result<Prepared>> = scenes.par_iter().map(|s| prepare(s, spec)).collect();
+    let mut results: Vec<Option<RunResult>> = scenes.iter().map(|_| None).collect();
+    let mut points = Vec::with_capacity(scenes.len());
+    let mut at = Vec::with_capacity(scenes.len());
+    for (k, p) in prepared.into_iter().enumerate() {
+        match p {
+            Ok(p) => {
+                points.push(p);
+                at.push(k);
+            }
+            Err(e) if e.is_failed_run() => results[k] = Some(failed(&scenes[k], e.to_string())),
+            Err(e) => return Err(e),
+        }
+    }
+    for (k, r) in at.into_iter().zip(run_prepared(points)?) {
+        results[k] = Some(r);
+    }
+    Ok(results
+        .into_iter()
+        .map(|r| r.expect("every point has a result"))
+        .collect())
+}
+
+/// The record of a point that could not start: outcome `failed`, its
+/// reason in the message.
+fn failed(scene: &Scene, msg: String) -> RunResult {
+    let integrator = scene.run.integrator.to_string();
+    RunResult {
+        outcome: Outcome::Failed,
+        dt: scene.run.dt.filter(|_| integrator != "auto").unwrap_or(0.0),
+        integrator,
+        message: Some(msg),
+        ..diverged_blank(scene.model.n)
+    }
+}
+
+/// A record with nothing run: no arrival, no decision.
+fn diverged_blank(n: usize) -> RunResult {
+    RunResult {
+        outcome: Outcome::Diverged,
+        blocks_flipped: 0,
+        front: 0,
+        block_n_turned_at: None,
+        speed: None,
+        t_decided: None,
+        arrival_times: vec![None; n],
+        integrator: String::new(),
+        dt: 0.0,
+        arrival_error: None,
+        force_evals: 0,
+        waves: Waves::default(),
+        message: None,
+    }
+}
+
+/// [`run_points`] for the points that started.
+fn run_prepared(points: Vec<Prepared>) -> Result<Vec<RunResult>> {
     let mut results: Vec<Option<RunResult>> = points.iter().map(|_| None).collect();
     let mut auto: Vec<Option<AutoState>> = points.iter().map(|_| None).collect();
     // Round 0: every point's first integration.
@@ -408,11 +466,11 @@ fn from_decided(
         .map(|a| a.filter(|&t| t <= decision.t_decided))
         .collect();
     RunResult {
-        outcome: decision.outcome,
+        outcome: outcome::of_driven_wave(decision.outcome, &d.waves),
         blocks_flipped: outcome::blocks_flipped(&arrivals),
         front: outcome::front(&arrivals),
         block_n_turned_at: outcome::block_n_turned_at(&arrivals),
-        speed: outcome::speed(&arrivals),
+        speed: outcome::wave_speed(&arrivals),
         t_decided: Some(decision.t_decided),
         arrival_times: arrivals,
         integrator: config.kind.name().into(),

@@ -192,15 +192,17 @@ fn elements(svg: &str, tag: &str) -> Vec<Element> {
     out
 }
 
-/// A 3 × 2 phase diagram (α across, γ up) with one point per outcome
+/// A 4 × 2 phase diagram (α across, γ up) with one point per outcome
 /// (and a second propagated point): outcome at (column, row).
-const CELLS: [(usize, usize, Outcome); 6] = [
+const CELLS: [(usize, usize, Outcome); 8] = [
     (0, 0, Outcome::Propagated),
     (1, 0, Outcome::Stalled),
     (2, 0, Outcome::Pinned),
+    (3, 0, Outcome::Annihilated),
     (0, 1, Outcome::Diverged),
     (1, 1, Outcome::Undecided),
-    (2, 1, Outcome::Propagated),
+    (2, 1, Outcome::Failed),
+    (3, 1, Outcome::Propagated),
 ];
 
 fn phase_diagram() -> jacobs_ladder::render::Chart {
@@ -210,7 +212,7 @@ name = "colours"
 kind = "sweep"
 [output.grid]
 gamma = [0.01, 0.02]
-alpha = [-50, -55, -60]
+alpha = [-45, -50, -55, -60]
 [output.charts]
 theory = false
 "#;
@@ -226,7 +228,7 @@ theory = false
         .map(|run| {
             let p = &plan.points[run];
             // Columns by increasing α, rows by increasing γ.
-            let col = [-60.0, -55.0, -50.0]
+            let col = [-60.0, -55.0, -50.0, -45.0]
                 .iter()
                 .position(|a| *a == p[ka])
                 .unwrap();
@@ -311,7 +313,7 @@ fn every_outcome_colour_and_legend_swatch_matches_the_documented_table() {
     };
     let xs = distinct(cells.iter().map(|c| c.num("x")).collect());
     let ys = distinct(cells.iter().map(|c| c.num("y")).collect());
-    assert_eq!((xs.len(), ys.len()), (3, 2), "a 3 × 2 grid");
+    assert_eq!((xs.len(), ys.len()), (4, 2), "a 4 × 2 grid");
     cells.sort_by(|a, b| a.num("x").total_cmp(&b.num("x")));
     for c in cells {
         let col = xs

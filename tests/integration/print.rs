@@ -511,13 +511,14 @@ fn arrivals_draw_every_wave_with_its_fitted_line() {
             LineStyle::Dashed
         };
         assert_eq!(line.line, want, "{:?}", marks.label);
-        // Least squares over blocks 2..N−1 (n from 2 to N−1).
+        // Least squares over blocks 3..N−1 (the wave speed c,
+        // docs/sweeps.md "The wave speed").
         let n_max = data[0].model.n as f64;
         let pts: Vec<(f64, f64)> = marks
             .points
             .iter()
             .copied()
-            .filter(|p| p.0 >= 2.0 && p.0 <= n_max - 1.0)
+            .filter(|p| p.0 >= 3.0 && p.0 <= n_max - 1.0)
             .collect();
         let k = pts.len() as f64;
         let mx = pts.iter().map(|p| p.0).sum::<f64>() / k;

@@ -742,9 +742,17 @@ fn the_sweep_keeps_block_n_apart_from_the_front() {
     for line in lines {
         let row: Vec<&str> = line.split(',').collect();
         let alpha: f64 = row[col("alpha")].parse().unwrap();
-        assert_eq!(row[col("outcome")], "propagated", "{line}");
+        // Up to 48° the wall block N launched meets the driven kink: the
+        // chain ends flipped, but the driven wave was annihilated.
+        let word = if alpha <= 48.0 {
+            "annihilated"
+        } else {
+            "propagated"
+        };
+        assert_eq!(row[col("outcome")], word, "{line}");
         assert_eq!(row[col("front")], "9", "{line}");
-        assert_eq!(row[col("blocks_flipped")] == "10", alpha <= 48.0, "{line}");
+        // Blocks 1..N − 1 counted, as the front: block N is apart.
+        assert_eq!(row[col("blocks_flipped")], "9", "{line}");
         assert_eq!(
             !row[col("block_n_turned_at")].is_empty(),
             alpha <= 48.0,

@@ -149,8 +149,9 @@ pub enum Command {
     /// Measure the integrators: speed against accuracy, stability limits, kernels
     Bench(BenchArgs),
     /// Run a scene over a grid of parameters and say what the wave did in
-    /// each run (propagated, stalled, pinned, diverged or undecided); shard
-    /// it over processes or machines and gather the shards
+    /// each run (propagated, annihilated, stalled, pinned, diverged,
+    /// undecided or failed); shard it over processes or machines and gather
+    /// the shards
     Sweep(SweepArgs),
     /// Print a shell completion script: `ladder completions bash >
     /// ~/.local/share/bash-completion/completions/ladder` (zsh, fish,
@@ -289,11 +290,14 @@ pub struct SimulateArgs {
     /// Print one JSON object instead of a table
     #[arg(long)]
     pub json: bool,
-    /// Write theta_n(t) in degrees (wrapped to (-180, 180]) at the sample times to this CSV file
+    /// Write theta_n(t) in degrees (wrapped to (-180, 180]) at the sample
+    /// times to this CSV file, and its provenance (program, version,
+    /// commit, scene) to the JSON sidecar FILE.json
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
     /// Write the whole state at the sample times to this NumPy .npz file: t,
-    /// theta (radians), x, y, vx, vy, omega (samples x N) and the energies
+    /// theta (radians), x, y, vx, vy, omega (samples x N), the energies and
+    /// metadata (the file's provenance, JSON text)
     #[arg(long, value_name = "FILE")]
     pub npz: Option<PathBuf>,
     /// Interval between CSV and npz samples, in tau

@@ -46,6 +46,13 @@ pub struct SimulateReport<'a> {
     pub wall_seconds: f64,
     /// The first wave's arrival times (per block, the first sign change).
     pub arrival_times: Vec<Option<f64>>,
+    /// The wave speed c, blocks per τ (`sweep::outcome::wave_speed`: the
+    /// one definition, also a run's, figure S6's and a sweep's); `null`
+    /// when too few blocks flipped in order.
+    pub speed: Option<f64>,
+    /// Of blocks 1..N − 1, how many flipped (block N, free, apart: as a
+    /// sweep counts).
+    pub blocks_flipped: usize,
     pub final_theta_deg: Vec<f64>,
     /// Every wave of the run and block N's fate (SPEC section 9).
     pub waves: crate::sim::waves::Waves,
@@ -71,10 +78,15 @@ pub(crate) fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<(
     let scene = convert::scene_from_flags(base, &args.model, &args.drive, &run)?;
     let samples = csv_samples(args, scene.model.n)?;
     let stepping = args.kernel.stepping()?;
-    let targets: Vec<(std::path::PathBuf, String)> = [(&args.csv, "--csv"), (&args.npz, "--npz")]
-        .into_iter()
-        .filter_map(|(p, flag)| Some((p.clone()?, flag.to_string())))
-        .collect();
+    let sidecar = args.csv.as_deref().map(csv_sidecar);
+    let targets: Vec<(std::path::PathBuf, String)> = [
+        (&args.csv, "--csv"),
+        (&sidecar, "--csv's JSON sidecar"),
+        (&args.npz, "--npz"),
+    ]
+    .into_iter()
+    .filter_map(|(p, flag)| Some((p.clone()?, flag.to_string())))
+    .collect();
     output::check_distinct(&targets, "give each its own file")?;
     for (path, _) in &targets {
         output::check_writable(path)?;
@@ -94,8 +106,12 @@ pub(crate) fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<(
     let params = scene.model.params()?;
     if let Some(path) = &args.npz {
         let ladder = crate::model::Ladder::new(params);
+        let metadata = scenes::data::NpzMetadata {
+            made_by: scenes::data::MadeBy::new(command_line),
+            scene: &scene,
+        };
         output::write_atomic_with(path, |f| {
-            scenes::data::write_npz(traj, &ladder, std::io::BufWriter::new(f)).map(drop)
+            scenes::data::write_npz(traj, &ladder, &metadata, std::io::BufWriter::new(f)).map(drop)
         })?;
     }
     let report = SimulateReport {
@@ -120,14 +136,38 @@ pub(crate) fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<(
         force_evals: traj.force_evals,
         wall_seconds,
         arrival_times: traj.arrival_times.clone(),
+        speed: crate::sweep::outcome::wave_speed(&traj.arrival_times),
+        blocks_flipped: crate::sweep::outcome::blocks_flipped(&traj.arrival_times),
         final_theta_deg: traj.final_theta_deg(),
         waves: traj.waves.clone(),
     };
+    if let Some(path) = &sidecar {
+        // The CSV's provenance (docs/formats.md): the report without its
+        // wall time, so that the file is the same on every run.
+        let mut value = serde_json::to_value(&report)
+            .map_err(|e| Error::failed(format!("cannot encode the CSV's sidecar: {e}")))?;
+        if let Some(m) = value.as_object_mut() {
+            m.remove("wall_seconds");
+        }
+        output::write_atomic_with(path, |f| {
+            scenes::data::write_json(&mut std::io::BufWriter::new(f), &value)
+        })?;
+    }
     if args.json {
         output::print(&format!("{}\n", to_json(&report)?))
     } else {
         output::print(&simulate_table(&report))
     }
+}
+
+/// The JSON sidecar of `simulate --csv FILE`: `FILE.json` (`run.csv` →
+/// `run.csv.json`), the CSV's provenance (the scene, the program, its
+/// version and commit, and what the run did), so that the CSV itself
+/// stays plain (docs/formats.md).
+pub fn csv_sidecar(csv: &std::path::Path) -> std::path::PathBuf {
+    let mut name = csv.as_os_str().to_owned();
+    name.push(".json");
+    std::path::PathBuf::from(name)
 }
 
 /// The CSV's and npz's sample times, 0, every, 2 every, ... up to

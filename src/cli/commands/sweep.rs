@@ -92,7 +92,9 @@ fn check_and_run(
         .copied()
         .filter(|i| done.binary_search_by_key(i, |r| r.run).is_err())
         .collect();
-    run_in_chunks(plan, shard, out, &todo, &mut done)?;
+    // The whole sweep's files are counted as the runs come in; a shard's
+    // file is checked as it is written.
+    run_in_chunks(plan, shard, out, &todo, &mut done, args.shard.is_none())?;
     let path = shard::write_records(out, plan, shard, &done)?;
     if args.shard.is_some() {
         eprintln!(
@@ -111,20 +113,27 @@ fn check_and_run(
     write_outputs(plan, &done, out, outputs, start)
 }
 
-/// Runs `todo` in chunks ([`front::sweep::run_in_chunks`]), rewriting
-/// the shard file after each (so that a killed run loses at most one
-/// chunk), with a progress bar.
+/// Runs `todo` in chunks ([`front::sweep::run_in_chunks_within`],
+/// counting the sweep's files with `count_files`), rewriting the shard
+/// file after each (so that a killed run loses at most one chunk), with a
+/// progress bar.
 fn run_in_chunks(
     plan: &Plan,
     shard: Shard,
     out: &Path,
     todo: &[usize],
     done: &mut Vec<Record>,
+    count_files: bool,
 ) -> Result<()> {
     let bar = crate::cli::progress::progress_bar(todo.len() as u64, "sweep");
-    let result = front::sweep::run_in_chunks(plan, todo, done, &|| bar.inc(1), &mut |done| {
-        shard::write_records(out, plan, shard, done).map(drop)
-    });
+    let result = front::sweep::run_in_chunks_within(
+        plan,
+        todo,
+        done,
+        &|| bar.inc(1),
+        &mut |done| shard::write_records(out, plan, shard, done).map(drop),
+        count_files,
+    );
     bar.finish_and_clear();
     result
 }
