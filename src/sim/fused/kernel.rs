@@ -110,6 +110,9 @@ trait Blocks: Simd {
     fn splat_vec(v: __m256d) -> Self;
     /// `self` with block 1 (lane 0) set to `x`.
     fn with_first(self, x: f64) -> Self;
+    /// Bit i set where lane i ≤ `lo` or ≥ `hi` (false for NaN): one mask
+    /// per register, as `le_bits | ge_bits` with half the mask moves.
+    fn outside_bits(self, lo: Self, hi: Self) -> u64;
 }
 
 impl<const C: usize> Blocks for Lanes<C> {
@@ -125,6 +128,20 @@ impl<const C: usize> Blocks for Lanes<C> {
             _mm256_set1_pd(x)
         )));
         self
+    }
+
+    #[inline(always)]
+    fn outside_bits(self, lo: Self, hi: Self) -> u64 {
+        let mut bits = 0;
+        for c in 0..C {
+            let (x, lo, hi) = (self.0[c].0, lo.0[c].0, hi.0[c].0);
+            let outside = avx!(_mm256_or_pd(
+                _mm256_cmp_pd::<_CMP_LE_OQ>(x, lo),
+                _mm256_cmp_pd::<_CMP_GE_OQ>(x, hi)
+            ));
+            bits |= (avx!(_mm256_movemask_pd(outside)) as u64) << (4 * c);
+        }
+        bits
     }
 }
 
@@ -407,8 +424,7 @@ fn run_body<const C: usize>(job: &Job, st: &mut State, arrivals: &mut ArrivalDet
         }
         // As `ArrivalDetector::is_candidate`, for every pending block; the
         // exact test (the sign of sin θ) in scalar code for candidates only.
-        let outside = r.q.theta.le_bits(window_lo) | r.q.theta.ge_bits(window_hi);
-        let candidates = outside & pending;
+        let candidates = r.q.theta.outside_bits(window_lo, window_hi) & pending;
         if candidates != 0 {
             pending &= !record(arrivals, candidates, before, (t_new, r.q.theta, r.v.theta));
         }
