@@ -260,6 +260,7 @@ pub fn figure_scene(
     let view = match (view, &scene.output) {
         (None, OutputSpec::Kymograph) => ViewArg::Kymograph,
         (None, OutputSpec::Arrivals { .. }) => ViewArg::Arrivals,
+        (None, OutputSpec::Energy) => ViewArg::Energy,
         (None, OutputSpec::Theory(_)) => return finish_theory(scene, origin, name, flags),
         (v, _) => v.unwrap_or(ViewArg::Filmstrip),
     };
@@ -277,6 +278,7 @@ pub fn figure_scene(
             }
         }
         ViewArg::Kymograph => scene.output = OutputSpec::Kymograph,
+        ViewArg::Energy => scene.output = OutputSpec::Energy,
         ViewArg::Arrivals => {
             if !matches!(scene.output, OutputSpec::Arrivals { .. }) {
                 scene.output = OutputSpec::Arrivals { curves: Vec::new() }

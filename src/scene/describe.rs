@@ -62,6 +62,7 @@ pub fn generated_title(scene: &Scene) -> String {
         } => format!("{t}, camera following the kink"),
         OutputSpec::Arrivals { .. } => format!("arrival times, {t}"),
         OutputSpec::Kymograph => format!("{t}: sin θₙ"),
+        OutputSpec::Energy => format!("energies, {t}"),
         OutputSpec::Sweep(sw) => sw.title(m),
         _ => t,
     }
@@ -224,6 +225,11 @@ pub fn picture(scene: &Scene) -> String {
             }
         }
         OutputSpec::Kymograph => kymograph(),
+        OutputSpec::Energy => "Chart of the energies against time t/τ: kinetic, elastic, \
+                               gravitational and the energy dissipated so far, each from its \
+                               value at t = 0, and the total with and without the dissipated \
+                               energy, which stays flat once the drive has ended"
+            .into(),
         OutputSpec::Arrivals { curves } => format!(
             "Chart of the arrival time tₙ against block n, {} with its fitted speed",
             match curves.len() {
@@ -357,6 +363,7 @@ pub fn derived_name(scene: &Scene, base: &Scene) -> String {
         }
         (OutputSpec::Kymograph, _) => parts.push("kymograph".into()),
         (OutputSpec::Arrivals { .. }, _) => parts.push("arrivals".into()),
+        (OutputSpec::Energy, _) => parts.push("energy".into()),
         _ => {}
     }
     if parts.is_empty() {

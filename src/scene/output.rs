@@ -41,6 +41,10 @@ pub enum OutputSpec {
         #[serde(default, skip_serializing_if = "Vec::is_empty")]
         curves: Vec<Panel>,
     },
+    /// The energies of the run against t/τ (`figure-NAME.png`): kinetic,
+    /// elastic, gravitational, the energy dissipated so far, and their
+    /// total with and without the dissipated energy.
+    Energy,
     /// No picture: the run's numbers only (`data-NAME.json`).
     Data,
     /// A figure of the linear theory or a drawing (`figure-NAME.png`).

@@ -121,6 +121,10 @@ pub struct RunData {
     /// figure's), as numbers; absent where none is drawn.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub kymograph: Option<Kymograph>,
+    /// The energies at the run's samples (the energy view's numbers,
+    /// `scenes::energy`); absent where none is drawn.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub energies: Option<EnergyData>,
 }
 
 /// The state drawn at one time.
@@ -307,8 +311,41 @@ impl RunData {
             waves: traj.waves.clone(),
             frames: Frames(Arc::new(rows)),
             kymograph: None,
+            energies: None,
         }
     }
+}
+
+/// Samples of the energy view (`scenes::energy`) over its window.
+pub const ENERGY_SAMPLES: usize = 801;
+
+/// The energies of a run at its samples (the data file's `energies`),
+/// in units of k s², each its value (not its change).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct EnergyData {
+    pub times: Vec<f64>,
+    pub kinetic: Vec<f64>,
+    pub elastic: Vec<f64>,
+    pub gravitational: Vec<f64>,
+    /// Dissipated from t = 0 to each sample.
+    pub dissipated: Vec<f64>,
+    /// Kinetic + elastic + gravitational.
+    pub total: Vec<f64>,
+}
+
+impl EnergyData {
+    /// Total plus dissipated at each sample: flat once the drive has
+    /// ended.
+    pub fn total_with_dissipated(&self) -> Vec<f64> {
+        self.total
+            .iter()
+            .zip(&self.dissipated)
+            .map(|(a, b)| a + b)
+            .collect()
+    }
+
+    /// The values per sample the data file writes (six lists of numbers).
+    pub const VALUES_PER_SAMPLE: f64 = 6.0;
 }
 
 /// Bytes per block of each run beyond its frames: the final angles, the
@@ -346,13 +383,17 @@ pub fn estimated_bytes(scene: &Scene, movie: &MovieOptions, kymograph_rows: usiz
         } as f64;
         let n = s.model.n as f64;
         bytes += samples * n * per * BYTES_PER_VALUE + n * BYTES_PER_BLOCK_RUN;
+        if matches!(scene.output, OutputSpec::Energy) {
+            // Six numbers a sample, whatever N.
+            bytes += ENERGY_SAMPLES as f64 * EnergyData::VALUES_PER_SAMPLE * BYTES_PER_VALUE;
+        }
         block_samples += samples * n;
     }
     (bytes, block_samples)
 }
 
 /// Names of the `.npz` arrays of [`write_npz`], in the order written.
-pub const NPZ_ARRAYS: [&str; 11] = [
+pub const NPZ_ARRAYS: [&str; 12] = [
     "t",
     "theta",
     "x",
@@ -364,6 +405,7 @@ pub const NPZ_ARRAYS: [&str; 11] = [
     "elastic_energy",
     "gravitational_energy",
     "energy",
+    "dissipated_energy",
 ];
 
 /// Name of the `.npz` array holding the file's provenance (JSON text,
@@ -447,6 +489,12 @@ pub fn write_npz<W: Write + Seek>(
             (0..samples).try_for_each(|k| a.push(e(k)))
         })?;
     }
+    // The energy dissipated from t = 0 to each sample (recorded in the run
+    // loop, `sim::RunOptions::dissipation`): `energy` + this is flat once
+    // the drive has ended. NaN where the run did not record it.
+    npz.array("dissipated_energy", &[samples], |a| {
+        (0..samples).try_for_each(|k| a.push(traj.dissipated.get(k).copied().unwrap_or(f64::NAN)))
+    })?;
     let text = serde_json::to_string(metadata).map_err(io::Error::other)?;
     npz.text(NPZ_METADATA, &text)?;
     npz.finish()

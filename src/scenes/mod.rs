@@ -6,6 +6,7 @@
 pub mod arrivals;
 pub mod data;
 pub mod dynamic;
+pub mod energy;
 pub mod kymograph;
 pub mod options;
 pub mod run;
@@ -168,6 +169,7 @@ pub fn figure_picture(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
         }
         OutputSpec::Filmstrip { .. } => dynamic::filmstrip_figure(scene, None),
         OutputSpec::Arrivals { .. } => arrivals::arrivals_figure(scene),
+        OutputSpec::Energy => energy::energy_figure(scene),
         OutputSpec::Kymograph => {
             let (picture, run) = kymograph::kymograph_figure(scene, KYMOGRAPH_ROWS)?;
             Ok((picture, vec![run]))
@@ -285,6 +287,7 @@ fn render_styled(
         OutputSpec::Theory(_)
         | OutputSpec::Filmstrip { .. }
         | OutputSpec::Arrivals { .. }
+        | OutputSpec::Energy
         | OutputSpec::Kymograph => {
             let (picture, runs) = figure_picture(scene)?;
             (

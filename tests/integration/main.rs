@@ -19,6 +19,7 @@ mod data_files;
 mod decisions;
 mod docs_and_packaging;
 mod energies;
+mod energy_view;
 mod experiments;
 mod figures;
 mod filmstrips;

@@ -259,7 +259,7 @@ fn npz_reads_back_equal_to_the_csv_at_the_same_times() {
     ) {
         let o = python.unwrap();
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), "12");
+        assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), "13");
         let numpy = "import sys, numpy; d = numpy.load(sys.argv[1]); \
                      print(d['theta'].shape, repr(float(d['theta'][-1, -1])))";
         let o = Command::new("python3")

@@ -534,6 +534,9 @@ pub enum ViewArg {
     Filmstrip,
     Kymograph,
     Arrivals,
+    /// The energies against t/τ (kinetic, elastic, gravitational,
+    /// dissipated, and the totals)
+    Energy,
 }
 
 #[derive(Args, Debug)]

@@ -97,7 +97,9 @@ pub(crate) fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<(
     let options = crate::sim::RunOptions::default()
         .stepping(stepping)
         .limits(crate::limits::Limits::active())
-        .progress(&progress);
+        .progress(&progress)
+        // The npz's `dissipated_energy` (the trajectory is the same bits).
+        .dissipation(args.npz.is_some());
     let result = scenes::run::simulate_with(&scene, &samples, &options);
     bar.finish_and_clear();
     let result = result.map_err(|e| with_divergence_hint(e, &scene, Words::Flags))?;
