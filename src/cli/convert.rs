@@ -94,9 +94,15 @@ pub fn scene_from_flags(
     drive: &DriveArgs,
     run: &RunArgs,
 ) -> Result<Scene> {
+    let before = base.clone();
     model.apply(&mut base);
     drive.apply(&mut base);
     run.apply(&mut base)?;
+    // A window fitted to the built-in's chain follows a changed model
+    // unless --t-end sets it (`Scene::window_following`).
+    if run.t_end.is_none() {
+        base = base.window_following(&before);
+    }
     checked(base)
 }
 
@@ -202,6 +208,12 @@ pub fn sweep_scene(args: &SweepArgs) -> Result<Scene> {
         )));
     }
     args.run.apply(&mut scene)?;
+    if let Some(start) = args.start {
+        scene.model.start = match start {
+            StartArg::Ground => sim::Start::Ground,
+            StartArg::Relaxed => sim::Start::Relaxed,
+        };
+    }
     if args.run.t_end.is_some()
         && args.cap.is_none()
         && let OutputSpec::Sweep(spec) = &mut scene.output

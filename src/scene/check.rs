@@ -136,7 +136,7 @@ impl Scene {
                 check_panels("output.panels", panels)
             }
             OutputSpec::Arrivals { curves } => check_panels("output.curves", curves),
-            OutputSpec::Theory(t) => check_theory(t),
+            OutputSpec::Theory(t) => check_theory(t, self.model.b),
             OutputSpec::Sweep(spec) => spec.check(Scene::check, self),
             _ => Ok(()),
         }
@@ -271,7 +271,7 @@ fn check_times(key: &str, times: &[f64], t_end: f64) -> std::result::Result<(), 
     Ok(())
 }
 
-fn check_theory(t: &TheorySpec) -> std::result::Result<(), (String, String)> {
+fn check_theory(t: &TheorySpec, b: f64) -> std::result::Result<(), (String, String)> {
     if t.alphas.len() > MAX_PANELS || t.a_over_b.len() > MAX_PANELS || t.modes.len() > MAX_PANELS {
         return Err((
             "output".into(),
@@ -319,6 +319,24 @@ fn check_theory(t: &TheorySpec) -> std::result::Result<(), (String, String)> {
         return Err((
             "output.a_over_b".into(),
             format!("ratios must lie in (1, 10), got {r}"),
+        ));
+    }
+    // The gravitational potential draws each ratio's ground states: a/b
+    // must have an equilibrium angle at the scene's b, cos α =
+    // √((a/b)² − 1)·b/(2s) ≤ 1 (eq:eq_alpha), else it cannot render.
+    if t.figure == TheoryFigure::GravityPotential
+        && let Some(r) = t
+            .a_over_b
+            .iter()
+            .find(|r| crate::theory::gravity::alpha_from_lengths(**r * b, b).is_none())
+    {
+        let most = (1.0 + (2.0 / b).powi(2)).sqrt();
+        return Err((
+            "output.a_over_b".into(),
+            format!(
+                "a/b = {r} has no equilibrium angle at b/s = {b}: the ratios must be at most \
+                 {most:.4} (cos α = √((a/b)² − 1)·b/(2s) ≤ 1)"
+            ),
         ));
     }
     if let Some(m) = t

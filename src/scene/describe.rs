@@ -40,7 +40,17 @@ pub fn generated_title(scene: &Scene) -> String {
     let flips = scene.drive.flips.len();
     let mut t = format!("{}{extra}", wave(m));
     if flips > 1 {
-        t = format!("{flips} flips of block 1, {t}");
+        // Each flip of block 1 launches a wall of the other kind than the
+        // flip before: the title names every wave.
+        let (first, second) = if m.alpha >= 0.0 {
+            ("kink", "antikink")
+        } else {
+            ("antikink", "kink")
+        };
+        t = format!(
+            "{first} and {second}, {flips} flips of block 1, α = {}°{extra}",
+            num(m.alpha)
+        );
     }
     // Arrival times of curves of both signs, or of several flips, show
     // kinks and antikinks: the title says so rather than name one.
@@ -316,14 +326,25 @@ pub fn derived_name(scene: &Scene, base: &Scene) -> String {
         let s: Vec<String> = d.iter().map(|f| token(f.start)).collect();
         parts.push(format!("flips{}", s.join("_")));
     }
-    let durations = |f: &[super::Flip]| f.iter().map(|f| f.duration).collect::<Vec<_>>();
-    if durations(d) != durations(bd)
+    // A drive time in the name only where one differs from the base's:
+    // a second flip at the base's drive time asks for no `td` (issue 33).
+    let base_td = bd.first().map(|f| f.duration);
+    if d.iter().any(|f| Some(f.duration) != base_td)
         && let Some(f) = d.first()
     {
         parts.push(format!("td{}", token(f.duration)));
     }
     let (r, br) = (&scene.run, &base.run);
-    if r.t_end != br.t_end {
+    // The window the change of model gives by itself
+    // (`Scene::window_following`) is no request of the user's: not named;
+    // any other window is (the base's own number too, where the change
+    // would have made it `auto`).
+    let followed = {
+        let mut s = scene.clone();
+        s.run.t_end = br.t_end;
+        s.window_following(base).run.t_end
+    };
+    if r.t_end != followed {
         let t = if r.t_end == super::AUTO_T_END {
             "auto".to_string()
         } else {
@@ -442,6 +463,27 @@ mod tests {
         assert_eq!(num(1.3), "1.3");
         assert_eq!(num(2e-4), "2e−4");
         assert_eq!(num(0.02), "0.02");
+    }
+
+    #[test]
+    fn a_second_flip_names_no_drive_time_and_every_wave() {
+        let base = Scene::default();
+        let mut s = base.clone();
+        s.drive.flips.push(crate::scene::Flip {
+            start: 1500.0,
+            duration: base.drive.flips[0].duration,
+        });
+        assert_eq!(derived_name(&s, &base), "flips0_1500");
+        s.drive.flips[1].duration = 700.0;
+        assert!(
+            derived_name(&s, &base).contains("td"),
+            "{}",
+            derived_name(&s, &base)
+        );
+        s.drive.flips[1].duration = base.drive.flips[0].duration;
+        assert_eq!(title(&s), "kink and antikink, 2 flips of block 1, α = 60°");
+        s.model.alpha = -60.0;
+        assert_eq!(title(&s), "antikink and kink, 2 flips of block 1, α = −60°");
     }
 
     #[test]

@@ -229,6 +229,35 @@ impl Scene {
         Scenario::with_drive(params, drive, self.run.t_end)?.started(self.model.start)
     }
 
+    /// This scene changed from `before` (a built-in, say) with its
+    /// window made to follow the chain: where N differs from `before`'s
+    /// and the window is still `before`'s number, the window
+    /// becomes `"auto"` (SPEC section 9: until every wave has a fate, plus
+    /// a margin), since a window fitted to the old chain cuts the new one
+    /// short (movie 4, t_end = 2200 τ for N = 10, with N = 20 stopped with
+    /// the kink at block 11). A filmstrip with times of its own, and a
+    /// figure of the linear theory, keep theirs.
+    pub fn window_following(mut self, before: &Scene) -> Scene {
+        let has_times = match &self.output {
+            OutputSpec::Filmstrip { times, panels } => {
+                !times.is_empty() || panels.iter().any(|p| !p.times.is_empty())
+            }
+            OutputSpec::Movie { .. }
+            | OutputSpec::Kymograph
+            | OutputSpec::Arrivals { .. }
+            | OutputSpec::Energy => false,
+            OutputSpec::Data | OutputSpec::Theory(_) | OutputSpec::Sweep(_) => true,
+        };
+        if !has_times
+            && self.model.n != before.model.n
+            && self.run.t_end == before.run.t_end
+            && self.run.t_end != AUTO_T_END
+        {
+            self.run.t_end = AUTO_T_END;
+        }
+        self
+    }
+
     /// This scene with `run.t_end = "auto"` resolved (`sim::window`): the
     /// longest automatic window of its runs (every panel or curve that
     /// sets no `t_end` of its own). A scene with a number keeps it.

@@ -26,6 +26,11 @@ pub struct SweepArgs {
     pub grid: GridArgs,
     #[command(flatten)]
     pub run: RunArgs,
+    /// How every run starts: ground (at rest, springs at rest length) or
+    /// relaxed (at rest hanging under gravity, block 1 clamped) [default:
+    /// the file's, or ground]
+    #[arg(long, value_name = "START", help_heading = "Run")]
+    pub start: Option<super::StartArg>,
     /// Latest time a run may reach while its outcome is undecided, in tau
     /// [default: 100000]
     #[arg(long, value_name = "T", help_heading = "Outcome")]

@@ -34,24 +34,25 @@ pub struct Values(pub Vec<Piece>);
 impl Values {
     /// Parses a command-line value: `start:stop:step`, or a comma list of
     /// numbers and ranges (`0.01,0.02` or `40:89:1,-40:-89:-1`).
+    ///
+    /// The one parser of an axis's text: a scene file's string (`alpha =
+    /// "40:45:1,47:50:1"`, or such a string in a list) is read by it too
+    /// ([`pieces_of`]), its errors reported when the sweep is checked,
+    /// naming the key.
     pub fn parse(text: &str) -> Result<Values, String> {
-        let mut pieces = Vec::new();
-        for part in text.split(',') {
-            let part = part.trim();
-            if part.contains(':') {
-                range_values(part)?;
-                pieces.push(Piece::Range { text: part.into() });
-            } else {
-                let v: f64 = part
-                    .parse()
-                    .map_err(|_| format!("'{part}' is not a number or a range start:stop:step"))?;
-                if !v.is_finite() {
-                    return Err(format!("'{part}' is not a finite number"));
+        let values = Values(pieces_of(text));
+        for p in &values.0 {
+            match p {
+                Piece::Range { text } => {
+                    range_values(text)?;
                 }
-                pieces.push(Piece::Value(v));
+                Piece::Value(v) if !v.is_finite() => {
+                    return Err(format!("'{v}' is not a finite number"));
+                }
+                Piece::Value(_) => {}
             }
         }
-        Ok(Values(pieces))
+        Ok(values)
     }
 
     /// The values, in order; an error names the malformed piece.
@@ -81,6 +82,20 @@ impl Values {
     }
 }
 
+/// The pieces of an axis's text, unchecked: its comma-separated parts,
+/// each a number or (anything else) a range, checked by [`range_values`].
+fn pieces_of(text: &str) -> Vec<Piece> {
+    text.split(',')
+        .map(|part| {
+            let part = part.trim();
+            match part.parse::<f64>() {
+                Ok(v) if !part.contains(':') => Piece::Value(v),
+                _ => Piece::Range { text: part.into() },
+            }
+        })
+        .collect()
+}
+
 /// The values of `start:stop:step`, inclusive: start, start + step, ...
 /// up to stop (within a millionth of a step), each rounded to the decimals
 /// written in the range, so that `0.01:0.05:0.01` gives 0.03, not
@@ -88,9 +103,11 @@ impl Values {
 pub fn range_values(text: &str) -> Result<Vec<f64>, String> {
     let parts: Vec<&str> = text.split(':').map(str::trim).collect();
     let [start, stop, step] = parts[..] else {
-        return Err(format!(
-            "'{text}' is not a range start:stop:step (three numbers)"
-        ));
+        return Err(if parts.len() == 1 {
+            format!("'{text}' is not a number or a range start:stop:step")
+        } else {
+            format!("'{text}' is not a range start:stop:step (three numbers)")
+        });
     };
     let num = |s: &str| -> Result<f64, String> {
         let v: f64 = s
@@ -171,8 +188,9 @@ impl<'de> Deserialize<'de> for Values {
                 )
             }
             fn visit_str<E: de::Error>(self, v: &str) -> Result<Values, E> {
-                // Checked by `SweepSpec::check`, which names the key.
-                Ok(Values(vec![Piece::Range { text: v.into() }]))
+                // As the command line reads it (`Values::parse`); checked
+                // by `SweepSpec::check`, which names the key.
+                Ok(Values(pieces_of(v)))
             }
             fn visit_f64<E: de::Error>(self, v: f64) -> Result<Values, E> {
                 Ok(Values(vec![Piece::Value(v)]))
@@ -192,5 +210,39 @@ impl<'de> Deserialize<'de> for Values {
             }
         }
         d.deserialize_any(V)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_scene_file_reads_an_axis_as_the_command_line_does() {
+        for text in ["40:45:1,47:50:1", "0.01,0.02", "-45:-50:-1, 60", "7"] {
+            let flag = Values::parse(text).unwrap();
+            let file: Values = serde_json::from_value(serde_json::json!(text)).unwrap();
+            let listed: Values = serde_json::from_value(serde_json::json!([text])).unwrap();
+            let want = flag.expand(Param::Alpha).unwrap();
+            assert_eq!(file.expand(Param::Alpha).unwrap(), want, "{text}");
+            assert_eq!(listed.expand(Param::Alpha).unwrap(), want, "{text}");
+        }
+        assert_eq!(
+            Values::parse("40:45:1,47:50:1")
+                .unwrap()
+                .expand(Param::Alpha)
+                .unwrap()
+                .len(),
+            10
+        );
+        // The same error either way.
+        let file: Values = serde_json::from_value(serde_json::json!("40:45,x")).unwrap();
+        let e = file.expand(Param::Alpha).unwrap_err();
+        assert_eq!(Values::parse("40:45,x").unwrap_err(), e);
+        let file: Values = serde_json::from_value(serde_json::json!("40,x")).unwrap();
+        assert_eq!(
+            file.expand(Param::Alpha).unwrap_err(),
+            Values::parse("40,x").unwrap_err()
+        );
     }
 }

@@ -1,0 +1,92 @@
+//! Where a write cannot happen, the exit code the README states (issue
+//! 32): 2 for what the user can fix before any work (a read-only folder
+//! or file system, a device such as /dev/full in place of a file), 1 for
+//! a write the machine failed (a full disk: tests/integration/reliability.rs,
+//! `a_full_disk_is_a_failed_run`).
+
+use crate::common::require::require;
+use crate::common::tempdir::TempDir;
+use std::process::{Command, Output};
+
+fn ladder(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn one_line(out: &Output, code: i32, needle: &str) {
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(code), "{err}");
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(err.contains(needle), "'{needle}' not in {err}");
+}
+
+#[test]
+fn the_readme_states_the_codes_the_program_gives() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .unwrap()
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    for words in [
+        "2 bad input",
+        "a read-only folder or file system",
+        "a device such as `/dev/full` where a file should go",
+        "1 a write that the machine failed (a full disk",
+    ] {
+        assert!(readme.contains(words), "README: no '{words}'");
+    }
+}
+
+#[test]
+fn a_device_in_place_of_a_file_is_exit_2() {
+    if !require(
+        "a_device_in_place_of_a_file_is_exit_2",
+        std::path::Path::new("/dev/full").exists(),
+        "this system has no /dev/full",
+        "run on Linux",
+    ) {
+        return;
+    }
+    one_line(
+        &ladder(&["simulate", "--t-end", "10", "--csv", "/dev/full"]),
+        2,
+        "device",
+    );
+}
+
+#[test]
+fn a_read_only_folder_is_exit_2() {
+    let dir = TempDir::new("read-only");
+    let target = dir.join("ro");
+    std::fs::create_dir(&target).unwrap();
+    // As root, permission bits do not stop a write: a read-only tmpfs does.
+    let root = unsafe { libc::geteuid() == 0 };
+    let mounted = root
+        && Command::new("mount")
+            .args(["-t", "tmpfs", "-o", "ro,size=64k", "tmpfs"])
+            .arg(&target)
+            .status()
+            .is_ok_and(|s| s.success());
+    if !root {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(&target, std::fs::Permissions::from_mode(0o555)).unwrap();
+    } else if !require(
+        "a_read_only_folder_is_exit_2",
+        mounted,
+        "cannot mount a read-only tmpfs",
+        "run as root where mount works",
+    ) {
+        return;
+    }
+    let csv = target.join("run.csv");
+    let out = ladder(&["simulate", "--t-end", "10", "--csv", csv.to_str().unwrap()]);
+    if mounted {
+        let _ = Command::new("umount").arg(&target).status();
+        one_line(&out, 2, "read-only");
+    } else {
+        one_line(&out, 2, "permission denied");
+    }
+    assert!(!csv.exists());
+}
