@@ -54,11 +54,12 @@ pub fn run_in_chunks(
     tick: &(dyn Fn() + Sync),
     checkpoint: &mut dyn FnMut(&[Record]) -> Result<()>,
 ) -> Result<()> {
-    run_in_chunks_within(plan, todo, done, tick, checkpoint, true)
+    run_in_chunks_within(plan, todo, done, tick, checkpoint, Some(""))
 }
 
 /// [`run_in_chunks`]; with `count_files` (a process that writes the
-/// sweep's CSV and JSON, not one shard of it), after every chunk the
+/// sweep's CSV and JSON, not one shard of it; the text is added to the
+/// message, e.g. where the runs are kept), after every chunk the
 /// JSON and the CSV of the runs done so far are counted (encoded into a
 /// counter, not kept) against the cap on a data file's bytes
 /// (`--max-data-bytes`, `limits::Limits::active`). Runs can have more
@@ -66,9 +67,10 @@ pub fn run_in_chunks(
 /// and no bound on the waves is known before a run, so this is where the
 /// bound holds: past the cap, `done` is handed to `checkpoint` (the runs
 /// are kept, and a rerun with a raised cap resumes them) and the sweep
-/// stops with the cap's error. The records held in memory take fewer
-/// bytes than that JSON (16 bytes a number, at least 14 in the JSON), so
-/// the cap bounds the sweep's memory too, up to one chunk; near the cap
+/// stops with the cap's error. The records held in memory take about the
+/// bytes of that JSON (16 bytes a number, 14 to 34 in the JSON: at most
+/// 16/14 of it), so the cap bounds the sweep's memory too, up to one
+/// chunk; near the cap
 /// the chunks shrink to the runs that the room left holds at the largest
 /// bytes a run has taken.
 pub fn run_in_chunks_within(
@@ -77,7 +79,7 @@ pub fn run_in_chunks_within(
     done: &mut Vec<Record>,
     tick: &(dyn Fn() + Sync),
     checkpoint: &mut dyn FnMut(&[Record]) -> Result<()>,
-    count_files: bool,
+    count_files: Option<&str>,
 ) -> Result<()> {
     let limits = crate::limits::Limits::active();
     let cap = limits.cap(crate::limits::Resource::DataBytes);
@@ -96,13 +98,12 @@ pub fn run_in_chunks_within(
         done.sort_by_key(|r| r.run);
         at = end;
         let mut room = usize::MAX;
-        if count_files {
+        if let Some(note) = count_files {
             let (json, csv) = counted(plan, done)?;
             per_run = per_run.max(json as f64 / done.len().max(1) as f64);
             let detail = |what: &str| {
                 format!(
-                    "the {what} of sweep {}, counted from the {} runs done so far of {}; they are \
-                     kept, and a rerun with a higher cap resumes them",
+                    "the {what} of sweep {}, counted from the {} runs done so far of {}{note}",
                     plan.scene.name,
                     done.len(),
                     plan.len()

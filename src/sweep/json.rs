@@ -206,8 +206,11 @@ pub const CSV_BYTES_PER_RUN: f64 = 400.0;
 pub const CSV_BYTES_PER_WAVE: f64 = 100.0;
 
 /// Waves a run is estimated to have: one per flip of the drive, and one
-/// pair born elsewhere (the free bottom block's own flip). A run with
-/// more is counted when the files are written ([`check_size`]).
+/// pair born elsewhere (the free bottom block's own flip). A run can have
+/// more (about 31 a run at N = 40, G = 3e-3, γ = 0.002), and how many is
+/// not known before it runs: the files are counted as the runs come in
+/// (`front::sweep::run_in_chunks_within`) and when they are written
+/// ([`check_size`]), which is where the cap is a bound.
 pub fn waves_per_run(plan: &Plan) -> f64 {
     plan.scene.drive.flips.len() as f64 + 2.0
 }
@@ -223,8 +226,9 @@ pub struct Estimate {
     pub blocks: f64,
 }
 
-/// An upper estimate of the bytes of `plan`'s JSON and CSV, from the plan
-/// alone (docs/limits.md): per run, N × (1 + W) numbers of
+/// An estimate of the bytes of `plan`'s JSON and CSV, from the plan alone,
+/// an upper bound for runs with at most [`waves_per_run`] waves
+/// (docs/limits.md): per run, N × (1 + W) numbers of
 /// [`BYTES_PER_VALUE`] (its arrival times and each wave's, W =
 /// [`waves_per_run`]), plus [`BYTES_PER_RUN`] and W × [`BYTES_PER_WAVE`];
 /// plus [`BYTES_PER_AXIS_VALUE`] per value of the axes and

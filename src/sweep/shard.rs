@@ -184,7 +184,9 @@ pub const MAX_SHARD_BYTES: u64 = 1 << 30;
 
 /// Checks, before any run, that `shard`'s file fits what a reader takes
 /// ([`MAX_SHARD_BYTES`]): its estimate is the sweep JSON's estimate
-/// (`json::estimate`, an upper bound) shared out by runs. Past it, the
+/// (`json::estimate`, a bound for runs of the waves it assumes) shared
+/// out by runs. Runs with more waves are caught as the file is written
+/// ([`write_records_within`]). Past it, the
 /// message names the fewest shards that fit.
 pub fn check_estimate(plan: &Plan, shard: Shard) -> Result<()> {
     let runs = plan.len().max(1) as f64;

@@ -137,8 +137,10 @@ fn csv_has_theta_at_the_sample_times_and_is_reproducible() {
     assert!(lines[1].starts_with("0,60.000000,"));
     assert_eq!(ladder(&args).status.code(), Some(0));
     assert_eq!(std::fs::read_to_string(&path).unwrap(), first);
+    // The CSV and its JSON sidecar (its provenance, docs/formats.md).
     let leftovers = std::fs::read_dir(&dir).unwrap().count();
-    assert_eq!(leftovers, 1, "no temporary files left behind");
+    assert_eq!(leftovers, 2, "no temporary files left behind");
+    assert!(dir.join("theta.csv.json").exists());
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -89,7 +89,8 @@ fn two_outputs_of_one_file_are_refused_however_spelt() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    assert_eq!(tree(root), ["a", "b", "d", "link"]);
+    // The CSV's JSON sidecar beside it (docs/formats.md).
+    assert_eq!(tree(root), ["a", "a.json", "b", "d", "link"]);
 }
 
 #[test]

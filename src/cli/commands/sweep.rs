@@ -94,7 +94,18 @@ fn check_and_run(
         .collect();
     // The whole sweep's files are counted as the runs come in; a shard's
     // file is checked as it is written.
-    run_in_chunks(plan, shard, out, &todo, &mut done, args.shard.is_none())?;
+    let note = format!(
+        "; they are kept in {}, and a rerun with a higher cap resumes them",
+        shard::shards_dir(out).display()
+    );
+    run_in_chunks(
+        plan,
+        shard,
+        out,
+        &todo,
+        &mut done,
+        args.shard.is_none().then_some(note.as_str()),
+    )?;
     let path = shard::write_records(out, plan, shard, &done)?;
     if args.shard.is_some() {
         eprintln!(
@@ -123,7 +134,7 @@ fn run_in_chunks(
     out: &Path,
     todo: &[usize],
     done: &mut Vec<Record>,
-    count_files: bool,
+    count_files: Option<&str>,
 ) -> Result<()> {
     let bar = crate::cli::progress::progress_bar(todo.len() as u64, "sweep");
     let result = front::sweep::run_in_chunks_within(
