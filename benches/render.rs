@@ -37,7 +37,11 @@ fn frame(ladder: &Ladder, q: &[f64], view: View, k: usize, canvas: &mut Pixmap) 
         .expect("state matches ladder")
         .with_view(view)
         .with_time(t);
-    render_snapshot_into(canvas, &snap);
+    render_snapshot_into(
+        &jacobs_ladder::render::Theme::of(&Default::default()),
+        canvas,
+        &snap,
+    );
 }
 
 fn movie_bytes(ladder: &Ladder, states: &[Vec<f64>], view: View) -> Vec<u8> {

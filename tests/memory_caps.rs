@@ -68,6 +68,7 @@ fn write_sweep(plan: &Plan, records: &[Record], dir: &Path) -> (Vec<(String, u64
         scale: 1.0,
         command_line: &[],
         rename: &|n| n,
+        theme: jacobs_ladder::render::Theme::of(&Default::default()),
     };
     let (names, peak, _) = measure(|| {
         sweep::write_outputs(plan, records, "sweep-m", &options, &mut |name, fill| {

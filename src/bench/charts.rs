@@ -8,6 +8,7 @@ use crate::error::{Error, Result};
 use crate::render::charts::{Axis, ChartSpec, Legend, Marker, Series, line_chart};
 use crate::render::compose::{Layout, Panel, compose};
 use crate::render::style::{self, DARK, GREY, HAlign, VAlign, size};
+use crate::render::{Picture, Theme};
 use crate::sim::IntegratorKind;
 use tiny_skia::Pixmap;
 
@@ -200,6 +201,11 @@ fn wp_panel(
     Ok(spec)
 }
 
+/// The bench report's charts are drawn at the screen style.
+fn screen() -> Theme {
+    Theme::of(&crate::render::Style::default())
+}
+
 /// Width of the legend column of `spec` drawn outside the plot, in pixels
 /// (as the chart module lays it out).
 fn legend_width(spec: &ChartSpec) -> u32 {
@@ -207,7 +213,7 @@ fn legend_width(spec: &ChartSpec) -> u32 {
         .series
         .iter()
         .filter_map(|s| s.label.as_deref())
-        .map(|l| style::text_width(l, crate::render::charts::tick_px()))
+        .map(|l| style::text_width(screen().font(), l, screen().tick))
         .fold(0.0, f32::max);
     (text + 28.0 + 34.0 + 8.0).ceil() as u32
 }
@@ -260,14 +266,17 @@ pub fn work_precision_chart(report: &WorkPrecisionReport) -> Result<Pixmap> {
         work.legend = Legend::Hidden;
         let extra = legend_width(&time);
         let label = scene.scene.replace('-', "−");
-        panels.push(Panel::new(line_chart(&work, PANEL.0, PANEL.1)?.pixmap).label(label.clone()));
-        panels.push(Panel::new(line_chart(&time, PANEL.0 + extra, PANEL.1)?.pixmap).label(label));
+        let t = screen();
+        let work = line_chart(&t, &work, PANEL.0, PANEL.1)?.pixmap;
+        let time = line_chart(&t, &time, PANEL.0 + extra, PANEL.1)?.pixmap;
+        panels.push(Panel::new(Picture::of_image(&t, work)).label(label.clone()));
+        panels.push(Panel::new(Picture::of_image(&t, time)).label(label));
     }
     let title = format!(
         "Work–precision of the five integrators (N = 10, b/s = 1.3, {} τ; reference: {})",
         report.scenes[0].t_end, report.reference
     );
-    compose(&panels, &Layout::columns(2).title(title))
+    compose(&panels, &Layout::columns(&screen(), 2).title(title))
 }
 
 /// Ratio range observed/predicted of one integrator over the α sweep.
@@ -386,9 +395,11 @@ pub fn stability_chart(report: &StabilityReport) -> Result<Pixmap> {
         } else {
             STABILITY.1 * 3 / 4
         };
-        panels.push(Panel::new(line_chart(spec, w, h)?.pixmap));
+        let t = screen();
+        let chart = line_chart(&t, spec, w, h)?.pixmap;
+        panels.push(Panel::new(Picture::of_image(&t, chart)));
     }
-    let chart = compose(&panels, &Layout::columns(1))?;
+    let chart = compose(&panels, &Layout::columns(&screen(), 1))?;
     with_caption(&chart, &stability_caption(report))
 }
 
@@ -501,8 +512,14 @@ fn stability_spec(report: &StabilityReport, names: &[&str]) -> ChartSpec {
 /// `image` with `text` wrapped underneath it.
 fn with_caption(image: &Pixmap, text: &str) -> Result<Pixmap> {
     let margin = size::MARGIN as f32 * 2.0;
-    let font_size = crate::render::charts::tick_px();
-    let lines = style::wrap_text(text, image.width() as f32 - 2.0 * margin, font_size);
+    let theme = screen();
+    let font_size = theme.tick;
+    let lines = style::wrap_text(
+        theme.font(),
+        text,
+        image.width() as f32 - 2.0 * margin,
+        font_size,
+    );
     let line_h = font_size * 1.45;
     let caption_h = (lines.len() as f32 * line_h + margin).ceil() as u32;
     let (w, h) = (image.width(), image.height() + caption_h);
@@ -513,6 +530,7 @@ fn with_caption(image: &Pixmap, text: &str) -> Result<Pixmap> {
         let y = image.height() as f32 + k as f32 * line_h;
         style::draw_text(
             &mut out,
+            theme.font(),
             line,
             (margin, y),
             font_size,
@@ -529,9 +547,9 @@ mod tests {
 
     #[test]
     fn wrap_keeps_words_and_paragraphs() {
-        let lines = style::wrap_text("one two three\nfour", 10_000.0, 13.0);
+        let lines = style::wrap_text(screen().font(), "one two three\nfour", 10_000.0, 13.0);
         assert_eq!(lines, vec!["one two three", "four"]);
-        let narrow = style::wrap_text("alpha beta gamma", 1.0, 13.0);
+        let narrow = style::wrap_text(screen().font(), "alpha beta gamma", 1.0, 13.0);
         assert_eq!(narrow, vec!["alpha", "beta", "gamma"]);
     }
 }

@@ -165,11 +165,10 @@ pub fn write_outputs(
         scale: outputs.scale,
         command_line: &[],
         rename: &|name| name,
+        theme: crate::render::Theme::of(&crate::scenes::style_of(&plan.scene, outputs)?),
     };
-    crate::scenes::style_of(&plan.scene, outputs)?.apply(|| {
-        crate::sweep::write_outputs(plan, records, &stem, &options, &mut |name, fill| {
-            crate::output::write_atomic_with(&out.join(name), |f| fill(f))
-        })
+    crate::sweep::write_outputs(plan, records, &stem, &options, &mut |name, fill| {
+        crate::output::write_atomic_with(&out.join(name), |f| fill(f))
     })
 }
 

@@ -9,6 +9,7 @@
 //! shape under such transforms in every backend.
 
 use super::charts::Chart;
+use super::page_style::FontChoice;
 use super::style::{self, HAlign, VAlign};
 use crate::encode::Rgb;
 use std::sync::Arc;
@@ -135,20 +136,23 @@ pub struct Raster<'a> {
     pixmap: &'a mut Pixmap,
     ts: Transform,
     stack: Vec<Transform>,
+    /// The font text is drawn in.
+    font: FontChoice,
 }
 
 impl<'a> Raster<'a> {
-    /// Draws at 100 %.
-    pub fn new(pixmap: &'a mut Pixmap) -> Raster<'a> {
-        Raster::with_transform(pixmap, Transform::identity())
+    /// Draws at 100 %, text in `font`.
+    pub fn new(pixmap: &'a mut Pixmap, font: FontChoice) -> Raster<'a> {
+        Raster::with_transform(pixmap, Transform::identity(), font)
     }
 
-    /// Draws through `ts` (e.g. a scale for a larger frame).
-    pub fn with_transform(pixmap: &'a mut Pixmap, ts: Transform) -> Raster<'a> {
+    /// Draws through `ts` (e.g. a scale for a larger frame), text in `font`.
+    pub fn with_transform(pixmap: &'a mut Pixmap, ts: Transform, font: FontChoice) -> Raster<'a> {
         Raster {
             pixmap,
             ts,
             stack: Vec::new(),
+            font,
         }
     }
 
@@ -207,6 +211,7 @@ impl Canvas for Raster<'_> {
         let scale = self.ts.sx.hypot(self.ts.ky);
         style::draw_text(
             self.pixmap,
+            self.font,
             text,
             (q[0].x, q[0].y),
             size * scale,

@@ -9,6 +9,7 @@ use super::charts::{
     Area, Chart, dark_axes, font, plot_error, rgb, same_format, short_number, titled,
 };
 use super::style::{self, DARK, size};
+use super::theme::Theme;
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use plotters::prelude::*;
@@ -51,8 +52,9 @@ pub struct CellChart {
 /// Width of the legend column, pixels.
 const LEGEND_W: u32 = 190;
 
-/// Draws `c` as a `width × height` chart.
-pub fn cell_chart(c: &CellChart, width: u32, height: u32) -> Result<Chart> {
+/// Draws `c` as a `width × height` chart with the sizes and font of
+/// `theme`.
+pub fn cell_chart(theme: &Theme, c: &CellChart, width: u32, height: u32) -> Result<Chart> {
     if !((200..=8192).contains(&width) && (120..=8192).contains(&height)) {
         return Err(Error::bad_input(format!(
             "chart size must be between 200x120 and 8192x8192 pixels, got {width}x{height}"
@@ -66,29 +68,29 @@ pub fn cell_chart(c: &CellChart, width: u32, height: u32) -> Result<Chart> {
     {
         let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
-        let root = titled(root, c.title.as_deref(), width)?;
+        let root = titled(theme, root, c.title.as_deref(), width)?;
         let (main, side) = root.split_horizontally(width.saturating_sub(LEGEND_W));
-        draw_cells(&main, c)?;
-        draw_legend(&side, c)?;
+        draw_cells(theme, &main, c)?;
+        draw_legend(theme, &side, c)?;
         root.present().map_err(plot_error)?;
     }
     let svg = svg.replace("<rect ", "<rect shape-rendering=\"crispEdges\" ");
-    Chart::from_svg(&svg, width, height)
+    Chart::from_svg(theme, &svg, width, height)
 }
 
-fn draw_cells(area: &Area<'_>, c: &CellChart) -> Result<()> {
+fn draw_cells(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
     let (nx, ny) = (c.xs.len() as f64, c.ys.len() as f64);
     // Room left of the cells for the widest tick label, the axis label
     // (turned on its side) and the gaps between them: at least 64 px.
     let widest =
         c.ys.iter()
-            .map(|&y| style::text_width(&short_number(y), crate::render::charts::tick_px()))
+            .map(|&y| style::text_width(theme.font(), &short_number(y), theme.tick))
             .fold(0.0f32, f32::max);
     let y_area = (widest + size::LABEL + 11.0).floor().max(64.0) as u32;
     // As many x labels as fit side by side with a gap (at most 10).
     let widest_x =
         c.xs.iter()
-            .map(|&x| style::text_width(&short_number(x), crate::render::charts::tick_px()))
+            .map(|&x| style::text_width(theme.font(), &short_number(x), theme.tick))
             .fold(0.0f32, f32::max);
     let plot_w = area.dim_in_pixel().0 as f32 - y_area as f32 - 20.0;
     let x_room = ((plot_w / (widest_x + 12.0)).floor() as usize).clamp(2, 10);
@@ -125,7 +127,7 @@ fn draw_cells(area: &Area<'_>, c: &CellChart) -> Result<()> {
         .y_labels(ticks(c.ys.len(), 10))
         .x_label_formatter(&xf)
         .y_label_formatter(&yf);
-    dark_axes(&mut mesh).draw().map_err(plot_error)
+    dark_axes(theme, &mut mesh).draw().map_err(plot_error)
 }
 
 /// Tick count that lands on whole cell indices: the number of cells when
@@ -140,10 +142,8 @@ fn ticks(cells: usize, most: usize) -> usize {
     (cells - 1) / step + 1
 }
 
-fn draw_legend(area: &Area<'_>, c: &CellChart) -> Result<()> {
-    let text = font(crate::render::charts::tick_px())
-        .into_font()
-        .color(&rgb(DARK));
+fn draw_legend(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
+    let text = font(theme, theme.tick).into_font().color(&rgb(DARK));
     let mut y = 30;
     for (label, color) in &c.legend {
         area.draw(&Rectangle::new(
@@ -226,7 +226,8 @@ mod tests {
                 legend: vec![],
                 shade: None,
             };
-            let chart = cell_chart(&c, 820, 480).unwrap();
+            let theme = Theme::of(&Default::default());
+            let chart = cell_chart(&theme, &c, 820, 480).unwrap();
             // The rotated label's right reach, and the left edge of each
             // tick label (anchored at its right end).
             let mut label_right = None;
@@ -250,8 +251,8 @@ mod tests {
                     label_right = Some(attr("x").unwrap() + size::LABEL);
                 } else if c.ys.iter().any(|&y| short_number(y) == body) {
                     let right = attr("x").unwrap();
-                    ticks_left = ticks_left
-                        .min(right - style::text_width(body, crate::render::charts::tick_px()));
+                    ticks_left =
+                        ticks_left.min(right - style::text_width(theme.font(), body, theme.tick));
                 }
             }
             let label_right = label_right.expect("the y label is drawn");

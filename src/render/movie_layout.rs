@@ -9,8 +9,10 @@
 //! smaller than 640 × 480, nothing is cut at any size.
 
 use super::canvas::{Canvas, Raster};
+use super::page_style::FontChoice;
 use super::snapshot::{self, Region, Snapshot};
 use super::style::{self, DARK, HAlign, VAlign, size};
+use super::theme::Theme;
 use crate::error::{Error, Result};
 use tiny_skia::{Pixmap, Transform};
 
@@ -28,6 +30,8 @@ pub struct Label {
     pub size: f32,
     /// How the text sits on its anchor.
     pub align: (HAlign, VAlign),
+    /// The font it is set in.
+    pub font: FontChoice,
 }
 
 impl Label {
@@ -35,14 +39,15 @@ impl Label {
     /// of the highest run's em box to the bottom of the lowest one's (super-
     /// and subscripts included) down, as every backend places it.
     pub fn bounds(&self) -> Region {
-        let width = style::text_width(&self.text, self.size);
-        let (x, baseline) = style::text_origin(self.at, width, self.size, self.align);
+        let font = self.font;
+        let width = style::text_width(font, &self.text, self.size);
+        let (x, baseline) = style::text_origin(font, self.at, width, self.size, self.align);
         let (mut top, mut bottom) = (f32::INFINITY, f32::NEG_INFINITY);
-        for (shift, _) in style::runs(&self.text) {
+        for (shift, _) in style::runs(font, &self.text) {
             let s = self.size * shift.scale();
             let base = baseline - shift.rise() * self.size;
             // The font's ascent and descent add up to its size.
-            let ascent = style::ascent(s);
+            let ascent = style::ascent(font, s);
             top = top.min(base - ascent);
             bottom = bottom.max(base + s - ascent);
         }
@@ -73,6 +78,8 @@ pub struct MovieLayout {
     pub ladder: Region,
     /// The live kymograph's region, in design pixels.
     pub heat: Region,
+    /// The movie's theme (the font of its text).
+    pub theme: Theme,
 }
 
 impl MovieLayout {
@@ -81,8 +88,9 @@ impl MovieLayout {
     /// small.
     pub const COLUMN: f32 = 20.0;
 
-    /// The layout of `width × height` frames of an `n`-block ladder.
-    pub fn new(width: u32, height: u32, n: usize) -> Self {
+    /// The layout of `width × height` frames of an `n`-block ladder, its
+    /// text in `theme`'s font.
+    pub fn new(theme: &Theme, width: u32, height: u32, n: usize) -> Self {
         let (fw, fh) = (width.max(1) as f32, height.max(1) as f32);
         let scale = (fw / REFERENCE.0).min(fh / REFERENCE.1);
         let (w, h) = (fw / scale, fh / scale);
@@ -114,6 +122,7 @@ impl MovieLayout {
                     .round(),
                 h: (h - heat_y - bottom).max(1.0).round(),
             },
+            theme: *theme,
         }
     }
 
@@ -152,7 +161,7 @@ impl MovieLayout {
     pub fn background(&self, title: &str, t_end: f64, n: usize) -> Result<Pixmap> {
         let mut p = style::white_pixmap(self.width, self.height)
             .ok_or_else(|| Error::bad_input("the movie frame does not fit in memory"))?;
-        let mut c = Raster::with_transform(&mut p, self.transform());
+        let mut c = Raster::with_transform(&mut p, self.transform(), self.theme.font());
         self.decorate(&mut c, title, t_end, n);
         Ok(p)
     }
@@ -171,7 +180,8 @@ impl MovieLayout {
         let tick = size::TICK;
         let top = (HAlign::Center, VAlign::Top);
         let room = 0.96 * self.design.0;
-        let full = style::text_width(title, size::TITLE);
+        let font = self.theme.font();
+        let full = style::text_width(font, title, size::TITLE);
         let title_size = if full > room {
             size::TITLE * room / full
         } else {
@@ -185,6 +195,7 @@ impl MovieLayout {
             at,
             size,
             align,
+            font,
         };
         vec![
             label(
@@ -242,7 +253,7 @@ impl MovieLayout {
     ) {
         canvas.data_mut().copy_from_slice(background.data());
         {
-            let mut c = Raster::with_transform(canvas, self.transform());
+            let mut c = Raster::with_transform(canvas, self.transform(), self.theme.font());
             for (region, snap) in snaps {
                 snapshot::draw_snapshot_on(&mut c, *region, snap);
             }
@@ -315,15 +326,15 @@ mod tests {
 
     #[test]
     fn scale_and_design_size() {
-        let l = MovieLayout::new(640, 480, 10);
+        let l = MovieLayout::new(&Theme::of(&Default::default()), 640, 480, 10);
         assert_eq!(l.scale, 1.0);
-        let big = MovieLayout::new(1920, 1080, 10);
-        let small = MovieLayout::new(640, 360, 10);
+        let big = MovieLayout::new(&Theme::of(&Default::default()), 1920, 1080, 10);
+        let small = MovieLayout::new(&Theme::of(&Default::default()), 640, 360, 10);
         assert!((big.scale / small.scale - 3.0).abs() < 1e-6);
         assert_eq!(big.design, small.design);
         assert_eq!(big.heat, small.heat);
         for (w, h) in [(320, 240), (640, 360), (3840, 2160), (480, 1200)] {
-            let l = MovieLayout::new(w, h, 10);
+            let l = MovieLayout::new(&Theme::of(&Default::default()), w, h, 10);
             assert!(l.design.0 >= 639.9 && l.design.1 >= 479.9, "{w}x{h}");
             let (x, y, hw, hh) = l.heat_pixels();
             assert!(x + hw <= w && y + hh <= h, "{w}x{h}");

@@ -12,11 +12,9 @@
 //! design frame of `width_pt × px_per_pt` pixels (455 px at `paper`) and
 //! printed at exactly `width_pt`.
 //!
-//! The style in force while a figure is drawn is a per-thread setting
-//! ([`Style::current`], set by [`Style::apply`]) that charts and layouts ask
-//! for sizes, the font and the frame, as plotting libraries' rc contexts do.
-
-use std::cell::Cell;
+//! A figure's builder makes one [`super::Theme`] of its style and passes
+//! it, as a value, down to every chart, cell, legend and layout it draws:
+//! there is no style "in force" to ask for.
 
 /// Design pixels of text at the style's size: the one scale from which a
 /// style's points follow (`px_per_pt = DESIGN_TEXT_PX / font_pt`).
@@ -263,29 +261,6 @@ impl Style {
     pub fn png_scale(&self, design_width: f32) -> f32 {
         self.pt_per_px(design_width) * self.dpi / PT_PER_IN
     }
-
-    /// The style drawing code on this thread follows.
-    pub fn current() -> Style {
-        CURRENT.with(Cell::get)
-    }
-
-    /// Runs `f` with this style in force on this thread (the previous one
-    /// is restored afterwards).
-    pub fn apply<R>(&self, f: impl FnOnce() -> R) -> R {
-        let previous = CURRENT.with(|c| c.replace(*self));
-        struct Restore(Style);
-        impl Drop for Restore {
-            fn drop(&mut self) {
-                CURRENT.with(|c| c.set(self.0));
-            }
-        }
-        let _restore = Restore(previous);
-        f()
-    }
-}
-
-thread_local! {
-    static CURRENT: Cell<Style> = Cell::new(Style::named(StyleName::Screen));
 }
 
 /// A length of `--width`/`--height` in points: a number with `in`, `mm`,
@@ -517,13 +492,5 @@ mod tests {
             "{w} {h}"
         );
         assert_eq!(Style::default().fit_box(), None);
-    }
-
-    #[test]
-    fn apply_restores() {
-        let paper = Style::named(StyleName::Paper);
-        let inside = paper.apply(Style::current);
-        assert_eq!(inside, paper);
-        assert_eq!(Style::current(), Style::default());
     }
 }

@@ -12,6 +12,7 @@ use super::canvas::{Canvas, Pen, Raster};
 use super::charts::Chart;
 use super::page_style::Style;
 use super::style::{self, HAlign, VAlign};
+use super::theme::Theme;
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use std::sync::Arc;
@@ -58,6 +59,9 @@ pub struct Picture {
     width: f32,
     height: f32,
     items: Vec<Item>,
+    /// The figure's theme: its style (page, font, text sizes), passed in
+    /// by the figure's builder.
+    theme: Theme,
     /// Groups being recorded (their transform and items so far).
     open: Vec<(Transform, Vec<Item>)>,
     /// The document's title (markup of [`style::runs`]), recorded in every
@@ -72,12 +76,15 @@ pub struct Picture {
 pub const MAX_RASTER_SIDE: u32 = 8192;
 
 impl Picture {
-    /// An empty white picture of `width × height` design pixels.
-    pub fn new(width: f32, height: f32) -> Picture {
+    /// An empty white picture of `width × height` design pixels, drawn
+    /// with `theme` (its text in the theme's font, its files on the
+    /// theme's page).
+    pub fn new(theme: &Theme, width: f32, height: f32) -> Picture {
         Picture {
             width: width.max(1.0),
             height: height.max(1.0),
             items: Vec::new(),
+            theme: *theme,
             open: Vec::new(),
             title: None,
             content: None,
@@ -94,6 +101,11 @@ impl Picture {
     /// The document title, without markup.
     pub fn title(&self) -> Option<String> {
         self.title.as_deref().map(style::plain_text)
+    }
+
+    /// The theme the picture is drawn with.
+    pub fn theme(&self) -> &Theme {
+        &self.theme
     }
 
     /// Design width in pixels.
@@ -147,13 +159,13 @@ impl Picture {
         self.pop();
     }
 
-    /// The picture on the page of the style in force ([`Style::current`]):
+    /// The picture on the page of its theme's style:
     /// unchanged at screen; at a print style widened with white, the
     /// picture centred, to the page's width in design pixels, and further
     /// when it would print taller than [`Style::max_height_pt`] (then the
     /// whole picture prints smaller, centred on a page of that height).
     pub fn fit_page(self) -> Picture {
-        let style = Style::current();
+        let style = self.theme.style;
         let (Some(w_pt), Some(max_h)) = (style.width_pt, style.max_height_pt()) else {
             return self;
         };
@@ -163,7 +175,7 @@ impl Picture {
         if width <= self.width + 0.5 {
             return self;
         }
-        let mut out = Picture::new(width, self.height);
+        let mut out = Picture::new(&self.theme, width, self.height);
         out.place(&self, ((0.5 * (width - self.width)).floor(), 0.0));
         out.content = Some(self.content.unwrap_or((self.width, self.height)));
         out.title = self.title;
@@ -186,7 +198,11 @@ impl Picture {
         } else {
             Transform::from_scale(scale, scale)
         };
-        self.draw(&mut Raster::with_transform(&mut pixmap, ts));
+        self.draw(&mut Raster::with_transform(
+            &mut pixmap,
+            ts,
+            self.theme.font(),
+        ));
         Ok(pixmap)
     }
 
@@ -343,17 +359,17 @@ impl From<Chart> for Picture {
     /// A picture of the chart's size holding the chart.
     fn from(chart: Chart) -> Picture {
         let (w, h) = (chart.pixmap.width() as f32, chart.pixmap.height() as f32);
-        let mut p = Picture::new(w, h);
+        let mut p = Picture::new(&chart.theme, w, h);
         p.chart(&Arc::new(chart), (0.0, 0.0));
         p
     }
 }
 
-impl From<Pixmap> for Picture {
+impl Picture {
     /// A raster-only picture of the image's size.
-    fn from(image: Pixmap) -> Picture {
+    pub fn of_image(theme: &Theme, image: Pixmap) -> Picture {
         let (w, h) = (image.width() as f32, image.height() as f32);
-        let mut p = Picture::new(w, h);
+        let mut p = Picture::new(theme, w, h);
         p.image(&Arc::new(image), (0.0, 0.0));
         p
     }

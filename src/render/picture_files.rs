@@ -1,9 +1,9 @@
 //! A picture written as files: SVG (its `<text>` in the bundled font),
-//! PNG and PDF, on the page of the style in force, with the figure's
+//! PNG and PDF, on the page of the picture's style, with the figure's
 //! metadata. Apart from the picture model, so that the SVG backend and
 //! the picture do not import each other.
 
-use super::page_style::{Style, TextMode};
+use super::page_style::TextMode;
 use super::picture::Picture;
 use super::style;
 use super::svg;
@@ -18,12 +18,12 @@ impl Picture {
     }
 
     /// The bytes of the picture in each figure format of `formats`, in
-    /// order, on the page of the style in force ([`Style::current`]): PNG
+    /// order, on the page of its theme's style: PNG
     /// at the style's resolution times `scale`; SVG and PDF vector, their
     /// page the style's width (the design size at 0.75 pt per pixel at
     /// `screen`), text as text or outlines as the style says.
     pub fn encode(&self, formats: &Formats, scale: f32) -> Result<Vec<Vec<u8>>> {
-        let style = Style::current();
+        let style = self.theme().style;
         self.check_print_scale(&style)?;
         let pt_per_px = style.pt_per_px(self.width());
         let real_text = style.text == TextMode::Text;
@@ -67,7 +67,7 @@ impl Picture {
     /// of `encode::svg_bytes` and `encode::pdf_bytes`.
     pub fn to_tree(&self, scale: f32) -> Result<resvg::usvg::Tree> {
         let svg = self.to_svg(scale)?;
-        resvg::usvg::Tree::from_str(&svg, &style::usvg_options())
+        resvg::usvg::Tree::from_str(&svg, &style::usvg_options(self.theme().font()))
             .map_err(|e| Error::failed(format!("internal SVG could not be parsed: {e}")))
     }
 }

@@ -9,6 +9,7 @@
 use super::canvas::{Canvas, Pen, Raster};
 use super::picture::Picture;
 use super::style::{self, DARK, GREY, HAlign, VAlign, WHITE, size};
+use super::theme::Theme;
 use super::theme::palette;
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
@@ -272,29 +273,40 @@ pub fn time_label(t: f64) -> String {
     }
 }
 
-/// Renders a snapshot into a new `width × height` image.
-pub fn render_snapshot(snap: &Snapshot<'_>, width: u32, height: u32) -> Result<Pixmap> {
+/// Renders a snapshot into a new `width × height` image, its text in
+/// `theme`'s font.
+pub fn render_snapshot(
+    theme: &Theme,
+    snap: &Snapshot<'_>,
+    width: u32,
+    height: u32,
+) -> Result<Pixmap> {
     let mut p = style::white_pixmap(width, height).ok_or_else(|| bad_size(width, height))?;
-    draw_snapshot(&mut p, Region::full(width, height), snap);
+    draw_snapshot(theme, &mut p, Region::full(width, height), snap);
     Ok(p)
 }
 
-/// A snapshot as a `width × height` picture (vector).
-pub fn snapshot_picture(snap: &Snapshot<'_>, width: u32, height: u32) -> Result<Picture> {
+/// A snapshot as a `width × height` picture (vector) drawn with `theme`.
+pub fn snapshot_picture(
+    theme: &Theme,
+    snap: &Snapshot<'_>,
+    width: u32,
+    height: u32,
+) -> Result<Picture> {
     if width == 0 || height == 0 {
         return Err(bad_size(width, height));
     }
-    let mut p = Picture::new(width as f32, height as f32);
+    let mut p = Picture::new(theme, width as f32, height as f32);
     draw_snapshot_on(&mut p, Region::full(width, height), snap);
     Ok(p)
 }
 
 /// Clears `pixmap` to white and renders a snapshot over all of it (reuses
 /// the allocation: the per-frame path of movies).
-pub fn render_snapshot_into(pixmap: &mut Pixmap, snap: &Snapshot<'_>) {
+pub fn render_snapshot_into(theme: &Theme, pixmap: &mut Pixmap, snap: &Snapshot<'_>) {
     pixmap.fill(style::color(WHITE));
     let r = Region::full(pixmap.width(), pixmap.height());
-    draw_snapshot(pixmap, r, snap);
+    draw_snapshot(theme, pixmap, r, snap);
 }
 
 pub(crate) fn bad_size(width: u32, height: u32) -> Error {
@@ -303,9 +315,10 @@ pub(crate) fn bad_size(width: u32, height: u32) -> Error {
     ))
 }
 
-/// Draws a snapshot into `region` of `pixmap` at 100 %.
-pub fn draw_snapshot(pixmap: &mut Pixmap, region: Region, snap: &Snapshot<'_>) {
-    draw_snapshot_on(&mut Raster::new(pixmap), region, snap);
+/// Draws a snapshot into `region` of `pixmap` at 100 %, its text in
+/// `theme`'s font.
+pub fn draw_snapshot(theme: &Theme, pixmap: &mut Pixmap, region: Region, snap: &Snapshot<'_>) {
+    draw_snapshot_on(&mut Raster::new(pixmap, theme.font()), region, snap);
 }
 
 /// Draws a snapshot into `region` of `canvas` (title band on top, time band

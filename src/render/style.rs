@@ -2,13 +2,13 @@
 //! canvases.
 //!
 //! Two bundled fonts (`assets/fonts/`): DejaVu Sans (screen and slides) and
-//! Liberation Serif (print). The [`Style`](super::page_style::Style) in force
-//! picks one, and it is used everywhere: plotters lays chart text out with
+//! Liberation Serif (print). The figure's theme names one
+//! ([`super::Theme::font`]), passed to every text function here, and it is used everywhere: plotters lays chart text out with
 //! it, resvg rasterises chart SVGs with it, and canvas text (labels on
 //! snapshots and panels) is rasterised from its outlines with `ab_glyph`,
 //! which is fast enough for a time label on every movie frame.
 
-use super::page_style::{FontChoice, Style};
+use super::page_style::FontChoice;
 pub use super::theme::SCRIPT_SCALE;
 use super::theme::palette;
 pub use super::theme::size;
@@ -25,11 +25,6 @@ pub const FONT_FAMILY: &str = "DejaVu Sans";
 pub const SERIF_BYTES: &[u8] = include_bytes!("../../assets/fonts/LiberationSerif-Regular.ttf");
 /// Its family name (as in the file).
 pub const SERIF_FAMILY: &str = "Liberation Serif";
-
-/// The family name of the font of the style in force.
-pub fn family() -> &'static str {
-    family_of(Style::current().font)
-}
 
 /// The family name of `font`.
 pub fn family_of(font: FontChoice) -> &'static str {
@@ -130,11 +125,11 @@ pub fn fontdb() -> Arc<resvg::usvg::fontdb::Database> {
     .clone()
 }
 
-/// usvg options that resolve every font to the bundled ones (the style's
-/// font where a text names none).
-pub fn usvg_options() -> resvg::usvg::Options<'static> {
+/// usvg options that resolve every font to the bundled ones (`font`
+/// where a text names none).
+pub fn usvg_options(font: FontChoice) -> resvg::usvg::Options<'static> {
     resvg::usvg::Options {
-        font_family: family().to_string(),
+        font_family: family_of(font).to_string(),
         fontdb: fontdb(),
         ..Default::default()
     }
@@ -167,11 +162,6 @@ pub fn font_of(choice: FontChoice) -> Option<&'static FontRef<'static>> {
         ]
     });
     fonts[choice as usize].as_ref()
-}
-
-/// The font of the style in force.
-fn font() -> Option<&'static FontRef<'static>> {
-    font_of(Style::current().font)
 }
 
 /// Unicode super- and subscript characters and what they are in markup.
@@ -212,9 +202,9 @@ const SCRIPT_CHARS: [(char, Shift, char); 30] = [
 /// font has no glyph for written as markup (`ω₊` → `ω_{+}`, `10⁻⁴` →
 /// `10^{−4}`), so it is typeset as a smaller, shifted run of the same font
 /// (Liberation Serif has Greek but no script digits).
-pub fn scripts_as_markup(text: &str) -> std::borrow::Cow<'_, str> {
+pub fn scripts_as_markup(font: FontChoice, text: &str) -> std::borrow::Cow<'_, str> {
     let script = |c: char| SCRIPT_CHARS.iter().find(|(s, _, _)| *s == c);
-    let Some(f) = font() else {
+    let Some(f) = font_of(font) else {
         return text.into();
     };
     let missing = |c: char| script(c).is_some() && f.glyph_id(c).0 == 0;
@@ -314,8 +304,8 @@ pub const SUB_DROP: f32 = 0.16;
 /// `_{...}` a subscript (e.g. "e^{−κ(n−1)b}", "δθ_{n}"); anything else,
 /// including a `^` or `_` not followed by `{`, is literal text. An
 /// unclosed brace makes the rest of the text literal.
-pub fn runs(text: &str) -> Vec<(Shift, String)> {
-    let text = scripts_as_markup(text);
+pub fn runs(font: FontChoice, text: &str) -> Vec<(Shift, String)> {
+    let text = scripts_as_markup(font, text);
     markup_runs(&text)
         .into_iter()
         .map(|(s, t)| (s, t.to_string()))
@@ -393,22 +383,23 @@ fn plain_width(font: &FontRef<'_>, text: &str, size: f32) -> f32 {
 }
 
 /// Width in pixels of typeset `text` (see [`runs`]) at font size `size`.
-pub fn text_width(text: &str, size: f32) -> f32 {
-    let Some(font) = font() else { return 0.0 };
-    runs(text)
+pub fn text_width(font: FontChoice, text: &str, size: f32) -> f32 {
+    let Some(f) = font_of(font) else { return 0.0 };
+    runs(font, text)
         .into_iter()
-        .map(|(shift, t)| plain_width(font, &t, size * shift.scale()))
+        .map(|(shift, t)| plain_width(f, &t, size * shift.scale()))
         .sum()
 }
 
 /// The font's ascent at font size `size` (top of the em box to baseline).
-pub fn ascent(size: f32) -> f32 {
-    font().map_or(0.8 * size, |f| f.as_scaled(px_scale(f, size)).ascent())
+pub fn ascent(font: FontChoice, size: f32) -> f32 {
+    font_of(font).map_or(0.8 * size, |f| f.as_scaled(px_scale(f, size)).ascent())
 }
 
 /// Left end and baseline of text of width `width` anchored at (`x`, `y`)
 /// with `align`: shared by every backend so that they place text alike.
 pub fn text_origin(
+    font: FontChoice,
     (x, y): (f32, f32),
     width: f32,
     size: f32,
@@ -420,7 +411,7 @@ pub fn text_origin(
         HAlign::Right => x - width,
     };
     let baseline = match v {
-        VAlign::Top => y + ascent(size),
+        VAlign::Top => y + ascent(font, size),
         VAlign::Middle => y + 0.36 * size,
         VAlign::Baseline => y,
     };
@@ -431,15 +422,17 @@ pub fn text_origin(
 /// anchored at (`x`, `y`) pixels.
 pub fn draw_text(
     pixmap: &mut Pixmap,
+    choice: FontChoice,
     text: &str,
     at: (f32, f32),
     size: f32,
     rgb: Rgb,
     align: (HAlign, VAlign),
 ) {
-    let Some(font) = font() else { return };
-    let (mut pen, baseline) = text_origin(at, text_width(text, size), size, align);
-    for (shift, run) in runs(text) {
+    let Some(font) = font_of(choice) else { return };
+    let width = text_width(choice, text, size);
+    let (mut pen, baseline) = text_origin(choice, at, width, size, align);
+    for (shift, run) in runs(choice, text) {
         let run_size = size * shift.scale();
         let sf = font.as_scaled(px_scale(font, run_size));
         let y = baseline - shift.rise() * size;
@@ -494,7 +487,7 @@ pub fn white_pixmap(width: u32, height: u32) -> Option<Pixmap> {
 /// Greedy word wrap: the words of `text` (paragraphs split at newlines) in
 /// lines at most `width` pixels wide at font `size`. Spaces inside markup
 /// braces (`^{...}`) do not break a line.
-pub fn wrap_text(text: &str, width: f32, size: f32) -> Vec<String> {
+pub fn wrap_text(font: FontChoice, text: &str, width: f32, size: f32) -> Vec<String> {
     let mut lines = Vec::new();
     for paragraph in text.split('\n') {
         let mut line = String::new();
@@ -504,7 +497,7 @@ pub fn wrap_text(text: &str, width: f32, size: f32) -> Vec<String> {
             } else {
                 format!("{line} {word}")
             };
-            if !line.is_empty() && text_width(&candidate, size) > width {
+            if !line.is_empty() && text_width(font, &candidate, size) > width {
                 lines.push(std::mem::replace(&mut line, word.to_string()));
             } else {
                 line = candidate;
@@ -548,6 +541,7 @@ mod tests {
         let mut p = white_pixmap(80, 30).unwrap();
         draw_text(
             &mut p,
+            FontChoice::Sans,
             "t/τ = 12",
             (2.0, 2.0),
             14.0,
@@ -555,7 +549,7 @@ mod tests {
             (HAlign::Left, VAlign::Top),
         );
         assert!(p.pixels().iter().any(|c| c.red() < 100));
-        assert!(text_width("θ", 14.0) > 3.0);
+        assert!(text_width(FontChoice::Sans, "θ", 14.0) > 3.0);
     }
 
     #[test]
@@ -575,9 +569,10 @@ mod tests {
         );
         assert_eq!(plain_text("10^{−3} s"), "10−3 s");
         assert_eq!(markup_html("x^{2} < y"), "x<sup>2</sup> &lt; y");
-        assert!(text_width("e^{−κ}", 14.0) < text_width("e−κ", 14.0));
+        let sans = FontChoice::Sans;
+        assert!(text_width(sans, "e^{−κ}", 14.0) < text_width(sans, "e−κ", 14.0));
         assert_eq!(
-            wrap_text("aa e^{−κ n b} bb", 1000.0, 14.0),
+            wrap_text(sans, "aa e^{−κ n b} bb", 1000.0, 14.0),
             vec!["aa e^{−κ n b} bb"]
         );
         assert_eq!(words(" a^{x y}  b "), vec!["a^{x y}", "b"]);
@@ -585,17 +580,17 @@ mod tests {
 
     #[test]
     fn script_characters_the_font_lacks_become_markup() {
-        use crate::render::page_style::{Style, StyleName};
         // DejaVu Sans has ₊ and ⁻: the text stays as it is.
-        assert_eq!(scripts_as_markup("ω₊, 10⁻⁴"), "ω₊, 10⁻⁴");
-        // Liberation Serif has neither: the same text as markup.
-        let paper = Style::named(StyleName::Paper);
+        assert_eq!(scripts_as_markup(FontChoice::Sans, "ω₊, 10⁻⁴"), "ω₊, 10⁻⁴");
+        // Liberation Serif (the paper style's font) has neither: the same
+        // text as markup.
+        let serif = FontChoice::Serif;
         assert_eq!(
-            paper.apply(|| scripts_as_markup("ω₊(0), 10⁻⁴ s")),
+            scripts_as_markup(serif, "ω₊(0), 10⁻⁴ s"),
             "ω_{+}(0), 10^{−4} s"
         );
         assert_eq!(
-            paper.apply(|| runs("ω₊")),
+            runs(serif, "ω₊"),
             vec![
                 (Shift::Base, "ω".to_string()),
                 (Shift::Sub, "+".to_string())

@@ -5,6 +5,7 @@
 //! so the two agree.
 
 use super::canvas::{Cap, Pen};
+use super::page_style::FontChoice;
 use super::picture::{Item, Picture};
 use super::style::{self, Shift};
 use crate::encode::Rgb;
@@ -79,12 +80,12 @@ fn document_sized(picture: &Picture, (width, height): (String, String)) -> Resul
         num(w),
         num(h)
     );
-    items(&mut out, picture.items());
+    items(&mut out, picture.theme().font(), picture.items());
     out.push_str("</svg>\n");
     Ok(out)
 }
 
-fn items(out: &mut String, list: &[Item]) {
+fn items(out: &mut String, font: FontChoice, list: &[Item]) {
     for item in list {
         match item {
             Item::Fill { path, color } => {
@@ -109,7 +110,7 @@ fn items(out: &mut String, list: &[Item]) {
                 size,
                 color,
                 align,
-            } => text_element(out, text, *at, *size, *color, *align),
+            } => text_element(out, font, text, *at, *size, *color, *align),
             Item::Chart { chart, at } => {
                 let _ = writeln!(
                     out,
@@ -127,7 +128,7 @@ fn items(out: &mut String, list: &[Item]) {
                 items: inner,
             } => {
                 let _ = writeln!(out, "<g transform=\"{}\">", matrix(*transform));
-                items(out, inner);
+                items(out, font, inner);
                 out.push_str("</g>\n");
             }
         }
@@ -163,25 +164,26 @@ fn stroke_attrs(pen: &Pen) -> String {
 
 fn text_element(
     out: &mut String,
+    font: FontChoice,
     text: &str,
     at: (f32, f32),
     size: f32,
     color: Rgb,
     align: (style::HAlign, style::VAlign),
 ) {
-    let width = style::text_width(text, size);
-    let (left, baseline) = style::text_origin(at, width, size, align);
+    let width = style::text_width(font, text, size);
+    let (left, baseline) = style::text_origin(font, at, width, size, align);
     let _ = write!(
         out,
         "<text x=\"{}\" y=\"{}\" font-family=\"{}\" font-size=\"{}\" fill=\"{}\" \
          xml:space=\"preserve\">",
         num(left),
         num(baseline),
-        style::family(),
+        style::family_of(font),
         num(size),
         style::hex(color)
     );
-    for (shift, run) in style::runs(text) {
+    for (shift, run) in style::runs(font, text) {
         match shift {
             Shift::Base => out.push_str(&escape(&run)),
             _ => {

@@ -5,7 +5,7 @@
 //! inside the page, no two boxes overlapping, no text under 6 pt at a print
 //! style.
 
-use super::page_style::{MIN_PRINT_TEXT_PT, Style};
+use super::page_style::{FontChoice, MIN_PRINT_TEXT_PT, Style};
 use super::picture::{Item, Picture};
 use super::style;
 use resvg::usvg;
@@ -35,14 +35,19 @@ impl Picture {
     /// The box of every non-blank text of the picture, in drawing order.
     pub fn text_boxes(&self) -> Vec<TextBox> {
         let mut out = Vec::new();
-        collect(self.items(), Transform::identity(), &mut out);
+        collect(
+            self.theme().font(),
+            self.items(),
+            Transform::identity(),
+            &mut out,
+        );
         out
     }
 
     /// What breaks the layout rules at `style`, one line each (empty: none).
-    /// Text is measured in the style's font, as it was laid out.
+    /// Text is measured in the picture's font, as it was laid out.
     pub fn layout_problems(&self, style: &Style) -> Vec<String> {
-        let boxes = style.apply(|| self.text_boxes());
+        let boxes = self.text_boxes();
         let (w, h) = (self.width(), self.height());
         let pt = style.pt_per_px(w);
         let mut problems = Vec::new();
@@ -85,7 +90,7 @@ impl Picture {
     }
 }
 
-fn collect(items: &[Item], ts: Transform, out: &mut Vec<TextBox>) {
+fn collect(font: FontChoice, items: &[Item], ts: Transform, out: &mut Vec<TextBox>) {
     for item in items {
         match item {
             Item::Text {
@@ -99,11 +104,11 @@ fn collect(items: &[Item], ts: Transform, out: &mut Vec<TextBox>) {
                 if plain.trim().is_empty() {
                     continue;
                 }
-                let width = style::text_width(text, *size);
-                let (left, baseline) = style::text_origin(*at, width, *size, *align);
+                let width = style::text_width(font, text, *size);
+                let (left, baseline) = style::text_origin(font, *at, width, *size, *align);
                 let has = |mark: &str| text.contains(mark);
                 let top = baseline
-                    - style::ascent(*size).max(if has("^{") {
+                    - style::ascent(font, *size).max(if has("^{") {
                         (style::SUPER_RISE + 0.75 * style::SCRIPT_SCALE) * size
                     } else {
                         0.0
@@ -122,7 +127,9 @@ fn collect(items: &[Item], ts: Transform, out: &mut Vec<TextBox>) {
                     chart_text(tree.root(), ts, out);
                 }
             }
-            Item::Group { transform, items } => collect(items, ts.pre_concat(*transform), out),
+            Item::Group { transform, items } => {
+                collect(font, items, ts.pre_concat(*transform), out)
+            }
             Item::Fill { .. } | Item::Stroke { .. } | Item::Image { .. } => {}
         }
     }

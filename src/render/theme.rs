@@ -165,11 +165,6 @@ impl Theme {
         }
     }
 
-    /// The theme of the style in force ([`Style::current`]).
-    pub fn current() -> Theme {
-        Theme::of(&Style::current())
-    }
-
     /// Height of the band a title (one line) takes above what it names.
     pub fn title_band(&self) -> f32 {
         if self.is_print() {

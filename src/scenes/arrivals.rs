@@ -6,7 +6,7 @@ use super::dynamic::{panel_labels, wave_name};
 use super::run::{self};
 use crate::error::Result;
 use crate::render::charts::{self, Axis, ChartSpec, Marker, Series};
-use crate::render::{Picture, style};
+use crate::render::{Picture, Theme, style};
 use crate::scene::{Scene, describe};
 use crate::sim::{self};
 
@@ -35,11 +35,12 @@ fn fitted_line(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
 /// The arrival-time chart (figure S6): t_n against n for every wave of
 /// every run (from the run's waves record), each wave its own colour of
 /// the palette and its own marker, with its fitted line (solid for a
-/// kink, dashed for an antikink) and its fitted speed in the legend.
-pub fn arrivals_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+/// kink, dashed for an antikink) and its fitted speed in the legend;
+/// drawn with `theme`.
+pub fn arrivals_figure(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     let (spec, data) = arrivals_chart(scene)?;
-    let (w, h) = crate::render::Style::current().frame((820, 560));
-    let picture = Picture::from(charts::line_chart(&spec, w, h)?).fit_page();
+    let (w, h) = theme.style.frame((820, 560));
+    let picture = Picture::from(charts::line_chart(theme, &spec, w, h)?).fit_page();
     Ok((picture.titled(describe::title(scene)), data))
 }
 

@@ -18,7 +18,7 @@ use crate::render::compose::{
 };
 use crate::render::fold::{self, Fold};
 use crate::render::snapshot::{self, Region, Snapshot, View};
-use crate::render::{Canvas, MovieLayout, Picture, style};
+use crate::render::{Canvas, MovieLayout, Picture, Theme, style};
 use crate::scene::{Camera, MIN_BLOCK_PIXELS, OutputSpec, Scene, describe};
 use crate::sim::Trajectory;
 use tiny_skia::Pixmap;
@@ -98,18 +98,16 @@ impl Strip {
             .collect()
     }
 
-    fn picture(&self, data: &RunData) -> Result<Picture> {
-        compose::filmstrip_picture(&self.ladder, &Self::frames(data), &self.opts)
+    fn picture(&self, theme: &Theme, data: &RunData) -> Result<Picture> {
+        compose::filmstrip_picture(theme, &self.ladder, &Self::frames(data), &self.opts)
     }
 }
 
 /// Strips a row at a print style: two on a page wide enough for two
 /// strips of snapshots side by side (`paper-wide`), where the ladders are
 /// then drawn larger than one strip a row would, else one.
-fn print_columns(count: usize) -> usize {
-    let wide = crate::render::Style::current()
-        .fit_box()
-        .is_some_and(|(w, _)| w >= WIDE_PAGE);
+fn print_columns(theme: &Theme, count: usize) -> usize {
+    let wide = theme.style.fit_box().is_some_and(|(w, _)| w >= WIDE_PAGE);
     if wide && count >= 2 { 2 } else { 1 }
 }
 
@@ -119,9 +117,8 @@ const WIDE_PAGE: f32 = 800.0;
 /// The box each of `count` strips must fit at a print style, in
 /// [`print_columns`] strips a row under the figure's title on the style's
 /// page ([`crate::render::Style::fit_box`]); none at screen.
-fn strip_fit(count: usize) -> Option<(u32, u32)> {
-    let (w, h) = crate::render::Style::current().fit_box()?;
-    let theme = crate::render::Theme::current();
+fn strip_fit(theme: &Theme, count: usize) -> Option<(u32, u32)> {
+    let (w, h) = theme.style.fit_box()?;
     let (m, gap) = (theme.margin, theme.gap);
     // The figure's title band, where the style draws titles.
     let title = if theme.titles {
@@ -129,7 +126,7 @@ fn strip_fit(count: usize) -> Option<(u32, u32)> {
     } else {
         0.0
     };
-    let cols = print_columns(count) as f32;
+    let cols = print_columns(theme, count) as f32;
     let rows = count.max(1).div_ceil(cols as usize) as f32;
     let wide = (w - 2.0 * m - (cols - 1.0) * gap) / cols;
     let each = (h - 2.0 * m - title - (rows - 1.0) * gap) / rows;
@@ -137,13 +134,17 @@ fn strip_fit(count: usize) -> Option<(u32, u32)> {
 }
 
 /// The strips of a filmstrip scene, one per panel, with their data.
-fn strips(scene: &Scene, frame: Option<(u32, u32)>) -> Result<Vec<(Strip, RunData)>> {
+fn strips(
+    theme: &Theme,
+    scene: &Scene,
+    frame: Option<(u32, u32)>,
+) -> Result<Vec<(Strip, RunData)>> {
     // `t_end = "auto"` resolved here too, for callers of this function
     // that did not go through `scenes::render_to` (a no-op when resolved).
     let scene = &scene.with_auto_window()?;
     let labels = panel_labels(scene);
     let runs = scene.runs();
-    let fit = strip_fit(runs.len());
+    let fit = strip_fit(theme, runs.len());
     runs.iter()
         .zip(&labels)
         .map(|((s, times), label)| {
@@ -161,24 +162,22 @@ const MAX_STRIP_ROW: u32 = 2000;
 /// The figure's layout of `panels`: two strips a row when there are more
 /// than two and they fit (more when one or two a row would be too tall),
 /// with the scene's title.
-fn strips_layout(scene: &Scene, panels: &[Panel]) -> Layout {
+fn strips_layout(theme: &Theme, scene: &Scene, panels: &[Panel]) -> Layout {
     let widest = panels
         .iter()
         .map(|p| p.image.pixel_size().0)
         .max()
         .unwrap_or(0);
     // At a print style the strips were fitted [`print_columns`] a row.
-    let print = crate::render::Style::current().is_print();
-    let two = if print {
-        print_columns(panels.len()) == 2
+    let two = if theme.is_print() {
+        print_columns(theme, panels.len()) == 2
     } else {
         panels.len() > 2 && 2 * widest <= MAX_STRIP_ROW
     };
     // Journal styles draw no figure title (the caption is the document's).
-    let titles = crate::render::Theme::current().titles;
     let layout = |columns| {
-        let l = Layout::columns(columns);
-        if titles {
+        let l = Layout::columns(theme, columns);
+        if theme.titles {
             l.title(describe::title(scene))
         } else {
             l
@@ -195,14 +194,15 @@ fn strips_layout(scene: &Scene, panels: &[Panel]) -> Layout {
 
 /// A filmstrip figure (figures 1c, 3 and 4a): one strip per panel, two
 /// strips a row, with the scene's title; snapshots of `frame` pixels
-/// (default [`strip_frame`]).
+/// (default [`strip_frame`]), drawn with `theme`.
 pub fn filmstrip_figure(
+    theme: &Theme,
     scene: &Scene,
     frame: Option<(u32, u32)>,
 ) -> Result<(Picture, Vec<RunData>)> {
-    let mut strips = strips(scene, frame)?;
-    let picture = compose_strips(scene, &strips)?.titled(describe::title(scene));
-    let style = crate::render::Style::current();
+    let mut strips = strips(theme, scene, frame)?;
+    let picture = compose_strips(theme, scene, &strips)?.titled(describe::title(scene));
+    let style = theme.style;
     if let (Err(e), Some(asked)) = (picture.check_print_scale(&style), style.height_pt) {
         // Too short a page for the style's text: refused, naming the
         // smallest height that holds the strips (found by bisection of the
@@ -212,14 +212,13 @@ pub fn filmstrip_figure(
                 height_pt: Some(h),
                 ..style
             };
-            tall.apply(|| {
-                let fit = strip_fit(strips.len());
-                for (s, _) in strips.iter_mut() {
-                    s.opts.fit = fit;
-                }
-                let p = compose_strips(scene, strips)?;
-                Ok(p.check_print_scale(&tall).is_ok())
-            })
+            let theme = Theme::of(&tall);
+            let fit = strip_fit(&theme, strips.len());
+            for (s, _) in strips.iter_mut() {
+                s.opts.fit = fit;
+            }
+            let p = compose_strips(&theme, scene, strips)?;
+            Ok(p.check_print_scale(&tall).is_ok())
         };
         let (mut lo, mut hi) = (asked, 2000.0f32);
         if !fits(&mut strips, hi)? {
@@ -247,29 +246,34 @@ pub fn filmstrip_figure(
 }
 
 /// The strips drawn and composed into one figure on the style's page.
-fn compose_strips(scene: &Scene, strips: &[(Strip, RunData)]) -> Result<Picture> {
+fn compose_strips(theme: &Theme, scene: &Scene, strips: &[(Strip, RunData)]) -> Result<Picture> {
     let panels = strips
         .iter()
-        .map(|(s, d)| Ok(Panel::new(s.picture(d)?)))
+        .map(|(s, d)| Ok(Panel::new(s.picture(theme, d)?)))
         .collect::<Result<Vec<_>>>()?;
-    let layout = strips_layout(scene, &panels);
+    let layout = strips_layout(theme, scene, &panels);
     Ok(compose::compose_picture(&panels, &layout)?.fit_page())
 }
 
 /// For a test of the filmstrips: where [`filmstrip_figure`] draws every
 /// block, one [`StripGeometry`] per strip in the figure's pixels.
-pub fn filmstrip_geometry(scene: &Scene, frame: Option<(u32, u32)>) -> Result<Vec<StripGeometry>> {
-    let strips = strips(scene, frame)?;
+pub fn filmstrip_geometry(
+    theme: &Theme,
+    scene: &Scene,
+    frame: Option<(u32, u32)>,
+) -> Result<Vec<StripGeometry>> {
+    let strips = strips(theme, scene, frame)?;
     let panels = strips
         .iter()
-        .map(|(s, d)| Ok(Panel::new(s.picture(d)?)))
+        .map(|(s, d)| Ok(Panel::new(s.picture(theme, d)?)))
         .collect::<Result<Vec<_>>>()?;
-    let (size, origins) = compose::panel_origins(&panels, &strips_layout(scene, &panels))?;
+    let layout = strips_layout(theme, scene, &panels);
+    let (size, origins) = compose::panel_origins(&panels, &layout)?;
     strips
         .iter()
         .zip(origins)
         .map(|((s, d), at)| {
-            let g = compose::filmstrip_geometry(&s.ladder, &Strip::frames(d), &s.opts)?;
+            let g = compose::filmstrip_geometry(theme, &s.ladder, &Strip::frames(d), &s.opts)?;
             Ok(g.placed(at, size))
         })
         .collect()
@@ -369,7 +373,7 @@ struct MoviePlan {
 }
 
 impl MoviePlan {
-    fn new(scene: &Scene, opts: &MovieOptions) -> Result<Self> {
+    fn new(theme: &Theme, scene: &Scene, opts: &MovieOptions) -> Result<Self> {
         // `t_end = "auto"` resolved here too, for callers of this function
         // that did not go through `scenes::render_to` (a no-op when resolved).
         let scene = &scene.with_auto_window()?;
@@ -380,7 +384,7 @@ impl MoviePlan {
         let times = frame_times(scene.run.t_end, opts.frames);
         let run = run::simulate(scene, &times)?;
         let ladder = Ladder::new(scene.model.params()?);
-        let layout = MovieLayout::new(opts.width, opts.height, ladder.n());
+        let layout = MovieLayout::new(theme, opts.width, opts.height, ladder.n());
         let region = layout.ladder;
         let aspect = layout.ladder_aspect();
         let traj = &run.trajectory;
@@ -460,7 +464,9 @@ impl MoviePlan {
     /// is folded (as filmstrips number theirs), onto the frames'
     /// `background`.
     fn number_columns(&self, background: &mut Pixmap) {
-        let mut canvas = crate::render::Raster::with_transform(background, self.layout.transform());
+        let ts = self.layout.transform();
+        let mut canvas =
+            crate::render::Raster::with_transform(background, ts, self.layout.theme.font());
         let color = style::mix(style::GREY, style::DARK, 0.3);
         let align = (style::HAlign::Center, style::VAlign::Top);
         for (text, at) in self.column_numbers() {
@@ -513,8 +519,12 @@ pub type BlockPixels = Vec<Vec<(f32, f32)>>;
 /// For a test of the camera: the ladder's region of a movie frame and the
 /// pixel positions of both ends of every block at every frame, as the
 /// movie draws them (a block in two columns of a folded ladder twice).
-pub fn movie_block_pixels(scene: &Scene, opts: &MovieOptions) -> Result<(Region, BlockPixels)> {
-    let plan = MoviePlan::new(scene, &opts.validated()?)?;
+pub fn movie_block_pixels(
+    theme: &Theme,
+    scene: &Scene,
+    opts: &MovieOptions,
+) -> Result<(Region, BlockPixels)> {
+    let plan = MoviePlan::new(theme, scene, &opts.validated()?)?;
     let mut frames = Vec::new();
     for k in 0..plan.run.trajectory.states.len() {
         let mut px = Vec::new();
@@ -535,10 +545,11 @@ pub fn movie_block_pixels(scene: &Scene, opts: &MovieOptions) -> Result<(Region,
 /// top centre is, in the frame's pixels (none when the ladder is not
 /// folded).
 pub fn movie_column_numbers(
+    theme: &Theme,
     scene: &Scene,
     opts: &MovieOptions,
 ) -> Result<Vec<(String, (f32, f32))>> {
-    let plan = MoviePlan::new(scene, &opts.validated()?)?;
+    let plan = MoviePlan::new(theme, scene, &opts.validated()?)?;
     let s = plan.layout.scale;
     Ok(plan
         .column_numbers()
@@ -557,16 +568,25 @@ pub type MovieFiles = (Vec<(Format, Vec<u8>)>, MovieKymograph, RunData);
 /// the layout scales with the frame size (`render::MovieLayout`);
 /// `frame_done` is called after each frame (for a progress bar).
 pub fn movie(
+    theme: &Theme,
     scene: &Scene,
     opts: &MovieOptions,
     formats: &[Format],
     frame_done: &(dyn Fn() + Sync),
 ) -> Result<MovieFiles> {
-    movie_at(scene, opts, formats, Mp4Quality::default(), frame_done)
+    movie_at(
+        theme,
+        scene,
+        opts,
+        formats,
+        Mp4Quality::default(),
+        frame_done,
+    )
 }
 
 /// [`movie`] with the MP4 at `quality`.
 pub fn movie_at(
+    theme: &Theme,
     scene: &Scene,
     opts: &MovieOptions,
     formats: &[Format],
@@ -576,7 +596,7 @@ pub fn movie_at(
     let opts = opts.validated()?;
     let mut writer =
         MovieWriter::with_quality(formats, opts.width, opts.height, opts.fps, quality)?;
-    let plan = MoviePlan::new(scene, &opts)?;
+    let plan = MoviePlan::new(theme, scene, &opts)?;
     let traj = &plan.run.trajectory;
     let n = plan.ladder.n();
     let layout = &plan.layout;
@@ -594,6 +614,7 @@ pub fn movie_at(
         frame_done();
     }
     let kymo = kymograph_picture(
+        theme,
         &plan.title,
         traj,
         n,
@@ -606,9 +627,9 @@ pub fn movie_at(
 
 /// Frame `k` of a movie exactly as [`movie`] draws it (for tests and
 /// thumbnails).
-pub fn movie_frame(scene: &Scene, opts: &MovieOptions, k: usize) -> Result<Pixmap> {
+pub fn movie_frame(theme: &Theme, scene: &Scene, opts: &MovieOptions, k: usize) -> Result<Pixmap> {
     let opts = opts.validated()?;
-    let plan = MoviePlan::new(scene, &opts)?;
+    let plan = MoviePlan::new(theme, scene, &opts)?;
     let traj = &plan.run.trajectory;
     let frames = traj.states.len();
     if k >= frames {

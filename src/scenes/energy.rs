@@ -19,7 +19,7 @@ use super::run;
 use crate::error::{Error, Result};
 use crate::render::charts::{self, Axis, ChartSpec, Series};
 use crate::render::theme::palette;
-use crate::render::{Picture, style};
+use crate::render::{Picture, Theme, style};
 use crate::scene::{Scene, describe};
 use crate::sim::RunOptions;
 
@@ -28,8 +28,9 @@ fn even(t_end: f64, n: usize) -> Vec<f64> {
     (0..=n).map(|k| t_end * k as f64 / n as f64).collect()
 }
 
-/// The energy figure of `scene` and its run's data (with `energies`).
-pub fn energy_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+/// The energy figure of `scene` and its run's data (with `energies`),
+/// drawn with `theme`.
+pub fn energy_figure(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     // `t_end = "auto"` resolved here too, for callers that did not go
     // through `scenes::render_to` (a no-op when resolved).
     let scene = &scene.with_auto_window()?;
@@ -54,8 +55,8 @@ pub fn energy_figure(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
         dissipated: e.dissipated,
     };
     let spec = energy_chart(scene, &data);
-    let (w, h) = crate::render::Style::current().frame((820, 560));
-    let picture = Picture::from(charts::line_chart(&spec, w, h)?).fit_page();
+    let (w, h) = theme.style.frame((820, 560));
+    let picture = Picture::from(charts::line_chart(theme, &spec, w, h)?).fit_page();
     let mut record = RunData::from_run(scene, &run);
     record.energies = Some(data);
     Ok((picture.titled(describe::title(scene)), vec![record]))

@@ -4,21 +4,22 @@ use super::data::RunData;
 use super::run::{self};
 use crate::error::{Error, Result};
 use crate::render::charts::{self, Kymograph};
-use crate::render::{MovieLayout, Picture};
+use crate::render::{MovieLayout, Picture, Theme};
 use crate::scene::{Scene, describe};
 use crate::sim::Trajectory;
 use tiny_skia::Pixmap;
 
-/// A kymograph figure: sin θ_n of the scene's run over `frames` rows.
-pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Picture, RunData)> {
+/// A kymograph figure: sin θ_n of the scene's run over `frames` rows,
+/// drawn with `theme`.
+pub fn kymograph_figure(theme: &Theme, scene: &Scene, frames: usize) -> Result<(Picture, RunData)> {
     // `t_end = "auto"` resolved here too, for callers of this function
     // that did not go through `scenes::render_to` (a no-op when resolved).
     let scene = &scene.with_auto_window()?;
     let times = frame_times(scene.run.t_end, frames);
     let run = run::simulate(scene, &times)?;
     let title = describe::title(scene);
-    let (w, h) = crate::render::Style::current().frame((820, 560));
-    let image = kymograph_chart(&title, &run.trajectory, scene.model.n, w, h)?;
+    let (w, h) = theme.style.frame((820, 560));
+    let image = kymograph_chart(theme, &title, &run.trajectory, scene.model.n, w, h)?;
     Ok((
         Picture::from(image).fit_page().titled(title),
         RunData::with_kymograph(scene, run),
@@ -30,18 +31,19 @@ pub fn kymograph_figure(scene: &Scene, frames: usize) -> Result<(Picture, RunDat
 /// size of the movie layout's design frame and drawn scaled up, so its
 /// text and lines grow with the image as the movie's do.
 pub fn kymograph_image(
+    theme: &Theme,
     title: &str,
     traj: &Trajectory,
     n: usize,
     width: u32,
     height: u32,
 ) -> Result<Pixmap> {
-    let scale = MovieLayout::new(width, height, n).scale.max(1.0);
+    let scale = MovieLayout::new(theme, width, height, n).scale.max(1.0);
     if scale <= 1.0 {
-        return Ok(kymograph_chart(title, traj, n, width, height)?.pixmap);
+        return Ok(kymograph_chart(theme, title, traj, n, width, height)?.pixmap);
     }
     let design = |v: u32| ((v as f32 / scale).round() as u32).max(60);
-    let chart = kymograph_chart(title, traj, n, design(width), design(height))?;
+    let chart = kymograph_chart(theme, title, traj, n, design(width), design(height))?;
     let tree = chart
         .tree()
         .ok_or_else(|| Error::failed("the kymograph's SVG could not be parsed"))?;
@@ -51,6 +53,7 @@ pub fn kymograph_image(
 /// The kymograph of [`kymograph_image`] as a picture (for every figure
 /// format) with the scale at which its PNG is `width × height`.
 pub fn kymograph_picture(
+    theme: &Theme,
     title: &str,
     traj: &Trajectory,
     n: usize,
@@ -60,23 +63,22 @@ pub fn kymograph_picture(
     // At a print style the kymograph is a figure of the page, as a
     // kymograph view is: laid out at the page's size, so that its text
     // prints at the style's size.
-    let style = crate::render::Style::current();
-    if style.is_print() {
-        let (w, h) = style.frame((820, 560));
-        let chart = kymograph_chart(title, traj, n, w, h)?;
+    if theme.is_print() {
+        let (w, h) = theme.style.frame((820, 560));
+        let chart = kymograph_chart(theme, title, traj, n, w, h)?;
         return Ok(MovieKymograph {
             png_scale: 1.0,
             picture: Picture::from(chart).fit_page().titled(title),
         });
     }
-    let scale = MovieLayout::new(width, height, n).scale.max(1.0);
+    let scale = MovieLayout::new(theme, width, height, n).scale.max(1.0);
     let design = |v: u32| ((v as f32 / scale).round() as u32).max(60);
     let (w, h) = if scale <= 1.0 {
         (width, height)
     } else {
         (design(width), design(height))
     };
-    let chart = kymograph_chart(title, traj, n, w, h)?;
+    let chart = kymograph_chart(theme, title, traj, n, w, h)?;
     let picture: Picture = chart.into();
     Ok(MovieKymograph {
         png_scale: width as f32 / w as f32,
@@ -86,6 +88,7 @@ pub fn kymograph_picture(
 
 /// The kymograph chart (SVG and raster) of sin θ_n of `traj`.
 fn kymograph_chart(
+    theme: &Theme,
     title: &str,
     traj: &Trajectory,
     n: usize,
@@ -104,7 +107,7 @@ fn kymograph_chart(
     };
     let mut k = Kymograph::new(&traj.times, &values, n);
     k.title = Some(&kymo_title);
-    charts::kymograph(&k, width, height)
+    charts::kymograph(theme, &k, width, height)
 }
 
 /// The kymograph beside a movie: a picture like any figure's, and the

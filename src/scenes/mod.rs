@@ -15,7 +15,7 @@ pub mod walls;
 
 use crate::encode::{Format, Formats, Kind as FormatKind, Mp4Quality};
 use crate::error::{Error, Result};
-use crate::render::Picture;
+use crate::render::{Picture, Theme};
 use crate::scene::{OutputSpec, Scene, describe};
 pub use data::{DataFile, RunData};
 pub use options::MovieOptions;
@@ -161,17 +161,17 @@ pub fn figure_bytes(picture: &Picture, formats: &Formats, scale: f32) -> Result<
 /// A figure scene drawn once, as a picture (the vector description every
 /// figure format is made from), with the runs it simulated. Movie and data
 /// scenes have no picture.
-pub fn figure_picture(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+pub fn figure_picture(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     match &scene.output {
         OutputSpec::Theory(spec) => {
             let input = theory::FigureInput::new(describe::title(scene), &scene.model, spec);
-            Ok((theory::picture(spec.figure, &input)?, vec![]))
+            Ok((theory::picture(theme, spec.figure, &input)?, vec![]))
         }
-        OutputSpec::Filmstrip { .. } => dynamic::filmstrip_figure(scene, None),
-        OutputSpec::Arrivals { .. } => arrivals::arrivals_figure(scene),
-        OutputSpec::Energy => energy::energy_figure(scene),
+        OutputSpec::Filmstrip { .. } => dynamic::filmstrip_figure(theme, scene, None),
+        OutputSpec::Arrivals { .. } => arrivals::arrivals_figure(theme, scene),
+        OutputSpec::Energy => energy::energy_figure(theme, scene),
         OutputSpec::Kymograph => {
-            let (picture, run) = kymograph::kymograph_figure(scene, KYMOGRAPH_ROWS)?;
+            let (picture, run) = kymograph::kymograph_figure(theme, scene, KYMOGRAPH_ROWS)?;
             Ok((picture, vec![run]))
         }
         OutputSpec::Movie { .. } | OutputSpec::Data | OutputSpec::Sweep(_) => {
@@ -231,8 +231,8 @@ pub fn render_to(
             )
         })?;
     }
-    style_of(scene, outputs)?
-        .apply(|| render_styled(asked, scene, movie, outputs, frame_done, sink))
+    let theme = Theme::of(&style_of(scene, outputs)?);
+    render_styled(&theme, asked, scene, movie, outputs, frame_done, sink)
 }
 
 /// The style a scene's figures are drawn in: the flags over its `[style]`.
@@ -270,8 +270,9 @@ pub fn check(scene: &Scene, movie: &MovieOptions, outputs: &Outputs) -> Result<(
     }
 }
 
-/// [`render_with`] with the scene's style in force.
+/// [`render_with`] drawn with `theme`, the theme of the scene's style.
 fn render_styled(
+    theme: &Theme,
     asked: &Scene,
     scene: &Scene,
     movie: &MovieOptions,
@@ -281,7 +282,7 @@ fn render_styled(
 ) -> Result<()> {
     if let OutputSpec::Sweep(_) = scene.output {
         // Its own data file: the sweep's JSON (crate::sweep::json).
-        return sweep_files(scene, outputs, sink);
+        return sweep_files(theme, scene, outputs, sink);
     }
     let (bytes, runs) = match &scene.output {
         OutputSpec::Theory(_)
@@ -289,7 +290,7 @@ fn render_styled(
         | OutputSpec::Arrivals { .. }
         | OutputSpec::Energy
         | OutputSpec::Kymograph => {
-            let (picture, runs) = figure_picture(scene)?;
+            let (picture, runs) = figure_picture(theme, scene)?;
             (
                 figure_bytes(&picture, &outputs.encoded_figures()?, outputs.scale)?,
                 runs,
@@ -297,6 +298,7 @@ fn render_styled(
         }
         OutputSpec::Movie { .. } => {
             let (movies, kymo, run) = dynamic::movie_at(
+                theme,
                 scene,
                 movie,
                 outputs.movies.as_slice(),
@@ -342,6 +344,7 @@ fn render_styled(
 /// PNG named the preview when the formats asked have none (and so listed
 /// in its JSON).
 fn sweep_files(
+    theme: &Theme,
     scene: &Scene,
     outputs: &Outputs,
     sink: &mut dyn FnMut(&str, Fill<'_>) -> Result<()>,
@@ -362,6 +365,7 @@ fn sweep_files(
         scale: outputs.scale,
         command_line: &outputs.command_line,
         rename: &rename,
+        theme: *theme,
     };
     crate::sweep::render_to(scene, &options, sink).map(drop)
 }

@@ -15,6 +15,7 @@ use super::outcome::Outcome;
 use super::{Plan, Record};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
+use crate::render::Theme;
 use crate::render::cells::{Cell, CellChart, ShadeBar, cell_chart};
 use crate::render::charts::{Axis, Chart, ChartSpec, Marker, Series, line_chart, rasterize_svg};
 use crate::render::style;
@@ -26,10 +27,10 @@ use serde::Serialize;
 /// Width of a sweep chart at the screen style, pixels.
 pub const WIDTH: u32 = 820;
 
-/// Width of a sweep chart in the style in force (the page's design width
-/// at a print style).
-fn width() -> u32 {
-    crate::render::Style::current().frame((WIDTH, 1)).0
+/// Width of a sweep chart at `theme`'s style (the page's design width at
+/// a print style).
+fn width(theme: &Theme) -> u32 {
+    theme.style.frame((WIDTH, 1)).0
 }
 
 /// Height of the front panel at the screen style, pixels: room for its
@@ -74,8 +75,8 @@ const FRONT_LEGEND_ROOM: u32 = 80;
 
 /// The least height of a panel whose y axis says `label`: room for the
 /// rotated label along the plot, and at least [`LEAST_PANEL`].
-fn least_for(label: &str) -> u32 {
-    let along = style::text_width(label, style::size::LABEL) + 24.0;
+fn least_for(theme: &Theme, label: &str) -> u32 {
+    let along = style::text_width(theme.font(), label, theme.label) + 24.0;
     (along.ceil() as u32).max(LEAST_PANEL)
 }
 
@@ -86,10 +87,10 @@ const SHARED_SAVES: u32 = 46;
 /// screen; at a print style scaled down together, if need be, so that the
 /// stack keeps the page budget ([`crate::render::Theme::max_height_pt`]),
 /// none below its `least`.
-fn fitted_heights(wanted: &[u32], least: &[u32]) -> Vec<u32> {
+fn fitted_heights(theme: &Theme, wanted: &[u32], least: &[u32]) -> Vec<u32> {
     // The page's height in the design pixels composed figures are laid
     // out in (a slide's twice its own, Style::fit_box).
-    let Some((_, page)) = crate::render::Style::current().fit_box() else {
+    let Some((_, page)) = theme.style.fit_box() else {
         return wanted.to_vec();
     };
     let budget = page.floor();
@@ -169,13 +170,13 @@ pub fn theory_points(plan: &Plan) -> Vec<TheoryPoint> {
 }
 
 /// The chart of a sweep, or `None` when it varies more than two
-/// parameters (the CSV and JSON hold the results).
-pub fn chart(plan: &Plan, records: &[Record]) -> Result<Option<Chart>> {
+/// parameters (the CSV and JSON hold the results), drawn with `theme`.
+pub fn chart(theme: &Theme, plan: &Plan, records: &[Record]) -> Result<Option<Chart>> {
     let varied = plan.varied();
     let title = describe::title(&plan.scene);
     match varied.len() {
-        0 | 1 => one_parameter(plan, records, &title).map(Some),
-        2 => phase(plan, records, &title).map(Some),
+        0 | 1 => one_parameter(theme, plan, records, &title).map(Some),
+        2 => phase(theme, plan, records, &title).map(Some),
         _ => Ok(None),
     }
 }
@@ -201,7 +202,7 @@ type BlockMark<'a> = (&'static str, Marker, &'a dyn Fn(&Record) -> Option<usize>
 /// A wave drawn as its own series: name, marker, which records.
 type Wave<'a> = (&'static str, Marker, Box<dyn Fn(&Record) -> bool + 'a>);
 
-fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
+fn one_parameter(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
     let (param, k, fold) = x_axis(plan);
     let x_of = |r: &Record| {
         let v = plan.points[r.run][k];
@@ -355,29 +356,30 @@ fn one_parameter(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> 
     let mut least: Vec<u32> = [front.y.label.as_str(), speed.y.label.as_str()]
         .into_iter()
         .chain(["gap ω₊(0) τ", "ΔU / mgs"])
-        .map(least_for)
+        .map(|l| least_for(theme, l))
         .collect();
     // The front panel's legend may go under its plot: room for its rows.
-    least[0] += if width() < 400 {
+    least[0] += if width(theme) < 400 {
         2 * FRONT_LEGEND_ROOM
     } else {
         FRONT_LEGEND_ROOM
     };
-    let h = fitted_heights(&wanted, &least);
+    let h = fitted_heights(theme, &wanted, &least);
     let mut panels = vec![
-        (line_chart(&front, width(), h[0])?, h[0]),
-        (line_chart(&speed, width(), h[1])?, h[1]),
+        (line_chart(theme, &front, width(theme), h[0])?, h[0]),
+        (line_chart(theme, &speed, width(theme), h[1])?, h[1]),
     ];
     if theory {
         panels.extend(theory_panel(
+            theme,
             plan,
             x_label,
             fold,
-            Some((width(), x_range)),
+            Some((width(theme), x_range)),
             (h[2], h[3]),
         )?);
     }
-    stack(&panels)
+    stack(theme, &panels)
 }
 
 /// The colour of wave kind `i` (0: kink, 1: antikink) in every panel.
@@ -403,6 +405,7 @@ fn driven_wave_met_at(r: &Record) -> Option<usize> {
 /// ω₊(0) and ΔU against α (or |α|), one panel each; `x_range` pins the
 /// axis.
 fn theory_panel(
+    theme: &Theme,
     plan: &Plan,
     x_label: &str,
     fold: bool,
@@ -429,7 +432,7 @@ fn theory_panel(
             xa = xa.range(lo, hi);
             w
         }
-        None => width(),
+        None => width(theme),
     };
     // Two quantities in two units: one panel each (never one axis for
     // both), each named by its y axis, so no legend covers the curves.
@@ -451,7 +454,7 @@ fn theory_panel(
         let mut spec =
             ChartSpec::new(x, Axis::new(label).range(0.0, 1.1 * top.max(1e-3))).series(series);
         spec.legend = crate::render::charts::Legend::Hidden;
-        line_chart(&spec, width, h).map(|c| (c, h))
+        line_chart(theme, &spec, width, h).map(|c| (c, h))
     };
     Ok(vec![
         panel("gap ω₊(0) τ", gap, palette::INK, false, true, gap_h)?,
@@ -462,7 +465,7 @@ fn theory_panel(
 /// Height of each linear-theory panel under a sweep chart, pixels.
 const THEORY_PANEL_HEIGHT: u32 = 170;
 
-fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
+fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
     let varied = plan.varied();
     // α across when it is one of the two.
     let (ix, iy) = if varied[1].1 == Param::Alpha {
@@ -552,12 +555,12 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
     };
     // The phase diagram keeps room for its colour bar's three ticks.
     let least = [
-        least_for(py.label()).max(2 * LEAST_PANEL),
-        least_for("gap ω₊(0) τ"),
-        least_for("ΔU / mgs"),
+        least_for(theme, py.label()).max(2 * LEAST_PANEL),
+        least_for(theme, "gap ω₊(0) τ"),
+        least_for(theme, "ΔU / mgs"),
     ];
-    let h = fitted_heights(&wanted, &least);
-    let main = cell_chart(&chart, width(), h[0])?;
+    let h = fitted_heights(theme, &wanted, &least);
+    let main = cell_chart(theme, &chart, width(theme), h[0])?;
     let mut panels = vec![(main, h[0])];
     if theory {
         let even = xs
@@ -565,20 +568,27 @@ fn phase(plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
             .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
         let range = if even && xs.len() > 1 {
             let h = 0.5 * (xs[1] - xs[0]);
-            Some((width() - 190, (xs[0] - h, xs[xs.len() - 1] + h)))
+            Some((width(theme) - 190, (xs[0] - h, xs[xs.len() - 1] + h)))
         } else {
             None
         };
-        panels.extend(theory_panel(plan, px.label(), false, range, (h[1], h[2]))?);
+        panels.extend(theory_panel(
+            theme,
+            plan,
+            px.label(),
+            false,
+            range,
+            (h[1], h[2]),
+        )?);
     }
-    stack(&panels)
+    stack(theme, &panels)
 }
 
 /// Panels stacked top to bottom into one SVG (nested `<svg>` elements),
 /// rasterised at their own size.
-fn stack(panels: &[(Chart, u32)]) -> Result<Chart> {
+fn stack(theme: &Theme, panels: &[(Chart, u32)]) -> Result<Chart> {
     let height: u32 = panels.iter().map(|(_, h)| *h).sum();
-    let width = width();
+    let width = width(theme);
     let mut svg = format!(
         "<svg width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\" \
          xmlns=\"http://www.w3.org/2000/svg\">\n<rect x=\"0\" y=\"0\" width=\"{width}\" \
@@ -593,8 +603,8 @@ fn stack(panels: &[(Chart, u32)]) -> Result<Chart> {
         y += h;
     }
     svg.push_str("</svg>\n");
-    let pixmap = rasterize_svg(&svg, width, height)?;
-    Ok(Chart::new(pixmap, svg))
+    let pixmap = rasterize_svg(theme.font(), &svg, width, height)?;
+    Ok(Chart::new(theme, pixmap, svg))
 }
 
 fn strip_prolog(svg: &str) -> &str {

@@ -200,7 +200,7 @@ pub fn write_outputs(
     output: &OutputOptions<'_>,
     sink: &mut dyn FnMut(&str, crate::output::data::Fill<'_>) -> Result<()>,
 ) -> Result<Vec<String>> {
-    let chart = chart::chart(plan, records)?;
+    let chart = chart::chart(&output.theme, plan, records)?;
     let mut names = Vec::new();
     let mut pictures = Vec::new();
     if let Some(c) = chart {
@@ -251,6 +251,8 @@ pub struct OutputOptions<'a> {
     pub command_line: &'a [String],
     /// What each file is called (the catalogue renames a preview PNG).
     pub rename: &'a dyn Fn(String) -> String,
+    /// The theme the chart is drawn with (its style's page, font and sizes).
+    pub theme: crate::render::Theme,
 }
 
 /// The plan of a sweep scene rendered as a figure ([`render_to`]), with

@@ -255,7 +255,7 @@ theory = false
             }
         })
         .collect();
-    chart::chart(&plan, &records)
+    chart::chart(&crate::common::screen(), &plan, &records)
         .unwrap()
         .expect("a phase diagram")
 }

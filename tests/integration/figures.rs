@@ -33,7 +33,7 @@ fn render(fig: TheoryFigure) -> jacobs_ladder::Result<Pixmap> {
         unreachable!()
     };
     let input = FigureInput::new(describe::title(&entry.scene), &entry.scene.model, spec);
-    render_with(fig, &input)
+    render_with(&crate::common::screen(), fig, &input)
 }
 
 #[test]

@@ -54,8 +54,8 @@ fn check_geometry(what: &str, g: &StripGeometry, n: usize) -> usize {
 fn filmstrips_of_2_to_400_blocks_keep_every_block_inside_and_readable() {
     for n in [2, 20, 40, 200, 400] {
         let s = strip_scene(n, "");
-        let (picture, _) = dynamic::filmstrip_figure(&s, None).unwrap();
-        let geometry = dynamic::filmstrip_geometry(&s, None).unwrap();
+        let (picture, _) = dynamic::filmstrip_figure(&crate::common::screen(), &s, None).unwrap();
+        let geometry = dynamic::filmstrip_geometry(&crate::common::screen(), &s, None).unwrap();
         assert_eq!(geometry.len(), 1);
         let g = &geometry[0];
         assert_eq!(g.size, picture.pixel_size(), "N = {n}");
@@ -96,8 +96,9 @@ model = { alpha = 50, n = 100 }
 ";
     let panels = scene::file::parse(text, "p.toml", "p").unwrap();
     for (what, scene) in [("two flips", &mut s), ("three panels", &mut panels.clone())] {
-        let (picture, _) = dynamic::filmstrip_figure(scene, None).unwrap();
-        let geometry = dynamic::filmstrip_geometry(scene, None).unwrap();
+        let (picture, _) =
+            dynamic::filmstrip_figure(&crate::common::screen(), scene, None).unwrap();
+        let geometry = dynamic::filmstrip_geometry(&crate::common::screen(), scene, None).unwrap();
         for g in &geometry {
             assert_eq!(g.size, picture.pixel_size(), "{what}");
             check_geometry(what, g, 30);
@@ -121,9 +122,10 @@ fn text_boxes(items: &[Item], t: Transform, out: &mut Vec<(String, [f32; 4])>) {
                 let mut p = [tiny_skia::Point::from_xy(at.0, at.1)];
                 t.map_points(&mut p);
                 let size = size * t.sx;
-                let width = style::text_width(text, size);
-                let (left, base) = style::text_origin((p[0].x, p[0].y), width, size, *align);
-                let top = base - style::ascent(size);
+                let font = crate::common::screen().font();
+                let width = style::text_width(font, text, size);
+                let (left, base) = style::text_origin(font, (p[0].x, p[0].y), width, size, *align);
+                let top = base - style::ascent(font, size);
                 out.push((text.clone(), [left, top, left + width, base + 0.25 * size]));
             }
             _ => {}
@@ -147,8 +149,8 @@ fn wall_marks_of_a_folded_ladder_stay_in_their_snapshot() {
     if let scene::OutputSpec::Filmstrip { times, .. } = &mut s.output {
         *times = vec![3000.0, 4500.0, 6000.0, 7500.0, 9000.0];
     }
-    let (picture, _) = dynamic::filmstrip_figure(&s, None).unwrap();
-    let g = &dynamic::filmstrip_geometry(&s, None).unwrap()[0];
+    let (picture, _) = dynamic::filmstrip_figure(&crate::common::screen(), &s, None).unwrap();
+    let g = &dynamic::filmstrip_geometry(&crate::common::screen(), &s, None).unwrap()[0];
     check_geometry("two flips, N = 40", g, 40);
     let marks: Vec<_> = texts(&picture)
         .into_iter()
@@ -179,8 +181,8 @@ fn wall_marks_of_a_folded_ladder_stay_in_their_snapshot() {
 fn catalogue_filmstrips_are_not_folded() {
     for id in ["1c", "3", "4a"] {
         let s = &catalog::find(Kind::Figure, id).unwrap().scene;
-        let (picture, _) = dynamic::filmstrip_figure(s, None).unwrap();
-        for (k, g) in dynamic::filmstrip_geometry(s, None)
+        let (picture, _) = dynamic::filmstrip_figure(&crate::common::screen(), s, None).unwrap();
+        for (k, g) in dynamic::filmstrip_geometry(&crate::common::screen(), s, None)
             .unwrap()
             .iter()
             .enumerate()
@@ -207,8 +209,8 @@ fn many_snapshots_of_a_long_ladder_fit_one_picture() {
     if let scene::OutputSpec::Filmstrip { times, .. } = &mut s.output {
         *times = scene::even_times(2000.0, scene::MAX_TIMES);
     }
-    let (picture, _) = dynamic::filmstrip_figure(&s, None).unwrap();
-    let g = &dynamic::filmstrip_geometry(&s, None).unwrap()[0];
+    let (picture, _) = dynamic::filmstrip_figure(&crate::common::screen(), &s, None).unwrap();
+    let g = &dynamic::filmstrip_geometry(&crate::common::screen(), &s, None).unwrap()[0];
     assert_eq!(g.snapshots.len(), scene::MAX_TIMES);
     assert_eq!(g.size, picture.pixel_size());
     check_geometry("64 snapshots, N = 300", g, 300);

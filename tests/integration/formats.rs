@@ -36,7 +36,7 @@ fn figures() -> &'static [(String, Picture)] {
             .iter()
             .filter(|e| !matches!(e.scene.output, scene::OutputSpec::Sweep(_)))
             .map(|e| {
-                let (p, _) = scenes::figure_picture(&e.scene)
+                let (p, _) = scenes::figure_picture(&crate::common::screen(), &e.scene)
                     .unwrap_or_else(|err| panic!("{}: {err}", e.id));
                 (e.scene.stem(), p)
             })
@@ -212,8 +212,14 @@ fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
         height: 240,
         fps: 12.0,
     };
-    let (movies, _, _) =
-        scenes::dynamic::movie(&scene, &opts, &[Format::Gif, Format::Mp4], &|| {}).unwrap();
+    let (movies, _, _) = scenes::dynamic::movie(
+        &crate::common::screen(),
+        &scene,
+        &opts,
+        &[Format::Gif, Format::Mp4],
+        &|| {},
+    )
+    .unwrap();
     let (gif, mp4) = (&movies[0].1, &movies[1].1);
     assert_eq!((movies[0].0, movies[1].0), (Format::Gif, Format::Mp4));
     dump("movie-4.mp4", mp4);
@@ -318,7 +324,7 @@ fn movie_layout_scales_with_the_frame() {
             height: h,
             fps: 10.0,
         };
-        scenes::dynamic::movie_frame(&scene, &opts, 6).unwrap()
+        scenes::dynamic::movie_frame(&crate::common::screen(), &scene, &opts, 6).unwrap()
     };
     let small = frame(640, 360);
     let big = frame(1920, 1080);
@@ -369,7 +375,7 @@ fn nothing_is_cut_from_320x240_to_3840x2160() {
             height: h,
             fps: 10.0,
         };
-        let f = scenes::dynamic::movie_frame(&scene, &opts, 3).unwrap();
+        let f = scenes::dynamic::movie_frame(&crate::common::screen(), &scene, &opts, 3).unwrap();
         let (w, h) = (f.width(), f.height());
         // The outermost rows and columns stay white: no text or ladder runs
         // off the frame.
@@ -438,7 +444,7 @@ fn movie_texts_and_panels_lie_inside_the_frame_at_every_size() {
             for title in [scene::describe::title(&e.scene), long.to_string()] {
                 let n = e.scene.model.n;
                 let t_end = e.scene.run.t_end;
-                let l = MovieLayout::new(w, h, n);
+                let l = MovieLayout::new(&crate::common::screen(), w, h, n);
                 let what = format!("movie {} at {w}x{h}", e.id);
                 let frame = Region {
                     x: 0.0,
@@ -456,6 +462,7 @@ fn movie_texts_and_panels_lie_inside_the_frame_at_every_size() {
                 assert!(x + hw <= w && y + hh <= h, "{what}: kymograph pixels");
                 // The snapshot's time label fits the ladder's width.
                 let time = jacobs_ladder::render::style::text_width(
+                    crate::common::screen().font(),
                     &time_label(t_end),
                     jacobs_ladder::render::style::size::LABEL,
                 );
@@ -605,7 +612,12 @@ fn labels_are_typeset_nowhere_a_code_name() {
         "super- and subscripts drawn as such: {scripts}"
     );
     for e in catalog::entries(scene::Kind::Movie).unwrap() {
-        let layout = jacobs_ladder::render::MovieLayout::new(640, 480, e.scene.model.n);
+        let layout = jacobs_ladder::render::MovieLayout::new(
+            &crate::common::screen(),
+            640,
+            480,
+            e.scene.model.n,
+        );
         let title = scene::describe::title(&e.scene);
         for l in layout.labels(&title, e.scene.run.t_end, e.scene.model.n) {
             let bad = code_names(&l.text.replace("_{n}", "ₙ"));

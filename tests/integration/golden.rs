@@ -8,15 +8,15 @@ use jacobs_ladder::render::compose::{self, filmstrip};
 use jacobs_ladder::render::snapshot::render_snapshot;
 use jacobs_ladder::render::style::{BLUE, DARK, GREEN, RED};
 use jacobs_ladder::render::{
-    Axis, ChartSpec, FilmstripOptions, Frame, Kymograph, Layout, Legend, Marker, Panel, Series,
-    Snapshot,
+    Axis, ChartSpec, FilmstripOptions, Frame, Kymograph, Layout, Legend, Marker, Panel, Picture,
+    Series, Snapshot,
 };
 
 fn ground(alpha: f64, title: &str) -> tiny_skia::Pixmap {
     let l = ladder(alpha);
     let q = l.ground_state();
     let snap = Snapshot::new(&l, &q).unwrap().with_title(title);
-    render_snapshot(&snap, 170, 420).unwrap()
+    render_snapshot(&crate::common::screen(), &snap, 170, 420).unwrap()
 }
 
 #[test]
@@ -41,7 +41,7 @@ fn snapshot_with_ghost_and_time() {
         .with_time(1234.0);
     check(
         "snapshot-ghost-time",
-        &render_snapshot(&snap, 170, 420).unwrap(),
+        &render_snapshot(&crate::common::screen(), &snap, 170, 420).unwrap(),
     );
 }
 
@@ -63,14 +63,17 @@ fn filmstrip_kink() {
         label: Some("(a1)".into()),
         ..Default::default()
     };
-    check("filmstrip-kink", &filmstrip(&l, &frames, &opts).unwrap());
+    check(
+        "filmstrip-kink",
+        &filmstrip(&crate::common::screen(), &l, &frames, &opts).unwrap(),
+    );
 }
 
 fn kymo() -> charts::Chart {
     let (times, values) = domain_wall(10, 400, 3000.0);
     let mut k = Kymograph::new(&times, &values, 10);
     k.title = Some("kink, α = 60°");
-    charts::kymograph(&k, 360, 300).unwrap()
+    charts::kymograph(&crate::common::screen(), &k, 360, 300).unwrap()
 }
 
 #[test]
@@ -103,7 +106,9 @@ fn line_chart_with_legend() {
     spec.series[2].points = spec.series[2].points.iter().step_by(10).copied().collect();
     check(
         "line-chart-legend",
-        &line_chart(&spec, 420, 300).unwrap().pixmap,
+        &line_chart(&crate::common::screen(), &spec, 420, 300)
+            .unwrap()
+            .pixmap,
     );
 }
 
@@ -130,7 +135,12 @@ fn loglog_chart() {
         DARK,
         Marker::Cross,
     ));
-    check("loglog-chart", &line_chart(&spec, 420, 300).unwrap().pixmap);
+    check(
+        "loglog-chart",
+        &line_chart(&crate::common::screen(), &spec, 420, 300)
+            .unwrap()
+            .pixmap,
+    );
 }
 
 #[test]
@@ -153,7 +163,9 @@ fn parametric_equal_aspect() {
     spec.legend = Legend::Auto;
     check(
         "parametric-equal-aspect",
-        &line_chart(&spec, 420, 300).unwrap().pixmap,
+        &line_chart(&crate::common::screen(), &spec, 420, 300)
+            .unwrap()
+            .pixmap,
     );
 }
 
@@ -162,16 +174,37 @@ fn composed_panels() {
     let l = ladder(75.0);
     let lm = ladder(-75.0);
     let (qp, qm) = (l.ground_state(), lm.ground_state());
-    let a = render_snapshot(&Snapshot::new(&l, &qp).unwrap(), 120, 300).unwrap();
-    let b = render_snapshot(&Snapshot::new(&lm, &qm).unwrap(), 120, 300).unwrap();
-    let c = line_chart(&wells(), 380, 300).unwrap().pixmap;
+    let a = render_snapshot(
+        &crate::common::screen(),
+        &Snapshot::new(&l, &qp).unwrap(),
+        120,
+        300,
+    )
+    .unwrap();
+    let b = render_snapshot(
+        &crate::common::screen(),
+        &Snapshot::new(&lm, &qm).unwrap(),
+        120,
+        300,
+    )
+    .unwrap();
+    let c = line_chart(&crate::common::screen(), &wells(), 380, 300)
+        .unwrap()
+        .pixmap;
     let panels = vec![
-        Panel::new(a).label("(a)").caption("α = +75°"),
-        Panel::new(b).label("(b)").caption("α = −75°"),
-        Panel::new(c).label("(c)"),
+        Panel::new(Picture::of_image(&crate::common::screen(), a))
+            .label("(a)")
+            .caption("α = +75°"),
+        Panel::new(Picture::of_image(&crate::common::screen(), b))
+            .label("(b)")
+            .caption("α = −75°"),
+        Panel::new(Picture::of_image(&crate::common::screen(), c)).label("(c)"),
     ];
-    let img =
-        compose::compose(&panels, &Layout::row(3).title("two ground states and U(θ)")).unwrap();
+    let img = compose::compose(
+        &panels,
+        &Layout::row(&crate::common::screen(), 3).title("two ground states and U(θ)"),
+    )
+    .unwrap();
     check("composed-panels", &img);
 }
 
@@ -186,10 +219,11 @@ fn styled_figure(id: &str, name: jacobs_ladder::render::StyleName, dpi: f32) -> 
         .unwrap()
         .scene
         .clone();
-    style.apply(|| {
-        let pic = jacobs_ladder::scenes::figure_picture(&scene).unwrap().0;
-        pic.rasterize(style.png_scale(pic.width())).unwrap()
-    })
+    let theme = jacobs_ladder::render::Theme::of(&style);
+    let pic = jacobs_ladder::scenes::figure_picture(&theme, &scene)
+        .unwrap()
+        .0;
+    pic.rasterize(style.png_scale(pic.width())).unwrap()
 }
 
 /// The barrier ΔU(α) at `--style paper` (3.375 in wide, 8 pt serif text),

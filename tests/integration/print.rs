@@ -5,7 +5,7 @@
 //! installed by .ci/run): fonts embedded, every label's words found, the
 //! page as wide as the style says, to the point.
 
-use jacobs_ladder::render::{Picture, Style, StyleName};
+use jacobs_ladder::render::{Picture, Style, StyleName, Theme};
 use jacobs_ladder::scene::{Kind, OutputSpec, Scene};
 use jacobs_ladder::{catalog, scenes, sweep};
 use std::path::Path;
@@ -18,7 +18,8 @@ fn picture(
     style: &Style,
     runs: &mut Option<(sweep::Plan, Vec<sweep::Record>)>,
 ) -> Picture {
-    style.apply(|| {
+    let theme = Theme::of(style);
+    {
         if let OutputSpec::Sweep(_) = scene.output {
             let (plan, records) = runs.get_or_insert_with(|| {
                 let plan = sweep::Plan::new(scene, jacobs_ladder::scene::sweep::DEFAULT_MAX_RUNS)
@@ -29,11 +30,11 @@ fn picture(
                 (plan, records)
             });
             // As `sweep::outputs` puts it on the style's page.
-            Picture::from(sweep::chart::chart(plan, records).unwrap().unwrap()).fit_page()
+            Picture::from(sweep::chart::chart(&theme, plan, records).unwrap().unwrap()).fit_page()
         } else {
-            scenes::figure_picture(scene).unwrap().0
+            scenes::figure_picture(&theme, scene).unwrap().0
         }
-    })
+    }
 }
 
 /// Figures (id, style) that still break a rule, each with what is left to
@@ -104,7 +105,9 @@ fn kymograph_time_label_clears_its_tick_labels() {
         }
     };
     let style = Style::default();
-    let pic = style.apply(|| scenes::figure_picture(&scene).unwrap().0);
+    let pic = scenes::figure_picture(&Theme::of(&style), &scene)
+        .unwrap()
+        .0;
     let boxes = pic.text_boxes();
     let label = boxes
         .iter()
@@ -598,7 +601,7 @@ fn folded_movies_number_their_columns() {
         height: 480,
         fps: 10.0,
     };
-    let numbers = dynamic::movie_column_numbers(&s, &opts).unwrap();
+    let numbers = dynamic::movie_column_numbers(&crate::common::screen(), &s, &opts).unwrap();
     assert!(numbers.len() >= 2, "a 150-block ladder folds: {numbers:?}");
     let firsts: Vec<usize> = numbers.iter().map(|(t, _)| t.parse().unwrap()).collect();
     assert_eq!(firsts[0], 1);
@@ -606,8 +609,8 @@ fn folded_movies_number_their_columns() {
     for w in firsts.windows(2) {
         assert_eq!(w[1] - w[0], stride, "{firsts:?}");
     }
-    let frame = dynamic::movie_frame(&s, &opts, 3).unwrap();
-    let (_, blocks) = dynamic::movie_block_pixels(&s, &opts).unwrap();
+    let frame = dynamic::movie_frame(&crate::common::screen(), &s, &opts, 3).unwrap();
+    let (_, blocks) = dynamic::movie_block_pixels(&crate::common::screen(), &s, &opts).unwrap();
     let top_block = blocks[3].iter().map(|p| p.1).fold(f32::MAX, f32::min);
     for (text, (x, y)) in &numbers {
         assert!(

@@ -27,7 +27,7 @@ fn sweep(l: &Ladder, frames: usize, w: u32, h: u32) -> Vec<Pixmap> {
                 .unwrap()
                 .with_view(view)
                 .with_time(10.0 * k as f64);
-            render_snapshot(&snap, w, h).unwrap()
+            render_snapshot(&crate::common::screen(), &snap, w, h).unwrap()
         })
         .collect()
 }
@@ -49,8 +49,8 @@ fn same_input_gives_identical_bytes() {
     let (t, v) = domain_wall(10, 50, 100.0);
     let k = Kymograph::new(&t, &v, 10);
     let (k1, k2) = (
-        charts::kymograph(&k, 300, 240).unwrap(),
-        charts::kymograph(&k, 300, 240).unwrap(),
+        charts::kymograph(&crate::common::screen(), &k, 300, 240).unwrap(),
+        charts::kymograph(&crate::common::screen(), &k, 300, 240).unwrap(),
     );
     assert_eq!(k1.svg, k2.svg);
     assert_eq!(
@@ -154,13 +154,19 @@ fn degenerate_legal_input_renders() {
             .unwrap()
             .with_time(0.25)
             .with_title("t");
-        let p = render_snapshot(&snap, 64, 64).unwrap();
+        let p = render_snapshot(&crate::common::screen(), &snap, 64, 64).unwrap();
         assert!(
             p.pixels().iter().any(|c| c.red() < 128),
             "N={n} α={alpha}: nothing drawn"
         );
         let frames = [Frame { time: 0.0, q: &g }, Frame { time: 1.0, q: &q }];
-        filmstrip(&l, &frames, &FilmstripOptions::default()).unwrap();
+        filmstrip(
+            &crate::common::screen(),
+            &l,
+            &frames,
+            &FilmstripOptions::default(),
+        )
+        .unwrap();
     }
     // Tiny frames, NaN states, degenerate windows: no panic.
     let l = ladder(60.0);
@@ -169,10 +175,14 @@ fn degenerate_legal_input_renders() {
     let snap = Snapshot::new(&l, &q)
         .unwrap()
         .with_view(View::window((1.0, 1.0), (0.0, 0.0)));
-    render_snapshot(&snap, 1, 1).unwrap();
+    render_snapshot(&crate::common::screen(), &snap, 1, 1).unwrap();
     let mut p = Pixmap::new(3, 3).unwrap();
-    render_snapshot_into(&mut p, &Snapshot::new(&l, &q).unwrap());
-    assert!(render_snapshot(&snap, 0, 10).is_err());
+    render_snapshot_into(
+        &crate::common::screen(),
+        &mut p,
+        &Snapshot::new(&l, &q).unwrap(),
+    );
+    assert!(render_snapshot(&crate::common::screen(), &snap, 0, 10).is_err());
     assert!(Snapshot::new(&l, &q[..6]).is_err());
 }
 
@@ -183,15 +193,15 @@ fn degenerate_charts_render() {
         vec![(1.0, 1.0)],
         RED,
     ));
-    line_chart(&one, 200, 150).unwrap();
+    line_chart(&crate::common::screen(), &one, 200, 150).unwrap();
     let empty = ChartSpec::new(Axis::new("x").log(), Axis::new("y").log());
-    line_chart(&empty, 200, 150).unwrap();
+    line_chart(&crate::common::screen(), &empty, 200, 150).unwrap();
     let bad = ChartSpec::new(Axis::new("x"), Axis::new("y").log()).series(Series::line(
         "z",
         vec![(0.0, 0.0), (1.0, f64::NAN), (2.0, -1.0), (3.0, 1e-3)],
         BLUE,
     ));
-    line_chart(&bad, 200, 150).unwrap();
+    line_chart(&crate::common::screen(), &bad, 200, 150).unwrap();
     let flat = ChartSpec::new(Axis::new("x"), Axis::new("y")).series(Series::line(
         "c",
         vec![(0.0, 2.0), (0.0, 2.0)],
@@ -199,15 +209,29 @@ fn degenerate_charts_render() {
     ));
     let mut flat = flat;
     flat.equal_aspect = true;
-    line_chart(&flat, 200, 150).unwrap();
+    line_chart(&crate::common::screen(), &flat, 200, 150).unwrap();
     let fixed = ChartSpec::new(Axis::new("x").range(1.0, 0.0), Axis::new("y"));
     assert!(matches!(
-        line_chart(&fixed, 200, 150),
+        line_chart(&crate::common::screen(), &fixed, 200, 150),
         Err(Error::BadInput(_))
     ));
     let (t, v) = (vec![5.0], vec![0.3, f64::NAN]);
-    charts::kymograph(&Kymograph::new(&t, &v, 2), 200, 150).unwrap();
-    assert!(charts::kymograph(&Kymograph::new(&t, &v, 3), 200, 150).is_err());
+    charts::kymograph(
+        &crate::common::screen(),
+        &Kymograph::new(&t, &v, 2),
+        200,
+        150,
+    )
+    .unwrap();
+    assert!(
+        charts::kymograph(
+            &crate::common::screen(),
+            &Kymograph::new(&t, &v, 3),
+            200,
+            150
+        )
+        .is_err()
+    );
 }
 
 fn one_line(e: &Error) -> String {
@@ -282,7 +306,7 @@ fn svg_text_extents(svg: &str) -> Vec<(f32, f32, String)> {
         let content = rest.split("</text>").next().unwrap().trim().to_string();
         let x: f32 = attr(tag, "x").unwrap().parse().unwrap();
         let size: f32 = attr(tag, "font-size").unwrap().parse().unwrap();
-        let w = style::text_width(&content, size);
+        let w = style::text_width(crate::common::screen().font(), &content, size);
         let left = match attr(tag, "text-anchor").as_deref() {
             Some("middle") => x - w / 2.0,
             Some("end") => x - w,
@@ -305,7 +329,7 @@ fn kymograph_title_fits_the_width() {
     let mut k = Kymograph::new(&t, &v, 10);
     k.title = Some(&title);
     for (w, h) in [(480, 360), (320, 240), (200, 150), (60, 60)] {
-        let chart = charts::kymograph(&k, w, h).unwrap();
+        let chart = charts::kymograph(&crate::common::screen(), &k, w, h).unwrap();
         // The title's lines are drawn first, above everything else.
         let texts = svg_text_extents(&chart.svg);
         let lines = (1..=3)

@@ -152,7 +152,8 @@ fn fitted_speed_of_evenly_spaced_arrivals() {
 #[test]
 fn golden_figure_3() {
     let scene = &catalog::find(Kind::Figure, "3").unwrap().scene;
-    let (image, _) = dynamic::filmstrip_figure(scene, Some((86, 200))).unwrap();
+    let (image, _) =
+        dynamic::filmstrip_figure(&crate::common::screen(), scene, Some((86, 200))).unwrap();
     check("figure-3-small", &image.to_pixmap().unwrap());
 }
 
@@ -160,8 +161,15 @@ fn golden_figure_3() {
 fn golden_kymograph_movie_7() {
     let s = movie_scene("7");
     let r = run::simulate(&s, &dynamic::frame_times(s.run.t_end, 60)).unwrap();
-    let image =
-        scenes::kymograph::kymograph_image("Movie 7", &r.trajectory, s.model.n, 320, 240).unwrap();
+    let image = scenes::kymograph::kymograph_image(
+        &crate::common::screen(),
+        "Movie 7",
+        &r.trajectory,
+        s.model.n,
+        320,
+        240,
+    )
+    .unwrap();
     check("kymograph-movie-7", &image);
 }
 
@@ -184,7 +192,8 @@ fn custom_movies_at_2_40_and_200_blocks_keep_every_block_in_the_frame() {
         assert_eq!(files[0].0, format!("movie-n{n}.gif"));
         let v: serde_json::Value = serde_json::from_slice(&files[2].1).unwrap();
         assert_eq!(v["runs"][0]["frames"].as_array().unwrap().len(), 20);
-        let (region, frames) = dynamic::movie_block_pixels(&s, &opts).unwrap();
+        let (region, frames) =
+            dynamic::movie_block_pixels(&crate::common::screen(), &s, &opts).unwrap();
         assert_eq!(frames.len(), 20);
         for px in frames {
             // A folded ladder draws the block shared by two columns twice.
@@ -214,7 +223,8 @@ fn movie_3_keeps_the_ladder_filling_the_window_to_the_end() {
         height: 240,
         fps: 10.0,
     };
-    let (region, frames) = dynamic::movie_block_pixels(&entry.scene, &opts).unwrap();
+    let (region, frames) =
+        dynamic::movie_block_pixels(&crate::common::screen(), &entry.scene, &opts).unwrap();
     // The window's bottom: above the snapshot's time band and margin.
     let margin = (0.03 * region.w.min(region.h)).clamp(2.0, 12.0);
     let bottom = region.y + region.h - margin - 1.5 * jacobs_ladder::render::style::size::LABEL;

@@ -9,6 +9,7 @@ use super::{
 };
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
+use crate::render::Theme;
 use crate::render::style::{self, DARK, size};
 use plotters::prelude::*;
 
@@ -71,8 +72,9 @@ pub fn polarisation_rows(states: &[&[f64]]) -> Vec<f64> {
 /// Width of the colour bar column in pixels.
 const COLORBAR_W: u32 = 96;
 
-/// Draws a kymograph with a colour bar as a `width × height` chart.
-pub fn kymograph(k: &Kymograph<'_>, width: u32, height: u32) -> Result<Chart> {
+/// Draws a kymograph with a colour bar as a `width × height` chart with
+/// the sizes and font of `theme`.
+pub fn kymograph(theme: &Theme, k: &Kymograph<'_>, width: u32, height: u32) -> Result<Chart> {
     check_size(width, height)?;
     k.check()?;
     style::register_plotters_font();
@@ -80,15 +82,15 @@ pub fn kymograph(k: &Kymograph<'_>, width: u32, height: u32) -> Result<Chart> {
     {
         let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
-        let root = titled(root, k.title, width)?;
+        let root = titled(theme, root, k.title, width)?;
         let (main, bar) = root.split_horizontally(width.saturating_sub(COLORBAR_W));
-        draw_heatmap(&main, k)?;
-        draw_colorbar(&bar, k.value_label)?;
+        draw_heatmap(theme, &main, k)?;
+        draw_colorbar(theme, &bar, k.value_label)?;
         root.present().map_err(plot_error)?;
     }
     // Adjacent cells must not show anti-aliasing seams.
     let svg = svg.replace("<rect ", "<rect shape-rendering=\"crispEdges\" ");
-    Chart::from_svg(&svg, width, height)
+    Chart::from_svg(theme, &svg, width, height)
 }
 
 /// Colour levels per sign in the heat map (runs of equal colour merge).
@@ -98,7 +100,7 @@ fn quantised(v: f64) -> Rgb {
     style::diverging((v.clamp(-1.0, 1.0) * LEVELS).round() / LEVELS)
 }
 
-fn draw_heatmap(area: &Area<'_>, k: &Kymograph<'_>) -> Result<()> {
+fn draw_heatmap(theme: &Theme, area: &Area<'_>, k: &Kymograph<'_>) -> Result<()> {
     let (t0, t1) = (k.times[0], k.times[k.times.len() - 1]);
     let t1 = if t1 > t0 { t1 } else { t0 + 1.0 };
     let n = k.n as f64;
@@ -106,7 +108,7 @@ fn draw_heatmap(area: &Area<'_>, k: &Kymograph<'_>) -> Result<()> {
         .margin(14)
         .margin_right(4)
         .x_label_area_size(X_LABEL_AREA)
-        .y_label_area_size(y_label_area(&end_labels(t0, t1, Scale::Linear)))
+        .y_label_area_size(y_label_area(theme, &end_labels(t0, t1, Scale::Linear)))
         .build_cartesian_2d(0.5..n + 0.5, -t1..-t0)
         .map_err(plot_error)?;
     let rows = chart.plotting_area().get_pixel_range().1.len().max(1);
@@ -129,7 +131,7 @@ fn draw_heatmap(area: &Area<'_>, k: &Kymograph<'_>) -> Result<()> {
         .y_labels(8)
         .x_label_formatter(&xf)
         .y_label_formatter(&yf);
-    dark_axes(&mut mesh).draw().map_err(plot_error)
+    dark_axes(theme, &mut mesh).draw().map_err(plot_error)
 }
 
 /// Rectangles of the heat map: at most `rows` time bins (nearest sample per
@@ -164,16 +166,19 @@ fn heat_cells(k: &Kymograph<'_>, rows: usize, t_end: f64) -> Vec<Rectangle<(f64,
     cells
 }
 
-fn draw_colorbar(area: &Area<'_>, label: &str) -> Result<()> {
+fn draw_colorbar(theme: &Theme, area: &Area<'_>, label: &str) -> Result<()> {
     let mut chart = ChartBuilder::on(area)
         .margin(14)
         .margin_left(8)
         .margin_right(4)
-        .caption(label, font(size::LABEL).into_font().color(&rgb(DARK)))
+        .caption(
+            label,
+            font(theme, size::LABEL).into_font().color(&rgb(DARK)),
+        )
         // Room under the caption for the upper half of the top tick label.
         .set_label_area_size(
             plotters::chart::LabelAreaPosition::Top,
-            (0.7 * super::tick_px()).ceil() as u32,
+            (0.7 * theme.tick).ceil() as u32,
         )
         .x_label_area_size(X_LABEL_AREA)
         .right_y_label_area_size(48)
@@ -198,7 +203,7 @@ fn draw_colorbar(area: &Area<'_>, label: &str) -> Result<()> {
         .disable_x_axis()
         .y_labels(5)
         .y_label_formatter(&yf)
-        .label_style(font(super::tick_px()).into_font().color(&rgb(DARK)))
+        .label_style(font(theme, theme.tick).into_font().color(&rgb(DARK)))
         .axis_style(rgb(DARK).stroke_width(1))
         .draw()
         .map_err(plot_error)

@@ -5,6 +5,7 @@ use super::glyph::{Glyph, LEGEND_LINE};
 use super::ranges::runs;
 use super::{Area, ChartSpec, Ctx, Legend, LineStyle, font, plot_error, rgb};
 use crate::error::Result;
+use crate::render::Theme;
 use crate::render::style::{self, DARK};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -14,6 +15,7 @@ pub(super) fn has_labels(spec: &ChartSpec) -> bool {
 }
 
 pub(super) fn draw_legend<'a, 'b: 'a, X, Y>(
+    theme: &Theme,
     chart: &mut Ctx<'a, 'b, X, Y>,
     spec: &ChartSpec,
     legend: Legend,
@@ -47,7 +49,7 @@ where
         .position(pos)
         .margin(8)
         .legend_area_size(28)
-        .label_font(font(size_tick()).into_font().color(&rgb(DARK)))
+        .label_font(font(theme, theme.tick).into_font().color(&rgb(DARK)))
         .background_style(WHITE.mix(0.9))
         .border_style(rgb(DARK).mix(0.4))
         .draw()
@@ -57,17 +59,22 @@ where
 /// A legend right of the plot: one row per labelled series, glyph then
 /// text, starting at pixel `(x, y)` of the whole chart.
 pub(super) fn draw_outside_legend(
+    theme: &Theme,
     root: &Area<'_>,
     spec: &ChartSpec,
     (x, y): (i32, i32),
 ) -> Result<()> {
-    let row = (size_tick() * 1.55) as i32;
-    draw_entries(root, spec, |k| (x, y + row / 2 + k as i32 * row))
+    let row = (theme.tick * 1.55) as i32;
+    draw_entries(theme, root, spec, |k| (x, y + row / 2 + k as i32 * row))
 }
 
 /// The grid of a legend under the plot of a chart `width` pixels wide:
 /// (columns, rows, column width, row height, height of the band).
-pub(super) fn below_grid(spec: &ChartSpec, width: u32) -> (usize, usize, i32, i32, u32) {
+pub(super) fn below_grid(
+    theme: &Theme,
+    spec: &ChartSpec,
+    width: u32,
+) -> (usize, usize, i32, i32, u32) {
     let labels: Vec<&String> = spec
         .series
         .iter()
@@ -75,29 +82,29 @@ pub(super) fn below_grid(spec: &ChartSpec, width: u32) -> (usize, usize, i32, i3
         .collect();
     let text = labels
         .iter()
-        .map(|l| style::text_width(l, size_tick()))
+        .map(|l| style::text_width(theme.font(), l, theme.tick))
         .fold(0.0, f32::max);
     let col_w = (text + LEGEND_LINE as f32 + 6.0 + 14.0).ceil() as i32;
     let room = (width as i32 - 16).max(col_w);
     let cols = ((room / col_w.max(1)) as usize).clamp(1, labels.len().max(1));
     let rows = labels.len().div_ceil(cols);
-    let row = (size_tick() * 1.45).ceil() as i32;
+    let row = (theme.tick * 1.45).ceil() as i32;
     (cols, rows, col_w, row, (rows as i32 * row + 6) as u32)
-}
-
-/// Tick and legend text of the theme in force.
-fn size_tick() -> f32 {
-    crate::render::Theme::current().tick
 }
 
 /// A legend under the plot: [`below_grid`]'s columns, filled row by row,
 /// the band's top at pixel `y` of a chart `width` wide.
-pub(super) fn draw_below_legend(root: &Area<'_>, spec: &ChartSpec, y: i32) -> Result<()> {
+pub(super) fn draw_below_legend(
+    theme: &Theme,
+    root: &Area<'_>,
+    spec: &ChartSpec,
+    y: i32,
+) -> Result<()> {
     let width = root.dim_in_pixel().0;
-    let (cols, _, col_w, row, _) = below_grid(spec, width);
+    let (cols, _, col_w, row, _) = below_grid(theme, spec, width);
     let used = cols as i32 * col_w;
     let x0 = ((width as i32 - used) / 2).max(4);
-    draw_entries(root, spec, |k| {
+    draw_entries(theme, root, spec, |k| {
         let (c, r) = ((k % cols) as i32, (k / cols) as i32);
         (x0 + c * col_w, y + row / 2 + r * row)
     })
@@ -105,8 +112,13 @@ pub(super) fn draw_below_legend(root: &Area<'_>, spec: &ChartSpec, y: i32) -> Re
 
 /// Each labelled series of `spec` as a legend entry, glyph then text, the
 /// `k`-th centred vertically at pixel `at(k)` of the whole chart.
-fn draw_entries(root: &Area<'_>, spec: &ChartSpec, at: impl Fn(usize) -> (i32, i32)) -> Result<()> {
-    let text_style = font(size_tick())
+fn draw_entries(
+    theme: &Theme,
+    root: &Area<'_>,
+    spec: &ChartSpec,
+    at: impl Fn(usize) -> (i32, i32),
+) -> Result<()> {
+    let text_style = font(theme, theme.tick)
         .into_font()
         .color(&rgb(DARK))
         .pos(Pos::new(HPos::Left, VPos::Center));
@@ -152,13 +164,17 @@ fn label_position(legend: Legend) -> Option<SeriesLabelPosition> {
 /// The first inside placement whose legend box covers no sampled data
 /// pixel (upper right, upper left, lower right, lower left, upper middle,
 /// lower middle), else `Outside`.
-pub(super) fn auto_legend<X, Y>(chart: &Ctx<'_, '_, X, Y>, spec: &ChartSpec) -> Legend
+pub(super) fn auto_legend<X, Y>(
+    theme: &Theme,
+    chart: &Ctx<'_, '_, X, Y>,
+    spec: &ChartSpec,
+) -> Legend
 where
     X: Ranged<ValueType = f64>,
     Y: Ranged<ValueType = f64>,
 {
     let (px, py) = chart.plotting_area().get_pixel_range();
-    let (bw, bh) = legend_box(spec);
+    let (bw, bh) = legend_box(theme, spec);
     let pts = sampled_pixels(chart, spec);
     let mid = (px.start + px.end - bw) / 2;
     let candidates = [
@@ -180,7 +196,7 @@ where
 }
 
 /// Estimated legend box in pixels (with its margin).
-pub(super) fn legend_box(spec: &ChartSpec) -> (i32, i32) {
+pub(super) fn legend_box(theme: &Theme, spec: &ChartSpec) -> (i32, i32) {
     let labels: Vec<&String> = spec
         .series
         .iter()
@@ -188,10 +204,10 @@ pub(super) fn legend_box(spec: &ChartSpec) -> (i32, i32) {
         .collect();
     let text = labels
         .iter()
-        .map(|l| style::text_width(l, size_tick()))
+        .map(|l| style::text_width(theme.font(), l, theme.tick))
         .fold(0.0, f32::max);
     let w = text + 28.0 + 34.0;
-    let h = labels.len() as f32 * (size_tick() * 1.55) + 24.0;
+    let h = labels.len() as f32 * (theme.tick * 1.55) + 24.0;
     (w as i32, h as i32)
 }
 

@@ -11,20 +11,22 @@ use super::ticks::tick_label;
 use super::title::{fit_title, titled};
 use super::{
     Area, Chart, ChartSpec, Ctx, Legend, LineStyle, Marker, Scale, Series, X_LABEL_AREA,
-    check_size, dark_axes, end_labels, font, plot_error, rgb, tick_px, y_label_area,
+    check_size, dark_axes, end_labels, font, plot_error, rgb, y_label_area,
 };
 use crate::error::Result;
+use crate::render::Theme;
 use crate::render::style::{self, DARK, GREY, size};
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
 use std::ops::Range;
 
-/// Draws `spec` as a `width × height` chart.
-pub fn line_chart(spec: &ChartSpec, width: u32, height: u32) -> Result<Chart> {
+/// Draws `spec` as a `width × height` chart with the sizes, font and
+/// habits of `theme` (the figure's, passed down by its builder).
+pub fn line_chart(theme: &Theme, spec: &ChartSpec, width: u32, height: u32) -> Result<Chart> {
     check_size(width, height)?;
     // Journal styles draw no title: the caption is the document's.
     let untitled;
-    let spec = if spec.title.is_some() && !crate::render::Theme::current().titles {
+    let spec = if spec.title.is_some() && !theme.titles {
         untitled = ChartSpec {
             title: None,
             ..spec.clone()
@@ -45,18 +47,18 @@ pub fn line_chart(spec: &ChartSpec, width: u32, height: u32) -> Result<Chart> {
     };
     let (mut xr, mut yr) = (x0.clone(), y0.clone());
     if spec.equal_aspect {
-        (xr, yr) = equalized(spec, pass, (width, height), x0.clone(), y0.clone())?;
+        (xr, yr) = equalized(theme, spec, pass, (width, height), x0.clone(), y0.clone())?;
     }
     if pass.legend == Legend::Auto {
-        pass.legend = probe(spec, pass, (width, height), xr.clone(), yr.clone())?.legend;
+        pass.legend = probe(theme, spec, pass, (width, height), xr.clone(), yr.clone())?.legend;
         // A column right of the plot that would take more than a third of
         // the chart goes under the plot instead, in columns: the plot keeps
         // its width, the text its size.
-        if pass.legend == Legend::Outside && legend_box(spec).0 as u32 + 8 > width / 3 {
+        if pass.legend == Legend::Outside && legend_box(theme, spec).0 as u32 + 8 > width / 3 {
             pass.legend = Legend::Below;
         }
         if pass.legend == Legend::Outside && spec.equal_aspect {
-            (xr, yr) = equalized(spec, pass, (width, height), x0, y0)?;
+            (xr, yr) = equalized(theme, spec, pass, (width, height), x0, y0)?;
         }
     }
     pass.probe = false;
@@ -64,28 +66,38 @@ pub fn line_chart(spec: &ChartSpec, width: u32, height: u32) -> Result<Chart> {
     {
         let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
-        draw_any(&root, spec, pass, xr, yr)?;
+        draw_any(theme, &root, spec, pass, xr, yr)?;
         root.present().map_err(plot_error)?;
     }
-    Chart::from_svg(&svg, width, height)
+    Chart::from_svg(theme, &svg, width, height)
 }
 
 /// Dispatches on the four combinations of linear and log axes.
 fn draw_any(
+    theme: &Theme,
     root: &Area<'_>,
     spec: &ChartSpec,
     pass: Pass,
     xr: Range<f64>,
     yr: Range<f64>,
 ) -> Result<Probe> {
-    let y_area = y_label_area(&end_labels(yr.start, yr.end, spec.y.scale));
+    let y_area = y_label_area(theme, &end_labels(yr.start, yr.end, spec.y.scale));
     match (spec.x.scale, spec.y.scale) {
-        (Scale::Linear, Scale::Linear) => draw_xy(root, spec, pass, (xr, yr), y_area),
-        (Scale::Linear, Scale::Log) => draw_xy(root, spec, pass, (xr, yr.log_scale()), y_area),
-        (Scale::Log, Scale::Linear) => draw_xy(root, spec, pass, (xr.log_scale(), yr), y_area),
-        (Scale::Log, Scale::Log) => {
-            draw_xy(root, spec, pass, (xr.log_scale(), yr.log_scale()), y_area)
+        (Scale::Linear, Scale::Linear) => draw_xy(theme, root, spec, pass, (xr, yr), y_area),
+        (Scale::Linear, Scale::Log) => {
+            draw_xy(theme, root, spec, pass, (xr, yr.log_scale()), y_area)
         }
+        (Scale::Log, Scale::Linear) => {
+            draw_xy(theme, root, spec, pass, (xr.log_scale(), yr), y_area)
+        }
+        (Scale::Log, Scale::Log) => draw_xy(
+            theme,
+            root,
+            spec,
+            pass,
+            (xr.log_scale(), yr.log_scale()),
+            y_area,
+        ),
     }
 }
 
@@ -106,6 +118,7 @@ struct Probe {
 
 /// Lays the chart out on a scratch SVG.
 fn probe(
+    theme: &Theme,
     spec: &ChartSpec,
     pass: Pass,
     (w, h): (u32, u32),
@@ -115,6 +128,7 @@ fn probe(
     let mut scratch = String::new();
     let root = SVGBackend::with_string(&mut scratch, (w, h)).into_drawing_area();
     draw_any(
+        theme,
         &root,
         spec,
         Pass {
@@ -128,13 +142,14 @@ fn probe(
 
 /// Ranges grown to equal scales for the plotting area of this layout.
 fn equalized(
+    theme: &Theme,
     spec: &ChartSpec,
     pass: Pass,
     size: (u32, u32),
     xr: Range<f64>,
     yr: Range<f64>,
 ) -> Result<(Range<f64>, Range<f64>)> {
-    let (px, py) = probe(spec, pass, size, xr.clone(), yr.clone())?.plot;
+    let (px, py) = probe(theme, spec, pass, size, xr.clone(), yr.clone())?.plot;
     let (pw, ph) = (
         (px.end - px.start).max(1) as f64,
         (py.end - py.start).max(1) as f64,
@@ -143,6 +158,7 @@ fn equalized(
 }
 
 fn draw_xy<XS, YS>(
+    theme: &Theme,
     root: &Area<'_>,
     spec: &ChartSpec,
     pass: Pass,
@@ -155,9 +171,10 @@ where
     XS::CoordDescType: ValueFormatter<f64>,
     YS::CoordDescType: ValueFormatter<f64>,
 {
-    let below = (pass.legend == Legend::Below).then(|| below_grid(spec, root.dim_in_pixel().0).4);
+    let below =
+        (pass.legend == Legend::Below).then(|| below_grid(theme, spec, root.dim_in_pixel().0).4);
     let area = if pass.legend == Legend::Outside {
-        root.margin(0, 0, 0, legend_box(spec).0 as u32 + 8)
+        root.margin(0, 0, 0, legend_box(theme, spec).0 as u32 + 8)
     } else if let Some(band) = below {
         root.margin(0, band, 0, 0)
     } else {
@@ -167,12 +184,13 @@ where
     // wrapped and shrunk to the chart's width (`fit_title`), never cut.
     let width = area.dim_in_pixel().0;
     let one_line = spec.title.as_deref().is_none_or(|t| {
-        fit_title(t, width).lines.len() == 1 && fit_title(t, width).size == size::TITLE
+        fit_title(theme, t, width).lines.len() == 1
+            && fit_title(theme, t, width).size == size::TITLE
     });
     let area = if one_line {
         area
     } else {
-        titled(area, spec.title.as_deref(), width)?
+        titled(theme, area, spec.title.as_deref(), width)?
     };
     let mut builder = ChartBuilder::on(&area);
     // A shared x axis is labelled by the panel below: no room for numbers.
@@ -182,18 +200,18 @@ where
         .x_label_area_size(x_area)
         .y_label_area_size(y_area);
     if let Some(t) = spec.title.as_ref().filter(|_| one_line) {
-        builder.caption(t, font(size::TITLE).into_font().color(&rgb(DARK)));
+        builder.caption(t, font(theme, size::TITLE).into_font().color(&rgb(DARK)));
     }
     let mut chart = builder.build_cartesian_2d(xs, ys).map_err(plot_error)?;
     let plot = chart.plotting_area().get_pixel_range();
     if pass.probe {
         let legend = match pass.legend {
-            Legend::Auto => auto_legend(&chart, spec),
+            Legend::Auto => auto_legend(theme, &chart, spec),
             other => other,
         };
         return Ok(Probe { plot, legend });
     }
-    draw_mesh(&mut chart, spec)?;
+    draw_mesh(theme, &mut chart, spec)?;
     if spec.zero_lines {
         draw_zero_lines(&mut chart)?;
     }
@@ -201,12 +219,12 @@ where
         draw_series(&mut chart, s, spec)?;
     }
     if pass.legend == Legend::Outside {
-        draw_outside_legend(root, spec, (plot.0.end + 12, plot.1.start))?;
+        draw_outside_legend(theme, root, spec, (plot.0.end + 12, plot.1.start))?;
     } else if let Some(band) = below {
         let top = root.dim_in_pixel().1 as i32 - band as i32;
-        draw_below_legend(root, spec, top)?;
+        draw_below_legend(theme, root, spec, top)?;
     } else {
-        draw_legend(&mut chart, spec, pass.legend)?;
+        draw_legend(theme, &mut chart, spec, pass.legend)?;
     }
     Ok(Probe {
         plot,
@@ -214,7 +232,7 @@ where
     })
 }
 
-fn draw_mesh<X, Y>(chart: &mut Ctx<'_, '_, X, Y>, spec: &ChartSpec) -> Result<()>
+fn draw_mesh<X, Y>(theme: &Theme, chart: &mut Ctx<'_, '_, X, Y>, spec: &ChartSpec) -> Result<()>
 where
     X: Ranged<ValueType = f64> + ValueFormatter<f64>,
     Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
@@ -238,10 +256,10 @@ where
     let xr = chart.x_range();
     let widest = end_labels(xr.start, xr.end, xscale)
         .iter()
-        .map(|t| style::text_width(t, tick_px()))
+        .map(|t| style::text_width(theme.font(), t, theme.tick))
         .fold(0.0f32, f32::max);
     // (Print styles only: the screen keeps its seven, and its goldens.)
-    let x_count = if crate::render::Style::current().is_print() {
+    let x_count = if theme.is_print() {
         ((plot_w / (widest + 14.0)).floor() as usize).clamp(2, 7)
     } else {
         7
@@ -252,8 +270,8 @@ where
         let (_, py) = chart.plotting_area().get_pixel_range();
         (py.end - py.start) as f32
     };
-    let y_count = if crate::render::Style::current().is_print() {
-        ((plot_h / (2.2 * tick_px())).floor() as usize).clamp(2, 7)
+    let y_count = if theme.is_print() {
+        ((plot_h / (2.2 * theme.tick)).floor() as usize).clamp(2, 7)
     } else {
         7
     };
@@ -266,10 +284,10 @@ where
         .y_labels(y_count);
     // At a print style the minor grid is one faint line between major
     // ones (a full minor mesh prints as a grey fog at column width).
-    if crate::render::Style::current().is_print() {
+    if theme.is_print() {
         mesh.max_light_lines(1);
     }
-    dark_axes(&mut mesh)
+    dark_axes(theme, &mut mesh)
         .bold_line_style(rgb(DARK).mix(0.12))
         .light_line_style(rgb(DARK).mix(0.05))
         .draw()

@@ -41,8 +41,8 @@ pub(super) fn plot_error<E: std::fmt::Debug>(e: E) -> Error {
 
 /// Plotters font size that gives a CSS em size of `px` in the SVG (plotters
 /// writes its size divided by 1.24).
-pub(super) fn font(px: f32) -> (&'static str, f64) {
-    (super::style::family(), f64::from(px) * 1.24)
+pub(super) fn font(theme: &crate::render::Theme, px: f32) -> (&'static str, f64) {
+    (super::style::family_of(theme.font()), f64::from(px) * 1.24)
 }
 
 pub(super) fn rgb(c: Rgb) -> RGBColor {
@@ -52,6 +52,7 @@ pub(super) fn rgb(c: Rgb) -> RGBColor {
 /// The axes' look every chart shares: dark tick labels, axis labels and
 /// axis lines.
 pub(super) fn dark_axes<'m, 'a, 'b, X, Y, DB>(
+    theme: &crate::render::Theme,
     mesh: &'m mut plotters::chart::MeshStyle<'a, 'b, X, Y, DB>,
 ) -> &'m mut plotters::chart::MeshStyle<'a, 'b, X, Y, DB>
 where
@@ -60,8 +61,8 @@ where
     DB: DrawingBackend,
 {
     use super::style::{DARK, size};
-    mesh.label_style(font(tick_px()).into_font().color(&rgb(DARK)))
-        .axis_desc_style(font(size::LABEL).into_font().color(&rgb(DARK)))
+    mesh.label_style(font(theme, theme.tick).into_font().color(&rgb(DARK)))
+        .axis_desc_style(font(theme, size::LABEL).into_font().color(&rgb(DARK)))
         .axis_style(rgb(DARK).stroke_width(1))
 }
 
@@ -84,11 +85,11 @@ const X_LABEL_AREA: u32 = 50;
 /// axis label beside them with a gap: at least [`Y_LABEL_AREA`]. Placing
 /// the axis label from the measured tick labels keeps "t/τ" clear of
 /// "15000" (plotters puts the label at the area's outer edge).
-pub(super) fn y_label_area(ticks: &[String]) -> u32 {
+pub(super) fn y_label_area(theme: &crate::render::Theme, ticks: &[String]) -> u32 {
     use super::style::{self, size};
     let widest = ticks
         .iter()
-        .map(|t| style::text_width(t, tick_px()))
+        .map(|t| style::text_width(theme.font(), t, theme.tick))
         .fold(0.0f32, f32::max);
     // Tick mark and its gap (10 px), the label's line (1.3 em), a gap.
     let need = widest + 10.0 + 1.3 * size::LABEL + 6.0;
@@ -115,9 +116,3 @@ pub(super) fn end_labels(lo: f64, hi: f64, scale: Scale) -> Vec<String> {
 }
 
 type Ctx<'a, 'b, X, Y> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, Y>>;
-
-/// Tick labels and legends: the size the theme in force gives them (the
-/// style's text size at a print style).
-pub fn tick_px() -> f32 {
-    crate::render::Theme::current().tick
-}

@@ -3,7 +3,9 @@
 
 use super::svg_text::typeset_svg_text;
 use crate::error::{Error, Result};
+use crate::render::page_style::FontChoice;
 use crate::render::style;
+use crate::render::theme::Theme;
 use std::sync::OnceLock;
 use tiny_skia::Pixmap;
 
@@ -11,36 +13,42 @@ use tiny_skia::Pixmap;
 pub struct Chart {
     pub pixmap: Pixmap,
     pub svg: String,
+    /// The theme it was drawn with (its font parses the SVG).
+    pub theme: Theme,
     /// The SVG parsed with the bundled font (for drawing at other scales).
     tree: OnceLock<Option<resvg::usvg::Tree>>,
 }
 
 impl Chart {
     /// A chart already rasterised (`pixmap`) from its `svg`.
-    pub fn new(pixmap: Pixmap, svg: String) -> Chart {
+    pub fn new(theme: &Theme, pixmap: Pixmap, svg: String) -> Chart {
         Chart {
             pixmap,
             svg,
+            theme: *theme,
             tree: OnceLock::new(),
         }
     }
 
     /// A chart from its SVG (text markup of [`style::runs`] typeset),
     /// rasterised at `width × height` onto white.
-    pub fn from_svg(svg: &str, width: u32, height: u32) -> Result<Chart> {
-        let svg = typeset_svg_text(svg);
-        let tree = parse_svg(&svg)?;
+    pub fn from_svg(theme: &Theme, svg: &str, width: u32, height: u32) -> Result<Chart> {
+        let svg = typeset_svg_text(theme, svg);
+        let tree = parse_svg(theme.font(), &svg)?;
         let pixmap = rasterize_tree(&tree, width, height)?;
         Ok(Chart {
             pixmap,
             svg,
+            theme: *theme,
             tree: OnceLock::from(Some(tree)),
         })
     }
 
     /// The parsed SVG (`None` only if it cannot be parsed).
     pub fn tree(&self) -> Option<&resvg::usvg::Tree> {
-        self.tree.get_or_init(|| parse_svg(&self.svg).ok()).as_ref()
+        self.tree
+            .get_or_init(|| parse_svg(self.theme.font(), &self.svg).ok())
+            .as_ref()
     }
 }
 
@@ -54,8 +62,8 @@ impl std::fmt::Debug for Chart {
     }
 }
 
-pub(super) fn parse_svg(svg: &str) -> Result<resvg::usvg::Tree> {
-    resvg::usvg::Tree::from_str(svg, &style::usvg_options())
+pub(super) fn parse_svg(font: FontChoice, svg: &str) -> Result<resvg::usvg::Tree> {
+    resvg::usvg::Tree::from_str(svg, &style::usvg_options(font))
         .map_err(|e| Error::failed(format!("internal SVG could not be parsed: {e}")))
 }
 
@@ -70,8 +78,8 @@ pub fn rasterize_tree(tree: &resvg::usvg::Tree, width: u32, height: u32) -> Resu
     Ok(pixmap)
 }
 
-/// Rasterises an SVG string with the bundled font onto a white
+/// Rasterises an SVG string with the bundled `font` onto a white
 /// `width × height` pixmap (the SVG is scaled to fit).
-pub fn rasterize_svg(svg: &str, width: u32, height: u32) -> Result<Pixmap> {
-    rasterize_tree(&parse_svg(svg)?, width, height)
+pub fn rasterize_svg(font: FontChoice, svg: &str, width: u32, height: u32) -> Result<Pixmap> {
+    rasterize_tree(&parse_svg(font, svg)?, width, height)
 }

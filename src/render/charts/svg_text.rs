@@ -1,12 +1,15 @@
 //! Typesetting of text markup (`^{...}`, `_{...}`) inside plotters' SVG.
 
+use crate::render::Theme;
 use crate::render::style;
 
 /// Rewrites the content of each `<text>` element of plotters' SVG that
 /// holds markup (`^{...}`, `_{...}`) into `<tspan>`s with a smaller size
-/// and a shifted baseline, sized from the element's `font-size`.
-pub fn typeset_svg_text(svg: &str) -> String {
-    if !svg.contains("^{") && !svg.contains("_{") && style::scripts_as_markup(svg) == svg {
+/// and a shifted baseline, sized from the element's `font-size` (the
+/// theme's tick size where it has none), in the theme's font.
+pub fn typeset_svg_text(theme: &Theme, svg: &str) -> String {
+    let font = theme.font();
+    if !svg.contains("^{") && !svg.contains("_{") && style::scripts_as_markup(font, svg) == svg {
         return svg.to_string();
     }
     let mut out = String::with_capacity(svg.len() + 256);
@@ -21,9 +24,9 @@ pub fn typeset_svg_text(svg: &str) -> String {
         let tag = &rest[open..tag_end];
         let size = attribute(tag, "font-size")
             .and_then(|v| v.parse::<f32>().ok())
-            .unwrap_or(super::tick_px());
+            .unwrap_or(theme.tick);
         out.push_str(&rest[..tag_end]);
-        for (shift, run) in style::runs(&rest[tag_end..close]) {
+        for (shift, run) in style::runs(font, &rest[tag_end..close]) {
             match shift {
                 style::Shift::Base => out.push_str(&run),
                 _ => out.push_str(&format!(
@@ -55,7 +58,7 @@ mod tests {
     fn chart_text_markup_becomes_tspans() {
         let svg = "<svg><text x=\"1\" font-size=\"10\" fill=\"#000\">e^{−κ}, x_{n}\n</text>\
                    <text font-size=\"8\">plain</text></svg>";
-        let out = typeset_svg_text(svg);
+        let out = typeset_svg_text(&Theme::of(&Default::default()), svg);
         assert!(
             out.contains("e<tspan font-size=\"7.00\" baseline-shift=\"3.80\">−κ</tspan>, x<tspan"),
             "{out}"

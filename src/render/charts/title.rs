@@ -3,6 +3,8 @@
 
 use super::{Area, font, plot_error, rgb};
 use crate::error::Result;
+use crate::render::Theme;
+use crate::render::page_style::FontChoice;
 use crate::render::style::{self, DARK, size};
 use plotters::prelude::*;
 
@@ -12,11 +14,13 @@ const SIDE: f32 = 8.0;
 /// The smallest font size tried before a title is shrunk to fit as it is.
 const MIN_SIZE: f32 = 10.0;
 
-/// A title laid out for a width: its lines (top to bottom) and font size.
+/// A title laid out for a width: its lines (top to bottom), font size and
+/// font.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FittedTitle {
     pub lines: Vec<String>,
     pub size: f32,
+    pub font: FontChoice,
 }
 
 impl FittedTitle {
@@ -24,7 +28,7 @@ impl FittedTitle {
     pub fn width(&self) -> f32 {
         self.lines
             .iter()
-            .map(|l| style::text_width(l, self.size))
+            .map(|l| style::text_width(self.font, l, self.size))
             .fold(0.0, f32::max)
     }
 }
@@ -33,12 +37,14 @@ impl FittedTitle {
 /// [`size::TITLE`] if it fits, else on at most two lines at the largest
 /// size from `size::TITLE` down to 10 px that fits; a title too wide even
 /// then is split into two lines and shrunk until the wider one fits.
-pub fn fit_title(title: &str, width: u32) -> FittedTitle {
+pub fn fit_title(theme: &Theme, title: &str, width: u32) -> FittedTitle {
+    let font = theme.font();
     let room = (width as f32 - 2.0 * SIDE).max(1.0);
     let fits = |t: &FittedTitle| t.width() <= room;
     let one = FittedTitle {
         lines: vec![title.to_string()],
         size: size::TITLE,
+        font,
     };
     if fits(&one) {
         return one;
@@ -46,8 +52,9 @@ pub fn fit_title(title: &str, width: u32) -> FittedTitle {
     let mut size = size::TITLE;
     while size >= MIN_SIZE {
         let t = FittedTitle {
-            lines: style::wrap_text(title, room, size),
+            lines: style::wrap_text(font, title, room, size),
             size,
+            font,
         };
         if t.lines.len() <= 2 && fits(&t) {
             return t;
@@ -56,14 +63,15 @@ pub fn fit_title(title: &str, width: u32) -> FittedTitle {
     }
     // Two lines at the smallest size, as balanced as the words allow, then
     // shrunk until the wider one fits.
-    let mut wrap = 0.5 * style::text_width(title, MIN_SIZE);
+    let mut wrap = 0.5 * style::text_width(font, title, MIN_SIZE);
     let mut t = FittedTitle {
-        lines: style::wrap_text(title, wrap, MIN_SIZE),
+        lines: style::wrap_text(font, title, wrap, MIN_SIZE),
         size: MIN_SIZE,
+        font,
     };
     while t.lines.len() > 2 {
         wrap *= 1.05;
-        t.lines = style::wrap_text(title, wrap, MIN_SIZE);
+        t.lines = style::wrap_text(font, title, wrap, MIN_SIZE);
     }
     t.size *= room / t.width().max(1.0);
     // Text width is not exactly linear in size (hinting, rounding).
@@ -77,17 +85,18 @@ pub fn fit_title(title: &str, width: u32) -> FittedTitle {
 /// titles: journal styles leave them to the caption) drawn centred on top
 /// in [`fit_title`]'s lines for a chart `width` pixels wide.
 pub(in crate::render) fn titled<'a>(
+    theme: &Theme,
     root: Area<'a>,
     title: Option<&str>,
     width: u32,
 ) -> Result<Area<'a>> {
     let mut root = root;
-    let title = title.filter(|_| crate::render::Theme::current().titles);
+    let title = title.filter(|_| theme.titles);
     if let Some(t) = title {
-        let fitted = fit_title(t, width);
+        let fitted = fit_title(theme, t, width);
         for line in &fitted.lines {
             root = root
-                .titled(line, font(fitted.size).into_font().color(&rgb(DARK)))
+                .titled(line, font(theme, fitted.size).into_font().color(&rgb(DARK)))
                 .map_err(plot_error)?;
         }
     }
@@ -100,7 +109,7 @@ mod tests {
 
     #[test]
     fn a_short_title_keeps_its_size_and_line() {
-        let t = fit_title("kink, α = 60°", 360);
+        let t = fit_title(&Theme::of(&Default::default()), "kink, α = 60°", 360);
         assert_eq!(t.lines, vec!["kink, α = 60°".to_string()]);
         assert_eq!(t.size, size::TITLE);
     }
@@ -109,7 +118,7 @@ mod tests {
     fn a_long_title_fits_any_width() {
         let title = "Movie 3: the kink of movie 4 in the frame moving with it: sin θₙ";
         for width in [60, 100, 200, 320, 480, 640] {
-            let t = fit_title(title, width);
+            let t = fit_title(&Theme::of(&Default::default()), title, width);
             assert!(t.width() <= width as f32 - 2.0 * SIDE, "{width}: {t:?}");
             assert!(t.lines.len() <= 2, "{width}: {t:?}");
             assert_eq!(t.lines.join(" "), title, "{width}");

@@ -9,7 +9,8 @@ use crate::render::canvas::{Canvas, Pen};
 use crate::render::fold::{self, Fold};
 use crate::render::picture::Picture;
 use crate::render::snapshot::{self, Region, Snapshot, View};
-use crate::render::style::{self, DARK, HAlign, VAlign, size};
+use crate::render::style::{self, DARK, HAlign, VAlign};
+use crate::render::theme::Theme;
 use tiny_skia::Pixmap;
 
 /// One frame of a filmstrip: a time and the state at that time.
@@ -62,16 +63,9 @@ pub struct ChainMark {
 }
 
 /// Font size of a [`ChainMark`]'s label: 11 px, and at a print style at
-/// least the smallest print text (SPEC section 10).
-fn mark_text() -> f32 {
-    at_least_print_min(11.0)
-}
-
-/// `px` pixels, or more at a print style: the style's text size
-/// ([`crate::render::Theme::text_at_least`]), when the picture is printed at the
-/// style's own scale.
-pub fn at_least_print_min(px: f32) -> f32 {
-    crate::render::Theme::current().text_at_least(px)
+/// least the style's text size (SPEC section 10).
+fn mark_text(theme: &Theme) -> f32 {
+    theme.text_at_least(11.0)
 }
 /// Pixels from the chain to a mark's tip, of its triangle, and from the
 /// triangle to the label.
@@ -86,6 +80,7 @@ const MARK_SPACE: f32 = 2.0;
 /// or the chain's extent on the mark's side (`side_clear` true: the mark
 /// then stays beside its own column of a folded ladder).
 fn draw_mark(
+    theme: &Theme,
     canvas: &mut Picture,
     region: Region,
     ladder: &Ladder,
@@ -128,15 +123,16 @@ fn draw_mark(
     canvas.text(
         &mark.label,
         (base + dir * MARK_SPACE, y),
-        mark_text(),
+        mark_text(theme),
         mark.color,
         (align, VAlign::Middle),
     );
 }
 
 /// Pixels a mark reaches beyond the chain on its side.
-fn mark_room(mark: &ChainMark) -> f32 {
-    MARK_CLEAR + MARK_ARROW + MARK_SPACE + style::text_width(&mark.label, mark_text()) + 2.0
+fn mark_room(theme: &Theme, mark: &ChainMark) -> f32 {
+    let label = style::text_width(theme.font(), &mark.label, mark_text(theme));
+    MARK_CLEAR + MARK_ARROW + MARK_SPACE + label + 2.0
 }
 
 /// Widest a folded snapshot may be, in pixels; a longer ladder is drawn
@@ -185,8 +181,8 @@ fn two_lines(caption: &str, two: bool) -> String {
 const SNAPSHOT_GAP: u32 = 6;
 const FOLDED_SNAPSHOT_GAP: u32 = 24;
 /// Font size of the block numbers above the columns of a folded ladder.
-fn column_number() -> f32 {
-    at_least_print_min(10.0)
+fn column_number(theme: &Theme) -> f32 {
+    theme.text_at_least(10.0)
 }
 /// Pixels between a folded snapshot's frame and what it holds.
 const FOLDED_PAD: f32 = 4.0;
@@ -214,6 +210,8 @@ impl StripColumn {
 /// How a filmstrip draws each snapshot: the whole ladder in one frame, or
 /// folded into columns.
 struct StripPlan {
+    /// The figure's theme.
+    theme: Theme,
     /// Size of every snapshot's picture.
     size: (u32, u32),
     columns: Vec<StripColumn>,
@@ -240,11 +238,17 @@ fn margin_within(side: f32) -> f32 {
 }
 
 impl StripPlan {
-    fn new(ladder: &Ladder, frames: &[Frame<'_>], opts: &FilmstripOptions) -> Result<StripPlan> {
+    fn new(
+        theme: &Theme,
+        ladder: &Ladder,
+        frames: &[Frame<'_>],
+        opts: &FilmstripOptions,
+    ) -> Result<StripPlan> {
         let (w, h) = opts.frame_size.unwrap_or((110, 330));
         let states: Vec<&[f64]> = frames.iter().map(|f| f.q).collect();
         let view = opts.view.unwrap_or_else(|| View::fit(&states));
         let whole = StripPlan {
+            theme: *theme,
             size: (w, h),
             columns: vec![StripColumn {
                 start: 0,
@@ -270,14 +274,14 @@ impl StripPlan {
                 .iter()
                 .flatten()
                 .filter(|m| m.side == side)
-                .map(mark_room)
+                .map(|m| mark_room(theme, m))
                 .fold(0.0f32, f32::max)
                 .ceil()
         };
         let (left, right) = (room(HAlign::Left), room(HAlign::Right));
         let gap = fold::COLUMN_GAP.max(left + right);
         let (left, right) = (left + FOLDED_PAD, right + FOLDED_PAD);
-        let top = (FOLDED_PAD + 1.5 * column_number()).ceil();
+        let top = (FOLDED_PAD + 1.5 * column_number(theme)).ceil();
         let column_h = (h as f32 - top - FOLDED_PAD).max(1.0);
         // The ladder's window inside each column, after the margin.
         let height = (column_h - 2.0 * margin_within(column_h)) as f64;
@@ -313,14 +317,15 @@ impl StripPlan {
         let row = opts
             .fit
             .map_or(MAX_FOLDED_ROW, |(w, _)| w.min(MAX_FOLDED_ROW))
-            .saturating_sub(2 * size::MARGIN);
+            .saturating_sub(2 * theme.margin as u32);
         let fits = ((row + FOLDED_SNAPSHOT_GAP) / (width + FOLDED_SNAPSHOT_GAP)).max(1) as usize;
         // Many snapshots: rows wider than MAX_FOLDED_ROW rather than a
         // strip taller than a picture may be.
-        let row_h = h + (size::LABEL * 1.7) as u32 + FOLDED_SNAPSHOT_GAP;
+        let row_h = h + (theme.label * 1.7) as u32 + FOLDED_SNAPSHOT_GAP;
         let max_rows = (MAX_FOLDED_HEIGHT / row_h).max(1) as usize;
         let rows = frames.len().div_ceil(fits).min(max_rows);
         Ok(StripPlan {
+            theme: *theme,
             size: (width, h),
             columns,
             fold: Some(folded),
@@ -343,8 +348,9 @@ impl StripPlan {
         };
         let (w, h) = self.size;
         let (m, gap) = (FIT_MARGIN as f32, self.gap as f32);
+        let theme = self.theme;
         let title = if opts.title.is_some() || opts.label.is_some() {
-            crate::render::Theme::current().title_band()
+            theme.title_band()
         } else {
             0.0
         };
@@ -362,7 +368,7 @@ impl StripPlan {
                         .map(str::to_string)
                         .collect::<Vec<_>>()
                 })
-                .map(|l| style::text_width(&l, size::LABEL))
+                .map(|l| style::text_width(theme.font(), &l, theme.label))
                 .fold(0.0f32, f32::max)
         };
         let marked = opts.marks.iter().any(|m| !m.is_empty());
@@ -381,7 +387,7 @@ impl StripPlan {
                 continue;
             }
             let lines = if two { 2.0 } else { 1.0 };
-            let caption = (size::LABEL * (0.5 + 1.2 * lines)).floor();
+            let caption = (theme.label * (0.5 + 1.2 * lines)).floor();
             let tall = (box_h as f32 - 2.0 * m - title - (rows as f32 - 1.0) * gap) / rows as f32
                 - caption;
             let ch = (h as f32 * cw / w as f32).min(tall).floor();
@@ -406,30 +412,31 @@ impl StripPlan {
     /// The snapshot of `frame` with its `marks`.
     fn picture(&self, frame: &Frame<'_>, marks: &[ChainMark]) -> Result<Picture> {
         let (w, h) = self.size;
+        let theme = &self.theme;
         let Some(folded) = &self.fold else {
             let c = &self.columns[0];
             let snap = c.snapshot(frame.q)?;
-            let mut img = snapshot::snapshot_picture(&snap, w, h)?;
+            let mut img = snapshot::snapshot_picture(theme, &snap, w, h)?;
             for mark in marks {
-                draw_mark(&mut img, c.region, &c.ladder, &snap, mark, false);
+                draw_mark(theme, &mut img, c.region, &c.ladder, &snap, mark, false);
             }
             return Ok(img);
         };
-        let mut img = Picture::new(w as f32, h as f32);
+        let mut img = Picture::new(theme, w as f32, h as f32);
         let number = style::mix(style::GREY, DARK, 0.3);
         for c in &self.columns {
             snapshot::draw_snapshot_on(&mut img, c.region, &c.snapshot(frame.q)?);
             let at = (c.region.x + 0.5 * c.region.w, FOLDED_PAD);
             let first = format!("{}", c.start + 1);
             let top = (HAlign::Center, VAlign::Top);
-            img.text(&first, at, column_number(), number, top);
+            img.text(&first, at, column_number(theme), number, top);
         }
         for mark in marks {
             let (j, at) = folded.locate(mark.at);
             let c = &self.columns[j];
             let local = ChainMark { at, ..mark.clone() };
             let snap = c.snapshot(frame.q)?;
-            draw_mark(&mut img, c.region, &c.ladder, &snap, &local, true);
+            draw_mark(theme, &mut img, c.region, &c.ladder, &snap, &local, true);
         }
         // A light frame holds each snapshot's columns together.
         let (w, h) = (w as f32, h as f32);
@@ -465,13 +472,19 @@ impl StripPlan {
 }
 
 /// Snapshots side by side in time order (left to right), each captioned
-/// "t/τ = …", sharing one scale; rasterised at 100 %.
-pub fn filmstrip(ladder: &Ladder, frames: &[Frame<'_>], opts: &FilmstripOptions) -> Result<Pixmap> {
-    filmstrip_picture(ladder, frames, opts)?.to_pixmap()
+/// "t/τ = …", sharing one scale, drawn with `theme`; rasterised at 100 %.
+pub fn filmstrip(
+    theme: &Theme,
+    ladder: &Ladder,
+    frames: &[Frame<'_>],
+    opts: &FilmstripOptions,
+) -> Result<Pixmap> {
+    filmstrip_picture(theme, ladder, frames, opts)?.to_pixmap()
 }
 
 /// The plan, the captioned snapshots and the layout of a filmstrip.
 fn strip_panels(
+    theme: &Theme,
     ladder: &Ladder,
     frames: &[Frame<'_>],
     opts: &FilmstripOptions,
@@ -479,7 +492,7 @@ fn strip_panels(
     if frames.is_empty() {
         return Err(Error::bad_input("a filmstrip needs at least one frame"));
     }
-    let plan = StripPlan::new(ladder, frames, opts)?;
+    let plan = StripPlan::new(theme, ladder, frames, opts)?;
     let mut panels = Vec::with_capacity(frames.len());
     for (k, f) in frames.iter().enumerate() {
         let marks = opts.marks.get(k).map_or(&[][..], |m| m.as_slice());
@@ -491,7 +504,7 @@ fn strip_panels(
         let caption = two_lines(&text, plan.two_line);
         panels.push(Panel::new(img).caption(caption));
     }
-    let mut layout = Layout::columns(plan.per_row);
+    let mut layout = Layout::columns(theme, plan.per_row);
     layout.gap = plan.gap;
     if opts.fit.is_some() {
         layout.margin = FIT_MARGIN;
@@ -506,17 +519,19 @@ fn strip_panels(
 
 /// Snapshots side by side in time order (left to right), each captioned
 /// "t/τ = …", sharing one scale. With [`FilmstripOptions::min_block_pixels`]
-/// a long ladder is folded into columns in each snapshot.
+/// a long ladder is folded into columns in each snapshot. Drawn with
+/// `theme`, the figure's.
 pub fn filmstrip_picture(
+    theme: &Theme,
     ladder: &Ladder,
     frames: &[Frame<'_>],
     opts: &FilmstripOptions,
 ) -> Result<Picture> {
-    let (_, panels, layout) = strip_panels(ladder, frames, opts)?;
+    let (_, panels, layout) = strip_panels(theme, ladder, frames, opts)?;
     let mut strip = compose_picture(&panels, &layout)?;
     if let Some(l) = &opts.label {
         let at = (layout.margin as f32, layout.margin as f32);
-        let size = crate::render::Theme::current().panel_label;
+        let size = theme.panel_label;
         strip.text(l, at, size, DARK, (HAlign::Left, VAlign::Top));
     }
     Ok(strip)
@@ -550,11 +565,12 @@ impl StripGeometry {
 
 /// Where [`filmstrip_picture`] draws every block.
 pub fn filmstrip_geometry(
+    theme: &Theme,
     ladder: &Ladder,
     frames: &[Frame<'_>],
     opts: &FilmstripOptions,
 ) -> Result<StripGeometry> {
-    let (plan, panels, layout) = strip_panels(ladder, frames, opts)?;
+    let (plan, panels, layout) = strip_panels(theme, ladder, frames, opts)?;
     let grid = Grid::new(&panels, &layout)?;
     let mut out = StripGeometry {
         size: (grid.width, grid.height),

@@ -5,7 +5,8 @@ use crate::error::{Error, Result};
 use crate::render::canvas::Canvas;
 use crate::render::picture::Picture;
 use crate::render::snapshot::{self, Region, Snapshot};
-use crate::render::style::{DARK, HAlign, VAlign, size};
+use crate::render::style::{DARK, HAlign, VAlign};
+use crate::render::theme::Theme;
 use tiny_skia::{Pixmap, PixmapPaint, Transform};
 
 /// One picture of a composition with an optional label above it (drawn at
@@ -52,22 +53,26 @@ pub struct Layout {
     pub margin: u32,
     /// Gap between panels in pixels.
     pub gap: u32,
+    /// The figure's theme: the sizes of titles, labels and captions, the
+    /// font of the composed picture.
+    pub theme: Theme,
 }
 
 impl Layout {
-    /// `columns` panels per row, the default margin and gap, no title.
-    pub fn columns(columns: usize) -> Layout {
+    /// `columns` panels per row, the margin and gap of `theme`, no title.
+    pub fn columns(theme: &Theme, columns: usize) -> Layout {
         Layout {
             columns,
             title: None,
-            margin: size::MARGIN,
-            gap: size::GAP,
+            margin: theme.margin as u32,
+            gap: theme.gap as u32,
+            theme: *theme,
         }
     }
 
     /// One row holding every panel.
-    pub fn row(count: usize) -> Layout {
-        Layout::columns(count.max(1))
+    pub fn row(theme: &Theme, count: usize) -> Layout {
+        Layout::columns(theme, count.max(1))
     }
 
     /// Sets the title.
@@ -78,11 +83,11 @@ impl Layout {
 }
 
 /// Heights of the label band above and the caption band below each image.
-fn bands(panels: &[Panel]) -> (u32, u32) {
+fn bands(theme: &Theme, panels: &[Panel]) -> (u32, u32) {
     let label = panels.iter().any(|p| p.label.is_some());
     let caption = panels.iter().any(|p| p.caption.is_some());
     let l = if label {
-        (crate::render::Theme::current().panel_label * 1.5) as u32
+        (theme.panel_label * 1.5) as u32
     } else {
         0
     };
@@ -93,7 +98,7 @@ fn bands(panels: &[Panel]) -> (u32, u32) {
         .max()
         .unwrap_or(0);
     let c = if caption {
-        (size::LABEL * (0.5 + 1.2 * lines as f32)) as u32
+        (theme.label * (0.5 + 1.2 * lines as f32)) as u32
     } else {
         0
     };
@@ -130,11 +135,11 @@ impl Grid {
             col_w[k % cols] = col_w[k % cols].max(w);
             row_h[k / cols] = row_h[k / cols].max(h);
         }
-        let (label_h, caption_h) = bands(panels);
+        let (label_h, caption_h) = bands(&layout.theme, panels);
         let title_h = layout
             .title
             .as_ref()
-            .map_or(0, |_| crate::render::Theme::current().title_band() as u32);
+            .map_or(0, |_| layout.theme.title_band() as u32);
         let (m, g) = (layout.margin, layout.gap);
         let width = 2 * m + col_w.iter().sum::<u32>() + (cols as u32 - 1) * g;
         let cells_h: u32 = row_h.iter().map(|h| h + label_h + caption_h).sum();
@@ -185,20 +190,22 @@ impl Grid {
 pub fn compose_picture(panels: &[Panel], layout: &Layout) -> Result<Picture> {
     let grid = Grid::new(panels, layout)?;
     let (width, m) = (grid.width, layout.margin);
-    let mut out = Picture::new(width as f32, grid.height as f32);
+    let theme = &layout.theme;
+    let mut out = Picture::new(theme, width as f32, grid.height as f32);
     if let Some(t) = &layout.title {
         let at = (0.5 * width as f32, m as f32);
-        let size = crate::render::Theme::current().title;
+        let size = theme.title;
         out.text(t, at, size, DARK, (HAlign::Center, VAlign::Top));
     }
     for (k, p) in panels.iter().enumerate() {
         let at = grid.image_origin(k, p.image.pixel_size());
-        draw_panel(&mut out, p, at, grid.cells[k], grid.bands);
+        draw_panel(theme, &mut out, p, at, grid.cells[k], grid.bands);
     }
     Ok(out)
 }
 
 fn draw_panel(
+    theme: &Theme,
     out: &mut Picture,
     p: &Panel,
     (ix, iy): (u32, u32),
@@ -208,22 +215,16 @@ fn draw_panel(
     out.place(&p.image, (ix as f32, iy as f32));
     if let Some(l) = &p.label {
         let at = (x as f32 + 2.0, y as f32);
-        out.text(
-            l,
-            at,
-            crate::render::Theme::current().panel_label,
-            DARK,
-            (HAlign::Left, VAlign::Top),
-        );
+        out.text(l, at, theme.panel_label, DARK, (HAlign::Left, VAlign::Top));
     }
     if let Some(c) = &p.caption {
         // One text per line, each centred under the image.
         for (k, line) in c.lines().enumerate() {
             let at = (
                 x as f32 + 0.5 * cw as f32,
-                (y + lh + ih) as f32 + (0.3 + 1.2 * k as f32) * size::LABEL,
+                (y + lh + ih) as f32 + (0.3 + 1.2 * k as f32) * theme.label,
             );
-            out.text(line, at, size::LABEL, DARK, (HAlign::Center, VAlign::Top));
+            out.text(line, at, theme.label, DARK, (HAlign::Center, VAlign::Top));
         }
     }
 }
@@ -256,9 +257,9 @@ pub fn panel_origins(panels: &[Panel], layout: &Layout) -> Result<Placement> {
 }
 
 /// Draws several snapshots into one canvas region by region (no captions):
-/// the building block for custom layouts.
-pub fn draw_snapshots(canvas: &mut Pixmap, items: &[(Region, Snapshot<'_>)]) {
+/// the building block for custom layouts, their text in `theme`'s font.
+pub fn draw_snapshots(theme: &Theme, canvas: &mut Pixmap, items: &[(Region, Snapshot<'_>)]) {
     for (r, s) in items {
-        snapshot::draw_snapshot(canvas, *r, s);
+        snapshot::draw_snapshot(theme, canvas, *r, s);
     }
 }

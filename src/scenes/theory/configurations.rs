@@ -10,7 +10,7 @@ use crate::render::charts::line_chart;
 use crate::render::compose::Panel;
 use crate::render::snapshot::{Region, Snapshot, pixel_of};
 use crate::render::style::{self, DARK, size};
-use crate::render::{Axis, ChartSpec, Legend, Marker, Picture, Series};
+use crate::render::{Axis, ChartSpec, Legend, Marker, Picture, Series, Theme};
 use crate::theory::figures::{gapless_configuration, zero_mode_shape};
 use crate::theory::gravity;
 
@@ -18,14 +18,14 @@ use crate::theory::gravity;
 const LADDER_SIZE: (u32, u32) = (200, 560);
 
 /// Fig. 2d: the ground states of both signs, and the two overlaid.
-pub fn ground_states(input: &FigureInput) -> Result<Picture> {
+pub fn ground_states(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha.abs());
     let plus = Ladder::new(input.params(n, b, alpha)?);
     let minus = Ladder::new(input.params(n, b, -alpha)?);
     let (qp, qm) = (plus.ground_state(), minus.ground_state());
-    let size = super::cells(LADDER_SIZE, 3);
+    let size = super::cells(theme, LADDER_SIZE, 3);
     let with_arrows = |ladder: &Ladder, q: &[f64]| -> Result<Picture> {
-        let mut p = configuration(ladder, q, None, size)?;
+        let mut p = configuration(theme, ladder, q, None, size)?;
         orientation_arrows(&mut p, ladder, q)?;
         Ok(p)
     };
@@ -36,11 +36,11 @@ pub fn ground_states(input: &FigureInput) -> Result<Picture> {
         Panel::new(with_arrows(&minus, &qm)?)
             .label("(ii)")
             .caption(format!("α = {}", signed_deg(-alpha))),
-        Panel::new(configuration(&plus, &qp, Some(&qm), size)?)
+        Panel::new(configuration(theme, &plus, &qp, Some(&qm), size)?)
             .label("(iii)")
             .caption("(i) over (ii) in grey"),
     ];
-    let body = grid(&panels, 3)?;
+    let body = grid(theme, &panels, 3)?;
     let notes = format!(
         "N = {n}, b/s = {b}, a = {:.3} s. Each block is drawn from its red A end to its \
          blue B end; the arrow at its height points from B to A: its orientation, up in every \
@@ -50,7 +50,7 @@ pub fn ground_states(input: &FigureInput) -> Result<Picture> {
         plus.a,
         alpha.to_radians().sin()
     );
-    frame(&input.title, &body, &notes, 760)
+    frame(theme, &input.title, &body, &notes, 760)
 }
 
 /// An arrow beside each block of a [`configuration`] picture, in a column
@@ -92,24 +92,27 @@ fn orientation_arrows(p: &mut Picture, ladder: &Ladder, q: &[f64]) -> Result<()>
 
 /// Fig. S3: the α = 0 configuration (b/s = 1.3, N = 10) beside its
 /// single-well U(θ) (eq:U_g with a² = b² + 4s²).
-pub fn gapless(input: &FigureInput) -> Result<Picture> {
+pub fn gapless(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let (n, b) = (input.model.n, input.model.b);
     let p = input.params(n, b, 0.0)?;
     let (a, q) = gapless_configuration(&p, n, b)?;
     let ladder = Ladder::new(p);
     // On a narrow page the ladder stays beside the chart, slimmer, and the
     // chart takes the rest of the row.
-    let narrow = super::body_room().is_some_and(|r| r < 600.0);
+    let narrow = super::body_room(theme).is_some_and(|r| r < 600.0);
     let (size, chart_size) = if narrow {
-        let room = super::body_room().unwrap_or(560.0).floor() as u32;
+        let room = super::body_room(theme).unwrap_or(560.0).floor() as u32;
         let h = room * 3 / 5;
         let ladder_w = h / 3;
         ((ladder_w, h), (room - ladder_w - size::GAP, h))
     } else {
-        (super::cells(LADDER_SIZE, 3), super::cells((560, 440), 1))
+        (
+            super::cells(theme, LADDER_SIZE, 3),
+            super::cells(theme, (560, 440), 1),
+        )
     };
-    let snap = configuration(&ladder, &q, None, size)?;
-    let chart = gapless_potential(a, b, chart_size)?;
+    let snap = configuration(theme, &ladder, &q, None, size)?;
+    let chart = gapless_potential(theme, a, b, chart_size)?;
     let panels = vec![
         Panel::new(snap)
             .label("(a)")
@@ -118,18 +121,18 @@ pub fn gapless(input: &FigureInput) -> Result<Picture> {
             .label("(b)")
             .caption("a single minimum at θ = 0"),
     ];
-    let body = grid(&panels, 2)?;
+    let body = grid(theme, &panels, 2)?;
     let notes = format!(
         "b/s = {b}, a = √(b² + 4s²) = {a:.3} s: the A links are as long as the diagonal of a \
          pair of flat blocks, the blocks lie flat (θ = 0) and the double well of Fig. 2c \
          degenerates into one flat-bottomed minimum (U − U_{{min}} grows as θ⁴): the bistability and \
          the gap ω₊(0) are lost."
     );
-    frame(&input.title, &body, &notes, 760)
+    frame(theme, &input.title, &body, &notes, 760)
 }
 
 /// U(θ) for the gapless lengths with the minimum marked.
-fn gapless_potential(a: f64, b: f64, (w, h): (u32, u32)) -> Result<Picture> {
+fn gapless_potential(theme: &Theme, a: f64, b: f64, (w, h): (u32, u32)) -> Result<Picture> {
     let points: Vec<(f64, f64)> = (0..=720)
         .filter_map(|k| {
             let th = -89.75 + 179.5 * k as f64 / 720.0;
@@ -148,7 +151,7 @@ fn gapless_potential(a: f64, b: f64, (w, h): (u32, u32)) -> Result<Picture> {
         Marker::Circle,
     ));
     spec.legend = Legend::Auto;
-    Ok(line_chart(&spec, w, h)?.into())
+    Ok(line_chart(theme, &spec, w, h)?.into())
 }
 
 /// A residual that is zero to rounding as "< 10⁻¹²", otherwise 2 decimals.
@@ -162,11 +165,11 @@ fn tiny(x: f64) -> String {
 
 /// Fig. S4: the model's zero modes (top row, exact) and the paper's
 /// eq:zm_n shapes (bottom row) for m = 1, ε₀ = 0.1 and m = 5, ε₀ = 0.05.
-pub fn zero_modes(input: &FigureInput) -> Result<Picture> {
+pub fn zero_modes(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha);
     let p = input.params(n, b, alpha)?;
     let ladder = Ladder::new(p);
-    let size = super::cells((200, 500), 4);
+    let size = super::cells(theme, (200, 500), 4);
     let mut model = Vec::new();
     let mut paper = Vec::new();
     let mut residuals = Vec::new();
@@ -177,19 +180,31 @@ pub fn zero_modes(input: &FigureInput) -> Result<Picture> {
         let (label, primed) = (format!("({letter})"), format!("({letter}′)"));
         let caption = format!("m = {m}, ε₀ = {eps}");
         model.push(
-            Panel::new(configuration(&ladder, &z.model, Some(&z.ground), size)?)
-                .label(format!("{label} model"))
-                .caption(caption.clone()),
+            Panel::new(configuration(
+                theme,
+                &ladder,
+                &z.model,
+                Some(&z.ground),
+                size,
+            )?)
+            .label(format!("{label} model"))
+            .caption(caption.clone()),
         );
         paper.push(
-            Panel::new(configuration(&ladder, &z.paper, Some(&z.ground), size)?)
-                .label(format!("{primed} as printed"))
-                .caption(caption),
+            Panel::new(configuration(
+                theme,
+                &ladder,
+                &z.paper,
+                Some(&z.ground),
+                size,
+            )?)
+            .label(format!("{primed} as printed"))
+            .caption(caption),
         );
         residuals.push((m, z.paper_residual, z.model_residual));
     }
     model.extend(paper);
-    let body = grid(&model, 4)?;
+    let body = grid(theme, &model, 4)?;
     let res: Vec<String> = residuals
         .iter()
         .map(|(m, p, q)| format!("m = {m}: {p:.2} as printed, {} for the model", tiny(*q)))
@@ -202,7 +217,7 @@ pub fn zero_modes(input: &FigureInput) -> Result<Picture> {
          which stretches the springs. Relative spring stretch |C δq|/|δq|: {}.",
         res.join("; ")
     );
-    frame(&input.title, &body, &notes, 760)
+    frame(theme, &input.title, &body, &notes, 760)
 }
 
 #[cfg(test)]
@@ -237,7 +252,8 @@ mod tests {
         for alpha in [75.0, -75.0] {
             let ladder = Ladder::new(input.params(10, 1.2, alpha).unwrap());
             let q = ladder.ground_state();
-            let mut p = Picture::new(LADDER_SIZE.0 as f32, LADDER_SIZE.1 as f32);
+            let theme = Theme::of(&Default::default());
+            let mut p = Picture::new(&theme, LADDER_SIZE.0 as f32, LADDER_SIZE.1 as f32);
             orientation_arrows(&mut p, &ladder, &q).unwrap();
             widths.push(head_width_at_top(&p.to_pixmap().unwrap(), 6));
         }

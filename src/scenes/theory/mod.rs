@@ -17,7 +17,7 @@ use crate::model::{Ladder, Params};
 use crate::render::compose::{self, Layout, Panel};
 use crate::render::snapshot::{self, Snapshot};
 use crate::render::style::{self, DARK, HAlign, VAlign, size};
-use crate::render::{Canvas, Picture};
+use crate::render::{Canvas, Picture, Theme};
 use crate::scene::{Model, TheoryFigure, TheorySpec, ZeroMode};
 use crate::theory::cost::{self, Work};
 use tiny_skia::Pixmap;
@@ -57,40 +57,40 @@ impl FigureInput {
 /// The width, in pixels, a figure's body may take at a print style (the
 /// composed page less its margins, [`crate::render::Style::fit_box`]);
 /// none at screen.
-fn body_room() -> Option<f32> {
-    let (w, _) = crate::render::Style::current().fit_box()?;
-    Some(w - 2.0 * size::MARGIN as f32)
+fn body_room(theme: &Theme) -> Option<f32> {
+    let (w, _) = theme.style.fit_box()?;
+    Some(w - 2.0 * theme.margin)
 }
 
 /// The size of each of `columns` cells of a grid whose natural cell is
 /// `natural`: unchanged at screen; at a print style narrowed, aspect kept,
 /// so that the row fits [`body_room`].
-fn cells(natural: (u32, u32), columns: usize) -> (u32, u32) {
-    let Some(room) = body_room() else {
+fn cells(theme: &Theme, natural: (u32, u32), columns: usize) -> (u32, u32) {
+    let Some(room) = body_room(theme) else {
         return natural;
     };
     let c = columns.max(1) as f32;
-    let w = ((room - (c - 1.0) * size::GAP as f32) / c).floor();
+    let w = ((room - (c - 1.0) * theme.gap) / c).floor();
     let w = w.min(natural.0 as f32).max(20.0);
     let h = natural.1 as f32 * w / natural.0 as f32;
     // No taller than the page budget leaves after a label and a caption.
-    let tall = body_height().map_or(h, |room| room - 4.0 * size::LABEL);
+    let tall = body_height(theme).map_or(h, |room| room - 4.0 * theme.label);
     let f = (tall / h).min(1.0);
     ((w * f).floor() as u32, (h * f).round() as u32)
 }
 
 /// How much a drawing `width` pixels wide is scaled down to fit
 /// [`body_room`] (1 at screen or when it fits).
-fn drawing_scale(width: f32, height: f32) -> f32 {
-    let tall = body_height().map_or(1.0, |room| room / height);
-    body_room().map_or(1.0, |room| (room / width).min(tall).min(1.0))
+fn drawing_scale(theme: &Theme, width: f32, height: f32) -> f32 {
+    let tall = body_height(theme).map_or(1.0, |room| room / height);
+    body_room(theme).map_or(1.0, |room| (room / width).min(tall).min(1.0))
 }
 
 /// The height, in pixels, a figure's body may take at a print style (the
 /// page budget less the margins); none at screen.
-fn body_height() -> Option<f32> {
-    let (_, h) = crate::render::Style::current().fit_box()?;
-    Some(h - 2.0 * size::MARGIN as f32)
+fn body_height(theme: &Theme) -> Option<f32> {
+    let (_, h) = theme.style.fit_box()?;
+    Some(h - 2.0 * theme.margin)
 }
 
 /// `body` scaled by `scale` (a drawing laid out for the screen, on a
@@ -100,16 +100,16 @@ fn scaled(body: &Picture, scale: f32) -> Picture {
         return body.clone();
     }
     let (w, h) = (body.width() * scale, body.height() * scale);
-    let mut out = Picture::new(w.ceil(), h.ceil());
+    let mut out = Picture::new(body.theme(), w.ceil(), h.ceil());
     out.push(tiny_skia::Transform::from_scale(scale, scale));
     body.draw(&mut out);
     out.pop();
     out
 }
 
-/// Renders one static figure at 100 %.
-pub fn render(figure: TheoryFigure, input: &FigureInput) -> Result<Pixmap> {
-    picture(figure, input)?.to_pixmap()
+/// Renders one static figure at 100 %, drawn with `theme`.
+pub fn render(theme: &Theme, figure: TheoryFigure, input: &FigureInput) -> Result<Pixmap> {
+    picture(theme, figure, input)?.to_pixmap()
 }
 
 /// What drawing `figure` for `input` costs (`theory::cost`).
@@ -152,23 +152,25 @@ pub fn check_cost(figure: TheoryFigure, input: &FigureInput) -> Result<Work> {
 }
 
 /// One static figure as a picture (PNG at any scale, SVG, PDF), its cost
-/// checked first ([`check_cost`]).
-pub fn picture(figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {
+/// checked first ([`check_cost`]), drawn with `theme`.
+pub fn picture(theme: &Theme, figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {
     check_cost(figure, input)?;
-    Ok(drawn(figure, input)?.fit_page().titled(input.title.clone()))
+    Ok(drawn(theme, figure, input)?
+        .fit_page()
+        .titled(input.title.clone()))
 }
 
-fn drawn(figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {
+fn drawn(theme: &Theme, figure: TheoryFigure, input: &FigureInput) -> Result<Picture> {
     match figure {
-        TheoryFigure::UnitSchematic => schematic::unit(input),
-        TheoryFigure::GravityPotential => plots::gravity_potential(input),
-        TheoryFigure::GroundStates => configurations::ground_states(input),
-        TheoryFigure::Gapless => configurations::gapless(input),
-        TheoryFigure::ZeroModes => configurations::zero_modes(input),
-        TheoryFigure::Dispersion => plots::dispersion(input),
-        TheoryFigure::Winding => plots::winding(input),
-        TheoryFigure::EdgeMode => plots::edge_mode(input),
-        TheoryFigure::Barrier => plots::barrier(input),
+        TheoryFigure::UnitSchematic => schematic::unit(theme, input),
+        TheoryFigure::GravityPotential => plots::gravity_potential(theme, input),
+        TheoryFigure::GroundStates => configurations::ground_states(theme, input),
+        TheoryFigure::Gapless => configurations::gapless(theme, input),
+        TheoryFigure::ZeroModes => configurations::zero_modes(theme, input),
+        TheoryFigure::Dispersion => plots::dispersion(theme, input),
+        TheoryFigure::Winding => plots::winding(theme, input),
+        TheoryFigure::EdgeMode => plots::edge_mode(theme, input),
+        TheoryFigure::Barrier => plots::barrier(theme, input),
     }
 }
 
@@ -177,8 +179,13 @@ const NOTE_LINE: f32 = 1.35 * size::LABEL;
 
 /// Puts `body` under a centred title with wrapped `notes` below it, on a
 /// white page at least `min_width` pixels wide.
-fn frame(title: &str, body: &Picture, notes: &str, min_width: u32) -> Result<Picture> {
-    let theme = crate::render::Theme::current();
+fn frame(
+    theme: &Theme,
+    title: &str,
+    body: &Picture,
+    notes: &str,
+    min_width: u32,
+) -> Result<Picture> {
     // Journal styles carry neither title nor notes: the caption is the
     // document's.
     let (title, notes) = if theme.titles {
@@ -188,12 +195,12 @@ fn frame(title: &str, body: &Picture, notes: &str, min_width: u32) -> Result<Pic
     };
     let m = size::MARGIN;
     let (bw, bh) = body.pixel_size();
-    let min_width = crate::render::Style::current().frame((min_width, 1)).0;
+    let min_width = theme.style.frame((min_width, 1)).0;
     let width = (bw + 2 * m).max(min_width);
     let lines = if notes.is_empty() {
         Vec::new()
     } else {
-        style::wrap_text(notes, (width - 2 * m) as f32, size::LABEL)
+        style::wrap_text(theme.font(), notes, (width - 2 * m) as f32, size::LABEL)
     };
     let title_h = if title.is_empty() {
         0
@@ -206,7 +213,7 @@ fn frame(title: &str, body: &Picture, notes: &str, min_width: u32) -> Result<Pic
         (lines.len() as f32 * NOTE_LINE + 0.5 * size::LABEL) as u32
     };
     let height = m + title_h + bh + notes_h + m;
-    let mut out = Picture::new(width as f32, height as f32);
+    let mut out = Picture::new(theme, width as f32, height as f32);
     let centre = 0.5 * width as f32;
     let top = (centre, m as f32);
     if !title.is_empty() {
@@ -226,9 +233,9 @@ const TOP_LEFT: (HAlign, VAlign) = (HAlign::Left, VAlign::Top);
 
 /// Panels in a grid without a title (the figure frame carries it), and at
 /// a print style without a margin of its own (the frame's is the page's).
-fn grid(panels: &[Panel], columns: usize) -> Result<Picture> {
-    let mut layout = Layout::columns(columns);
-    if crate::render::Theme::current().is_print() {
+fn grid(theme: &Theme, panels: &[Panel], columns: usize) -> Result<Picture> {
+    let mut layout = Layout::columns(theme, columns);
+    if theme.is_print() {
         layout.margin = 0;
     }
     compose::compose_picture(panels, &layout)
@@ -237,6 +244,7 @@ fn grid(panels: &[Panel], columns: usize) -> Result<Picture> {
 /// A snapshot of `q` on `ladder` without the pin support of block 1 (these
 /// configurations are not driven), over an optional grey `ghost`.
 fn configuration(
+    theme: &Theme,
     ladder: &Ladder,
     q: &[f64],
     ghost: Option<&[f64]>,
@@ -247,7 +255,7 @@ fn configuration(
         snap = snap.with_ghost(ladder, g)?;
     }
     snap.clamp = false;
-    snapshot::snapshot_picture(&snap, w, h)
+    snapshot::snapshot_picture(theme, &snap, w, h)
 }
 
 /// "+75°", "−75°", "0°" with a true minus sign.

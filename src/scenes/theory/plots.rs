@@ -12,7 +12,7 @@ use crate::render::charts::{line_chart, short_number};
 use crate::render::compose::Panel;
 use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign, size};
 use crate::render::theme::palette;
-use crate::render::{Axis, Canvas, ChartSpec, Legend, Marker, Picture, Series};
+use crate::render::{Axis, Canvas, ChartSpec, Legend, Marker, Picture, Series, Theme};
 use crate::theory::figures::{
     DispersionCurve, barrier_curve, det_loop, dispersion_curves, edge_mode_profile,
     potential_curves,
@@ -20,9 +20,9 @@ use crate::theory::figures::{
 use crate::theory::gravity;
 use std::f64::consts::PI;
 
-fn chart(spec: &ChartSpec, w: u32, h: u32) -> Result<Picture> {
-    let (w, h) = fit((w, h));
-    Ok(line_chart(spec, w, h)?.into())
+fn chart(theme: &Theme, spec: &ChartSpec, w: u32, h: u32) -> Result<Picture> {
+    let (w, h) = fit(theme, (w, h));
+    Ok(line_chart(theme, spec, w, h)?.into())
 }
 
 /// Width of a theory figure's page at the screen style, pixels.
@@ -32,13 +32,13 @@ const FIGURE_WIDTH: u32 = 900;
 /// in force: unchanged at screen; at a narrow print page (one column of
 /// panels, [`columns`]) the page's width less the margins, its height in
 /// proportion; at a wide one the same share of the page as on screen.
-fn fit((w, h): (u32, u32)) -> (u32, u32) {
-    let style = crate::render::Style::current();
+fn fit(theme: &Theme, (w, h): (u32, u32)) -> (u32, u32) {
+    let style = theme.style;
     if !style.is_print() {
         return (w, h);
     }
-    let page = page_width(FIGURE_WIDTH) as f32;
-    let f = if narrow() {
+    let page = page_width(theme, FIGURE_WIDTH) as f32;
+    let f = if narrow(theme) {
         (page - 2.0 * size::MARGIN as f32 - 8.0) / w as f32
     } else {
         // The share of the page the panel has on screen, of the room the
@@ -46,7 +46,7 @@ fn fit((w, h): (u32, u32)) -> (u32, u32) {
         (page - 2.0 * (size::MARGIN + size::GAP) as f32) / FIGURE_WIDTH as f32
     };
     let s = |v: u32| ((v as f32 * f).round() as u32).max(60);
-    if narrow() {
+    if narrow(theme) {
         // Panels stack in one column: each no taller than NARROW_ASPECT of
         // its width, so that two stacked keep the page budget.
         let w = s(w);
@@ -64,19 +64,18 @@ fn fit((w, h): (u32, u32)) -> (u32, u32) {
 const NARROW_ASPECT: f32 = 0.6;
 
 /// The page's width in design pixels: `screen` at the screen style.
-fn page_width(screen: u32) -> u32 {
-    crate::render::Style::current().frame((screen, 1)).0
+fn page_width(theme: &Theme, screen: u32) -> u32 {
+    theme.style.frame((screen, 1)).0
 }
 
 /// Whether the page is too narrow for panels side by side (`paper`).
-fn narrow() -> bool {
-    let style = crate::render::Style::current();
-    style.is_print() && page_width(FIGURE_WIDTH) < 600
+fn narrow(theme: &Theme) -> bool {
+    theme.is_print() && page_width(theme, FIGURE_WIDTH) < 600
 }
 
 /// Columns of a grid of panels: one on a narrow page, else `n`.
-fn columns(n: usize) -> usize {
-    if narrow() { 1 } else { n }
+fn columns(theme: &Theme, n: usize) -> usize {
+    if narrow(theme) { 1 } else { n }
 }
 
 fn pairs(points: &[[f64; 2]]) -> Vec<(f64, f64)> {
@@ -86,7 +85,7 @@ fn pairs(points: &[[f64; 2]]) -> Vec<(f64, f64)> {
 /// Fig. 2c: U(θ) for each a/b of the scene at its b/s, the
 /// minima at ±α (eq:eq_alpha, U_min = −2mgb), and ladders at both minima
 /// of two of the curves beside the chart.
-pub fn gravity_potential(input: &FigureInput) -> Result<Picture> {
+pub fn gravity_potential(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let b = input.model.b;
     let curves = potential_curves(b, &input.a_over_b, 1441);
     let mut spec = ChartSpec::new(
@@ -106,13 +105,17 @@ pub fn gravity_potential(input: &FigureInput) -> Result<Picture> {
         DARK,
         Marker::Circle,
     ));
-    let plot = chart(&spec, 620, 560)?;
+    let plot = chart(theme, &spec, 620, 560)?;
     let which: Vec<usize> = [1, 3]
         .into_iter()
         .filter(|&i| i < input.a_over_b.len())
         .collect();
-    let insets = potential_insets(input, &which)?;
-    let body = grid(&[Panel::new(plot), Panel::new(insets)], columns(2))?;
+    let insets = potential_insets(theme, input, &which)?;
+    let body = grid(
+        theme,
+        &[Panel::new(plot), Panel::new(insets)],
+        columns(theme, 2),
+    )?;
     // (At `paper` the insets are one row of four under the chart.)
     let notes = format!(
         "Linkage limit, b/s = {b}: U(θ) = −mg√(2(a² + b²) − 4s²cos²θ − (a² − b²)²/(4s²cos²θ)), \
@@ -120,7 +123,13 @@ pub fn gravity_potential(input: &FigureInput) -> Result<Picture> {
          at U_{{min}} = −2mgb. Right: the ladder (4 blocks) at θ = −α and θ = +α for two of the \
          curves; the two orientations are degenerate."
     );
-    frame(&input.title, &body, &notes, page_width(FIGURE_WIDTH))
+    frame(
+        theme,
+        &input.title,
+        &body,
+        &notes,
+        page_width(theme, FIGURE_WIDTH),
+    )
 }
 
 /// The U(θ) curves' colours, with their names for the inset labels: none
@@ -145,11 +154,11 @@ fn color_name(i: usize) -> &'static str {
 
 /// Ground states of 4 blocks at θ = ∓α for the curves `which`, one row per
 /// curve.
-fn potential_insets(input: &FigureInput, which: &[usize]) -> Result<Picture> {
+fn potential_insets(theme: &Theme, input: &FigureInput, which: &[usize]) -> Result<Picture> {
     let b = input.model.b;
     let mut panels = Vec::new();
     // On a narrow page one row of four small ladders under the chart.
-    let (cell, columns, short) = match super::body_room().filter(|r| *r < 600.0) {
+    let (cell, columns, short) = match super::body_room(theme).filter(|r| *r < 600.0) {
         Some(room) => {
             let w = ((room - 3.0 * size::GAP as f32) / 4.0).floor() as u32;
             ((w, w * 3 / 2), 4, true)
@@ -164,7 +173,7 @@ fn potential_insets(input: &FigureInput, which: &[usize]) -> Result<Picture> {
         for sign in [-1.0, 1.0] {
             let l = Ladder::new(input.params(4, b, sign * alpha)?);
             let q = l.ground_state();
-            let mut panel = Panel::new(configuration(&l, &q, None, cell)?)
+            let mut panel = Panel::new(configuration(theme, &l, &q, None, cell)?)
                 .caption(signed_deg((sign * alpha * 10.0).round() / 10.0));
             if sign < 0.0 && short {
                 panel = panel.label(format!("a/b = {r}"));
@@ -174,7 +183,7 @@ fn potential_insets(input: &FigureInput, which: &[usize]) -> Result<Picture> {
             panels.push(panel);
         }
     }
-    grid(&panels, columns)
+    grid(theme, &panels, columns)
 }
 
 /// Number of dispersion samples for lines and for dots.
@@ -184,7 +193,7 @@ const DOT_SAMPLES: usize = 24;
 /// Fig. S5: ω±(q)/ω₀ against qb for each α of the scene, at its b/s,
 /// one panel per α: eq:dispersion as printed (dashed), ×√2 (solid, errata
 /// item 9) and the model's eigenvalues (dots).
-pub fn dispersion(input: &FigureInput) -> Result<Picture> {
+pub fn dispersion(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let b = input.model.b;
     let base = input.params(input.model.n, b, input.model.alpha)?;
     let lines = dispersion_curves(&base, b, &input.alphas, LINE_SAMPLES)?;
@@ -197,31 +206,39 @@ pub fn dispersion(input: &FigureInput) -> Result<Picture> {
     let y_max = (top * 1.08 * 2.0).ceil() / 2.0;
     // On a narrow page two panels a row, each half the page (six panels
     // one a row would print taller than a page).
-    let (cols, size) = if narrow() {
+    let (cols, size) = if narrow(theme) {
         let half =
-            (page_width(FIGURE_WIDTH) as f32 - 2.0 * size::MARGIN as f32 - size::GAP as f32) / 2.0;
+            (page_width(theme, FIGURE_WIDTH) as f32 - 2.0 * size::MARGIN as f32 - size::GAP as f32)
+                / 2.0;
         (
             2,
             (half.floor() as u32, (half * 225.0 / 300.0).round() as u32),
         )
     } else {
-        (3, fit((300, 250)))
+        (3, fit(theme, (300, 250)))
     };
     let mut panels = Vec::new();
     for (l, d) in lines.iter().zip(&dots) {
-        panels.push(Panel::new(dispersion_panel(l, d, y_max, size)?));
+        panels.push(Panel::new(dispersion_panel(theme, l, d, y_max, size)?));
     }
-    let mut body = grid(&panels, cols)?;
-    body = stack(&body, &dispersion_key(body.pixel_size().0)?);
+    let mut body = grid(theme, &panels, cols)?;
+    body = stack(&body, &dispersion_key(theme, body.pixel_size().0)?);
     let notes = "ω₀ = √(k/m) = 1/τ, I = m s²/4, constraint δv_{n} = (−1)ⁿ(s/2) sin α δθ_{n}. The printed closed form is √2 too small for this ω₀ \
                  (docs/paper-errata.md item 9): it is exact if ω₀ is read as √(2k/m). The \
                  eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I), \
                  as in the paper) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \
                  of the rotational branch; ω₋ is acoustic.";
-    frame(&input.title, &body, notes, page_width(FIGURE_WIDTH))
+    frame(
+        theme,
+        &input.title,
+        &body,
+        notes,
+        page_width(theme, FIGURE_WIDTH),
+    )
 }
 
 fn dispersion_panel(
+    theme: &Theme,
     lines: &DispersionCurve,
     dots: &DispersionCurve,
     y_max: f64,
@@ -251,12 +268,12 @@ fn dispersion_panel(
         spec = spec.series(Series::scatter("", pts, color, Marker::Circle).with_width(1.0));
     }
     spec.legend = Legend::Hidden;
-    Ok(line_chart(&spec, w, h)?.into())
+    Ok(line_chart(theme, &spec, w, h)?.into())
 }
 
 /// The shared key of the dispersion panels: entries left to right, a new
 /// row where the next would pass the width.
-fn dispersion_key(width: u32) -> Result<Picture> {
+fn dispersion_key(theme: &Theme, width: u32) -> Result<Picture> {
     let entries: [(&str, Rgb, u8); 6] = [
         ("ω₊ closed form × √2", RED, 0),
         ("ω₊ as printed", RED, 1),
@@ -267,7 +284,7 @@ fn dispersion_key(width: u32) -> Result<Picture> {
     ];
     let widths: Vec<f32> = entries
         .iter()
-        .map(|e| 34.0 + style::text_width(e.0, crate::render::charts::tick_px()) + 22.0)
+        .map(|e| 34.0 + style::text_width(theme.font(), e.0, theme.tick) + 22.0)
         .collect();
     let room = width as f32 - 2.0 * size::MARGIN as f32;
     let mut rows: Vec<Vec<usize>> = vec![vec![]];
@@ -283,7 +300,7 @@ fn dispersion_key(width: u32) -> Result<Picture> {
         }
     }
     const ROW: f32 = 26.0;
-    let mut p = Picture::new(width as f32, 8.0 + ROW * rows.len() as f32);
+    let mut p = Picture::new(theme, width as f32, 8.0 + ROW * rows.len() as f32);
     for (j, row) in rows.iter().enumerate() {
         let total: f32 = row.iter().map(|&k| widths[k]).sum();
         let mut x = 0.5 * (width as f32 - total);
@@ -298,7 +315,7 @@ fn dispersion_key(width: u32) -> Result<Picture> {
             p.text(
                 e.0,
                 (x + 34.0, y),
-                crate::render::charts::tick_px(),
+                theme.tick,
                 DARK,
                 (HAlign::Left, VAlign::Middle),
             );
@@ -313,7 +330,7 @@ fn stack(top: &Picture, bottom: &Picture) -> Picture {
     let (tw, th) = top.pixel_size();
     let (bw, bh) = bottom.pixel_size();
     let w = tw.max(bw);
-    let mut out = Picture::new(w as f32, (th + bh) as f32);
+    let mut out = Picture::new(top.theme(), w as f32, (th + bh) as f32);
     out.place(top, (((w - tw) / 2) as f32, 0.0));
     out.place(bottom, (((w - bw) / 2) as f32, th as f32));
     out
@@ -322,14 +339,14 @@ fn stack(top: &Picture, bottom: &Picture) -> Picture {
 /// The winding figure: det C_red(q)/(e^(iqb) − 1) (a circle of radius 2|c₁|
 /// about −2c₂, errata item 8) and det C_red(q) itself (eq:det-C) over the
 /// Brillouin zone for α = ±60°, b/s = 1.3.
-pub fn winding(input: &FigureInput) -> Result<Picture> {
+pub fn winding(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha.abs());
     let mut panels = Vec::new();
     for sign in [1.0, -1.0] {
         let p = input.params(n, b, sign * alpha)?;
-        panels.push(Panel::new(winding_panel(&p)?));
+        panels.push(Panel::new(winding_panel(theme, &p)?));
     }
-    let body = grid(&panels, columns(2))?;
+    let body = grid(theme, &panels, columns(theme, 2))?;
     let notes = format!(
         "b/s = {b}. Solid: det C(q)/(e^{{iqb}} − 1) = 2(c₁e^{{iqb}} − c₂), the circle of \
                  radius 2|c₁| about −2c₂ whose winding about the origin (+) is the winding number \
@@ -338,10 +355,16 @@ pub fn winding(input: &FigureInput) -> Result<Picture> {
                  encloses the origin (n = 1, surface zero mode at the top); for α < 0 it does not \
                  (n = 0)."
     );
-    frame(&input.title, &body, &notes, page_width(FIGURE_WIDTH))
+    frame(
+        theme,
+        &input.title,
+        &body,
+        &notes,
+        page_width(theme, FIGURE_WIDTH),
+    )
 }
 
-fn winding_panel(p: &crate::model::Params) -> Result<Picture> {
+fn winding_panel(theme: &Theme, p: &crate::model::Params) -> Result<Picture> {
     let l = det_loop(p, 720)?;
     let n = l
         .winding_number
@@ -373,19 +396,19 @@ fn winding_panel(p: &crate::model::Params) -> Result<Picture> {
     spec.equal_aspect = true;
     spec.zero_lines = true;
     spec.legend = Legend::UpperLeft;
-    chart(&spec, 440, 440)
+    chart(theme, &spec, 440, 440)
 }
 
 /// The edge-mode figure: |δθ_n| of the reduced chain's null vector (dots)
 /// and |c₂/c₁|^{n−1} ∝ e^{−κ(n−1)b} (eq:2nd_sol, lines), log scale; α > 0
 /// left (top edge), α < 0 right (bottom edge).
-pub fn edge_mode(input: &FigureInput) -> Result<Picture> {
+pub fn edge_mode(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let mut panels = Vec::new();
     for sign in [1.0, -1.0] {
-        panels.push(Panel::new(edge_panel(input, sign)?));
+        panels.push(Panel::new(edge_panel(theme, input, sign)?));
     }
     let (n, b) = (input.model.n, input.model.b);
-    let body = grid(&panels, columns(2))?;
+    let body = grid(theme, &panels, columns(theme, 2))?;
     let notes = format!(
         "N = {n}, b/s = {b}; surface zero mode of the chain with the B nodes pinned \
                  (the paper's edge mode), found as the null vector of the model's compatibility \
@@ -396,10 +419,16 @@ pub fn edge_mode(input: &FigureInput) -> Result<Picture> {
         crate::theory::formulas::EDGE_DECAY,
         (0.5 * b).min(1.0).asin().to_degrees()
     );
-    frame(&input.title, &body, &notes, page_width(FIGURE_WIDTH))
+    frame(
+        theme,
+        &input.title,
+        &body,
+        &notes,
+        page_width(theme, FIGURE_WIDTH),
+    )
 }
 
-fn edge_panel(input: &FigureInput, sign: f64) -> Result<Picture> {
+fn edge_panel(theme: &Theme, input: &FigureInput, sign: f64) -> Result<Picture> {
     let (n, b) = (input.model.n, input.model.b);
     let mut spec = ChartSpec::new(
         Axis::new("block n").range(0.5, n as f64 + 0.5),
@@ -439,12 +468,12 @@ fn edge_panel(input: &FigureInput, sign: f64) -> Result<Picture> {
         ));
     }
     spec.y = spec.y.range(1e-9, 3.0);
-    chart(&spec, 440, 420)
+    chart(theme, &spec, 440, 420)
 }
 
 /// The barrier figure: ΔU(α) = U(0) − U(α) (eq:delta_U) for b/s = 1.3, and
 /// the same from the model's two-block linkage solved at θ = 0 (dots).
-pub fn barrier(input: &FigureInput) -> Result<Picture> {
+pub fn barrier(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let b = input.model.b;
     let curve = pairs(&barrier_curve(b, 180));
     let dots: Vec<(f64, f64)> = (0..=18)
@@ -462,7 +491,7 @@ pub fn barrier(input: &FigureInput) -> Result<Picture> {
         Marker::Circle,
     ));
     spec.legend = Legend::UpperLeft;
-    let plot = chart(&spec, 800, 500)?;
+    let plot = chart(theme, &spec, 800, 500)?;
     let notes = format!(
         "b/s = {b}. ΔU(α) = 2mgb(1 − √(1 − (s²/b²)sin⁴α)): the height of the criss-cross \
                  configuration θ = 0 above the two minima θ = ±α of U(θ). Dots: centre spacing \
@@ -470,7 +499,7 @@ pub fn barrier(input: &FigureInput) -> Result<Picture> {
                  Newton's method at θ = 0 and θ = α. The barrier vanishes as α → 0 (the gapless \
                  configuration of Fig. S3) and is largest for the symmetric toy α → 90°."
     );
-    frame(&input.title, &plot, &notes, page_width(840))
+    frame(theme, &input.title, &plot, &notes, page_width(theme, 840))
 }
 
 /// U(0) − U(α) from the model's two-block linkage (no closed form).

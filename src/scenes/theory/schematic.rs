@@ -11,7 +11,7 @@ use crate::error::Result;
 use crate::model::Ladder;
 use crate::model::ladder::nodes;
 use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign};
-use crate::render::{Canvas, Picture};
+use crate::render::{Canvas, Picture, Theme};
 
 /// Canvas size, pixels per s and the pixel position of block n's centre.
 const W: u32 = 880;
@@ -21,9 +21,9 @@ const ORIGIN: Pt = (470.0, 150.0);
 /// Annotation text size: 19 px, more where the drawing is scaled down to
 /// fit a print page (so that it prints at no less than the smallest print
 /// text).
-fn text_size() -> f32 {
-    let scale = super::drawing_scale(W as f32, H as f32);
-    crate::render::compose::at_least_print_min(0.0).max(19.0 * scale) / scale
+fn text_size(theme: &Theme) -> f32 {
+    let scale = super::drawing_scale(theme, W as f32, H as f32);
+    theme.text_at_least(0.0).max(19.0 * scale) / scale
 }
 
 /// Pixel position of the model point [x (down), y (across)].
@@ -43,18 +43,19 @@ fn mid(a: Pt, b: Pt) -> Pt {
 }
 
 fn text(p: &mut Picture, s: &str, at: Pt, c: Rgb, align: (HAlign, VAlign)) {
-    p.text(s, at, text_size(), c, align);
+    let size = text_size(p.theme());
+    p.text(s, at, size, c, align);
 }
 
 const MIDDLE: (HAlign, VAlign) = (HAlign::Center, VAlign::Middle);
 const LEFT: (HAlign, VAlign) = (HAlign::Left, VAlign::Middle);
 
 /// The figure: drawing plus notes.
-pub fn unit(input: &FigureInput) -> Result<Picture> {
+pub fn unit(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let (b, alpha) = (input.model.b, input.model.alpha);
     let ladder = Ladder::new(input.params(2, b, alpha)?);
     let q = ladder.ground_state();
-    let mut p = Picture::new(W as f32, H as f32);
+    let mut p = Picture::new(theme, W as f32, H as f32);
     let unit = Unit::of(&q);
     draw_links_and_blocks(&mut p, &unit);
     draw_theta(&mut p, &unit);
@@ -70,8 +71,8 @@ pub fn unit(input: &FigureInput) -> Result<Picture> {
          At θ = α: Δx = b − s sin α, Δy = s cos α, and the B link hangs straight down.",
         ladder.a
     );
-    let p = super::scaled(&p, super::drawing_scale(W as f32, H as f32));
-    frame(&input.title, &p, &notes, W)
+    let p = super::scaled(&p, super::drawing_scale(theme, W as f32, H as f32));
+    frame(theme, &input.title, &p, &notes, W)
 }
 
 /// Pixel positions of the unit's nodes and centres.

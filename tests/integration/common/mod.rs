@@ -10,3 +10,9 @@ pub mod lcg;
 pub mod require;
 pub mod scenes;
 pub mod tempdir;
+
+/// The theme of the screen style (the catalogue's default), for tests
+/// that draw at it.
+pub fn screen() -> jacobs_ladder::render::Theme {
+    jacobs_ladder::render::Theme::of(&jacobs_ladder::render::Style::default())
+}
