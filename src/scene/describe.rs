@@ -42,11 +42,8 @@ pub fn generated_title(scene: &Scene) -> String {
     if flips > 1 {
         // Each flip of block 1 launches a wall of the other kind than the
         // flip before: the title names every wave.
-        let (first, second) = if m.alpha >= 0.0 {
-            ("kink", "antikink")
-        } else {
-            ("antikink", "kink")
-        };
+        let first = crate::sim::waves::WaveKind::launched(m.alpha);
+        let (first, second) = (first.name(), first.other().name());
         t = format!(
             "{first} and {second}, {flips} flips of block 1, α = {}°{extra}",
             num(m.alpha)

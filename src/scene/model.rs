@@ -61,11 +61,7 @@ impl Model {
 
     /// "kink" for α > 0, "antikink" for α < 0.
     pub fn wave(&self) -> &'static str {
-        if self.alpha >= 0.0 {
-            "kink"
-        } else {
-            "antikink"
-        }
+        crate::sim::waves::WaveKind::launched(self.alpha).name()
     }
 }
 

@@ -25,7 +25,7 @@ use tiny_skia::Pixmap;
 
 /// "kink α = 60°" or "antikink α = −60°".
 pub(crate) fn wave_name(alpha_deg: f64) -> String {
-    let kind = if alpha_deg > 0.0 { "kink" } else { "antikink" };
+    let kind = crate::sim::waves::WaveKind::launched(alpha_deg).name();
     format!("{kind} α = {}°", describe::num(alpha_deg))
 }
 

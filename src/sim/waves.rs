@@ -46,6 +46,37 @@ pub enum WaveKind {
     Antikink,
 }
 
+impl WaveKind {
+    /// The wave the first flip of block 1 launches from the ground state
+    /// of sign α (SPEC section 1): block 1 turned from α to −α leaves
+    /// negative polarisation above positive for α > 0, a kink; the
+    /// reverse, an antikink, for α < 0. The one rule the program names
+    /// waves by; α = 0 (no ground state to flip) is named a kink.
+    pub fn launched(alpha: f64) -> Self {
+        if alpha >= 0.0 {
+            Self::Kink
+        } else {
+            Self::Antikink
+        }
+    }
+
+    /// The other kind: the wave the next flip of block 1 launches.
+    pub fn other(self) -> Self {
+        match self {
+            Self::Kink => Self::Antikink,
+            Self::Antikink => Self::Kink,
+        }
+    }
+
+    /// "kink" or "antikink".
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Kink => "kink",
+            Self::Antikink => "antikink",
+        }
+    }
+}
+
 /// What became of a wave.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case", tag = "fate")]
@@ -372,6 +403,31 @@ mod tests {
     /// Block i turns from +1 rad to −1 rad linearly over [t_i − 1, t_i + 1].
     fn turn(t: f64, at: f64) -> f64 {
         1.0 - ((t - (at - 1.0)) / 2.0).clamp(0.0, 1.0) * 2.0
+    }
+
+    #[test]
+    fn the_naming_rule_is_the_trackers() {
+        // Block 1 flips from α to −α: the tracker's first wave is the kind
+        // `WaveKind::launched(α)` names, for both signs.
+        for alpha in [1.0f64, -1.0] {
+            let tr = run(
+                4,
+                |i, t| if i == 0 { alpha * turn(t, 10.0) } else { alpha },
+                0.3,
+                20.0,
+            );
+            let q: Vec<f64> = (0..4)
+                .flat_map(|i| [0.0, 0.0, if i == 0 { -alpha } else { alpha }])
+                .collect();
+            let w = tr.finish(&q, false);
+            assert_eq!(w.waves[0].kind, WaveKind::launched(alpha), "α = {alpha}");
+            assert_eq!(
+                WaveKind::launched(alpha).other(),
+                WaveKind::launched(-alpha)
+            );
+        }
+        assert_eq!(WaveKind::launched(60.0).name(), "kink");
+        assert_eq!(WaveKind::launched(-60.0).name(), "antikink");
     }
 
     #[test]

@@ -6,7 +6,7 @@
 use super::outcome::Outcome;
 use super::{Plan, Record};
 use crate::scene::sweep::Param;
-use crate::sim::waves::{Fate, WaveKind};
+use crate::sim::waves::Fate;
 use std::fmt::Write;
 
 /// The CSV columns after the parameters.
@@ -83,10 +83,7 @@ pub fn csv(plan: &Plan, records: &[Record]) -> String {
         for k in 0..per_wave {
             match res.waves.waves.get(k) {
                 Some(w) => {
-                    let kind = match w.kind {
-                        WaveKind::Kink => "kink",
-                        WaveKind::Antikink => "antikink",
-                    };
+                    let kind = w.kind.name();
                     let (fate, at) = match w.fate {
                         Fate::End => ("end", None),
                         Fate::Stopped => ("stopped", None),
