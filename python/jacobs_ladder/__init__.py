@@ -45,7 +45,7 @@ class _LazyNumpy:
 np: Any = _LazyNumpy()
 
 from . import _native
-from ._native import RunError
+from ._native import InternalError, RunError
 
 __all__ = [
     "simulate",
@@ -58,6 +58,7 @@ __all__ = [
     "Image",
     "Files",
     "RunError",
+    "InternalError",
     "__version__",
 ]
 
@@ -120,6 +121,10 @@ class Run:
         self._d = arrays
         self.record: Dict[str, Any] = json.loads(arrays["record"])
         self.scene = scene
+
+    def __reduce__(self):
+        # The arrays (numpy pickles them whole) and the record's JSON text.
+        return (Run, (self._d, self.scene))
 
     t = property(lambda self: self._d["t"], doc="Sample times, τ.")
     theta = property(lambda self: self._d["theta"], doc="θ_n(t), radians, samples × N.")
@@ -310,6 +315,20 @@ class Scene:
         base = _native._Scene.from_json("{}")
         self._s = base.replace(_keywords(keys)) if keys else base
 
+    def __reduce__(self):
+        # A scene travels as its JSON (every key written out), checked again
+        # when read: it pickles, deep-copies and crosses to a pool's worker.
+        return (_scene_from_json, (self._s.to_json(),))
+
+    def __copy__(self) -> "Scene":
+        return self  # immutable: replace() makes the changed copies
+
+    def __deepcopy__(self, memo: Any) -> "Scene":
+        return self._wrap(_native._Scene.from_json(self._s.to_json()))
+
+    def __hash__(self) -> int:
+        return hash(self._s.to_json())
+
     @classmethod
     def _wrap(cls, native: Any) -> "Scene":
         s = cls.__new__(cls)
@@ -447,6 +466,11 @@ class Scene:
         return f"<Scene {self.kind} {self.name}: {self.title}; {self._s.parameters}>"
 
 
+def _scene_from_json(text: str) -> Scene:
+    """A scene from its JSON (unpickling)."""
+    return Scene._wrap(_native._Scene.from_json(text))
+
+
 # ---------------------------------------------------------- rendered files
 
 _MIME = {
@@ -470,6 +494,9 @@ class Image(bytes):
         obj = super().__new__(cls, data)
         obj.name = name
         return obj
+
+    def __reduce__(self):
+        return (Image, (bytes(self), self.name))
 
     @property
     def format(self) -> str:
@@ -565,7 +592,12 @@ class Table(dict):
                 cols[name] = np.array([float(v) if v else np.nan for v in values], dtype=float)
         super().__init__(cols)
         self.csv = csv_text
+        self.json_text = json_text
         self.json = json.loads(json_text)
+
+    def __reduce__(self):
+        # Made again from its CSV and JSON text (the columns follow).
+        return (Table, (self.csv, self.json_text))
 
     def __len__(self) -> int:  # rows, as a table's length
         return len(self["run"]) if "run" in self else 0
@@ -592,6 +624,8 @@ def sweep(
     cap: Optional[float] = None,
     name: Optional[str] = None,
     max_runs: int = 100_000,
+    executor: Any = None,
+    chunks: Optional[int] = None,
     **keys: Any,
 ) -> Table:
     """Run a scene over a grid of parameters and decide what the wave did
@@ -608,6 +642,19 @@ def sweep(
       (docs/sweeps.md); otherwise it runs on to the cap.
     - ``name``: the sweep's name (in its JSON). Default the base's.
     - ``max_runs``: refuse a larger grid. Default 100000.
+    - ``executor``: run the sweep on another machine's cores, or many: any
+      ``concurrent.futures.Executor`` (a ``ProcessPoolExecutor``,
+      dask.distributed's ``client.get_executor()``, submitit's
+      ``AutoExecutor``, mpi4py's ``MPIPoolExecutor``), or anything with
+      ``submit(fn, *args)`` returning a future with ``result()``. The grid
+      is cut into ``chunks`` (round robin, as ``ladder sweep --shard``
+      does); each chunk is sent to a worker, runs there on the Rust core
+      with that worker's threads (``RAYON_NUM_THREADS``; one worker per
+      node), and comes back as its shard; the shards are merged by the
+      code of ``ladder sweep gather``. The table is byte for byte the
+      local one's. docs/cluster.md.
+    - ``chunks``: how many pieces the grid is cut into for ``executor``.
+      Default about one per 512 runs.
 
     The axes vary in the order of ``SWEEP_PARAMETERS`` (the first slowest),
     as ``ladder sweep``'s flags do. Returns a :class:`Table` equal to the
@@ -631,5 +678,31 @@ def sweep(
         keys["name"] = name
     native = None if base is None else base._s
     axes = [(k, json.dumps(v, default=_plain)) for k, v in rest]
-    csv_text, json_text = _native.sweep(native, _keywords(keys), axes, int(max_runs))
+    if executor is None:
+        if chunks is not None:
+            raise ValueError("chunks: cuts the grid for an executor; give executor= too")
+        csv_text, json_text = _native.sweep(native, _keywords(keys), axes, int(max_runs))
+        return Table(csv_text, json_text)
+    scene, count = _native.sweep_prepare(
+        native, _keywords(keys), axes, int(max_runs), None if chunks is None else int(chunks)
+    )
+    futures = [
+        executor.submit(_sweep_chunk, scene, int(max_runs), k, count) for k in range(1, count + 1)
+    ]
+    try:
+        shards = [f.result() for f in futures]
+    except BaseException:
+        for f in futures:
+            f.cancel()
+        raise
+    import tempfile
+
+    with tempfile.TemporaryDirectory(prefix="jacobs-ladder-sweep-") as tmp:
+        csv_text, json_text = _native.sweep_gather(tmp, shards, int(max_runs))
     return Table(csv_text, json_text)
+
+
+def _sweep_chunk(scene: str, max_runs: int, k: int, chunks: int) -> bytes:
+    """Chunk ``k`` of ``chunks`` of a sweep, run in an executor's worker:
+    the bytes of its shard file."""
+    return _native.sweep_chunk(scene, max_runs, k, chunks)

@@ -15,6 +15,9 @@ SWEEP_PARAMETERS: Tuple[str, ...]
 class RunError(RuntimeError):
     """A run that failed (a diverging integrator, ...): message and hint."""
 
+class InternalError(RuntimeError):
+    """A bug of jacobs_ladder (a caught panic of the engine)."""
+
 FloatArray = npt.NDArray[np.float64]
 
 class Run:
@@ -170,6 +173,7 @@ class Table(Dict[str, Any]):
 
     csv: str
     json: Dict[str, Any]
+    json_text: str
     def __init__(self, csv_text: str, json_text: str) -> None: ...
     @property
     def columns(self) -> List[str]: ...
@@ -181,7 +185,11 @@ def sweep(
     cap: Optional[float] = None,
     name: Optional[str] = None,
     max_runs: int = 100_000,
+    executor: Any = None,
+    chunks: Optional[int] = None,
     **keys: Any,
 ) -> Table:
     """Grid keywords alpha, n, b, gamma, gravity, inertia, drive_time: a
-    list, a value or "start:stop:step". cap: τ (100000)."""
+    list, a value or "start:stop:step". cap: τ (100000). executor: any
+    concurrent.futures.Executor; chunks: pieces of the grid sent to it
+    (about one per 512 runs)."""

@@ -47,11 +47,32 @@ fn theory(py: Python<'_>, alpha: f64, n: usize, b: f64) -> PyResult<String> {
     })
 }
 
-/// `sweep`: the base scene with `kwargs` applied (its `output` the sweep
-/// with its first axis), the axes `grid` added in their order (each a
-/// parameter's name and its values as JSON: a JSON object would lose the
-/// order), run whole;
-/// returns (CSV, JSON) as `ladder sweep` writes them.
+/// The sweep scene: the base scene with `kwargs` applied (its `output`
+/// the sweep with its first axis), the axes `grid` added in their order
+/// (each a parameter's name and its values as JSON: a JSON object would
+/// lose the order), checked whole.
+fn sweep_scene(
+    base: Option<&scene::PyScene>,
+    kwargs: &str,
+    grid: Vec<(String, String)>,
+) -> Result<Scene> {
+    use jacobs_ladder::scene::sweep::{Param, Values};
+    let base = base.map_or_else(Scene::default, |s| s.scene.clone());
+    let mut scene = kwargs::apply(&base, kwargs)?;
+    if let OutputSpec::Sweep(spec) = &mut scene.output {
+        for (name, values) in grid {
+            let param = Param::from_name(&name)
+                .ok_or_else(|| Error::bad_input(format!("{name}: not a sweep parameter")))?;
+            let values: Values = serde_json::from_str(&values)
+                .map_err(|e| Error::bad_input(format!("{name}: {e}")))?;
+            spec.grid.0.push((param, values));
+        }
+    }
+    kwargs::checked(scene)
+}
+
+/// `sweep`: the sweep scene ([`sweep_scene`]) run whole; returns (CSV,
+/// JSON) as `ladder sweep` writes them.
 #[pyfunction]
 #[pyo3(signature = (base, kwargs, grid, max_runs))]
 fn sweep(
@@ -61,22 +82,77 @@ fn sweep(
     grid: Vec<(String, String)>,
     max_runs: usize,
 ) -> PyResult<(String, String)> {
-    use jacobs_ladder::scene::sweep::{Param, Values};
-    let base = base.map_or_else(Scene::default, |s| s.scene.clone());
-    let mut scene = kwargs::apply(&base, kwargs).py_err()?;
-    if let OutputSpec::Sweep(spec) = &mut scene.output {
-        for (name, values) in grid {
-            let param = Param::from_name(&name)
-                .ok_or_else(|| Error::bad_input(format!("{name}: not a sweep parameter")))
-                .py_err()?;
-            let values: Values = serde_json::from_str(&values)
-                .map_err(|e| Error::bad_input(format!("{name}: {e}")))
-                .py_err()?;
-            spec.grid.0.push((param, values));
-        }
-    }
-    let scene = kwargs::checked(scene).py_err()?;
+    let scene = sweep_scene(base, kwargs, grid).py_err()?;
     work::run(py, move |stop| sweep_tables(&scene, max_runs, stop))
+}
+
+/// `sweep(..., executor=EX)`, first step: the sweep scene as JSON (what a
+/// chunk is sent) and its number of chunks (`chunks`, checked, or the
+/// default for its size), every check of the whole sweep made (runs, the files' estimated bytes).
+#[pyfunction]
+#[pyo3(signature = (base, kwargs, grid, max_runs, chunks))]
+fn sweep_prepare(
+    base: Option<&scene::PyScene>,
+    kwargs: &str,
+    grid: Vec<(String, String)>,
+    max_runs: usize,
+    chunks: Option<usize>,
+) -> PyResult<(String, usize)> {
+    use jacobs_ladder::front;
+    let scene = sweep_scene(base, kwargs, grid).py_err()?;
+    let plan = front::sweep::plan(&scene, max_runs, &|runs| format!("max_runs={runs}")).py_err()?;
+    jacobs_ladder::sweep::json::check_estimate(&plan, &jacobs_ladder::limits::Limits::active())
+        .map_err(Error::from)
+        .py_err()?;
+    let json = serde_json::to_string(&scene)
+        .map_err(|e| Error::failed(format!("cannot encode the scene: {e}")))
+        .py_err()?;
+    let chunks = match chunks {
+        None => front::executor::default_chunks(plan.len()),
+        Some(c) => {
+            front::executor::check_chunks(c, plan.len()).py_err()?;
+            c
+        }
+    };
+    Ok((json, chunks))
+}
+
+/// Runs chunk `k` of `chunks` of the sweep scene `scene` (JSON, from
+/// [`sweep_prepare`]), in a worker; returns its shard file's bytes.
+#[pyfunction]
+fn sweep_chunk<'py>(
+    py: Python<'py>,
+    scene: &str,
+    max_runs: usize,
+    k: usize,
+    chunks: usize,
+) -> PyResult<Bound<'py, pyo3::types::PyBytes>> {
+    let scene: Scene = serde_json::from_str(scene)
+        .map_err(|e| Error::bad_input(format!("not a sweep scene: {e}")))
+        .py_err()?;
+    let scene = kwargs::checked(scene).py_err()?;
+    let bytes = work::run(py, move |stop| {
+        let tick = || stop.check(0.0);
+        let between = || stop.check(0.0);
+        jacobs_ladder::front::executor::run_chunk(&scene, max_runs, k, chunks, &tick, &between)
+    })?;
+    Ok(pyo3::types::PyBytes::new(py, &bytes))
+}
+
+/// Merges the chunks' shard files (through a fresh folder `dir`) by the
+/// code that gathers shards; returns (CSV, JSON) as [`sweep`] does.
+#[pyfunction]
+fn sweep_gather(
+    py: Python<'_>,
+    dir: std::path::PathBuf,
+    chunks: Vec<Bound<'_, pyo3::types::PyBytes>>,
+    max_runs: usize,
+) -> PyResult<(String, String)> {
+    use pyo3::types::PyBytesMethods;
+    let chunks: Vec<Vec<u8>> = chunks.iter().map(|b| b.as_bytes().to_vec()).collect();
+    work::run(py, move |_| {
+        jacobs_ladder::front::executor::gather(&dir, &chunks, max_runs)
+    })
 }
 
 fn sweep_tables(scene: &Scene, max_runs: usize, stop: &work::Stop) -> Result<(String, String)> {
@@ -117,9 +193,13 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(theory, m)?)?;
     m.add_function(wrap_pyfunction!(sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep_prepare, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep_chunk, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep_gather, m)?)?;
     m.add_function(wrap_pyfunction!(catalogue, m)?)?;
     m.add_class::<scene::PyScene>()?;
     m.add("RunError", m.py().get_type::<errors::RunError>())?;
+    m.add("InternalError", m.py().get_type::<errors::InternalError>())?;
     m.add("VERSION", jacobs_ladder::version::LONG)?;
     Ok(())
 }
