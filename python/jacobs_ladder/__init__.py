@@ -67,29 +67,6 @@ __version__ = "0.1.0"
 ENGINE_VERSION: str = _native.VERSION
 
 
-def _plain(value: Any) -> Any:
-    """numpy scalars and arrays as plain Python for JSON."""
-    if isinstance(value, np.generic):
-        return value.item()
-    if isinstance(value, np.ndarray):
-        return value.tolist()
-    if isinstance(value, (tuple, set, frozenset)):
-        return list(value)
-    if isinstance(value, os.PathLike):
-        return os.fspath(value)
-    raise TypeError(f"{type(value).__name__} is not a scene value")
-
-
-def _keywords(kwargs: Mapping[str, Any]) -> str:
-    """The keywords as the JSON object the engine merges into a scene
-    (None means: keep the scene's value)."""
-    given = {k: v for k, v in kwargs.items() if v is not None}
-    try:
-        return json.dumps(given, default=_plain, allow_nan=True)
-    except TypeError as e:
-        raise ValueError(f"keywords must be numbers, strings, lists or dicts: {e}") from None
-
-
 # ---------------------------------------------------------------- runs
 
 
@@ -265,8 +242,7 @@ def simulate(
         integrator=integrator, dt=dt, rtol=rtol, tolerance=tolerance,
     )
     kw.update(scene_keys)
-    times = None if samples is None else [float(t) for t in samples]
-    return Run(_native.simulate(_keywords(kw), sample_every, times))
+    return Run(_native.simulate(kw, sample_every, samples))
 
 
 def theory(alpha: float = 60.0, n: int = 10, b: float = 1.3) -> Dict[str, Any]:
@@ -278,7 +254,7 @@ def theory(alpha: float = 60.0, n: int = 10, b: float = 1.3) -> Dict[str, Any]:
     - ``n``: blocks of the finite chain, 2 to 400. Default 10.
     - ``b``: rest length of the B springs, s. Default 1.3.
     """
-    return json.loads(_native.theory(float(alpha), int(n), float(b)))
+    return json.loads(_native.theory(alpha, n, b))
 
 
 def catalogue() -> List[Tuple[str, str, str]]:
@@ -291,14 +267,6 @@ def catalogue() -> List[Tuple[str, str, str]]:
 # The render options' defaults (frames, size, fps, scale, formats) are the
 # library's (jacobs_ladder::front::options::RenderOptions): a keyword left
 # at None is not sent.
-    w, h = size
-    return int(w), int(h)
-
-
-def _format(fmt: Union[str, Sequence[str], None]) -> Optional[str]:
-    if fmt is None or isinstance(fmt, str):
-        return fmt
-    return ",".join(fmt)
 
 
 class Scene:
@@ -313,7 +281,7 @@ class Scene:
 
     def __init__(self, **keys: Any):
         base = _native._Scene.from_json("{}")
-        self._s = base.replace(_keywords(keys)) if keys else base
+        self._s = base.replace(keys) if keys else base
 
     def __reduce__(self):
         # A scene travels as its JSON (every key written out), checked again
@@ -369,7 +337,7 @@ class Scene:
         ``n``, ``t_end``, ``flips``, ...), any scene key (``name``,
         ``title``, ``model={...}``, ``output={"kind": "filmstrip", ...}``)
         or a dotted key path (``**{"output.camera": "follow"}``)."""
-        return self._wrap(self._s.replace(_keywords(keys)))
+        return self._wrap(self._s.replace(keys))
 
     @property
     def name(self) -> str:
@@ -396,12 +364,11 @@ class Scene:
         """Simulate run ``index`` of the scene (its only one, for most), as
         :func:`simulate` does; samples every ``sample_every`` τ (default 10)
         or at ``samples``."""
-        times = None if samples is None else [float(t) for t in samples]
-        return Run(self._s.simulate(sample_every, times, index), self)
+        return Run(self._s.simulate(sample_every, samples, index), self)
 
     def _args(self, format, frames, size, fps, scale):
         return dict(
-            formats=_format(format),
+            format=format,
             frames=frames,
             size=size,
             fps=fps,
@@ -677,17 +644,15 @@ def sweep(
     if name is not None:
         keys["name"] = name
     native = None if base is None else base._s
-    axes = [(k, json.dumps(v, default=_plain)) for k, v in rest]
+    axes = list(rest)
     if executor is None:
         if chunks is not None:
             raise ValueError("chunks: cuts the grid for an executor; give executor= too")
-        csv_text, json_text = _native.sweep(native, _keywords(keys), axes, int(max_runs))
+        csv_text, json_text = _native.sweep(native, keys, axes, max_runs)
         return Table(csv_text, json_text)
-    scene, count = _native.sweep_prepare(
-        native, _keywords(keys), axes, int(max_runs), None if chunks is None else int(chunks)
-    )
+    scene, max_runs, count = _native.sweep_prepare(native, keys, axes, max_runs, chunks)
     futures = [
-        executor.submit(_sweep_chunk, scene, int(max_runs), k, count) for k in range(1, count + 1)
+        executor.submit(_sweep_chunk, scene, max_runs, k, count) for k in range(1, count + 1)
     ]
     try:
         shards = [f.result() for f in futures]
@@ -698,7 +663,7 @@ def sweep(
     import tempfile
 
     with tempfile.TemporaryDirectory(prefix="jacobs-ladder-sweep-") as tmp:
-        csv_text, json_text = _native.sweep_gather(tmp, shards, int(max_runs))
+        csv_text, json_text = _native.sweep_gather(tmp, shards, max_runs)
     return Table(csv_text, json_text)
 
 

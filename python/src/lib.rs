@@ -7,6 +7,7 @@
 //! these functions with keyword signatures, docstrings and Jupyter display.
 
 mod arrays;
+mod convert;
 mod errors;
 mod kwargs;
 mod scene;
@@ -17,6 +18,7 @@ use jacobs_ladder::catalog;
 use jacobs_ladder::scene::{OutputSpec, Scene};
 use jacobs_ladder::{Error, Result};
 use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
 
 /// `simulate(**keywords)`: the paper's scene with the keywords applied (a
 /// data run), simulated; samples every `sample_every` τ or at `samples`.
@@ -24,21 +26,31 @@ use pyo3::prelude::*;
 #[pyo3(signature = (kwargs, sample_every=None, samples=None))]
 fn simulate<'py>(
     py: Python<'py>,
-    kwargs: &str,
-    sample_every: Option<f64>,
-    samples: Option<Vec<f64>>,
-) -> PyResult<Bound<'py, pyo3::types::PyDict>> {
+    kwargs: &Bound<'py, PyDict>,
+    sample_every: Option<&Bound<'py, PyAny>>,
+    samples: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
     let base = Scene {
         output: OutputSpec::Data,
         ..Scene::default()
     };
-    let scene = kwargs::apply(&base, kwargs).py_err()?;
+    let scene = kwargs::apply(&base, convert::keywords(kwargs)?).py_err()?;
     scene::simulate_scene(py, scene, sample_every, samples)
 }
 
 /// `theory(alpha, n, b)`: the numbers of `ladder theory --json`, as JSON.
 #[pyfunction]
-fn theory(py: Python<'_>, alpha: f64, n: usize, b: f64) -> PyResult<String> {
+fn theory(
+    py: Python<'_>,
+    alpha: &Bound<'_, PyAny>,
+    n: &Bound<'_, PyAny>,
+    b: &Bound<'_, PyAny>,
+) -> PyResult<String> {
+    let number = |o: &Bound<'_, PyAny>, key: &str| {
+        convert::number_or_none(Some(o), key)?
+            .ok_or_else(|| convert::bad(key, "must be a finite number, got None"))
+    };
+    let (alpha, n, b) = (number(alpha, "alpha")?, convert::whole(n, "n")?, number(b, "b")?);
     work::run(py, move |_| {
         let m = jacobs_ladder::scene::Model::default();
         let params = jacobs_ladder::model::Params::new(n, b, alpha, m.gamma, m.gravity, m.inertia)?;
@@ -49,26 +61,29 @@ fn theory(py: Python<'_>, alpha: f64, n: usize, b: f64) -> PyResult<String> {
 
 /// The sweep scene: the base scene with `kwargs` applied (its `output`
 /// the sweep with its first axis), the axes `grid` added in their order
-/// (each a parameter's name and its values as JSON: a JSON object would
-/// lose the order), checked whole.
+/// (a list of (name, values): a JSON object would lose the order),
+/// checked whole.
 fn sweep_scene(
     base: Option<&scene::PyScene>,
-    kwargs: &str,
-    grid: Vec<(String, String)>,
-) -> Result<Scene> {
+    kwargs: &Bound<'_, PyDict>,
+    grid: &Bound<'_, PyList>,
+) -> PyResult<Scene> {
     use jacobs_ladder::scene::sweep::{Param, Values};
     let base = base.map_or_else(Scene::default, |s| s.scene.clone());
-    let mut scene = kwargs::apply(&base, kwargs)?;
+    let mut scene = kwargs::apply(&base, convert::keywords(kwargs)?).py_err()?;
     if let OutputSpec::Sweep(spec) = &mut scene.output {
-        for (name, values) in grid {
+        for item in grid.iter() {
+            let (name, values): (String, Bound<'_, PyAny>) = item.extract()?;
             let param = Param::from_name(&name)
-                .ok_or_else(|| Error::bad_input(format!("{name}: not a sweep parameter")))?;
-            let values: Values = serde_json::from_str(&values)
-                .map_err(|e| Error::bad_input(format!("{name}: {e}")))?;
+                .ok_or_else(|| Error::bad_input(format!("{name}: not a sweep parameter")))
+                .py_err()?;
+            let values: Values = serde_json::from_value(convert::value(&values, &name, 0)?)
+                .map_err(|e| Error::bad_input(format!("{name}: {e}")))
+                .py_err()?;
             spec.grid.0.push((param, values));
         }
     }
-    kwargs::checked(scene)
+    kwargs::checked(scene).py_err()
 }
 
 /// `sweep`: the sweep scene ([`sweep_scene`]) run whole; returns (CSV,
@@ -78,11 +93,12 @@ fn sweep_scene(
 fn sweep(
     py: Python<'_>,
     base: Option<&scene::PyScene>,
-    kwargs: &str,
-    grid: Vec<(String, String)>,
-    max_runs: usize,
+    kwargs: &Bound<'_, PyDict>,
+    grid: &Bound<'_, PyList>,
+    max_runs: &Bound<'_, PyAny>,
 ) -> PyResult<(String, String)> {
-    let scene = sweep_scene(base, kwargs, grid).py_err()?;
+    let max_runs = convert::whole(max_runs, "max_runs")?;
+    let scene = sweep_scene(base, kwargs, grid)?;
     work::run(py, move |stop| sweep_tables(&scene, max_runs, stop))
 }
 
@@ -93,13 +109,15 @@ fn sweep(
 #[pyo3(signature = (base, kwargs, grid, max_runs, chunks))]
 fn sweep_prepare(
     base: Option<&scene::PyScene>,
-    kwargs: &str,
-    grid: Vec<(String, String)>,
-    max_runs: usize,
-    chunks: Option<usize>,
-) -> PyResult<(String, usize)> {
+    kwargs: &Bound<'_, PyDict>,
+    grid: &Bound<'_, PyList>,
+    max_runs: &Bound<'_, PyAny>,
+    chunks: Option<&Bound<'_, PyAny>>,
+) -> PyResult<(String, usize, usize)> {
     use jacobs_ladder::front;
-    let scene = sweep_scene(base, kwargs, grid).py_err()?;
+    let max_runs = convert::whole(max_runs, "max_runs")?;
+    let chunks = convert::whole_or_none(chunks, "chunks")?;
+    let scene = sweep_scene(base, kwargs, grid)?;
     let plan = front::sweep::plan(&scene, max_runs, &|runs| format!("max_runs={runs}")).py_err()?;
     jacobs_ladder::sweep::json::check_estimate(&plan, &jacobs_ladder::limits::Limits::active())
         .map_err(Error::from)
@@ -114,7 +132,7 @@ fn sweep_prepare(
             c
         }
     };
-    Ok((json, chunks))
+    Ok((json, max_runs, chunks))
 }
 
 /// Runs chunk `k` of `chunks` of the sweep scene `scene` (JSON, from
