@@ -177,38 +177,42 @@ class Run:
         wave = "kink" if alpha is not None and alpha >= 0 else "antikink"
         flipped = int(np.count_nonzero(~np.isnan(self.arrival_times)))
         integ = self.integrator
+        t_end = self.record.get("t_end")
+        if not isinstance(t_end, (int, float)):  # "auto": the window it reached
+            t_end = float(self.t[-1]) if len(self.t) else float("nan")
         return (
             f"<Run {wave} α = {alpha:g}°, N = {self.n}, b = {m.get('b'):g}, "
-            f"γ = {m.get('gamma'):g}: t = 0..{self.record.get('t_end'):g} τ, "
+            f"γ = {m.get('gamma'):g}: t = 0..{t_end:g} τ, "
             f"{len(self.t)} samples, {flipped}/{self.n} blocks flipped, "
             f"{integ['name']} dt = {integ['dt']:g} ({integ['requested']})>"
         )
 
 
 def simulate(
-    alpha: float = 60.0,
-    n: int = 10,
-    b: float = 1.3,
-    gamma: float = 0.02,
-    gravity: float = 2e-4,
-    inertia: float = 0.25,
-    drive_time: float = 1000.0,
+    alpha: Optional[float] = None,
+    n: Optional[int] = None,
+    b: Optional[float] = None,
+    gamma: Optional[float] = None,
+    gravity: Optional[float] = None,
+    inertia: Optional[float] = None,
+    drive_time: Optional[float] = None,
     flips: Optional[Sequence[float]] = None,
-    t_end: float = 4000.0,
-    integrator: str = "auto",
+    t_end: Union[float, str, None] = None,
+    integrator: Optional[str] = None,
     *,
     dt: Optional[float] = None,
     rtol: Optional[float] = None,
     tolerance: Optional[float] = None,
     second_flip: Optional[float] = None,
-    sample_every: float = 10.0,
+    sample_every: Optional[float] = None,
     samples: Optional[Sequence[float]] = None,
     **scene_keys: Any,
 ) -> Run:
     """Simulate the ladder and return a :class:`Run` of numpy arrays.
 
     The keywords are ``ladder simulate``'s long flags with underscores;
-    defaults are the paper's values:
+    a keyword left out (None) keeps the engine's default, the paper's
+    value:
 
     - ``alpha``: equilibrium angle α, degrees, 0 < |α| < 90; its sign picks
       the wave (α > 0 kink, α < 0 antikink). Default 60.
@@ -487,7 +491,9 @@ class Image(bytes):
             return f'<video controls loop autoplay muted src="data:{mime};base64,{b64}"></video>'
         if fmt == "pdf":
             return f'<embed type="{mime}" width="100%" height="480" src="data:{mime};base64,{b64}">'
-        return f'<img alt="{self.name}" src="data:{mime};base64,{b64}">'
+        import html
+
+        return f'<img alt="{html.escape(self.name)}" src="data:{mime};base64,{b64}">'
 
     def save(self, path: Union[str, os.PathLike]) -> Path:
         """Write the bytes to ``path`` (a folder: under the file's name)."""
@@ -510,7 +516,9 @@ class Files(dict):
         for name, img in self.items():
             html = img._repr_html_() if isinstance(img, Image) else None
             if html:
-                parts.append(f"<figure>{html}<figcaption>{name}</figcaption></figure>")
+                import html as _html
+
+                parts.append(f"<figure>{html}<figcaption>{_html.escape(name)}</figcaption></figure>")
         return "".join(parts) or None
 
     def __repr__(self) -> str:
@@ -671,3 +679,9 @@ def _sweep_chunk(scene: str, max_runs: int, k: int, chunks: int) -> bytes:
     """Chunk ``k`` of ``chunks`` of a sweep, run in an executor's worker:
     the bytes of its shard file."""
     return _native.sweep_chunk(scene, max_runs, k, chunks)
+
+
+def __dir__() -> List[str]:
+    """The public names only (``dir(jl)``, tab completion): not the
+    helpers this module imports (typing, json, os, numpy)."""
+    return sorted(set(__all__) | {"ENGINE_VERSION", "SWEEP_PARAMETERS"})

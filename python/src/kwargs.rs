@@ -124,6 +124,22 @@ fn drive_args(kwargs: &Map<String, Value>) -> Result<DriveKeywords> {
         get(kwargs, "flips", "a list of start times in τ")?,
         get(kwargs, "second_flip", "a time in τ")?,
     );
+    // Checked here, in the keywords' words (the scene would name the
+    // flips they reshape).
+    if let Some(t) = args.0
+        && !(t.is_finite() && t > 0.0)
+    {
+        return Err(Error::bad_input(format!(
+            "drive_time: must be a finite time > 0, got {t}"
+        )));
+    }
+    if let Some(t) = args.2
+        && !(t.is_finite() && t >= 0.0)
+    {
+        return Err(Error::bad_input(format!(
+            "second_flip: must be a finite time >= 0, got {t}"
+        )));
+    }
     if args.1.is_some() && args.2.is_some() {
         return Err(Error::bad_input(
             "flips and second_flip: give one (second_flip=T is flips=[0, T])",

@@ -310,6 +310,8 @@ pub fn simulate_scene<'py>(
     };
     let sample_every = convert::number_or_none(sample_every, "sample_every")?;
     let out = work::run(py, move |stop| {
+        // `t_end = "auto"` resolved first: the samples reach its end.
+        let scene = scene.with_auto_window()?;
         let times = match samples {
             Some(t) => t,
             None => sample_times(&scene, sample_every.unwrap_or(DEFAULT_SAMPLE_EVERY))?,
@@ -333,6 +335,15 @@ fn sample_times(scene: &Scene, every: f64) -> Result<Vec<f64>> {
         )));
     }
     let count = (scene.run.t_end / every).floor() + 1.0;
-    jacobs_ladder::limits::Limits::active().check_samples(count, scene.model.n)?;
+    jacobs_ladder::limits::Limits::active()
+        .check_samples(count, scene.model.n)
+        .map_err(|e| {
+            Error::bad_input(format!(
+                "sample_every: every {every} τ up to t_end = {} τ: {}; give a larger \
+                 sample_every, a shorter t_end or samples=[...]",
+                scene.run.t_end,
+                Error::from(e)
+            ))
+        })?;
     Ok((0..count as usize).map(|k| k as f64 * every).collect())
 }
