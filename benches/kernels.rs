@@ -14,6 +14,7 @@
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use jacobs_ladder::bench::kernels::sweep_scenarios;
 use jacobs_ladder::model::Params;
+use jacobs_ladder::sim::RunOptions;
 use jacobs_ladder::sim::{self, IntegratorConfig, Scenario, Stepping, batch};
 use rayon::prelude::*;
 use std::hint::black_box;
@@ -33,9 +34,16 @@ fn block_step_vs_n(c: &mut Criterion) {
         let steps = (BLOCK_STEPS / n as f64).ceil().max(100.0);
         let params = Params::paper(60.0).unwrap().with(n, 1.3, 60.0).unwrap();
         let scenario = Scenario::single_flip(params, 1000.0, steps * config.dt).unwrap();
-        let per_run = sim::simulate_until(&scenario, &config, Stepping::Portable, &sim::run_to_end)
-            .unwrap()
-            .steps;
+        let per_run = sim::run(
+            &scenario,
+            &[],
+            &config,
+            &RunOptions::default()
+                .stepping(Stepping::Portable)
+                .every_step(false),
+        )
+        .unwrap()
+        .steps;
         group.throughput(Throughput::Elements(per_run * n as u64));
         for (name, stepping) in [
             ("fastest", Stepping::Fastest),
@@ -43,8 +51,13 @@ fn block_step_vs_n(c: &mut Criterion) {
         ] {
             group.bench_function(format!("{name}/{n}"), |b| {
                 b.iter(|| {
-                    sim::simulate_until(black_box(&scenario), &config, stepping, &sim::run_to_end)
-                        .unwrap()
+                    sim::run(
+                        black_box(&scenario),
+                        &[],
+                        &config,
+                        &RunOptions::default().stepping(stepping).every_step(false),
+                    )
+                    .unwrap()
                 })
             });
         }
@@ -61,23 +74,24 @@ fn block_step_vs_runs(c: &mut Criterion) {
         .measurement_time(Duration::from_secs(2));
     for runs in [1, 2, 8, 16, 64, 256, 1000] {
         let scenarios = sweep_scenarios(runs, 10, 100.0).unwrap();
+        // One run alone, as the batch kernel runs it (the wave tracker fed
+        // at the checks).
+        let alone = RunOptions::default()
+            .stepping(Stepping::Fastest)
+            .every_step(false);
         let steps: u64 = scenarios
             .iter()
-            .map(|sc| {
-                sim::simulate_until(sc, &config, Stepping::Fastest, &sim::run_to_end)
-                    .unwrap()
-                    .steps
-            })
+            .map(|sc| sim::run(sc, &[], &config, &alone).unwrap().steps)
             .sum();
         group.throughput(Throughput::Elements(steps * 10));
         group.bench_function(format!("batch/{runs}"), |b| {
-            b.iter(|| batch::simulate_many(black_box(&scenarios), &config, &sim::run_to_end))
+            b.iter(|| batch::simulate_many(black_box(&scenarios), &config, &RunOptions::default()))
         });
         group.bench_function(format!("one_by_one/{runs}"), |b| {
             b.iter(|| {
                 black_box(&scenarios)
                     .par_iter()
-                    .map(|sc| sim::simulate_until(sc, &config, Stepping::Fastest, &sim::run_to_end))
+                    .map(|sc| sim::run(sc, &[], &config, &alone))
                     .collect::<Vec<_>>()
             })
         });

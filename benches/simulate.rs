@@ -6,6 +6,7 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use jacobs_ladder::model::ladder::ForceScratch;
 use jacobs_ladder::model::{Ladder, Params};
+use jacobs_ladder::sim::RunOptions;
 use jacobs_ladder::sim::{self, IntegratorConfig, Isa, Scenario, Stepping};
 use std::hint::black_box;
 
@@ -22,7 +23,15 @@ fn paper_run(c: &mut Criterion) {
     ];
     for (name, stepping) in steppings {
         group.bench_function(format!("paper_kink_4e5_steps/{name}"), |b| {
-            b.iter(|| sim::simulate_with(black_box(&scenario), &[], &config, stepping).unwrap())
+            b.iter(|| {
+                sim::run(
+                    black_box(&scenario),
+                    &[],
+                    &config,
+                    &RunOptions::default().stepping(stepping),
+                )
+                .unwrap()
+            })
         });
     }
     group.finish();

@@ -76,13 +76,16 @@ fn run() -> Result<(), String> {
         "reached" => &reached,
         other => return Err(format!("unknown stop rule {other}")),
     };
+    let options = sim::RunOptions::default().stop(stop);
     let start = Instant::now();
     let results = match mode.as_str() {
-        "batch" => batch::simulate_many(&scenarios, &config, stop),
-        "portable" => batch::simulate_many_with(&scenarios, &config, Stepping::Portable, stop),
+        "batch" => batch::simulate_many(&scenarios, &config, &options),
+        "portable" => {
+            batch::simulate_many(&scenarios, &config, &options.stepping(Stepping::Portable))
+        }
         "one-by-one" => scenarios
             .par_iter()
-            .map(|sc| sim::simulate_until(sc, &config, Stepping::Fastest, stop))
+            .map(|sc| sim::run(sc, &[], &config, &options.every_step(false)))
             .collect(),
         other => return Err(format!("unknown mode {other}")),
     };

@@ -32,7 +32,13 @@ fn allocations(n: usize, t_end: f64, config: &IntegratorConfig, stepping: Steppi
     let scenario = Scenario::single_flip(params, 1000.0, t_end).unwrap();
     heap::count_this_thread(true);
     let before = heap::allocations();
-    let traj = sim::simulate_with(&scenario, &[], config, stepping).unwrap();
+    let traj = sim::run(
+        &scenario,
+        &[],
+        config,
+        &sim::RunOptions::default().stepping(stepping),
+    )
+    .unwrap();
     let after = heap::allocations();
     assert!(traj.steps > 0);
     after - before

@@ -309,7 +309,8 @@ fn simulation_bound(n: usize, samples: usize) -> f64 {
 #[test]
 fn a_simulation_at_the_cap_on_samples_stays_within_its_bound() {
     use jacobs_ladder::model::Params;
-    use jacobs_ladder::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Stepping};
+    use jacobs_ladder::sim::RunOptions;
+    use jacobs_ladder::sim::{self, IntegratorConfig, IntegratorKind, Scenario};
     let _one = lock();
     let limits = Limits::default();
     let n = 100_000;
@@ -323,13 +324,11 @@ fn a_simulation_at_the_cap_on_samples_stays_within_its_bound() {
     let times = |k: usize| -> Vec<f64> { (1..=k).map(|i| t_end * i as f64 / k as f64).collect() };
     // One more sample: refused before any work.
     let (refused, peak, _) = measure(|| {
-        sim::simulate_limited(
+        sim::run(
             &scenario,
             &times(samples + 1),
             &config,
-            Stepping::Fastest,
-            &limits,
-            &|_| {},
+            &RunOptions::default().limits(limits),
         )
     });
     match refused {
@@ -342,13 +341,11 @@ fn a_simulation_at_the_cap_on_samples_stays_within_its_bound() {
     assert!(peak < 10_000_000, "refused before any work: {peak} bytes");
     let start = std::time::Instant::now();
     let (traj, peak, _) = measure(|| {
-        sim::simulate_limited(
+        sim::run(
             &scenario,
             &times(samples),
             &config,
-            Stepping::Fastest,
-            &limits,
-            &|_| {},
+            &RunOptions::default().limits(limits),
         )
         .unwrap()
     });

@@ -316,8 +316,11 @@ pub fn simulate_scene<'py>(
             Some(t) => t,
             None => sample_times(&scene, sample_every.unwrap_or(DEFAULT_SAMPLE_EVERY))?,
         };
-        let stepping = jacobs_ladder::sim::Stepping::Fastest;
-        let run = scenes::run::simulate_with(&scene, &times, stepping, &|t| stop.check(t))?;
+        let progress = |t: f64| stop.check(t);
+        let options = jacobs_ladder::sim::RunOptions::default()
+            .limits(jacobs_ladder::limits::Limits::active())
+            .progress(&progress);
+        let run = scenes::run::simulate_with(&scene, &times, &options)?;
         arrays::arrays(&scene, run)
     })?;
     out.into_dict(py)

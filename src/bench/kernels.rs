@@ -150,11 +150,20 @@ fn workload(
             progress(&format!("round {} of {rounds}, {what}, {name}", round + 1));
             let start = Instant::now();
             let runs = if *as_batch || *stepping == Stepping::Portable {
-                batch::simulate_many_with(scenarios, &config, *stepping, &sim::run_to_end)
+                batch::simulate_many(
+                    scenarios,
+                    &config,
+                    &sim::RunOptions::default().stepping(*stepping),
+                )
             } else {
                 scenarios
                     .par_iter()
-                    .map(|sc| sim::simulate_until(sc, &config, *stepping, &sim::run_to_end))
+                    .map(|sc| {
+                        let options = sim::RunOptions::default()
+                            .stepping(*stepping)
+                            .every_step(false);
+                        sim::run(sc, &[], &config, &options)
+                    })
                     .collect()
             };
             times[k].push(start.elapsed().as_secs_f64() * 1e3);
@@ -216,7 +225,12 @@ pub fn kernels(rounds: usize, progress: &dyn Fn(&str)) -> Result<KernelReport> {
         for (k, (name, stepping)) in kernels.iter().enumerate() {
             progress(&format!("round {} of {rounds}, {name}", round + 1));
             let start = Instant::now();
-            let traj = sim::simulate_with(&scenario, &[], &config, *stepping)?;
+            let traj = sim::run(
+                &scenario,
+                &[],
+                &config,
+                &sim::RunOptions::default().stepping(*stepping),
+            )?;
             times[k].push(start.elapsed().as_secs_f64() * 1e3);
             results[k] = Some(traj);
         }

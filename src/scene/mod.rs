@@ -254,7 +254,8 @@ impl Scene {
                     &scenario.ladder.params,
                 )?),
             };
-            t_end = t_end.max(crate::sim::window::auto_window(&scenario, &config)?.t_end);
+            let options = crate::sim::RunOptions::default().limits(crate::limits::Limits::active());
+            t_end = t_end.max(crate::sim::window::auto_window(&scenario, &config, &options)?.t_end);
         }
         out.run.t_end = if t_end > 0.0 {
             t_end

@@ -4,7 +4,7 @@
 
 use crate::error::Result;
 use crate::scene::{Method, Scene};
-use crate::sim::{self, IntegratorConfig, Stepping, Trajectory};
+use crate::sim::{self, IntegratorConfig, RunOptions, Trajectory};
 use serde::Serialize;
 
 /// A simulated scene: its trajectory and how it was computed.
@@ -107,28 +107,24 @@ pub fn check_cost(scene: &Scene, samples: usize) -> Result<()> {
     Ok(())
 }
 
-/// Runs a single-run scene, recording the state at `samples`.
+/// Runs a single-run scene, recording the state at `samples`, with the
+/// default run options within the caps in force.
 pub fn simulate(scene: &Scene, samples: &[f64]) -> Result<SceneRun> {
-    simulate_with(scene, samples, Stepping::Fastest, &|_| {})
+    let options = RunOptions::default().limits(crate::limits::Limits::active());
+    simulate_with(scene, samples, &options)
 }
 
-/// As [`simulate`], with symplectic Euler's steps taken as `stepping`
-/// says (the same numbers whatever it is; `sim::fused`), telling
-/// `progress` the simulated time as the runs go.
-pub fn simulate_with(
-    scene: &Scene,
-    samples: &[f64],
-    stepping: Stepping,
-    progress: &(dyn Fn(f64) + Sync),
-) -> Result<SceneRun> {
+/// As [`simulate`], as `options` say (their stepping, caps, progress and
+/// whether the dissipated energy is recorded; `sim::RunOptions`). The
+/// stop rule should be `run_to_end`: a scene runs to its t_end.
+pub fn simulate_with(scene: &Scene, samples: &[f64], options: &RunOptions) -> Result<SceneRun> {
     // `t_end = "auto"` resolved here for callers that did not (a no-op
     // when it is a number).
     let scene = &scene.with_auto_window()?;
     let scenario = scene.scenario()?;
     match scene.run.fixed_config()? {
         Some(config) => {
-            let trajectory =
-                sim::simulate_observed(&scenario, samples, &config, stepping, progress)?;
+            let trajectory = sim::run(&scenario, samples, &config, options)?;
             Ok(SceneRun {
                 integrator: fixed_report(scene, &config, &trajectory),
                 trajectory,
@@ -137,12 +133,12 @@ pub fn simulate_with(
         None => {
             let params = scene.model.params()?;
             let omega_max = crate::theory::dispersion::omega_max_clamped(&params)?;
-            let v = sim::auto::simulate_verified_observed(
+            let v = sim::auto::simulate_verified(
                 &scenario,
                 samples,
                 scene.run.tolerance,
                 omega_max,
-                progress,
+                options,
             )?;
             Ok(SceneRun {
                 integrator: IntegratorReport {

@@ -18,10 +18,7 @@
 //! never computes past the cap. Every halving down to dt / 2^[`MAX_HALVINGS`]
 //! would be about 2^11 − 1 = 2047 times the first run.
 
-use super::{
-    Cost, IntegratorConfig, IntegratorKind, Scenario, Stepping, Trajectory, check_cost,
-    simulate_observed,
-};
+use super::{Cost, IntegratorConfig, IntegratorKind, RunOptions, Scenario, Trajectory, check_cost};
 use crate::error::{Error, Result, num};
 use crate::limits::{Limits, Resource};
 
@@ -48,28 +45,21 @@ pub struct Verified {
 /// `omega_max` (highest normal mode of the clamped chain) allows until two
 /// successive runs flip the same blocks and agree on every arrival time
 /// within `tolerance` (τ). Samples are recorded on the returned run only.
+/// Every run is made as `options` say (its caps, progress and stepping;
+/// the stop rule should be `run_to_end`, as a run ended early cannot be
+/// compared).
 pub fn simulate_verified(
     scenario: &Scenario,
     sample_times: &[f64],
     tolerance: f64,
     omega_max: f64,
-) -> Result<Verified> {
-    simulate_verified_observed(scenario, sample_times, tolerance, omega_max, &|_| {})
-}
-
-/// As [`simulate_verified`], telling `progress` the simulated time of the
-/// runs as they go (for a progress bar).
-pub fn simulate_verified_observed(
-    scenario: &Scenario,
-    sample_times: &[f64],
-    tolerance: f64,
-    omega_max: f64,
-    progress: &(dyn Fn(f64) + Sync),
+    options: &RunOptions,
 ) -> Result<Verified> {
     let simulate = |scenario: &Scenario, samples: &[f64], config: &IntegratorConfig| {
-        simulate_observed(scenario, samples, config, Stepping::Fastest, progress)
+        super::run(scenario, samples, config, options)
     };
-    let budget = worst_case(scenario, sample_times.len(), omega_max, &Limits::active())?;
+    let limits = &options.limits;
+    let budget = worst_case(scenario, sample_times.len(), omega_max, limits)?;
     let mut dt = budget.dt;
     let mut total = 0;
     // The first pair of runs is independent: both cores take one each.
@@ -134,7 +124,7 @@ pub fn simulate_verified_observed(
         return Err(Error::Limit(crate::limits::LimitExceeded {
             resource: Resource::BlockSteps,
             value: next,
-            cap: Limits::active().cap(Resource::BlockSteps),
+            cap: limits.cap(Resource::BlockSteps),
             detail: format!(
                 "the auto integrator's runs with one more halving of the step, to verify this \
                  run within {tolerance} τ: at dt = {} τ {what}; or raise the tolerance, or name \

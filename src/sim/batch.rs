@@ -4,16 +4,16 @@
 //! leaves its lane to the next run in the queue; every core runs such a
 //! vector of lanes, taking runs from one shared queue.
 //!
-//! Every run's trajectory is the one [`sim::simulate_until`] gives it on the
+//! Every run's trajectory is the one [`sim::run`] gives it on the
 //! portable path, bit for bit: the same steps (the same subdivision of the
 //! intervals between drive corners and t_end), the same operations in the
 //! same order in every lane (`batch/kernel.rs`), the same arrival test, the
 //! same divergence checks at the same times with the same messages, and
 //! the same stop rule asked at the same times (tests/batch.rs checks it).
 //! Runs with another integrator, or on a CPU without AVX2, are run one by
-//! one on every core, through [`sim::simulate_until`].
+//! one on every core, through [`sim::run`].
 //!
-//! [`sim::simulate_until`]: super::simulate_until
+//! [`sim::run`]: super::run
 
 #[cfg(target_arch = "x86_64")]
 mod kernel;
@@ -23,8 +23,8 @@ use super::observables::ArrivalDetector;
 use super::protocol::{Drive, Piece};
 use super::waves::WaveTracker;
 use super::{
-    DivergenceWatch, IntegratorConfig, IntegratorKind, Isa, Rhs, Scenario, State, Stepping,
-    StopRule, StopView, Trajectory, check_every, proved_at_rest, simulate_until, stop_times,
+    DivergenceWatch, IntegratorConfig, IntegratorKind, Isa, Rhs, RunOptions, Scenario, State,
+    Stepping, StopRule, StopView, Trajectory, check_every, proved_at_rest, stop_times,
 };
 use crate::error::Result;
 use crate::model::params::M;
@@ -32,31 +32,32 @@ use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// Runs every scenario with `config`, each until its t_end or until `stop`
-/// says its outcome is decided (asked at every divergence check: every
-/// 5 τ, at most 512 steps apart, and at every drive corner); results in
-/// the order of `scenarios`. Symplectic Euler runs go through the batch
-/// kernel for the best instruction set of this CPU.
+/// Runs every scenario with `config`, each until its t_end or until
+/// `options.stop` says its outcome is decided (asked at every divergence
+/// check: every 5 τ, at most 512 steps apart, and at every drive corner);
+/// results in the order of `scenarios`. The steps are taken as
+/// `options.stepping` says: `Fused(isa)` uses the batch kernel for that
+/// instruction set (if the CPU has it), `Fastest` the one for the best set
+/// this CPU has, except for groups of N too small to fill the lanes, which
+/// run one by one with the fastest single-run kernel; `Portable` runs each
+/// scenario on the portable path ([`super::run`] without samples, the
+/// single-run reference). All give the same trajectories bit for bit.
+/// Runs that leave the batch kernel run within `options.limits`.
 pub fn simulate_many(
     scenarios: &[Scenario],
     config: &IntegratorConfig,
-    stop: &StopRule,
+    options: &RunOptions,
 ) -> Vec<Result<Trajectory>> {
-    simulate_many_with(scenarios, config, Stepping::Fastest, stop)
-}
-
-/// As [`simulate_many`], with the steps taken as `stepping` says:
-/// `Fused(isa)` uses the batch kernel for that instruction set (if the CPU
-/// has it), `Fastest` the one for the best set this CPU has, except for
-/// groups of N too small to fill the lanes, which run one by one with the
-/// fastest single-run kernel; `Portable` runs each scenario on the portable
-/// path. All give the same trajectories bit for bit.
-pub fn simulate_many_with(
-    scenarios: &[Scenario],
-    config: &IntegratorConfig,
-    stepping: Stepping,
-    stop: &StopRule,
-) -> Vec<Result<Trajectory>> {
+    let (stepping, stop) = (options.stepping, options.stop);
+    let one = |sc: &Scenario, config: &IntegratorConfig, stepping: Stepping| {
+        // As the batch kernel: the wave tracker fed at the checks.
+        super::run(
+            sc,
+            &[],
+            config,
+            &options.stepping(stepping).every_step(false),
+        )
+    };
     let valid = config.validated();
     // The batch kernels compute the paper's forces only (`model::media`).
     let paper = scenarios.iter().all(|sc| sc.ladder.terms.is_paper());
@@ -72,7 +73,7 @@ pub fn simulate_many_with(
         _ => {
             return scenarios
                 .par_iter()
-                .map(|sc| simulate_until(sc, config, stepping, stop))
+                .map(|sc| one(sc, config, stepping))
                 .collect();
         }
     };
@@ -88,7 +89,7 @@ pub fn simulate_many_with(
             // Too few runs to fill the lanes: one by one on every core.
             let done: Vec<_> = queue
                 .par_iter()
-                .map(|&i| (i, simulate_until(&scenarios[i], &config, stepping, stop)))
+                .map(|&i| (i, one(&scenarios[i], &config, stepping)))
                 .collect();
             for (i, result) in done {
                 results[i] = Some(result);
@@ -114,7 +115,7 @@ pub fn simulate_many_with(
     results
         .into_iter()
         .zip(scenarios)
-        .map(|(r, sc)| r.unwrap_or_else(|| simulate_until(sc, &config, Stepping::Portable, stop)))
+        .map(|(r, sc)| r.unwrap_or_else(|| one(sc, &config, Stepping::Portable)))
         .collect()
 }
 

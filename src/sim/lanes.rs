@@ -10,7 +10,7 @@
 
 #![cfg(target_arch = "x86_64")]
 
-use super::simd::Simd;
+use super::simd::{MAX_LANES, Simd};
 
 /// The scalars every symplectic Euler step uses, one vector each.
 #[derive(Clone, Copy)]
@@ -177,13 +177,13 @@ impl Blocks {
 #[inline(never)]
 fn record(
     candidates: u64,
-    before: [[f64; 16]; 3],
-    after: [[f64; 16]; 3],
+    before: [[f64; MAX_LANES]; 3],
+    after: [[f64; MAX_LANES]; 3],
     (lo, hi): (&mut [f64], &mut [f64]),
     mut try_record: impl FnMut(usize, (f64, f64, f64), (f64, f64, f64)) -> bool,
 ) {
     for lane in (0..lo.len()).filter(|l| candidates >> l & 1 == 1) {
-        let at = |v: &[[f64; 16]; 3]| (v[0][lane], v[1][lane], v[2][lane]);
+        let at = |v: &[[f64; MAX_LANES]; 3]| (v[0][lane], v[1][lane], v[2][lane]);
         if try_record(lane, at(&before), at(&after)) {
             (lo[lane], hi[lane]) = (f64::NEG_INFINITY, f64::INFINITY);
         }

@@ -4,6 +4,7 @@
 pub mod auto;
 pub mod batch;
 pub mod chain;
+mod divergence;
 pub mod fused;
 pub mod integrators;
 #[cfg(target_arch = "x86_64")]
@@ -12,25 +13,28 @@ pub mod observables;
 pub mod protocol;
 pub mod relax;
 pub mod rhs;
+pub mod run_options;
 mod simd;
 pub mod step_bounds;
 pub mod stepping;
+pub mod trajectory;
 pub mod waves;
 pub mod window;
 
+use divergence::DivergenceWatch;
 pub use integrators::{IntegratorConfig, IntegratorKind};
 pub use protocol::{Drive, Piece, Protocol};
 pub use relax::Start;
 pub use rhs::{Rhs, State};
+pub use run_options::{RunOptions, run_to_end};
 pub use stepping::{Isa, Stepping};
+pub use trajectory::{Energies, Trajectory};
 
 use crate::error::{Error, Result, num};
 use crate::limits::{Limits, Resource};
-use crate::model::ladder::itheta;
-use crate::model::params::M;
 use crate::model::{Ladder, Params};
-use observables::{ArrivalDetector, kink_position};
-use waves::{WaveTracker, Waves};
+use observables::ArrivalDetector;
+use waves::WaveTracker;
 
 /// The paper's drive time T_d = 1000 τ (10^5 steps of 0.01).
 pub const PAPER_DRIVE_TIME: f64 = 1000.0;
@@ -123,57 +127,6 @@ pub fn check_simulable(params: &Params) -> Result<()> {
     }
 }
 
-/// The result of a run: states at the sample times, observables and cost.
-#[derive(Debug, Clone)]
-pub struct Trajectory {
-    /// Sample times (sorted, within [0, t_end]).
-    pub times: Vec<f64>,
-    /// Positions q at each sample time.
-    pub states: Vec<Vec<f64>>,
-    /// Velocities at each sample time.
-    pub velocities: Vec<Vec<f64>>,
-    /// Kink position (blocks flipped, see `observables::kink_position`) at each sample.
-    pub kink_position: Vec<f64>,
-    /// Arrival time per block: the first sign change of its polarisation
-    /// sin θ_n (SPEC section 1), `None` where it never flipped.
-    pub arrival_times: Vec<Option<f64>>,
-    /// Every domain wall of the run as a wave, and block N's fate
-    /// (`waves`, SPEC section 9).
-    pub waves: Waves,
-    /// State at the end of the run: at t_end, or at `t_final` where a stop
-    /// rule ended it earlier ([`simulate_until`]).
-    pub final_state: State,
-    /// The time the run reached (t_end unless a stop rule ended it).
-    pub t_final: f64,
-    pub steps: u64,
-    pub force_evals: u64,
-}
-
-impl Trajectory {
-    /// θ_n at t_end, in degrees, wrapped to (−180°, 180°] (SPEC section 1).
-    pub fn final_theta_deg(&self) -> Vec<f64> {
-        observables::angles_deg(&self.final_state.q)
-    }
-
-    /// θ_n at t_end, in degrees, as integrated (not wrapped).
-    pub fn final_theta_deg_unwrapped(&self) -> Vec<f64> {
-        observables::angles_deg_unwrapped(&self.final_state.q)
-    }
-
-    /// Stores a sample (the sink of [`simulate_with`]).
-    fn push(&mut self, sample: &Sample, alpha: f64) {
-        self.times.push(sample.t);
-        self.states.push(sample.q.to_vec());
-        self.velocities.push(sample.v.to_vec());
-        self.kink_position.push(kink_position(sample.q, alpha));
-    }
-
-    /// θ_n(t) of block `i` at every sample.
-    pub fn theta_series(&self, i: usize) -> Vec<f64> {
-        self.states.iter().map(|q| q[itheta(i)]).collect()
-    }
-}
-
 /// How often, in τ, the run loop looks for divergence (every sample time
 /// and drive corner is checked as well): often enough to catch the
 /// transient stretches of a run at its stability limit whatever its step.
@@ -190,12 +143,6 @@ fn check_every(config: &IntegratorConfig) -> u64 {
     }
     ((CHECK_INTERVAL / config.dt).ceil() as u64).clamp(1, CHECK_MAX_STEPS)
 }
-/// Runaway thresholds: more than four turns of any block, or an elastic
-/// energy beyond one k s² per spring (a stretch of about 1.4 s everywhere).
-const MAX_TURNS: f64 = 4.0;
-/// Undriven energy growth, per spring, treated as a runaway.
-const MAX_UNDRIVEN_GROWTH: f64 = 1e-2;
-
 /// The state at one sample time, as the run loop hands it to a sink.
 #[derive(Debug, Clone, Copy)]
 pub struct Sample<'a> {
@@ -204,6 +151,9 @@ pub struct Sample<'a> {
     pub q: &'a [f64],
     /// Velocities, same layout.
     pub v: &'a [f64],
+    /// The energy dissipated from t = 0 to this sample, in units of k s²,
+    /// where the run records it (`RunOptions::dissipation`).
+    pub dissipated: Option<f64>,
 }
 
 /// What a stop rule sees: the time reached, the arrival times so far and
@@ -225,11 +175,6 @@ pub struct StopView<'a> {
 /// drive corner).
 pub type StopRule<'a> = dyn Fn(&StopView) -> bool + Sync + 'a;
 
-/// The stop rule that never stops a run before its t_end.
-pub fn run_to_end(_view: &StopView) -> bool {
-    false
-}
-
 /// Whether the state at the end of a run proves the ladder at rest at a
 /// linearly stable equilibrium (`theory::stability`, default tolerances),
 /// not before the drive has ended.
@@ -244,43 +189,17 @@ pub fn proved_at_rest(ladder: &Ladder, protocol: &Protocol, t: f64, st: &State) 
         .proved
 }
 
-/// Integrates `scenario` to its end, recording the state at `sample_times`
-/// (each in [0, t_end]) and observing arrival times at every step.
-/// A diverging run returns `Error::Diverged` naming the integrator, its
-/// step and the time; no partial result escapes.
+/// Integrates `scenario` to its end with the default [`RunOptions`],
+/// recording the state at `sample_times` (each in [0, t_end]) and
+/// observing arrival times at every step: [`run`] with
+/// `RunOptions::default()`. A diverging run returns `Error::Diverged`
+/// naming the integrator, its step and the time; no partial result escapes.
 pub fn simulate(
     scenario: &Scenario,
     sample_times: &[f64],
     config: &IntegratorConfig,
 ) -> Result<Trajectory> {
-    simulate_with(scenario, sample_times, config, Stepping::Fastest)
-}
-
-/// As [`simulate`], with symplectic Euler's steps taken as `stepping`
-/// says: every choice gives the same trajectory bit for bit (the portable
-/// path is the reference of the fused kernels and the baseline of their
-/// benchmark).
-pub fn simulate_with(
-    scenario: &Scenario,
-    sample_times: &[f64],
-    config: &IntegratorConfig,
-    stepping: Stepping,
-) -> Result<Trajectory> {
-    simulate_observed(scenario, sample_times, config, stepping, &|_| {})
-}
-
-/// As [`simulate_with`], telling `progress` the simulated time at every
-/// divergence check (every 5 τ, or 512 steps at most): for a progress bar.
-/// Within the caps in force ([`Limits::active`]).
-pub fn simulate_observed(
-    scenario: &Scenario,
-    sample_times: &[f64],
-    config: &IntegratorConfig,
-    stepping: Stepping,
-    progress: &(dyn Fn(f64) + Sync),
-) -> Result<Trajectory> {
-    let limits = Limits::active();
-    simulate_limited(scenario, sample_times, config, stepping, &limits, progress)
+    run(scenario, sample_times, config, &RunOptions::default())
 }
 
 /// The cost of a run, computed before it starts.
@@ -347,87 +266,48 @@ pub fn check_cost(
     Ok(cost)
 }
 
-/// As [`simulate_observed`], within `limits` (checked before the run by
+/// Integrates `scenario` as `options` say, keeping the state at
+/// `sample_times` (each in [0, t_end]; sorted and deduplicated) in the
+/// returned trajectory: [`run_streaming`] with a sink that keeps every
+/// sample. Within `options.limits` (checked before the run by
 /// [`check_cost`], and while it runs).
-pub fn simulate_limited(
+pub fn run(
     scenario: &Scenario,
     sample_times: &[f64],
     config: &IntegratorConfig,
-    stepping: Stepping,
-    limits: &Limits,
-    progress: &(dyn Fn(f64) + Sync),
+    options: &RunOptions,
 ) -> Result<Trajectory> {
     let alpha = scenario.ladder.params.alpha;
     let mut kept = Trajectory::unsampled(State::at_rest(Vec::new()), 0.0, Vec::new(), 0, 0);
-    let mut traj = simulate_streaming(
-        scenario,
-        sample_times,
-        config,
-        stepping,
-        &Hooks {
-            stop: &run_to_end,
-            progress,
-            limits,
-            // One flip launches one driven wave, whose arrival times the
-            // arrival detector times exactly inside the fused kernel's
-            // chunks (the paper's run stays at its ~50 ms; stepping one
-            // step per call made it 6.6 times slower). With several flips
-            // every later wall's sign changes are timed step by step.
-            every_step: scenario.protocol.drive().is_some_and(|d| d.flips() > 1),
-        },
-        &mut |sample: &Sample| {
-            kept.push(sample, alpha);
-            Ok(())
-        },
-    )?;
-    (traj.times, traj.states, traj.velocities, traj.kink_position) =
-        (kept.times, kept.states, kept.velocities, kept.kink_position);
+    let mut traj = run_streaming(scenario, sample_times, config, options, &mut |sample| {
+        kept.push(sample, alpha);
+        Ok(())
+    })?;
+    (
+        traj.times,
+        traj.states,
+        traj.velocities,
+        traj.kink_position,
+        traj.dissipated,
+    ) = (
+        kept.times,
+        kept.states,
+        kept.velocities,
+        kept.kink_position,
+        kept.dissipated,
+    );
     Ok(traj)
-}
-
-/// As [`simulate_with`] without samples, ending the run early once `stop`
-/// says so (t_end is then the cap): the single-run reference of
-/// [`batch::simulate_many`], which gives the same trajectories bit for bit.
-pub fn simulate_until(
-    scenario: &Scenario,
-    config: &IntegratorConfig,
-    stepping: Stepping,
-    stop: &StopRule,
-) -> Result<Trajectory> {
-    let limits = Limits::active();
-    let hooks = Hooks {
-        stop,
-        progress: &|_| {},
-        limits: &limits,
-        every_step: false,
-    };
-    simulate_streaming(scenario, &[], config, stepping, &hooks, &mut |_| Ok(()))
-}
-
-/// What the run loop asks and tells at every divergence check.
-pub struct Hooks<'a> {
-    /// Ends the run once it says so (t_end is then the cap).
-    pub stop: &'a StopRule<'a>,
-    /// Told the simulated time at every check (every 5 τ, or 512 steps
-    /// at most), after the check: for a progress bar.
-    pub progress: &'a (dyn Fn(f64) + Sync),
-    /// The caps the run must stay within (`limits`).
-    pub limits: &'a Limits,
-    /// Feed the wave tracker after every step (exact times of every sign
-    /// change), not only at the checks (`waves`' module doc).
-    pub every_step: bool,
 }
 
 /// The run loop. Hands the state at every sample time to `sink` as it
 /// passes (memory stays proportional to N, however many samples: the
 /// returned trajectory holds none) and ends at t_end or where
-/// `hooks.stop` says. An error from `sink` ends the run with that error.
-pub fn simulate_streaming(
+/// `options.stop` says. An error from `sink` ends the run with that error.
+pub fn run_streaming(
     scenario: &Scenario,
     sample_times: &[f64],
     config: &IntegratorConfig,
-    stepping: Stepping,
-    hooks: &Hooks,
+    options: &RunOptions,
     sink: &mut dyn FnMut(&Sample) -> Result<()>,
 ) -> Result<Trajectory> {
     let config = config.validated()?;
@@ -435,13 +315,19 @@ pub fn simulate_streaming(
     // The fused and chain kernels compute the paper's forces only: a
     // ladder with any term of SPEC section 12 takes the portable path.
     let stepping = if scenario.ladder.terms.is_paper() {
-        stepping
+        options.stepping
     } else {
         Stepping::Portable
     };
     let samples = sorted_samples(sample_times, scenario.t_end)?;
-    let limits = hooks.limits;
+    let limits = &options.limits;
     check_cost(scenario, samples.len(), &config, limits)?;
+    // One step per call where every wave's sign changes are timed step by
+    // step (several flips) or the dissipated power is integrated.
+    let every_step = options.dissipation
+        || options
+            .every_step
+            .unwrap_or_else(|| scenario.protocol.drive().is_some_and(|d| d.flips() > 1));
     let max_steps = limits.block_steps / scenario.ladder.n() as f64;
     let stops = stop_times(&samples, &scenario.protocol, scenario.t_end);
     let ladder = &scenario.ladder;
@@ -456,10 +342,14 @@ pub fn simulate_streaming(
     let mut steps = 0;
     let mut t = 0.0;
     let mut next_sample = 0;
-    emit_due(&samples, &mut next_sample, t, &st, sink)?;
+    // The energy dissipated so far, and the power at the last step's end.
+    let power = |st: &State| trajectory::dissipated_power(ladder, &st.q, &st.v);
+    let mut dissipated = options.dissipation.then_some(0.0);
+    let mut last_power = if options.dissipation { power(&st) } else { 0.0 };
+    emit_due(&samples, &mut next_sample, t, &st, dissipated, sink)?;
     'run: for &stop_at in &stops {
         while t < stop_at {
-            let budget = if hooks.every_step {
+            let budget = if every_step {
                 1
             } else {
                 check_every - steps % check_every
@@ -473,17 +363,23 @@ pub fn simulate_streaming(
                     config.describe_step()
                 )));
             }
+            if let Some(d) = dissipated.as_mut() {
+                // The trapezoidal rule over the step just taken.
+                let p = power(&st);
+                *d += 0.5 * (last_power + p) * (t_new - t);
+                last_power = p;
+            }
             t = t_new;
             steps += taken;
-            if hooks.every_step {
+            if every_step {
                 tracker.observe(t, &st.q, &st.v, &arrivals.arrival);
             }
             if steps.is_multiple_of(check_every) {
-                if !hooks.every_step {
+                if !every_step {
                     tracker.observe(t, &st.q, &st.v, &arrivals.arrival);
                 }
                 watch.check(&rhs, &st, t)?;
-                (hooks.progress)(t);
+                (options.progress)(t);
                 if steps as f64 > max_steps {
                     return Err(Error::Limit(crate::limits::LimitExceeded {
                         resource: Resource::BlockSteps,
@@ -506,16 +402,16 @@ pub fn simulate_streaming(
                     v: &st.v,
                     waves: &tracker,
                 };
-                if (hooks.stop)(&view) {
+                if (options.stop)(&view) {
                     break 'run;
                 }
             }
         }
-        if !hooks.every_step {
+        if !every_step {
             tracker.observe(t, &st.q, &st.v, &arrivals.arrival);
         }
         watch.check(&rhs, &st, t)?;
-        emit_due(&samples, &mut next_sample, t, &st, sink)?;
+        emit_due(&samples, &mut next_sample, t, &st, dissipated, sink)?;
         let view = StopView {
             t,
             arrivals: &arrivals.arrival,
@@ -524,7 +420,7 @@ pub fn simulate_streaming(
             v: &st.v,
             waves: &tracker,
         };
-        if (hooks.stop)(&view) {
+        if (options.stop)(&view) {
             break;
         }
     }
@@ -535,30 +431,6 @@ pub fn simulate_streaming(
     Ok(traj)
 }
 
-impl Trajectory {
-    /// A trajectory without samples.
-    fn unsampled(
-        final_state: State,
-        t_final: f64,
-        arrival_times: Vec<Option<f64>>,
-        steps: u64,
-        force_evals: u64,
-    ) -> Self {
-        Self {
-            times: Vec::new(),
-            states: Vec::new(),
-            velocities: Vec::new(),
-            kink_position: Vec::new(),
-            arrival_times,
-            waves: Waves::default(),
-            final_state,
-            t_final,
-            steps,
-            force_evals,
-        }
-    }
-}
-
 /// Hands `sink` the state for every sample time not after `t` not yet
 /// handed over.
 fn emit_due(
@@ -566,6 +438,7 @@ fn emit_due(
     next: &mut usize,
     t: f64,
     st: &State,
+    dissipated: Option<f64>,
     sink: &mut dyn FnMut(&Sample) -> Result<()>,
 ) -> Result<()> {
     while *next < samples.len() && samples[*next] <= t {
@@ -573,6 +446,7 @@ fn emit_due(
             t: samples[*next],
             q: &st.q,
             v: &st.v,
+            dissipated,
         })?;
         *next += 1;
     }
@@ -606,89 +480,4 @@ fn stop_times(samples: &[f64], protocol: &Protocol, t_end: f64) -> Vec<f64> {
     stops.sort_by(f64::total_cmp);
     stops.dedup();
     stops
-}
-
-/// Detects a run that has left the physics: non-finite numbers, runaway
-/// angles or stretches, or mechanical energy growing while nothing drives.
-struct DivergenceWatch {
-    name: &'static str,
-    step: String,
-    drive_end: f64,
-    max_elastic: f64,
-    max_growth: f64,
-    undriven_min: f64,
-}
-
-impl DivergenceWatch {
-    fn new(ladder: &Ladder, protocol: &Protocol, config: &IntegratorConfig) -> Self {
-        let springs = 2.0 * (ladder.n() - 1) as f64;
-        Self {
-            name: config.kind.name(),
-            step: config.describe_step(),
-            drive_end: protocol.drive_end(),
-            max_elastic: springs,
-            max_growth: MAX_UNDRIVEN_GROWTH * springs,
-            undriven_min: f64::INFINITY,
-        }
-    }
-
-    fn check(&mut self, rhs: &Rhs, st: &State, t: f64) -> Result<()> {
-        let finite = st.q.iter().chain(&st.v).all(|x| x.is_finite());
-        if !finite {
-            return Err(self.diverged(t, "the state became NaN or infinite"));
-        }
-        let max_theta = (0..rhs.ladder.n())
-            .map(|i| st.q[itheta(i)].abs())
-            .fold(0.0, f64::max);
-        if max_theta > MAX_TURNS * std::f64::consts::TAU {
-            return Err(self.diverged(t, "a block turned more than four times"));
-        }
-        let ladder = rhs.ladder;
-        if !ladder.terms.is_paper() {
-            return self.check_terms(rhs, st, t);
-        }
-        let elastic = ladder.elastic_energy(&st.q);
-        if elastic > self.max_elastic {
-            return Err(self.diverged(t, "the springs stretched beyond any physical state"));
-        }
-        if t >= self.drive_end {
-            // `Rhs::mechanical_energy`, with the elastic part computed once.
-            let gravity: f64 = st.q.iter().step_by(3).sum();
-            let potential = elastic - M * ladder.params.gravity * gravity;
-            let e = ladder.kinetic_energy(&st.v) + potential;
-            self.undriven_min = self.undriven_min.min(e);
-            if e > self.undriven_min + self.max_growth {
-                return Err(self.diverged(t, "the energy grew while nothing drove the ladder"));
-            }
-        }
-        Ok(())
-    }
-
-    /// [`DivergenceWatch::check`]'s energy tests for a ladder with terms:
-    /// the links' elastic energy (per unit stiffness) and the kinetic
-    /// energy with added mass.
-    fn check_terms(&mut self, rhs: &Rhs, st: &State, t: f64) -> Result<()> {
-        let terms = &rhs.ladder.terms;
-        let elastic = terms.links.elastic_energy(rhs.ladder, &st.q);
-        if elastic > self.max_elastic * terms.links.stiffness {
-            return Err(self.diverged(t, "the springs stretched beyond any physical state"));
-        }
-        if t >= self.drive_end {
-            let e = rhs.mechanical_energy(st);
-            self.undriven_min = self.undriven_min.min(e);
-            if e > self.undriven_min + self.max_growth {
-                return Err(self.diverged(t, "the energy grew while nothing drove the ladder"));
-            }
-        }
-        Ok(())
-    }
-
-    fn diverged(&self, t: f64, what: &'static str) -> Error {
-        Error::Diverged(Box::new(crate::error::Divergence {
-            integrator: self.name,
-            step: self.step.clone(),
-            t,
-            what,
-        }))
-    }
 }

@@ -1,8 +1,10 @@
-//! Vectors of f64 lanes for the batch and chain kernels (`sim::batch`,
-//! `sim::chain`): [`F64x4`] (AVX2), [`F64x8`] (AVX-512F) and [`Pack`] (G of
-//! either, for more independent work per instruction stream), behind one
-//! trait, [`Simd`], so that each kernel is written once and compiled for
-//! both instruction sets.
+//! Vectors of f64 lanes for the fused, batch and chain kernels
+//! (`sim::fused`, `sim::batch`, `sim::chain`): [`F64x4`] (AVX2), [`F64x8`]
+//! (AVX-512F) and [`Pack`] (G of either, for more independent work per
+//! instruction stream, or a whole ladder of blocks in the fused kernel),
+//! behind one trait, [`Simd`], so that each kernel is written once and
+//! compiled for both instruction sets; and the one vector sine and cosine
+//! of them all, [`half_sin_cos`].
 //!
 //! Every operation is `#[inline(always)]` and has no `target_feature` of
 //! its own: it is sound only inlined into a function compiled for the
@@ -30,7 +32,12 @@ macro_rules! simd {
     };
 }
 
-/// A vector of `LANES` f64 lanes with lane-wise IEEE arithmetic.
+/// Most lanes of one [`Simd`] value: the fused kernel's eight registers of
+/// four (N ≤ 32).
+pub const MAX_LANES: usize = 32;
+
+/// A vector of `LANES` (≤ [`MAX_LANES`]) f64 lanes with lane-wise IEEE
+/// arithmetic.
 pub trait Simd:
     Copy
     + Add<Output = Self>
@@ -78,17 +85,17 @@ pub trait Simd:
         (self | sign) ^ sign
     }
 
-    /// The lanes in an array of 16, zeros past `LANES`.
+    /// The lanes in an array of [`MAX_LANES`], zeros past `LANES`.
     #[inline(always)]
-    fn to_array(self) -> [f64; 16] {
-        let mut out = [0.0; 16];
-        // SAFETY: LANES ≤ 16.
+    fn to_array(self) -> [f64; MAX_LANES] {
+        const { assert!(Self::LANES <= MAX_LANES) };
+        let mut out = [0.0; MAX_LANES];
+        // SAFETY: LANES ≤ MAX_LANES (asserted above).
         unsafe { self.store(out.as_mut_ptr()) };
         out
     }
 
     /// Lane `i`.
-    #[cfg(test)]
     #[inline(always)]
     fn lane(self, i: usize) -> f64 {
         self.to_array()[i]
@@ -97,15 +104,16 @@ pub trait Simd:
     /// Lanes from `f(l)`.
     #[inline(always)]
     fn from_fn(f: impl Fn(usize) -> f64) -> Self {
-        let a: [f64; 16] = std::array::from_fn(|l| if l < Self::LANES { f(l) } else { 0.0 });
-        // SAFETY: LANES ≤ 16.
+        const { assert!(Self::LANES <= MAX_LANES) };
+        let a: [f64; MAX_LANES] = std::array::from_fn(|l| if l < Self::LANES { f(l) } else { 0.0 });
+        // SAFETY: LANES ≤ MAX_LANES (asserted above).
         unsafe { Self::load(a.as_ptr()) }
     }
 }
 
 /// Four lanes in a 256-bit AVX2 register.
 #[derive(Clone, Copy)]
-pub struct F64x4(__m256d);
+pub struct F64x4(pub(crate) __m256d);
 
 /// Eight lanes in a 512-bit AVX-512F register.
 #[derive(Clone, Copy)]
@@ -329,7 +337,7 @@ impl Simd for F64x8 {
 /// G vectors side by side as one of G · V::LANES lanes: G independent
 /// instruction streams for the processor to overlap.
 #[derive(Clone, Copy)]
-pub struct Pack<V, const G: usize>([V; G]);
+pub struct Pack<V, const G: usize>(pub(crate) [V; G]);
 
 macro_rules! pack_ops {
     ($($trait:ident $method:ident;)*) => {
@@ -461,8 +469,8 @@ fn estrin<S: Simd>(c: [f64; 6], z: S, z2: S, z4: S) -> S {
 
 /// r sin x and r cos x lane by lane with r = 1/2: r times
 /// `trig::sin_cos_slice`, bit for bit (the factor, a power of two, is
-/// applied to the reduced argument and to the constant term of the cosine;
-/// the fused kernel's `half_sin_cos` on one vector).
+/// applied to the reduced argument and to the constant term of the cosine).
+/// The one vector sine and cosine of the fused, batch and chain kernels.
 #[inline(always)]
 pub fn half_sin_cos<S: Simd>(x: S) -> (S, S) {
     const _: () = assert!(R == 0.5);
@@ -495,10 +503,8 @@ pub fn half_sin_cos<S: Simd>(x: S) -> (S, S) {
 #[cold]
 #[inline(never)]
 fn library_half_sin_cos<S: Simd>(x: S) -> (S, S) {
-    let mut xs = [0.0; 16];
-    // SAFETY: LANES ≤ 16.
-    unsafe { x.store(xs.as_mut_ptr()) };
-    let (mut s, mut c) = ([0.0; 16], [0.0; 16]);
+    let xs = x.to_array();
+    let (mut s, mut c) = ([0.0; MAX_LANES], [0.0; MAX_LANES]);
     trig::sin_cos_slice(&xs[..S::LANES], &mut s, &mut c);
     (S::from_fn(|l| R * s[l]), S::from_fn(|l| R * c[l]))
 }
@@ -556,8 +562,8 @@ pub(crate) mod tests {
     }
 
     #[target_feature(enable = "avx2")]
-    fn run_avx2(x: &[f64]) -> (Vec<f64>, Vec<f64>) {
-        run::<Pack<F64x4, 2>>(x)
+    fn run_avx2<S: Simd>(x: &[f64]) -> (Vec<f64>, Vec<f64>) {
+        run::<S>(x)
     }
 
     #[target_feature(enable = "avx2,avx512f")]
@@ -569,8 +575,12 @@ pub(crate) mod tests {
     fn half_sin_cos_is_half_the_portable_sin_cos_bit_for_bit() {
         let xs = sin_cos_inputs();
         if Isa::Avx2.available() {
-            // SAFETY: the CPU has AVX2, checked above.
-            check::<Pack<F64x4, 2>>(&xs, |x| unsafe { run_avx2(x) });
+            // SAFETY: the CPU has AVX2, checked above. The batch and chain
+            // kernels' packs (2), the fused kernel's ladders of N ≤ 12 (3)
+            // and its largest, N ≤ 32 (8 registers, MAX_LANES).
+            check::<Pack<F64x4, 2>>(&xs, |x| unsafe { run_avx2::<Pack<F64x4, 2>>(x) });
+            check::<Pack<F64x4, 3>>(&xs, |x| unsafe { run_avx2::<Pack<F64x4, 3>>(x) });
+            check::<Pack<F64x4, 8>>(&xs, |x| unsafe { run_avx2::<Pack<F64x4, 8>>(x) });
         }
         if Isa::Avx512.available() {
             // SAFETY: the CPU has AVX-512F, checked above.

@@ -29,7 +29,7 @@
 //! checks, every 5 τ), a block that changes sign twice between two
 //! observations is not seen to change, and the time of a block's first
 //! change is taken from the arrival detector, which sees every step.
-//! Single runs (`sim::simulate_limited`) feed it after every step when the
+//! Single runs (`sim::run`) feed it after every step when the
 //! drive has several flips; with one flip, the one driven wave's times are
 //! the arrival detector's (exact), and it is fed at the checks, which keeps
 //! the fused kernel's speed (a spontaneous wall's later sign changes are

@@ -11,9 +11,8 @@
 //! reaches the cap with a wave still undecided keeps the cap as its window
 //! (the waves then say `undecided`).
 
-use super::{Hooks, IntegratorConfig, Scenario, Stepping, StopView, simulate_streaming};
+use super::{IntegratorConfig, RunOptions, Scenario, StopView, run_streaming};
 use crate::error::Result;
-use crate::limits::Limits;
 use crate::theory::stability::{RestTolerances, rest_proof};
 
 /// Longest automatic window, τ: 25 times the paper's longest run (4000 τ);
@@ -35,8 +34,13 @@ pub struct Window {
 }
 
 /// The window of `scenario` (whose `t_end` is ignored; see the module's
-/// doc), run with `config`.
-pub fn auto_window(scenario: &Scenario, config: &IntegratorConfig) -> Result<Window> {
+/// doc), run with `config` as `options` say (their stop rule is replaced
+/// by the window's own).
+pub fn auto_window(
+    scenario: &Scenario,
+    config: &IntegratorConfig,
+    options: &RunOptions,
+) -> Result<Window> {
     let mut capped = scenario.clone();
     capped.t_end = AUTO_CAP;
     let protocol = &capped.protocol;
@@ -47,16 +51,8 @@ pub fn auto_window(scenario: &Scenario, config: &IntegratorConfig) -> Result<Win
             && v.waves
                 .all_decided(v.q, rest_proof(v.ladder, v.q, v.v, &tolerances).proved)
     };
-    let limits = Limits::active();
-    let hooks = Hooks {
-        stop: &stop,
-        progress: &|_| {},
-        limits: &limits,
-        every_step: protocol.drive().is_some_and(|d| d.flips() > 1),
-    };
-    let run = simulate_streaming(&capped, &[], config, Stepping::Fastest, &hooks, &mut |_| {
-        Ok(())
-    })?;
+    let options = options.stop(&stop);
+    let run = run_streaming(&capped, &[], config, &options, &mut |_| Ok(()))?;
     let decided = run.t_final < AUTO_CAP
         || run
             .waves

@@ -11,7 +11,7 @@
 //! go through `sim::batch::simulate_many` together (one run per SIMD lane,
 //! lanes refilled from a queue on every core); a group too small to fill
 //! the lanes, such as [`run_point`]'s one point, runs one run at a time
-//! through `sim::simulate_until`. Both give the same results bit for bit:
+//! through `sim::run` without samples. Both give the same results bit for bit:
 //! the batch kernel reproduces the one-run trajectories exactly
 //! (tests/integration/sweep.rs runs 30 points at once and each alone).
 
@@ -83,7 +83,7 @@ pub fn rule(scene: &Scene, spec: &SweepSpec) -> Rule {
 /// Runs the single-run `scene` (a point of the sweep) until decided.
 /// Bad input is an error; a diverging integration is a `diverged` result.
 /// One point alone is too few to fill the batch kernel's lanes: it runs
-/// through `sim::simulate_until`, the one-run path.
+/// through `sim::run` without samples, the one-run path.
 pub fn run_point(scene: &Scene, spec: &SweepSpec) -> Result<RunResult> {
     let mut results = run_points(std::slice::from_ref(scene), spec)?;
     Ok(results.remove(0))
@@ -216,7 +216,10 @@ fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<De
             rule.decide(v.arrivals, v.t, false).is_some()
                 || (v.t >= rule.drive_end && rule.at_rest(v.ladder, v.q, v.v))
         };
-        let runs = sim::batch::simulate_many(&scenarios, &first.config, &stop);
+        let options = sim::RunOptions::default()
+            .limits(crate::limits::Limits::active())
+            .stop(&stop);
+        let runs = sim::batch::simulate_many(&scenarios, &first.config, &options);
         for (&k, run) in members.iter().zip(runs) {
             out[k] = Some(match run {
                 Ok(traj) => Ok(decided(&rule, &points[jobs[k].point].scenario, traj)),

@@ -1,5 +1,5 @@
 //! Many runs at once (`sim::batch`): every run's trajectory is the one the
-//! portable path gives it alone (`sim::simulate_until`), bit for bit, with
+//! portable path gives it alone (`sim::run` without samples), bit for bit, with
 //! any mix of scenarios, more runs than lanes, runs ending at different
 //! times, stop rules, divergence, and every instruction set this CPU has.
 
@@ -119,10 +119,24 @@ fn assert_batch_matches_portable(
 ) {
     let portable: Vec<_> = scenarios
         .iter()
-        .map(|sc| sim::simulate_until(sc, config, Stepping::Portable, stop))
+        .map(|sc| {
+            sim::run(
+                sc,
+                &[],
+                config,
+                &sim::RunOptions::default()
+                    .stepping(Stepping::Portable)
+                    .stop(stop)
+                    .every_step(false),
+            )
+        })
         .collect();
     for stepping in steppings() {
-        let many = batch::simulate_many_with(scenarios, config, stepping, stop);
+        let many = batch::simulate_many(
+            scenarios,
+            config,
+            &sim::RunOptions::default().stepping(stepping).stop(stop),
+        );
         assert_eq!(many.len(), scenarios.len());
         for (k, (got, want)) in many.iter().zip(&portable).enumerate() {
             let sc = &scenarios[k];
@@ -148,7 +162,7 @@ fn every_run_of_a_batch_is_the_portable_run_bit_for_bit() {
         assert_batch_matches_portable(&scenarios, &verlet, &sim::run_to_end);
     }
     // The mix does what it is meant to: runs flip, one diverges.
-    let many = batch::simulate_many(&scenarios, &config, &sim::run_to_end);
+    let many = batch::simulate_many(&scenarios, &config, &sim::RunOptions::default());
     let flipped = many
         .iter()
         .flatten()
@@ -176,7 +190,7 @@ fn a_stop_rule_ends_runs_where_the_portable_path_ends_them() {
     assert_batch_matches_portable(&scenarios, &config, &stop);
     let verlet = IntegratorConfig::fixed(IntegratorKind::Verlet, 0.25);
     assert_batch_matches_portable(&scenarios, &verlet, &stop);
-    let many = batch::simulate_many(&scenarios, &config, &stop);
+    let many = batch::simulate_many(&scenarios, &config, &sim::RunOptions::default().stop(&stop));
     let early = many
         .iter()
         .zip(&scenarios)
@@ -208,7 +222,7 @@ fn other_steps_and_integrators_also_match() {
     }
     // Bad input reaches every run.
     let bad = IntegratorConfig::fixed(IntegratorKind::SymplecticEuler, -1.0);
-    let many = batch::simulate_many(&scenarios, &bad, &sim::run_to_end);
+    let many = batch::simulate_many(&scenarios, &bad, &sim::RunOptions::default());
     assert!(
         many.iter()
             .all(|r| r.as_ref().is_err_and(|e| e.exit_code() == 2))

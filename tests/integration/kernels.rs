@@ -22,7 +22,8 @@ fn paper_scene(alpha: f64) -> Scenario {
 
 /// The paper's run (symplectic Euler, dt = 0.01) of `alpha` through `k`.
 fn run(alpha: f64, k: Stepping) -> Trajectory {
-    sim::simulate_with(&paper_scene(alpha), &[], &IntegratorConfig::paper(), k).unwrap()
+    crate::common::kernels::run_stepped(&paper_scene(alpha), &[], &IntegratorConfig::paper(), k)
+        .unwrap()
 }
 
 fn speed(t: &Trajectory) -> f64 {
@@ -169,7 +170,7 @@ fn arrival_times_of_the_papers_scheme_are_first_order_accurate_on_every_block() 
             let what = format!("α = {alpha}°, {name}");
             let se = |dt: f64| {
                 let c = IntegratorConfig::fixed(IntegratorKind::SymplecticEuler, dt);
-                sim::simulate_with(&scene, &[], &c, k)
+                crate::common::kernels::run_stepped(&scene, &[], &c, k)
                     .unwrap()
                     .arrival_times
             };

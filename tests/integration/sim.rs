@@ -308,9 +308,12 @@ fn assert_fused_matches_portable(
     what: &str,
 ) {
     let config = IntegratorConfig::paper();
-    let portable = sim::simulate_with(scenario, samples, &config, Stepping::Portable).unwrap();
+    let portable =
+        crate::common::kernels::run_stepped(scenario, samples, &config, Stepping::Portable)
+            .unwrap();
     for &stepping in kernels {
-        let fused = sim::simulate_with(scenario, samples, &config, stepping).unwrap();
+        let fused =
+            crate::common::kernels::run_stepped(scenario, samples, &config, stepping).unwrap();
         let label = format!("{what}, {stepping:?}");
         assert_eq!(fused.times, portable.times, "{label}");
         assert_eq!(fused.states, portable.states, "{label}");
@@ -429,9 +432,12 @@ fn fused_stepper_reports_the_same_divergence() {
         let params = Params::paper(60.0).unwrap().with(n, 1.3, 60.0).unwrap();
         let scenario = Scenario::single_flip(params, 1000.0, 4000.0).unwrap();
         let config = IntegratorConfig::fixed(IntegratorKind::SymplecticEuler, 1.5);
-        let portable = sim::simulate_with(&scenario, &[], &config, Stepping::Portable).unwrap_err();
+        let portable =
+            crate::common::kernels::run_stepped(&scenario, &[], &config, Stepping::Portable)
+                .unwrap_err();
         for &stepping in &kernels {
-            let fused = sim::simulate_with(&scenario, &[], &config, stepping).unwrap_err();
+            let fused =
+                crate::common::kernels::run_stepped(&scenario, &[], &config, stepping).unwrap_err();
             assert_eq!(
                 fused.to_string(),
                 portable.to_string(),
@@ -456,7 +462,8 @@ fn blocks_turning_through_180_degrees_have_arrival_times() {
     let params = Params::paper(alpha).unwrap().with(20, 1.3, alpha).unwrap();
     let scenario = Scenario::single_flip(params, sim::PAPER_DRIVE_TIME, 3000.0).unwrap();
     let config = IntegratorConfig::paper();
-    let traj = sim::simulate_with(&scenario, &[], &config, Stepping::Portable).unwrap();
+    let traj =
+        crate::common::kernels::run_stepped(&scenario, &[], &config, Stepping::Portable).unwrap();
     let wrapped = traj.final_theta_deg();
     let unwrapped = traj.final_theta_deg_unwrapped();
     let mut turned_round = 0;

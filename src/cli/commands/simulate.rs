@@ -81,9 +81,12 @@ pub(crate) fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<(
     }
     let start = Instant::now();
     let bar = time_bar(scene.run.t_end);
-    let result = scenes::run::simulate_with(&scene, &samples, stepping, &|t| {
-        bar.set_position(bar.position().max(t as u64));
-    });
+    let progress = |t: f64| bar.set_position(bar.position().max(t as u64));
+    let options = crate::sim::RunOptions::default()
+        .stepping(stepping)
+        .limits(crate::limits::Limits::active())
+        .progress(&progress);
+    let result = scenes::run::simulate_with(&scene, &samples, &options);
     bar.finish_and_clear();
     let result = result.map_err(|e| with_divergence_hint(e, &scene, Words::Flags))?;
     let wall_seconds = start.elapsed().as_secs_f64();

@@ -18,12 +18,11 @@
 use super::{Batch, Isa};
 use crate::model::ladder::parity;
 use crate::model::params::{M, R};
-use crate::model::trig::{self, consts::*};
 use crate::sim::observables::ArrivalDetector;
 use crate::sim::protocol::{Drive, Piece};
 use crate::sim::rhs::{Rhs, State};
+use crate::sim::simd::{F64x4, Pack, Simd, half_sin_cos};
 use std::arch::x86_64::*;
-use std::ops::{Add, BitAnd, BitOr, BitXor, Div, Mul, Sub};
 
 // r = s/2 is folded into sin and cos below; that is exact only for a power
 // of two.
@@ -100,253 +99,50 @@ macro_rules! avx {
     };
 }
 
-/// One quantity for 4C blocks: lane l of register c is block 4c + l.
-#[derive(Clone, Copy)]
-struct Lanes<const C: usize>([__m256d; C]);
+/// One quantity for 4C blocks: lane l of register c is block 4c + l
+/// (`sim::simd`'s [`Pack`] of C AVX2 registers, the type the batch and
+/// chain kernels use too).
+type Lanes<const C: usize> = Pack<F64x4, C>;
 
-impl<const C: usize> Lanes<C> {
-    #[inline(always)]
-    fn splat(x: f64) -> Self {
-        Self([avx!(_mm256_set1_pd(x)); C])
-    }
+/// What the fused step asks of [`Lanes`] beyond [`Simd`].
+trait Blocks: Simd {
+    /// The same register in every one of the C.
+    fn splat_vec(v: __m256d) -> Self;
+    /// `self` with block 1 (lane 0) set to `x`.
+    fn with_first(self, x: f64) -> Self;
+    /// Bit i set where lane i ≤ `lo` or ≥ `hi` (false for NaN): one mask
+    /// per register, as `le_bits | ge_bits` with half the mask moves.
+    fn outside_bits(self, lo: Self, hi: Self) -> u64;
+}
 
+impl<const C: usize> Blocks for Lanes<C> {
     #[inline(always)]
     fn splat_vec(v: __m256d) -> Self {
-        Self([v; C])
+        Pack([F64x4(v); C])
     }
 
     #[inline(always)]
-    fn from_fn(f: impl Fn(usize) -> f64) -> Self {
-        Self(std::array::from_fn(|c| {
-            let a: [f64; 4] = std::array::from_fn(|l| f(4 * c + l));
-            avx!(_mm256_loadu_pd(a.as_ptr()))
-        }))
-    }
-
-    #[inline(always)]
-    fn to_vec(self) -> [[f64; 4]; C] {
-        let mut out = [[0.0; 4]; C];
-        for c in 0..C {
-            avx!(_mm256_storeu_pd(out[c].as_mut_ptr(), self.0[c]));
-        }
-        out
-    }
-
-    #[inline(always)]
-    fn lane(self, i: usize) -> f64 {
-        self.to_vec()[i / 4][i % 4]
-    }
-
-    /// |self|.
-    #[inline(always)]
-    fn abs(mut self) -> Self {
-        for c in 0..C {
-            self.0[c] = avx!(_mm256_andnot_pd(_mm256_set1_pd(-0.0), self.0[c]));
-        }
+    fn with_first(mut self, x: f64) -> Self {
+        self.0[0] = F64x4(avx!(_mm256_blend_pd::<0b0001>(
+            self.0[0].0,
+            _mm256_set1_pd(x)
+        )));
         self
     }
 
-    /// All-ones lanes where `self ≤ x`, lane by lane.
     #[inline(always)]
-    fn le(self, x: Self) -> Self {
-        self.compare_lanes::<_CMP_LE_OQ>(x)
-    }
-
-    /// All-ones lanes where `self ≥ x`, lane by lane.
-    #[inline(always)]
-    fn ge(self, x: Self) -> Self {
-        self.compare_lanes::<_CMP_GE_OQ>(x)
-    }
-
-    #[inline(always)]
-    fn compare_lanes<const P: i32>(mut self, x: Self) -> Self {
-        for c in 0..C {
-            self.0[c] = avx!(_mm256_cmp_pd::<P>(self.0[c], x.0[c]));
-        }
-        self
-    }
-
-    /// All-ones lanes where `self > x` or either is NaN.
-    #[inline(always)]
-    fn not_le(self, x: f64) -> Self {
-        self.compare::<_CMP_NLE_UQ>(x)
-    }
-
-    #[inline(always)]
-    fn compare<const P: i32>(mut self, x: f64) -> Self {
-        for c in 0..C {
-            self.0[c] = avx!(_mm256_cmp_pd::<P>(self.0[c], _mm256_set1_pd(x)));
-        }
-        self
-    }
-
-    /// `other` where `mask` is set, else `self`.
-    #[inline(always)]
-    fn select(self, other: Self, mask: Self) -> Self {
-        let mut out = self;
-        for c in 0..C {
-            out.0[c] = avx!(_mm256_blendv_pd(self.0[c], other.0[c], mask.0[c]));
-        }
-        out
-    }
-
-    /// The bits of each lane, as a 64-bit integer plus `add`, shifted left
-    /// by `by`: a lane's bit b becomes its sign bit for `by` = 63 − b.
-    #[inline(always)]
-    fn shift_left(mut self, by: i32, add: i64) -> Self {
-        for c in 0..C {
-            let bits = avx!(_mm256_add_epi64(
-                _mm256_castpd_si256(self.0[c]),
-                _mm256_set1_epi64x(add)
-            ));
-            let moved = avx!(_mm256_sll_epi64(bits, _mm_cvtsi32_si128(by)));
-            self.0[c] = avx!(_mm256_castsi256_pd(moved));
-        }
-        self
-    }
-
-    /// Bit mask of the lanes whose sign bit is set.
-    #[inline(always)]
-    fn sign_bits(self) -> u64 {
+    fn outside_bits(self, lo: Self, hi: Self) -> u64 {
         let mut bits = 0;
         for c in 0..C {
-            bits |= (avx!(_mm256_movemask_pd(self.0[c])) as u64) << (4 * c);
+            let (x, lo, hi) = (self.0[c].0, lo.0[c].0, hi.0[c].0);
+            let outside = avx!(_mm256_or_pd(
+                _mm256_cmp_pd::<_CMP_LE_OQ>(x, lo),
+                _mm256_cmp_pd::<_CMP_GE_OQ>(x, hi)
+            ));
+            bits |= (avx!(_mm256_movemask_pd(outside)) as u64) << (4 * c);
         }
         bits
     }
-
-    /// Lanes i + 1: each block's lower neighbour; `pad` past the end.
-    #[inline(always)]
-    fn next(self, pad: f64) -> Self {
-        let mut out = self;
-        for c in 0..C {
-            let b = if c + 1 < C {
-                self.0[c + 1]
-            } else {
-                avx!(_mm256_set1_pd(pad))
-            };
-            let a = self.0[c];
-            // [a1, a2, a3, b0]
-            out.0[c] = avx!(_mm256_shuffle_pd::<0b0101>(
-                a,
-                _mm256_permute2f128_pd::<0x21>(a, b)
-            ));
-        }
-        out
-    }
-
-    /// Lanes i − 1: each block's spring above; zero before the first.
-    #[inline(always)]
-    fn prev(self) -> Self {
-        let mut out = self;
-        for c in 0..C {
-            let p = if c > 0 {
-                self.0[c - 1]
-            } else {
-                avx!(_mm256_setzero_pd())
-            };
-            let a = self.0[c];
-            // [p3, a0, a1, a2]
-            out.0[c] = avx!(_mm256_shuffle_pd::<0b0101>(
-                _mm256_permute2f128_pd::<0x21>(p, a),
-                a
-            ));
-        }
-        out
-    }
-
-    /// `self` with block 1 (lane 0) set to `x`.
-    #[inline(always)]
-    fn with_first(mut self, x: f64) -> Self {
-        self.0[0] = avx!(_mm256_blend_pd::<0b0001>(self.0[0], _mm256_set1_pd(x)));
-        self
-    }
-}
-
-macro_rules! lanewise {
-    ($trait:ident, $method:ident, $intrinsic:ident) => {
-        impl<const C: usize> $trait for Lanes<C> {
-            type Output = Self;
-            #[inline(always)]
-            fn $method(mut self, o: Self) -> Self {
-                for c in 0..C {
-                    self.0[c] = avx!($intrinsic(self.0[c], o.0[c]));
-                }
-                self
-            }
-        }
-        impl<const C: usize> $trait<f64> for Lanes<C> {
-            type Output = Self;
-            #[inline(always)]
-            fn $method(self, o: f64) -> Self {
-                self.$method(Self::splat(o))
-            }
-        }
-    };
-}
-
-lanewise!(Add, add, _mm256_add_pd);
-lanewise!(Sub, sub, _mm256_sub_pd);
-lanewise!(Mul, mul, _mm256_mul_pd);
-lanewise!(Div, div, _mm256_div_pd);
-lanewise!(BitAnd, bitand, _mm256_and_pd);
-lanewise!(BitXor, bitxor, _mm256_xor_pd);
-lanewise!(BitOr, bitor, _mm256_or_pd);
-
-/// 1.5 · 2^52: x + this − this rounds x (|x| < 2^51) to an integer, ties
-/// to even, exactly as `f64::round_ties_even`.
-const ROUNDING: f64 = 6_755_399_441_055_744.0;
-
-/// (c0 + z c1) + z² (c2 + z c3) + z⁴ (c4 + z c5): `trig::kernels`' Estrin form.
-#[inline(always)]
-fn estrin<const C: usize>(c: [f64; 6], z: Lanes<C>, z2: Lanes<C>, z4: Lanes<C>) -> Lanes<C> {
-    let low = Lanes::splat(c[0]) + z * c[1];
-    let mid = Lanes::splat(c[2]) + z * c[3];
-    let high = Lanes::splat(c[4]) + z * c[5];
-    (low + z2 * mid) + z4 * high
-}
-
-/// r sin x and r cos x lane by lane with r = 1/2: r times
-/// `trig::sin_cos_slice`, exactly (the factor, a power of two, is applied
-/// to the reduced argument and to the constant term of the cosine).
-#[inline(always)]
-fn half_sin_cos<const C: usize>(x: Lanes<C>) -> (Lanes<C>, Lanes<C>) {
-    // k = round-half-even(x 2/π) by the 1.5 · 2^52 trick, which leaves
-    // k mod 4 (the quadrant) in the low bits of `shifted`.
-    let shifted = x * FRAC_2_PI + ROUNDING;
-    let k = shifted - ROUNDING;
-    let r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
-    let z = r * r;
-    let z2 = z * z;
-    let z4 = z2 * z2;
-    // trig::kernels, scaled by R.
-    let rr = r * R;
-    let ps = rr + (rr * z) * estrin([S1, S2, S3, S4, S5, S6], z, z2, z4);
-    let pc =
-        (Lanes::splat(R) - z * (0.5 * R)) + (z2 * R) * estrin([C1, C2, C3, C4, C5, C6], z, z2, z4);
-    // Quadrant q = k mod 4: odd q swaps the kernels; q ∈ {2, 3} negates the
-    // sine, q ∈ {1, 2} (bit 1 of q + 1) the cosine.
-    let odd = shifted.shift_left(63, 0);
-    let s = ps.select(pc, odd) ^ (shifted.shift_left(62, 0) & -0.0);
-    let c = pc.select(ps, odd) ^ (shifted.shift_left(62, 1) & -0.0);
-    // Arguments beyond the reduction (or NaN) go to the library.
-    if x.abs().not_le(trig::REDUCE_LIMIT).sign_bits() == 0 {
-        (s, c)
-    } else {
-        library_half_sin_cos(x)
-    }
-}
-
-#[cold]
-#[inline(never)]
-fn library_half_sin_cos<const C: usize>(x: Lanes<C>) -> (Lanes<C>, Lanes<C>) {
-    let xs = x.to_vec();
-    let (mut s, mut c) = ([[0.0; 4]; C], [[0.0; 4]; C]);
-    for k in 0..C {
-        trig::sin_cos_slice(&xs[k], &mut s[k], &mut c[k]);
-    }
-    let half = |v: [[f64; 4]; C]| Lanes::from_fn(|i| R * v[i / 4][i % 4]);
-    (half(s), half(c))
 }
 
 /// Per-lane constants of a batch.
@@ -434,10 +230,12 @@ impl<const C: usize> Coords<C> {
     #[inline(always)]
     fn store(&self, table: &mut [f64], n: usize) {
         for (k, lanes) in [self.x, self.y, self.theta].into_iter().enumerate() {
-            let values = lanes.to_vec();
-            for i in 0..n {
-                table[3 * i + k] = values[i / 4][i % 4];
-            }
+            let values = lanes.to_array();
+            table[k..]
+                .iter_mut()
+                .step_by(3)
+                .zip(&values[..n])
+                .for_each(|(t, v)| *t = *v);
         }
     }
 }
@@ -485,19 +283,19 @@ fn stretch<const C: usize>(la2: Lanes<C>, lb2: Lanes<C>, k: &Constants<C>) -> (L
     let (mut ka, mut kb) = (la2, lb2);
     if k.pack_last {
         for c in 0..C - 1 {
-            ka.0[c] = factor(a, la2.0[c]);
-            kb.0[c] = factor(b, lb2.0[c]);
+            ka.0[c].0 = factor(a, la2.0[c].0);
+            kb.0[c].0 = factor(b, lb2.0[c].0);
         }
         let last = C - 1;
         // [A0, A1, B0, B1] → [kA0, kA1, kB0, kB1].
-        let both = avx!(_mm256_permute2f128_pd::<0x20>(la2.0[last], lb2.0[last]));
+        let both = avx!(_mm256_permute2f128_pd::<0x20>(la2.0[last].0, lb2.0[last].0));
         let f = factor(k.packed_rest, both);
-        ka.0[last] = f;
-        kb.0[last] = avx!(_mm256_permute2f128_pd::<0x11>(f, f));
+        ka.0[last].0 = f;
+        kb.0[last].0 = avx!(_mm256_permute2f128_pd::<0x11>(f, f));
     } else {
         for c in 0..C {
-            ka.0[c] = factor(a, la2.0[c]);
-            kb.0[c] = factor(b, lb2.0[c]);
+            ka.0[c].0 = factor(a, la2.0[c].0);
+            kb.0[c].0 = factor(b, lb2.0[c].0);
         }
     }
     (ka, kb)
@@ -513,8 +311,9 @@ fn gradient<const C: usize>(r: &Regs<C>, k: &Constants<C>) -> Coords<C> {
     let (rs0, rc0) = half_sin_cos(theta);
     let (p0, p1) = k.parity_sign;
     // Spring j joins block j (…0) to block j + 1 (…1).
-    let (rs1, rc1) = (rs0.next(0.0), rc0.next(R));
-    let (ex, ey) = (x.next(far(4 * C)) - x, y.next(0.0) - y);
+    let pad = Lanes::splat;
+    let (rs1, rc1) = (rs0.next(pad(0.0)), rc0.next(pad(R)));
+    let (ex, ey) = (x.next(pad(far(4 * C))) - x, y.next(pad(0.0)) - y);
     let (ux, uy) = (rs1 - rs0, (rc1 ^ p1) - (rc0 ^ p0));
     let (ax, ay, bx, by) = (ex - ux, ey - uy, ex + ux, ey + uy);
     let (ka, kb) = stretch(ax * ax + ay * ay, bx * bx + by * by, k);
@@ -527,10 +326,12 @@ fn gradient<const C: usize>(r: &Regs<C>, k: &Constants<C>) -> Coords<C> {
     let tu = (dfx * rc1 - (dfy ^ p1) * rs1) & mask;
     let tl = ((dfx * rc0 - (dfy ^ p0) * rs0) ^ Lanes::splat(-0.0)) & mask;
     // Block i feels spring i − 1 from above and spring i from below.
+    // Zero before the first block.
+    let above = |s: Lanes<C>| s.prev(pad(0.0));
     Coords {
-        x: (fx.prev() + k.minus_g) - fx,
-        y: fy.prev() - fy,
-        theta: tu.prev() + tl,
+        x: (above(fx) + pad(k.minus_g)) - fx,
+        y: above(fy) - fy,
+        theta: above(tu) + tl,
     }
 }
 
@@ -538,13 +339,14 @@ fn gradient<const C: usize>(r: &Regs<C>, k: &Constants<C>) -> Coords<C> {
 #[inline(always)]
 fn step<const C: usize>(r: &mut Regs<C>, k: &Constants<C>, h: f64) {
     let g = gradient(r, k);
+    let s = Lanes::<C>::splat;
     let ([dx, dy, dt], [kx, ky, kt]) = (k.decay, k.kick);
-    r.v.x = r.v.x * dx - g.x * kx;
-    r.v.y = r.v.y * dy - g.y * ky;
-    r.v.theta = r.v.theta * dt - g.theta * kt;
-    r.q.x = r.q.x + r.v.x * h;
-    r.q.y = r.q.y + r.v.y * h;
-    r.q.theta = r.q.theta + r.v.theta * h;
+    r.v.x = r.v.x * s(dx) - g.x * s(kx);
+    r.v.y = r.v.y * s(dy) - g.y * s(ky);
+    r.v.theta = r.v.theta * s(dt) - g.theta * s(kt);
+    r.q.x = r.q.x + r.v.x * s(h);
+    r.q.y = r.q.y + r.v.y * s(h);
+    r.q.theta = r.q.theta + r.v.theta * s(h);
 }
 
 /// Block 1's drive with the piece last used.
@@ -622,8 +424,7 @@ fn run_body<const C: usize>(job: &Job, st: &mut State, arrivals: &mut ArrivalDet
         }
         // As `ArrivalDetector::is_candidate`, for every pending block; the
         // exact test (the sign of sin θ) in scalar code for candidates only.
-        let outside = r.q.theta.le(window_lo) | r.q.theta.ge(window_hi);
-        let candidates = outside.sign_bits() & pending;
+        let candidates = r.q.theta.outside_bits(window_lo, window_hi) & pending;
         if candidates != 0 {
             pending &= !record(arrivals, candidates, before, (t_new, r.q.theta, r.v.theta));
         }
@@ -632,42 +433,4 @@ fn run_body<const C: usize>(job: &Job, st: &mut State, arrivals: &mut ArrivalDet
     r.store(st, n);
     arrivals.restart(t, &st.q, &st.v);
     t
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::sim::simd::tests::{same, sin_cos_inputs};
-
-    /// `half_sin_cos` of `x`, in the AVX2 build.
-    #[target_feature(enable = "avx2")]
-    fn half_sin_cos_avx2(x: [[f64; 4]; 3]) -> ([[f64; 4]; 3], [[f64; 4]; 3]) {
-        let (s, c) = half_sin_cos(Lanes::<3>::from_fn(|i| x[i / 4][i % 4]));
-        (s.to_vec(), c.to_vec())
-    }
-
-    #[test]
-    fn half_sin_cos_is_half_the_portable_sin_cos_bit_for_bit() {
-        if !Isa::Avx2.available() {
-            return;
-        }
-        let mut xs = sin_cos_inputs();
-        xs.resize(xs.len().div_ceil(12) * 12, 0.5);
-        for chunk in xs.chunks_exact(12) {
-            let x: [[f64; 4]; 3] =
-                std::array::from_fn(|c| std::array::from_fn(|l| chunk[4 * c + l]));
-            // SAFETY: the CPU has AVX2, checked above.
-            let (s, c) = unsafe { half_sin_cos_avx2(x) };
-            let (mut ws, mut wc) = (vec![0.0; 12], vec![0.0; 12]);
-            trig::sin_cos_slice(chunk, &mut ws, &mut wc);
-            for i in 0..12 {
-                let (gs, gc) = (s[i / 4][i % 4], c[i / 4][i % 4]);
-                assert!(
-                    same(gs, R * ws[i]) && same(gc, R * wc[i]),
-                    "x = {}",
-                    chunk[i]
-                );
-            }
-        }
-    }
 }

@@ -40,3 +40,15 @@ pub fn fused(test: &str) -> Vec<(Stepping, &'static str)> {
     }
     out
 }
+
+/// `sim::run` with the steps taken as `stepping` says and the other
+/// options at their defaults.
+pub fn run_stepped(
+    scenario: &jacobs_ladder::sim::Scenario,
+    samples: &[f64],
+    config: &jacobs_ladder::sim::IntegratorConfig,
+    stepping: Stepping,
+) -> jacobs_ladder::Result<jacobs_ladder::sim::Trajectory> {
+    let options = jacobs_ladder::sim::RunOptions::default().stepping(stepping);
+    jacobs_ladder::sim::run(scenario, samples, config, &options)
+}

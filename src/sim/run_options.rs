@@ -1,0 +1,122 @@
+//! How a run is carried out, apart from what is simulated ([`Scenario`])
+//! and how it is stepped ([`IntegratorConfig`]): one value with every
+//! default in one `impl Default` (as rapier's `IntegrationParameters`).
+//!
+//! [`Scenario`]: super::Scenario
+//! [`IntegratorConfig`]: super::IntegratorConfig
+
+use super::{Stepping, StopRule, StopView};
+use crate::limits::Limits;
+
+/// The stop rule that never stops a run before its t_end.
+pub fn run_to_end(_view: &StopView) -> bool {
+    false
+}
+
+/// The progress callback that tells no one.
+fn silent(_t: f64) {}
+
+/// Options of one run (`sim::run`, `sim::run_streaming`,
+/// `auto::simulate_verified`, `batch::simulate_many`, `window::auto_window`).
+/// None of them changes the trajectory, except `stop`, which may end it
+/// early, and `limits`, which may refuse it.
+#[derive(Clone, Copy)]
+pub struct RunOptions<'a> {
+    /// Which kernel takes symplectic Euler's and Verlet's steps. Default
+    /// [`Stepping::Fastest`]: the fused kernel for the best instruction set
+    /// of this CPU. Every choice gives the same trajectory bit for bit.
+    pub stepping: Stepping,
+    /// The caps the run must stay within, checked before it starts and
+    /// while it runs. Default [`Limits::default`] (docs/limits.md); the
+    /// front ends pass the caps their user set.
+    pub limits: Limits,
+    /// Ends the run once it says so (t_end is then the cap): asked at every
+    /// divergence check (every 5 τ, at most 512 steps apart) and at every
+    /// sample time and drive corner. Default [`run_to_end`].
+    pub stop: &'a StopRule<'a>,
+    /// Told the simulated time at every divergence check, for a progress
+    /// bar. Default: tells no one.
+    pub progress: &'a (dyn Fn(f64) + Sync),
+    /// Feed the wave tracker after every step (exact times of every sign
+    /// change) rather than at the checks (`waves`' module doc). Default
+    /// `None`: every step when the drive flips block 1 more than once (a
+    /// single flip's one driven wave is timed exactly by the arrival
+    /// detector inside the fused kernel's chunks, which keeps the paper's
+    /// run at its ~50 ms; stepping one step per call made it 6.6 times
+    /// slower).
+    pub every_step: Option<bool>,
+    /// Record the energy dissipated so far at every sample
+    /// (`Trajectory::dissipated`): the power of every dissipative term
+    /// (`model::media::dissipation`) integrated by the trapezoidal rule
+    /// over every step, which takes the steps one per call. Default
+    /// `false`. The trajectory is the same bit for bit either way.
+    pub dissipation: bool,
+}
+
+impl Default for RunOptions<'static> {
+    fn default() -> Self {
+        Self {
+            stepping: Stepping::Fastest,
+            limits: Limits::default(),
+            stop: &run_to_end,
+            progress: &silent,
+            every_step: None,
+            dissipation: false,
+        }
+    }
+}
+
+impl<'a> RunOptions<'a> {
+    /// These options with `stepping`.
+    pub fn stepping(self, stepping: Stepping) -> Self {
+        Self { stepping, ..self }
+    }
+
+    /// These options within `limits`.
+    pub fn limits(self, limits: Limits) -> Self {
+        Self { limits, ..self }
+    }
+
+    /// These options with the stop rule `stop`.
+    pub fn stop<'b>(self, stop: &'b StopRule<'b>) -> RunOptions<'b>
+    where
+        'a: 'b,
+    {
+        RunOptions { stop, ..self }
+    }
+
+    /// These options telling `progress` the simulated time.
+    pub fn progress<'b>(self, progress: &'b (dyn Fn(f64) + Sync)) -> RunOptions<'b>
+    where
+        'a: 'b,
+    {
+        RunOptions { progress, ..self }
+    }
+
+    /// These options recording the energy dissipated so far.
+    pub fn dissipation(self, dissipation: bool) -> Self {
+        Self {
+            dissipation,
+            ..self
+        }
+    }
+
+    /// These options feeding the wave tracker after every step (or not).
+    pub fn every_step(self, every_step: bool) -> Self {
+        Self {
+            every_step: Some(every_step),
+            ..self
+        }
+    }
+}
+
+impl std::fmt::Debug for RunOptions<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("RunOptions")
+            .field("stepping", &self.stepping)
+            .field("limits", &self.limits)
+            .field("every_step", &self.every_step)
+            .field("dissipation", &self.dissipation)
+            .finish_non_exhaustive()
+    }
+}
