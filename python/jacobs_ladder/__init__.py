@@ -77,9 +77,19 @@ class Run:
 
     - ``t``: sample times, τ (every ``sample_every`` τ from 0 to t_end).
     - ``theta``: angles θ_n, radians, as integrated (not wrapped).
-    - ``x``, ``y``: block centres X_n, Y_n, in s (y up; gravity along −y).
+    - ``x``, ``y``: block centres X_n, Y_n, in s: x runs down the ladder
+      (along gravity, block 1 at the top), y across it (the paper's Fig. 1).
     - ``vx``, ``vy``, ``omega``: their velocities, s/τ and rad/τ.
-    - ``kink_position``: blocks flipped at each sample.
+    - ``kink_position``: where the wall is at each sample, in blocks
+      (fractional: the count of blocks past the wall plus the fraction by
+      which the block at the wall has turned; 10.11 for N = 10 means the
+      wave has run off the end), not a count of flipped blocks.
+    - ``kinetic``, ``elastic``, ``gravitational``: the energies at each
+      sample, in k s² (½ m (Ẋ² + Ẏ²) + ½ I θ̇² summed; Σ ½ k [(L_A − a)² +
+      (L_B − b)²]; −m G Σ X_n); ``dissipated``: the energy dissipated from
+      t = 0, recorded when ``simulate(..., dissipation=True)`` (NaN
+      otherwise). After the drive ends, kinetic + elastic + gravitational
+      + dissipated stays constant to the integrator's accuracy.
     - ``arrival_times``: per block, τ: the first sign change of sin θ_n;
       NaN where the block never flipped (the CLI's ``null``).
     - ``final_theta_deg``: θ_n at t_end in degrees, wrapped to (−180, 180]
@@ -105,12 +115,34 @@ class Run:
 
     t = property(lambda self: self._d["t"], doc="Sample times, τ.")
     theta = property(lambda self: self._d["theta"], doc="θ_n(t), radians, samples × N.")
-    x = property(lambda self: self._d["x"], doc="X_n(t), block centres, s; samples × N.")
-    y = property(lambda self: self._d["y"], doc="Y_n(t), block centres, s; samples × N.")
+    x = property(
+        lambda self: self._d["x"],
+        doc="X_n(t), block centres, s; samples × N. X runs down the ladder, along gravity.",
+    )
+    y = property(
+        lambda self: self._d["y"],
+        doc="Y_n(t), block centres, s; samples × N. Y runs across the ladder.",
+    )
+    kinetic = property(
+        lambda self: self._d["kinetic"], doc="Kinetic energy at each sample, k s²."
+    )
+    elastic = property(
+        lambda self: self._d["elastic"], doc="Elastic energy of the springs at each sample, k s²."
+    )
+    gravitational = property(
+        lambda self: self._d["gravitational"], doc="−m G Σ X_n at each sample, k s²."
+    )
+    dissipated = property(
+        lambda self: self._d["dissipated"],
+        doc="Energy dissipated since t = 0 at each sample, k s² (NaN unless dissipation=True).",
+    )
     vx = property(lambda self: self._d["vx"], doc="dX_n/dt, s/τ; samples × N.")
     vy = property(lambda self: self._d["vy"], doc="dY_n/dt, s/τ; samples × N.")
     omega = property(lambda self: self._d["omega"], doc="dθ_n/dt, rad/τ; samples × N.")
-    kink_position = property(lambda self: self._d["kink_position"], doc="Blocks flipped at each sample.")
+    kink_position = property(
+        lambda self: self._d["kink_position"],
+        doc="The wall's position at each sample, in blocks (fractional; N + a fraction once it ran off the end).",
+    )
     arrival_times = property(
         lambda self: self._d["arrival_times"], doc="Arrival time per block, τ; NaN where none."
     )
@@ -206,6 +238,7 @@ def simulate(
     second_flip: Optional[float] = None,
     sample_every: Optional[float] = None,
     samples: Optional[Sequence[float]] = None,
+    dissipation: bool = False,
     **scene_keys: Any,
 ) -> Run:
     """Simulate the ladder and return a :class:`Run` of numpy arrays.
@@ -234,6 +267,9 @@ def simulate(
     - ``tolerance``: largest arrival-time error auto accepts, τ. Default 0.1.
     - ``sample_every``: interval of the samples kept, τ. Default 10 (as
       ``simulate --csv``); or ``samples``: the sample times themselves.
+    - ``dissipation``: also record the energy dissipated so far at each
+      sample (``Run.dissipated``; the steps are then taken one per call,
+      a slower run with the same trajectory bit for bit). Default False.
     - any other scene key (``model``, ``drive``, ``run``, or a dotted path
       such as ``**{"run.tolerance": 0.05}``): see docs/scenes.md.
 
@@ -246,7 +282,7 @@ def simulate(
         integrator=integrator, dt=dt, rtol=rtol, tolerance=tolerance,
     )
     kw.update(scene_keys)
-    return Run(_native.simulate(kw, sample_every, samples))
+    return Run(_native.simulate(kw, sample_every, samples, bool(dissipation)))
 
 
 def theory(alpha: float = 60.0, n: int = 10, b: float = 1.3) -> Dict[str, Any]:
@@ -363,12 +399,16 @@ class Scene:
         return self._s.runs
 
     def simulate(
-        self, sample_every: float = 10.0, samples: Optional[Sequence[float]] = None, index: int = 0
+        self,
+        sample_every: float = 10.0,
+        samples: Optional[Sequence[float]] = None,
+        index: int = 0,
+        dissipation: bool = False,
     ) -> Run:
         """Simulate run ``index`` of the scene (its only one, for most), as
         :func:`simulate` does; samples every ``sample_every`` τ (default 10)
         or at ``samples``."""
-        return Run(self._s.simulate(sample_every, samples, index), self)
+        return Run(self._s.simulate(sample_every, samples, index, bool(dissipation)), self)
 
     def _args(self, format, frames, size, fps, scale):
         return dict(

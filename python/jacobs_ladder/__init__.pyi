@@ -33,10 +33,22 @@ class Run:
         """θ_n(t), radians, samples × N (not wrapped)."""
     @property
     def x(self) -> FloatArray:
-        """X_n(t), block centres, s."""
+        """X_n(t), block centres, s; X runs down the ladder, along gravity."""
     @property
     def y(self) -> FloatArray:
-        """Y_n(t), block centres, s."""
+        """Y_n(t), block centres, s; Y runs across the ladder."""
+    @property
+    def kinetic(self) -> FloatArray:
+        """Kinetic energy at each sample, k s²."""
+    @property
+    def elastic(self) -> FloatArray:
+        """Elastic energy at each sample, k s²."""
+    @property
+    def gravitational(self) -> FloatArray:
+        """−m G Σ X_n at each sample, k s²."""
+    @property
+    def dissipated(self) -> FloatArray:
+        """Energy dissipated since t = 0, k s²; NaN unless dissipation=True."""
     @property
     def vx(self) -> FloatArray:
         """dX_n/dt, s/τ."""
@@ -48,7 +60,7 @@ class Run:
         """dθ_n/dt, rad/τ."""
     @property
     def kink_position(self) -> FloatArray:
-        """Blocks flipped at each sample."""
+        """The wall's position at each sample, in blocks (fractional)."""
     @property
     def arrival_times(self) -> FloatArray:
         """Arrival time per block, τ; NaN where the block never flipped."""
@@ -89,6 +101,7 @@ def simulate(
     second_flip: Optional[float] = None,
     sample_every: Optional[float] = None,
     samples: Optional[Sequence[float]] = None,
+    dissipation: bool = False,
     **scene_keys: Any,
 ) -> Run:
     """Simulate the ladder. alpha: degrees (default 60); n: blocks (10); b: s
@@ -141,7 +154,11 @@ class Scene:
     @property
     def runs(self) -> int: ...
     def simulate(
-        self, sample_every: float = 10.0, samples: Optional[Sequence[float]] = None, index: int = 0
+        self,
+        sample_every: float = 10.0,
+        samples: Optional[Sequence[float]] = None,
+        index: int = 0,
+        dissipation: bool = False,
     ) -> Run:
         """sample_every: τ (10)."""
     def render(

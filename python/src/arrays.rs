@@ -26,6 +26,17 @@ pub struct RunArrays {
 
 /// The arrays of `run` of `scene`.
 pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
+    // The energies at each sample (`Trajectory::energies`), before the
+    // states are handed over; `dissipated` is NaN where the run did not
+    // record it (`RunOptions::dissipation`).
+    let ladder = scene.scenario()?.ladder;
+    let energies = run.trajectory.energies(&ladder);
+    let samples = run.trajectory.times.len();
+    let dissipated = if energies.dissipated.len() == samples {
+        energies.dissipated
+    } else {
+        vec![f64::NAN; samples]
+    };
     let traj = &mut run.trajectory;
     let n = traj.final_state.q.len() / 3;
     let times = std::mem::take(&mut traj.times);
@@ -56,6 +67,10 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
         ("kink_position", kink, false),
         ("arrival_times", arrival, false),
         ("final_theta_deg", traj.final_theta_deg(), false),
+        ("kinetic", energies.kinetic, false),
+        ("elastic", energies.elastic, false),
+        ("gravitational", energies.gravitational, false),
+        ("dissipated", dissipated, false),
     ];
     let mut record = serde_json::to_value(RunData::from_run(scene, &run))
         .map_err(|e| Error::failed(format!("cannot encode the run: {e}")))?;

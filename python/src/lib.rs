@@ -23,19 +23,20 @@ use pyo3::types::{PyDict, PyList};
 /// `simulate(**keywords)`: the paper's scene with the keywords applied (a
 /// data run), simulated; samples every `sample_every` τ or at `samples`.
 #[pyfunction]
-#[pyo3(signature = (kwargs, sample_every=None, samples=None))]
+#[pyo3(signature = (kwargs, sample_every=None, samples=None, dissipation=false))]
 fn simulate<'py>(
     py: Python<'py>,
     kwargs: &Bound<'py, PyDict>,
     sample_every: Option<&Bound<'py, PyAny>>,
     samples: Option<&Bound<'py, PyAny>>,
+    dissipation: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let base = Scene {
         output: OutputSpec::Data,
         ..Scene::default()
     };
     let scene = kwargs::apply(&base, convert::keywords(kwargs)?).py_err()?;
-    scene::simulate_scene(py, scene, sample_every, samples)
+    scene::simulate_scene(py, scene, sample_every, samples, dissipation)
 }
 
 /// `theory(alpha, n, b)`: the numbers of `ladder theory --json`, as JSON.

@@ -233,13 +233,14 @@ impl PyScene {
     }
 
     /// Simulates run `index` of the scene (its only one for most scenes).
-    #[pyo3(signature = (sample_every=None, samples=None, index=None))]
+    #[pyo3(signature = (sample_every=None, samples=None, index=None, dissipation=false))]
     fn simulate<'py>(
         &self,
         py: Python<'py>,
         sample_every: Option<&Bound<'py, PyAny>>,
         samples: Option<&Bound<'py, PyAny>>,
         index: Option<&Bound<'py, PyAny>>,
+        dissipation: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
         let index = convert::whole_or_none(index, "index")?.unwrap_or(0);
         let runs = self.scene.runs();
@@ -253,7 +254,7 @@ impl PyScene {
             )))
             .py_err();
         };
-        simulate_scene(py, single, sample_every, samples)
+        simulate_scene(py, single, sample_every, samples, dissipation)
     }
 
     /// The files the command line writes for this scene, as (name, bytes).
@@ -295,6 +296,7 @@ pub fn simulate_scene<'py>(
     scene: Scene,
     sample_every: Option<&Bound<'py, PyAny>>,
     samples: Option<&Bound<'py, PyAny>>,
+    dissipation: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let limits = jacobs_ladder::limits::Limits::active();
     let n = scene.model.n;
@@ -319,7 +321,8 @@ pub fn simulate_scene<'py>(
         let progress = |t: f64| stop.check(t);
         let options = jacobs_ladder::sim::RunOptions::default()
             .limits(jacobs_ladder::limits::Limits::active())
-            .progress(&progress);
+            .progress(&progress)
+            .dissipation(dissipation);
         let run = scenes::run::simulate_with(&scene, &times, &options)?;
         arrays::arrays(&scene, run)
     })?;
