@@ -43,14 +43,20 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
     let states = std::mem::take(&mut traj.states);
     let velocities = std::mem::take(&mut traj.velocities);
     let kink = std::mem::take(&mut traj.kink_position);
-    // Layout of q and v: [X, Y, θ] per block (`model::ladder`).
-    let gather = |rows: &[Vec<f64>], k: usize| -> Vec<f64> {
-        let mut out = Vec::with_capacity(rows.len() * n);
+    // Layout of q and v: [X, Y, θ] per block (`model::ladder`). Each
+    // sample's row is freed as soon as it is split, so the peak is the
+    // trajectory's size once, not twice (issue 32).
+    let split = |rows: Vec<Vec<f64>>| -> [Vec<f64>; 3] {
+        let mut out: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(rows.len() * n));
         for row in rows {
-            out.extend((0..n).map(|i| row[3 * i + k]));
+            for (k, column) in out.iter_mut().enumerate() {
+                column.extend((0..n).map(|i| row[3 * i + k]));
+            }
         }
         out
     };
+    let [x, y, theta] = split(states);
+    let [vx, vy, omega] = split(velocities);
     let arrival: Vec<f64> = traj
         .arrival_times
         .iter()
@@ -58,12 +64,12 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
         .collect();
     let columns = vec![
         ("t", times, false),
-        ("x", gather(&states, 0), true),
-        ("y", gather(&states, 1), true),
-        ("theta", gather(&states, 2), true),
-        ("vx", gather(&velocities, 0), true),
-        ("vy", gather(&velocities, 1), true),
-        ("omega", gather(&velocities, 2), true),
+        ("x", x, true),
+        ("y", y, true),
+        ("theta", theta, true),
+        ("vx", vx, true),
+        ("vy", vy, true),
+        ("omega", omega, true),
         ("kink_position", kink, false),
         ("arrival_times", arrival, false),
         ("final_theta_deg", traj.final_theta_deg(), false),
