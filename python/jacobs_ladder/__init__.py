@@ -627,6 +627,23 @@ class Table(dict):
 
         return pd.DataFrame({k: self[k] for k in self.keys()})
 
+    def to_xarray(self):
+        """The table as an ``xarray.Dataset`` (needs xarray) with the grid's
+        axes as dimensions, in the sweep's order (the first varies
+        slowest), each with its values as coordinate; every other column a
+        variable over them (``outcome[alpha, gamma]``)."""
+        import xarray as xr
+
+        axes = [(a["param"], np.asarray(a["values"])) for a in self.json["axes"]]
+        dims = [name for name, _ in axes]
+        shape = tuple(len(values) for _, values in axes)
+        data = {
+            k: (dims, np.asarray(v).reshape(shape))
+            for k, v in self.items()
+            if k not in dims
+        }
+        return xr.Dataset(data, coords={name: values for name, values in axes})
+
     def __repr__(self) -> str:
         outcomes, counts = np.unique(self["outcome"], return_counts=True)
         summary = ", ".join(f"{c} {o}" for o, c in zip(outcomes, counts))

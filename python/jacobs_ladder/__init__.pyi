@@ -195,6 +195,8 @@ class Table(Dict[str, Any]):
     @property
     def columns(self) -> List[str]: ...
     def to_pandas(self) -> Any: ...
+    def to_xarray(self) -> Any:
+        """An xarray.Dataset with the grid's axes as dimensions."""
 
 def sweep(
     base: Optional[Scene] = None,
