@@ -105,7 +105,10 @@ pub fn value(obj: &Bound<'_, PyAny>, key: &str, depth: usize) -> PyResult<Value>
     if obj.is_instance_of::<PyList>() || obj.is_instance_of::<PyTuple>() {
         let len = obj.len()?;
         if len > MAX_ITEMS {
-            return Err(bad(key, format!("{len} values, past the {MAX_ITEMS} a list may hold")));
+            return Err(bad(
+                key,
+                format!("{len} values, past the {MAX_ITEMS} a list may hold"),
+            ));
         }
         let mut items = Vec::with_capacity(len);
         for (i, item) in obj.try_iter()?.enumerate() {
@@ -122,7 +125,10 @@ pub fn value(obj: &Bound<'_, PyAny>, key: &str, depth: usize) -> PyResult<Value>
         if is_array {
             let size: usize = obj.getattr("size")?.extract()?;
             if size > MAX_ITEMS {
-                return Err(bad(key, format!("{size} values, past the {MAX_ITEMS} a list may hold")));
+                return Err(bad(
+                    key,
+                    format!("{size} values, past the {MAX_ITEMS} a list may hold"),
+                ));
             }
         }
         if is_array || is_scalar {
@@ -195,19 +201,28 @@ pub fn times(
     key: &str,
     check: &dyn Fn(usize) -> PyResult<()>,
 ) -> PyResult<Vec<f64>> {
-    let len = obj
-        .len()
-        .map_err(|_| bad(key, format!("must be a list of times, got a {}", type_name(obj))))?;
+    let len = obj.len().map_err(|_| {
+        bad(
+            key,
+            format!("must be a list of times, got a {}", type_name(obj)),
+        )
+    })?;
     check(len)?;
     let Value::Array(items) = value(obj, key, 0)? else {
-        return Err(bad(key, format!("must be a list of times, got {}", repr(obj))));
+        return Err(bad(
+            key,
+            format!("must be a list of times, got {}", repr(obj)),
+        ));
     };
     let mut out = Vec::with_capacity(items.len());
     for (i, item) in items.iter().enumerate() {
         let Some(t) = item.as_f64() else {
             return Err(bad(
                 key,
-                format!("must be a flat list of times, got {} at index {i}", shown(item)),
+                format!(
+                    "must be a flat list of times, got {} at index {i}",
+                    shown(item)
+                ),
             ));
         };
         if let Some(&last) = out.last()

@@ -51,7 +51,11 @@ fn theory(
         convert::number_or_none(Some(o), key)?
             .ok_or_else(|| convert::bad(key, "must be a finite number, got None"))
     };
-    let (alpha, n, b) = (number(alpha, "alpha")?, convert::whole(n, "n")?, number(b, "b")?);
+    let (alpha, n, b) = (
+        number(alpha, "alpha")?,
+        convert::whole(n, "n")?,
+        number(b, "b")?,
+    );
     work::run(py, move |_| {
         let m = jacobs_ladder::scene::Model::default();
         let params = jacobs_ladder::model::Params::new(n, b, alpha, m.gamma, m.gravity, m.inertia)?;

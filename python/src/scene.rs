@@ -83,7 +83,10 @@ fn formats(obj: &Bound<'_, PyAny>) -> PyResult<String> {
     if names.is_empty() || names.iter().any(String::is_empty) {
         return Err(convert::bad(
             "format",
-            format!("an empty format name in {:?}; give names such as \"png,svg\"", names.join(",")),
+            format!(
+                "an empty format name in {:?}; give names such as \"png,svg\"",
+                names.join(",")
+            ),
         ));
     }
     Ok(names.join(","))
@@ -94,15 +97,19 @@ fn formats(obj: &Bound<'_, PyAny>) -> PyResult<String> {
 /// frame's pixels against its cap).
 fn size(obj: &Bound<'_, PyAny>) -> PyResult<(u32, u32)> {
     match convert::value(obj, "size", 0)? {
-        serde_json::Value::String(text) => front::options::parse_size(&text)
-            .map_err(|e| convert::bad("size", e)),
+        serde_json::Value::String(text) => {
+            front::options::parse_size(&text).map_err(|e| convert::bad("size", e))
+        }
         serde_json::Value::Array(items) if items.len() == 2 => {
             let side = |v: &serde_json::Value| {
                 v.as_u64()
                     .filter(|&x| (1..=u64::from(u32::MAX)).contains(&x))
                     .map(|x| x as u32)
                     .ok_or_else(|| {
-                        convert::bad("size", format!("must be (width, height) in whole pixels >= 1, got {v}"))
+                        convert::bad(
+                            "size",
+                            format!("must be (width, height) in whole pixels >= 1, got {v}"),
+                        )
                     })
             };
             Ok((side(&items[0])?, side(&items[1])?))
