@@ -45,7 +45,7 @@ class _LazyNumpy:
 np: Any = _LazyNumpy()
 
 from . import _native
-from ._native import RunError
+from ._native import InternalError, RunError
 
 __all__ = [
     "simulate",
@@ -58,35 +58,13 @@ __all__ = [
     "Image",
     "Files",
     "RunError",
+    "InternalError",
     "__version__",
 ]
 
 __version__ = "0.1.0"
 #: The engine's version and git commit (``ladder --version``).
 ENGINE_VERSION: str = _native.VERSION
-
-
-def _plain(value: Any) -> Any:
-    """numpy scalars and arrays as plain Python for JSON."""
-    if isinstance(value, np.generic):
-        return value.item()
-    if isinstance(value, np.ndarray):
-        return value.tolist()
-    if isinstance(value, (tuple, set, frozenset)):
-        return list(value)
-    if isinstance(value, os.PathLike):
-        return os.fspath(value)
-    raise TypeError(f"{type(value).__name__} is not a scene value")
-
-
-def _keywords(kwargs: Mapping[str, Any]) -> str:
-    """The keywords as the JSON object the engine merges into a scene
-    (None means: keep the scene's value)."""
-    given = {k: v for k, v in kwargs.items() if v is not None}
-    try:
-        return json.dumps(given, default=_plain, allow_nan=True)
-    except TypeError as e:
-        raise ValueError(f"keywords must be numbers, strings, lists or dicts: {e}") from None
 
 
 # ---------------------------------------------------------------- runs
@@ -99,9 +77,19 @@ class Run:
 
     - ``t``: sample times, τ (every ``sample_every`` τ from 0 to t_end).
     - ``theta``: angles θ_n, radians, as integrated (not wrapped).
-    - ``x``, ``y``: block centres X_n, Y_n, in s (y up; gravity along −y).
+    - ``x``, ``y``: block centres X_n, Y_n, in s: x runs down the ladder
+      (along gravity, block 1 at the top), y across it (the paper's Fig. 1).
     - ``vx``, ``vy``, ``omega``: their velocities, s/τ and rad/τ.
-    - ``kink_position``: blocks flipped at each sample.
+    - ``kink_position``: where the wall is at each sample, in blocks
+      (fractional: the count of blocks past the wall plus the fraction by
+      which the block at the wall has turned; 10.11 for N = 10 means the
+      wave has run off the end), not a count of flipped blocks.
+    - ``kinetic``, ``elastic``, ``gravitational``: the energies at each
+      sample, in k s² (½ m (Ẋ² + Ẏ²) + ½ I θ̇² summed; Σ ½ k [(L_A − a)² +
+      (L_B − b)²]; −m G Σ X_n); ``dissipated``: the energy dissipated from
+      t = 0, recorded when ``simulate(..., dissipation=True)`` (NaN
+      otherwise). After the drive ends, kinetic + elastic + gravitational
+      + dissipated stays constant to the integrator's accuracy.
     - ``arrival_times``: per block, τ: the first sign change of sin θ_n;
       NaN where the block never flipped (the CLI's ``null``).
     - ``final_theta_deg``: θ_n at t_end in degrees, wrapped to (−180, 180]
@@ -121,14 +109,40 @@ class Run:
         self.record: Dict[str, Any] = json.loads(arrays["record"])
         self.scene = scene
 
+    def __reduce__(self):
+        # The arrays (numpy pickles them whole) and the record's JSON text.
+        return (Run, (self._d, self.scene))
+
     t = property(lambda self: self._d["t"], doc="Sample times, τ.")
     theta = property(lambda self: self._d["theta"], doc="θ_n(t), radians, samples × N.")
-    x = property(lambda self: self._d["x"], doc="X_n(t), block centres, s; samples × N.")
-    y = property(lambda self: self._d["y"], doc="Y_n(t), block centres, s; samples × N.")
+    x = property(
+        lambda self: self._d["x"],
+        doc="X_n(t), block centres, s; samples × N. X runs down the ladder, along gravity.",
+    )
+    y = property(
+        lambda self: self._d["y"],
+        doc="Y_n(t), block centres, s; samples × N. Y runs across the ladder.",
+    )
+    kinetic = property(
+        lambda self: self._d["kinetic"], doc="Kinetic energy at each sample, k s²."
+    )
+    elastic = property(
+        lambda self: self._d["elastic"], doc="Elastic energy of the springs at each sample, k s²."
+    )
+    gravitational = property(
+        lambda self: self._d["gravitational"], doc="−m G Σ X_n at each sample, k s²."
+    )
+    dissipated = property(
+        lambda self: self._d["dissipated"],
+        doc="Energy dissipated since t = 0 at each sample, k s² (NaN unless dissipation=True).",
+    )
     vx = property(lambda self: self._d["vx"], doc="dX_n/dt, s/τ; samples × N.")
     vy = property(lambda self: self._d["vy"], doc="dY_n/dt, s/τ; samples × N.")
     omega = property(lambda self: self._d["omega"], doc="dθ_n/dt, rad/τ; samples × N.")
-    kink_position = property(lambda self: self._d["kink_position"], doc="Blocks flipped at each sample.")
+    kink_position = property(
+        lambda self: self._d["kink_position"],
+        doc="The wall's position at each sample, in blocks (fractional; N + a fraction once it ran off the end).",
+    )
     arrival_times = property(
         lambda self: self._d["arrival_times"], doc="Arrival time per block, τ; NaN where none."
     )
@@ -195,38 +209,43 @@ class Run:
         wave = "kink" if alpha is not None and alpha >= 0 else "antikink"
         flipped = int(np.count_nonzero(~np.isnan(self.arrival_times)))
         integ = self.integrator
+        t_end = self.record.get("t_end")
+        if not isinstance(t_end, (int, float)):  # "auto": the window it reached
+            t_end = float(self.t[-1]) if len(self.t) else float("nan")
         return (
             f"<Run {wave} α = {alpha:g}°, N = {self.n}, b = {m.get('b'):g}, "
-            f"γ = {m.get('gamma'):g}: t = 0..{self.record.get('t_end'):g} τ, "
+            f"γ = {m.get('gamma'):g}: t = 0..{t_end:g} τ, "
             f"{len(self.t)} samples, {flipped}/{self.n} blocks flipped, "
             f"{integ['name']} dt = {integ['dt']:g} ({integ['requested']})>"
         )
 
 
 def simulate(
-    alpha: float = 60.0,
-    n: int = 10,
-    b: float = 1.3,
-    gamma: float = 0.02,
-    gravity: float = 2e-4,
-    inertia: float = 0.25,
-    drive_time: float = 1000.0,
+    alpha: Optional[float] = None,
+    n: Optional[int] = None,
+    b: Optional[float] = None,
+    gamma: Optional[float] = None,
+    gravity: Optional[float] = None,
+    inertia: Optional[float] = None,
+    drive_time: Optional[float] = None,
     flips: Optional[Sequence[float]] = None,
-    t_end: float = 4000.0,
-    integrator: str = "auto",
+    t_end: Union[float, str, None] = None,
+    integrator: Optional[str] = None,
     *,
     dt: Optional[float] = None,
     rtol: Optional[float] = None,
     tolerance: Optional[float] = None,
     second_flip: Optional[float] = None,
-    sample_every: float = 10.0,
+    sample_every: Optional[float] = None,
     samples: Optional[Sequence[float]] = None,
+    dissipation: bool = False,
     **scene_keys: Any,
 ) -> Run:
     """Simulate the ladder and return a :class:`Run` of numpy arrays.
 
     The keywords are ``ladder simulate``'s long flags with underscores;
-    defaults are the paper's values:
+    a keyword left out (None) keeps the engine's default, the paper's
+    value:
 
     - ``alpha``: equilibrium angle α, degrees, 0 < |α| < 90; its sign picks
       the wave (α > 0 kink, α < 0 antikink). Default 60.
@@ -248,6 +267,9 @@ def simulate(
     - ``tolerance``: largest arrival-time error auto accepts, τ. Default 0.1.
     - ``sample_every``: interval of the samples kept, τ. Default 10 (as
       ``simulate --csv``); or ``samples``: the sample times themselves.
+    - ``dissipation``: also record the energy dissipated so far at each
+      sample (``Run.dissipated``; the steps are then taken one per call,
+      a slower run with the same trajectory bit for bit). Default False.
     - any other scene key (``model``, ``drive``, ``run``, or a dotted path
       such as ``**{"run.tolerance": 0.05}``): see docs/scenes.md.
 
@@ -260,8 +282,7 @@ def simulate(
         integrator=integrator, dt=dt, rtol=rtol, tolerance=tolerance,
     )
     kw.update(scene_keys)
-    times = None if samples is None else [float(t) for t in samples]
-    return Run(_native.simulate(_keywords(kw), sample_every, times))
+    return Run(_native.simulate(kw, sample_every, samples, bool(dissipation)))
 
 
 def theory(alpha: float = 60.0, n: int = 10, b: float = 1.3) -> Dict[str, Any]:
@@ -273,7 +294,7 @@ def theory(alpha: float = 60.0, n: int = 10, b: float = 1.3) -> Dict[str, Any]:
     - ``n``: blocks of the finite chain, 2 to 400. Default 10.
     - ``b``: rest length of the B springs, s. Default 1.3.
     """
-    return json.loads(_native.theory(float(alpha), int(n), float(b)))
+    return json.loads(_native.theory(alpha, n, b))
 
 
 def catalogue() -> List[Tuple[str, str, str]]:
@@ -286,14 +307,6 @@ def catalogue() -> List[Tuple[str, str, str]]:
 # The render options' defaults (frames, size, fps, scale, formats) are the
 # library's (jacobs_ladder::front::options::RenderOptions): a keyword left
 # at None is not sent.
-    w, h = size
-    return int(w), int(h)
-
-
-def _format(fmt: Union[str, Sequence[str], None]) -> Optional[str]:
-    if fmt is None or isinstance(fmt, str):
-        return fmt
-    return ",".join(fmt)
 
 
 class Scene:
@@ -308,7 +321,21 @@ class Scene:
 
     def __init__(self, **keys: Any):
         base = _native._Scene.from_json("{}")
-        self._s = base.replace(_keywords(keys)) if keys else base
+        self._s = base.replace(keys) if keys else base
+
+    def __reduce__(self):
+        # A scene travels as its JSON (every key written out), checked again
+        # when read: it pickles, deep-copies and crosses to a pool's worker.
+        return (_scene_from_json, (self._s.to_json(),))
+
+    def __copy__(self) -> "Scene":
+        return self  # immutable: replace() makes the changed copies
+
+    def __deepcopy__(self, memo: Any) -> "Scene":
+        return self._wrap(_native._Scene.from_json(self._s.to_json()))
+
+    def __hash__(self) -> int:
+        return hash(self._s.to_json())
 
     @classmethod
     def _wrap(cls, native: Any) -> "Scene":
@@ -350,7 +377,7 @@ class Scene:
         ``n``, ``t_end``, ``flips``, ...), any scene key (``name``,
         ``title``, ``model={...}``, ``output={"kind": "filmstrip", ...}``)
         or a dotted key path (``**{"output.camera": "follow"}``)."""
-        return self._wrap(self._s.replace(_keywords(keys)))
+        return self._wrap(self._s.replace(keys))
 
     @property
     def name(self) -> str:
@@ -372,17 +399,20 @@ class Scene:
         return self._s.runs
 
     def simulate(
-        self, sample_every: float = 10.0, samples: Optional[Sequence[float]] = None, index: int = 0
+        self,
+        sample_every: float = 10.0,
+        samples: Optional[Sequence[float]] = None,
+        index: int = 0,
+        dissipation: bool = False,
     ) -> Run:
         """Simulate run ``index`` of the scene (its only one, for most), as
         :func:`simulate` does; samples every ``sample_every`` τ (default 10)
         or at ``samples``."""
-        times = None if samples is None else [float(t) for t in samples]
-        return Run(self._s.simulate(sample_every, times, index), self)
+        return Run(self._s.simulate(sample_every, samples, index, bool(dissipation)), self)
 
     def _args(self, format, frames, size, fps, scale):
         return dict(
-            formats=_format(format),
+            format=format,
             frames=frames,
             size=size,
             fps=fps,
@@ -447,6 +477,11 @@ class Scene:
         return f"<Scene {self.kind} {self.name}: {self.title}; {self._s.parameters}>"
 
 
+def _scene_from_json(text: str) -> Scene:
+    """A scene from its JSON (unpickling)."""
+    return Scene._wrap(_native._Scene.from_json(text))
+
+
 # ---------------------------------------------------------- rendered files
 
 _MIME = {
@@ -471,6 +506,9 @@ class Image(bytes):
         obj.name = name
         return obj
 
+    def __reduce__(self):
+        return (Image, (bytes(self), self.name))
+
     @property
     def format(self) -> str:
         return self.name.rsplit(".", 1)[-1].lower() if "." in self.name else ""
@@ -493,7 +531,9 @@ class Image(bytes):
             return f'<video controls loop autoplay muted src="data:{mime};base64,{b64}"></video>'
         if fmt == "pdf":
             return f'<embed type="{mime}" width="100%" height="480" src="data:{mime};base64,{b64}">'
-        return f'<img alt="{self.name}" src="data:{mime};base64,{b64}">'
+        import html
+
+        return f'<img alt="{html.escape(self.name)}" src="data:{mime};base64,{b64}">'
 
     def save(self, path: Union[str, os.PathLike]) -> Path:
         """Write the bytes to ``path`` (a folder: under the file's name)."""
@@ -516,7 +556,9 @@ class Files(dict):
         for name, img in self.items():
             html = img._repr_html_() if isinstance(img, Image) else None
             if html:
-                parts.append(f"<figure>{html}<figcaption>{name}</figcaption></figure>")
+                import html as _html
+
+                parts.append(f"<figure>{html}<figcaption>{_html.escape(name)}</figcaption></figure>")
         return "".join(parts) or None
 
     def __repr__(self) -> str:
@@ -565,7 +607,12 @@ class Table(dict):
                 cols[name] = np.array([float(v) if v else np.nan for v in values], dtype=float)
         super().__init__(cols)
         self.csv = csv_text
+        self.json_text = json_text
         self.json = json.loads(json_text)
+
+    def __reduce__(self):
+        # Made again from its CSV and JSON text (the columns follow).
+        return (Table, (self.csv, self.json_text))
 
     def __len__(self) -> int:  # rows, as a table's length
         return len(self["run"]) if "run" in self else 0
@@ -580,6 +627,23 @@ class Table(dict):
 
         return pd.DataFrame({k: self[k] for k in self.keys()})
 
+    def to_xarray(self):
+        """The table as an ``xarray.Dataset`` (needs xarray) with the grid's
+        axes as dimensions, in the sweep's order (the first varies
+        slowest), each with its values as coordinate; every other column a
+        variable over them (``outcome[alpha, gamma]``)."""
+        import xarray as xr
+
+        axes = [(a["param"], np.asarray(a["values"])) for a in self.json["axes"]]
+        dims = [name for name, _ in axes]
+        shape = tuple(len(values) for _, values in axes)
+        data = {
+            k: (dims, np.asarray(v).reshape(shape))
+            for k, v in self.items()
+            if k not in dims
+        }
+        return xr.Dataset(data, coords={name: values for name, values in axes})
+
     def __repr__(self) -> str:
         outcomes, counts = np.unique(self["outcome"], return_counts=True)
         summary = ", ".join(f"{c} {o}" for o, c in zip(outcomes, counts))
@@ -592,6 +656,8 @@ def sweep(
     cap: Optional[float] = None,
     name: Optional[str] = None,
     max_runs: int = 100_000,
+    executor: Any = None,
+    chunks: Optional[int] = None,
     **keys: Any,
 ) -> Table:
     """Run a scene over a grid of parameters and decide what the wave did
@@ -608,6 +674,19 @@ def sweep(
       (docs/sweeps.md); otherwise it runs on to the cap.
     - ``name``: the sweep's name (in its JSON). Default the base's.
     - ``max_runs``: refuse a larger grid. Default 100000.
+    - ``executor``: run the sweep on another machine's cores, or many: any
+      ``concurrent.futures.Executor`` (a ``ProcessPoolExecutor``,
+      dask.distributed's ``client.get_executor()``, submitit's
+      ``AutoExecutor``, mpi4py's ``MPIPoolExecutor``), or anything with
+      ``submit(fn, *args)`` returning a future with ``result()``. The grid
+      is cut into ``chunks`` (round robin, as ``ladder sweep --shard``
+      does); each chunk is sent to a worker, runs there on the Rust core
+      with that worker's threads (``RAYON_NUM_THREADS``; one worker per
+      node), and comes back as its shard; the shards are merged by the
+      code of ``ladder sweep gather``. The table is byte for byte the
+      local one's. docs/cluster.md.
+    - ``chunks``: how many pieces the grid is cut into for ``executor``.
+      Default about one per 512 runs.
 
     The axes vary in the order of ``SWEEP_PARAMETERS`` (the first slowest),
     as ``ladder sweep``'s flags do. Returns a :class:`Table` equal to the
@@ -630,6 +709,36 @@ def sweep(
     if name is not None:
         keys["name"] = name
     native = None if base is None else base._s
-    axes = [(k, json.dumps(v, default=_plain)) for k, v in rest]
-    csv_text, json_text = _native.sweep(native, _keywords(keys), axes, int(max_runs))
+    axes = list(rest)
+    if executor is None:
+        if chunks is not None:
+            raise ValueError("chunks: cuts the grid for an executor; give executor= too")
+        csv_text, json_text = _native.sweep(native, keys, axes, max_runs)
+        return Table(csv_text, json_text)
+    scene, max_runs, count = _native.sweep_prepare(native, keys, axes, max_runs, chunks)
+    futures = [
+        executor.submit(_sweep_chunk, scene, max_runs, k, count) for k in range(1, count + 1)
+    ]
+    try:
+        shards = [f.result() for f in futures]
+    except BaseException:
+        for f in futures:
+            f.cancel()
+        raise
+    import tempfile
+
+    with tempfile.TemporaryDirectory(prefix="jacobs-ladder-sweep-") as tmp:
+        csv_text, json_text = _native.sweep_gather(tmp, shards, max_runs)
     return Table(csv_text, json_text)
+
+
+def _sweep_chunk(scene: str, max_runs: int, k: int, chunks: int) -> bytes:
+    """Chunk ``k`` of ``chunks`` of a sweep, run in an executor's worker:
+    the bytes of its shard file."""
+    return _native.sweep_chunk(scene, max_runs, k, chunks)
+
+
+def __dir__() -> List[str]:
+    """The public names only (``dir(jl)``, tab completion): not the
+    helpers this module imports (typing, json, os, numpy)."""
+    return sorted(set(__all__) | {"ENGINE_VERSION", "SWEEP_PARAMETERS"})

@@ -15,6 +15,9 @@ SWEEP_PARAMETERS: Tuple[str, ...]
 class RunError(RuntimeError):
     """A run that failed (a diverging integrator, ...): message and hint."""
 
+class InternalError(RuntimeError):
+    """A bug of jacobs_ladder (a caught panic of the engine)."""
+
 FloatArray = npt.NDArray[np.float64]
 
 class Run:
@@ -30,10 +33,22 @@ class Run:
         """θ_n(t), radians, samples × N (not wrapped)."""
     @property
     def x(self) -> FloatArray:
-        """X_n(t), block centres, s."""
+        """X_n(t), block centres, s; X runs down the ladder, along gravity."""
     @property
     def y(self) -> FloatArray:
-        """Y_n(t), block centres, s."""
+        """Y_n(t), block centres, s; Y runs across the ladder."""
+    @property
+    def kinetic(self) -> FloatArray:
+        """Kinetic energy at each sample, k s²."""
+    @property
+    def elastic(self) -> FloatArray:
+        """Elastic energy at each sample, k s²."""
+    @property
+    def gravitational(self) -> FloatArray:
+        """−m G Σ X_n at each sample, k s²."""
+    @property
+    def dissipated(self) -> FloatArray:
+        """Energy dissipated since t = 0, k s²; NaN unless dissipation=True."""
     @property
     def vx(self) -> FloatArray:
         """dX_n/dt, s/τ."""
@@ -45,7 +60,7 @@ class Run:
         """dθ_n/dt, rad/τ."""
     @property
     def kink_position(self) -> FloatArray:
-        """Blocks flipped at each sample."""
+        """The wall's position at each sample, in blocks (fractional)."""
     @property
     def arrival_times(self) -> FloatArray:
         """Arrival time per block, τ; NaN where the block never flipped."""
@@ -69,23 +84,24 @@ class Run:
     def to_dict(self) -> Dict[str, Any]: ...
 
 def simulate(
-    alpha: float = 60.0,
-    n: int = 10,
-    b: float = 1.3,
-    gamma: float = 0.02,
-    gravity: float = 2e-4,
-    inertia: float = 0.25,
-    drive_time: float = 1000.0,
+    alpha: Optional[float] = None,
+    n: Optional[int] = None,
+    b: Optional[float] = None,
+    gamma: Optional[float] = None,
+    gravity: Optional[float] = None,
+    inertia: Optional[float] = None,
+    drive_time: Optional[float] = None,
     flips: Optional[Sequence[float]] = None,
-    t_end: float = 4000.0,
-    integrator: str = "auto",
+    t_end: Union[float, str, None] = None,
+    integrator: Optional[str] = None,
     *,
     dt: Optional[float] = None,
     rtol: Optional[float] = None,
     tolerance: Optional[float] = None,
     second_flip: Optional[float] = None,
-    sample_every: float = 10.0,
+    sample_every: Optional[float] = None,
     samples: Optional[Sequence[float]] = None,
+    dissipation: bool = False,
     **scene_keys: Any,
 ) -> Run:
     """Simulate the ladder. alpha: degrees (default 60); n: blocks (10); b: s
@@ -138,7 +154,11 @@ class Scene:
     @property
     def runs(self) -> int: ...
     def simulate(
-        self, sample_every: float = 10.0, samples: Optional[Sequence[float]] = None, index: int = 0
+        self,
+        sample_every: float = 10.0,
+        samples: Optional[Sequence[float]] = None,
+        index: int = 0,
+        dissipation: bool = False,
     ) -> Run:
         """sample_every: τ (10)."""
     def render(
@@ -170,10 +190,13 @@ class Table(Dict[str, Any]):
 
     csv: str
     json: Dict[str, Any]
+    json_text: str
     def __init__(self, csv_text: str, json_text: str) -> None: ...
     @property
     def columns(self) -> List[str]: ...
     def to_pandas(self) -> Any: ...
+    def to_xarray(self) -> Any:
+        """An xarray.Dataset with the grid's axes as dimensions."""
 
 def sweep(
     base: Optional[Scene] = None,
@@ -181,7 +204,11 @@ def sweep(
     cap: Optional[float] = None,
     name: Optional[str] = None,
     max_runs: int = 100_000,
+    executor: Any = None,
+    chunks: Optional[int] = None,
     **keys: Any,
 ) -> Table:
     """Grid keywords alpha, n, b, gamma, gravity, inertia, drive_time: a
-    list, a value or "start:stop:step". cap: τ (100000)."""
+    list, a value or "start:stop:step". cap: τ (100000). executor: any
+    concurrent.futures.Executor; chunks: pieces of the grid sent to it
+    (about one per 512 runs)."""

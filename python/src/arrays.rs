@@ -26,20 +26,37 @@ pub struct RunArrays {
 
 /// The arrays of `run` of `scene`.
 pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
+    // The energies at each sample (`Trajectory::energies`), before the
+    // states are handed over; `dissipated` is NaN where the run did not
+    // record it (`RunOptions::dissipation`).
+    let ladder = scene.scenario()?.ladder;
+    let energies = run.trajectory.energies(&ladder);
+    let samples = run.trajectory.times.len();
+    let dissipated = if energies.dissipated.len() == samples {
+        energies.dissipated
+    } else {
+        vec![f64::NAN; samples]
+    };
     let traj = &mut run.trajectory;
     let n = traj.final_state.q.len() / 3;
     let times = std::mem::take(&mut traj.times);
     let states = std::mem::take(&mut traj.states);
     let velocities = std::mem::take(&mut traj.velocities);
     let kink = std::mem::take(&mut traj.kink_position);
-    // Layout of q and v: [X, Y, θ] per block (`model::ladder`).
-    let gather = |rows: &[Vec<f64>], k: usize| -> Vec<f64> {
-        let mut out = Vec::with_capacity(rows.len() * n);
+    // Layout of q and v: [X, Y, θ] per block (`model::ladder`). Each
+    // sample's row is freed as soon as it is split, so the peak is the
+    // trajectory's size once, not twice (issue 32).
+    let split = |rows: Vec<Vec<f64>>| -> [Vec<f64>; 3] {
+        let mut out: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(rows.len() * n));
         for row in rows {
-            out.extend((0..n).map(|i| row[3 * i + k]));
+            for (k, column) in out.iter_mut().enumerate() {
+                column.extend((0..n).map(|i| row[3 * i + k]));
+            }
         }
         out
     };
+    let [x, y, theta] = split(states);
+    let [vx, vy, omega] = split(velocities);
     let arrival: Vec<f64> = traj
         .arrival_times
         .iter()
@@ -47,15 +64,19 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
         .collect();
     let columns = vec![
         ("t", times, false),
-        ("x", gather(&states, 0), true),
-        ("y", gather(&states, 1), true),
-        ("theta", gather(&states, 2), true),
-        ("vx", gather(&velocities, 0), true),
-        ("vy", gather(&velocities, 1), true),
-        ("omega", gather(&velocities, 2), true),
+        ("x", x, true),
+        ("y", y, true),
+        ("theta", theta, true),
+        ("vx", vx, true),
+        ("vy", vy, true),
+        ("omega", omega, true),
         ("kink_position", kink, false),
         ("arrival_times", arrival, false),
         ("final_theta_deg", traj.final_theta_deg(), false),
+        ("kinetic", energies.kinetic, false),
+        ("elastic", energies.elastic, false),
+        ("gravitational", energies.gravitational, false),
+        ("dissipated", dissipated, false),
     ];
     let mut record = serde_json::to_value(RunData::from_run(scene, &run))
         .map_err(|e| Error::failed(format!("cannot encode the run: {e}")))?;

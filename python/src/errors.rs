@@ -1,19 +1,30 @@
 //! The one place where the library's errors become Python exceptions:
 //! bad input → `ValueError` with the CLI's one-line message (key path
 //! included), a failed run → `RunError` with its hint, a panic →
-//! `PanicException` (never an abort of the interpreter).
+//! `InternalError` (never an abort of the interpreter).
+//!
+//! The exceptions are classes of the public module `jacobs_ladder` (their
+//! `__module__`), which re-exports them: they pickle, so an error raised in
+//! a pool's worker reaches the parent as itself.
 
 use jacobs_ladder::Error;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
-use pyo3::panic::PanicException;
 use pyo3::prelude::*;
 
 pyo3::create_exception!(
-    _native,
+    jacobs_ladder,
     RunError,
     PyRuntimeError,
     "A run that failed (for example a diverging integrator): the message says what \
      happened and gives a hint, as the command line's exit status 1 does."
+);
+
+pyo3::create_exception!(
+    jacobs_ladder,
+    InternalError,
+    PyRuntimeError,
+    "A bug of jacobs_ladder (a panic of the engine, caught): please report it with the \
+     call that raised it."
 );
 
 /// The Python exception of a library error.
@@ -31,7 +42,7 @@ pub fn panicked(payload: Box<dyn std::any::Any + Send>) -> PyErr {
         .cloned()
         .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
         .unwrap_or_else(|| "unknown panic".into());
-    PanicException::new_err(format!(
+    InternalError::new_err(format!(
         "internal error in jacobs_ladder (please report it): {what}"
     ))
 }

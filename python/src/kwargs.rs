@@ -1,5 +1,5 @@
 //! Keyword arguments → a scene, through serde: the keywords arrive as one
-//! JSON object, are merged into the scene's JSON value and read back as a
+//! JSON object (`convert::keywords`), are merged into the scene's JSON value and read back as a
 //! `Scene`, so every scene key works from Python without new code.
 //!
 //! - The command line's long flags, with underscores: `alpha`, `n`, `b`,
@@ -12,6 +12,13 @@
 //!
 //! Errors are `ValueError`s naming the key path, as a scene file's do
 //! (`model.alpha: must be degrees with 0 < |alpha| < 90, got 120`).
+//!
+//! Two keywords that set the same key (`t_end=100` and `run={"t_end":
+//! 4000}`, or `run={...}` and `**{"run.t_end": ...}`) are refused, naming
+//! both: which would win is not for alphabetical order to say. The others
+//! are applied shortest path first, so that a dotted key changes the table
+//! another keyword gave. A list where the scene has a table
+//! (`model=[70, 20]`) is refused: a table's keys are named.
 
 use jacobs_ladder::scene::Scene;
 use jacobs_ladder::{Error, Result};
@@ -24,10 +31,8 @@ const RUN: [&str; 5] = ["t_end", "integrator", "dt", "rtol", "tolerance"];
 /// The flags that set the drive.
 const DRIVE: [&str; 3] = ["drive_time", "flips", "second_flip"];
 
-/// `scene` with the keywords of the JSON object `kwargs` applied, checked.
-pub fn apply(scene: &Scene, kwargs: &str) -> Result<Scene> {
-    let kwargs: Map<String, Value> = serde_json::from_str(kwargs)
-        .map_err(|e| Error::bad_input(format!("keywords must be plain values: {e}")))?;
+/// `scene` with the keywords `kwargs` applied, checked.
+pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
     let mut scene = scene.clone();
     let (drive_time, flips, second_flip) = drive_args(&kwargs)?;
     if drive_time.is_some() || flips.is_some() || second_flip.is_some() {
@@ -37,18 +42,42 @@ pub fn apply(scene: &Scene, kwargs: &str) -> Result<Scene> {
     }
     let mut value = serde_json::to_value(&scene)
         .map_err(|e| Error::failed(format!("cannot encode the scene: {e}")))?;
+    // Each keyword's path in the scene, then every key it sets.
+    let mut given: Vec<(Vec<String>, String, Value)> = Vec::new();
     for (key, v) in kwargs {
+        if DRIVE.contains(&key.as_str()) {
+            given.push((vec!["drive".into()], key, Value::Null));
+            continue;
+        }
+        // A print style by its name (`style="paper"`), as `--style paper`.
+        let v = match (key.as_str(), v) {
+            ("style", Value::String(name)) => {
+                Value::Object(Map::from_iter([("name".to_string(), Value::String(name))]))
+            }
+            (_, v) => v,
+        };
+        let path: Vec<String> = if MODEL.contains(&key.as_str()) {
+            vec!["model".into(), key.clone()]
+        } else if RUN.contains(&key.as_str()) {
+            vec!["run".into(), key.clone()]
+        } else {
+            key.split('.').map(str::to_string).collect()
+        };
+        if path.iter().any(String::is_empty) {
+            return Err(Error::bad_input(format!(
+                "{key}: not a key path (an empty part between dots)"
+            )));
+        }
+        given.push((path, key, v));
+    }
+    check_conflicts(&given)?;
+    given.sort_by_key(|(path, _, _)| path.len());
+    for (path, key, v) in given {
         if DRIVE.contains(&key.as_str()) {
             continue;
         }
-        let path: Vec<&str> = if MODEL.contains(&key.as_str()) {
-            vec!["model", &key]
-        } else if RUN.contains(&key.as_str()) {
-            vec!["run", &key]
-        } else {
-            key.split('.').collect()
-        };
-        set(&mut value, &path, v);
+        let path: Vec<&str> = path.iter().map(String::as_str).collect();
+        set(&mut value, &path, v, &key)?;
     }
     let scene: Scene = serde_path_to_error::deserialize(value).map_err(|e| {
         let path = e.path().to_string();
@@ -95,6 +124,22 @@ fn drive_args(kwargs: &Map<String, Value>) -> Result<DriveKeywords> {
         get(kwargs, "flips", "a list of start times in τ")?,
         get(kwargs, "second_flip", "a time in τ")?,
     );
+    // Checked here, in the keywords' words (the scene would name the
+    // flips they reshape).
+    if let Some(t) = args.0
+        && !(t.is_finite() && t > 0.0)
+    {
+        return Err(Error::bad_input(format!(
+            "drive_time: must be a finite time > 0, got {t}"
+        )));
+    }
+    if let Some(t) = args.2
+        && !(t.is_finite() && t >= 0.0)
+    {
+        return Err(Error::bad_input(format!(
+            "second_flip: must be a finite time >= 0, got {t}"
+        )));
+    }
     if args.1.is_some() && args.2.is_some() {
         return Err(Error::bad_input(
             "flips and second_flip: give one (second_flip=T is flips=[0, T])",
@@ -103,8 +148,60 @@ fn drive_args(kwargs: &Map<String, Value>) -> Result<DriveKeywords> {
     Ok(args)
 }
 
-/// Sets the value at `path`, merging tables into tables.
-fn set(value: &mut Value, path: &[&str], new: Value) {
+/// The keys a keyword sets: its path, and below it every leaf of the
+/// tables it gives (a drive flag sets all of `drive`).
+fn leaves(path: &[String], v: &Value, out: &mut Vec<Vec<String>>) {
+    match v {
+        Value::Object(m) if !m.is_empty() && !m.contains_key("kind") => {
+            for (k, v) in m {
+                let mut p = path.to_vec();
+                p.push(k.clone());
+                leaves(&p, v, out);
+            }
+        }
+        _ => out.push(path.to_vec()),
+    }
+}
+
+/// Refuses two keywords that set one key (or a key and a table that holds
+/// it), naming both.
+fn check_conflicts(given: &[(Vec<String>, String, Value)]) -> Result<()> {
+    let sets: Vec<Vec<Vec<String>>> = given
+        .iter()
+        .map(|(path, _, v)| {
+            let mut out = Vec::new();
+            leaves(path, v, &mut out);
+            out
+        })
+        .collect();
+    let flag = |i: usize| DRIVE.contains(&given[i].1.as_str());
+    for i in 0..given.len() {
+        for j in i + 1..given.len() {
+            // The drive flags reshape one drive together (`drive_args`).
+            if flag(i) && flag(j) {
+                continue;
+            }
+            for a in &sets[i] {
+                for b in &sets[j] {
+                    if a.starts_with(b) || b.starts_with(a) {
+                        let key = if a.len() >= b.len() { a } else { b };
+                        return Err(Error::bad_input(format!(
+                            "{}: given twice, by the keywords {} and {}; give it once",
+                            key.join("."),
+                            given[i].1,
+                            given[j].1
+                        )));
+                    }
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Sets the value at `path`, merging tables into tables; `key` is the
+/// keyword, for errors.
+fn set(value: &mut Value, path: &[&str], new: Value, key: &str) -> Result<()> {
     let mut here = value;
     for p in path {
         if !here.is_object() {
@@ -116,7 +213,18 @@ fn set(value: &mut Value, path: &[&str], new: Value) {
             .entry(p.to_string())
             .or_insert(Value::Null);
     }
+    if here.is_object() && !new.is_object() && !new.is_null() {
+        return Err(Error::bad_input(format!(
+            "{}: is a table of named keys; give a dict ({key}={{...}}) or a dotted key, got {}",
+            path.join("."),
+            match &new {
+                Value::Array(_) => "a list".to_string(),
+                other => other.to_string(),
+            }
+        )));
+    }
     merge(here, new);
+    Ok(())
 }
 
 /// `new` into `slot`: a table key by key into a table, anything else in

@@ -3,6 +3,7 @@
 //! as the command line does.
 
 use crate::arrays;
+use crate::convert;
 use crate::errors::IntoPy;
 use crate::kwargs;
 use crate::work;
@@ -23,32 +24,107 @@ pub struct PyScene {
 /// left out (None) keeps the library's default
 /// ([`front::options::RenderOptions`]), and each is checked by the
 /// library's own code, as the command line's flags are.
-#[derive(FromPyObject)]
-#[pyo3(from_item_all)]
 pub struct RenderArgs {
     formats: Option<String>,
     frames: Option<usize>,
-    size: Option<SizeArg>,
+    size: Option<(u32, u32)>,
     fps: Option<f64>,
     scale: Option<f32>,
 }
 
-/// A frame size: `"640x480"` or `(640, 480)`.
-#[derive(FromPyObject)]
-enum SizeArg {
-    Text(String),
-    Pair((u32, u32)),
+impl<'py> FromPyObject<'_, 'py> for RenderArgs {
+    type Error = PyErr;
+
+    fn extract(obj: Borrowed<'_, 'py, PyAny>) -> PyResult<Self> {
+        let d = obj.cast::<PyDict>()?;
+        let item = |k: &str| d.get_item(k).ok().flatten();
+        let formats = match item("format") {
+            None => None,
+            Some(f) if f.is_none() => None,
+            Some(f) => Some(formats(&f)?),
+        };
+        let size = match item("size") {
+            None => None,
+            Some(v) if v.is_none() => None,
+            Some(v) => Some(size(&v)?),
+        };
+        Ok(Self {
+            formats,
+            frames: convert::whole_or_none(item("frames").as_ref(), "frames")?,
+            size,
+            fps: convert::number_or_none(item("fps").as_ref(), "fps")?,
+            scale: convert::number_or_none(item("scale").as_ref(), "scale")?.map(|x| x as f32),
+        })
+    }
+}
+
+/// `format`: `"png,svg"` or `["png", "svg"]`; no empty name.
+fn formats(obj: &Bound<'_, PyAny>) -> PyResult<String> {
+    let names: Vec<String> = match convert::value(obj, "format", 0)? {
+        serde_json::Value::String(s) => s.split(',').map(|n| n.trim().to_string()).collect(),
+        serde_json::Value::Array(items) => items
+            .into_iter()
+            .enumerate()
+            .map(|(i, v)| match v {
+                serde_json::Value::String(s) => Ok(s),
+                other => Err(convert::bad(
+                    "format",
+                    format!("must name formats (strings), got {other} at index {i}"),
+                )),
+            })
+            .collect::<PyResult<_>>()?,
+        other => {
+            return Err(convert::bad(
+                "format",
+                format!("must be a format or a list of them (\"png,svg\"), got {other}"),
+            ));
+        }
+    };
+    if names.is_empty() || names.iter().any(String::is_empty) {
+        return Err(convert::bad(
+            "format",
+            format!(
+                "an empty format name in {:?}; give names such as \"png,svg\"",
+                names.join(",")
+            ),
+        ));
+    }
+    Ok(names.join(","))
+}
+
+/// `size`: `"640x480"` or `(640, 480)`, pixels; a number past a frame's
+/// refused here, before anything is allocated (the library checks the
+/// frame's pixels against its cap).
+fn size(obj: &Bound<'_, PyAny>) -> PyResult<(u32, u32)> {
+    match convert::value(obj, "size", 0)? {
+        serde_json::Value::String(text) => {
+            front::options::parse_size(&text).map_err(|e| convert::bad("size", e))
+        }
+        serde_json::Value::Array(items) if items.len() == 2 => {
+            let side = |v: &serde_json::Value| {
+                v.as_u64()
+                    .filter(|&x| (1..=u64::from(u32::MAX)).contains(&x))
+                    .map(|x| x as u32)
+                    .ok_or_else(|| {
+                        convert::bad(
+                            "size",
+                            format!("must be (width, height) in whole pixels >= 1, got {v}"),
+                        )
+                    })
+            };
+            Ok((side(&items[0])?, side(&items[1])?))
+        }
+        other => Err(convert::bad(
+            "size",
+            format!("must be (width, height) or \"WxH\" in pixels, got {other}"),
+        )),
+    }
 }
 
 impl RenderArgs {
     fn outputs(&self, scene: &Scene) -> Result<(scenes::MovieOptions, scenes::Outputs)> {
         let defaults = RenderOptions::default();
-        let size = match &self.size {
-            None => defaults.size,
-            Some(SizeArg::Pair(pair)) => *pair,
-            Some(SizeArg::Text(text)) => front::options::parse_size(text)
-                .map_err(|e| Error::bad_input(format!("size: {e}")))?,
-        };
+        let size = self.size.unwrap_or(defaults.size);
         // No style flags: a scene's own `[style]` table (the `style`
         // keyword of `render`) sets its look.
         let options = RenderOptions {
@@ -126,10 +202,10 @@ impl PyScene {
             .py_err()
     }
 
-    /// A changed copy (keywords as JSON, `kwargs`).
-    fn replace(&self, kwargs: &str) -> PyResult<Self> {
+    /// A changed copy (the keywords `kwargs`).
+    fn replace(&self, kwargs: &Bound<'_, PyDict>) -> PyResult<Self> {
         Ok(Self {
-            scene: kwargs::apply(&self.scene, kwargs).py_err()?,
+            scene: kwargs::apply(&self.scene, convert::keywords(kwargs)?).py_err()?,
         })
     }
 
@@ -164,14 +240,16 @@ impl PyScene {
     }
 
     /// Simulates run `index` of the scene (its only one for most scenes).
-    #[pyo3(signature = (sample_every=None, samples=None, index=0))]
+    #[pyo3(signature = (sample_every=None, samples=None, index=None, dissipation=false))]
     fn simulate<'py>(
         &self,
         py: Python<'py>,
-        sample_every: Option<f64>,
-        samples: Option<Vec<f64>>,
-        index: usize,
+        sample_every: Option<&Bound<'py, PyAny>>,
+        samples: Option<&Bound<'py, PyAny>>,
+        index: Option<&Bound<'py, PyAny>>,
+        dissipation: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
+        let index = convert::whole_or_none(index, "index")?.unwrap_or(0);
         let runs = self.scene.runs();
         let Some((single, _)) = runs.into_iter().nth(index) else {
             let count = self.scene.runs().len();
@@ -183,7 +261,7 @@ impl PyScene {
             )))
             .py_err();
         };
-        simulate_scene(py, single, sample_every, samples)
+        simulate_scene(py, single, sample_every, samples, dissipation)
     }
 
     /// The files the command line writes for this scene, as (name, bytes).
@@ -198,6 +276,10 @@ impl PyScene {
     /// Writes the files into `dir` as `ladder render --out DIR` does
     /// (atomically; every target checked first); returns their paths.
     fn save(&self, py: Python<'_>, dir: PathBuf, args: RenderArgs) -> PyResult<Vec<PathBuf>> {
+        if dir.as_os_str().is_empty() {
+            // As `--out ""`: an empty name is no folder (not the current one).
+            return Err(convert::bad("dir", "must name a folder, got \"\""));
+        }
         let scene = self.scene.clone();
         work::run(py, move |_| {
             let (opts, outputs) = args.outputs(&scene)?;
@@ -216,13 +298,29 @@ impl PyScene {
 }
 
 /// Simulates a single-run scene without the GIL; the arrays as a dict.
-pub fn simulate_scene(
-    py: Python<'_>,
+pub fn simulate_scene<'py>(
+    py: Python<'py>,
     scene: Scene,
-    sample_every: Option<f64>,
-    samples: Option<Vec<f64>>,
-) -> PyResult<Bound<'_, PyDict>> {
+    sample_every: Option<&Bound<'py, PyAny>>,
+    samples: Option<&Bound<'py, PyAny>>,
+    dissipation: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let limits = jacobs_ladder::limits::Limits::active();
+    let n = scene.model.n;
+    // Counted against the cap on samples × N before any is copied.
+    let check = |count: usize| {
+        limits
+            .check_samples(count as f64, n)
+            .map_err(|e| convert::bad("samples", Error::from(e)))
+    };
+    let samples = match samples.filter(|s| !s.is_none()) {
+        Some(s) => Some(convert::times(s, "samples", &check)?),
+        None => None,
+    };
+    let sample_every = convert::number_or_none(sample_every, "sample_every")?;
     let out = work::run(py, move |stop| {
+        // `t_end = "auto"` resolved first: the samples reach its end.
+        let scene = scene.with_auto_window()?;
         let times = match samples {
             Some(t) => t,
             None => sample_times(&scene, sample_every.unwrap_or(DEFAULT_SAMPLE_EVERY))?,
@@ -230,7 +328,8 @@ pub fn simulate_scene(
         let progress = |t: f64| stop.check(t);
         let options = jacobs_ladder::sim::RunOptions::default()
             .limits(jacobs_ladder::limits::Limits::active())
-            .progress(&progress);
+            .progress(&progress)
+            .dissipation(dissipation);
         let run = scenes::run::simulate_with(&scene, &times, &options)?;
         arrays::arrays(&scene, run)
     })?;
@@ -245,10 +344,19 @@ const DEFAULT_SAMPLE_EVERY: f64 = 10.0;
 fn sample_times(scene: &Scene, every: f64) -> Result<Vec<f64>> {
     if !(every.is_finite() && every > 0.0) {
         return Err(Error::bad_input(format!(
-            "sample_every must be a finite time > 0, got {every}"
+            "sample_every: must be a finite time > 0, got {every}"
         )));
     }
     let count = (scene.run.t_end / every).floor() + 1.0;
-    jacobs_ladder::limits::Limits::active().check_samples(count, scene.model.n)?;
+    jacobs_ladder::limits::Limits::active()
+        .check_samples(count, scene.model.n)
+        .map_err(|e| {
+            Error::bad_input(format!(
+                "sample_every: every {every} τ up to t_end = {} τ: {}; give a larger \
+                 sample_every, a shorter t_end or samples=[...]",
+                scene.run.t_end,
+                Error::from(e)
+            ))
+        })?;
     Ok((0..count as usize).map(|k| k as f64 * every).collect())
 }

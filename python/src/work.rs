@@ -9,20 +9,53 @@
 //! and unwinds, so its thread ends too; work without such a hook (drawing,
 //! encoding) finishes in the background and its result is dropped. A
 //! panic of the work becomes a Python exception (`errors::panicked`).
+//!
+//! The work runs inside a thread pool of this process ([`pool`]), never
+//! rayon's global one: after `os.fork()` the child has none of the
+//! parent's threads, and a global pool made before the fork would wait
+//! forever for them (`multiprocessing` with the fork context). The pool
+//! is made on first use in each process (its pid recorded), so a forked
+//! child builds its own. Its size is rayon's default: `RAYON_NUM_THREADS`,
+//! else one thread a core.
 
 use crate::errors::{panicked, to_py};
 use jacobs_ladder::Error;
 use pyo3::prelude::*;
 use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
-use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{RecvTimeoutError, channel};
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 /// How often the waiting thread lets Python handle its signals.
 const POLL: Duration = Duration::from_millis(100);
 /// How long an interrupted call waits for its work to unwind.
 const UNWIND_WAIT: Duration = Duration::from_millis(500);
+
+/// The thread pool of this process and the pid it was made in.
+static POOL: Mutex<Option<(u32, &'static rayon::ThreadPool)>> = Mutex::new(None);
+
+/// This process's thread pool, made on first use, and made again in a
+/// child forked after it was made (whose copy has no threads behind it:
+/// it is left alone, never dropped, as dropping would signal them).
+fn pool() -> Result<&'static rayon::ThreadPool, Error> {
+    let pid = std::process::id();
+    let mut slot = POOL.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((owner, pool)) = *slot
+        && owner == pid
+    {
+        return Ok(pool);
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .thread_name(|i| format!("jl-pool-{i}"))
+        // The work runs on a worker: give it a main thread's stack.
+        .stack_size(8 << 20)
+        .build()
+        .map_err(|e| Error::failed(format!("cannot start the engine's threads: {e}")))?;
+    let pool: &'static rayon::ThreadPool = Box::leak(Box::new(pool));
+    *slot = Some((pid, pool));
+    Ok(pool)
+}
 
 /// The unwinding payload of cancelled work (not a panic: no message).
 struct Cancelled;
@@ -55,7 +88,9 @@ where
     std::thread::Builder::new()
         .name("jacobs-ladder".into())
         .spawn(move || {
-            let result = catch_unwind(AssertUnwindSafe(|| work(&worker_stop)));
+            let result = catch_unwind(AssertUnwindSafe(|| {
+                pool().and_then(|pool| pool.install(|| work(&worker_stop)))
+            }));
             let _ = tx.send(result);
         })
         .map_err(|e| {

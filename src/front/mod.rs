@@ -4,6 +4,7 @@
 //! Each front end only turns its own words (flags, keywords) into these
 //! calls, so that the two cannot drift apart.
 
+pub mod executor;
 pub mod options;
 pub mod render;
 pub mod sweep;
