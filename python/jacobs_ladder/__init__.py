@@ -207,7 +207,8 @@ class Run:
         m = self.record.get("model", {})
         alpha = m.get("alpha")
         wave = "kink" if alpha is not None and alpha >= 0 else "antikink"
-        flipped = int(np.count_nonzero(~np.isnan(self.arrival_times)))
+        # Blocks 1..N-1 (block N, free, turns its own way): the engine's count.
+        flipped = self.record.get("blocks_flipped")
         integ = self.integrator
         t_end = self.record.get("t_end")
         if not isinstance(t_end, (int, float)):  # "auto": the window it reached
@@ -215,7 +216,7 @@ class Run:
         return (
             f"<Run {wave} α = {alpha:g}°, N = {self.n}, b = {m.get('b'):g}, "
             f"γ = {m.get('gamma'):g}: t = 0..{t_end:g} τ, "
-            f"{len(self.t)} samples, {flipped}/{self.n} blocks flipped, "
+            f"{len(self.t)} samples, {flipped}/{self.n - 1} blocks flipped, "
             f"{integ['name']} dt = {integ['dt']:g} ({integ['requested']})>"
         )
 

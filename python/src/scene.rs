@@ -202,10 +202,12 @@ impl PyScene {
             .py_err()
     }
 
-    /// A changed copy (the keywords `kwargs`).
+    /// A changed copy (the keywords `kwargs`); a window fitted to the old
+    /// chain follows a new N (`Scene::window_following`).
     fn replace(&self, kwargs: &Bound<'_, PyDict>) -> PyResult<Self> {
+        let changed = kwargs::apply(&self.scene, convert::keywords(kwargs)?).py_err()?;
         Ok(Self {
-            scene: kwargs::apply(&self.scene, convert::keywords(kwargs)?).py_err()?,
+            scene: changed.window_following(&self.scene),
         })
     }
 

@@ -352,6 +352,32 @@ impl<'de> serde::Deserialize<'de> for Length {
     }
 }
 
+/// A number of a `[style]` table within `lo..=hi`, checked as it is read
+/// (so that a scene file's error keeps its file, line and column) and said
+/// as it was written, before it is narrowed to `f32`.
+fn ranged<'de, D: serde::Deserializer<'de>>(
+    d: D,
+    (lo, hi, unit): (f64, f64, &str),
+) -> Result<Option<f32>, D::Error> {
+    let x = <f64 as serde::Deserialize>::deserialize(d)?;
+    if x.is_finite() && (lo..=hi).contains(&x) {
+        Ok(Some(x as f32))
+    } else {
+        Err(serde::de::Error::custom(format!(
+            "must be between {lo} and {hi}{unit}, got {}",
+            crate::numfmt::plain(x)
+        )))
+    }
+}
+
+fn font_size_pt<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<f32>, D::Error> {
+    ranged(d, (4.0, 72.0, " pt"))
+}
+
+fn dpi<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<f32>, D::Error> {
+    ranged(d, (36.0, 1200.0, ""))
+}
+
 /// What a scene file's `[style]` table or the command line asks for; each
 /// field left out keeps the named style's value (SPEC section 10).
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -367,13 +393,16 @@ pub struct StyleSpec {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub height: Option<Length>,
     /// Text size in points (axis labels), 4 to 72.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "font_size_pt"
+    )]
     pub font_size: Option<f32>,
     /// `sans` or `serif`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub font: Option<FontChoice>,
     /// PNG pixels per inch, 36 to 1200.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none", deserialize_with = "dpi")]
     pub dpi: Option<f32>,
     /// `text` or `outlines`.
     #[serde(skip_serializing_if = "Option::is_none")]

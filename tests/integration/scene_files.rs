@@ -54,6 +54,16 @@ fn every_toml_example_in_the_docs_parses() {
 
 /// (file text, what the one line must contain after `FILE:`).
 const BAD_FILES: &[(&str, &str)] = &[
+    // A style's numbers are checked as they are read: file, line, column,
+    // and the number as written (1e39 is no f32: it used to say "inf").
+    (
+        "[style]\nfont_size = 1e39\n",
+        ":2:13: style.font_size: must be between 4 and 72 pt, got 1e39",
+    ),
+    (
+        "[style]\ndpi = -5\n",
+        ":2:7: style.dpi: must be between 36 and 1200, got -5",
+    ),
     ("[model]\nn = 20\nalpha = 120\n", ":3:9: model.alpha: "),
     ("[model]\nalpah = 60\n", ":2:1: model.alpah: unknown field"),
     (
