@@ -9,9 +9,9 @@ def test_a_longer_chain_gets_a_window_that_follows_it():
     movie = jl.Scene.builtin("4", kind="movie")
     longer = movie.replace(n=20, name="m4n20")
     assert "auto" in longer.to_toml(), longer.to_toml()
-    # Asked explicitly, the window is kept.
-    kept = movie.replace(n=20, t_end=2200)
-    assert "t_end = 2200" in kept.to_toml()
+    # A window of its own asked with the new chain is kept.
+    kept = movie.replace(n=20, t_end=3500)
+    assert "t_end = 3500" in kept.to_toml()
 
 
 def test_the_summary_counts_blocks_one_to_n_minus_one():
