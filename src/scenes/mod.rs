@@ -6,6 +6,7 @@
 pub mod arrivals;
 pub mod data;
 pub mod dynamic;
+pub mod experiments;
 pub mod kymograph;
 pub mod options;
 pub mod run;
@@ -172,6 +173,7 @@ pub fn figure_picture(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
             let (picture, run) = kymograph::kymograph_figure(scene, KYMOGRAPH_ROWS)?;
             Ok((picture, vec![run]))
         }
+        OutputSpec::Experiment(e) => experiments::experiment_figure(scene, e.figure),
         OutputSpec::Movie { .. } | OutputSpec::Data | OutputSpec::Sweep(_) => {
             Err(Error::bad_input(format!(
                 "{} {} is not a figure",
@@ -285,6 +287,7 @@ fn render_styled(
         OutputSpec::Theory(_)
         | OutputSpec::Filmstrip { .. }
         | OutputSpec::Arrivals { .. }
+        | OutputSpec::Experiment(_)
         | OutputSpec::Kymograph => {
             let (picture, runs) = figure_picture(scene)?;
             (

@@ -18,6 +18,7 @@ mod cli;
 mod data_files;
 mod decisions;
 mod docs_and_packaging;
+mod experiment_figures;
 mod experiments;
 mod figures;
 mod filmstrips;
