@@ -244,7 +244,7 @@ fn tank_positions(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     let done = run_all(&variants)?;
     let mut spec = ChartSpec::new(
         Axis::new("time t (s)"),
-        Axis::new("position down the chain (n − 1) b (cm)"),
+        Axis::new("position (n − 1) b (cm)"),
     );
     let markers = [Marker::Circle, Marker::Square, Marker::Triangle];
     for (k, d) in done.iter().enumerate() {
@@ -370,7 +370,7 @@ fn tank_levels(scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
         let color = style::series_color(k + 1);
         let c_text = match (r.kink_cm_s, r.stiff_difference()) {
             (Some(c), Some(d)) => format!(
-                "{}: {c:.1} cm/s, {:.1}× measured (2k: {:.1} %)",
+                "{}: {c:.1} cm/s, {:.1}× measured (2k: {:.2} %)",
                 r.name,
                 c / MEASURED_KINK_CM_S,
                 100.0 * d
