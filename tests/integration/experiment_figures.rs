@@ -3,15 +3,24 @@
 //! the water tank, the "stiff" links' k-and-2k check, and the printed
 //! linkage's antikink that stops where the kink runs.
 
-use jacobs_ladder::catalog;
-use jacobs_ladder::scene::Kind;
+use jacobs_ladder::scene::Scene;
+use jacobs_ladder::scene::file::parse;
 use jacobs_ladder::scenes::experiments::{self, MEASURED_KINK_CM_S, MEASURED_RATIO};
+
+/// The scene file `assets/scenes/figure-NAME.toml` (not yet in the
+/// built-in catalogue: `ladder render` it).
+fn figure(name: &str, text: &str) -> Scene {
+    parse(text, &format!("assets/scenes/figure-{name}.toml"), name).unwrap()
+}
 
 #[test]
 fn each_level_of_model_lands_where_the_caption_says() {
-    let entry = catalog::find(Kind::Figure, "tank-levels").unwrap();
-    let caption = entry.scene.caption.clone().unwrap_or_default();
-    let (levels, data) = experiments::levels(&entry.scene).unwrap();
+    let scene = figure(
+        "tank-levels",
+        include_str!("../../assets/scenes/figure-tank-levels.toml"),
+    );
+    let caption = scene.caption.clone().unwrap_or_default();
+    let (levels, data) = experiments::levels(&scene).unwrap();
     assert_eq!(data.len(), 3 * levels.len(), "every run is in the data");
     for r in &levels {
         println!(
@@ -59,9 +68,12 @@ fn each_level_of_model_lands_where_the_caption_says() {
 
 #[test]
 fn the_linkage_antikink_stops_where_the_kink_runs() {
-    let entry = catalog::find(Kind::Figure, "linkage-friction").unwrap();
-    let n = entry.scene.model.n;
-    let (rows, _) = experiments::fronts(&entry.scene, &[0.0, 0.9]).unwrap();
+    let scene = figure(
+        "linkage-friction",
+        include_str!("../../assets/scenes/figure-linkage-friction.toml"),
+    );
+    let n = scene.model.n;
+    let (rows, _) = experiments::fronts(&scene, &[0.0, 0.9]).unwrap();
     println!("(μ_p, kink, antikink): {rows:?}");
     // Without friction both run the whole chain (the spring model's
     // answer); at μ_p = 0.9 the kink still does and the antikink stops in
