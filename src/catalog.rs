@@ -57,6 +57,14 @@ pub const FILES: &[(&str, &str)] = &[
     ("movie-9", include_str!("../assets/scenes/movie-9.toml")),
     ("movie-10", include_str!("../assets/scenes/movie-10.toml")),
     ("movie-11", include_str!("../assets/scenes/movie-11.toml")),
+    (
+        "movie-water-tank",
+        include_str!("../assets/scenes/movie-water-tank.toml"),
+    ),
+    (
+        "movie-linkage-69",
+        include_str!("../assets/scenes/movie-linkage-69.toml"),
+    ),
 ];
 
 /// A catalogue entry: its ID ("3", "S5", "edge-mode") and its scene,

@@ -245,6 +245,7 @@ pub fn picture(scene: &Scene) -> String {
             }
         ),
         OutputSpec::Data => "No picture: the run's numbers only".into(),
+        OutputSpec::Experiment(e) => e.figure.describe().into(),
         OutputSpec::Sweep(sw) => format!(
             "Charts of a sweep of the {n}-block ladder over {}: how far the wave got and \
              how fast, coloured by its outcome, against the parameters swept",

@@ -246,7 +246,10 @@ impl Scene {
             | OutputSpec::Kymograph
             | OutputSpec::Arrivals { .. }
             | OutputSpec::Energy => false,
-            OutputSpec::Data | OutputSpec::Theory(_) | OutputSpec::Sweep(_) => true,
+            OutputSpec::Data
+            | OutputSpec::Theory(_)
+            | OutputSpec::Sweep(_)
+            | OutputSpec::Experiment(_) => true,
         };
         if !has_times
             && self.model.n != before.model.n

@@ -54,6 +54,9 @@ pub enum OutputSpec {
     /// (`figure-NAME.csv`); `ladder sweep` writes `sweep-NAME.*`
     /// (SPEC section 7, `sweep::SweepSpec`).
     Sweep(sweep::SweepSpec),
+    /// A figure of the experiments (SPEC section 12) from the scene's
+    /// `[apparatus]` (`figure-NAME.png`, `scenes::experiments`).
+    Experiment(super::apparatus::ExperimentSpec),
 }
 
 impl Default for OutputSpec {

@@ -7,6 +7,7 @@ pub mod arrivals;
 pub mod data;
 pub mod dynamic;
 pub mod energy;
+pub mod experiments;
 pub mod kymograph;
 pub mod options;
 pub mod run;
@@ -174,6 +175,7 @@ pub fn figure_picture(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunD
             let (picture, run) = kymograph::kymograph_figure(theme, scene, KYMOGRAPH_ROWS)?;
             Ok((picture, vec![run]))
         }
+        OutputSpec::Experiment(e) => experiments::experiment_figure(theme, scene, e.figure),
         OutputSpec::Movie { .. } | OutputSpec::Data | OutputSpec::Sweep(_) => {
             Err(Error::bad_input(format!(
                 "{} {} is not a figure",
@@ -289,6 +291,7 @@ fn render_styled(
         | OutputSpec::Filmstrip { .. }
         | OutputSpec::Arrivals { .. }
         | OutputSpec::Energy
+        | OutputSpec::Experiment(_)
         | OutputSpec::Kymograph => {
             let (picture, runs) = figure_picture(theme, scene)?;
             (

@@ -20,6 +20,7 @@ mod decisions;
 mod docs_and_packaging;
 mod energies;
 mod energy_view;
+mod experiment_figures;
 mod experiments;
 mod figures;
 mod filmstrips;

@@ -111,6 +111,24 @@ fn every_catalogue_run_matches_the_reference_within_its_tolerance() {
     assert_all_pass(&failures);
 }
 
+/// The experiments' built-in scenes (SPEC section 12: the water tank and
+/// the printed linkage, with added mass, drag and pin friction) are among
+/// the runs checked above, with `auto` choosing and verifying the step: no
+/// scene of the catalogue names its own step to escape the check.
+#[test]
+fn the_experiment_scenes_are_checked_with_auto() {
+    use jacobs_ladder::scene::run::Method;
+    let runs = catalogue_runs();
+    for id in ["water-tank", "linkage-69"] {
+        let (_, scene) = runs
+            .iter()
+            .find(|(what, _)| what.contains(&format!("movie {id} ")))
+            .unwrap_or_else(|| panic!("movie {id} is not a catalogue run"));
+        assert!(scene.apparatus.is_some(), "{id} has no apparatus");
+        assert_eq!(scene.run.integrator, Method::Auto, "{id}");
+    }
+}
+
 /// splitmix64: a fixed sequence of random numbers without a dependency.
 struct Random(u64);
 

@@ -1,0 +1,470 @@
+//! The experiments' figures (SPEC section 12; docs/experiments.md): what
+//! each level of model predicts for the paper's water tank and printed
+//! linkage, in the apparatus' units (s, cm, cm/s), beside the measurements.
+//!
+//! Every run is the scene's `[apparatus]` with some of its terms switched,
+//! integrated by RK4 at [`STEP`] τ (the scheme that takes every term: a
+//! velocity-dependent mass matrix, drag, pin friction); each run's
+//! integrator is in the data file. No coefficient is fitted: the levels
+//! switch terms of the apparatus on, nothing else.
+
+use super::data::RunData;
+use super::run;
+use crate::error::{Error, Result};
+use crate::render::charts::{self, Axis, ChartSpec, Marker, Series};
+use crate::render::compose::{self, Layout, Panel};
+use crate::render::{Picture, Theme, style};
+use crate::scene::apparatus::{Apparatus, Damping, ExperimentFigure, PaperWord};
+use crate::scene::{Method, OutputSpec, Scene, describe};
+use crate::sim::IntegratorKind;
+use rayon::prelude::*;
+
+/// The tank's measured kink speed (cm/s; main text and supplement).
+pub const MEASURED_KINK_CM_S: f64 = 6.0;
+/// The tank's measured c_antikink / c_kink.
+pub const MEASURED_RATIO: f64 = 1.75;
+/// The motor speeds of the tank's runs (Hz).
+pub const MOTORS_HZ: [f64; 3] = [0.1, 0.2, 0.4];
+/// The motor speed of the levels' figure (Hz), the middle one.
+pub const LEVELS_MOTOR_HZ: f64 = 0.2;
+/// The pin friction coefficients μ_p of the linkage's figure.
+pub const PIN_FRICTION: [f64; 9] = [0.0, 0.3, 0.5, 0.7, 0.8, 0.9, 1.0, 1.2, 1.5];
+/// The RK4 step of every run, in τ (docs/experiments.md: halving it moves
+/// the speeds of a running wave by < 10⁻⁶).
+pub const STEP: f64 = 0.125;
+
+/// The levels of model of the tank (SPEC 12): name and what it switches on
+/// over the bare apparatus (two-way stiff links, gravity g).
+pub const LEVELS: [(&str, Level); 5] = [
+    (
+        "1 paper: linear damping γ",
+        Level {
+            damping: true,
+            buoyancy_and_drag: false,
+            added_mass: false,
+            tape: false,
+        },
+    ),
+    (
+        "2 buoyancy + quadratic drag",
+        Level {
+            damping: false,
+            buoyancy_and_drag: true,
+            added_mass: false,
+            tape: false,
+        },
+    ),
+    (
+        "3 + added mass",
+        Level {
+            damping: false,
+            buoyancy_and_drag: true,
+            added_mass: true,
+            tape: false,
+        },
+    ),
+    (
+        "4 + tension-only tape",
+        Level {
+            damping: false,
+            buoyancy_and_drag: true,
+            added_mass: true,
+            tape: true,
+        },
+    ),
+    (
+        "5 all terms (+ γ)",
+        Level {
+            damping: true,
+            buoyancy_and_drag: true,
+            added_mass: true,
+            tape: true,
+        },
+    ),
+];
+
+/// The terms one level of model switches on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Level {
+    /// The paper's linear damping ("paper": γ/√G kept).
+    pub damping: bool,
+    pub buoyancy_and_drag: bool,
+    pub added_mass: bool,
+    pub tape: bool,
+}
+
+impl Level {
+    fn apply(self, a: &mut Apparatus) {
+        a.damping = self.damping.then_some(Damping::Word(PaperWord::Paper));
+        a.buoyancy = self.buoyancy_and_drag;
+        a.drag = self.buoyancy_and_drag;
+        a.added_mass = self.added_mass;
+        a.tension_only = self.tape;
+    }
+}
+
+/// The figure `which` of `scene` (whose `[apparatus]` is the tank's or the
+/// linkage's), with every run's data.
+pub fn experiment_figure(
+    theme: &Theme,
+    scene: &Scene,
+    which: ExperimentFigure,
+) -> Result<(Picture, Vec<RunData>)> {
+    let (picture, data) = match which {
+        ExperimentFigure::TankPositions => tank_positions(theme, scene)?,
+        ExperimentFigure::TankLevels => tank_levels(theme, scene)?,
+        ExperimentFigure::LinkageFriction => linkage_friction(theme, scene)?,
+    };
+    Ok((picture.titled(describe::title(scene)), data))
+}
+
+/// One run of the figure: its label, and `scene` as a data scene with its
+/// apparatus changed by `change`, its α of sign `sign`, RK4 at [`STEP`].
+struct Variant {
+    label: String,
+    scene: Scene,
+}
+
+fn variant(
+    scene: &Scene,
+    label: String,
+    sign: f64,
+    change: impl FnOnce(&mut Apparatus),
+) -> Result<Variant> {
+    let mut s = scene.clone();
+    let mut a = scene.apparatus.clone().ok_or_else(|| {
+        Error::bad_input(format!(
+            "{} {}: an experiment figure needs an [apparatus]",
+            scene.kind().name(),
+            scene.name
+        ))
+    })?;
+    change(&mut a);
+    s.model.alpha = sign * scene.model.alpha.abs();
+    let a = a.converted(s.model.alpha);
+    if let Some(t) = a.conversion.as_ref().and_then(|c| c.t_end) {
+        s.run.t_end = t;
+    }
+    s.apparatus = Some(a);
+    s.output = OutputSpec::Data;
+    s.run.integrator = Method::Fixed(IntegratorKind::Rk4);
+    s.run.dt = Some(STEP);
+    Ok(Variant { label, scene: s })
+}
+
+/// A finished run: its variant, arrival times (s), whole-chain and bulk
+/// speeds (cm/s), the block pitch b (cm), and its data.
+struct Done {
+    arrivals_s: Vec<Option<f64>>,
+    bulk_cm_s: Option<f64>,
+    pitch_cm: f64,
+    data: RunData,
+}
+
+/// Runs every variant, two at a time or more (rayon), in order.
+fn run_all(variants: &[Variant]) -> Result<Vec<Done>> {
+    variants
+        .par_iter()
+        .map(|v| {
+            let r = run::simulate(&v.scene, &[])?;
+            let a = v.scene.apparatus.as_ref().expect("a variant has one");
+            let c = a.conversion.as_ref().expect("converted");
+            let arrivals = &r.trajectory.arrival_times;
+            Ok(Done {
+                arrivals_s: arrivals.iter().map(|t| t.map(|t| t * c.tau_s)).collect(),
+                bulk_cm_s: bulk_speed(arrivals).map(|v| v * c.cm_per_s),
+                pitch_cm: a.b,
+                data: RunData::new(&v.label, &v.scene, &r),
+            })
+        })
+        .collect()
+}
+
+/// The steady wave's speed (blocks per τ) in the lower half of the chain,
+/// blocks N/2 + 1 .. N − 1 (one-based), away from the driven block: the
+/// least-squares slope of n against t_n, as `sim::observables::wave_speed`
+/// fits the whole chain. `None` unless every one of those blocks flipped,
+/// each after the one above it (a wave running down): a chain that turns
+/// all at once, or from the bottom up, has no speed.
+pub fn bulk_speed(arrivals: &[Option<f64>]) -> Option<f64> {
+    let n = arrivals.len();
+    let times: Vec<f64> = arrivals
+        .get(n / 2..n.checked_sub(1)?)?
+        .iter()
+        .copied()
+        .collect::<Option<Vec<f64>>>()?;
+    if times.len() < 3 || times.windows(2).any(|w| w[1] <= w[0]) {
+        return None;
+    }
+    let pts: Vec<(f64, f64)> = times
+        .iter()
+        .enumerate()
+        .map(|(i, t)| (i as f64, *t))
+        .collect();
+    let m = pts.len() as f64;
+    let (mx, my) = pts
+        .iter()
+        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / m, b + p.1 / m));
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    Some(sxx / sxy)
+}
+
+/// "12.8 cm/s" or "no wave".
+fn speed_text(c: Option<f64>) -> String {
+    c.map_or("no wave".into(), |c| format!("{c:.1} cm/s"))
+}
+
+/// A chart at the style's frame of `natural` design pixels.
+fn chart_picture(theme: &Theme, spec: &ChartSpec, natural: (u32, u32)) -> Result<Picture> {
+    let (w, h) = theme.style.frame(natural);
+    Ok(Picture::from(charts::line_chart(theme, spec, w, h)?))
+}
+
+/// Panels stacked, without a title of their own (the frame carries it).
+fn stacked(theme: &Theme, panels: &[Panel]) -> Result<Picture> {
+    let mut layout = Layout::columns(theme, 1);
+    if theme.is_print() {
+        layout.margin = 0;
+    }
+    compose::compose_picture(panels, &layout)
+}
+
+/// Figure 1: the position (n − 1) b of each flipped block (cm) against its
+/// arrival time (s), kink and antikink at each motor speed, with the bulk
+/// speeds in cm/s (the supplement's apparatus panel).
+fn tank_positions(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+    let mut variants = Vec::new();
+    for f in MOTORS_HZ {
+        for (sign, word) in [(1.0, "kink"), (-1.0, "antikink")] {
+            variants.push(variant(scene, format!("{word}, {f} Hz"), sign, |a| {
+                a.motor = Some(f)
+            })?);
+        }
+    }
+    let done = run_all(&variants)?;
+    let mut spec = ChartSpec::new(
+        Axis::new("time t (s)"),
+        Axis::new("position (n − 1) b (cm)"),
+    );
+    let markers = [Marker::Circle, Marker::Square, Marker::Triangle];
+    for (k, d) in done.iter().enumerate() {
+        let (motor, kink) = (k / 2, k % 2 == 0);
+        let pts: Vec<(f64, f64)> = d
+            .arrivals_s
+            .iter()
+            .enumerate()
+            .filter_map(|(i, t)| t.map(|t| (t, i as f64 * d.pitch_cm)))
+            .collect();
+        let color = style::series_color(motor + 1);
+        let label = format!("{}: {}", variants[k].label, speed_text(d.bulk_cm_s));
+        let s = Series::line(label, pts, color)
+            .with_marker(markers[motor])
+            .with_width(1.5);
+        spec = spec.series(if kink { s } else { s.dashed() });
+    }
+    let picture = chart_picture(theme, &spec, (820, 600))?.fit_page();
+    Ok((picture, done.into_iter().map(|d| d.data).collect()))
+}
+
+/// What one level of model gives in the tank: the bulk speeds (cm/s) of
+/// the kink and the antikink, and of the kink with the links twice as
+/// stiff ("stiff" links: k and 2k must agree, [`STIFF_TOLERANCE`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LevelResult {
+    pub name: &'static str,
+    pub kink_cm_s: Option<f64>,
+    pub antikink_cm_s: Option<f64>,
+    pub kink_2k_cm_s: Option<f64>,
+}
+
+impl LevelResult {
+    /// c_antikink / c_kink, where both run.
+    pub fn ratio(&self) -> Option<f64> {
+        self.kink_cm_s.zip(self.antikink_cm_s).map(|(k, a)| a / k)
+    }
+
+    /// |c(2k)/c(k) − 1|, where both run.
+    pub fn stiff_difference(&self) -> Option<f64> {
+        self.kink_cm_s
+            .zip(self.kink_2k_cm_s)
+            .map(|(k, k2)| (k2 / k - 1.0).abs())
+    }
+}
+
+/// The largest relative difference between the kink's speeds at k and 2k
+/// for which "stiff" links are stiff (docs/experiments.md).
+pub const STIFF_TOLERANCE: f64 = 0.03;
+
+/// Every level of [`LEVELS`] run on `scene`'s apparatus at
+/// [`LEVELS_MOTOR_HZ`]: kink, antikink, and kink at 2k.
+pub fn levels(scene: &Scene) -> Result<(Vec<LevelResult>, Vec<RunData>)> {
+    let mut variants = Vec::new();
+    for (name, level) in LEVELS {
+        for (sign, word, stiffer) in [
+            (1.0, "kink", 1.0),
+            (-1.0, "antikink", 1.0),
+            (1.0, "kink, links 2k", 0.5),
+        ] {
+            variants.push(variant(scene, format!("{name}, {word}"), sign, |a| {
+                level.apply(a);
+                a.motor = Some(LEVELS_MOTOR_HZ);
+                a.stiff_gravity *= stiffer;
+            })?);
+        }
+    }
+    let done = run_all(&variants)?;
+    let results = LEVELS
+        .iter()
+        .enumerate()
+        .map(|(k, (name, _))| LevelResult {
+            name,
+            kink_cm_s: done[3 * k].bulk_cm_s,
+            antikink_cm_s: done[3 * k + 1].bulk_cm_s,
+            kink_2k_cm_s: done[3 * k + 2].bulk_cm_s,
+        })
+        .collect();
+    Ok((results, done.into_iter().map(|d| d.data).collect()))
+}
+
+/// Figure 2: c_kink (cm/s) and c_antikink / c_kink for each level of
+/// model at [`LEVELS_MOTOR_HZ`], beside the measured 6.0 cm/s and 1.75; a
+/// level without a wave is drawn at zero and named "no wave". The legend
+/// gives how far each level lands, and how much the kink moves when the
+/// "stiff" links are made twice as stiff.
+fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+    let (results, data) = levels(scene)?;
+    if let Some(r) = results
+        .iter()
+        .find(|r| r.stiff_difference().is_some_and(|d| d > STIFF_TOLERANCE))
+    {
+        return Err(Error::failed(format!(
+            "{}: the kink's speed moves by {:.1} % between k and 2k, more than the {} % of \
+             \"stiff\" links: give the links' stiffness in N/m or a smaller stiff_gravity",
+            r.name,
+            100.0 * r.stiff_difference().unwrap_or(0.0),
+            100.0 * STIFF_TOLERANCE
+        )));
+    }
+    let n = LEVELS.len() as f64;
+    let x_axis = || Axis::new("level of model").range(0.5, n + 0.5);
+    let measured = |y: f64, what: String| {
+        Series::line(what, vec![(0.5, y), (n + 0.5, y)], style::series_color(0)).dashed()
+    };
+    let mut speed = ChartSpec::new(x_axis(), Axis::new("c_kink (cm/s)")).series(measured(
+        MEASURED_KINK_CM_S,
+        format!("measured {MEASURED_KINK_CM_S:.1} cm/s"),
+    ));
+    let mut ratio = ChartSpec::new(x_axis(), Axis::new("c_antikink / c_kink")).series(measured(
+        MEASURED_RATIO,
+        format!("measured {MEASURED_RATIO}"),
+    ));
+    let markers = [
+        Marker::Circle,
+        Marker::Square,
+        Marker::Triangle,
+        Marker::Cross,
+        Marker::Plus,
+    ];
+    for (k, r) in results.iter().enumerate() {
+        let x = k as f64 + 1.0;
+        let color = style::series_color(k + 1);
+        let c_text = match (r.kink_cm_s, r.stiff_difference()) {
+            (Some(c), Some(d)) => format!(
+                "{}: {c:.1} cm/s, {:.1}× measured (2k: {:.2} %)",
+                r.name,
+                c / MEASURED_KINK_CM_S,
+                100.0 * d
+            ),
+            (Some(c), None) => format!(
+                "{}: {c:.1} cm/s, {:.1}× measured",
+                r.name,
+                c / MEASURED_KINK_CM_S
+            ),
+            (None, _) => format!("{}: no wave", r.name),
+        };
+        speed = speed.series(
+            Series::scatter(
+                c_text,
+                vec![(x, r.kink_cm_s.unwrap_or(0.0))],
+                color,
+                markers[k],
+            )
+            .with_width(2.0),
+        );
+        let r_text = match r.ratio() {
+            Some(q) => format!("{}: {q:.2}", r.name),
+            None => format!("{}: no wave", r.name),
+        };
+        ratio = ratio.series(
+            Series::scatter(
+                r_text,
+                vec![(x, r.ratio().unwrap_or(0.0))],
+                color,
+                markers[k],
+            )
+            .with_width(2.0),
+        );
+    }
+    let panels = [
+        Panel::new(chart_picture(theme, &speed, (820, 420))?).label("(a)"),
+        Panel::new(chart_picture(theme, &ratio, (820, 420))?).label("(b)"),
+    ];
+    let picture = stacked(theme, &panels)?.fit_page();
+    Ok((picture, data))
+}
+
+/// μ_p, and the blocks the kink and the antikink flipped.
+pub type Front = (f64, usize, usize);
+
+/// How far the kink and the antikink get (blocks flipped) at each pin
+/// friction of `mu` on `scene`'s linkage: (μ_p, kink, antikink).
+pub fn fronts(scene: &Scene, mu: &[f64]) -> Result<(Vec<Front>, Vec<RunData>)> {
+    let mut variants = Vec::new();
+    for &m in mu {
+        for (sign, word) in [(1.0, "kink"), (-1.0, "antikink")] {
+            variants.push(variant(scene, format!("{word}, μ_p = {m}"), sign, |a| {
+                a.pin_friction = m
+            })?);
+        }
+    }
+    let done = run_all(&variants)?;
+    let flipped = |d: &Done| d.arrivals_s.iter().flatten().count();
+    let rows = mu
+        .iter()
+        .enumerate()
+        .map(|(i, m)| (*m, flipped(&done[2 * i]), flipped(&done[2 * i + 1])))
+        .collect();
+    Ok((rows, done.into_iter().map(|d| d.data).collect()))
+}
+
+/// Figure 3: how far the linkage's kink and antikink get (blocks flipped,
+/// of N) against the pin friction μ_p.
+fn linkage_friction(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+    let (rows, data) = fronts(scene, &PIN_FRICTION)?;
+    let n = scene.model.n as f64;
+    let mut spec = ChartSpec::new(
+        Axis::new("pin friction μ_p"),
+        Axis::new("blocks flipped (front)").range(0.0, n + 0.5),
+    );
+    for (j, (word, marker)) in [("kink", Marker::Circle), ("antikink", Marker::Square)]
+        .into_iter()
+        .enumerate()
+    {
+        let pts: Vec<(f64, f64)> = rows
+            .iter()
+            .map(|(mu, k, a)| (*mu, if j == 0 { *k } else { *a } as f64))
+            .collect();
+        let sign = if j == 0 { "+" } else { "−" };
+        let label = format!(
+            "{word} (α = {sign}{}°)",
+            describe::num(scene.model.alpha.abs())
+        );
+        let s = Series::line(label, pts, style::series_color(j + 1))
+            .with_marker(marker)
+            .with_width(1.5);
+        spec = spec.series(if j == 0 { s } else { s.dashed() });
+    }
+    let picture = chart_picture(theme, &spec, (820, 560))?.fit_page();
+    Ok((picture, data))
+}
