@@ -10,18 +10,18 @@ use crate::render::{Picture, Theme, style};
 use crate::scene::{Scene, describe};
 use crate::sim::{self};
 
-/// The wave speed c in blocks per 1000 τ (`sweep::outcome::wave_speed`,
+/// The wave speed c in blocks per 1000 τ (`sim::speed::wave_speed`,
 /// the one definition the program reports).
 pub fn fitted_speed(arrivals: &[Option<f64>]) -> Option<f64> {
-    crate::sweep::outcome::wave_speed(arrivals).map(|v| 1000.0 * v)
+    crate::sim::speed::wave_speed(arrivals).map(|v| 1000.0 * v)
 }
 
 /// The least-squares line t = t̄ + (n − n̄)/c through the arrival times
 /// that the wave speed c fits (blocks 3..N−1,
-/// `sweep::outcome::wave_speed_fit`), drawn over the blocks the wave
+/// `sim::speed::wave_speed_fit`), drawn over the blocks the wave
 /// reached: its two ends, or `None` when there is no speed.
 fn fitted_line(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
-    let fit = crate::sweep::outcome::wave_speed_fit(arrivals)?;
+    let fit = crate::sim::speed::wave_speed_fit(arrivals)?;
     let (v, (mn, mt)) = (fit.speed, fit.centroid);
     let reached: Vec<f64> = arrivals
         .iter()

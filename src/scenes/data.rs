@@ -104,7 +104,7 @@ pub struct RunData {
     pub t_end: f64,
     pub integrator: IntegratorReport,
     pub arrival_times: Vec<Option<f64>>,
-    /// The wave speed c in blocks per τ (`sweep::outcome::wave_speed`:
+    /// The wave speed c in blocks per τ (`sim::speed::wave_speed`:
     /// least squares over blocks 3..N−1, the one definition the program
     /// reports); `None` when too few flipped in order.
     pub speed: Option<f64>,
@@ -305,7 +305,7 @@ impl RunData {
             t_end: scene.run.t_end,
             integrator: run.integrator.clone(),
             arrival_times: traj.arrival_times.clone(),
-            speed: crate::sweep::outcome::wave_speed(&traj.arrival_times),
+            speed: crate::sim::speed::wave_speed(&traj.arrival_times),
             blocks_flipped: crate::sweep::outcome::blocks_flipped(&traj.arrival_times),
             final_theta_deg: traj.final_theta_deg(),
             waves: traj.waves.clone(),

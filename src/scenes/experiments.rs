@@ -182,7 +182,7 @@ fn run_all(variants: &[Variant]) -> Result<Vec<Done>> {
 
 /// The steady wave's speed (blocks per τ) in the lower half of the chain,
 /// blocks N/2 + 1 .. N − 1 (one-based), away from the driven block: the
-/// least-squares slope of n against t_n, as `sim::observables::wave_speed`
+/// least-squares slope of n against t_n, as `sim::speed::wave_speed`
 /// fits the whole chain. `None` unless every one of those blocks flipped,
 /// each after the one above it (a wave running down): a chain that turns
 /// all at once, or from the bottom up, has no speed.

@@ -15,6 +15,7 @@ pub mod relax;
 pub mod rhs;
 pub mod run_options;
 mod simd;
+pub mod speed;
 pub mod step_bounds;
 pub mod stepping;
 pub mod trajectory;

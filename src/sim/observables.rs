@@ -228,17 +228,6 @@ pub fn least_squares_slope(pts: &[(f64, f64)]) -> f64 {
     sxy / sxx
 }
 
-/// Speed of the wave in blocks per τ: the inverse slope of the arrival
-/// time t_n against n over blocks 2..N−1 (the driven top and the free
-/// bottom left out); `None` if fewer than three of them flipped.
-pub fn wave_speed(arrivals: &[Option<f64>]) -> Option<f64> {
-    let last = arrivals.len().saturating_sub(1);
-    let pts: Vec<(f64, f64)> = (1..last)
-        .filter_map(|i| arrivals[i].map(|t| (i as f64 + 1.0, t)))
-        .collect();
-    (pts.len() >= 3).then(|| 1.0 / least_squares_slope(&pts))
-}
-
 /// Topological polarisation of each block, sin θ_n (SPEC section 1).
 pub fn polarisation(q: &[f64]) -> Vec<f64> {
     (0..q.len() / 3).map(|i| q[itheta(i)].sin()).collect()

@@ -27,7 +27,7 @@ fn run(alpha: f64, k: Stepping) -> Trajectory {
 }
 
 fn speed(t: &Trajectory) -> f64 {
-    sim::observables::wave_speed(&t.arrival_times).expect("the wave ran")
+    sim::speed::wave_speed(&t.arrival_times).expect("the wave ran")
 }
 
 /// SPEC section 2, item 1: the kink runs top to bottom, t₁ = T_d/2 (SPEC

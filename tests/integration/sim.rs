@@ -154,7 +154,7 @@ fn kink_run(alpha: f64) -> Trajectory {
 
 /// Blocks per τ from a least-squares line through the arrival times.
 fn speed(t: &Trajectory) -> f64 {
-    sim::observables::wave_speed(&t.arrival_times).expect("the wave ran")
+    sim::speed::wave_speed(&t.arrival_times).expect("the wave ran")
 }
 
 #[test]

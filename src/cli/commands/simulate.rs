@@ -46,7 +46,7 @@ pub struct SimulateReport<'a> {
     pub wall_seconds: f64,
     /// The first wave's arrival times (per block, the first sign change).
     pub arrival_times: Vec<Option<f64>>,
-    /// The wave speed c, blocks per τ (`sweep::outcome::wave_speed`: the
+    /// The wave speed c, blocks per τ (`sim::speed::wave_speed`: the
     /// one definition, also a run's, figure S6's and a sweep's); `null`
     /// when too few blocks flipped in order.
     pub speed: Option<f64>,
@@ -141,7 +141,7 @@ pub(crate) fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<(
         force_evals: traj.force_evals,
         wall_seconds,
         arrival_times: traj.arrival_times.clone(),
-        speed: crate::sweep::outcome::wave_speed(&traj.arrival_times),
+        speed: crate::sim::speed::wave_speed(&traj.arrival_times),
         blocks_flipped: crate::sweep::outcome::blocks_flipped(&traj.arrival_times),
         final_theta_deg: traj.final_theta_deg(),
         waves: traj.waves.clone(),
