@@ -201,13 +201,7 @@ pub fn bulk_speed(arrivals: &[Option<f64>]) -> Option<f64> {
         .enumerate()
         .map(|(i, t)| (i as f64, *t))
         .collect();
-    let m = pts.len() as f64;
-    let (mx, my) = pts
-        .iter()
-        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / m, b + p.1 / m));
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    Some(sxx / sxy)
+    Some(1.0 / crate::sim::observables::least_squares_slope(&pts))
 }
 
 /// "12.8 cm/s" or "no wave".

@@ -92,19 +92,11 @@ pub fn run_point(scene: &Scene, spec: &SweepSpec) -> Result<RunResult> {
 
 fn diverged(scenario: &Scenario, config: &IntegratorConfig, msg: String, evals: u64) -> RunResult {
     RunResult {
-        outcome: Outcome::Diverged,
-        blocks_flipped: 0,
-        front: 0,
-        block_n_turned_at: None,
-        speed: None,
-        t_decided: None,
-        arrival_times: vec![None; scenario.ladder.n()],
         integrator: config.kind.name().into(),
         dt: config.dt,
-        arrival_error: None,
         force_evals: evals,
-        waves: Waves::default(),
         message: Some(msg),
+        ..diverged_blank(scenario.ladder.n())
     }
 }
 
