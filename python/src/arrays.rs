@@ -4,6 +4,7 @@
 //! `PyArray::from_vec`, which takes ownership of the vector's buffer;
 //! `reshape` to samples × N is a view of it.
 
+use jacobs_ladder::output::data::MadeBy;
 use jacobs_ladder::scene::Scene;
 use jacobs_ladder::scenes::RunData;
 use jacobs_ladder::scenes::run::SceneRun;
@@ -80,8 +81,19 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
     ];
     let mut record = serde_json::to_value(RunData::from_run(scene, &run))
         .map_err(|e| Error::failed(format!("cannot encode the run: {e}")))?;
+    let encode = |e: serde_json::Error| Error::failed(format!("cannot encode the run: {e}"));
+    // Provenance, as every data file carries it: the program, its version
+    // and commit, and the scene run (no command line: Python has none).
+    let made_by = serde_json::to_value(MadeBy::new(&[])).map_err(encode)?;
+    let scene_json = serde_json::to_value(scene).map_err(encode)?;
     if let Some(m) = record.as_object_mut() {
         m.remove("frames");
+        for (k, v) in made_by.as_object().into_iter().flatten() {
+            if k != "command_line" {
+                m.entry(k.clone()).or_insert_with(|| v.clone());
+            }
+        }
+        m.entry("scene").or_insert(scene_json);
     }
     Ok(RunArrays {
         n,

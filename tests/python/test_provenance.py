@@ -32,3 +32,14 @@ def test_to_xarray_has_the_grid_as_dimensions():
         assert point["run"].item() == table["run"][k]
         assert point["outcome"].item() == table["outcome"][k]
     assert isinstance(ds, xr.Dataset)
+
+
+def test_a_run_records_the_program_version_commit_and_scene(ladder):
+    run = jl.simulate(alpha=55, n=8, t_end=500)
+    r = run.record
+    assert r["program"] == "ladder" and r["version"] == jl.__version__
+    # The commit the CLI names (or none, for a build outside a clone).
+    cli = ladder("--version").stdout
+    assert (r["git_commit"] or "") in cli
+    assert r["build"] == jl.ENGINE_VERSION
+    assert r["scene"]["model"]["alpha"] == 55 and r["scene"]["model"]["n"] == 8
