@@ -4,12 +4,7 @@
 use jacobs_ladder::theory::TheoryReport;
 use std::process::{Command, Output};
 
-fn ladder(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args(args)
-        .output()
-        .expect("the ladder binary runs")
-}
+use crate::common::ladder_cli as ladder;
 
 /// `ladder ARGS`, which must exit 0 (its stderr shown if not).
 fn ladder_ok(args: &[&str]) -> Output {

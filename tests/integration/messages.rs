@@ -3,14 +3,7 @@
 //! whole message for a missing argument, a divergence hint that names a
 //! step that works, and a summary line that says what was written.
 
-use std::process::{Command, Output};
-
-fn ladder(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args(args)
-        .output()
-        .expect("the ladder binary runs")
-}
+use crate::common::ladder_cli as ladder;
 
 fn temp_dir(tag: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("ladder-msg-{tag}-{}", std::process::id()));

@@ -5,14 +5,8 @@
 //! to make list the catalogue.
 
 use crate::common::tempdir::TempDir;
-use std::process::{Command, Output};
 
-fn ladder(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args(args)
-        .output()
-        .expect("the ladder binary runs")
-}
+use crate::common::ladder_cli as ladder;
 
 /// `ladder ARGS --out DIR`, which must exit 0; returns its stderr.
 fn ok_in(dir: &TempDir, args: &[&str]) -> String {

@@ -7,14 +7,9 @@
 use crate::common::tempdir::TempDir;
 use jacobs_ladder::scene::file;
 use jacobs_ladder::sweep::Plan;
-use std::process::{Command, Output};
+use std::process::Output;
 
-fn ladder(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args(args)
-        .output()
-        .unwrap()
-}
+use crate::common::ladder_cli as ladder;
 
 fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()

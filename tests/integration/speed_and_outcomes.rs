@@ -10,14 +10,9 @@ use jacobs_ladder::scene::{self, Scene};
 use jacobs_ladder::scenes;
 use jacobs_ladder::sweep::outcome::{self, Outcome};
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::process::Output;
 
-fn ladder(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args(args)
-        .output()
-        .expect("the ladder binary runs")
-}
+use crate::common::ladder_cli as ladder;
 
 fn tmp(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("ladder-speed-{}-{name}", std::process::id()));

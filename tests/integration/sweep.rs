@@ -11,12 +11,7 @@ use jacobs_ladder::sweep::run::{run_point, run_points};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-fn ladder(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args(args)
-        .output()
-        .expect("the ladder binary runs")
-}
+use crate::common::ladder_cli as ladder;
 
 fn tmp(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("ladder-sweep-{}-{name}", std::process::id()));

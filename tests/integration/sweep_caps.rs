@@ -8,14 +8,9 @@ use jacobs_ladder::scene::file;
 use jacobs_ladder::sweep::shard::{self, Shard, ShardFile};
 use jacobs_ladder::sweep::{Plan, json};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
-fn ladder(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args(args)
-        .output()
-        .expect("the ladder binary runs")
-}
+use crate::common::ladder_cli as ladder;
 
 fn tmp(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("ladder-caps-{}-{name}", std::process::id()));

@@ -8,12 +8,7 @@ use crate::common::require::require;
 use crate::common::tempdir::TempDir;
 use std::process::{Command, Output};
 
-fn ladder(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args(args)
-        .output()
-        .unwrap()
-}
+use crate::common::ladder_cli as ladder;
 
 fn one_line(out: &Output, code: i32, needle: &str) {
     let err = String::from_utf8_lossy(&out.stderr);

@@ -16,3 +16,11 @@ pub mod tempdir;
 pub fn screen() -> jacobs_ladder::render::Theme {
     jacobs_ladder::render::Theme::of(&jacobs_ladder::render::Style::default())
 }
+
+/// Runs the `ladder` binary with `args` and waits for it.
+pub fn ladder_cli(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(args)
+        .output()
+        .expect("the ladder binary runs")
+}
