@@ -13,7 +13,6 @@
 
 use serde::{Deserialize, Serialize};
 use std::fmt;
-use std::sync::RwLock;
 
 /// Largest number of blocks N of a simulation. Memory is about 0.4 kB per
 /// block (state, forces, scratch), and `--integrator auto` finds ω_max from
@@ -180,25 +179,7 @@ impl fmt::Display for LimitExceeded {
 
 impl std::error::Error for LimitExceeded {}
 
-/// The caps in force in this process: [`Limits::default`] unless
-/// [`Limits::install`] raised or lowered them.
-static ACTIVE: RwLock<Option<Limits>> = RwLock::new(None);
-
 impl Limits {
-    /// Makes `self` the caps in force for every run of this process (the
-    /// command line does it once, from its flags).
-    pub fn install(self) {
-        *ACTIVE.write().unwrap_or_else(|p| p.into_inner()) = Some(self);
-    }
-
-    /// The caps in force: the installed ones, or the defaults.
-    pub fn active() -> Self {
-        ACTIVE
-            .read()
-            .unwrap_or_else(|p| p.into_inner())
-            .unwrap_or_default()
-    }
-
     /// No caps at all (for tests and for callers with their own bounds).
     pub fn none() -> Self {
         Self {

@@ -124,7 +124,7 @@ fn sweep_prepare(
     let chunks = convert::whole_or_none(chunks, "chunks")?;
     let scene = sweep_scene(base, kwargs, grid)?;
     let plan = front::sweep::plan(&scene, max_runs, &|runs| format!("max_runs={runs}")).py_err()?;
-    jacobs_ladder::sweep::json::check_estimate(&plan, &jacobs_ladder::limits::Limits::active())
+    jacobs_ladder::sweep::json::check_estimate(&plan)
         .map_err(Error::from)
         .py_err()?;
     let json = serde_json::to_string(&scene)
@@ -182,7 +182,7 @@ fn sweep_tables(scene: &Scene, max_runs: usize, stop: &work::Stop) -> Result<(St
     use jacobs_ladder::front;
     let plan = front::sweep::plan(scene, max_runs, &|runs| format!("max_runs={runs}"))?;
     // The files' bytes, estimated before any run (docs/limits.md).
-    jacobs_ladder::sweep::json::check_estimate(&plan, &jacobs_ladder::limits::Limits::active())?;
+    jacobs_ladder::sweep::json::check_estimate(&plan)?;
     let all: Vec<usize> = (0..plan.len()).collect();
     let mut records = Vec::new();
     // Ctrl-C is noticed after each run (the runs unwind) and between chunks.

@@ -307,7 +307,7 @@ pub fn simulate_scene<'py>(
     samples: Option<&Bound<'py, PyAny>>,
     dissipation: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let limits = jacobs_ladder::limits::Limits::active();
+    let limits = scene.limits;
     let n = scene.model.n;
     // Counted against the cap on samples × N before any is copied.
     let check = |count: usize| {
@@ -329,7 +329,7 @@ pub fn simulate_scene<'py>(
         };
         let progress = |t: f64| stop.check(t);
         let options = jacobs_ladder::sim::RunOptions::default()
-            .limits(jacobs_ladder::limits::Limits::active())
+            .limits(scene.limits)
             .progress(&progress)
             .dissipation(dissipation);
         let run = scenes::run::simulate_with(&scene, &times, &options)?;
@@ -350,7 +350,8 @@ fn sample_times(scene: &Scene, every: f64) -> Result<Vec<f64>> {
         )));
     }
     let count = (scene.run.t_end / every).floor() + 1.0;
-    jacobs_ladder::limits::Limits::active()
+    scene
+        .limits
         .check_samples(count, scene.model.n)
         .map_err(|e| {
             Error::bad_input(format!(

@@ -34,11 +34,7 @@ where
         .map(|a| a.to_string_lossy().into_owned())
         .collect();
     let result = match Cli::try_parse_from(args) {
-        Ok(cli) => cli
-            .command
-            .limits()
-            .install()
-            .and_then(|()| run_with(cli, &command_line)),
+        Ok(cli) => run_with(cli, &command_line),
         Err(e) => return clap_exit(e),
     };
     match result {
@@ -82,9 +78,9 @@ impl LimitArgs {
         }
     }
 
-    /// Installs the caps of the flags (the defaults where none is given)
-    /// for this process.
-    fn install(&self) -> Result<()> {
+    /// The caps of the flags (the defaults where none is given), which
+    /// every scene of the command then carries (`Scene::limits`).
+    pub fn caps(&self) -> Result<Limits> {
         let mut limits = Limits::default();
         for (resource, value) in [
             (Resource::BlockSteps, self.max_block_steps),
@@ -104,8 +100,7 @@ impl LimitArgs {
                 limits.set(resource, v);
             }
         }
-        limits.install();
-        Ok(())
+        Ok(limits)
     }
 }
 
@@ -161,14 +156,20 @@ pub fn run(cli: Cli) -> Result<()> {
 }
 
 /// [`run`], recording `command_line` (the program's arguments, word by
-/// word) in the data files it writes.
+/// word) in the data files it writes. The caps of the `--max-*` flags
+/// reach every scene the command makes (`Scene::limits`).
 pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
     use commands::render;
+    let limits = cli.command.limits().caps()?;
+    let call = commands::Call {
+        command_line,
+        limits,
+    };
     match cli.command {
-        Command::Simulate(args) => commands::simulate::simulate(&args, command_line),
+        Command::Simulate(args) => commands::simulate::simulate(&args, &call),
         Command::Bench(args) => commands::bench::bench(&args),
         Command::Theory(args) => commands::theory::theory(&args),
-        Command::Sweep(args) => commands::sweep::sweep(&args, command_line),
+        Command::Sweep(args) => commands::sweep::sweep(&args, &call),
         Command::List => output::print(&catalog::listing()?),
         Command::Completions(args) => output::print(&commands::docs::completions(args.shell)?),
         Command::Man => output::print(&commands::docs::man_page()?),
@@ -176,10 +177,10 @@ pub fn run_with(cli: Cli, command_line: &[String]) -> Result<()> {
             let entry = render::scene_entry(&args.id)?;
             output::print(&scene::file::to_toml(&entry.scene)?)
         }
-        Command::Figure(args) => render::figure(&args, command_line),
-        Command::Movie(args) => render::movie(&args, command_line),
-        Command::Render(args) => render::render(&args, command_line),
-        Command::All(args) => render::all(&args, command_line),
+        Command::Figure(args) => render::figure(&args, &call),
+        Command::Movie(args) => render::movie(&args, &call),
+        Command::Render(args) => render::render(&args, &call),
+        Command::All(args) => render::all(&args, &call),
     }
 }
 

@@ -81,8 +81,9 @@ pub fn parse_size(s: &str) -> std::result::Result<(u32, u32), String> {
     ))
 }
 
-/// The movie options, validated, within the cap on frames × pixels
-/// (`limits::Limits::active`).
+/// The movie options, validated. Their frames × pixels are checked
+/// against each movie scene's cap where it is rendered
+/// (`scenes::check`, `scenes::render_to`).
 pub fn movie_options(frames: usize, size: (u32, u32), fps: f64) -> Result<MovieOptions> {
     let opts = MovieOptions {
         frames,
@@ -92,7 +93,6 @@ pub fn movie_options(frames: usize, size: (u32, u32), fps: f64) -> Result<MovieO
     }
     .validated()
     .map_err(|e| Error::bad_input(format!("--frames/--size/--fps: {e}")))?;
-    crate::limits::Limits::active().check_movie(opts.frames, opts.width, opts.height)?;
     Ok(opts)
 }
 

@@ -62,7 +62,7 @@ pub fn run_in_chunks(
 /// message, e.g. where the runs are kept), after every chunk the
 /// JSON and the CSV of the runs done so far are counted (encoded into a
 /// counter, not kept) against the cap on a data file's bytes
-/// (`--max-data-bytes`, `limits::Limits::active`). Runs can have more
+/// (`--max-data-bytes`, the plan's `Scene::limits`). Runs can have more
 /// waves than the estimate before work assumed (walls born in the bulk),
 /// and no bound on the waves is known before a run, so this is where the
 /// bound holds: past the cap, `done` is handed to `checkpoint` (the runs
@@ -81,7 +81,7 @@ pub fn run_in_chunks_within(
     checkpoint: &mut dyn FnMut(&[Record]) -> Result<()>,
     count_files: Option<&str>,
 ) -> Result<()> {
-    let limits = crate::limits::Limits::active();
+    let limits = plan.scene.limits;
     let cap = limits.cap(crate::limits::Resource::DataBytes);
     let threads = rayon::current_num_threads().max(1);
     // Runs go through the batch kernel a chunk at a time (one run per SIMD

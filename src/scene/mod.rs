@@ -66,6 +66,14 @@ pub struct Scene {
     /// `[apparatus]`, `scene::apparatus`). Default none: the model's units.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub apparatus: Option<apparatus::Apparatus>,
+    /// The caps on what making this output may cost (docs/limits.md):
+    /// steps × N, samples × N, frames × pixels, a data file's bytes, a
+    /// theory figure's work. Not part of a scene file and never recorded:
+    /// the front end sets it (the command line from its `--max-*`
+    /// flags), and every run and check made for this scene takes it from
+    /// here. Default [`Limits::default`](crate::limits::Limits).
+    #[serde(skip)]
+    pub limits: crate::limits::Limits,
 }
 
 impl Default for Scene {
@@ -81,6 +89,7 @@ impl Default for Scene {
             output: OutputSpec::default(),
             style: crate::render::StyleSpec::default(),
             apparatus: None,
+            limits: crate::limits::Limits::default(),
         }
     }
 }
@@ -286,7 +295,7 @@ impl Scene {
                     &scenario.ladder.params,
                 )?),
             };
-            let options = crate::sim::RunOptions::default().limits(crate::limits::Limits::active());
+            let options = crate::sim::RunOptions::default().limits(self.limits);
             t_end = t_end.max(crate::sim::window::auto_window(&scenario, &config, &options)?.t_end);
         }
         out.run.t_end = if t_end > 0.0 {

@@ -35,9 +35,7 @@ pub fn energy_figure(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunDa
     // through `scenes::render_to` (a no-op when resolved).
     let scene = &scene.with_auto_window()?;
     let times = even(scene.run.t_end, ENERGY_SAMPLES - 1);
-    let options = RunOptions::default()
-        .limits(crate::limits::Limits::active())
-        .dissipation(true);
+    let options = RunOptions::default().limits(scene.limits).dissipation(true);
     let run = run::simulate_with(scene, &times, &options)?;
     let scenario = scene.scenario()?;
     let e = run.trajectory.energies(&scenario.ladder);

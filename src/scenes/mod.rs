@@ -165,7 +165,7 @@ pub fn figure_bytes(picture: &Picture, formats: &Formats, scale: f32) -> Result<
 pub fn figure_picture(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     match &scene.output {
         OutputSpec::Theory(spec) => {
-            let input = theory::FigureInput::new(describe::title(scene), &scene.model, spec);
+            let input = theory::FigureInput::of(scene, spec);
             Ok((theory::picture(theme, spec.figure, &input)?, vec![]))
         }
         OutputSpec::Filmstrip { .. } => dynamic::filmstrip_figure(theme, scene, None),
@@ -222,9 +222,14 @@ pub fn render_to(
     // the same window); everything drawn uses the window found.
     let asked = scene;
     let scene = &scene.with_auto_window()?;
+    if matches!(scene.output, OutputSpec::Movie { .. }) {
+        scene
+            .limits
+            .check_movie(movie.frames, movie.width, movie.height)?;
+    }
     if !matches!(scene.output, OutputSpec::Sweep(_)) {
         let (bytes, block_samples) = data::estimated_bytes(scene, movie, KYMOGRAPH_ROWS);
-        crate::limits::Limits::active().check_data_bytes(bytes, || {
+        scene.limits.check_data_bytes(bytes, || {
             format!(
                 "the data file of {} {}, {} samples × N",
                 scene.kind().name(),
@@ -255,14 +260,16 @@ pub fn check(scene: &Scene, movie: &MovieOptions, outputs: &Outputs) -> Result<(
     style_of(scene, outputs)?;
     match &scene.output {
         OutputSpec::Theory(spec) => {
-            let input = theory::FigureInput::new(describe::title(scene), &scene.model, spec);
+            let input = theory::FigureInput::of(scene, spec);
             theory::check_cost(spec.figure, &input)?;
             Ok(())
         }
         // Its grid's runs and its files' bytes (`crate::sweep::checked`).
         OutputSpec::Sweep(_) => crate::sweep::checked(scene).map(drop),
         OutputSpec::Movie { .. } => {
-            crate::limits::Limits::active().check_movie(movie.frames, movie.width, movie.height)?;
+            scene
+                .limits
+                .check_movie(movie.frames, movie.width, movie.height)?;
             run::check_cost(scene, movie.frames)
         }
         _ => scene

@@ -71,15 +71,16 @@ fn short(x: f64) -> String {
 }
 
 /// Refuses, before any work, a run of `scene` with `samples` sample
-/// times past the caps in force: its integrator's steps × N and samples
-/// × N, and for `auto` every halving it may make (`sim::auto::worst_case`).
+/// times past the scene's caps (`Scene::limits`): its integrator's
+/// steps × N and samples × N, and for `auto` every halving it may make
+/// (`sim::auto::worst_case`).
 ///
 /// With `t_end = "auto"` the window is not known before its own run
 /// (`sim::window`), so that run is what is checked here: one run to the
 /// automatic window's cap at the integrator's first step. The runs drawn
 /// after it are checked again, with the window found, before they start.
 pub fn check_cost(scene: &Scene, samples: usize) -> Result<()> {
-    let limits = crate::limits::Limits::active();
+    let limits = scene.limits;
     if scene.run.t_end == crate::scene::AUTO_T_END {
         let mut capped = scene.clone();
         capped.run.t_end = sim::window::AUTO_CAP;
@@ -108,9 +109,9 @@ pub fn check_cost(scene: &Scene, samples: usize) -> Result<()> {
 }
 
 /// Runs a single-run scene, recording the state at `samples`, with the
-/// default run options within the caps in force.
+/// default run options within the scene's caps (`Scene::limits`).
 pub fn simulate(scene: &Scene, samples: &[f64]) -> Result<SceneRun> {
-    let options = RunOptions::default().limits(crate::limits::Limits::active());
+    let options = RunOptions::default().limits(scene.limits);
     simulate_with(scene, samples, &options)
 }
 

@@ -8,7 +8,7 @@
 
 use super::results::counts;
 use super::{Plan, Record};
-use crate::limits::{LimitExceeded, Limits};
+use crate::limits::LimitExceeded;
 use crate::scene::describe;
 use crate::scene::sweep::Param;
 use serde::{Serialize, Serializer};
@@ -251,9 +251,10 @@ pub fn estimate(plan: &Plan) -> Estimate {
     Estimate { json, csv, blocks }
 }
 
-/// Checks `plan`'s estimated files against the cap on a data file's
-/// bytes, before any run.
-pub fn check_estimate(plan: &Plan, limits: &Limits) -> Result<(), LimitExceeded> {
+/// Checks `plan`'s estimated files against its scene's cap on a data
+/// file's bytes (`Scene::limits`), before any run.
+pub fn check_estimate(plan: &Plan) -> Result<(), LimitExceeded> {
+    let limits = &plan.scene.limits;
     let e = estimate(plan);
     let detail = |what: &str| {
         format!(
@@ -271,7 +272,8 @@ pub fn check_estimate(plan: &Plan, limits: &Limits) -> Result<(), LimitExceeded>
 /// records (`json` and `csv` bytes), against the same cap: runs with
 /// more waves than [`estimate`] assumed can pass it after the check
 /// before work.
-pub fn check_size(plan: &Plan, json: u64, csv: u64, limits: &Limits) -> Result<(), LimitExceeded> {
+pub fn check_size(plan: &Plan, json: u64, csv: u64) -> Result<(), LimitExceeded> {
+    let limits = &plan.scene.limits;
     let detail = |what: &str| {
         format!(
             "the {what} of sweep {}, counted from its {} runs and their waves",

@@ -221,12 +221,7 @@ pub fn write_outputs(
     let csv = results::csv(plan, records);
     let json_bytes = json::size(plan, records, &names, output.command_line)
         .map_err(|e| Error::failed(format!("cannot encode the sweep's data file: {e}")))?;
-    json::check_size(
-        plan,
-        json_bytes,
-        csv.len() as u64,
-        &crate::limits::Limits::active(),
-    )?;
+    json::check_size(plan, json_bytes, csv.len() as u64)?;
     for (name, bytes) in names.iter().zip(&pictures) {
         sink(name, &|w| w.write_all(bytes))?;
     }
@@ -257,7 +252,7 @@ pub struct OutputOptions<'a> {
 
 /// The plan of a sweep scene rendered as a figure ([`render_to`]), with
 /// every check made before its runs: its runs against the default cap,
-/// its files' estimated bytes against the cap in force. `render --check`
+/// its files' estimated bytes against the scene's cap. `render --check`
 /// makes them too.
 pub fn checked(scene: &Scene) -> Result<Plan> {
     let plan = Plan::new(scene, crate::scene::sweep::DEFAULT_MAX_RUNS)?.map_err(|e| {
@@ -265,7 +260,7 @@ pub fn checked(scene: &Scene) -> Result<Plan> {
             "{e}; run it with `ladder sweep FILE --max-runs N` to raise the cap"
         ))
     })?;
-    json::check_estimate(&plan, &crate::limits::Limits::active())?;
+    json::check_estimate(&plan)?;
     Ok(plan)
 }
 

@@ -125,6 +125,8 @@ struct Prepared {
     scenario: Scenario,
     rule: Rule,
     method: Method,
+    /// The scene's caps (`Scene::limits`).
+    limits: crate::limits::Limits,
 }
 
 fn prepare(scene: &Scene, spec: &SweepSpec) -> Result<Prepared> {
@@ -147,6 +149,7 @@ fn prepare(scene: &Scene, spec: &SweepSpec) -> Result<Prepared> {
         scenario,
         rule,
         method,
+        limits: scene.limits,
     })
 }
 
@@ -210,7 +213,7 @@ fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<De
                 || (v.t >= rule.drive_end && rule.at_rest(v.ladder, v.q, v.v))
         };
         let options = sim::RunOptions::default()
-            .limits(crate::limits::Limits::active())
+            .limits(points[first.point].limits)
             .stop(&stop);
         let runs = sim::batch::simulate_many(&scenarios, &first.config, &options);
         for (&k, run) in members.iter().zip(runs) {

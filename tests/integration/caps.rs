@@ -157,9 +157,9 @@ fn theory_figures_are_costed_before_work() {
 /// its work (the worst case of `auto` included) at the default caps.
 #[test]
 fn the_catalogue_passes_the_default_caps() {
-    Limits::default().install();
     let (movie, outputs) = (MovieOptions::default(), Outputs::default());
     for e in jacobs_ladder::catalog::catalogue().unwrap() {
+        assert_eq!(e.scene.limits, Limits::default(), "{}", e.id);
         if let Err(err) = scenes::check(&e.scene, &movie, &outputs) {
             panic!("{} {}: {err}", e.kind().name(), e.id);
         }
@@ -190,4 +190,39 @@ fn a_shard_file_past_what_gather_reads_is_refused_before_work() {
             "{args:?} wrote into its folder"
         );
     }
+}
+
+/// The caps travel with each scene (`Scene::limits`), not in a process
+/// global: in one process, at the same time, a scene whose cap on
+/// steps × N is below its run's cost is refused by the run itself (its
+/// figures' runs, the CLI's `--max-block-steps`), while the same scene
+/// with the default caps runs.
+#[test]
+fn each_scene_carries_its_own_caps() {
+    use jacobs_ladder::scene::Scene;
+    let mut base = Scene::default();
+    base.model.n = 10;
+    base.run.t_end = 200.0;
+    base.run.integrator =
+        jacobs_ladder::scene::Method::Fixed(jacobs_ladder::sim::IntegratorKind::Verlet);
+    base.run.dt = Some(0.01);
+    // 2e4 steps × N = 10 = 2e5 block-steps.
+    let mut capped = base.clone();
+    capped.limits.block_steps = 1e5;
+    let (refused, ran) = std::thread::scope(|s| {
+        let a = s.spawn(|| scenes::run::simulate(&capped, &[]));
+        let b = s.spawn(|| scenes::run::simulate(&base, &[]));
+        (a.join().unwrap(), b.join().unwrap())
+    });
+    match refused {
+        Err(jacobs_ladder::Error::Limit(l)) => {
+            assert_eq!(l.resource, jacobs_ladder::limits::Resource::BlockSteps);
+            assert_eq!(l.cap, 1e5);
+        }
+        other => panic!("the capped scene was not refused: {:?}", other.map(drop)),
+    }
+    assert!(ran.is_ok(), "the default scene failed");
+    // The check before work says the same, from the same field.
+    assert!(scenes::run::check_cost(&capped, 0).is_err());
+    assert!(scenes::run::check_cost(&base, 0).is_ok());
 }

@@ -2,6 +2,7 @@
 //! command names, and their files rendered into a folder.
 
 use crate::catalog::{self, Entry};
+use crate::cli::commands::Call;
 use crate::cli::convert;
 use crate::cli::hints::{Words, with_divergence_hint};
 use crate::cli::progress::progress_bar;
@@ -198,24 +199,24 @@ pub(crate) fn render_into(
 
 /// `ladder figure`: a built-in figure, all of them, or a filmstrip (or
 /// kymograph, arrival chart) of the user's own ladder.
-pub(crate) fn figure(args: &FigureArgs, command_line: &[String]) -> Result<()> {
-    let outputs = recorded(args.figure_format.outputs()?, command_line);
-    let scenes = figure_scenes(args)?;
+pub(crate) fn figure(args: &FigureArgs, call: &Call<'_>) -> Result<()> {
+    let outputs = recorded(args.figure_format.outputs()?, call.command_line);
+    let scenes = call.capped(figure_scenes(args)?);
     let movie = MovieOptions::default();
     render_into(&scenes, &args.out, &movie, &outputs, Words::Flags, false)
 }
 
 /// `ladder movie`: a built-in movie, all of them, or the user's own.
-pub(crate) fn movie(args: &MovieArgs, command_line: &[String]) -> Result<()> {
+pub(crate) fn movie(args: &MovieArgs, call: &Call<'_>) -> Result<()> {
     let opts = args.format.options()?;
     let outputs = recorded(
         Outputs {
             mp4_quality: args.format.mp4_quality(),
             ..front::options::movie_outputs(&args.formats, &opts, args.scale)?
         },
-        command_line,
+        call.command_line,
     );
-    let scenes = movie_scenes(args)?;
+    let scenes = call.capped(movie_scenes(args)?);
     if let Some(line) = front::options::movie_formats_line(&args.formats, &outputs) {
         output::eprint(&format!("ladder: {line}\n"))?;
     }
@@ -224,13 +225,14 @@ pub(crate) fn movie(args: &MovieArgs, command_line: &[String]) -> Result<()> {
 
 /// `ladder render FILE...`: scene files, or with `--check` only the checks
 /// rendering makes before its work.
-pub(crate) fn render(args: &RenderArgs, command_line: &[String]) -> Result<()> {
-    let (opts, outputs) = mixed(&args.format, &args.formats, command_line)?;
-    let scenes = args
-        .files
-        .iter()
-        .map(|f| scene::file::load(f))
-        .collect::<Result<Vec<_>>>()?;
+pub(crate) fn render(args: &RenderArgs, call: &Call<'_>) -> Result<()> {
+    let (opts, outputs) = mixed(&args.format, &args.formats, call.command_line)?;
+    let scenes = call.capped(
+        args.files
+            .iter()
+            .map(|f| scene::file::load(f))
+            .collect::<Result<Vec<_>>>()?,
+    );
     args.formats.check_covers(&scenes)?;
     let sources: Vec<String> = args.files.iter().map(|f| f.display().to_string()).collect();
     front::render::check_distinct_outputs(&scenes, &sources, &args.out.out, &outputs)?;
@@ -256,12 +258,14 @@ pub(crate) fn render(args: &RenderArgs, command_line: &[String]) -> Result<()> {
 }
 
 /// `ladder all`: every built-in figure and movie, and the gallery page.
-pub(crate) fn all(args: &AllArgs, command_line: &[String]) -> Result<()> {
-    let (opts, outputs) = mixed(&args.format, &args.formats, command_line)?;
-    let scenes: Vec<Scene> = catalog::catalogue()?
-        .iter()
-        .map(|e| e.scene.clone())
-        .collect();
+pub(crate) fn all(args: &AllArgs, call: &Call<'_>) -> Result<()> {
+    let (opts, outputs) = mixed(&args.format, &args.formats, call.command_line)?;
+    let scenes: Vec<Scene> = call.capped(
+        catalog::catalogue()?
+            .iter()
+            .map(|e| e.scene.clone())
+            .collect(),
+    );
     render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, true)
 }
 

@@ -1,12 +1,12 @@
 //! `ladder simulate`: one run from the flags, its table or JSON, and its
 //! CSV and NPZ.
 
+use crate::cli::commands::Call;
 use crate::cli::convert;
 use crate::cli::hints::{Words, with_divergence_hint};
 use crate::cli::progress::time_bar;
 use crate::cli::*;
 use crate::error::{Error, Result};
-use crate::limits::Limits;
 use crate::output;
 use crate::scene::{self, Scene};
 use crate::scenes;
@@ -58,7 +58,8 @@ pub struct SimulateReport<'a> {
     pub waves: crate::sim::waves::Waves,
 }
 
-pub(crate) fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<()> {
+pub(crate) fn simulate(args: &SimulateArgs, call: &Call<'_>) -> Result<()> {
+    let command_line = call.command_line;
     let run = RunArgs {
         t_end: Some(args.t_end),
         integrator: Some(args.integrator.clone()),
@@ -75,8 +76,13 @@ pub(crate) fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<(
             "--dt: the auto integrator picks its own step; name an integrator to set --dt",
         ));
     }
-    let scene = convert::scene_from_flags(base, &args.model, &args.drive, &run)?;
-    let samples = csv_samples(args, scene.model.n)?;
+    let scene = call.capped_one(convert::scene_from_flags(
+        base,
+        &args.model,
+        &args.drive,
+        &run,
+    )?);
+    let samples = csv_samples(args, &scene)?;
     let stepping = args.kernel.stepping()?;
     let sidecar = args.csv.as_deref().map(csv_sidecar);
     let targets: Vec<(std::path::PathBuf, String)> = [
@@ -96,7 +102,7 @@ pub(crate) fn simulate(args: &SimulateArgs, command_line: &[String]) -> Result<(
     let progress = |t: f64| bar.set_position(bar.position().max(t as u64));
     let options = crate::sim::RunOptions::default()
         .stepping(stepping)
-        .limits(crate::limits::Limits::active())
+        .limits(scene.limits)
         .progress(&progress)
         // The npz's `dissipated_energy` (the trajectory is the same bits).
         .dissipation(args.npz.is_some());
@@ -177,7 +183,7 @@ pub fn csv_sidecar(csv: &std::path::Path) -> std::path::PathBuf {
 
 /// The CSV's and npz's sample times, 0, every, 2 every, ... up to
 /// --t-end, within the cap on samples × N (checked before any is made).
-pub(crate) fn csv_samples(args: &SimulateArgs, n: usize) -> Result<Vec<f64>> {
+pub(crate) fn csv_samples(args: &SimulateArgs, scene: &Scene) -> Result<Vec<f64>> {
     if args.csv.is_none() && args.npz.is_none() {
         return Ok(Vec::new());
     }
@@ -189,7 +195,7 @@ pub(crate) fn csv_samples(args: &SimulateArgs, n: usize) -> Result<Vec<f64>> {
         )));
     }
     let count = (args.t_end / every).floor() + 1.0;
-    Limits::active().check_samples(count, n)?;
+    scene.limits.check_samples(count, scene.model.n)?;
     let mut times = Vec::new();
     times
         .try_reserve_exact(count as usize)

@@ -3,6 +3,7 @@
 //! user typed is validated before anything is written.
 
 use crate::cli::args::{SweepArgs, SweepCommand};
+use crate::cli::commands::Call;
 use crate::cli::convert;
 use crate::error::{Error, Result};
 use crate::front;
@@ -12,19 +13,24 @@ use crate::sweep::{Plan, Record};
 use std::path::Path;
 use std::time::Instant;
 
-pub fn sweep(args: &SweepArgs, command_line: &[String]) -> Result<()> {
+pub fn sweep(args: &SweepArgs, call: &Call<'_>) -> Result<()> {
     let recorded = |outputs: Outputs| Outputs {
-        command_line: command_line.to_vec(),
+        command_line: call.command_line.to_vec(),
         ..outputs
     };
     if let Some(SweepCommand::Gather {
         dir, figure_format, ..
     }) = &args.command
     {
-        return gather(dir, &recorded(figure_format.outputs()?), args.max_runs);
+        return gather(
+            dir,
+            &recorded(figure_format.outputs()?),
+            args.max_runs,
+            call,
+        );
     }
     let outputs = recorded(args.figure_format.outputs()?);
-    let scene = convert::sweep_scene(args)?;
+    let scene = call.capped_one(convert::sweep_scene(args)?);
     let plan = front::sweep::plan(&scene, args.max_runs, &|runs| format!("--max-runs {runs}"))?;
     let shard = match &args.shard {
         Some(s) => Shard::parse(s).map_err(|m| Error::bad_input(format!("--shard: {m}")))?,
@@ -60,7 +66,7 @@ fn check_and_run(
 ) -> Result<()> {
     if args.shard.is_none() {
         // The CSV and JSON this process will write, before anything.
-        crate::sweep::json::check_estimate(plan, &crate::limits::Limits::active())?;
+        crate::sweep::json::check_estimate(plan)?;
     }
     // Every sweep keeps its runs in a shard file (one for the whole).
     shard::check_estimate(plan, shard)?;
@@ -181,8 +187,10 @@ fn write_outputs(
 }
 
 /// `ladder sweep gather DIR`.
-fn gather(dir: &Path, outputs: &Outputs, max_runs: usize) -> Result<()> {
+fn gather(dir: &Path, outputs: &Outputs, max_runs: usize, call: &Call<'_>) -> Result<()> {
     let start = Instant::now();
-    let (plan, records) = shard::gather(dir, max_runs)?;
+    let (mut plan, records) = shard::gather(dir, max_runs)?;
+    // The shards' scene, within this command's caps.
+    plan.scene = call.capped_one(plan.scene);
     write_outputs(&plan, &records, dir, outputs, start)
 }

@@ -247,6 +247,7 @@ mod tests {
             alphas: vec![],
             a_over_b: vec![],
             modes: vec![],
+            limits: Default::default(),
         };
         let mut widths = Vec::new();
         for alpha in [75.0, -75.0] {

@@ -34,6 +34,9 @@ pub struct FigureInput {
     pub a_over_b: Vec<f64>,
     /// Zero modes (Fig. S4).
     pub modes: Vec<ZeroMode>,
+    /// The caps the figure's work is checked against ([`check_cost`]).
+    /// Default [`Limits::default`]; a scene's figure takes the scene's.
+    pub limits: Limits,
 }
 
 impl FigureInput {
@@ -44,6 +47,16 @@ impl FigureInput {
             alphas: spec.alphas.clone(),
             a_over_b: spec.a_over_b.clone(),
             modes: spec.modes.clone(),
+            limits: Limits::default(),
+        }
+    }
+
+    /// The input of `scene`'s figure `spec`: its title, model, lists and
+    /// caps.
+    pub fn of(scene: &crate::scene::Scene, spec: &TheorySpec) -> Self {
+        Self {
+            limits: scene.limits,
+            ..Self::new(crate::scene::describe::title(scene), &scene.model, spec)
         }
     }
 
@@ -130,7 +143,7 @@ pub fn work(figure: TheoryFigure, input: &FigureInput) -> Work {
 }
 
 /// Refuses, before any work, a figure whose estimated cost
-/// ([`work`]) is past the cap in force on theory work, or whose dense
+/// ([`work`]) is past the input's cap on theory work, or whose dense
 /// matrices would not fit in [`cost::MAX_DENSE_BYTES`].
 pub fn check_cost(figure: TheoryFigure, input: &FigureInput) -> Result<Work> {
     let w = work(figure, input);
@@ -143,7 +156,7 @@ pub fn check_cost(figure: TheoryFigure, input: &FigureInput) -> Result<Work> {
             cost::MAX_DENSE_BYTES
         )));
     }
-    Limits::active().check(Resource::TheoryWork, w.operations, || {
+    input.limits.check(Resource::TheoryWork, w.operations, || {
         // The scene file's word for the figure ("ground-states").
         let name = serde_json::to_string(&figure).unwrap_or_default();
         format!("figure = {name} at N = {n}")
