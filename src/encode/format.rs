@@ -258,6 +258,14 @@ impl Formats {
         &self.list
     }
 
+    /// `<base>.<ext>` for each format, in order.
+    pub fn file_names(&self, base: &str) -> Vec<String> {
+        self.list
+            .iter()
+            .map(|f| format!("{base}.{}", f.extension()))
+            .collect()
+    }
+
     /// Whether `format` is in the list.
     pub fn contains(&self, format: Format) -> bool {
         self.list.contains(&format)

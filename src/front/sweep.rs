@@ -28,12 +28,7 @@ pub fn plan(scene: &Scene, max_runs: usize, raise: &dyn Fn(usize) -> String) -> 
 pub fn result_names(plan: &Plan, outputs: &Outputs) -> Vec<String> {
     let stem = format!("sweep-{}", plan.scene.name);
     let mut names: Vec<String> = if plan.varied().len() <= 2 {
-        outputs
-            .figures
-            .as_slice()
-            .iter()
-            .map(|f| format!("{stem}.{}", f.extension()))
-            .collect()
+        outputs.figures.file_names(&stem)
     } else {
         Vec::new()
     };

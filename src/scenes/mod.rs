@@ -102,12 +102,7 @@ pub const PREVIEW: &str = "-preview.png";
 /// [`Outputs::needs_preview`]: the names of the bytes of
 /// [`Outputs::encoded_figures`], in order.
 fn figure_names(base: &str, outputs: &Outputs) -> Vec<String> {
-    let mut names: Vec<String> = outputs
-        .figures
-        .as_slice()
-        .iter()
-        .map(|f| format!("{base}.{}", f.extension()))
-        .collect();
+    let mut names = outputs.figures.file_names(base);
     if outputs.needs_preview() {
         names.push(format!("{base}{PREVIEW}"));
     }
@@ -127,12 +122,7 @@ pub fn file_names_for(scene: &Scene, outputs: &Outputs) -> Vec<String> {
     let stem = scene.stem();
     let mut names: Vec<String> = match scene.output {
         OutputSpec::Movie { .. } => {
-            let mut v: Vec<String> = outputs
-                .movies
-                .as_slice()
-                .iter()
-                .map(|f| format!("{stem}.{}", f.extension()))
-                .collect();
+            let mut v = outputs.movies.file_names(&stem);
             v.extend(figure_names(&format!("{stem}-kymograph"), outputs));
             v
         }

@@ -347,6 +347,17 @@ pub fn run_streaming(
     let power = |st: &State| trajectory::dissipated_power(ladder, &st.q, &st.v);
     let mut dissipated = options.dissipation.then_some(0.0);
     let mut last_power = if options.dissipation { power(&st) } else { 0.0 };
+    // The stop rule, asked at every check and at every stop time.
+    let stop_here = |t, st: &State, arrivals: &ArrivalDetector, waves: &WaveTracker| {
+        (options.stop)(&StopView {
+            t,
+            arrivals: &arrivals.arrival,
+            ladder,
+            q: &st.q,
+            v: &st.v,
+            waves,
+        })
+    };
     emit_due(&samples, &mut next_sample, t, &st, dissipated, sink)?;
     'run: for &stop_at in &stops {
         while t < stop_at {
@@ -395,15 +406,7 @@ pub fn run_streaming(
                         ),
                     }));
                 }
-                let view = StopView {
-                    t,
-                    arrivals: &arrivals.arrival,
-                    ladder,
-                    q: &st.q,
-                    v: &st.v,
-                    waves: &tracker,
-                };
-                if (options.stop)(&view) {
+                if stop_here(t, &st, &arrivals, &tracker) {
                     break 'run;
                 }
             }
@@ -413,15 +416,7 @@ pub fn run_streaming(
         }
         watch.check(&rhs, &st, t)?;
         emit_due(&samples, &mut next_sample, t, &st, dissipated, sink)?;
-        let view = StopView {
-            t,
-            arrivals: &arrivals.arrival,
-            ladder,
-            q: &st.q,
-            v: &st.v,
-            waves: &tracker,
-        };
-        if (options.stop)(&view) {
+        if stop_here(t, &st, &arrivals, &tracker) {
             break;
         }
     }
