@@ -206,7 +206,7 @@ class Run:
     def __repr__(self) -> str:
         m = self.record.get("model", {})
         alpha = m.get("alpha")
-        wave = "kink" if alpha is not None and alpha >= 0 else "antikink"
+        wave = self.record.get("launched", "wave")
         # Blocks 1..N-1 (block N, free, turns its own way): the engine's count.
         flipped = self.record.get("blocks_flipped")
         integ = self.integrator

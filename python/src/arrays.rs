@@ -94,6 +94,10 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
             }
         }
         m.entry("scene").or_insert(scene_json);
+        // The wave block 1's first flip launches: the library's rule
+        // (`WaveKind::launched`), for the repr.
+        let launched = jacobs_ladder::sim::waves::WaveKind::launched(scene.model.alpha);
+        m.entry("launched").or_insert(launched.name().into());
     }
     Ok(RunArrays {
         n,

@@ -18,3 +18,12 @@ def test_the_summary_counts_blocks_one_to_n_minus_one():
     run = jl.simulate(alpha=60, t_end=3000)
     assert run.record["blocks_flipped"] == 9
     assert "9/9 blocks flipped" in repr(run)
+
+
+def test_the_summary_names_the_wave_by_the_engines_rule():
+    # The launched wave comes from the engine (`WaveKind::launched`), as
+    # the figures' titles do: α < 0 launches an antikink, α ≥ 0 a kink.
+    for alpha, wave in [(-60, "antikink"), (60, "kink"), (0.0, "kink")]:
+        run = jl.simulate(alpha=alpha, n=6, t_end=50)
+        assert run.record["launched"] == wave
+        assert repr(run).startswith(f"<Run {wave} α"), repr(run)
