@@ -286,7 +286,9 @@ def simulate(
     return Run(_native.simulate(kw, sample_every, samples, bool(dissipation)))
 
 
-def theory(alpha: float = 60.0, n: int = 10, b: float = 1.3) -> Dict[str, Any]:
+def theory(
+    alpha: Optional[float] = None, n: Optional[int] = None, b: Optional[float] = None
+) -> Dict[str, Any]:
     """The linear theory, as ``ladder theory --json`` prints it: ``a``,
     ``u_min`` and ``barrier`` (m g s), ``kappa``, ``winding_number``,
     ``gap_omega_plus_q0``, ``omega_max``, zero modes, ...
@@ -401,7 +403,7 @@ class Scene:
 
     def simulate(
         self,
-        sample_every: float = 10.0,
+        sample_every: Optional[float] = None,
         samples: Optional[Sequence[float]] = None,
         index: int = 0,
         dissipation: bool = False,
@@ -656,7 +658,7 @@ def sweep(
     *,
     cap: Optional[float] = None,
     name: Optional[str] = None,
-    max_runs: int = 100_000,
+    max_runs: Optional[int] = None,
     executor: Any = None,
     chunks: Optional[int] = None,
     **keys: Any,

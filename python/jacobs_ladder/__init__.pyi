@@ -111,7 +111,9 @@ def simulate(
     dopri5 (auto); dt: τ (0.01); rtol (1e-6); tolerance: τ (0.1);
     sample_every: τ (10)."""
 
-def theory(alpha: float = 60.0, n: int = 10, b: float = 1.3) -> Dict[str, Any]:
+def theory(
+    alpha: Optional[float] = None, n: Optional[int] = None, b: Optional[float] = None
+) -> Dict[str, Any]:
     """`ladder theory --json` as a dict. alpha: degrees (60); n (10); b: s (1.3)."""
 
 def catalogue() -> List[Tuple[str, str, str]]:
@@ -155,7 +157,7 @@ class Scene:
     def runs(self) -> int: ...
     def simulate(
         self,
-        sample_every: float = 10.0,
+        sample_every: Optional[float] = None,
         samples: Optional[Sequence[float]] = None,
         index: int = 0,
         dissipation: bool = False,
@@ -203,7 +205,7 @@ def sweep(
     *,
     cap: Optional[float] = None,
     name: Optional[str] = None,
-    max_runs: int = 100_000,
+    max_runs: Optional[int] = None,
     executor: Any = None,
     chunks: Optional[int] = None,
     **keys: Any,

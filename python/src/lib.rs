@@ -39,7 +39,8 @@ fn simulate<'py>(
     scene::simulate_scene(py, scene, sample_every, samples, dissipation)
 }
 
-/// `theory(alpha, n, b)`: the numbers of `ladder theory --json`, as JSON.
+/// `theory(alpha, n, b)`: the numbers of `ladder theory --json`, as JSON;
+/// a value left out (None) is the model's default (`Model::default`).
 #[pyfunction]
 fn theory(
     py: Python<'_>,
@@ -47,17 +48,13 @@ fn theory(
     n: &Bound<'_, PyAny>,
     b: &Bound<'_, PyAny>,
 ) -> PyResult<String> {
-    let number = |o: &Bound<'_, PyAny>, key: &str| {
-        convert::number_or_none(Some(o), key)?
-            .ok_or_else(|| convert::bad(key, "must be a finite number, got None"))
-    };
+    let m = jacobs_ladder::scene::Model::default();
     let (alpha, n, b) = (
-        number(alpha, "alpha")?,
-        convert::whole(n, "n")?,
-        number(b, "b")?,
+        convert::number_or_none(Some(alpha), "alpha")?.unwrap_or(m.alpha),
+        convert::whole_or_none(Some(n), "n")?.unwrap_or(m.n),
+        convert::number_or_none(Some(b), "b")?.unwrap_or(m.b),
     );
     work::run(py, move |_| {
-        let m = jacobs_ladder::scene::Model::default();
         let params = jacobs_ladder::model::Params::new(n, b, alpha, m.gamma, m.gravity, m.inertia)?;
         let report = jacobs_ladder::theory::TheoryReport::compute(&params)?;
         serde_json::to_string(&report).map_err(|e| Error::failed(format!("cannot encode: {e}")))
@@ -102,7 +99,8 @@ fn sweep(
     grid: &Bound<'_, PyList>,
     max_runs: &Bound<'_, PyAny>,
 ) -> PyResult<(String, String)> {
-    let max_runs = convert::whole(max_runs, "max_runs")?;
+    let max_runs = convert::whole_or_none(Some(max_runs), "max_runs")?
+        .unwrap_or(jacobs_ladder::scene::sweep::DEFAULT_MAX_RUNS);
     let scene = sweep_scene(base, kwargs, grid)?;
     work::run(py, move |stop| sweep_tables(&scene, max_runs, stop))
 }
@@ -120,7 +118,8 @@ fn sweep_prepare(
     chunks: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<(String, usize, usize)> {
     use jacobs_ladder::front;
-    let max_runs = convert::whole(max_runs, "max_runs")?;
+    let max_runs = convert::whole_or_none(Some(max_runs), "max_runs")?
+        .unwrap_or(jacobs_ladder::scene::sweep::DEFAULT_MAX_RUNS);
     let chunks = convert::whole_or_none(chunks, "chunks")?;
     let scene = sweep_scene(base, kwargs, grid)?;
     let plan = front::sweep::plan(&scene, max_runs, &|runs| format!("max_runs={runs}")).py_err()?;

@@ -28,11 +28,9 @@ MOVIE = jl.Scene.builtin("4", kind="movie")
         (lambda: jl.theory(n=10.7), "n"),
         (lambda: jl.theory(n=-1), "n"),
         (lambda: jl.theory(n=2**70), "n"),
-        (lambda: jl.theory(n=None), "n"),
         (lambda: jl.sweep(alpha=[60], max_runs=-1), "max_runs"),
         (lambda: jl.sweep(alpha=[60], max_runs=2**70), "max_runs"),
         (lambda: jl.sweep(alpha=[60], max_runs=math.inf), "max_runs"),
-        (lambda: jl.sweep(alpha=[60], max_runs=None), "max_runs"),
         (lambda: jl.Scene.builtin("3").simulate(index=-1), "index"),
         (lambda: MOVIE.render(frames=-1), "frames"),
         (lambda: MOVIE.render(frames=2**70), "frames"),
@@ -50,6 +48,17 @@ def test_a_bad_value_is_a_value_error_naming_its_key(call, key):
     with pytest.raises(ValueError) as err:
         call()
     assert str(err.value).startswith(key + ":"), str(err.value)
+
+
+def test_none_is_the_engines_default():
+    # The defaults live in Rust (the model's, the sweep's cap): None, or
+    # the keyword left out, is the same call as the default's value.
+    assert jl.theory(alpha=None, n=None, b=None) == jl.theory(alpha=60, n=10, b=1.3)
+    assert jl.theory() == jl.theory(alpha=60, n=10, b=1.3)
+    with pytest.raises(ValueError, match="^max_runs: "):
+        jl.sweep(alpha=[60, 70], max_runs=1)
+    # The default cap (10^5) takes a two-run grid, as max_runs=None does.
+    assert len(jl.sweep(alpha=[60, 70], n=6, max_runs=None)) == 2
 
 
 def test_an_object_that_is_no_value_is_a_type_error_naming_its_key():

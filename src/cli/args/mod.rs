@@ -2,6 +2,7 @@
 //! no validation beyond parsing. `convert` turns them into scenes and
 //! options; nothing here builds physics.
 
+use crate::scene::Model;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -591,13 +592,13 @@ pub struct AllArgs {
 #[command(allow_negative_numbers = true)]
 pub struct TheoryArgs {
     /// Equilibrium angle alpha in degrees, 0 <= |alpha| <= 90
-    #[arg(long, default_value_t = 60.0, value_name = "DEG")]
+    #[arg(long, default_value_t = Model::default().alpha, value_name = "DEG")]
     pub alpha: f64,
     /// Rest length b of the B springs, in units of s, 1e-3 to 1e3
-    #[arg(long, default_value_t = 1.3)]
+    #[arg(long, default_value_t = Model::default().b)]
     pub b: f64,
     /// Number of blocks N of the finite chain (2..=400)
-    #[arg(long, default_value_t = 10)]
+    #[arg(long, default_value_t = Model::default().n)]
     pub n: usize,
     /// Print one JSON object instead of a table
     #[arg(long)]
