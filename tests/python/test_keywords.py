@@ -55,7 +55,7 @@ def test_none_is_the_engines_default():
     # the keyword left out, is the same call as the default's value.
     assert jl.theory(alpha=None, n=None, b=None) == jl.theory(alpha=60, n=10, b=1.3)
     assert jl.theory() == jl.theory(alpha=60, n=10, b=1.3)
-    with pytest.raises(ValueError, match="^max_runs: "):
+    with pytest.raises(ValueError, match="raise the cap with max_runs=2"):
         jl.sweep(alpha=[60, 70], max_runs=1)
     # The default cap (10^5) takes a two-run grid, as max_runs=None does.
     assert len(jl.sweep(alpha=[60, 70], n=6, max_runs=None)) == 2
