@@ -48,6 +48,18 @@ pub const FILES: &[(&str, &str)] = &[
         "figure-friction",
         include_str!("../assets/scenes/figure-friction.toml"),
     ),
+    (
+        "figure-tank-positions",
+        include_str!("../assets/scenes/figure-tank-positions.toml"),
+    ),
+    (
+        "figure-tank-levels",
+        include_str!("../assets/scenes/figure-tank-levels.toml"),
+    ),
+    (
+        "figure-linkage-friction",
+        include_str!("../assets/scenes/figure-linkage-friction.toml"),
+    ),
     ("movie-3", include_str!("../assets/scenes/movie-3.toml")),
     ("movie-4", include_str!("../assets/scenes/movie-4.toml")),
     ("movie-5", include_str!("../assets/scenes/movie-5.toml")),

@@ -94,12 +94,15 @@ pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
     checked(scene)
 }
 
-/// `Scene::check`, its error as `key.path: message`.
+/// `Scene::check`, its error as `key.path: message`; then the
+/// apparatus' conversion made afresh (`Scene::with_conversion`), as a
+/// scene file's: a keyword that changes α or the apparatus leaves no
+/// stale `apparatus.conversion` in `Run.record`.
 pub fn checked(scene: Scene) -> Result<Scene> {
     scene
         .check()
         .map_err(|(key, msg)| Error::bad_input(format!("{key}: {msg}")))?;
-    Ok(scene)
+    Ok(scene.with_conversion())
 }
 
 /// The drive keywords (`drive_time`, `flips`, `second_flip`), typed as

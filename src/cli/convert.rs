@@ -3,8 +3,8 @@
 //! key paths are worded here as the flags the user typed.
 
 use super::args::{
-    CameraArg, DriveArgs, FigureFormat, GridArgs, KernelArg, MixedFormat, ModelArgs, MovieFormat,
-    QualityArg, RunArgs, StartArg, StyleArgs, SweepArgs, ViewArg,
+    CameraArg, DriveArgs, FigureFormat, GridArgs, KernelArg, MediumArg, MixedFormat, ModelArgs,
+    MovieFormat, QualityArg, RunArgs, StartArg, StyleArgs, SweepArgs, ViewArg,
 };
 use crate::encode;
 use crate::error::{Error, Result};
@@ -26,6 +26,44 @@ impl ModelArgs {
             || self.gravity.is_some()
             || self.inertia.is_some()
             || self.start.is_some()
+            || self.apparatus.is_some()
+            || self.medium.is_some()
+    }
+
+    /// `--apparatus FILE` and `--medium` onto `scene`: the file's
+    /// `[apparatus]` read as a scene file's (an error says FILE:line:col
+    /// and the key), the medium set on the apparatus the scene then has;
+    /// the conversion made afresh (`Scene::with_conversion`).
+    fn apply_apparatus(&self, scene: &mut Scene) -> Result<()> {
+        if let Some(path) = &self.apparatus {
+            let from = crate::scene::file::load(path)?;
+            let Some(a) = from.apparatus else {
+                return Err(Error::bad_input(format!(
+                    "--apparatus: {} has no [apparatus] table (its keys: docs/experiments.md)",
+                    path.display()
+                )));
+            };
+            scene.apparatus = Some(a);
+        }
+        if let Some(medium) = self.medium {
+            let Some(a) = scene.apparatus.as_mut() else {
+                return Err(Error::bad_input(
+                    "--medium: the scene has no apparatus; give --apparatus FILE (or a built-in \
+                     scene with one: water-tank, linkage-69)",
+                ));
+            };
+            a.medium = match medium {
+                MediumArg::Air => crate::scene::apparatus::Medium::Air,
+                MediumArg::Water => crate::scene::apparatus::Medium::Water,
+            };
+            // The medium's own density, not the one the file gave for
+            // the other medium.
+            a.medium_density = None;
+        }
+        if self.apparatus.is_some() || self.medium.is_some() {
+            *scene = std::mem::take(scene).with_conversion();
+        }
+        Ok(())
     }
 
     fn apply(&self, scene: &mut Scene) {
@@ -98,6 +136,7 @@ pub fn scene_from_flags(
     model.apply(&mut base);
     drive.apply(&mut base);
     run.apply(&mut base)?;
+    model.apply_apparatus(&mut base)?;
     // A window fitted to the built-in's chain follows a changed model
     // unless --t-end sets it (`Scene::window_following`).
     if run.t_end.is_none() {
@@ -117,6 +156,11 @@ pub fn checked(scene: Scene) -> Result<Scene> {
 /// The command-line flag that sets a scene key.
 fn flag_of(key: &str) -> String {
     let last = key.rsplit('.').next().unwrap_or(key);
+    if key.starts_with("apparatus.") {
+        // The apparatus came from --apparatus FILE (checked with its
+        // lines there) or the scene, with --medium set on it.
+        return format!("--apparatus/--medium ({key})");
+    }
     let flag = if key.starts_with("drive.flips") {
         if matches!(last, "duration") {
             "--drive-time"

@@ -177,6 +177,21 @@ impl PinFriction {
         }
     }
 
+    /// The fastest pin, max |Ω − φ̇| over the pins of the links under
+    /// tension (a slack link's pins pass no torque), in 1/τ; 0 with none.
+    /// Where it stays below a few ω_ε every pin is held in Coulomb's sense
+    /// (a held pin of the smoothed law creeps at ω_ε atanh(τ/τ_max)).
+    pub fn fastest_pin(&self, ladder: &Ladder, links: &Links, q: &[f64], v: &[f64]) -> f64 {
+        links
+            .states(ladder, q)
+            .filter(|s| s.tension != 0.0)
+            .map(|s| {
+                let (p0, p1) = self.pins(&s, q, v);
+                p0.omega.abs().max(p1.omega.abs())
+            })
+            .fold(0.0, f64::max)
+    }
+
     /// Power dissipated at every pin, Σ μ_p r_p |T| tanh(ω/ω_ε) ω ≥ 0.
     pub fn dissipation(&self, ladder: &Ladder, links: &Links, q: &[f64], v: &[f64]) -> f64 {
         links

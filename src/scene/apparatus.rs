@@ -33,6 +33,25 @@ use crate::model::media::Terms;
 use crate::sim::{Drive, Scenario};
 use serde::{Deserialize, Serialize};
 
+impl super::Scene {
+    /// This scene with its apparatus' conversion made afresh for its
+    /// `[model] alpha` (a conversion the scene carried is never trusted:
+    /// a data file's, or one left from before a keyword changed the
+    /// apparatus) and its `duration` (s) as the run's window in τ. The one
+    /// step a scene file (`scene::file::parse`) and Python's keywords end
+    /// with; a scene without an apparatus is returned as it is.
+    pub fn with_conversion(mut self) -> Self {
+        if let Some(a) = &self.apparatus {
+            let a = a.converted(self.model.alpha);
+            if let Some(t) = a.conversion.as_ref().and_then(|c| c.t_end) {
+                self.run.t_end = t;
+            }
+            self.apparatus = Some(a);
+        }
+        self
+    }
+}
+
 /// The medium the ladder moves in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]

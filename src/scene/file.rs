@@ -79,16 +79,9 @@ pub fn parse(text: &str, origin: &str, default_name: &str) -> Result<Scene> {
         let span = span_of(doc.get_ref(), &key);
         located(text, origin, span, Some(&key), &msg)
     })?;
-    if let Some(a) = &scene.apparatus {
-        // The conversion, recorded in data files; a `duration` (s) is the
-        // run's window in τ.
-        let a = a.converted(scene.model.alpha);
-        if let Some(t) = a.conversion.as_ref().and_then(|c| c.t_end) {
-            scene.run.t_end = t;
-        }
-        scene.apparatus = Some(a);
-    }
-    Ok(scene)
+    // The conversion, recorded in data files; a `duration` (s) is the
+    // run's window in τ.
+    Ok(scene.with_conversion())
 }
 
 /// The `kind` of an `[output]` table that names none, from its keys:

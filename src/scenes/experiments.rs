@@ -17,7 +17,9 @@ use crate::render::{Picture, Theme, style};
 use crate::scene::apparatus::{Apparatus, Damping, ExperimentFigure, PaperWord};
 use crate::scene::{Method, OutputSpec, Scene, describe};
 use crate::sim::IntegratorKind;
+use crate::sim::{RunOptions, StopView};
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The tank's measured kink speed (cm/s; main text and supplement).
 pub const MEASURED_KINK_CM_S: f64 = 6.0;
@@ -27,8 +29,12 @@ pub const MEASURED_RATIO: f64 = 1.75;
 pub const MOTORS_HZ: [f64; 3] = [0.1, 0.2, 0.4];
 /// The motor speed of the levels' figure (Hz), the middle one.
 pub const LEVELS_MOTOR_HZ: f64 = 0.2;
-/// The pin friction coefficients μ_p of the linkage's figure.
-pub const PIN_FRICTION: [f64; 9] = [0.0, 0.3, 0.5, 0.7, 0.8, 0.9, 1.0, 1.2, 1.5];
+/// The pin friction coefficients μ_p the linkage's figure starts from:
+/// its range, coarse; [`refined_fronts`] adds the points between.
+pub const PIN_FRICTION: [f64; 4] = [0.0, 0.5, 1.0, 1.5];
+/// The linkage's figure halves every interval of μ_p at whose ends a
+/// front differs, down to this width.
+pub const PIN_FRICTION_RESOLUTION: f64 = 0.125;
 /// The RK4 step of every run, in τ (docs/experiments.md: halving it moves
 /// the speeds of a running wave by < 10⁻⁶).
 pub const STEP: f64 = 0.125;
@@ -152,8 +158,8 @@ fn variant(
     Ok(Variant { label, scene: s })
 }
 
-/// A finished run: its variant, arrival times (s), whole-chain and bulk
-/// speeds (cm/s), the block pitch b (cm), and its data.
+/// A finished run: its arrival times (s), bulk speed (cm/s), the block
+/// pitch b (cm), and its data.
 struct Done {
     arrivals_s: Vec<Option<f64>>,
     bulk_cm_s: Option<f64>,
@@ -161,23 +167,95 @@ struct Done {
     data: RunData,
 }
 
-/// Runs every variant, two at a time or more (rayon), in order.
+/// A pin turning slower than this many ω_ε is held: the smoothed law's
+/// creep under a torque within 0.5 % of the Coulomb limit (atanh 0.995 =
+/// 3.0, `model::links`).
+pub const HELD_RATE: f64 = 3.0;
+/// How long (s) every pin must stay held, after the motor has stopped,
+/// for the front to have stopped.
+pub const HELD_FOR_S: f64 = 0.5;
+
+/// When a figure's run has decided what it was run for, and ends there
+/// (its `[apparatus] duration` is the cap): once every block has flipped
+/// (an arrival, once set, never changes); or, with pin friction, once the
+/// motor has stopped and every pin has been held ([`HELD_RATE`]) for
+/// [`HELD_FOR_S`]: the front has stopped, and what would still move it is
+/// the smoothed law's creep, which vanishes as ω_ε → 0 (docs/experiments.md).
+struct Decided {
+    /// The motor's end and the hold, in τ.
+    drive_end: f64,
+    hold: f64,
+    /// The time the pins were first seen held in the current hold (f64
+    /// bits; NaN: not held). The rule is asked in time order by one run.
+    since: AtomicU64,
+}
+
+impl Decided {
+    fn new(drive_end: f64, tau_s: f64) -> Self {
+        Self {
+            drive_end,
+            hold: HELD_FOR_S / tau_s,
+            since: AtomicU64::new(f64::NAN.to_bits()),
+        }
+    }
+
+    fn decided(&self, view: &StopView) -> bool {
+        if view.arrivals.iter().all(Option::is_some) {
+            return true;
+        }
+        let Some(friction) = view.ladder.terms.friction else {
+            return false;
+        };
+        let links = &view.ladder.terms.links;
+        let held = view.t >= self.drive_end
+            && friction.fastest_pin(view.ladder, links, view.q, view.v)
+                < HELD_RATE * friction.omega_eps;
+        if !held {
+            self.since.store(f64::NAN.to_bits(), Ordering::Relaxed);
+            return false;
+        }
+        let since = f64::from_bits(self.since.load(Ordering::Relaxed));
+        if since.is_nan() {
+            self.since.store(view.t.to_bits(), Ordering::Relaxed);
+            return false;
+        }
+        view.t - since >= self.hold
+    }
+}
+
+/// Runs every variant, two at a time or more (rayon), in order, each
+/// until it has decided ([`Decided`]); each run's data says where it
+/// ended (`t_end`).
 fn run_all(variants: &[Variant]) -> Result<Vec<Done>> {
     variants
         .par_iter()
         .map(|v| {
-            let r = run::simulate(&v.scene, &[])?;
-            let a = v.scene.apparatus.as_ref().expect("a variant has one");
-            let c = a.conversion.as_ref().expect("converted");
+            let a = v.scene.apparatus.as_ref().ok_or_else(|| unconverted(v))?;
+            let c = a.conversion.as_ref().ok_or_else(|| unconverted(v))?;
+            let drive_end = v.scene.scenario()?.protocol.drive_end();
+            let decided = Decided::new(drive_end, c.tau_s);
+            let stop = |view: &StopView| decided.decided(view);
+            let options = RunOptions::default()
+                .limits(crate::limits::Limits::active())
+                .stop(&stop);
+            let r = run::simulate_with(&v.scene, &[], &options)?;
             let arrivals = &r.trajectory.arrival_times;
+            let mut data = RunData::new(&v.label, &v.scene, &r);
+            data.t_end = r.trajectory.t_final;
             Ok(Done {
                 arrivals_s: arrivals.iter().map(|t| t.map(|t| t * c.tau_s)).collect(),
                 bulk_cm_s: bulk_speed(arrivals).map(|v| v * c.cm_per_s),
                 pitch_cm: a.b,
-                data: RunData::new(&v.label, &v.scene, &r),
+                data,
             })
         })
         .collect()
+}
+
+/// The error of a variant without its converted apparatus (never made by
+/// [`variant`]).
+fn unconverted(v: &Variant) -> Error {
+    Error::failed(format!("{}: the run has no converted [apparatus]", v.label))
 }
 
 /// The steady wave's speed (blocks per τ) in the lower half of the chain,
@@ -213,15 +291,6 @@ fn speed_text(c: Option<f64>) -> String {
 fn chart_picture(theme: &Theme, spec: &ChartSpec, natural: (u32, u32)) -> Result<Picture> {
     let (w, h) = theme.style.frame(natural);
     Ok(Picture::from(charts::line_chart(theme, spec, w, h)?))
-}
-
-/// Panels stacked, without a title of their own (the frame carries it).
-fn stacked(theme: &Theme, panels: &[Panel]) -> Result<Picture> {
-    let mut layout = Layout::columns(theme, 1);
-    if theme.is_print() {
-        layout.margin = 0;
-    }
-    compose::compose_picture(panels, &layout)
 }
 
 /// Figure 1: the position (n − 1) b of each flipped block (cm) against its
@@ -341,71 +410,114 @@ fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> 
         )));
     }
     let n = LEVELS.len() as f64;
-    let x_axis = || Axis::new("level of model").range(0.5, n + 0.5);
-    let measured = |y: f64, what: String| {
-        Series::line(what, vec![(0.5, y), (n + 0.5, y)], style::series_color(0)).dashed()
+    let x_axis = || Axis::new("level of model (caption)").range(0.5, n + 0.5);
+    let speed = level_chart(
+        x_axis(),
+        Axis::new("c_kink (cm/s)"),
+        (
+            MEASURED_KINK_CM_S,
+            format!("measured {MEASURED_KINK_CM_S:.1} cm/s"),
+        ),
+        &results,
+        |r| r.kink_cm_s,
+    );
+    let ratio = level_chart(
+        x_axis(),
+        Axis::new("c_antikink / c_kink"),
+        (MEASURED_RATIO, format!("measured {MEASURED_RATIO}")),
+        &results,
+        LevelResult::ratio,
+    );
+    // Side by side on a wide print page (paper-wide, slide), where two
+    // charts stacked would be taller than the page allows; stacked on a
+    // column (paper) and at screen.
+    let w_frame = theme.style.frame(LEVEL_CHART);
+    let w = w_frame.0;
+    let side_by_side = theme.is_print() && w >= WIDE_PAGE_PX;
+    let size = if side_by_side {
+        let half = w.saturating_sub(theme.gap as u32) / 2;
+        (half, (half as f32 * SIDE_BY_SIDE_ASPECT) as u32)
+    } else {
+        w_frame
     };
-    let mut speed = ChartSpec::new(x_axis(), Axis::new("c_kink (cm/s)")).series(measured(
-        MEASURED_KINK_CM_S,
-        format!("measured {MEASURED_KINK_CM_S:.1} cm/s"),
-    ));
-    let mut ratio = ChartSpec::new(x_axis(), Axis::new("c_antikink / c_kink")).series(measured(
-        MEASURED_RATIO,
-        format!("measured {MEASURED_RATIO}"),
-    ));
-    let markers = [
-        Marker::Circle,
-        Marker::Square,
-        Marker::Triangle,
-        Marker::Cross,
-        Marker::Plus,
+    let chart = |spec: &ChartSpec| -> Result<Picture> {
+        Ok(Picture::from(charts::line_chart(
+            theme, spec, size.0, size.1,
+        )?))
+    };
+    let panels = [
+        Panel::new(chart(&speed)?).label("(a)"),
+        Panel::new(chart(&ratio)?).label("(b)"),
     ];
-    for (k, r) in results.iter().enumerate() {
-        let x = k as f64 + 1.0;
-        let color = style::series_color(k + 1);
-        let c_text = match (r.kink_cm_s, r.stiff_difference()) {
-            (Some(c), Some(d)) => format!(
-                "{}: {c:.1} cm/s, {:.1}× measured (2k: {:.2} %)",
-                r.name,
-                c / MEASURED_KINK_CM_S,
-                100.0 * d
-            ),
-            (Some(c), None) => format!(
-                "{}: {c:.1} cm/s, {:.1}× measured",
-                r.name,
-                c / MEASURED_KINK_CM_S
-            ),
-            (None, _) => format!("{}: no wave", r.name),
-        };
-        speed = speed.series(
+    let mut layout = Layout::columns(theme, if side_by_side { 2 } else { 1 });
+    if theme.is_print() {
+        layout.margin = 0;
+    }
+    let picture = compose::compose_picture(&panels, &layout)?.fit_page();
+    Ok((picture, data))
+}
+
+/// The natural size of one chart of the levels' figure (design pixels).
+const LEVEL_CHART: (u32, u32) = (820, 420);
+/// The page width (design pixels) from which the levels' two charts go
+/// side by side.
+const WIDE_PAGE_PX: u32 = 600;
+/// Height over width of each of the two charts side by side.
+const SIDE_BY_SIDE_ASPECT: f32 = 0.75;
+
+/// One panel of the levels' figure: `value` of each level (the model's
+/// points; a level without a wave drawn at zero, as its own series)
+/// beside the `measured` value (dashed). Short legend entries: the
+/// caption names the levels and gives their numbers.
+fn level_chart(
+    x: Axis,
+    y: Axis,
+    measured: (f64, String),
+    results: &[LevelResult],
+    value: impl Fn(&LevelResult) -> Option<f64>,
+) -> ChartSpec {
+    let n = results.len() as f64;
+    let top = results.iter().filter_map(&value).fold(measured.0, f64::max);
+    let y = y.range(0.0, 1.15 * top);
+    let (runs, none): (Vec<_>, Vec<_>) = results
+        .iter()
+        .enumerate()
+        .map(|(k, r)| (k as f64 + 1.0, value(r)))
+        .partition(|(_, v)| v.is_some());
+    let mut spec = ChartSpec::new(x, y).series(
+        Series::line(
+            measured.1,
+            vec![(0.5, measured.0), (n + 0.5, measured.0)],
+            style::series_color(0),
+        )
+        .dashed(),
+    );
+    let points = |v: Vec<(f64, Option<f64>)>| -> Vec<(f64, f64)> {
+        v.into_iter().map(|(x, y)| (x, y.unwrap_or(0.0))).collect()
+    };
+    if !runs.is_empty() {
+        spec = spec.series(
             Series::scatter(
-                c_text,
-                vec![(x, r.kink_cm_s.unwrap_or(0.0))],
-                color,
-                markers[k],
-            )
-            .with_width(2.0),
-        );
-        let r_text = match r.ratio() {
-            Some(q) => format!("{}: {q:.2}", r.name),
-            None => format!("{}: no wave", r.name),
-        };
-        ratio = ratio.series(
-            Series::scatter(
-                r_text,
-                vec![(x, r.ratio().unwrap_or(0.0))],
-                color,
-                markers[k],
+                "model",
+                points(runs),
+                style::series_color(1),
+                Marker::Circle,
             )
             .with_width(2.0),
         );
     }
-    let panels = [
-        Panel::new(chart_picture(theme, &speed, (820, 420))?).label("(a)"),
-        Panel::new(chart_picture(theme, &ratio, (820, 420))?).label("(b)"),
-    ];
-    let picture = stacked(theme, &panels)?.fit_page();
-    Ok((picture, data))
+    if !none.is_empty() {
+        spec = spec.series(
+            Series::scatter(
+                "model: no wave (at 0)",
+                points(none),
+                style::series_color(2),
+                Marker::Cross,
+            )
+            .with_width(2.0),
+        );
+    }
+    spec
 }
 
 /// μ_p, and the blocks the kink and the antikink flipped.
@@ -432,10 +544,42 @@ pub fn fronts(scene: &Scene, mu: &[f64]) -> Result<(Vec<Front>, Vec<RunData>)> {
     Ok((rows, done.into_iter().map(|d| d.data).collect()))
 }
 
+/// The fronts at [`PIN_FRICTION`], then at the middle of every interval
+/// whose two ends differ in either front, round after round until those
+/// intervals are [`PIN_FRICTION_RESOLUTION`] wide: the points go where the
+/// fronts change. Rows and data in order of μ_p.
+pub fn refined_fronts(scene: &Scene) -> Result<(Vec<Front>, Vec<RunData>)> {
+    let (rows, data) = fronts(scene, &PIN_FRICTION)?;
+    let pairs = |rows: Vec<Front>, data: Vec<RunData>| {
+        rows.into_iter()
+            .zip(data.chunks(2).map(<[RunData]>::to_vec))
+            .collect::<Vec<_>>()
+    };
+    let mut all = pairs(rows, data);
+    loop {
+        all.sort_by(|x, y| x.0.0.total_cmp(&y.0.0));
+        let middles: Vec<f64> = all
+            .windows(2)
+            .filter(|w| {
+                let ((m0, k0, a0), (m1, k1, a1)) = (w[0].0, w[1].0);
+                (k0, a0) != (k1, a1) && m1 - m0 > 1.5 * PIN_FRICTION_RESOLUTION
+            })
+            .map(|w| 0.5 * (w[0].0.0 + w[1].0.0))
+            .collect();
+        if middles.is_empty() {
+            break;
+        }
+        let (rows, data) = fronts(scene, &middles)?;
+        all.extend(pairs(rows, data));
+    }
+    let (rows, data): (Vec<Front>, Vec<Vec<RunData>>) = all.into_iter().unzip();
+    Ok((rows, data.into_iter().flatten().collect()))
+}
+
 /// Figure 3: how far the linkage's kink and antikink get (blocks flipped,
 /// of N) against the pin friction μ_p.
 fn linkage_friction(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
-    let (rows, data) = fronts(scene, &PIN_FRICTION)?;
+    let (rows, data) = refined_fronts(scene)?;
     let n = scene.model.n as f64;
     let mut spec = ChartSpec::new(
         Axis::new("pin friction μ_p"),

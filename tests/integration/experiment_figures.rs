@@ -3,22 +3,18 @@
 //! the water tank, the "stiff" links' k-and-2k check, and the printed
 //! linkage's antikink that stops where the kink runs.
 
-use jacobs_ladder::scene::Scene;
-use jacobs_ladder::scene::file::parse;
+use jacobs_ladder::catalog;
+use jacobs_ladder::scene::{Kind, Scene};
 use jacobs_ladder::scenes::experiments::{self, MEASURED_KINK_CM_S, MEASURED_RATIO};
 
-/// The scene file `assets/scenes/figure-NAME.toml` (not yet in the
-/// built-in catalogue: `ladder render` it).
-fn figure(name: &str, text: &str) -> Scene {
-    parse(text, &format!("assets/scenes/figure-{name}.toml"), name).unwrap()
+/// The built-in figure `id` (assets/scenes/figure-ID.toml).
+fn figure(id: &str) -> Scene {
+    catalog::find(Kind::Figure, id).unwrap().scene.clone()
 }
 
 #[test]
 fn each_level_of_model_lands_where_the_caption_says() {
-    let scene = figure(
-        "tank-levels",
-        include_str!("../../assets/scenes/figure-tank-levels.toml"),
-    );
+    let scene = figure("tank-levels");
     let caption = scene.caption.clone().unwrap_or_default();
     let (levels, data) = experiments::levels(&scene).unwrap();
     assert_eq!(data.len(), 3 * levels.len(), "every run is in the data");
@@ -68,20 +64,64 @@ fn each_level_of_model_lands_where_the_caption_says() {
 
 #[test]
 fn the_linkage_antikink_stops_where_the_kink_runs() {
-    let scene = figure(
-        "linkage-friction",
-        include_str!("../../assets/scenes/figure-linkage-friction.toml"),
-    );
+    let scene = figure("linkage-friction");
     let n = scene.model.n;
-    let (rows, _) = experiments::fronts(&scene, &[0.0, 0.9]).unwrap();
+    let (rows, _) = experiments::fronts(&scene, &[0.0, 0.875]).unwrap();
     println!("(μ_p, kink, antikink): {rows:?}");
     // Without friction both run the whole chain (the spring model's
-    // answer); at μ_p = 0.9 the kink still does and the antikink stops in
-    // the upper half.
+    // answer); at μ_p = 0.875 the kink still does and the antikink stops
+    // in the upper half.
     assert_eq!(rows[0], (0.0, n, n));
     let (_, kink, antikink) = rows[1];
     assert_eq!(kink, n);
     assert!((1..=n / 2).contains(&antikink), "{antikink}");
+}
+
+/// The fronts where the figure's runs end (every pin held for 0.5 s once
+/// the motor has stopped) do not depend on the friction's smoothing: ω_ε
+/// halved gives the same blocks flipped, at the μ_p where the antikink
+/// stops and the kink runs (0.75, 0.875) and where both stop (1.25). Run
+/// to the full 20 s instead, the smoothed law's creep flips more blocks at
+/// ω_ε than at ω_ε/2 (docs/experiments.md): the held front is the
+/// converged answer.
+#[test]
+fn the_linkage_fronts_do_not_depend_on_the_friction_smoothing() {
+    let scene = figure("linkage-friction");
+    let mu = [0.75, 0.875, 1.25];
+    let (rows, _) = experiments::fronts(&scene, &mu).unwrap();
+    let mut half = scene.clone();
+    if let Some(a) = half.apparatus.as_mut() {
+        a.friction_rate *= 0.5;
+    }
+    let (rows_half, _) = experiments::fronts(&half, &mu).unwrap();
+    println!("ω_ε: {rows:?}\nω_ε/2: {rows_half:?}");
+    assert_eq!(rows, rows_half);
+}
+
+/// The linkage's points of μ_p go where the fronts change: two neighbours
+/// whose fronts differ are at most the resolution apart, and the figure
+/// needs fewer runs than a uniform grid at that resolution.
+#[test]
+fn the_linkage_points_go_where_the_fronts_change() {
+    let scene = figure("linkage-friction");
+    let (rows, data) = experiments::refined_fronts(&scene).unwrap();
+    println!("(μ_p, kink, antikink): {rows:?}");
+    assert_eq!(data.len(), 2 * rows.len());
+    for w in rows.windows(2) {
+        assert!(w[0].0 < w[1].0, "{rows:?}");
+        if (w[0].1, w[0].2) != (w[1].1, w[1].2) {
+            assert!(
+                w[1].0 - w[0].0 <= experiments::PIN_FRICTION_RESOLUTION + 1e-12,
+                "{rows:?}"
+            );
+        }
+    }
+    let uniform = 1.5 / experiments::PIN_FRICTION_RESOLUTION + 1.0;
+    assert!((rows.len() as f64) < uniform, "{} points", rows.len());
+    // Each run ended where it decided, before the 20 s cap.
+    for d in &data {
+        assert!(d.t_end < 0.6 * 19809.0, "{}: {}", d.label, d.t_end);
+    }
 }
 
 #[test]

@@ -820,3 +820,93 @@ fn numbers() {
         }
     }
 }
+
+/// `--apparatus FILE` and `--medium` bring the apparatus to a run from the
+/// command line: the file's `[apparatus]` converted as a scene file's (the
+/// run in the file's seconds), a bad value named with FILE:line:col and
+/// its key, `--medium` without an apparatus refused naming the flag; each
+/// refusal one line on stderr and exit 2.
+#[test]
+fn the_apparatus_reaches_a_run_from_the_command_line() {
+    use crate::common::ladder_cli;
+    let dir = std::env::temp_dir().join(format!("ladder-apparatus-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = dir.join("tank.toml");
+    std::fs::write(
+        &good,
+        "[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\ndensity = 1.2\nmedium = \"water\"\n\
+         medium_density = 1.0\nbuoyancy = true\ndrag = true\nmotor = 0.4\nduration = 2.0\n",
+    )
+    .unwrap();
+    let bad = dir.join("bad.toml");
+    std::fs::write(
+        &bad,
+        "[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\ndensity = 1.2\nmedium = \"water\"\n\
+         drag_coefficient = -1.0\n",
+    )
+    .unwrap();
+    let path = |p: &std::path::Path| p.to_str().unwrap().to_string();
+    let run = |extra: &[&str]| {
+        let mut args = vec![
+            "simulate",
+            "--alpha",
+            "86",
+            "--n",
+            "6",
+            "--integrator",
+            "rk4",
+        ];
+        args.extend_from_slice(extra);
+        ladder_cli(&args)
+    };
+    // The run is the file's 2 s: τ = 2.47 ms for the buoyant plates, so
+    // t_end = 2 s / τ ≈ 809 τ (the --json summary's t_end).
+    let out = run(&["--dt", "0.125", "--apparatus", &path(&good), "--json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let t_end = v["t_end"].as_f64().unwrap();
+    let tau = (5.0f64 * 2e-4 / ((1.0 - 1.0 / 1.2) * 981.0)).sqrt();
+    assert!((t_end - 2.0 / tau).abs() < 1e-6 * t_end, "t_end {t_end} τ");
+    // In air the same plates have no buoyancy worth naming: g* ≈ g, so τ
+    // is shorter and the same 2 s is more τ.
+    let out = run(&[
+        "--dt",
+        "0.125",
+        "--apparatus",
+        &path(&good),
+        "--medium",
+        "air",
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(v["t_end"].as_f64().unwrap() > 2.0 * t_end, "{}", v["t_end"]);
+    // A bad value: FILE:line:col: apparatus.KEY, exit 2, one line.
+    let out = run(&["--apparatus", &path(&bad)]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("bad.toml:7:") && err.contains("apparatus.drag_coefficient"),
+        "{err}"
+    );
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    // --medium needs an apparatus; a missing file is named.
+    let out = run(&["--medium", "water"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("--medium") && err.contains("--apparatus"),
+        "{err}"
+    );
+    let out = run(&["--apparatus", &path(&dir.join("none.toml"))]);
+    assert_eq!(out.status.code(), Some(2));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -210,6 +210,22 @@ pub struct ModelArgs {
     /// relaxed (at rest hanging under gravity, block 1 clamped) [default: ground]
     #[arg(long, value_name = "START")]
     pub start: Option<StartArg>,
+    /// The ladder as built, in cm, g and s (SPEC section 12): a TOML file
+    /// whose [apparatus] table has the keys of a scene file's
+    /// (docs/experiments.md); it replaces the scene's apparatus
+    #[arg(long, value_name = "FILE")]
+    pub apparatus: Option<PathBuf>,
+    /// The medium of the scene's apparatus (from --apparatus or the
+    /// built-in scene): air or water, each at its own density
+    #[arg(long, value_name = "MEDIUM")]
+    pub medium: Option<MediumArg>,
+}
+
+/// `--medium`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum MediumArg {
+    Air,
+    Water,
 }
 
 /// `--start`.

@@ -1,0 +1,99 @@
+"""The experiments' apparatus from Python (SPEC section 12,
+docs/experiments.md): the `[apparatus]` keys of a scene file reach
+``Scene(apparatus=...)`` and ``simulate(..., apparatus=...)``; the
+conversion is made afresh after every keyword change (a stale one stayed
+in ``Run.record``); a bad value is a ValueError naming its key."""
+
+import math
+
+import pytest
+
+import jacobs_ladder as jl
+
+# The tank's plates (5 cm, 3 mm, 1.2 g/cm³) in water of 1.0 g/cm³, buoyant.
+TANK = {
+    "s": 5.0,
+    "b": 7.5,
+    "thickness": 0.3,
+    "density": 1.2,
+    "medium": "water",
+    "medium_density": 1.0,
+    "stiffness": "stiff",
+    "buoyancy": True,
+    "drag": True,
+    "motor": 0.4,
+    "duration": 1.0,
+}
+
+
+def tau_s(b_cm=7.5):
+    """τ = √(m/k) (s) for "stiff" links: k = m g*/(s G), G = 2e-4, g* = g/6."""
+    m = 1.2 * 5.0 * 5.0 * 0.3
+    g_star = (1.0 - 1.0 / 1.2) * 981.0
+    k = m * g_star / (5.0 * 2e-4)
+    return math.sqrt(m / k)
+
+
+def conversion(record):
+    """The conversion in a run's record."""
+    return record["scene"]["apparatus"]["conversion"]
+
+
+def scene_conversion(scene):
+    """The conversion a scene carries."""
+    return scene.to_dict()["apparatus"]["conversion"]
+
+
+def test_simulate_takes_an_apparatus_and_records_its_conversion():
+    run = jl.simulate(alpha=86, n=4, integrator="rk4", dt=0.125, apparatus=TANK)
+    c = conversion(run.record)
+    assert c["tau_s"] == pytest.approx(tau_s(), rel=1e-12)
+    assert c["b"] == pytest.approx(7.5 / 5.0, rel=1e-15)
+    assert c["cm_per_s"] == pytest.approx(7.5 / tau_s(), rel=1e-12)
+    # duration (s) is the window in τ.
+    assert run.record["scene"]["run"]["t_end"] == pytest.approx(1.0 / tau_s(), rel=1e-12)
+    assert run.t[-1] <= 1.0 / tau_s() + 1e-9
+
+
+def test_a_keyword_change_converts_the_apparatus_afresh():
+    scene = jl.Scene(alpha=86, n=4, integrator="rk4", dt=0.125, apparatus=TANK)
+    before = scene_conversion(scene)
+    # b changes the pitch (cm/s per block/τ) and the model's b/s; the
+    # conversion the scene carried must not survive into the record.
+    wider = scene.replace(**{"apparatus.b": 9.0})
+    after = scene_conversion(wider)
+    assert after["b"] == pytest.approx(9.0 / 5.0, rel=1e-15)
+    assert after["cm_per_s"] == pytest.approx(9.0 / tau_s(), rel=1e-12)
+    assert before["b"] == pytest.approx(1.5, rel=1e-15)
+    run = wider.simulate()
+    assert conversion(run.record) == after
+    # The motor's drive time follows α: 2|α| / (2π f) in τ.
+    turned = scene.replace(alpha=80)
+    t_d = 2 * math.radians(80) / (2 * math.pi * 0.4) / tau_s()
+    assert scene_conversion(turned)["drive_time"] == pytest.approx(t_d, rel=1e-12)
+
+
+def test_the_built_in_tank_takes_keywords():
+    tank = jl.Scene.builtin("water-tank")
+    assert scene_conversion(tank)["tau_s"] == pytest.approx(tau_s(), rel=1e-12)
+    heavier = tank.replace(**{"apparatus.density": 1.5})
+    c = scene_conversion(heavier)
+    # m = 1.5 × 7.5 g/cm²·cm; "stiff" keeps G, so τ = √(s G / g*) changes
+    # only through g* = (1 − 1/1.5) g.
+    g_star = (1.0 - 1.0 / 1.5) * 981.0
+    assert c["tau_s"] == pytest.approx(math.sqrt(5.0 * 2e-4 / g_star), rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "key, value, words",
+    [
+        ("apparatus.drag_coefficient", -1.0, "apparatus.drag_coefficient"),
+        ("apparatus.density", 0.5, "apparatus.buoyancy"),
+        ("apparatus.medium", "oil", "apparatus.medium"),
+        ("apparatus.motor", 0.0, "apparatus.motor"),
+    ],
+)
+def test_bad_apparatus_values_name_their_key(key, value, words):
+    scene = jl.Scene(alpha=86, n=4, apparatus=TANK)
+    with pytest.raises(ValueError, match=words.replace(".", r"\.")):
+        scene.replace(**{key: value})
