@@ -235,9 +235,7 @@ fn run_all(variants: &[Variant]) -> Result<Vec<Done>> {
             let drive_end = v.scene.scenario()?.protocol.drive_end();
             let decided = Decided::new(drive_end, c.tau_s);
             let stop = |view: &StopView| decided.decided(view);
-            let options = RunOptions::default()
-                .limits(crate::limits::Limits::active())
-                .stop(&stop);
+            let options = RunOptions::default().limits(v.scene.limits).stop(&stop);
             let r = run::simulate_with(&v.scene, &[], &options)?;
             let arrivals = &r.trajectory.arrival_times;
             let mut data = RunData::new(&v.label, &v.scene, &r);
