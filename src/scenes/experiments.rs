@@ -353,9 +353,7 @@ impl LevelResult {
     }
 }
 
-/// The largest relative difference between the kink's speeds at k and 2k
-/// for which "stiff" links are stiff (docs/experiments.md).
-pub const STIFF_TOLERANCE: f64 = 0.03;
+pub use crate::scenes::stiff::STIFF_TOLERANCE;
 
 /// Every level of [`LEVELS`] run on `scene`'s apparatus at
 /// [`LEVELS_MOTOR_HZ`]: kink, antikink, and kink at 2k.

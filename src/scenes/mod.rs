@@ -11,6 +11,7 @@ pub mod experiments;
 pub mod kymograph;
 pub mod options;
 pub mod run;
+pub mod stiff;
 pub mod theory;
 pub mod walls;
 

@@ -910,3 +910,70 @@ fn the_apparatus_reaches_a_run_from_the_command_line() {
     assert_eq!(out.status.code(), Some(2));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `ladder simulate` with "stiff" links shows they are stiff, as `auto`
+/// shows its step: the same run with 2k (over the same seconds) moves the
+/// wave's speed by less than the 3 % allowed, said on stderr and in the
+/// JSON; links given in N/m get no such line. The JSON's b is the
+/// apparatus's (7.5 cm / 5 cm = 1.5), not `[model]`'s 1.3.
+#[test]
+fn stiff_links_are_shown_stiff_beside_the_run() {
+    use crate::common::ladder_cli;
+    let dir = std::env::temp_dir().join(format!("ladder-stiff-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let tank = "[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\ndensity = 1.2\n\
+                medium = \"water\"\nmedium_density = 1.0\nbuoyancy = true\nadded_mass = true\n\
+                drag = true\nmotor = 0.2\nduration = 20.0\n";
+    let stiff = dir.join("stiff.toml");
+    std::fs::write(&stiff, format!("{tank}stiffness = \"stiff\"\n")).unwrap();
+    let given = dir.join("given.toml");
+    std::fs::write(&given, format!("{tank}stiffness = 500.0\n")).unwrap();
+    let run = |file: &std::path::Path| {
+        ladder_cli(&[
+            "simulate",
+            "--alpha",
+            "86",
+            "--n",
+            "11",
+            "--integrator",
+            "rk4",
+            "--dt",
+            "0.125",
+            "--apparatus",
+            file.to_str().unwrap(),
+            "--json",
+        ])
+    };
+    let out = run(&stiff);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!((v["b"].as_f64().unwrap() - 1.5).abs() < 1e-12, "{}", v["b"]);
+    let check = &v["stiff_links"];
+    let (k, k2) = (
+        check["speed_k"].as_f64().expect("a wave at k"),
+        check["speed_2k"].as_f64().expect("a wave at 2k"),
+    );
+    let change = check["change"].as_f64().unwrap();
+    assert!((change - (k2 / k - 1.0).abs()).abs() < 1e-12);
+    assert!(change < 0.03, "k and 2k differ by {change}");
+    assert!(
+        err.contains("\"stiff\" links: with 2k the wave's speed moves by")
+            && err.contains("within 3 %"),
+        "{err}"
+    );
+    // The speed at k, in blocks per second, is the run's own (blocks per
+    // τ over τ in seconds).
+    let tau = v["scene"]["apparatus"]["conversion"]["tau_s"]
+        .as_f64()
+        .unwrap();
+    let own = v["speed"].as_f64().unwrap() / tau;
+    assert!((own - k).abs() < 1e-9 * k, "{own} against {k}");
+    let out = run(&given);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(v.get("stiff_links").is_none(), "{v}");
+    assert!(!err.contains("stiff"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -56,6 +56,10 @@ pub struct SimulateReport<'a> {
     pub final_theta_deg: Vec<f64>,
     /// Every wave of the run and block N's fate (SPEC section 9).
     pub waves: crate::sim::waves::Waves,
+    /// A scene with "stiff" links: how far the wave moves with 2k
+    /// (`scenes::stiff`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stiff_links: Option<scenes::stiff::StiffCheck>,
 }
 
 pub(crate) fn simulate(args: &SimulateArgs, call: &Call<'_>) -> Result<()> {
@@ -114,7 +118,16 @@ pub(crate) fn simulate(args: &SimulateArgs, call: &Call<'_>) -> Result<()> {
     if let Some(path) = &args.csv {
         output::write_atomic_with(path, |f| write_csv(traj, &mut std::io::BufWriter::new(f)))?;
     }
-    let params = scene.model.params()?;
+    // The parameters run: the apparatus's, converted, where it has one.
+    let params = scene.scenario()?.ladder.params;
+    // "Stiff" links shown to be stiff, as `auto` shows its step.
+    let stiff_options = crate::sim::RunOptions::default()
+        .stepping(stepping)
+        .limits(scene.limits);
+    let stiff_links = scenes::stiff::check(&scene, &result, &stiff_options)?;
+    if let Some(check) = &stiff_links {
+        output::eprint(&format!("ladder: {}\n", check.describe()))?;
+    }
     if let Some(path) = &args.npz {
         let ladder = crate::model::Ladder::new(params);
         let metadata = scenes::data::NpzMetadata {
@@ -151,6 +164,7 @@ pub(crate) fn simulate(args: &SimulateArgs, call: &Call<'_>) -> Result<()> {
         blocks_flipped: crate::sweep::outcome::blocks_flipped(&traj.arrival_times),
         final_theta_deg: traj.final_theta_deg(),
         waves: traj.waves.clone(),
+        stiff_links,
     };
     if let Some(path) = &sidecar {
         // The CSV's provenance (docs/formats.md): the report without its
