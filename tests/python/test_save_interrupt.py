@@ -85,6 +85,7 @@ def test_ctrl_c_stops_a_save_within_0_2_s_and_writes_nothing_after(tmp_path, wai
     assert line.startswith("interrupted|"), f"{line!r} {p.stderr.read()}"
     _, raised, at_raise, later = line.split("|")
     latency = float(raised) - sent
+    print(f"save stopped {latency:.3f} s after SIGINT; files left: {later}")
     assert latency < 0.2, f"the save stopped {latency:.3f} s after SIGINT"
     assert at_raise == later, f"written after the interrupt: {at_raise} -> {later}"
     # No movie (it was not finished) and no temporary file left.
