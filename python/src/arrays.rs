@@ -95,7 +95,10 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
                 freed = 0;
             }
         }
-        give_back();
+        // (A small run's rows are not worth the walk over the arenas.)
+        if freed >= 1 << 20 {
+            give_back();
+        }
         Ok(out)
     };
     let [x, y, theta] = split(states)?;
