@@ -283,13 +283,18 @@ const SMALL_SAMPLES: u64 = 16 << 20;
 /// `ulimit -v`) gets a failed run with a hint instead of an abort when a
 /// sample is stored halfway through (issue 32).
 pub fn ensure_memory(samples: usize, n: usize) -> Result<()> {
+    reserve(samples, n, WORKING_BYTES)
+}
+
+/// [`ensure_memory`] with `beside` bytes of working memory.
+fn reserve(samples: usize, n: usize, beside: u64) -> Result<()> {
     let needed = (samples as u64)
         .saturating_mul(n as u64)
         .saturating_mul(SAMPLE_BYTES_PER_BLOCK);
     if needed < SMALL_SAMPLES {
         return Ok(());
     }
-    let total = needed.saturating_add(WORKING_BYTES);
+    let total = needed.saturating_add(beside);
     let refused = || {
         Error::failed(format!(
             "not enough memory for the run: {} samples × N = {n} take {} MB, which this process \
@@ -316,10 +321,18 @@ pub fn run(
     config: &IntegratorConfig,
     options: &RunOptions,
 ) -> Result<Trajectory> {
-    ensure_memory(sample_times.len(), scenario.ladder.n())?;
     let alpha = scenario.ladder.params.alpha;
+    let (count, n) = (sample_times.len(), scenario.ladder.n());
+    let mut asked = false;
     let mut kept = Trajectory::unsampled(State::at_rest(Vec::new()), 0.0, Vec::new(), 0, 0);
     let mut traj = run_streaming(scenario, sample_times, config, options, &mut |sample| {
+        // The samples' memory, asked for at the first one: after every
+        // check of the run (its caps refuse first), with the run's own
+        // buffers already allocated.
+        if !asked {
+            asked = true;
+            reserve(count, n, 0)?;
+        }
         kept.push(sample, alpha);
         Ok(())
     })?;
