@@ -139,7 +139,9 @@ def test_a_run_past_the_address_space_limit_raises_and_does_not_abort(extra_mb, 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="ulimit -v is a shell's")
 def test_the_cli_past_the_address_space_limit_exits_1_with_a_hint(tmp_path):
     # 1 GB of address space; the run keeps 401 samples of N = 100000 (1.9 GB).
-    cmd = f"ulimit -v 1000000; exec {ladder_bin()} simulate --n 100000 --npz {tmp_path}/x.npz"
+    # (t_end 400 τ every 1 τ: within the cap on steps × N.)
+    run = f"simulate --n 100000 --t-end 400 --sample-every 1 --npz {tmp_path}/x.npz"
+    cmd = f"ulimit -v 1000000; exec {ladder_bin()} {run}"
     start = time.perf_counter()
     p = subprocess.run(["bash", "-c", cmd], capture_output=True, text=True, timeout=120)
     assert p.returncode == 1, f"exit {p.returncode}: {p.stderr}"
