@@ -453,9 +453,11 @@ class Scene:
         scene = self if style is None else self.replace(style=style)
         files = scene._s.render(self._args(format, frames, size, fps, scale))
         files = [(n, b) for n, b in files if data or not n.endswith(".json")]
-        if len(files) == 1:
-            return Image(files[0][1], files[0][0])
-        return Files((n, Image(b, n)) for n, b in files)
+        args = self._args("png", frames, size, fps, scale)
+        images = [_shown(Image(b, n), scene, args) for n, b in files]
+        if len(images) == 1:
+            return images[0]
+        return Files((img.name, img) for img in images)
 
     def save(
         self,
@@ -498,6 +500,21 @@ _MIME = {
 }
 
 
+def _shown(image: "Image", scene: "Scene", png_args: Dict[str, Any]) -> "Image":
+    """A PDF is displayed with a PNG of the same figure beside it (what
+    a browser shows inline; the PDF is kept for export): the engine renders
+    that PNG when the PDF is first displayed, never before."""
+    if image.format == "pdf":
+        stem = image.name[: -len(".pdf")]
+
+        def preview() -> Optional[bytes]:
+            files = scene._s.render(png_args)
+            return next((b for n, b in files if n == stem + ".png"), None)
+
+        image._preview = preview
+    return image
+
+
 class Image(bytes):
     """The bytes of one rendered file, which Jupyter shows inline (PNG,
     SVG, GIF, MP4; a PDF as an embedded object). ``name`` is its file name."""
@@ -516,7 +533,32 @@ class Image(bytes):
     def format(self) -> str:
         return self.name.rsplit(".", 1)[-1].lower() if "." in self.name else ""
 
+    _preview = None
+
+    def _preview_png(self) -> Optional[bytes]:
+        """The PNG shown beside a PDF (rendered once, on first display)."""
+        make = self._preview
+        if make is None:
+            return None
+        if callable(make):
+            self._preview = make()
+        return self._preview
+
+    def _repr_mimebundle_(self, include=None, exclude=None):
+        """A PDF as itself and as a PNG beside it: browsers show the PNG
+        (a PDF alone is a blank box in Chromium), exports take the PDF."""
+        if self.format != "pdf":
+            return None
+        bundle = {"application/pdf": bytes(self), "text/plain": repr(self)}
+        png = self._preview_png()
+        if png is not None:
+            bundle["image/png"] = png
+            bundle["text/html"] = self._repr_html_()
+        return bundle
+
     def _repr_png_(self):
+        if self.format == "pdf":
+            return self._preview_png()
         return bytes(self) if self.format == "png" else None
 
     def _repr_svg_(self):
@@ -533,6 +575,12 @@ class Image(bytes):
         if fmt == "mp4":
             return f'<video controls loop autoplay muted src="data:{mime};base64,{b64}"></video>'
         if fmt == "pdf":
+            png = self._preview_png()
+            if png is not None:
+                import html
+
+                png64 = base64.b64encode(png).decode("ascii")
+                return f'<img alt="{html.escape(self.name)}" src="data:image/png;base64,{png64}">'
             return f'<embed type="{mime}" width="100%" height="480" src="data:{mime};base64,{b64}">'
         import html
 

@@ -13,6 +13,34 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+/// Bytes of rows freed between two [`give_back`]s.
+const RETURN_EVERY: usize = 32 << 20;
+
+/// Gives the memory of the rows freed so far back to the system. glibc
+/// keeps freed blocks below its mmap threshold in its arenas, and raises
+/// that threshold (up to 32 MB) each time a larger mapped block is freed:
+/// once `auto`'s two runs have freed their buffers, a run's rows come from
+/// the arenas, and without this their memory stayed resident beside the
+/// columns made from them (Python's peak at twice the CLI's, issue 32).
+/// `malloc_trim` returns the free pages of every arena (madvise); the
+/// numbers are untouched.
+fn give_back() {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    // SAFETY: malloc_trim only releases free memory of glibc's arenas.
+    unsafe {
+        libc::malloc_trim(0);
+    }
+}
+
+/// The failed run of columns that cannot be allocated.
+fn out_of_memory(samples: usize, n: usize) -> Error {
+    Error::failed(format!(
+        "not enough memory to hand the run to numpy: {samples} samples × N = {n}; hint: keep \
+         fewer samples (a larger sample_every or fewer samples), fewer blocks, or give the \
+         process more memory"
+    ))
+}
+
 /// A run's numbers, made without the GIL.
 pub struct RunArrays {
     /// Blocks N.
@@ -46,18 +74,35 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
     let kink = std::mem::take(&mut traj.kink_position);
     // Layout of q and v: [X, Y, θ] per block (`model::ladder`). Each
     // sample's row is freed as soon as it is split, so the peak is the
-    // trajectory's size once, not twice (issue 32).
-    let split = |rows: Vec<Vec<f64>>| -> [Vec<f64>; 3] {
-        let mut out: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(rows.len() * n));
+    // trajectory's size once, not twice (issue 32): the columns are
+    // reserved (address space, no page touched) and fill as the rows go.
+    let split = |rows: Vec<Vec<f64>>| -> Result<[Vec<f64>; 3]> {
+        let mut out: [Vec<f64>; 3] = Default::default();
+        for column in &mut out {
+            column
+                .try_reserve_exact(rows.len().saturating_mul(n))
+                .map_err(|_| out_of_memory(rows.len(), n))?;
+        }
+        let mut freed = 0usize;
         for row in rows {
             for (k, column) in out.iter_mut().enumerate() {
                 column.extend((0..n).map(|i| row[3 * i + k]));
             }
+            freed += std::mem::size_of_val(row.as_slice());
+            drop(row);
+            if freed >= RETURN_EVERY {
+                give_back();
+                freed = 0;
+            }
         }
-        out
+        // (A small run's rows are not worth the walk over the arenas.)
+        if freed >= 1 << 20 {
+            give_back();
+        }
+        Ok(out)
     };
-    let [x, y, theta] = split(states);
-    let [vx, vy, omega] = split(velocities);
+    let [x, y, theta] = split(states)?;
+    let [vx, vy, omega] = split(velocities)?;
     let arrival: Vec<f64> = traj
         .arrival_times
         .iter()

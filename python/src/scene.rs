@@ -283,9 +283,16 @@ impl PyScene {
             return Err(convert::bad("dir", "must name a folder, got \"\""));
         }
         let scene = self.scene.clone();
-        work::run(py, move |_| {
+        work::run(py, move |stop| {
             let (opts, outputs) = args.outputs(&scene)?;
-            let progress = front::render::Progress::quiet();
+            // Ctrl-C stops the drawing as it stops a sweep (`work::Stop`):
+            // the work unwinds at the next frame, each file's temporary
+            // removed as it unwinds, so nothing is written after it.
+            let frame = || stop.check(0.0);
+            let progress = front::render::Progress {
+                frame: &frame,
+                ..front::render::Progress::quiet()
+            };
             let files = front::render::into_folder(
                 std::slice::from_ref(&scene),
                 &dir,

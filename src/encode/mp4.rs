@@ -31,6 +31,33 @@ pub const KEY_FRAME_SECONDS: f64 = 5.0;
 /// Frames that may wait for the encoder: bounds the memory held.
 const QUEUE: usize = 8;
 
+/// OpenH264's `ENCODER_OPTION_TRACE_LEVEL` (`codec_app_def.h`; the
+/// `openh264` crate uses it but does not export it).
+const ENCODER_OPTION_TRACE_LEVEL: std::os::raw::c_int = 25;
+/// OpenH264's `WELS_LOG_QUIET`: no log line at all.
+const WELS_LOG_QUIET: u32 = 0;
+
+/// Silences OpenH264's log before the encoder is initialised. The crate
+/// sets the trace level (quiet) only after `InitializeExt`, which checks
+/// the parameters and prints a warning on stderr at the default level
+/// ("[OpenH264] this = 0x…, Warning: bEnableFrameSkip = 0, bitrate can't
+/// be controlled …", true and harmless here: the quantiser is fixed).
+/// OpenH264 takes this one option before initialisation
+/// (`CWelsH264SVCEncoder::SetOption`); it sets what is logged, nothing of
+/// what is encoded, so the bytes are the same.
+fn quiet(encoder: &mut Encoder) {
+    let mut level = WELS_LOG_QUIET;
+    // SAFETY: the encoder is created (its pointer valid until it drops);
+    // the option reads one `uint32_t` through the pointer, during the
+    // call, from a local that outlives it. The trace level is no
+    // parameter the encoder relies on (the crate sets it itself).
+    unsafe {
+        let _ = encoder
+            .raw_api()
+            .set_option(ENCODER_OPTION_TRACE_LEVEL, (&raw mut level).cast());
+    }
+}
+
 /// Streaming MP4 encoder: push frames, then `finish` for the bytes.
 pub struct Mp4Writer {
     width: u32,
@@ -96,8 +123,9 @@ impl Mp4Writer {
                 (KEY_FRAME_SECONDS * fps).round().max(1.0) as u32,
             ))
             .vui(VuiConfig::bt709());
-        let encoder = Encoder::with_api_config(OpenH264API::from_source(), config)
+        let mut encoder = Encoder::with_api_config(OpenH264API::from_source(), config)
             .map_err(|e| Error::failed(format!("the H.264 encoder did not start: {e}")))?;
+        quiet(&mut encoder);
         let track = Mp4Track {
             width,
             height,

@@ -60,6 +60,9 @@ pub fn simulate_verified(
     };
     let limits = &options.limits;
     let budget = worst_case(scenario, sample_times.len(), omega_max, limits)?;
+    // The samples' memory asked for once, before any run: a run refused
+    // for it inside the loop would pass for a diverged one.
+    super::ensure_memory(sample_times.len(), scenario.ladder.n())?;
     let mut dt = budget.dt;
     let mut total = 0;
     // The first pair of runs is independent: both cores take one each.
@@ -67,8 +70,11 @@ pub fn simulate_verified(
         || simulate(scenario, &[], &scheme(scenario, dt)),
         || simulate(scenario, sample_times, &scheme(scenario, 0.5 * dt)),
     );
+    // Of the coarser run only its arrival times are compared: its samples
+    // (none for the first, which records none) are dropped at once, so a
+    // halving never holds two sampled trajectories (issue 32).
     let mut coarse = match first_coarse {
-        Ok(t) => Some(t),
+        Ok(t) => Some(Coarse::of(t)),
         Err(e) if e.is_failed_run() => None,
         Err(e) => return Err(e),
     };
@@ -111,7 +117,7 @@ pub fn simulate_verified(
             }
             last_difference = difference;
         }
-        coarse = Some(fine);
+        coarse = Some(Coarse::of(fine));
         dt *= 0.5;
     }
     let what = if last_difference.is_finite() {
@@ -138,6 +144,22 @@ pub fn simulate_verified(
          hint: raise the tolerance, or name an integrator and step",
         num(dt)
     )))
+}
+
+/// What `auto` keeps of the coarser run of a pair: what the comparison
+/// needs, not its samples.
+struct Coarse {
+    arrival_times: Vec<Option<f64>>,
+    force_evals: u64,
+}
+
+impl Coarse {
+    fn of(run: Trajectory) -> Self {
+        Self {
+            arrival_times: run.arrival_times,
+            force_evals: run.force_evals,
+        }
+    }
 }
 
 /// What `auto` may spend on `scenario`, decided before any run: its first

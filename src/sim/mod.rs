@@ -267,6 +267,49 @@ pub fn check_cost(
     Ok(cost)
 }
 
+/// Bytes a run kept per block and sample: its positions and velocities
+/// (3 + 3 numbers of 8 bytes).
+pub const SAMPLE_BYTES_PER_BLOCK: u64 = 48;
+/// What a run needs beside its samples (its state, forces, buffers):
+/// counted with them when the samples' memory is asked for.
+const WORKING_BYTES: u64 = 64 << 20;
+/// Samples of fewer bytes than this are not asked for ahead.
+const SMALL_SAMPLES: u64 = 16 << 20;
+
+/// Refuses, before the run, samples that the process could not hold:
+/// their bytes (and the run's working memory) are asked of the allocator
+/// as one reservation (address space only: no page is touched) and given
+/// back at once. So a process under an address-space limit (RLIMIT_AS,
+/// `ulimit -v`) gets a failed run with a hint instead of an abort when a
+/// sample is stored halfway through (issue 32).
+pub fn ensure_memory(samples: usize, n: usize) -> Result<()> {
+    reserve(samples, n, WORKING_BYTES)
+}
+
+/// [`ensure_memory`] with `beside` bytes of working memory.
+fn reserve(samples: usize, n: usize, beside: u64) -> Result<()> {
+    let needed = (samples as u64)
+        .saturating_mul(n as u64)
+        .saturating_mul(SAMPLE_BYTES_PER_BLOCK);
+    if needed < SMALL_SAMPLES {
+        return Ok(());
+    }
+    let total = needed.saturating_add(beside);
+    let refused = || {
+        Error::failed(format!(
+            "not enough memory for the run: {} samples × N = {n} take {} MB, which this process \
+             cannot allocate; hint: keep fewer samples (a larger sample interval or fewer sample \
+             times), fewer blocks, or give the process more memory (ulimit -v)",
+            samples,
+            num(needed as f64 / 1e6)
+        ))
+    };
+    let bytes = usize::try_from(total).map_err(|_| refused())?;
+    let mut probe: Vec<u8> = Vec::new();
+    probe.try_reserve_exact(bytes).map_err(|_| refused())?;
+    Ok(())
+}
+
 /// Integrates `scenario` as `options` say, keeping the state at
 /// `sample_times` (each in [0, t_end]; sorted and deduplicated) in the
 /// returned trajectory: [`run_streaming`] with a sink that keeps every
@@ -279,8 +322,17 @@ pub fn run(
     options: &RunOptions,
 ) -> Result<Trajectory> {
     let alpha = scenario.ladder.params.alpha;
+    let (count, n) = (sample_times.len(), scenario.ladder.n());
+    let mut asked = false;
     let mut kept = Trajectory::unsampled(State::at_rest(Vec::new()), 0.0, Vec::new(), 0, 0);
     let mut traj = run_streaming(scenario, sample_times, config, options, &mut |sample| {
+        // The samples' memory, asked for at the first one: after every
+        // check of the run (its caps refuse first), with the run's own
+        // buffers already allocated.
+        if !asked {
+            asked = true;
+            reserve(count, n, 0)?;
+        }
         kept.push(sample, alpha);
         Ok(())
     })?;
