@@ -334,6 +334,12 @@ pub fn simulate_scene<'py>(
             Some(t) => t,
             None => sample_times(&scene, sample_every.unwrap_or(DEFAULT_SAMPLE_EVERY))?,
         };
+        // Python holds a run twice over for a moment (the run's rows, and
+        // the numpy columns made from them; the rows' address space is not
+        // given back): both asked for before the run, after its caps, so
+        // that an address-space limit fails the call before the work.
+        scenes::run::check_cost(&scene, times.len())?;
+        jacobs_ladder::sim::ensure_memory(times.len().saturating_mul(2), scene.model.n)?;
         let progress = |t: f64| stop.check(t);
         let options = jacobs_ladder::sim::RunOptions::default()
             .limits(scene.limits)
