@@ -286,11 +286,14 @@ impl PyScene {
         work::run(py, move |stop| {
             let (opts, outputs) = args.outputs(&scene)?;
             // Ctrl-C stops the drawing as it stops a sweep (`work::Stop`):
-            // the work unwinds at the next frame, each file's temporary
-            // removed as it unwinds, so nothing is written after it.
+            // the work unwinds at the next frame of a movie, or before a
+            // figure's next file (or its file's rename), each file's
+            // temporary removed as it unwinds, so nothing is written after
+            // it.
             let frame = || stop.check(0.0);
             let progress = front::render::Progress {
                 frame: &frame,
+                file: &frame,
                 ..front::render::Progress::quiet()
             };
             let files = front::render::into_folder(

@@ -6,8 +6,10 @@
 //! SIGINT handler on the main thread). On KeyboardInterrupt the call
 //! returns at once with that exception and raises a flag: a simulation
 //! reads it in the run loop's progress hook (every 5 τ of simulated time)
-//! and unwinds, so its thread ends too; work without such a hook (drawing,
-//! encoding) finishes in the background and its result is dropped. A
+//! and unwinds, so its thread ends too; a save unwinds at a movie's next
+//! frame or before its next file is written or put in place; other work
+//! (drawing a figure in memory, encoding) finishes in the background and
+//! its result is dropped. A
 //! panic of the work becomes a Python exception (`errors::panicked`).
 //!
 //! The work runs inside a thread pool of this process ([`pool`]), never
@@ -29,8 +31,11 @@ use std::time::Duration;
 
 /// How often the waiting thread lets Python handle its signals.
 const POLL: Duration = Duration::from_millis(100);
-/// How long an interrupted call waits for its work to unwind.
-const UNWIND_WAIT: Duration = Duration::from_millis(500);
+/// How long an interrupted call waits for its work to unwind. Work that
+/// takes longer (a figure being drawn) goes on in the background until
+/// its next hook (a frame, a file about to be written) and unwinds there,
+/// writing nothing: the call need not wait for it.
+const UNWIND_WAIT: Duration = Duration::from_millis(80);
 
 /// The thread pool of this process and the pid it was made in.
 static POOL: Mutex<Option<(u32, &'static rayon::ThreadPool)>> = Mutex::new(None);

@@ -16,6 +16,11 @@ pub struct Progress<'a> {
     pub frame: &'a (dyn Fn() + Sync),
     /// After each scene, its files written.
     pub scene: &'a (dyn Fn(&Scene) + Sync),
+    /// Before each file is written and again before it is put in place: a
+    /// front end that was stopped (Python's Ctrl-C) unwinds here, so
+    /// nothing is written after it, and the file being written is removed
+    /// as the work unwinds.
+    pub file: &'a (dyn Fn() + Sync),
     /// A failed scene's error, worded for the front end (a divergence's
     /// hint names flags or scene-file keys).
     pub hint: &'a (dyn Fn(Error, &Scene) -> Error + Sync),
@@ -27,6 +32,7 @@ impl Progress<'_> {
         Progress {
             frame: &|| {},
             scene: &|_| {},
+            file: &|| {},
             hint: &|e, _| e,
         }
     }
@@ -76,7 +82,12 @@ pub fn into_folder(
             // streamed into place.
             let mut files: Vec<String> = Vec::new();
             scenes::render_to(s, movie, outputs, progress.frame, &mut |name, fill| {
-                output::write_atomic_with(&out.join(name), |f| fill(f))?;
+                (progress.file)();
+                output::write_atomic_with(&out.join(name), |f| {
+                    fill(f)?;
+                    (progress.file)();
+                    Ok(())
+                })?;
                 files.push(name.to_string());
                 Ok(())
             })

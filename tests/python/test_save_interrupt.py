@@ -20,17 +20,23 @@ CHILD = textwrap.dedent(
     """
     import os, sys, time
     import jacobs_ladder as jl
-    out = sys.argv[1]
-    scene = jl.Scene.builtin("4", kind="movie")
+    out, what = sys.argv[1], sys.argv[2]
     print("ready", flush=True)
     try:
-        # 5000 frames: about a minute of drawing and encoding.
-        scene.save(out, format="mp4", frames=5000, size=(320, 240))
+        if what == "movie":
+            # 5000 frames: about a minute of drawing and encoding.
+            jl.Scene.builtin("4", kind="movie").save(
+                out, format="mp4", frames=5000, size=(320, 240)
+            )
+        else:
+            # A figure has no frames: its 18 runs take seconds, its files
+            # come at the end.
+            jl.Scene.builtin("linkage-friction").save(out, format="png,svg,pdf")
     except KeyboardInterrupt:
         raised = time.monotonic()
         at_raise = sorted(os.listdir(out)) if os.path.isdir(out) else []
         # Anything the save still writes would appear now.
-        time.sleep(1.5)
+        time.sleep(1.5 if what == "movie" else 8.0)
         later = sorted(os.listdir(out)) if os.path.isdir(out) else []
         print("interrupted", raised, at_raise, later, sep="|", flush=True)
         sys.exit(0)
@@ -56,11 +62,11 @@ def engine_running(pid):
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc for the engine's thread")
-@pytest.mark.parametrize("wait", [0.3, 1.0])
-def test_ctrl_c_stops_a_save_within_0_2_s_and_writes_nothing_after(tmp_path, wait):
+@pytest.mark.parametrize("what, wait", [("movie", 0.3), ("movie", 1.0), ("figure", 0.5)])
+def test_ctrl_c_stops_a_save_within_0_2_s_and_writes_nothing_after(tmp_path, what, wait):
     out = tmp_path / "out"
     p = subprocess.Popen(
-        [sys.executable, "-c", CHILD, str(out)],
+        [sys.executable, "-c", CHILD, str(out), what],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
@@ -88,8 +94,8 @@ def test_ctrl_c_stops_a_save_within_0_2_s_and_writes_nothing_after(tmp_path, wai
     print(f"save stopped {latency:.3f} s after SIGINT; files left: {later}")
     assert latency < 0.2, f"the save stopped {latency:.3f} s after SIGINT"
     assert at_raise == later, f"written after the interrupt: {at_raise} -> {later}"
-    # No movie (it was not finished) and no temporary file left.
+    # No movie or figure (it was not finished) and no temporary file left.
     names = eval(later)  # a list's repr, printed by the child
-    assert not any(n.endswith(".mp4") for n in names), names
+    assert not any(n.endswith((".mp4", ".png", ".svg", ".pdf")) for n in names), names
     left = [n for n in names if n.startswith(".") or "tmp" in n]
     assert left == [], f"half-written files left: {left}"

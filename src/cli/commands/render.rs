@@ -177,6 +177,7 @@ pub(crate) fn render_into(
                 bar.inc(1);
             }
         },
+        file: &|| {},
         hint: &|e, s| with_divergence_hint(e, s, words),
     };
     let files = front::render::into_folder(scenes, out, movie, outputs, index, &progress);
