@@ -35,6 +35,7 @@ mod names;
 mod npz;
 mod output_paths;
 mod print;
+mod print_article;
 mod print_property;
 mod provenance;
 mod reliability;
