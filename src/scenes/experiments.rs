@@ -409,7 +409,7 @@ fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> 
     let x_axis = || Axis::new("level of model (caption)").range(0.5, n + 0.5);
     let speed = level_chart(
         x_axis(),
-        Axis::new("c_kink (cm/s)"),
+        Axis::new("c_{kink} (cm/s)"),
         (
             MEASURED_KINK_CM_S,
             format!("measured {MEASURED_KINK_CM_S:.1} cm/s"),
@@ -419,7 +419,7 @@ fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> 
     );
     let ratio = level_chart(
         x_axis(),
-        Axis::new("c_antikink / c_kink"),
+        Axis::new("c_{antikink} / c_{kink}"),
         (MEASURED_RATIO, format!("measured {MEASURED_RATIO}")),
         &results,
         LevelResult::ratio,
@@ -578,7 +578,7 @@ fn linkage_friction(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunDat
     let (rows, data) = refined_fronts(scene)?;
     let n = scene.model.n as f64;
     let mut spec = ChartSpec::new(
-        Axis::new("pin friction μ_p"),
+        Axis::new("pin friction μ_{p}"),
         Axis::new("blocks flipped (front)").range(0.0, n + 0.5),
     );
     for (j, (word, marker)) in [("kink", Marker::Circle), ("antikink", Marker::Square)]
