@@ -15,8 +15,10 @@ use std::time::Instant;
 
 pub mod charts;
 pub mod kernels;
+pub mod report;
 pub use charts::{stability_caption, stability_chart, work_precision_chart};
 pub use kernels::{KernelReport, kernels, kernels_table};
+pub use report::*;
 
 /// The middle of `values` (the upper of the two middle ones for an even
 /// count); NaN for none.
@@ -29,12 +31,16 @@ pub fn median(mut values: Vec<f64>) -> f64 {
 pub const REFERENCE_RTOL: f64 = 1e-11;
 
 /// A scene of the work-precision and stability studies: a single-run
-/// [`Scene`] (the paper's single flip by default) and the times at which θ
-/// is compared with the reference.
+/// [`Scene`] (the paper's single flip by default, or a built-in movie such
+/// as the water tank, whose `[apparatus]` adds terms some integrators
+/// refuse), its simulation, and the times at which θ is compared with the
+/// reference.
 #[derive(Debug, Clone)]
 pub struct BenchScene {
     pub name: String,
     pub scene: Scene,
+    /// The simulation of `scene` (for an apparatus, in the model's units).
+    pub scenario: Scenario,
     pub alpha_deg: f64,
     pub params: Params,
     pub t_end: f64,
@@ -60,36 +66,116 @@ impl BenchScene {
         )
     }
 
+    /// A built-in movie's scene by its ID (`water-tank`, `linkage-69`,
+    /// `4`, ...), its window cut to `t_end` τ if given, compared at
+    /// `frames` + 1 evenly spaced times. An unknown ID, or a movie of more
+    /// than one run, is bad input.
+    pub fn movie(id: &str, t_end: Option<f64>, frames: usize) -> Result<Self> {
+        let entry = crate::catalog::find(crate::scene::Kind::Movie, id)?;
+        let mut scene = entry.scene.clone().with_auto_window()?;
+        if scene.runs().len() > 1 {
+            return Err(Error::bad_input(format!(
+                "movie {id} has more than one run; the studies take a single run"
+            )));
+        }
+        if let Some(t) = t_end {
+            scene.run.t_end = t;
+            // An apparatus' duration (s) sets the window: set it in τ.
+            if let Some(a) = scene.apparatus.as_mut() {
+                let tau = a.convert(scene.model.alpha).tau_s;
+                a.duration = Some(t * tau);
+            }
+        }
+        let mut s = Self::from_scene(scene, frames)?;
+        s.name = entry.id.clone();
+        if let Some(t) = t_end {
+            // Exactly `t`, not its round trip through seconds.
+            s.scenario.t_end = t;
+            s.t_end = t;
+            s.frames = even_frames(t, frames);
+        }
+        Ok(s)
+    }
+
     /// A study scene from any single-run scene, compared at `frames` + 1
     /// evenly spaced times.
     pub fn from_scene(scene: Scene, frames: usize) -> Result<Self> {
-        let params = scene.model.params()?;
-        let t_end = scene.run.t_end;
+        let scenario = scene.scenario()?;
+        let params = scenario.ladder.params;
+        let t_end = scenario.t_end;
+        if t_end.is_nan() || t_end <= 0.0 {
+            return Err(Error::bad_input(format!(
+                "the study's window must be longer than 0 τ, got {}",
+                crate::error::num(t_end)
+            )));
+        }
         Ok(Self {
             name: crate::scene::describe::wave(&scene.model).replace(", ", " "),
-            alpha_deg: scene.model.alpha,
+            alpha_deg: params.alpha_deg(),
             params,
             t_end,
-            frames: (0..=frames.max(1))
-                .map(|k| t_end * k as f64 / frames.max(1) as f64)
-                .collect(),
+            frames: even_frames(t_end, frames),
+            scenario,
             scene,
         })
     }
 
     pub fn scenario(&self) -> Result<Scenario> {
-        self.scene.scenario()
+        Ok(self.scenario.clone())
+    }
+
+    /// Why `config`'s scheme cannot integrate this scene's terms
+    /// (`sim::check_terms`), or `None` if it can.
+    pub fn refusal(&self, config: &IntegratorConfig) -> Option<String> {
+        sim::check_terms(&self.scenario.ladder, config)
+            .err()
+            .map(|e| e.to_string())
+    }
+
+    /// The scene's terms beyond the paper's model, as its apparatus sets
+    /// them ("water: buoyancy, added mass, quadratic drag"); `None` for
+    /// the paper's model.
+    pub fn terms(&self) -> Option<String> {
+        let a = self.scene.apparatus.as_ref()?;
+        let medium = match a.medium {
+            crate::scene::apparatus::Medium::Air => "air",
+            crate::scene::apparatus::Medium::Water => "water",
+        };
+        let mut terms = Vec::new();
+        for (on, what) in [
+            (a.buoyancy, "buoyancy"),
+            (a.added_mass, "added mass"),
+            (a.drag, "quadratic drag"),
+            (a.tension_only, "tension-only links"),
+            (a.pin_friction > 0.0, "pin friction"),
+            (a.motor.is_some(), "motor"),
+        ] {
+            if on {
+                terms.push(what);
+            }
+        }
+        if matches!(a.stiffness, crate::scene::apparatus::Stiffness::Word(_)) {
+            terms.push("stiff links");
+        }
+        Some(format!("{medium}: {}", terms.join(", ")))
     }
 
     /// Runs the scene with `config`, sampled at the frames.
     pub fn run(&self, config: &IntegratorConfig) -> Result<Trajectory> {
-        sim::simulate(&self.scenario()?, &self.frames, config)
+        sim::simulate(&self.scenario, &self.frames, config)
     }
 
     /// The reference solution (dopri5 at `rtol`).
     pub fn reference(&self, rtol: f64) -> Result<Trajectory> {
         self.run(&IntegratorConfig::adaptive(rtol))
     }
+}
+
+/// `frames` + 1 evenly spaced times over [0, t_end] (at least 2).
+fn even_frames(t_end: f64, frames: usize) -> Vec<f64> {
+    (0..=frames.max(1))
+        .map(|k| t_end * k as f64 / frames.max(1) as f64)
+        .collect()
 }
 
 /// Largest |θ_n(t) − θ_ref,n(t)| over the frames (radians).
@@ -127,7 +213,45 @@ pub struct Point {
     pub theta_error: Option<f64>,
     pub arrival_error: Option<f64>,
     pub diverged: bool,
+    /// What the run came to: ok, inaccurate, diverged or refused.
+    #[serde(default)]
+    pub status: Status,
+    /// Why the scheme refused the scene's terms (`sim::check_terms`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub refused: Option<String>,
 }
+
+/// What one point of a study came to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Status {
+    /// Ran to the end within [`INACCURATE_THETA`] of the reference, every
+    /// block flipping as in it.
+    #[default]
+    Ok,
+    /// Ran to the end, but θ is off by more than [`INACCURATE_THETA`] or a
+    /// block flips in one run and not in the other.
+    Inaccurate,
+    /// The run blew up (`Error::Diverged`) or failed.
+    Diverged,
+    /// The scheme cannot integrate the scene's terms: not run.
+    Refused,
+}
+
+impl Status {
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Ok => "ok",
+            Self::Inaccurate => "inaccurate",
+            Self::Diverged => "diverged",
+            Self::Refused => "refused",
+        }
+    }
+}
+
+/// A θ error above which a run that reached the end is called inaccurate
+/// (radians): a tenth of a radian, far above every converged point.
+pub const INACCURATE_THETA: f64 = 0.1;
 
 /// All points of one integrator, and its order measured from them.
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -135,6 +259,9 @@ pub struct Sweep {
     pub name: String,
     pub measured_order: Option<f64>,
     pub points: Vec<Point>,
+    /// Why the scheme refused the scene (every point is then refused).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub refused: Option<String>,
 }
 
 /// The step sizes (or tolerances, for dopri5) swept for each integrator:
@@ -173,11 +300,15 @@ pub fn sweep(
     Ok(Sweep {
         name: kind.name().to_string(),
         measured_order: measured_order(&points),
+        refused: points.iter().find_map(|p| p.refused.clone()),
         points,
     })
 }
 
-fn measure(
+/// One point: `kind` at `x` (dt, or rtol for dopri5) on `scene`, timed
+/// over `repeats` runs; a scheme that cannot take the scene's terms is a
+/// refused point (not run), a run that blows up a diverged one.
+pub fn measure(
     scene: &BenchScene,
     reference: &Trajectory,
     kind: IntegratorKind,
@@ -189,6 +320,19 @@ fn measure(
         IntegratorKind::Dopri5 => (None, Some(x)),
         _ => (Some(x), None),
     };
+    if let Some(reason) = scene.refusal(&config) {
+        return Ok(Point {
+            dt,
+            rtol,
+            force_evals: 0,
+            wall_seconds: 0.0,
+            theta_error: None,
+            arrival_error: None,
+            diverged: false,
+            status: Status::Refused,
+            refused: Some(reason),
+        });
+    }
     let mut times = Vec::with_capacity(repeats.max(1));
     let mut outcome = None;
     for _ in 0..repeats.max(1) {
@@ -206,15 +350,26 @@ fn measure(
     }
     let wall_seconds = median(times);
     Ok(match outcome {
-        Some(run) => Point {
-            dt,
-            rtol,
-            force_evals: run.force_evals,
-            wall_seconds,
-            theta_error: Some(theta_error(&run, reference)),
-            arrival_error: arrival_error(&run, reference),
-            diverged: false,
-        },
+        Some(run) => {
+            let theta = theta_error(&run, reference);
+            let arrival = arrival_error(&run, reference);
+            let status = if theta.is_finite() && theta <= INACCURATE_THETA && arrival.is_some() {
+                Status::Ok
+            } else {
+                Status::Inaccurate
+            };
+            Point {
+                dt,
+                rtol,
+                force_evals: run.force_evals,
+                wall_seconds,
+                theta_error: Some(theta),
+                arrival_error: arrival,
+                diverged: false,
+                status,
+                refused: None,
+            }
+        }
         None => Point {
             dt,
             rtol,
@@ -223,6 +378,8 @@ fn measure(
             theta_error: None,
             arrival_error: None,
             diverged: true,
+            status: Status::Diverged,
+            refused: None,
         },
     })
 }
@@ -235,7 +392,7 @@ fn measure(
 pub fn measured_order(points: &[Point]) -> Option<f64> {
     let floor = points
         .iter()
-        .filter(|p| !p.diverged)
+        .filter(|p| !p.diverged && p.refused.is_none())
         .map(|p| p.force_evals)
         .min()?;
     let plateau = |p: &Point| {
@@ -253,6 +410,20 @@ pub fn measured_order(points: &[Point]) -> Option<f64> {
         return None;
     }
     Some(-slope(&pts))
+}
+
+/// Order p from the slope of log(θ error) against log(dt) (error ∝ dt^p)
+/// over a fixed-step sweep's accurate points ([`Status::Ok`]) whose error
+/// lies between 1e-10 and 1e-2; `None` with fewer than two.
+pub fn order_in_step(points: &[Point]) -> Option<f64> {
+    let pts: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|p| p.status == Status::Ok)
+        .filter_map(|p| Some((p.dt?, p.theta_error?)))
+        .filter(|(_, e)| *e > 1e-10 && *e < 1e-2)
+        .map(|(h, e)| (h.ln(), e.ln()))
+        .collect();
+    (pts.len() >= 2).then(|| slope(&pts))
 }
 
 pub use crate::sim::observables::least_squares_slope as slope;
@@ -322,281 +493,4 @@ mod tests {
         let pts: Vec<(f64, f64)> = (1..6).map(|k| (k as f64, -3.0 * k as f64 + 1.0)).collect();
         assert!((slope(&pts) + 3.0).abs() < 1e-12);
     }
-}
-
-/// Results of one scene of the work-precision study.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct SceneReport {
-    pub scene: String,
-    pub alpha_deg: f64,
-    /// Length of the simulated window (τ).
-    pub t_end: f64,
-    pub integrators: Vec<Sweep>,
-}
-
-/// `bench work-precision --json`: the α = 60° kink's sweeps at the top level
-/// (SPEC section 5), both scenes under `scenes`, and the cheapest setting
-/// that keeps every arrival time within 1 τ of the reference.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct WorkPrecisionReport {
-    pub integrators: Vec<Sweep>,
-    pub scenes: Vec<SceneReport>,
-    pub cheapest_within_1tau: Vec<Cheapest>,
-    pub reference: String,
-}
-
-/// The cheapest setting of one scene within a tolerance on arrival times.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct Cheapest {
-    pub scene: String,
-    pub integrator: String,
-    pub step: f64,
-    pub force_evals: u64,
-    pub arrival_error: f64,
-}
-
-/// Runs the whole study on `scenes` (every integrator over its default
-/// range); `progress` is told each finished point.
-pub fn work_precision(
-    scenes: &[BenchScene],
-    repeats: usize,
-    progress: &(dyn Fn(&str) + Sync),
-) -> Result<WorkPrecisionReport> {
-    let mut reports = Vec::new();
-    let mut cheapest = Vec::new();
-    for scene in scenes {
-        let reference = scene.reference(REFERENCE_RTOL)?;
-        let mut sweeps = Vec::new();
-        for kind in IntegratorKind::ALL {
-            let mut points = Vec::new();
-            for x in default_steps(kind) {
-                points.push(measure(scene, &reference, kind, x, repeats)?);
-                progress(&format!("{}: {kind} at {x}", scene.name));
-            }
-            sweeps.push(Sweep {
-                name: kind.name().to_string(),
-                measured_order: measured_order(&points),
-                points,
-            });
-        }
-        if let Some((name, p)) = cheapest_within(&sweeps, 1.0) {
-            cheapest.push(Cheapest {
-                scene: scene.name.clone(),
-                integrator: name.to_string(),
-                step: p.dt.or(p.rtol).unwrap_or(f64::NAN),
-                force_evals: p.force_evals,
-                arrival_error: p.arrival_error.unwrap_or(f64::NAN),
-            });
-        }
-        reports.push(SceneReport {
-            scene: scene.name.clone(),
-            alpha_deg: scene.alpha_deg,
-            t_end: scene.t_end,
-            integrators: sweeps,
-        });
-    }
-    Ok(WorkPrecisionReport {
-        integrators: reports
-            .first()
-            .map(|r| r.integrators.clone())
-            .unwrap_or_default(),
-        scenes: reports,
-        cheapest_within_1tau: cheapest,
-        reference: format!("dopri5, rtol = {REFERENCE_RTOL:e}"),
-    })
-}
-
-fn opt(x: Option<f64>) -> String {
-    x.map_or(String::new(), |v| format!("{v:e}"))
-}
-
-/// The numbers behind `work-precision.png`, one row per point.
-pub fn work_precision_csv(report: &WorkPrecisionReport) -> String {
-    let mut s = String::from(
-        "scene,integrator,dt,rtol,force_evals,wall_seconds,theta_error,arrival_error,diverged\n",
-    );
-    for scene in &report.scenes {
-        for sweep in &scene.integrators {
-            for p in &sweep.points {
-                s.push_str(&format!(
-                    "{},{},{},{},{},{:e},{},{},{}\n",
-                    scene.scene,
-                    sweep.name,
-                    opt(p.dt),
-                    opt(p.rtol),
-                    p.force_evals,
-                    p.wall_seconds,
-                    opt(p.theta_error),
-                    opt(p.arrival_error),
-                    p.diverged
-                ));
-            }
-        }
-    }
-    s
-}
-
-/// A human-readable table of the study.
-pub fn work_precision_table(report: &WorkPrecisionReport) -> String {
-    let mut s = String::new();
-    for scene in &report.scenes {
-        s.push_str(&format!(
-            "{} (reference: {})\n",
-            scene.scene, report.reference
-        ));
-        s.push_str(
-            "integrator        step      force evals  wall (ms)  θ error     arrival error (τ)\n",
-        );
-        for sweep in &scene.integrators {
-            for p in &sweep.points {
-                let step = p.dt.or(p.rtol).unwrap_or(f64::NAN);
-                let (th, ar) = if p.diverged {
-                    ("diverged".to_string(), String::new())
-                } else {
-                    (
-                        p.theta_error.map_or(String::new(), |e| format!("{e:.2e}")),
-                        p.arrival_error
-                            .map_or("a flip differs".into(), |e| format!("{e:.3}")),
-                    )
-                };
-                s.push_str(&format!(
-                    "{:<17} {:<9} {:>11}  {:>9.2}  {:<11} {}\n",
-                    sweep.name,
-                    format!("{step}"),
-                    p.force_evals,
-                    1e3 * p.wall_seconds,
-                    th,
-                    ar
-                ));
-            }
-            let order = sweep
-                .measured_order
-                .map_or("n/a".into(), |o| format!("{o:.2}"));
-            s.push_str(&format!("{:<17} measured order {order}\n", sweep.name));
-        }
-        s.push('\n');
-    }
-    for c in &report.cheapest_within_1tau {
-        s.push_str(&format!(
-            "cheapest within 1 τ, {}: {} at {} ({} force evaluations, arrival error {:.3} τ)\n",
-            c.scene, c.integrator, c.step, c.force_evals, c.arrival_error
-        ));
-    }
-    s
-}
-
-/// Observed and predicted critical step of one integrator.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct StabilityRow {
-    pub name: String,
-    /// Largest dt at which the kink scene stays bounded (bisection).
-    pub critical_dt: f64,
-    /// Linear prediction from ω_max ([`predicted_dt`]).
-    pub predicted_dt: f64,
-}
-
-/// The stability study at one α.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct StabilityPoint {
-    pub alpha_deg: f64,
-    pub omega_max: f64,
-    pub integrators: Vec<StabilityRow>,
-}
-
-/// `bench stability --json`: the α = 60° rows at the top level (SPEC
-/// section 5) and the sweep over α.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct StabilityReport {
-    pub alpha_deg: f64,
-    pub omega_max: f64,
-    pub damping_rate: f64,
-    pub integrators: Vec<StabilityRow>,
-    pub sweep: Vec<StabilityPoint>,
-}
-
-/// Relative precision of the stability bisection.
-pub const STABILITY_PRECISION: f64 = 0.02;
-
-/// Critical and predicted dt of every integrator on the kink scene at α.
-pub fn stability_at(alpha_deg: f64) -> Result<StabilityPoint> {
-    let scene = BenchScene::paper(alpha_deg)?;
-    let omega_max = crate::theory::dispersion::omega_max_clamped(&scene.params)?;
-    let c = damping_rate(&scene.params);
-    let mut rows = Vec::new();
-    for kind in IntegratorKind::ALL {
-        let predicted = predicted_dt(kind, omega_max, c);
-        let critical = critical_dt(&scene, kind, predicted, STABILITY_PRECISION)?;
-        rows.push(StabilityRow {
-            name: kind.name().to_string(),
-            critical_dt: critical,
-            predicted_dt: predicted,
-        });
-    }
-    Ok(StabilityPoint {
-        alpha_deg,
-        omega_max,
-        integrators: rows,
-    })
-}
-
-/// The α values of the stability chart.
-pub const STABILITY_ALPHAS: [f64; 11] = [
-    5.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 85.0, 89.0,
-];
-
-/// The whole study: α = 60° and the sweep over `alphas` (in parallel).
-pub fn stability(alphas: &[f64], progress: &(dyn Fn(&str) + Sync)) -> Result<StabilityReport> {
-    use rayon::prelude::*;
-    let sweep: Vec<StabilityPoint> = alphas
-        .par_iter()
-        .map(|&a| {
-            let p = stability_at(a);
-            progress(&format!("α = {a}°"));
-            p
-        })
-        .collect::<Result<_>>()?;
-    let at60 = match sweep.iter().find(|p| p.alpha_deg == 60.0) {
-        Some(p) => p.clone(),
-        None => stability_at(60.0)?,
-    };
-    Ok(StabilityReport {
-        alpha_deg: 60.0,
-        omega_max: at60.omega_max,
-        damping_rate: damping_rate(&Params::paper(60.0)?),
-        integrators: at60.integrators,
-        sweep,
-    })
-}
-
-/// The numbers behind `stability.png`.
-pub fn stability_csv(report: &StabilityReport) -> String {
-    let mut s = String::from("alpha_deg,omega_max,integrator,critical_dt,predicted_dt\n");
-    for p in &report.sweep {
-        for r in &p.integrators {
-            s.push_str(&format!(
-                "{},{:.6},{},{:.6e},{:.6e}\n",
-                p.alpha_deg, p.omega_max, r.name, r.critical_dt, r.predicted_dt
-            ));
-        }
-    }
-    s
-}
-
-/// A human-readable table of the α = 60° rows.
-pub fn stability_table(report: &StabilityReport) -> String {
-    let mut s = format!(
-        "kink α = {}°: ω_max = {:.4} /τ (block 1 clamped), damping rate {} /τ\n\
-         integrator        critical dt   predicted dt   ratio\n",
-        report.alpha_deg, report.omega_max, report.damping_rate
-    );
-    for r in &report.integrators {
-        s.push_str(&format!(
-            "{:<17} {:<13.5} {:<14.5} {:.2}\n",
-            r.name,
-            r.critical_dt,
-            r.predicted_dt,
-            r.critical_dt / r.predicted_dt
-        ));
-    }
-    s
 }

@@ -2,7 +2,7 @@
 //! (θ error against force evaluations and against wall time) and
 //! `stability.png` (critical dt against α, observed and predicted).
 
-use super::{SceneReport, StabilityReport, Sweep, WorkPrecisionReport};
+use super::{INACCURATE_THETA, SceneReport, StabilityReport, Status, Sweep, WorkPrecisionReport};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::render::charts::{Axis, ChartSpec, Legend, Marker, Series, line_chart};
@@ -15,6 +15,10 @@ use tiny_skia::Pixmap;
 /// Size of one panel of the work-precision chart, and of the stability chart.
 const PANEL: (u32, u32) = (520, 440);
 const STABILITY: (u32, u32) = (900, 520);
+
+mod scene;
+pub use scene::refusal_terms;
+use scene::scene_stability_chart;
 
 /// The colour of an integrator, the same in every chart.
 pub fn integrator_color(kind: IntegratorKind) -> Rgb {
@@ -124,8 +128,22 @@ fn wp_panel(
     let mut paper = Vec::new();
     let mut best = Vec::new();
     let mut diverged = Vec::new();
+    let mut inaccurate = Vec::new();
     for sweep in &scene.integrators {
         let color = color_of(&sweep.name);
+        if let Some(reason) = &sweep.refused {
+            // Nothing to plot: a legend line with the reason.
+            spec = spec.series(
+                Series::scatter(
+                    format!("{} refused: {}", pretty(&sweep.name), refusal_terms(reason)),
+                    Vec::new(),
+                    color,
+                    Marker::Plus,
+                )
+                .with_width(3.0),
+            );
+            continue;
+        }
         let pts: Vec<(f64, f64)> = sweep
             .points
             .iter()
@@ -158,6 +176,9 @@ fn wp_panel(
             }
             let Some(err) = p.theta_error else { continue };
             let x = at(p.force_evals as f64, p.wall_seconds);
+            if p.status == Status::Inaccurate {
+                inaccurate.push((x, err));
+            }
             if sweep.name == PAPER_KIND && p.dt == Some(PAPER_DT) {
                 paper.push((x, err));
             }
@@ -166,15 +187,17 @@ fn wp_panel(
             }
         }
     }
-    spec = spec.series(
-        Series::scatter(
-            "paper's setting: symplectic Euler, dt = 0.01",
-            paper,
-            DARK,
-            Marker::Square,
-        )
-        .with_width(3.0),
-    );
+    if !paper.is_empty() {
+        spec = spec.series(
+            Series::scatter(
+                "paper's setting: symplectic Euler, dt = 0.01",
+                paper,
+                DARK,
+                Marker::Square,
+            )
+            .with_width(3.0),
+        );
+    }
     if !best.is_empty() {
         let (name, step) = cheapest.unwrap_or_default();
         spec = spec.series(
@@ -185,6 +208,17 @@ fn wp_panel(
                 Marker::Triangle,
             )
             .with_width(3.0),
+        );
+    }
+    if !inaccurate.is_empty() {
+        spec = spec.series(
+            Series::scatter(
+                format!("inaccurate (θ error > {INACCURATE_THETA} rad or a flip differs)"),
+                inaccurate,
+                DARK,
+                Marker::Ring,
+            )
+            .with_width(2.0),
         );
     }
     for (x, y, color, what) in diverged {
@@ -265,16 +299,31 @@ pub fn work_precision_chart(report: &WorkPrecisionReport) -> Result<Pixmap> {
         // get the same size.
         work.legend = Legend::Hidden;
         let extra = legend_width(&time);
-        let label = scene.scene.replace('-', "−");
+        let label = match &scene.terms {
+            Some(terms) => format!("{} ({terms})", scene.scene),
+            None => scene.scene.replace('-', "−"),
+        };
         let t = screen();
         let work = line_chart(&t, &work, PANEL.0, PANEL.1)?.pixmap;
         let time = line_chart(&t, &time, PANEL.0 + extra, PANEL.1)?.pixmap;
-        panels.push(Panel::new(Picture::of_image(&t, work)).label(label.clone()));
-        panels.push(Panel::new(Picture::of_image(&t, time)).label(label));
+        // A label with the scene's terms runs on over the second panel.
+        let second = match &scene.terms {
+            Some(_) => String::new(),
+            None => label.clone(),
+        };
+        panels.push(Panel::new(Picture::of_image(&t, work)).label(label));
+        panels.push(Panel::new(Picture::of_image(&t, time)).label(second));
     }
+    let first = &report.scenes[0];
     let title = format!(
-        "Work–precision of the five integrators (N = 10, b/s = 1.3, {} τ; reference: {})",
-        report.scenes[0].t_end, report.reference
+        "Work–precision of the five integrators (N = {}, {} τ; reference: {})",
+        first.n,
+        if first.t_end >= 100.0 {
+            format!("{:.0}", first.t_end)
+        } else {
+            crate::numfmt::plain(first.t_end)
+        },
+        report.reference
     );
     compose(&panels, &Layout::columns(&screen(), 2).title(title))
 }
@@ -377,6 +426,9 @@ pub fn stability_caption(report: &StabilityReport) -> String {
 pub fn stability_chart(report: &StabilityReport) -> Result<Pixmap> {
     if report.sweep.is_empty() {
         return Err(Error::bad_input("the stability report has no α values"));
+    }
+    if report.scene.is_some() {
+        return scene_stability_chart(report);
     }
     let names: Vec<&str> = report.sweep[0]
         .integrators

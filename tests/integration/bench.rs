@@ -100,6 +100,8 @@ fn charts_draw_from_reports() {
         name: name.into(),
         critical_dt: critical,
         predicted_dt: predicted,
+        refused: None,
+        failed: None,
     };
     let point = |alpha: f64| bench::StabilityPoint {
         alpha_deg: alpha,
@@ -118,6 +120,8 @@ fn charts_draw_from_reports() {
         damping_rate: 0.02,
         integrators: point(60.0).integrators,
         sweep: vec![point(30.0), point(60.0)],
+        scene: None,
+        terms: None,
     };
     let caption = bench::stability_caption(&stability);
     assert!(caption.contains("ratio 1.84 at 60°"), "{caption}");

@@ -13,6 +13,7 @@ mod arrivals;
 mod auto_acceptance;
 mod batch;
 mod bench;
+mod bench_tank;
 mod caps;
 mod cli;
 mod data_files;

@@ -622,6 +622,7 @@ pub struct TheoryArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct BenchArgs {
     /// work-precision (error against cost), stability (critical time
     /// steps), or kernels (the paper's run timed with each `simulate
@@ -638,4 +639,13 @@ pub struct BenchArgs {
     /// median wall time is kept)
     #[arg(long, default_value_t = 3)]
     pub repeats: usize,
+    /// The scene of work-precision and stability: paper (the paper's kink
+    /// and antikink; stability sweeps alpha) or a built-in movie's ID,
+    /// e.g. water-tank (buoyancy, added mass, quadratic drag), whose terms
+    /// some integrators refuse
+    #[arg(long, default_value = "paper", value_name = "NAME")]
+    pub scene: String,
+    /// Window of a built-in movie's study, in tau [default: the movie's]
+    #[arg(long, value_name = "T")]
+    pub t_end: Option<f64>,
 }

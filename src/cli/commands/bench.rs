@@ -14,6 +14,19 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<()> {
             args.repeats
         )));
     }
+    if args.scene == "paper" && args.t_end.is_some() {
+        return Err(Error::bad_input(
+            "--t-end: the paper's scene keeps its 4000 τ; give --scene ID of a built-in movie",
+        ));
+    }
+    if let Some(t) = args.t_end
+        && !(t.is_finite() && t > 0.0 && t <= 1e6)
+    {
+        return Err(Error::bad_input(format!(
+            "--t-end must be a number of τ above 0 and at most 1e6, got {}",
+            crate::error::num(t)
+        )));
+    }
     match args.study.as_str() {
         "work-precision" | "stability" => output::check_targets(&[
             args.out.join(format!("{}.csv", args.study)),
@@ -46,7 +59,10 @@ pub(crate) fn bench_kernels(args: &BenchArgs) -> Result<()> {
 
 pub(crate) fn bench_work_precision(args: &BenchArgs) -> Result<()> {
     use crate::bench::{self, BenchScene};
-    let scenes = [BenchScene::paper(60.0)?, BenchScene::paper(-60.0)?];
+    let scenes = match args.scene.as_str() {
+        "paper" => vec![BenchScene::paper(60.0)?, BenchScene::paper(-60.0)?],
+        id => vec![BenchScene::movie(id, args.t_end, 200)?],
+    };
     let total: usize = scenes.len()
         * IntegratorKind::ALL
             .iter()
@@ -91,6 +107,16 @@ pub(crate) fn write_study<T: Serialize>(
 
 pub(crate) fn bench_stability(args: &BenchArgs) -> Result<()> {
     use crate::bench;
+    if args.scene != "paper" {
+        let scene = bench::BenchScene::movie(&args.scene, args.t_end, 0)?;
+        let bar = progress_bar(IntegratorKind::ALL.len() as u64, "stability");
+        let report = bench::stability_of_scene(&scene, &ticker(&bar))?;
+        bar.finish_and_clear();
+        let chart = bench::stability_chart(&report)?;
+        let csv = bench::stability_csv(&report);
+        let table = bench::stability_table(&report);
+        return write_study(args, "stability", &csv, &chart, &report, &table);
+    }
     let alphas = bench::STABILITY_ALPHAS;
     let bar = progress_bar(alphas.len() as u64, "stability");
     let report = bench::stability(&alphas, &ticker(&bar))?;
