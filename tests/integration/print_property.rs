@@ -674,3 +674,65 @@ fn random_figures_keep_the_print_rules() {
         failures.join("\n")
     );
 }
+
+/// The two figures seed 12345 drew that broke the rules: figure 2d's
+/// captions wider than their pictures ran into each other, and a
+/// filmstrip's last snapshot put its mark's word past the page's right
+/// edge. Columns now hold their captions; a mark whose word would leave
+/// its snapshot goes to the chain's other side.
+#[test]
+fn captions_and_marks_stay_apart_and_on_the_page() {
+    let cases: [(&[&str], &str); 2] = [
+        (
+            &[
+                "figure",
+                "2d",
+                "--style",
+                "paper-wide",
+                "--format",
+                "pdf",
+                "--height",
+                "1.88in",
+            ],
+            "paper-wide",
+        ),
+        (
+            &[
+                "figure",
+                "--view",
+                "filmstrip",
+                "--alpha=64",
+                "--n",
+                "6",
+                "--flips",
+                "0,1500",
+                "--t-end",
+                "4838",
+                "--name",
+                "p21",
+                "--style",
+                "paper-wide",
+                "--format",
+                "pdf",
+                "--width",
+                "4.51in",
+            ],
+            "paper-wide",
+        ),
+    ];
+    let root = std::env::temp_dir().join(format!("ladder-property-12345-{}", std::process::id()));
+    for (k, (args, style)) in cases.iter().enumerate() {
+        let d = Draw {
+            args: args.iter().map(|a| a.to_string()).collect(),
+            style,
+            categorical: true,
+            height_pt: None,
+        };
+        let pdf =
+            run(&d.args, &root.join(k.to_string())).unwrap_or_else(|e| panic!("{args:?}: {e:?}"));
+        let page = read_pdf(&pdf);
+        let (found, _) = problems(&d, &page);
+        assert!(found.is_empty(), "{args:?}: {found:?}");
+    }
+    let _ = std::fs::remove_dir_all(&root);
+}

@@ -100,22 +100,43 @@ fn draw_mark(
         q[iy(i)] + f * (q[iy(j)] - q[iy(i)]),
     ];
     let (x, y) = snapshot::pixel_of(region, snap, point);
-    let dir = if mark.side == HAlign::Left { -1.0 } else { 1.0 };
-    let ends = [i, j].into_iter().flat_map(|k| {
-        let (a, b) = nodes(q, k);
-        [a, b]
-    });
-    let ends = ends.map(|p| snapshot::pixel_of(region, snap, p).0 - x);
+    let ends: Vec<f32> = [i, j]
+        .into_iter()
+        .flat_map(|k| {
+            let (a, b) = nodes(q, k);
+            [a, b]
+        })
+        .map(|p| snapshot::pixel_of(region, snap, p).0 - x)
+        .collect();
     // Clear of the chain: beyond the farthest node of the two blocks.
-    let reach = if side_clear {
-        ends.map(|d| dir * d).fold(0.0f32, f32::max)
-    } else {
-        ends.map(f32::abs).fold(0.0f32, f32::max)
+    let reach = |dir: f32| {
+        if side_clear {
+            ends.iter().map(|d| dir * d).fold(0.0f32, f32::max)
+        } else {
+            ends.iter().map(|d| d.abs()).fold(0.0f32, f32::max)
+        }
     };
-    let tip = x + dir * (reach + MARK_CLEAR);
+    // The far end of the label on a side: a mark whose words would leave
+    // the picture on its own side goes to the other side when they fit
+    // there (the last snapshot of a row has no room on its right).
+    let text = mark_text(theme);
+    let label_w = style::text_width(theme.font(), &mark.label, text);
+    let far = |dir: f32| x + dir * (reach(dir) + MARK_CLEAR + MARK_ARROW + MARK_SPACE + label_w);
+    let fits = |dir: f32| (0.0..=canvas.width()).contains(&far(dir));
+    let mut side = mark.side;
+    let asked = if side == HAlign::Left { -1.0 } else { 1.0 };
+    if !fits(asked) && fits(-asked) {
+        side = if side == HAlign::Left {
+            HAlign::Right
+        } else {
+            HAlign::Left
+        };
+    }
+    let dir = if side == HAlign::Left { -1.0 } else { 1.0 };
+    let tip = x + dir * (reach(dir) + MARK_CLEAR);
     let base = tip + dir * MARK_ARROW;
     canvas.polygon(&[(tip, y), (base, y - 4.5), (base, y + 4.5)], mark.color);
-    let align = if mark.side == HAlign::Left {
+    let align = if side == HAlign::Left {
         HAlign::Right
     } else {
         HAlign::Left
@@ -123,7 +144,7 @@ fn draw_mark(
     canvas.text(
         &mark.label,
         (base + dir * MARK_SPACE, y),
-        mark_text(theme),
+        text,
         mark.color,
         (align, VAlign::Middle),
     );

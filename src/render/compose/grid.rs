@@ -5,7 +5,7 @@ use crate::error::{Error, Result};
 use crate::render::canvas::Canvas;
 use crate::render::picture::Picture;
 use crate::render::snapshot::{self, Region, Snapshot};
-use crate::render::style::{DARK, HAlign, VAlign};
+use crate::render::style::{DARK, HAlign, VAlign, text_width};
 use crate::render::theme::Theme;
 use tiny_skia::{Pixmap, PixmapPaint, Transform};
 
@@ -130,8 +130,20 @@ impl Grid {
         let rows = panels.len().div_ceil(cols);
         let mut col_w = vec![0u32; cols];
         let mut row_h = vec![0u32; rows];
+        let theme = &layout.theme;
         for (k, p) in panels.iter().enumerate() {
             let (w, h) = p.image.pixel_size();
+            // A column holds its widest picture and its widest caption
+            // line (with a gap's room between neighbours' captions): a
+            // caption never runs under the next panel's.
+            let caption_w = p
+                .caption
+                .iter()
+                .flat_map(|c| c.lines())
+                .fold(0.0f32, |a, l| {
+                    a.max(text_width(theme.font(), l, theme.label))
+                });
+            let w = w.max(caption_w.ceil() as u32);
             col_w[k % cols] = col_w[k % cols].max(w);
             row_h[k / cols] = row_h[k / cols].max(h);
         }
