@@ -230,52 +230,84 @@ impl Picture {
     /// the style's size: one whose content is wider than the page, or
     /// taller than the page allows, at the style's scale (SPEC section 10:
     /// text is never scaled to fit). The message names the flag and the
-    /// smallest size that holds the figure. Composed figures at a style
-    /// whose text is above [`super::page_style::SMALLEST_COMPOSED_TEXT_PT`]
-    /// (a slide) may set their text down to that size.
+    /// smallest size that holds this layout (a layout that moves with the
+    /// size is searched by [`super::fitted`]). Composed figures at
+    /// a style whose text is above
+    /// [`super::page_style::SMALLEST_COMPOSED_TEXT_PT`] (a slide) may set
+    /// their text down to that size.
     pub fn check_print_scale(&self, style: &Style) -> Result<()> {
-        let (Some(w_pt), Some(max_h)) = (style.width_pt, style.max_height_pt()) else {
-            return Ok(());
-        };
+        match self.misfit(style) {
+            None => Ok(()),
+            Some((side, need)) => Err(self.refusal(style, side, need)),
+        }
+    }
+
+    /// The side of the page this picture overflows at `style`'s scale, and
+    /// the smallest that side may be, pt, in whole hundredths of an inch
+    /// (the unit a refusal names): at that size it fits, a hundredth less
+    /// it does not. `None` when it fits (or the style has no page).
+    pub fn misfit(&self, style: &Style) -> Option<(PageSide, f32)> {
+        let (w_pt, max_h) = (style.width_pt?, style.max_height_pt()?);
         let zoom = (style.font_pt / super::page_style::SMALLEST_COMPOSED_TEXT_PT).max(1.0);
         let px_per_pt = style.px_per_pt() * zoom;
         let (cw, ch) = self.content.unwrap_or((self.width, self.height));
         let (need_w, need_h) = (cw / px_per_pt, ch / px_per_pt);
-        // Rounding of whole design pixels is no shrinking.
-        let slack = 1.005;
+        let smallest = |need_pt: f32| (need_pt / PRINT_SLACK / 0.72).ceil() * 0.72;
+        if need_w > w_pt * PRINT_SLACK {
+            Some((PageSide::Width, smallest(need_w)))
+        } else if need_h > max_h * PRINT_SLACK {
+            Some((PageSide::Height, smallest(need_h)))
+        } else {
+            None
+        }
+    }
+
+    /// The refusal of this picture at `style` for overflowing `side`, the
+    /// smallest size that holds it being `smallest_pt`.
+    pub fn refusal(&self, style: &Style, side: PageSide, smallest_pt: f32) -> Error {
         let what = self
             .title()
             .filter(|t| !t.is_empty())
             .map_or("the figure".to_string(), |t| format!("\"{t}\""));
-        let size = |pt: f32| format!("{:.2}in", (pt / 72.0 * 100.0).ceil() / 100.0);
-        if need_w > w_pt * slack {
-            return Err(Error::bad_input(format!(
+        let size = |pt: f32| format!("{:.2}in", (pt / 72.0 * 100.0).round() / 100.0);
+        match side {
+            PageSide::Width => Error::bad_input(format!(
                 "--width {}: too narrow for {what} at {} pt text (it would print its text \
                  smaller); the smallest width that holds it is --width {}",
-                size(w_pt),
+                size(style.width_pt.unwrap_or(0.0)),
                 style.font_pt,
-                size(need_w)
-            )));
+                size(smallest_pt)
+            )),
+            PageSide::Height => {
+                let asked = match style.height_pt {
+                    Some(h) => format!("--height {}", size(h)),
+                    None => format!(
+                        "the {} page budget of --style {}",
+                        size(style.max_height_pt().unwrap_or(0.0)),
+                        style.name.name()
+                    ),
+                };
+                Error::bad_input(format!(
+                    "{asked}: too short for {what} at {} pt text (it would print its text \
+                     smaller); the smallest height that holds it is --height {}",
+                    style.font_pt,
+                    size(smallest_pt)
+                ))
+            }
         }
-        if need_h > max_h * slack {
-            let asked = match style.height_pt {
-                Some(h) => format!("--height {}", size(h)),
-                None => format!(
-                    "the {} page budget of --style {}",
-                    size(max_h),
-                    style.name.name()
-                ),
-            };
-            return Err(Error::bad_input(format!(
-                "{asked}: too short for {what} at {} pt text (it would print its text \
-                 smaller); the smallest height that holds it is --height {}",
-                style.font_pt,
-                size(need_h)
-            )));
-        }
-        Ok(())
     }
 }
+
+/// A side of the page: what `--width` or `--height` sets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PageSide {
+    Width,
+    Height,
+}
+
+/// Rounding of whole design pixels is no shrinking: a picture may be this
+/// much larger than its page (a pixel in 200).
+const PRINT_SLACK: f32 = 1.005;
 
 fn draw_items(items: &[Item], canvas: &mut impl Canvas) {
     for item in items {

@@ -220,13 +220,16 @@ pub fn filmstrip_figure(
             let p = compose_strips(&theme, scene, strips)?;
             Ok(p.check_print_scale(&tall).is_ok())
         };
-        let (mut lo, mut hi) = (asked, 2000.0f32);
-        if !fits(&mut strips, hi)? {
+        // Bisection over whole hundredths of an inch, the unit the message
+        // names: the size named fits, and one hundredth less does not.
+        let pt = |hundredths: u32| hundredths as f32 * 0.72;
+        let (mut lo, mut hi) = ((asked / 0.72).floor() as u32, 2778u32);
+        if !fits(&mut strips, pt(hi))? {
             return Err(e);
         }
-        while hi - lo > 0.5 {
-            let mid = 0.5 * (lo + hi);
-            if fits(&mut strips, mid)? {
+        while hi - lo > 1 {
+            let mid = (lo + hi) / 2;
+            if fits(&mut strips, pt(mid))? {
                 hi = mid;
             } else {
                 lo = mid;
@@ -238,7 +241,7 @@ pub fn filmstrip_figure(
             asked / 72.0,
             crate::render::style::plain_text(&describe::title(scene)),
             style.font_pt,
-            (hi / 72.0 * 100.0).ceil() / 100.0
+            hi as f32 / 100.0
         )));
     }
     let data = strips.into_iter().map(|(_, d)| d).collect();

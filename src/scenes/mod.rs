@@ -157,15 +157,21 @@ pub fn figure_picture(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunD
     match &scene.output {
         OutputSpec::Theory(spec) => {
             let input = theory::FigureInput::of(scene, spec);
-            Ok((theory::picture(theme, spec.figure, &input)?, vec![]))
+            crate::render::fitted(theme, |t| {
+                Ok((theory::picture(t, spec.figure, &input)?, vec![]))
+            })
         }
+        // Filmstrips search their own smallest height, without running
+        // their scenes again.
         OutputSpec::Filmstrip { .. } => dynamic::filmstrip_figure(theme, scene, None),
-        OutputSpec::Arrivals { .. } => arrivals::arrivals_figure(theme, scene),
-        OutputSpec::Energy => energy::energy_figure(theme, scene),
-        OutputSpec::Kymograph => {
-            let (picture, run) = kymograph::kymograph_figure(theme, scene, KYMOGRAPH_ROWS)?;
-            Ok((picture, vec![run]))
+        OutputSpec::Arrivals { .. } => {
+            crate::render::fitted(theme, |t| arrivals::arrivals_figure(t, scene))
         }
+        OutputSpec::Energy => crate::render::fitted(theme, |t| energy::energy_figure(t, scene)),
+        OutputSpec::Kymograph => crate::render::fitted(theme, |t| {
+            let (picture, run) = kymograph::kymograph_figure(t, scene, KYMOGRAPH_ROWS)?;
+            Ok((picture, vec![run]))
+        }),
         OutputSpec::Experiment(e) => experiments::experiment_figure(theme, scene, e.figure),
         OutputSpec::Movie { .. } | OutputSpec::Data | OutputSpec::Sweep(_) => {
             Err(Error::bad_input(format!(

@@ -200,12 +200,17 @@ pub fn write_outputs(
     output: &OutputOptions<'_>,
     sink: &mut dyn FnMut(&str, crate::output::data::Fill<'_>) -> Result<()>,
 ) -> Result<Vec<String>> {
-    let chart = chart::chart(&output.theme, plan, records)?;
+    // On the style's page (a slide: no taller than the slide); too small
+    // a page is refused naming the smallest that holds the chart.
+    let (picture, charted) = crate::render::fitted(&output.theme, |theme| {
+        Ok(match chart::chart(theme, plan, records)? {
+            Some(c) => (crate::render::Picture::from(c).fit_page(), true),
+            None => (crate::render::Picture::new(theme, 1.0, 1.0), false),
+        })
+    })?;
     let mut names = Vec::new();
     let mut pictures = Vec::new();
-    if let Some(c) = chart {
-        // On the style's page (a slide: no taller than the slide).
-        let picture = crate::render::Picture::from(c).fit_page();
+    if charted {
         for (f, bytes) in output
             .formats
             .as_slice()

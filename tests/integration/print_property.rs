@@ -25,8 +25,13 @@
 //!   phase diagrams (colour ramps) are left out of this one.
 //!
 //! A size the program refuses is a pass when it exits 2 naming the flag and
-//! the smallest size that works ("... is --height 2.75in"); that size is
+//! the smallest size that works ("... is --height 2.75in"), a hundredth of
+//! an inch less is refused too (it is the smallest), and the size named is
 //! then drawn and checked like any other.
+//!
+//! For charts (every view but the filmstrip), the plot area, measured from
+//! the axis and grid lines in the PDF, spans at least half the page each
+//! way ([`MIN_PLOT_FRACTION`]).
 //!
 //! `LADDER_PROPERTY_SEED` changes the seed (default fixed),
 //! `LADDER_PROPERTY_DRAWS` the number of figures (default 48),
@@ -46,6 +51,10 @@ const MIN_CVD_DELTA_E: f64 = 15.0;
 /// 8 pt), invisible; a text scaled to fit is far below (the arrivals
 /// title printed at 3.6 pt).
 const PRINT_TOLERANCE_PT: f64 = 0.05;
+/// The plot area keeps at least this fraction of its figure each way: a
+/// legend or a title that takes the room goes elsewhere (the arrivals
+/// view's legend once left its plot 30 pt of a 243 pt column).
+const MIN_PLOT_FRACTION: f64 = 0.5;
 /// Smallest any glyph may print, pt.
 const MIN_SCRIPT_PT: f64 = 5.0;
 
@@ -80,6 +89,9 @@ struct Draw {
     style: &'static str,
     categorical: bool,
     height_pt: Option<f64>,
+    /// A chart (arrivals, kymograph, sweep, theory plot): its plot area is
+    /// checked against the page.
+    chart: bool,
 }
 
 fn draw(rng: &mut Rng, k: usize) -> Draw {
@@ -87,11 +99,13 @@ fn draw(rng: &mut Rng, k: usize) -> Draw {
     let s = |v: &str| v.to_string();
     let name = format!("p{k}");
     let mut categorical = true;
+    let mut chart = true;
     let mut args: Vec<String> = match rng.below(6) {
         // Filmstrip, kymograph or arrivals of the user's own ladder.
         v @ 0..=2 => {
             let view = ["filmstrip", "kymograph", "arrivals"][v];
             categorical = view != "kymograph";
+            chart = view != "filmstrip";
             let n = 6 + rng.below(if view == "arrivals" { 25 } else { 9 });
             let sign = if rng.below(2) == 0 { 1.0 } else { -1.0 };
             let alpha = sign * rng.range(52.0, 80.0).round();
@@ -150,6 +164,8 @@ fn draw(rng: &mut Rng, k: usize) -> Draw {
                 "2d",
                 "S4",
             ]);
+            // Schematics of ladders have no axes.
+            chart = !matches!(id, "S4" | "2d" | "winding");
             vec![s("figure"), s(id)]
         }
     };
@@ -172,6 +188,7 @@ fn draw(rng: &mut Rng, k: usize) -> Draw {
         style,
         categorical,
         height_pt,
+        chart,
     }
 }
 
@@ -224,6 +241,10 @@ struct Page {
     height: f64,
     glyphs: Vec<Glyph>,
     colors: Vec<[u8; 3]>,
+    /// Stroked straight lines drawn as a path of one segment (axes, grid
+    /// lines, ticks; not the outlines of legend frames or markers), in
+    /// page points: (x0, y0, x1, y1).
+    lines: Vec<[f64; 4]>,
 }
 
 fn num(o: &lopdf::Object) -> f64 {
@@ -315,9 +336,30 @@ fn read_pdf(path: &Path) -> Page {
     let (mut tm, mut font, mut size, mut run) = (ctm, Vec::new(), 1.0, 0usize);
     let mut glyphs = Vec::new();
     let mut colors = Vec::new();
+    let mut lines = Vec::new();
+    // The current path's points (page space), and whether it is still one
+    // straight segment.
+    let mut path: Vec<(f64, f64)> = Vec::new();
+    let mut straight = true;
     for op in &content.operations {
         let a = &op.operands;
         match op.operator.as_str() {
+            "m" | "l" => {
+                if op.operator == "m" && !path.is_empty() {
+                    straight = false;
+                }
+                path.push(apply(&ctm, (num(&a[0]), num(&a[1]))));
+            }
+            "c" | "v" | "y" | "re" | "h" => straight = false,
+            "S" | "s" | "B" | "B*" | "b" | "b*" | "f" | "F" | "f*" | "n" => {
+                let stroked = matches!(op.operator.as_str(), "S" | "B" | "B*");
+                if stroked && straight && path.len() == 2 {
+                    let ((x0, y0), (x1, y1)) = (path[0], path[1]);
+                    lines.push([x0, y0, x1, y1]);
+                }
+                path.clear();
+                straight = true;
+            }
             "q" => stack.push(ctm),
             "Q" => ctm = stack.pop().unwrap_or(ctm),
             "cm" => {
@@ -397,6 +439,7 @@ fn read_pdf(path: &Path) -> Page {
         height: media[3] - media[1],
         glyphs,
         colors,
+        lines,
     }
 }
 
@@ -534,6 +577,19 @@ fn problems(d: &Draw, page: &Page) -> (Vec<String>, f64) {
             ));
         }
     }
+    if d.chart && (d.style == "paper" || d.style == "paper-wide") {
+        match plot_extent(page) {
+            None => out.push("no plot area (no axes) found in a chart".into()),
+            Some(((w, h), (fw, fh))) => {
+                if w < MIN_PLOT_FRACTION * fw || h < MIN_PLOT_FRACTION * fh {
+                    out.push(format!(
+                        "the plot area spans {w:.0} × {h:.0} pt of a {fw:.0} × {fh:.0} pt \
+                         figure (less than {MIN_PLOT_FRACTION} of it one way)"
+                    ));
+                }
+            }
+        }
+    }
     if d.categorical {
         let cats = categorical(&page.colors);
         for i in 0..cats.len() {
@@ -555,6 +611,80 @@ fn problems(d: &Draw, page: &Page) -> (Vec<String>, f64) {
     }
     out.dedup();
     (out, smallest)
+}
+
+/// The plot areas' extent across and down the figure, pt, and the
+/// figure's own extent (its text and lines; a slide centres a figure on a
+/// wider page). A plot area is found by its axes: a horizontal and a
+/// vertical line (10 pt or more) that meet at an end. Plot areas that
+/// share a column (overlap across) count once, by the widest, and those
+/// in different columns add up; the same down the rows. `None` when the
+/// page has no axes (a schematic of ladders).
+fn plot_extent(page: &Page) -> Option<((f64, f64), (f64, f64))> {
+    let long = |l: &&[f64; 4], across: bool| {
+        let (d_along, d_off) = if across {
+            (l[2] - l[0], l[3] - l[1])
+        } else {
+            (l[3] - l[1], l[2] - l[0])
+        };
+        d_off.abs() < 0.2 && d_along.abs() >= 10.0
+    };
+    let ends = |l: &[f64; 4]| [(l[0], l[1]), (l[2], l[3])];
+    let near = |a: (f64, f64), b: (f64, f64)| (a.0 - b.0).hypot(a.1 - b.1) < 1.5;
+    // Plot rectangles: [x0, y0, x1, y1].
+    let mut plots: Vec<[f64; 4]> = Vec::new();
+    for h in page.lines.iter().filter(|l| long(l, true)) {
+        for v in page.lines.iter().filter(|l| long(l, false)) {
+            if ends(h).iter().any(|&a| ends(v).iter().any(|&b| near(a, b))) {
+                plots.push([
+                    h[0].min(h[2]),
+                    v[1].min(v[3]),
+                    h[0].max(h[2]),
+                    v[1].max(v[3]),
+                ]);
+            }
+        }
+    }
+    if plots.is_empty() {
+        return None;
+    }
+    // Sum over clusters of overlapping intervals of each cluster's longest.
+    let spread = |lo: usize, hi: usize| {
+        let mut spans: Vec<(f64, f64)> = plots.iter().map(|p| (p[lo], p[hi])).collect();
+        spans.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let (mut total, mut end, mut best) = (0.0, f64::NEG_INFINITY, 0.0f64);
+        for (a, b) in spans {
+            if a >= end {
+                total += best;
+                best = 0.0;
+            }
+            best = best.max(b - a);
+            end = end.max(b);
+        }
+        total + best
+    };
+    let (mut x0, mut y0, mut x1, mut y1) = (
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    );
+    let boxes = page
+        .glyphs
+        .iter()
+        .map(|g| g.rect)
+        .chain(page.lines.iter().map(|l| {
+            [
+                l[0].min(l[2]),
+                l[1].min(l[3]),
+                l[0].max(l[2]),
+                l[1].max(l[3]),
+            ]
+        }));
+    for r in boxes {
+        (x0, y0, x1, y1) = (x0.min(r[0]), y0.min(r[1]), x1.max(r[2]), y1.max(r[3]));
+    }
+    Some(((spread(0, 2), spread(1, 3)), (x1 - x0, y1 - y0)))
 }
 
 /// Runs `args` into `dir`; the PDF written, or the refusal's message.
@@ -619,10 +749,35 @@ fn random_figures_keep_the_print_rules() {
                     failures.push(format!("{:?}: refusal is not one line: {msg}", d.args));
                 }
                 let at = d.args.iter().position(|a| *a == flag);
-                match at {
-                    Some(i) => d.args[i + 1] = value.clone(),
-                    None => d.args.extend([flag.clone(), value.clone()]),
+                let set = |args: &mut Vec<String>, v: &str| match at {
+                    Some(i) => args[i + 1] = v.to_string(),
+                    None => {
+                        args.truncate(d.args.len());
+                        args.extend([flag.clone(), v.to_string()]);
+                    }
+                };
+                // The size named is the smallest: a hundredth of an inch
+                // less is refused too.
+                if let Some(v) = value.strip_suffix("in").and_then(|v| v.parse::<f64>().ok()) {
+                    let mut below = d.args.clone();
+                    set(&mut below, &format!("{:.2}in", v - 0.01));
+                    match run(&below, &dir) {
+                        Err((Some(2), _)) => {}
+                        other => failures.push(format!(
+                            "{below:?}: a hundredth below the size named ({value}) is not \
+                             refused: {:?}",
+                            other.map(|_| "drawn")
+                        )),
+                    }
+                } else {
+                    failures.push(format!(
+                        "{:?}: the size named is not in inches: {msg}",
+                        d.args
+                    ));
                 }
+                let mut args = d.args.clone();
+                set(&mut args, &value);
+                d.args = args;
                 if flag == "--height" {
                     d.height_pt = value
                         .trim_end_matches("in")
@@ -727,6 +882,7 @@ fn captions_and_marks_stay_apart_and_on_the_page() {
             style,
             categorical: true,
             height_pt: None,
+            chart: false,
         };
         let pdf =
             run(&d.args, &root.join(k.to_string())).unwrap_or_else(|e| panic!("{args:?}: {e:?}"));
