@@ -69,24 +69,56 @@ pub fn cell_chart(theme: &Theme, c: &CellChart, width: u32, height: u32) -> Resu
         let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
         let root = titled(theme, root, c.title.as_deref(), width)?;
-        let (main, side) = root.split_horizontally(width.saturating_sub(LEGEND_W));
-        draw_cells(theme, &main, c)?;
-        draw_legend(theme, &side, c)?;
+        // The legend beside the cells when the cells keep half the width
+        // that way, else under them in rows (SPEC section 10: the plot
+        // area keeps at least half of its panel each way).
+        if legend_beside(theme, c, width) {
+            let (main, side) = root.split_horizontally(width.saturating_sub(LEGEND_W));
+            draw_cells(theme, &main, c)?;
+            draw_legend(theme, &side, c)?;
+        } else {
+            let below = legend_below_height(theme, c, width);
+            let h = root.dim_in_pixel().1;
+            let (main, bottom) = root.split_vertically(h.saturating_sub(below));
+            draw_cells(theme, &main, c)?;
+            draw_legend_below(theme, &bottom, c)?;
+        }
         root.present().map_err(plot_error)?;
     }
     let svg = svg.replace("<rect ", "<rect shape-rendering=\"crispEdges\" ");
     Chart::from_svg(theme, &svg, width, height)
 }
 
-fn draw_cells(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
-    let (nx, ny) = (c.xs.len() as f64, c.ys.len() as f64);
-    // Room left of the cells for the widest tick label, the axis label
-    // (turned on its side) and the gaps between them: at least 64 px.
+/// Whether the legend goes beside the cells (else under them): when the
+/// cells keep half the chart's width that way.
+fn legend_beside(theme: &Theme, c: &CellChart, width: u32) -> bool {
+    width.saturating_sub(LEGEND_W + y_area(theme, c) + 20) >= width / 2
+}
+
+/// The width of the column the cells are drawn in (the chart's width
+/// less the legend's beside it): panels stacked under the chart take
+/// this width so that their x axes line up with the cells.
+pub fn cells_width(theme: &Theme, c: &CellChart, width: u32) -> u32 {
+    if legend_beside(theme, c, width) {
+        width.saturating_sub(LEGEND_W)
+    } else {
+        width
+    }
+}
+
+/// Room left of the cells for the widest tick label, the axis label
+/// (turned on its side) and the gaps between them: at least 64 px.
+fn y_area(theme: &Theme, c: &CellChart) -> u32 {
     let widest =
         c.ys.iter()
             .map(|&y| style::text_width(theme.font(), &short_number(y), theme.tick))
             .fold(0.0f32, f32::max);
-    let y_area = (widest + size::LABEL + 11.0).floor().max(64.0) as u32;
+    (widest + size::LABEL + 11.0).floor().max(64.0) as u32
+}
+
+fn draw_cells(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
+    let (nx, ny) = (c.xs.len() as f64, c.ys.len() as f64);
+    let y_area = y_area(theme, c);
     // As many x labels as fit side by side with a gap (at most 10).
     let widest_x =
         c.xs.iter()
@@ -193,6 +225,135 @@ fn draw_legend(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
                 plotters::style::text_anchor::VPos::Center,
             ));
             area.draw(&Text::new(label, (8 + w + 7, ty), anchored))
+                .map_err(plot_error)?;
+        }
+    }
+    Ok(())
+}
+
+/// The legend under the cells: its entries side by side, wrapped into
+/// rows of `width`, then the shade bar across, its label above and its
+/// three tick labels under it. Sizes follow the tick text (`theme.tick`).
+struct Below {
+    /// Each entry's (x, row) and the number of rows.
+    entries: Vec<(i32, i32)>,
+    rows: i32,
+    /// Height of a row of entries, and of the swatch.
+    row_h: i32,
+    swatch: i32,
+    /// The shade bar's left end and length, and its height.
+    bar: (i32, i32),
+    bar_h: i32,
+}
+
+fn below_layout(theme: &Theme, c: &CellChart, width: u32) -> Below {
+    let t = theme.tick;
+    let (row_h, swatch, gap) = ((2.0 * t) as i32, (1.4 * t) as i32, (1.2 * t) as i32);
+    let left = 8;
+    let (mut x, mut row) = (left, 0);
+    let mut entries = Vec::new();
+    for (label, _) in &c.legend {
+        let w = swatch + (0.5 * t) as i32 + style::text_width(theme.font(), label, t).ceil() as i32;
+        if x > left && x + w > width as i32 - left {
+            x = left;
+            row += 1;
+        }
+        entries.push((x, row));
+        x += w + gap;
+    }
+    let rows = if c.legend.is_empty() { 0 } else { row + 1 };
+    // The bar inset by half its widest tick label at each end.
+    let half_label = c
+        .shade
+        .as_ref()
+        .map(|b| {
+            same_format(&[b.lo, b.hi])
+                .iter()
+                .map(|l| style::text_width(theme.font(), l, t))
+                .fold(0.0f32, f32::max)
+        })
+        .unwrap_or(0.0)
+        .ceil() as i32
+        / 2
+        + 2;
+    let bar_len = (width as i32 - 2 * (left + half_label)).clamp(40, (16.0 * t) as i32);
+    Below {
+        entries,
+        rows,
+        row_h,
+        swatch,
+        bar: (left + half_label, bar_len),
+        bar_h: (1.1 * t) as i32,
+    }
+}
+
+/// Height, pixels, of the legend under the cells.
+fn legend_below_height(theme: &Theme, c: &CellChart, width: u32) -> u32 {
+    let b = below_layout(theme, c, width);
+    let t = theme.tick as i32;
+    let bar = if c.shade.is_some() {
+        // Label line, bar, tick and tick label.
+        2 * t + b.bar_h + 2 * t
+    } else {
+        0
+    };
+    (b.rows * b.row_h + bar + t / 2).max(0) as u32
+}
+
+fn draw_legend_below(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
+    let text = font(theme, theme.tick).into_font().color(&rgb(DARK));
+    let b = below_layout(theme, c, area.dim_in_pixel().0);
+    let t = theme.tick as i32;
+    let left_middle = text.clone().pos(plotters::style::text_anchor::Pos::new(
+        plotters::style::text_anchor::HPos::Left,
+        plotters::style::text_anchor::VPos::Center,
+    ));
+    for ((label, color), (x, row)) in c.legend.iter().zip(&b.entries) {
+        let y = row * b.row_h + (b.row_h - b.swatch) / 2;
+        area.draw(&Rectangle::new(
+            [(*x, y), (x + b.swatch, y + b.swatch)],
+            rgb(*color).filled(),
+        ))
+        .map_err(plot_error)?;
+        let at = (x + b.swatch + t / 2, y + b.swatch / 2);
+        area.draw(&Text::new(label.clone(), at, left_middle.clone()))
+            .map_err(plot_error)?;
+    }
+    if let Some(bar) = &c.shade {
+        let mut y = b.rows * b.row_h + t;
+        let (x0, len) = b.bar;
+        area.draw(&Text::new(bar.label.clone(), (x0, y), left_middle.clone()))
+            .map_err(plot_error)?;
+        y += t;
+        let steps = 32;
+        for i in 0..steps {
+            let f = i as f64 / (steps - 1) as f64;
+            let (a, z) = (x0 + i * len / steps, x0 + (i + 1) * len / steps);
+            area.draw(&Rectangle::new(
+                [(a, y), (z, y + b.bar_h)],
+                rgb(style::mix(bar.from, bar.to, f)).filled(),
+            ))
+            .map_err(plot_error)?;
+        }
+        let mid = if bar.log && bar.lo > 0.0 {
+            (bar.lo * bar.hi).sqrt()
+        } else {
+            0.5 * (bar.lo + bar.hi)
+        };
+        let labels = same_format(&[bar.lo, mid, bar.hi]);
+        let ty = y + b.bar_h;
+        for (k, label) in labels.into_iter().enumerate() {
+            let tx = x0 + (k as i32) * len / 2;
+            area.draw(&PathElement::new(
+                vec![(tx, ty), (tx, ty + 4)],
+                rgb(DARK).stroke_width(1),
+            ))
+            .map_err(plot_error)?;
+            let anchored = text.clone().pos(plotters::style::text_anchor::Pos::new(
+                plotters::style::text_anchor::HPos::Center,
+                plotters::style::text_anchor::VPos::Top,
+            ));
+            area.draw(&Text::new(label, (tx, ty + 6), anchored))
                 .map_err(plot_error)?;
         }
     }

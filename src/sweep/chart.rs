@@ -568,7 +568,8 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
             .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
         let range = if even && xs.len() > 1 {
             let h = 0.5 * (xs[1] - xs[0]);
-            Some((width(theme) - 190, (xs[0] - h, xs[xs.len() - 1] + h)))
+            let w = crate::render::cells::cells_width(theme, &chart, width(theme));
+            Some((w, (xs[0] - h, xs[xs.len() - 1] + h)))
         } else {
             None
         };
