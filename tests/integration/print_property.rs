@@ -169,7 +169,7 @@ fn draw(rng: &mut Rng, k: usize) -> Draw {
             // Schematics of ladders have no axes; figure 2c's chart shares
             // its figure with drawings of ladders (a panel of their own),
             // which the figure-wide measure would count against it.
-            chart = !matches!(id, "S4" | "2d" | "winding" | "2c");
+            chart = !matches!(id, "S4" | "2d" | "2c");
             vec![s("figure"), s(id)]
         }
     };

@@ -78,7 +78,7 @@ fn check_size(width: u32, height: u32) -> Result<()> {
 
 /// Left, right, top, bottom label areas and margins in pixels.
 const Y_LABEL_AREA: u32 = 64;
-const X_LABEL_AREA: u32 = 50;
+pub const X_LABEL_AREA: u32 = 50;
 
 /// Width of a y label area that holds tick labels as wide as the widest of
 /// `ticks` (measured in the style's font), the tick marks, and the rotated

@@ -8,7 +8,7 @@ use super::{FigureInput, configuration, frame, grid, signed_deg};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::model::Ladder;
-use crate::render::charts::{line_chart, short_number};
+use crate::render::charts::{X_LABEL_AREA, line_chart, short_number};
 use crate::render::compose::Panel;
 use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign, size};
 use crate::render::theme::palette;
@@ -23,6 +23,19 @@ use std::f64::consts::PI;
 fn chart(theme: &Theme, spec: &ChartSpec, w: u32, h: u32) -> Result<Picture> {
     let (w, h) = fit(theme, (w, h));
     Ok(line_chart(theme, spec, w, h)?.into())
+}
+
+/// Panel `k` of a figure, holding a chart titled `title`: at a journal
+/// style (no titles inside the figure, SPEC section 10) the title is the
+/// panel's label instead, lettered, "(a) α = 15°"; elsewhere the chart
+/// draws its own title.
+fn titled_panel(theme: &Theme, k: usize, title: &str, image: Picture) -> Panel {
+    if theme.titles {
+        Panel::new(image)
+    } else {
+        let letter = char::from(b'a' + (k % 26) as u8);
+        Panel::new(image).label(format!("({letter}) {title}"))
+    }
 }
 
 /// Width of a theory figure's page at the screen style, pixels.
@@ -218,8 +231,21 @@ pub fn dispersion(theme: &Theme, input: &FigureInput) -> Result<Picture> {
         (3, fit(theme, (300, 250)))
     };
     let mut panels = Vec::new();
-    for (l, d) in lines.iter().zip(&dots) {
-        panels.push(Panel::new(dispersion_panel(theme, l, d, y_max, size)?));
+    let count = lines.len();
+    for (k, (l, d)) in lines.iter().zip(&dots).enumerate() {
+        let title = format!("α = {}°", short_number(l.alpha_deg));
+        // At a journal style the x axis is labelled once, under the
+        // bottom row: the rows above share it (their plots keep their
+        // height, the panels lose the label's band).
+        let shared = !theme.titles && k + cols < count;
+        let (w, h) = size;
+        let size = if shared {
+            (w, h.saturating_sub(X_LABEL_AREA - 4).max(60))
+        } else {
+            size
+        };
+        let chart = dispersion_panel(theme, l, d, y_max, size, &title, shared)?;
+        panels.push(titled_panel(theme, k, &title, chart));
     }
     let mut body = grid(theme, &panels, cols)?;
     body = stack(&body, &dispersion_key(theme, body.pixel_size().0)?);
@@ -243,12 +269,15 @@ fn dispersion_panel(
     dots: &DispersionCurve,
     y_max: f64,
     (w, h): (u32, u32),
+    title: &str,
+    shared_x: bool,
 ) -> Result<Picture> {
+    let x = Axis::new("qb").range(-PI, PI);
     let mut spec = ChartSpec::new(
-        Axis::new("qb").range(-PI, PI),
+        if shared_x { x.shared() } else { x },
         Axis::new("ω/ω₀").range(0.0, y_max),
     )
-    .title(format!("α = {}°", short_number(lines.alpha_deg)));
+    .title(title);
     for (branch, color) in [(1, RED), (0, BLUE)] {
         let pick = |f: fn(&crate::theory::figures::DispersionSample) -> [f64; 2]| {
             lines
@@ -342,9 +371,10 @@ fn stack(top: &Picture, bottom: &Picture) -> Picture {
 pub fn winding(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let (n, b, alpha) = (input.model.n, input.model.b, input.model.alpha.abs());
     let mut panels = Vec::new();
-    for sign in [1.0, -1.0] {
+    for (k, sign) in [1.0, -1.0].into_iter().enumerate() {
         let p = input.params(n, b, sign * alpha)?;
-        panels.push(Panel::new(winding_panel(theme, &p)?));
+        let (chart, title) = winding_panel(theme, &p)?;
+        panels.push(titled_panel(theme, k, &title, chart));
     }
     let body = grid(theme, &panels, columns(theme, 2))?;
     let notes = format!(
@@ -364,7 +394,8 @@ pub fn winding(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     )
 }
 
-fn winding_panel(theme: &Theme, p: &crate::model::Params) -> Result<Picture> {
+/// A winding panel and its title.
+fn winding_panel(theme: &Theme, p: &crate::model::Params) -> Result<(Picture, String)> {
     let l = det_loop(p, 720)?;
     let n = l
         .winding_number
@@ -377,8 +408,9 @@ fn winding_panel(theme: &Theme, p: &crate::model::Params) -> Result<Picture> {
         }
         v
     };
+    let title = format!("α = {}: n = {n}", signed_deg(l.alpha_deg));
     let mut spec = ChartSpec::new(Axis::new("Re det C"), Axis::new("Im det C"))
-        .title(format!("α = {}: n = {n}", signed_deg(l.alpha_deg)))
+        .title(title.clone())
         .series(Series::line(
             "det C / (e^{iqb} − 1)",
             closed(&l.reduced),
@@ -396,7 +428,7 @@ fn winding_panel(theme: &Theme, p: &crate::model::Params) -> Result<Picture> {
     spec.equal_aspect = true;
     spec.zero_lines = true;
     spec.legend = Legend::UpperLeft;
-    chart(theme, &spec, 440, 440)
+    Ok((chart(theme, &spec, 440, 440)?, title))
 }
 
 /// The edge-mode figure: |δθ_n| of the reduced chain's null vector (dots)
@@ -404,8 +436,18 @@ fn winding_panel(theme: &Theme, p: &crate::model::Params) -> Result<Picture> {
 /// left (top edge), α < 0 right (bottom edge).
 pub fn edge_mode(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let mut panels = Vec::new();
-    for sign in [1.0, -1.0] {
-        panels.push(Panel::new(edge_panel(theme, input, sign)?));
+    for (k, sign) in [1.0, -1.0].into_iter().enumerate() {
+        let title = if sign > 0.0 {
+            "α > 0: localised at the top"
+        } else {
+            "α < 0: localised at the bottom"
+        };
+        panels.push(titled_panel(
+            theme,
+            k,
+            title,
+            edge_panel(theme, input, sign, title)?,
+        ));
     }
     let (n, b) = (input.model.n, input.model.b);
     let body = grid(theme, &panels, columns(theme, 2))?;
@@ -428,17 +470,13 @@ pub fn edge_mode(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     )
 }
 
-fn edge_panel(theme: &Theme, input: &FigureInput, sign: f64) -> Result<Picture> {
+fn edge_panel(theme: &Theme, input: &FigureInput, sign: f64, title: &str) -> Result<Picture> {
     let (n, b) = (input.model.n, input.model.b);
     let mut spec = ChartSpec::new(
         Axis::new("block n").range(0.5, n as f64 + 0.5),
         Axis::new("|δθ_{n}| / max").log(),
     )
-    .title(if sign > 0.0 {
-        "α > 0: localised at the top"
-    } else {
-        "α < 0: localised at the bottom"
-    });
+    .title(title);
     for (k, &alpha) in input.alphas.iter().enumerate() {
         let e = edge_mode_profile(&input.params(n, b, sign * alpha.abs())?)?;
         let color = [RED, BLUE]
