@@ -898,6 +898,112 @@ mod tests {
         );
     }
 
+    /// A label's runs at the serif font, italic ones between asterisks,
+    /// scripts as markup.
+    fn marked(label: &str) -> String {
+        typeset(FontChoice::Serif, label)
+            .into_iter()
+            .map(|r| {
+                let t = if r.italic {
+                    format!("*{}*", r.text)
+                } else {
+                    r.text
+                };
+                match r.shift {
+                    Shift::Base => t,
+                    Shift::Super => format!("^{{{t}}}"),
+                    Shift::Sub => format!("_{{{t}}}"),
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn symbols_are_italic_units_and_words_upright() {
+        let table = [
+            ("t/τ = 300", "*t*/*τ* = 300"),
+            ("|α| (°)", "|*α*| (°)"),
+            ("gap ω₊(0) τ", "gap *ω*_{+}(0) *τ*"),
+            ("ΔU / mgs", "Δ*U* / *mgs*"),
+            ("c_{kink}", "*c*_{kink}"),
+            ("c_{kink} (cm/s)", "*c*_{kink} (cm/s)"),
+            ("(a1)  kink α = 60°", "(a1)  kink *α* = 60°"),
+            ("(b′) as printed", "(b′) as printed"),
+            ("(i) over (ii) in grey", "(i) over (ii) in grey"),
+            ("block N turned first", "block *N* turned first"),
+            ("a kink", "a kink"),
+            ("a single minimum at θ = 0", "a single minimum at *θ* = 0"),
+            ("a/b = 1.2 (α = ±66.5°)", "*a*/*b* = 1.2 (*α* = ±66.5°)"),
+            ("a", "*a*"),
+            ("U(θ), a² = b² + 4s²", "*U*(*θ*), *a*² = *b*² + 4*s*²"),
+            ("x_{n} (cm)", "*x*_{*n*} (cm)"),
+            ("time t (s)", "time *t* (s)"),
+            ("speed (blocks/τ)", "speed (blocks/*τ*)"),
+            ("speed (10^{−3} blocks/τ)", "speed (10^{−3} blocks/*τ*)"),
+            ("kink, 0.1 Hz: 12.7 cm/s", "kink, 0.1 Hz: 12.7 cm/s"),
+            ("kink: propagated", "kink: propagated"),
+            ("gravity G = mg/(ks)", "gravity *G* = *mg*/(*ks*)"),
+            ("U_{min} = −2mgb", "*U*_{min} = −2*mgb*"),
+            ("det C / (e^{iqb} − 1)", "det *C* / (*e*^{*iqb*} − 1)"),
+            ("Re det C", "Re det *C*"),
+            ("|δθ_{n}| / max", "|*δθ*_{*n*}| / max"),
+            ("position (n − 1) b (cm)", "position (*n* − 1) *b* (cm)"),
+            (
+                "equilibrium angle α (degrees)",
+                "equilibrium angle *α* (degrees)",
+            ),
+            ("α = +60°: κb = 1.95", "*α* = +60°: *κb* = 1.95"),
+            ("pin friction μ_{p}", "pin friction *μ*_{*p*}"),
+            ("Δx", "Δ*x*"),
+            ("ΩΘ ωθ", "ΩΘ *ωθ*"),
+            ("model: no wave (at 0)", "model: no wave (at 0)"),
+            ("the 5th block", "the 5th block"),
+        ];
+        for (label, want) in table {
+            assert_eq!(marked(label), want, "{label}");
+        }
+        // The screen and slide font stays upright.
+        assert!(
+            typeset(FontChoice::Sans, "t/τ = 300 (s)")
+                .iter()
+                .all(|r| !r.italic)
+        );
+    }
+
+    #[test]
+    fn italic_runs_are_measured_and_drawn_in_the_italic_face() {
+        let serif = FontChoice::Serif;
+        let (up, it) = (
+            face_of(serif, false).unwrap(),
+            face_of(serif, true).unwrap(),
+        );
+        // The two faces differ (an italic α is narrower than an upright one).
+        assert_ne!(plain_width(up, "α", 20.0), plain_width(it, "α", 20.0));
+        assert_eq!(text_width(serif, "α", 20.0), plain_width(it, "α", 20.0));
+        assert_eq!(
+            text_width(serif, "kink", 20.0),
+            plain_width(up, "kink", 20.0)
+        );
+        // The italic correction before a closing bar.
+        let w = text_width(serif, "|α|", 20.0);
+        let parts = plain_width(up, "|", 20.0) * 2.0 + plain_width(it, "α", 20.0);
+        assert!(
+            (w - parts - ITALIC_CORRECTION * 20.0).abs() < 1e-3,
+            "{w} {parts}"
+        );
+        let mut p = white_pixmap(80, 30).unwrap();
+        draw_text(
+            &mut p,
+            serif,
+            "t/τ = 1",
+            (2.0, 2.0),
+            16.0,
+            DARK,
+            (HAlign::Left, VAlign::Top),
+        );
+        assert!(p.pixels().iter().any(|c| c.red() < 100));
+    }
+
     #[test]
     fn diverging_ends() {
         assert_eq!(diverging(-1.0), KYMO_NEG);
