@@ -79,6 +79,7 @@ fn attribute<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::{Style, StyleName};
 
     #[test]
     fn chart_text_markup_becomes_tspans() {
@@ -90,5 +91,21 @@ mod tests {
             "{out}"
         );
         assert!(out.contains("<text font-size=\"8\">plain</text>"));
+    }
+
+    #[test]
+    fn print_chart_text_sets_symbols_in_italic() {
+        let paper = Style::named(StyleName::Paper);
+        let svg = "<svg><text font-size=\"10\">|α| (°)\n</text>\
+                   <text font-size=\"10\">kink &amp; antikink</text></svg>";
+        let out = typeset_svg_text(&Theme::of(&paper), svg);
+        assert!(
+            out.contains(
+                "|<tspan font-style=\"italic\">α</tspan><tspan dx=\"0.60\">| (°)\n</tspan>"
+            ),
+            "{out}"
+        );
+        // All-upright text is left as plotters wrote it (entities included).
+        assert!(out.contains(">kink &amp; antikink</text>"), "{out}");
     }
 }
