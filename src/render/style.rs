@@ -372,10 +372,11 @@ pub fn typeset(font: FontChoice, text: &str) -> Vec<Run> {
 }
 
 /// Units (and unit-like words) a label may print: always upright, and
-/// what a trailing units group may hold ([`italic_chars`]).
-const UNIT_WORDS: [&str; 17] = [
+/// what a trailing units group may hold ([`italic_chars`]). No capital
+/// letters alone (N is the number of blocks, not newtons).
+const UNIT_WORDS: [&str; 15] = [
     "s", "ms", "m", "cm", "mm", "km", "g", "kg", "Hz", "kHz", "rad", "deg", "degrees", "blocks",
-    "block", "N", "J",
+    "block",
 ];
 
 /// Single-letter units that are upright only in a units context: after a
@@ -958,6 +959,7 @@ mod tests {
             ("ΩΘ ωθ", "ΩΘ *ωθ*"),
             ("model: no wave (at 0)", "model: no wave (at 0)"),
             ("the 5th block", "the 5th block"),
+            ("chain length (N)", "chain length (*N*)"),
         ];
         for (label, want) in table {
             assert_eq!(marked(label), want, "{label}");
