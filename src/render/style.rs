@@ -25,6 +25,10 @@ pub const FONT_FAMILY: &str = "DejaVu Sans";
 pub const SERIF_BYTES: &[u8] = include_bytes!("../../assets/fonts/LiberationSerif-Regular.ttf");
 /// Its family name (as in the file).
 pub const SERIF_FAMILY: &str = "Liberation Serif";
+/// The italic face of the serif font (same family and licence), for the
+/// italic runs of print text ([`italic_chars`]).
+pub const SERIF_ITALIC_BYTES: &[u8] =
+    include_bytes!("../../assets/fonts/LiberationSerif-Italic.ttf");
 
 /// The family name of `font`.
 pub fn family_of(font: FontChoice) -> &'static str {
@@ -118,6 +122,7 @@ pub fn fontdb() -> Arc<resvg::usvg::fontdb::Database> {
         let mut db = resvg::usvg::fontdb::Database::new();
         db.load_font_data(FONT_BYTES.to_vec());
         db.load_font_data(SERIF_BYTES.to_vec());
+        db.load_font_data(SERIF_ITALIC_BYTES.to_vec());
         db.set_sans_serif_family(FONT_FAMILY);
         db.set_serif_family(SERIF_FAMILY);
         Arc::new(db)
@@ -154,14 +159,25 @@ pub fn register_plotters_font() {
 
 /// The bundled font of `choice` for canvas text, parsed once.
 pub fn font_of(choice: FontChoice) -> Option<&'static FontRef<'static>> {
-    static FONTS: OnceLock<[Option<FontRef<'static>>; 2]> = OnceLock::new();
+    face_of(choice, false)
+}
+
+/// The bundled face of `choice` for canvas text, italic or upright, parsed
+/// once. Only the serif font has an italic face; the sans font's text is
+/// all upright ([`typeset`] never marks it italic).
+pub fn face_of(choice: FontChoice, italic: bool) -> Option<&'static FontRef<'static>> {
+    static FONTS: OnceLock<[Option<FontRef<'static>>; 3]> = OnceLock::new();
     let fonts = FONTS.get_or_init(|| {
         [
             FontRef::try_from_slice(FONT_BYTES).ok(),
             FontRef::try_from_slice(SERIF_BYTES).ok(),
+            FontRef::try_from_slice(SERIF_ITALIC_BYTES).ok(),
         ]
     });
-    fonts[choice as usize].as_ref()
+    match (choice, italic) {
+        (FontChoice::Serif, true) => fonts[2].as_ref(),
+        _ => fonts[choice as usize].as_ref(),
+    }
 }
 
 /// Unicode super- and subscript characters and what they are in markup.
@@ -312,6 +328,269 @@ pub fn runs(font: FontChoice, text: &str) -> Vec<(Shift, String)> {
         .collect()
 }
 
+/// A run of typeset text: one baseline shift, one face (italic or
+/// upright), and its characters (no markup).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Run {
+    /// Where it sits relative to the baseline.
+    pub shift: Shift,
+    /// Set in the italic face ([`italic_chars`]).
+    pub italic: bool,
+    /// Its text.
+    pub text: String,
+}
+
+/// Splits typeset text into [`Run`]s: the markup of [`runs`], and in the
+/// serif (print) font each of those split further where [`italic_chars`]
+/// sets symbols in italic. In the sans font every run is upright.
+pub fn typeset(font: FontChoice, text: &str) -> Vec<Run> {
+    let text = scripts_as_markup(font, text);
+    let parts = markup_runs(&text);
+    let mask = match font {
+        FontChoice::Serif => italic_chars(&parts),
+        FontChoice::Sans => parts
+            .iter()
+            .map(|(_, t)| vec![false; t.chars().count()])
+            .collect(),
+    };
+    let mut out: Vec<Run> = Vec::new();
+    for ((shift, t), m) in parts.into_iter().zip(mask) {
+        let first = out.len();
+        for (c, italic) in t.chars().zip(m) {
+            let len = out.len();
+            match out.last_mut() {
+                Some(r) if len > first && r.italic == italic => r.text.push(c),
+                _ => out.push(Run {
+                    shift,
+                    italic,
+                    text: c.to_string(),
+                }),
+            }
+        }
+    }
+    out
+}
+
+/// Units (and unit-like words) a label may print: always upright, and
+/// what a trailing units group may hold ([`italic_chars`]). No capital
+/// letters alone (N is the number of blocks, not newtons).
+const UNIT_WORDS: [&str; 15] = [
+    "s", "ms", "m", "cm", "mm", "km", "g", "kg", "Hz", "kHz", "rad", "deg", "degrees", "blocks",
+    "block",
+];
+
+/// Single-letter units that are upright only in a units context: after a
+/// number and a space (`2 s`), after a unit and a slash (`cm/s`), or in a
+/// trailing units group (`t (s)`); elsewhere they are symbols (`s`, `m`,
+/// `g` of the model).
+const SHORT_UNITS: [&str; 3] = ["s", "m", "g"];
+
+/// Whether `c` is a lowercase Greek letter (italic, as in TeX).
+fn lowercase_greek(c: char) -> bool {
+    matches!(c, 'α'..='ω' | 'ϑ' | 'ϕ' | 'ϖ' | 'ϵ' | 'ϱ')
+}
+
+/// Which characters of a label (its markup runs, each a list of flags in
+/// character order) are set in italic at the print styles. The rule, as a
+/// journal sets a figure's text (TeX's conventions):
+///
+/// - **Greek**: lowercase letters (α κ τ ω θ φ μ ε …) italic; uppercase
+///   (Δ Θ Ω) upright. τ, the paper's unit of time, is a symbol like the
+///   others: italic also in a units group ("speed (blocks/τ)").
+/// - **Latin**: words are maximal runs of ASCII letters; anything else
+///   (digits, spaces, operators, `/ = ( ) | , .`, Greek letters and markup
+///   boundaries) separates them. A single letter standing alone is a symbol,
+///   italic (t, N, n, x, b, k, c, m, e, g, C, U). Exceptions, upright: the
+///   article "a"/"A" (followed by a space and a word: "a kink", "a single
+///   minimum"; "a/b" and a lone "a" are the length a); a unit letter (s, m,
+///   g) after a number and a space or after a unit and a slash ("12.7 cm/s").
+/// - Words of two or more letters are upright (kink, block, speed, det, Re,
+///   max, and descriptive subscripts: the "kink" of `c_{kink}`, the "min"
+///   of `U_{min}`), except products of symbols, italic: a lowercase word
+///   without a vowel (a e i o u y) that is not a unit (mg, mgs, mgb, ks,
+///   qb; but cm, Hz, mm upright), or any word in a superscript (the iqb of
+///   `e^{iqb}`, an exponent). Units of [`UNIT_WORDS`] are upright wherever
+///   they stand.
+/// - **Units group**: the last parenthesized group of a label, when it
+///   reads as units (only unit words, τ, digits, °, %, `/ · × −` and
+///   spaces: "(°)", "(s)", "(cm/s)", "(blocks/τ)", "(10^{−3} blocks/τ)"),
+///   is upright but for τ.
+/// - **Panel labels**: a leading parenthesized group of one to four
+///   lowercase letters, then digits or primes ("(a)", "(a1)", "(b′)",
+///   "(iii)"), is upright.
+/// - Everything else (digits, punctuation, operators, °) is upright.
+pub fn italic_chars(parts: &[(Shift, &str)]) -> Vec<Vec<bool>> {
+    // Every character with its part, in order; markup boundaries separate
+    // words (the runs of Latin letters below never cross parts).
+    let flat: Vec<(char, usize)> = parts
+        .iter()
+        .enumerate()
+        .flat_map(|(k, (_, t))| t.chars().map(move |c| (c, k)))
+        .collect();
+    let n = flat.len();
+    let ch = |i: usize| flat[i].0;
+    let mut upright = vec![false; n];
+    if let Some(end) = panel_label_end(&flat) {
+        upright[..end].iter_mut().for_each(|u| *u = true);
+    }
+    if let Some((a, b)) = units_group(&flat) {
+        upright[a..b].iter_mut().for_each(|u| *u = true);
+    }
+    let mut italic: Vec<bool> = (0..n).map(|i| lowercase_greek(ch(i))).collect();
+    let mut i = 0;
+    while i < n {
+        if !ch(i).is_ascii_alphabetic() {
+            i += 1;
+            continue;
+        }
+        let part = flat[i].1;
+        let mut j = i;
+        while j < n && ch(j).is_ascii_alphabetic() && flat[j].1 == part {
+            j += 1;
+        }
+        let word: String = flat[i..j].iter().map(|&(c, _)| c).collect();
+        let before: Vec<char> = flat[..i].iter().map(|&(c, _)| c).collect();
+        let after: Vec<char> = flat[j..].iter().map(|&(c, _)| c).collect();
+        let symbol = !upright[i]
+            && if word.len() == 1 {
+                let article = (word == "a" || word == "A")
+                    && before.last().is_none_or(|c| c.is_whitespace() || *c == '(')
+                    && after.first() == Some(&' ')
+                    && after.get(1).is_some_and(|c| c.is_alphabetic());
+                let unit = SHORT_UNITS.contains(&word.as_str()) && unit_context(&before);
+                !article && !unit
+            } else if parts[part].0 == Shift::Super {
+                true
+            } else if UNIT_WORDS.contains(&word.as_str()) {
+                false
+            } else {
+                let ordinal = ["th", "st", "nd", "rd"].contains(&word.as_str())
+                    && before.last().is_some_and(|c| c.is_ascii_digit());
+                word.chars()
+                    .all(|c| c.is_ascii_lowercase() && !"aeiouy".contains(c))
+                    && !ordinal
+            };
+        if symbol {
+            italic[i..j].iter_mut().for_each(|f| *f = true);
+        }
+        i = j;
+    }
+    let mut out: Vec<Vec<bool>> = parts.iter().map(|_| Vec::new()).collect();
+    for (&(_, k), f) in flat.iter().zip(italic) {
+        out[k].push(f);
+    }
+    out
+}
+
+/// Whether a unit letter after `before` is a unit: after a number and one
+/// space ("2 s"), or after a unit and a slash ("cm/s").
+fn unit_context(before: &[char]) -> bool {
+    match before {
+        [.., d, ' '] if d.is_ascii_digit() => true,
+        [rest @ .., '/'] => {
+            let start = rest
+                .iter()
+                .rposition(|c| !c.is_ascii_alphabetic())
+                .map_or(0, |p| p + 1);
+            let w: String = rest[start..].iter().collect();
+            UNIT_WORDS.contains(&w.as_str())
+        }
+        _ => false,
+    }
+}
+
+/// The end (exclusive) of a leading panel label: `(` one to four lowercase
+/// letters, digits or primes, `)`, then a space or the end.
+fn panel_label_end(flat: &[(char, usize)]) -> Option<usize> {
+    let c: Vec<char> = flat.iter().map(|&(c, _)| c).collect();
+    if c.first() != Some(&'(') {
+        return None;
+    }
+    let letters = c[1..].iter().take_while(|c| c.is_ascii_lowercase()).count();
+    if !(1..=4).contains(&letters) {
+        return None;
+    }
+    let tail = c[1 + letters..]
+        .iter()
+        .take_while(|c| c.is_ascii_digit() || matches!(c, '′' | '\'' | '″'))
+        .count();
+    let close = 1 + letters + tail;
+    (c.get(close) == Some(&')') && c.get(close + 1).is_none_or(|c| c.is_whitespace()))
+        .then_some(close + 1)
+}
+
+/// The span (open to close parenthesis, inclusive) of the label's last
+/// parenthesized group when it ends the label and reads as units.
+fn units_group(flat: &[(char, usize)]) -> Option<(usize, usize)> {
+    let c: Vec<char> = flat.iter().map(|&(c, _)| c).collect();
+    let close = c.iter().rposition(|c| !c.is_whitespace())?;
+    if c[close] != ')' {
+        return None;
+    }
+    let mut depth = 0;
+    let mut open = None;
+    for i in (0..=close).rev() {
+        match c[i] {
+            ')' => depth += 1,
+            '(' => {
+                depth -= 1;
+                if depth == 0 {
+                    open = Some(i);
+                    break;
+                }
+            }
+            _ => {}
+        }
+    }
+    let open = open?;
+    let inner = &c[open + 1..close];
+    let mut has_unit = false;
+    let mut k = 0;
+    while k < inner.len() {
+        let x = inner[k];
+        if x.is_ascii_alphabetic() {
+            let end = k + inner[k..]
+                .iter()
+                .take_while(|c| c.is_ascii_alphabetic())
+                .count();
+            let w: String = inner[k..end].iter().collect();
+            if !UNIT_WORDS.contains(&w.as_str()) {
+                return None;
+            }
+            has_unit = true;
+            k = end;
+            continue;
+        }
+        if matches!(x, '°' | '%') {
+            has_unit = true;
+        } else if !(x.is_ascii_digit() || x.is_whitespace() || "τ/·×−-+.,′".contains(x)) {
+            return None;
+        }
+        k += 1;
+    }
+    has_unit.then_some((open, close + 1))
+}
+
+/// Space added after italic run `prev` before `next`, in units of the
+/// text's size: TeX's italic correction, so that an italic letter's
+/// overhang does not touch an upright `)`, `|`, `]`, `/` or a superscript
+/// that follows it.
+pub fn italic_correction(prev: &Run, next: &Run) -> f32 {
+    let touching = next.shift == Shift::Super
+        || (!next.italic
+            && next
+                .text
+                .starts_with([')', '|', ']', '/', '}', '²', '³', '′']));
+    if prev.italic && touching {
+        ITALIC_CORRECTION * prev.shift.scale()
+    } else {
+        0.0
+    }
+}
+
+/// The italic correction of [`italic_correction`], in units of the size.
+pub const ITALIC_CORRECTION: f32 = 0.06;
+
 /// [`runs`] of text already free of script characters.
 fn markup_runs(text: &str) -> Vec<(Shift, &str)> {
     let mut out = Vec::new();
@@ -384,11 +663,18 @@ fn plain_width(font: &FontRef<'_>, text: &str, size: f32) -> f32 {
 
 /// Width in pixels of typeset `text` (see [`runs`]) at font size `size`.
 pub fn text_width(font: FontChoice, text: &str, size: f32) -> f32 {
-    let Some(f) = font_of(font) else { return 0.0 };
-    runs(font, text)
-        .into_iter()
-        .map(|(shift, t)| plain_width(f, &t, size * shift.scale()))
-        .sum()
+    let runs = typeset(font, text);
+    let mut w = 0.0;
+    for (k, run) in runs.iter().enumerate() {
+        let Some(f) = face_of(font, run.italic) else {
+            return 0.0;
+        };
+        w += plain_width(f, &run.text, size * run.shift.scale());
+        if let Some(next) = runs.get(k + 1) {
+            w += italic_correction(run, next) * size;
+        }
+    }
+    w
 }
 
 /// The font's ascent at font size `size` (top of the em box to baseline).
@@ -429,10 +715,22 @@ pub fn draw_text(
     rgb: Rgb,
     align: (HAlign, VAlign),
 ) {
-    let Some(font) = font_of(choice) else { return };
     let width = text_width(choice, text, size);
     let (mut pen, baseline) = text_origin(choice, at, width, size, align);
-    for (shift, run) in runs(choice, text) {
+    let runs = typeset(choice, text);
+    for (
+        k,
+        Run {
+            shift,
+            italic,
+            text: run,
+        },
+    ) in runs.iter().enumerate()
+    {
+        let Some(font) = face_of(choice, *italic) else {
+            return;
+        };
+        let shift = *shift;
         let run_size = size * shift.scale();
         let sf = font.as_scaled(px_scale(font, run_size));
         let y = baseline - shift.rise() * size;
@@ -457,6 +755,9 @@ pub fn draw_text(
             }
             pen += sf.h_advance(id);
             prev = Some(id);
+        }
+        if let Some(next) = runs.get(k + 1) {
+            pen += italic_correction(&runs[k], next) * size;
         }
     }
 }
@@ -596,6 +897,113 @@ mod tests {
                 (Shift::Sub, "+".to_string())
             ]
         );
+    }
+
+    /// A label's runs at the serif font, italic ones between asterisks,
+    /// scripts as markup.
+    fn marked(label: &str) -> String {
+        typeset(FontChoice::Serif, label)
+            .into_iter()
+            .map(|r| {
+                let t = if r.italic {
+                    format!("*{}*", r.text)
+                } else {
+                    r.text
+                };
+                match r.shift {
+                    Shift::Base => t,
+                    Shift::Super => format!("^{{{t}}}"),
+                    Shift::Sub => format!("_{{{t}}}"),
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn symbols_are_italic_units_and_words_upright() {
+        let table = [
+            ("t/τ = 300", "*t*/*τ* = 300"),
+            ("|α| (°)", "|*α*| (°)"),
+            ("gap ω₊(0) τ", "gap *ω*_{+}(0) *τ*"),
+            ("ΔU / mgs", "Δ*U* / *mgs*"),
+            ("c_{kink}", "*c*_{kink}"),
+            ("c_{kink} (cm/s)", "*c*_{kink} (cm/s)"),
+            ("(a1)  kink α = 60°", "(a1)  kink *α* = 60°"),
+            ("(b′) as printed", "(b′) as printed"),
+            ("(i) over (ii) in grey", "(i) over (ii) in grey"),
+            ("block N turned first", "block *N* turned first"),
+            ("a kink", "a kink"),
+            ("a single minimum at θ = 0", "a single minimum at *θ* = 0"),
+            ("a/b = 1.2 (α = ±66.5°)", "*a*/*b* = 1.2 (*α* = ±66.5°)"),
+            ("a", "*a*"),
+            ("U(θ), a² = b² + 4s²", "*U*(*θ*), *a*² = *b*² + 4*s*²"),
+            ("x_{n} (cm)", "*x*_{*n*} (cm)"),
+            ("time t (s)", "time *t* (s)"),
+            ("speed (blocks/τ)", "speed (blocks/*τ*)"),
+            ("speed (10^{−3} blocks/τ)", "speed (10^{−3} blocks/*τ*)"),
+            ("kink, 0.1 Hz: 12.7 cm/s", "kink, 0.1 Hz: 12.7 cm/s"),
+            ("kink: propagated", "kink: propagated"),
+            ("gravity G = mg/(ks)", "gravity *G* = *mg*/(*ks*)"),
+            ("U_{min} = −2mgb", "*U*_{min} = −2*mgb*"),
+            ("det C / (e^{iqb} − 1)", "det *C* / (*e*^{*iqb*} − 1)"),
+            ("Re det C", "Re det *C*"),
+            ("|δθ_{n}| / max", "|*δθ*_{*n*}| / max"),
+            ("position (n − 1) b (cm)", "position (*n* − 1) *b* (cm)"),
+            (
+                "equilibrium angle α (degrees)",
+                "equilibrium angle *α* (degrees)",
+            ),
+            ("α = +60°: κb = 1.95", "*α* = +60°: *κb* = 1.95"),
+            ("pin friction μ_{p}", "pin friction *μ*_{*p*}"),
+            ("Δx", "Δ*x*"),
+            ("ΩΘ ωθ", "ΩΘ *ωθ*"),
+            ("model: no wave (at 0)", "model: no wave (at 0)"),
+            ("the 5th block", "the 5th block"),
+            ("chain length (N)", "chain length (*N*)"),
+        ];
+        for (label, want) in table {
+            assert_eq!(marked(label), want, "{label}");
+        }
+        // The screen and slide font stays upright.
+        assert!(
+            typeset(FontChoice::Sans, "t/τ = 300 (s)")
+                .iter()
+                .all(|r| !r.italic)
+        );
+    }
+
+    #[test]
+    fn italic_runs_are_measured_and_drawn_in_the_italic_face() {
+        let serif = FontChoice::Serif;
+        let (up, it) = (
+            face_of(serif, false).unwrap(),
+            face_of(serif, true).unwrap(),
+        );
+        // The two faces differ (an italic α is narrower than an upright one).
+        assert_ne!(plain_width(up, "α", 20.0), plain_width(it, "α", 20.0));
+        assert_eq!(text_width(serif, "α", 20.0), plain_width(it, "α", 20.0));
+        assert_eq!(
+            text_width(serif, "kink", 20.0),
+            plain_width(up, "kink", 20.0)
+        );
+        // The italic correction before a closing bar.
+        let w = text_width(serif, "|α|", 20.0);
+        let parts = plain_width(up, "|", 20.0) * 2.0 + plain_width(it, "α", 20.0);
+        assert!(
+            (w - parts - ITALIC_CORRECTION * 20.0).abs() < 1e-3,
+            "{w} {parts}"
+        );
+        let mut p = white_pixmap(80, 30).unwrap();
+        draw_text(
+            &mut p,
+            serif,
+            "t/τ = 1",
+            (2.0, 2.0),
+            16.0,
+            DARK,
+            (HAlign::Left, VAlign::Top),
+        );
+        assert!(p.pixels().iter().any(|c| c.red() < 100));
     }
 
     #[test]

@@ -183,21 +183,54 @@ fn text_element(
         num(size),
         style::hex(color)
     );
-    for (shift, run) in style::runs(font, text) {
-        match shift {
-            Shift::Base => out.push_str(&escape(&run)),
-            _ => {
-                let _ = write!(
-                    out,
-                    "<tspan font-size=\"{}\" baseline-shift=\"{}\">{}</tspan>",
-                    num(size * shift.scale()),
-                    num(size * shift.rise()),
-                    escape(&run)
-                );
-            }
-        }
-    }
+    out.push_str(&runs_markup(
+        &style::typeset(font, text),
+        size,
+        &num,
+        &escape,
+    ));
     out.push_str("</text>\n");
+}
+
+/// The content of a `<text>` of `size` holding `runs`: upright text on the
+/// baseline as it is, and a `<tspan>` for each run that is shifted
+/// (`font-size`, `baseline-shift`), italic (`font-style="italic"`) or moved
+/// right by an italic correction (`dx`), each run's text through `escape`
+/// and each number through `num`. Shared with the chart typesetter.
+pub(super) fn runs_markup(
+    runs: &[style::Run],
+    size: f32,
+    num: &dyn Fn(f32) -> String,
+    escape: &dyn Fn(&str) -> String,
+) -> String {
+    let mut out = String::new();
+    let mut dx = 0.0;
+    for (k, run) in runs.iter().enumerate() {
+        let mut attrs = String::new();
+        if run.shift != Shift::Base {
+            let _ = write!(
+                attrs,
+                " font-size=\"{}\" baseline-shift=\"{}\"",
+                num(size * run.shift.scale()),
+                num(size * run.shift.rise())
+            );
+        }
+        if run.italic {
+            attrs.push_str(" font-style=\"italic\"");
+        }
+        if dx > 0.0 {
+            let _ = write!(attrs, " dx=\"{}\"", num(dx));
+        }
+        if attrs.is_empty() {
+            out.push_str(&escape(&run.text));
+        } else {
+            let _ = write!(out, "<tspan{attrs}>{}</tspan>", escape(&run.text));
+        }
+        dx = runs
+            .get(k + 1)
+            .map_or(0.0, |next| style::italic_correction(run, next) * size);
+    }
+    out
 }
 
 fn escape(s: &str) -> String {

@@ -29,6 +29,7 @@ mod formats;
 mod gallery;
 mod golden;
 mod hostile;
+mod italic;
 mod kernels;
 mod messages;
 mod mp4_quality;
