@@ -244,6 +244,8 @@ struct Below {
     /// The shade bar's left end and length, and its height.
     bar: (i32, i32),
     bar_h: i32,
+    /// Whether the bar's label stands left of the bar (else above it).
+    label_beside: bool,
 }
 
 fn below_layout(theme: &Theme, c: &CellChart, width: u32) -> Below {
@@ -276,14 +278,24 @@ fn below_layout(theme: &Theme, c: &CellChart, width: u32) -> Below {
         .ceil() as i32
         / 2
         + 2;
-    let bar_len = (width as i32 - 2 * (left + half_label)).clamp(40, (16.0 * t) as i32);
+    // The bar's label left of the bar when a bar of 4 em still fits
+    // beside it, else on a line of its own above the bar.
+    let label_w = c.shade.as_ref().map_or(0, |b| {
+        style::text_width(theme.font(), &b.label, t).ceil() as i32
+    });
+    let room = width as i32 - 2 * left;
+    let beside_at = label_w + gap + 2 * half_label;
+    let label_beside = beside_at + (4.0 * t) as i32 <= room;
+    let start = left + half_label + if label_beside { label_w + gap } else { 0 };
+    let bar_len = (width as i32 - left - half_label - start).clamp(40, (16.0 * t) as i32);
     Below {
         entries,
         rows,
         row_h,
         swatch,
-        bar: (left + half_label, bar_len),
+        bar: (start, bar_len),
         bar_h: (1.1 * t) as i32,
+        label_beside,
     }
 }
 
@@ -292,8 +304,9 @@ fn legend_below_height(theme: &Theme, c: &CellChart, width: u32) -> u32 {
     let b = below_layout(theme, c, width);
     let t = theme.tick as i32;
     let bar = if c.shade.is_some() {
-        // Label line, bar, tick and tick label.
-        2 * t + b.bar_h + 2 * t
+        // Label line (unless beside), bar, tick and tick label.
+        let label = if b.label_beside { t / 2 } else { 2 * t };
+        label + b.bar_h + 2 * t
     } else {
         0
     };
@@ -320,11 +333,19 @@ fn draw_legend_below(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()
             .map_err(plot_error)?;
     }
     if let Some(bar) = &c.shade {
-        let mut y = b.rows * b.row_h + t;
         let (x0, len) = b.bar;
-        area.draw(&Text::new(bar.label.clone(), (x0, y), left_middle.clone()))
-            .map_err(plot_error)?;
-        y += t;
+        let y = if b.label_beside {
+            let y = b.rows * b.row_h + t / 2;
+            let at = (8, y + b.bar_h / 2);
+            area.draw(&Text::new(bar.label.clone(), at, left_middle.clone()))
+                .map_err(plot_error)?;
+            y
+        } else {
+            let y = b.rows * b.row_h + t;
+            area.draw(&Text::new(bar.label.clone(), (x0, y), left_middle.clone()))
+                .map_err(plot_error)?;
+            y + t
+        };
         let steps = 32;
         for i in 0..steps {
             let f = i as f64 / (steps - 1) as f64;

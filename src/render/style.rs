@@ -403,7 +403,8 @@ fn lowercase_greek(c: char) -> bool {
 ///   italic (t, N, n, x, b, k, c, m, e, g, C, U). Exceptions, upright: the
 ///   article "a"/"A" (followed by a space and a word: "a kink", "a single
 ///   minimum"; "a/b" and a lone "a" are the length a); a unit letter (s, m,
-///   g) after a number and a space or after a unit and a slash ("12.7 cm/s").
+///   g) after a number and a space or after a unit and a slash ("12.7 cm/s");
+///   the springs' names A and B (labels, upright in the paper's text).
 /// - Words of two or more letters are upright (kink, block, speed, det, Re,
 ///   max, and descriptive subscripts: the "kink" of `c_{kink}`, the "min"
 ///   of `U_{min}`), except products of symbols, italic: a lowercase word
@@ -458,7 +459,10 @@ pub fn italic_chars(parts: &[(Shift, &str)]) -> Vec<Vec<bool>> {
                     && after.first() == Some(&' ')
                     && after.get(1).is_some_and(|c| c.is_alphabetic());
                 let unit = SHORT_UNITS.contains(&word.as_str()) && unit_context(&before);
-                !article && !unit
+                // The springs' names, upright as the paper sets them ("the
+                // springs A and B").
+                let spring = word == "A" || word == "B";
+                !article && !unit && !spring
             } else if parts[part].0 == Shift::Super {
                 true
             } else if UNIT_WORDS.contains(&word.as_str()) {
@@ -923,6 +927,7 @@ mod tests {
     fn symbols_are_italic_units_and_words_upright() {
         let table = [
             ("t/τ = 300", "*t*/*τ* = 300"),
+            ("springs A and B", "springs A and B"),
             ("|α| (°)", "|*α*| (°)"),
             ("gap ω₊(0) τ", "gap *ω*_{+}(0) *τ*"),
             ("ΔU / mgs", "Δ*U* / *mgs*"),

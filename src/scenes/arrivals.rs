@@ -40,7 +40,9 @@ fn fitted_line(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
 pub fn arrivals_figure(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     let (spec, data) = arrivals_chart(scene)?;
     let (w, h) = theme.style.frame((820, 560));
-    let picture = Picture::from(charts::line_chart(theme, &spec, w, h)?).fit_page();
+    // A legend under the plot makes the chart taller, within the page.
+    let most = theme.style.fit_box().map_or(u32::MAX, |(_, bh)| bh as u32);
+    let picture = Picture::from(charts::line_chart_growing(theme, &spec, w, h, most)?).fit_page();
     Ok((picture.titled(describe::title(scene)), data))
 }
 

@@ -36,6 +36,53 @@ pub fn line_chart(theme: &Theme, spec: &ChartSpec, width: u32, height: u32) -> R
         spec
     };
     style::register_plotters_font();
+    let (pass, xr, yr) = layout(theme, spec, width, height)?;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_error)?;
+        draw_any(theme, &root, spec, pass, xr, yr)?;
+        root.present().map_err(plot_error)?;
+    }
+    Chart::from_svg(theme, &svg, width, height)
+}
+
+/// [`line_chart`] `width` wide and `height` tall, or taller by the
+/// legend's band when the legend goes under the plot (up to
+/// `max_height`), so that the plot keeps the height it would have had
+/// (SPEC section 10: the figure grows within the page budget; the plot
+/// keeps at least half of its panel).
+pub fn line_chart_growing(
+    theme: &Theme,
+    spec: &ChartSpec,
+    width: u32,
+    height: u32,
+    max_height: u32,
+) -> Result<Chart> {
+    check_size(width, height)?;
+    let untitled = ChartSpec {
+        title: spec.title.clone().filter(|_| theme.titles),
+        ..spec.clone()
+    };
+    style::register_plotters_font();
+    let (pass, _, _) = layout(theme, &untitled, width, height)?;
+    let height = if pass.legend == Legend::Below {
+        let band = below_grid(theme, &untitled, width).4;
+        (height + band).min(max_height.max(height))
+    } else {
+        height
+    };
+    line_chart(theme, spec, width, height)
+}
+
+/// Where the legend goes and the axes' ranges, for `spec` drawn
+/// `width × height`.
+fn layout(
+    theme: &Theme,
+    spec: &ChartSpec,
+    width: u32,
+    height: u32,
+) -> Result<(Pass, Range<f64>, Range<f64>)> {
     let (x0, y0) = (data_range(spec, true)?, data_range(spec, false)?);
     let mut pass = Pass {
         legend: if has_labels(spec) {
@@ -62,14 +109,7 @@ pub fn line_chart(theme: &Theme, spec: &ChartSpec, width: u32, height: u32) -> R
         }
     }
     pass.probe = false;
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
-        root.fill(&WHITE).map_err(plot_error)?;
-        draw_any(theme, &root, spec, pass, xr, yr)?;
-        root.present().map_err(plot_error)?;
-    }
-    Chart::from_svg(theme, &svg, width, height)
+    Ok((pass, xr, yr))
 }
 
 /// Dispatches on the four combinations of linear and log axes.

@@ -19,7 +19,7 @@ mod ticks;
 mod title;
 
 pub use kymograph::{Kymograph, kymograph, polarisation_rows};
-pub use line::line_chart;
+pub use line::{line_chart, line_chart_growing};
 pub use rasterize::{Chart, rasterize_svg, rasterize_tree};
 pub use spec::{Axis, ChartSpec, Legend, LineStyle, Marker, Scale, Series};
 pub use svg_text::typeset_svg_text;

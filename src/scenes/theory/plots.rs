@@ -230,25 +230,40 @@ pub fn dispersion(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     } else {
         (3, fit(theme, (300, 250)))
     };
-    let mut panels = Vec::new();
     let count = lines.len();
-    for (k, (l, d)) in lines.iter().zip(&dots).enumerate() {
-        let title = format!("α = {}°", short_number(l.alpha_deg));
-        // At a journal style the x axis is labelled once, under the
-        // bottom row: the rows above share it (their plots keep their
-        // height, the panels lose the label's band).
-        let shared = !theme.titles && k + cols < count;
-        let (w, h) = size;
-        let size = if shared {
-            (w, h.saturating_sub(X_LABEL_AREA - 4).max(60))
-        } else {
-            size
-        };
-        let chart = dispersion_panel(theme, l, d, y_max, size, &title, shared)?;
-        panels.push(titled_panel(theme, k, &title, chart));
+    let draw = |(w, h): (u32, u32)| -> Result<Picture> {
+        let mut panels = Vec::new();
+        for (k, (l, d)) in lines.iter().zip(&dots).enumerate() {
+            let title = format!("α = {}°", short_number(l.alpha_deg));
+            // At a journal style the x axis is labelled once, under the
+            // bottom row: the rows above share it (their plots keep their
+            // height, the panels lose the label's band).
+            let shared = !theme.titles && k + cols < count;
+            let size = if shared {
+                (w, h.saturating_sub(X_LABEL_AREA - 4).max(60))
+            } else {
+                (w, h)
+            };
+            let chart = dispersion_panel(theme, l, d, y_max, size, &title, shared)?;
+            panels.push(titled_panel(theme, k, &title, chart));
+        }
+        let body = grid(theme, &panels, cols)?;
+        Ok(stack(&body, &dispersion_key(theme, body.pixel_size().0)?))
+    };
+    let mut body = draw(size)?;
+    // On a narrow page the panels grow taller into the page budget left
+    // (the plots keep half of the figure: SPEC section 10), no taller than
+    // wide.
+    if narrow(theme)
+        && let Some((_, budget)) = theme.style.fit_box()
+    {
+        let rows = count.div_ceil(cols) as u32;
+        let room = budget - body.pixel_size().1 as f32 - 2.0 * (size::MARGIN + size::GAP) as f32;
+        if room >= rows as f32 {
+            let grown = size.1 + (room / rows as f32).floor() as u32;
+            body = draw((size.0, grown.min(size.0)))?;
+        }
     }
-    let mut body = grid(theme, &panels, cols)?;
-    body = stack(&body, &dispersion_key(theme, body.pixel_size().0)?);
     let notes = "ω₀ = √(k/m) = 1/τ, I = m s²/4, constraint δv_{n} = (−1)ⁿ(s/2) sin α δθ_{n}. The printed closed form is √2 too small for this ω₀ \
                  (docs/paper-errata.md item 9): it is exact if ω₀ is read as √(2k/m). The \
                  eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I), \
