@@ -105,6 +105,10 @@ pub struct Theme {
     pub tick: f32,
     /// Panel labels "(a)", "(b1)".
     pub panel_label: f32,
+    /// Least clearance between a panel label and the text of its panel,
+    /// design pixels: a quarter of the label's size (3.75 px, 2 pt at
+    /// `paper`), so that "(a)" reads apart from the axis label under it.
+    pub panel_label_clear: f32,
     /// Smallest text other than scripts, in design pixels: the style's
     /// size at a print style.
     pub min_text: f32,
@@ -118,6 +122,10 @@ pub struct Theme {
     pub marker: f32,
     /// Outer margin.
     pub margin: f32,
+    /// Blank margin a chart keeps on each side inside its own box, design
+    /// pixels (14 px at every style): room for the half of an end tick
+    /// label that reaches past the plot.
+    pub chart_margin: f32,
     /// Gap between panels.
     pub gap: f32,
     /// Tallest a figure may print, in points (none at screen).
@@ -150,6 +158,12 @@ impl Theme {
             } else {
                 size::PANEL_LABEL
             },
+            panel_label_clear: 0.25
+                * if print {
+                    size::LABEL
+                } else {
+                    size::PANEL_LABEL
+                },
             min_text,
             min_script: if print {
                 MIN_SCRIPT_PT * px_per_pt
@@ -160,6 +174,7 @@ impl Theme {
             thin: 1.0,
             marker: 4.0,
             margin: size::MARGIN as f32,
+            chart_margin: 14.0,
             gap: size::GAP as f32,
             max_height_pt: style.max_height_pt(),
         }

@@ -105,7 +105,7 @@ fn draw_heatmap(theme: &Theme, area: &Area<'_>, k: &Kymograph<'_>) -> Result<()>
     let t1 = if t1 > t0 { t1 } else { t0 + 1.0 };
     let n = k.n as f64;
     let mut chart = ChartBuilder::on(area)
-        .margin(14)
+        .margin(theme.chart_margin as u32)
         .margin_right(4)
         .x_label_area_size(X_LABEL_AREA)
         .y_label_area_size(y_label_area(theme, &end_labels(t0, t1, Scale::Linear)))
@@ -168,7 +168,7 @@ fn heat_cells(k: &Kymograph<'_>, rows: usize, t_end: f64) -> Vec<Rectangle<(f64,
 
 fn draw_colorbar(theme: &Theme, area: &Area<'_>, label: &str) -> Result<()> {
     let mut chart = ChartBuilder::on(area)
-        .margin(14)
+        .margin(theme.chart_margin as u32)
         .margin_left(8)
         .margin_right(4)
         .caption(

@@ -196,7 +196,7 @@ where
     // A shared x axis is labelled by the panel below: no room for numbers.
     let x_area = if spec.x.shared { 4 } else { X_LABEL_AREA };
     builder
-        .margin(14)
+        .margin(theme.chart_margin as u32)
         .x_label_area_size(x_area)
         .y_label_area_size(y_area);
     if let Some(t) = spec.title.as_ref().filter(|_| one_line) {
