@@ -55,6 +55,7 @@ pub struct ChainMark {
     /// Where along the chain, in blocks: 1 is the centre of block 1, 2.5
     /// halfway between the centres of blocks 2 and 3.
     pub at: f64,
+    /// The words beside the triangle (none when empty).
     pub label: String,
     pub color: crate::encode::Rgb,
     /// The side of the ladder the pointer and its label go on (`Left` or
@@ -136,6 +137,9 @@ fn draw_mark(
     let tip = x + dir * (reach(dir) + MARK_CLEAR);
     let base = tip + dir * MARK_ARROW;
     canvas.polygon(&[(tip, y), (base, y - 4.5), (base, y + 4.5)], mark.color);
+    if mark.label.is_empty() {
+        return;
+    }
     let align = if side == HAlign::Left {
         HAlign::Right
     } else {
@@ -361,7 +365,8 @@ impl StripPlan {
     /// its aspect ratio kept, and as tall as the box leaves room for), the
     /// one with the fewest rows that draws the ladder at least
     /// [`FIT_SHARE`] as large as the best does. Snapshots with marks keep
-    /// [`MARKED_SHARE`] of their width (the marks' words need it).
+    /// [`MARKED_SHARE`] of their width (the marks' words need it; marks
+    /// without words do not).
     /// Unchanged without a box.
     fn fitted(self, frames: &[Frame<'_>], opts: &FilmstripOptions) -> StripPlan {
         let Some((box_w, box_h)) = opts.fit else {
@@ -392,7 +397,8 @@ impl StripPlan {
                 .map(|l| style::text_width(theme.font(), &l, theme.label))
                 .fold(0.0f32, f32::max)
         };
-        let marked = opts.marks.iter().any(|m| !m.is_empty());
+        // Words beside the chain need the room; a bare triangle does not.
+        let marked = opts.marks.iter().flatten().any(|m| !m.label.is_empty());
         let n = frames.len().max(1);
         // (rows, width, height, two-line captions, ladder scale) of each way.
         let mut ways = Vec::new();
