@@ -126,6 +126,31 @@ pub struct Theme {
     /// pixels (14 px at every style): room for the half of an end tick
     /// label that reaches past the plot.
     pub chart_margin: f32,
+    /// Least width of a chart's y label area (64 px): tick labels, ticks
+    /// and the rotated axis label (wider where the tick labels need it).
+    pub y_label_area: u32,
+    /// Height of a chart's x label area (50 px): tick labels and the
+    /// axis label under them.
+    pub x_label_area: u32,
+    /// Height of the x label area of a panel whose x axis is shared with
+    /// the panel below (4 px: its ticks only, the labels are below).
+    pub shared_x_area: u32,
+    /// Pixels a y tick mark and its gap take beside the tick labels (10).
+    pub tick_gap: f32,
+    /// The rotated y axis label's line, in ems of [`Theme::label`] (1.3).
+    pub axis_label_line_em: f32,
+    /// Pixels between the rotated y axis label and the area's edge (6).
+    pub axis_label_gap: f32,
+    /// A legend row right of the plot or inside it, in ems of
+    /// [`Theme::tick`] (1.55: the line and room for a marker).
+    pub legend_row_em: f32,
+    /// A legend row under the plot, in ems of [`Theme::tick`] (1.45).
+    pub below_row_em: f32,
+    /// Pixels between a chart's plot and a legend right of it (12).
+    pub legend_gap: i32,
+    /// Pixels kept beside a legend column right of the plot when its
+    /// room is made and when deciding whether it fits (8).
+    pub legend_gap_min: u32,
     /// Composed figures' bands, in ems (multiples of the text size they
     /// hold, so that they follow the style's text size): the label band
     /// above a panel, 1.5 panel-label sizes (the label's line and a gap).
@@ -231,6 +256,16 @@ impl Theme {
             marker: 4.0,
             margin: size::MARGIN as f32,
             chart_margin: 14.0,
+            y_label_area: 64,
+            x_label_area: 50,
+            shared_x_area: 4,
+            tick_gap: 10.0,
+            axis_label_line_em: 1.3,
+            axis_label_gap: 6.0,
+            legend_row_em: 1.55,
+            below_row_em: 1.45,
+            legend_gap: 12,
+            legend_gap_min: 8,
             label_band_em: 1.5,
             caption_lead_em: 0.5,
             caption_line_em: 1.2,
