@@ -105,6 +105,10 @@ pub struct Theme {
     pub tick: f32,
     /// Panel labels "(a)", "(b1)".
     pub panel_label: f32,
+    /// Least clearance between a panel label and the text of its panel,
+    /// design pixels: a quarter of the label's size (3.75 px, 2 pt at
+    /// `paper`), so that "(a)" reads apart from the axis label under it.
+    pub panel_label_clear: f32,
     /// Smallest text other than scripts, in design pixels: the style's
     /// size at a print style.
     pub min_text: f32,
@@ -118,6 +122,91 @@ pub struct Theme {
     pub marker: f32,
     /// Outer margin.
     pub margin: f32,
+    /// Blank margin a chart keeps on each side inside its own box, design
+    /// pixels (14 px at every style): room for the half of an end tick
+    /// label that reaches past the plot.
+    pub chart_margin: f32,
+    /// Least width of a chart's y label area (64 px): tick labels, ticks
+    /// and the rotated axis label (wider where the tick labels need it).
+    pub y_label_area: u32,
+    /// Height of a chart's x label area (50 px): tick labels and the
+    /// axis label under them.
+    pub x_label_area: u32,
+    /// Height of the x label area of a panel whose x axis is shared with
+    /// the panel below (4 px: its ticks only, the labels are below).
+    pub shared_x_area: u32,
+    /// Pixels a y tick mark and its gap take beside the tick labels (10).
+    pub tick_gap: f32,
+    /// The rotated y axis label's line, in ems of [`Theme::label`] (1.3).
+    pub axis_label_line_em: f32,
+    /// Pixels between the rotated y axis label and the area's edge (6).
+    pub axis_label_gap: f32,
+    /// A legend row right of the plot or inside it, in ems of
+    /// [`Theme::tick`] (1.55: the line and room for a marker).
+    pub legend_row_em: f32,
+    /// A legend row under the plot, in ems of [`Theme::tick`] (1.45).
+    pub below_row_em: f32,
+    /// Pixels between a chart's plot and a legend right of it (12).
+    pub legend_gap: i32,
+    /// Pixels kept beside a legend column right of the plot when its
+    /// room is made and when deciding whether it fits (8).
+    pub legend_gap_min: u32,
+    /// Composed figures' bands, in ems (multiples of the text size they
+    /// hold, so that they follow the style's text size): the label band
+    /// above a panel, 1.5 panel-label sizes (the label's line and a gap).
+    pub label_band_em: f32,
+    /// A caption band below a panel: 0.5 em of lead plus
+    /// [`Theme::caption_line_em`] per line (see [`Theme::caption_band`]).
+    pub caption_lead_em: f32,
+    /// Distance between the lines of a caption, 1.2 em (the line height).
+    pub caption_line_em: f32,
+    /// Where a caption's first line starts below its image, 0.3 em.
+    pub caption_top_em: f32,
+    /// Pixels a panel label is set in from its cell's left edge (2 px):
+    /// clear of the cell's edge, in line with the picture under it.
+    pub panel_label_inset: f32,
+    /// Words of a filmstrip's marks ("kink", "collision"): 11 px, and at a
+    /// print style at least the style's text size (SPEC section 10).
+    pub mark_text: f32,
+    /// Pixels from the chain to a filmstrip mark's tip (3 px): the
+    /// triangle points at the chain without touching it.
+    pub mark_clear: f32,
+    /// Length of a mark's triangle, tip to base (7 px).
+    pub mark_arrow: f32,
+    /// Half the height of a mark's triangle at its base (4.5 px: a
+    /// triangle 9 px tall, about as tall as a block is thick).
+    pub mark_half: f32,
+    /// Pixels between a mark's triangle and its words (2 px).
+    pub mark_space: f32,
+    /// Pixels left beyond a mark's words when room is made for them
+    /// beside a folded ladder's columns (2 px).
+    pub mark_slack: f32,
+    /// Block numbers above the columns of a folded ladder: 10 px, and at a
+    /// print style at least the style's text size.
+    pub column_number: f32,
+    /// The band the block numbers take above a folded snapshot's columns,
+    /// in ems of [`Theme::column_number`] (1.5: the line and a gap).
+    pub column_number_band_em: f32,
+    /// The caption band under a row of folded snapshots when counting how
+    /// many rows fit a picture, in ems of [`Theme::label`] (1.7).
+    pub folded_caption_em: f32,
+    /// Pixels between a folded snapshot's frame and what it holds (4 px).
+    pub folded_pad: f32,
+    /// Gap between the snapshots of a filmstrip (6 px).
+    pub snapshot_gap: u32,
+    /// Gap between folded snapshots (24 px): more than between whole
+    /// ladders, so that one snapshot's columns group visibly.
+    pub folded_snapshot_gap: u32,
+    /// Margin of a filmstrip fitted into a box (4 px; its figure has its
+    /// own [`Theme::margin`]).
+    pub fit_margin: u32,
+    /// Smallest width and height of a snapshot of a strip fitted into a
+    /// box (8 × 24 px): a way to wrap the snapshots that leaves them
+    /// smaller is not taken.
+    pub min_snapshot: (f32, f32),
+    /// Pixels a time caption may be wider than its snapshot and the gap
+    /// beside it fall short by before it goes on two lines (2 px).
+    pub caption_slack: f32,
     /// Gap between panels.
     pub gap: f32,
     /// Tallest a figure may print, in points (none at screen).
@@ -150,6 +239,12 @@ impl Theme {
             } else {
                 size::PANEL_LABEL
             },
+            panel_label_clear: 0.25
+                * if print {
+                    size::LABEL
+                } else {
+                    size::PANEL_LABEL
+                },
             min_text,
             min_script: if print {
                 MIN_SCRIPT_PT * px_per_pt
@@ -160,6 +255,37 @@ impl Theme {
             thin: 1.0,
             marker: 4.0,
             margin: size::MARGIN as f32,
+            chart_margin: 14.0,
+            y_label_area: 64,
+            x_label_area: 50,
+            shared_x_area: 4,
+            tick_gap: 10.0,
+            axis_label_line_em: 1.3,
+            axis_label_gap: 6.0,
+            legend_row_em: 1.55,
+            below_row_em: 1.45,
+            legend_gap: 12,
+            legend_gap_min: 8,
+            label_band_em: 1.5,
+            caption_lead_em: 0.5,
+            caption_line_em: 1.2,
+            caption_top_em: 0.3,
+            panel_label_inset: 2.0,
+            mark_text: 11.0f32.max(min_text),
+            mark_clear: 3.0,
+            mark_arrow: 7.0,
+            mark_half: 4.5,
+            mark_space: 2.0,
+            mark_slack: 2.0,
+            column_number: 10.0f32.max(min_text),
+            column_number_band_em: 1.5,
+            folded_caption_em: 1.7,
+            folded_pad: 4.0,
+            snapshot_gap: 6,
+            folded_snapshot_gap: 24,
+            fit_margin: 4,
+            min_snapshot: (8.0, 24.0),
+            caption_slack: 2.0,
             gap: size::GAP as f32,
             max_height_pt: style.max_height_pt(),
         }
@@ -172,6 +298,18 @@ impl Theme {
         } else {
             (1.8 * self.title).floor()
         }
+    }
+
+    /// Height of the label band above a composed panel: [`Theme::label_band_em`]
+    /// panel-label sizes, whole pixels.
+    pub fn label_band(&self) -> u32 {
+        (self.panel_label * self.label_band_em) as u32
+    }
+
+    /// Height of the caption band under a composed panel whose caption
+    /// has `lines` lines (not rounded).
+    pub fn caption_band(&self, lines: f32) -> f32 {
+        self.label * (self.caption_lead_em + self.caption_line_em * lines)
     }
 
     /// The font text is set in.

@@ -52,13 +52,15 @@ impl Strip {
     /// The strip of a single-run scene at `times`: snapshots of `frame`
     /// pixels (default [`strip_frame`]) sharing one scale, a long ladder
     /// folded into columns so that no block is shorter than
-    /// [`MIN_BLOCK_PIXELS`], and with several flips the walls marked.
+    /// [`MIN_BLOCK_PIXELS`], and with several flips the walls marked;
+    /// with one flip and `fronts`, each wave's front ([`front_marks`]).
     fn new(
         label: &str,
         scene: &Scene,
         times: &[f64],
         frame: Option<(u32, u32)>,
         fit: Option<(u32, u32)>,
+        fronts: bool,
     ) -> Result<Strip> {
         let run = run::simulate(scene, times)?;
         let ladder = Ladder::new(scene.model.params()?);
@@ -70,6 +72,11 @@ impl Strip {
         let marked = scene.drive.flips.len() > 1;
         let marks: Vec<Vec<ChainMark>> = if marked {
             traj.states.iter().map(|q| wall_marks(q)).collect()
+        } else if fronts {
+            traj.times
+                .iter()
+                .map(|t| front_marks(&traj.waves, *t))
+                .collect()
         } else {
             Vec::new()
         };
@@ -101,6 +108,58 @@ impl Strip {
     fn picture(&self, theme: &Theme, data: &RunData) -> Result<Picture> {
         compose::filmstrip_picture(theme, &self.ladder, &Self::frames(data), &self.opts)
     }
+}
+
+/// The marks of a snapshot at time `t` from the wave tracker's record:
+/// for every wave on the chain at `t` (launched, and neither at the end
+/// nor annihilated yet), a triangle in its kind's colour (kink on the
+/// left, antikink on the right) at its front, the block it reached last
+/// by `t` (its origin before it reached any), exactly at that block. No
+/// words: the strip's title names its wave, and a snapshot of a strip of
+/// seven is too narrow for them.
+pub(crate) fn front_marks(waves: &crate::sim::waves::Waves, t: f64) -> Vec<ChainMark> {
+    use crate::sim::waves::{Fate, WaveKind};
+    waves
+        .waves
+        .iter()
+        .filter_map(|w| {
+            // The last block the wave crossed by `t`, and when.
+            let last = w
+                .arrival_times
+                .iter()
+                .enumerate()
+                .filter_map(|(i, a)| a.filter(|a| *a <= t).map(|a| (i + 1, a)))
+                .max_by(|a, b| a.1.total_cmp(&b.1));
+            let gone = match w.fate {
+                // At the end: off the chain from its arrival at the last block.
+                Fate::End => w
+                    .arrival_times
+                    .get(w.front.wrapping_sub(1))
+                    .copied()
+                    .flatten(),
+                Fate::Annihilated { at, .. } => Some(at),
+                Fate::Stopped | Fate::Undecided => None,
+            };
+            if w.launched_at > t || gone.is_some_and(|g| g <= t) {
+                return None;
+            }
+            let kink = w.kind == WaveKind::Kink;
+            Some(ChainMark {
+                at: last.map_or(w.origin, |(b, _)| b) as f64,
+                label: String::new(),
+                color: if kink {
+                    crate::render::theme::palette::KINK
+                } else {
+                    crate::render::theme::palette::ANTIKINK
+                },
+                side: if kink {
+                    style::HAlign::Left
+                } else {
+                    style::HAlign::Right
+                },
+            })
+        })
+        .collect()
 }
 
 /// Strips a row at a print style: two on a page wide enough for two
@@ -145,10 +204,13 @@ fn strips(
     let labels = panel_labels(scene);
     let runs = scene.runs();
     let fit = strip_fit(theme, runs.len());
+    // Strips side by side compare waves (Fig. 3: kink and antikink at
+    // ±60° and ±50°): each snapshot marks where its wave is.
+    let fronts = runs.len() > 1;
     runs.iter()
         .zip(&labels)
         .map(|((s, times), label)| {
-            let mut strip = Strip::new(label, s, times, frame, fit)?;
+            let mut strip = Strip::new(label, s, times, frame, fit, fronts)?;
             let data = RunData::taking_samples(label, s, &mut strip.run);
             Ok((strip, data))
         })
@@ -649,4 +711,129 @@ pub fn movie_frame(theme: &Theme, scene: &Scene, opts: &MovieOptions, k: usize) 
     let shown = (k + 1) as f32 / frames as f32;
     plan.draw_frame(&mut canvas, &background, &heat, k, shown)?;
     Ok(canvas)
+}
+
+#[cfg(test)]
+mod front_mark_tests {
+    use super::*;
+    use crate::render::theme::palette;
+    use crate::render::{Item, Style, StyleName};
+    use crate::scene::Kind;
+    use tiny_skia::Transform;
+
+    /// The centre of every filled triangle of `colors` in `items`, in the
+    /// picture's pixels.
+    fn triangles(
+        items: &[Item],
+        ts: Transform,
+        colors: &[crate::encode::Rgb],
+        out: &mut Vec<(f32, f32)>,
+    ) {
+        for item in items {
+            match item {
+                Item::Fill { path, color } if colors.contains(color) => {
+                    let mut p: Vec<tiny_skia::Point> = path.points().to_vec();
+                    p.dedup();
+                    if p.len() == 3 {
+                        ts.map_points(&mut p);
+                        let b = tiny_skia::Rect::from_points(&p).unwrap();
+                        out.push((0.5 * (b.left() + b.right()), 0.5 * (b.top() + b.bottom())));
+                    }
+                }
+                Item::Group { transform, items } => {
+                    triangles(items, ts.pre_concat(*transform), colors, out)
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// Where the tracker has a wave at `t`: launched by then, and not yet
+    /// at the end nor annihilated (the record's own words).
+    fn tracked_at(waves: &crate::sim::waves::Waves, t: f64) -> Vec<usize> {
+        use crate::sim::waves::Fate;
+        waves
+            .waves
+            .iter()
+            .filter(|w| w.launched_at <= t)
+            .filter(|w| match w.fate {
+                Fate::End => w.arrival_times[w.front - 1].is_some_and(|a| a > t),
+                Fate::Annihilated { at, .. } => at > t,
+                _ => true,
+            })
+            .map(|w| {
+                // The block crossed last by t.
+                (1..=w.arrival_times.len())
+                    .filter(|b| w.arrival_times[b - 1].is_some_and(|a| a <= t))
+                    .max_by(|a, b| {
+                        w.arrival_times[a - 1]
+                            .unwrap()
+                            .total_cmp(&w.arrival_times[b - 1].unwrap())
+                    })
+                    .unwrap_or(w.origin)
+            })
+            .collect()
+    }
+
+    /// Figure 3 at paper: each row marks, with a triangle in its wave's
+    /// colour, every snapshot where the tracker has a wave and no other,
+    /// each at the height of the front block's centre, exactly.
+    #[test]
+    fn figure_3_marks_each_front_at_its_block() {
+        let theme = Theme::of(&Style::named(StyleName::Paper));
+        let scene = crate::catalog::find(Kind::Figure, "3")
+            .unwrap()
+            .scene
+            .clone();
+        let strips = strips(&theme, &scene, None).unwrap();
+        let geometry = filmstrip_geometry(&theme, &scene, None).unwrap();
+        let picture = compose_strips(&theme, &scene, &strips).unwrap();
+        let mut found = Vec::new();
+        triangles(
+            picture.items(),
+            Transform::identity(),
+            &[palette::KINK, palette::ANTIKINK],
+            &mut found,
+        );
+        let mut expected_total = 0;
+        for ((strip, data), g) in strips.iter().zip(&geometry) {
+            let traj = &strip.run.trajectory;
+            let frames = Strip::frames(data);
+            assert_eq!(frames.len(), g.snapshots.len());
+            let mut marked = 0;
+            for (k, f) in frames.iter().enumerate() {
+                let fronts = tracked_at(&traj.waves, f.time);
+                let r = g.snapshots[k];
+                let here: Vec<&(f32, f32)> = found
+                    .iter()
+                    .filter(|(x, y)| {
+                        *y >= r.y && *y <= r.y + r.h && *x >= r.x - 1.0 && *x <= r.x + r.w + 1.0
+                    })
+                    .collect();
+                assert_eq!(
+                    here.len(),
+                    fronts.len(),
+                    "{}: snapshot {k} (t = {}) has {} marks, the tracker {fronts:?}",
+                    data.label,
+                    f.time,
+                    here.len()
+                );
+                for b in &fronts {
+                    let [a, e] = g.blocks[k][b - 1];
+                    let y = 0.5 * (a.1 + e.1);
+                    assert!(
+                        here.iter().any(|m| (m.1 - y).abs() < 1e-3),
+                        "{}: snapshot {k}: no mark at block {b} (y = {y}): {here:?}",
+                        data.label
+                    );
+                }
+                marked += usize::from(!fronts.is_empty());
+                expected_total += fronts.len();
+            }
+            // The first snapshot (t = 0) has no wave yet; every row has some.
+            assert!(tracked_at(&traj.waves, frames[0].time).is_empty());
+            assert!(marked >= 4, "{}: {marked} snapshots marked", data.label);
+        }
+        assert_eq!(found.len(), expected_total, "{found:?}");
+    }
 }

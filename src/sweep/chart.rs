@@ -364,22 +364,23 @@ fn one_parameter(theme: &Theme, plan: &Plan, records: &[Record], title: &str) ->
     } else {
         FRONT_LEGEND_ROOM
     };
-    let h = fitted_heights(theme, &wanted, &least);
-    let mut panels = vec![
-        (line_chart(theme, &front, width(theme), h[0])?, h[0]),
-        (line_chart(theme, &speed, width(theme), h[1])?, h[1]),
-    ];
-    if theory {
-        panels.extend(theory_panel(
-            theme,
-            plan,
-            x_label,
-            fold,
-            Some((width(theme), x_range)),
-            (h[2], h[3]),
-        )?);
-    }
-    stack(theme, &panels)
+    stacked(theme, &wanted, &least, |h, w| {
+        let mut panels = vec![
+            (line_chart(theme, &front, w, h[0])?, h[0]),
+            (line_chart(theme, &speed, w, h[1])?, h[1]),
+        ];
+        if theory {
+            panels.extend(theory_panel(
+                theme,
+                plan,
+                x_label,
+                fold,
+                (w, Some(x_range)),
+                (h[2], h[3]),
+            )?);
+        }
+        Ok(panels)
+    })
 }
 
 /// The colour of wave kind `i` (0: kink, 1: antikink) in every panel.
@@ -409,7 +410,7 @@ fn theory_panel(
     plan: &Plan,
     x_label: &str,
     fold: bool,
-    width_range: Option<(u32, (f64, f64))>,
+    (width, range): (u32, Option<(f64, f64)>),
     (gap_h, barrier_h): (u32, u32),
 ) -> Result<Vec<(Chart, u32)>> {
     let pts = theory_points(plan);
@@ -427,13 +428,9 @@ fn theory_panel(
     barrier.sort_by(|a, b| a.0.total_cmp(&b.0));
     barrier.dedup_by(|a, b| a.0 == b.0);
     let mut xa = Axis::new(x_label);
-    let width = match width_range {
-        Some((w, (lo, hi))) => {
-            xa = xa.range(lo, hi);
-            w
-        }
-        None => width(theme),
-    };
+    if let Some((lo, hi)) = range {
+        xa = xa.range(lo, hi);
+    }
     // Two quantities in two units: one panel each (never one axis for
     // both), each named by its y axis, so no legend covers the curves.
     let panel = |label: &str, pts: Vec<(f64, f64)>, color, dashed: bool, shared: bool, h: u32| {
@@ -559,35 +556,83 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
         least_for(theme, "gap ω₊(0) τ"),
         least_for(theme, "ΔU / mgs"),
     ];
-    let h = fitted_heights(theme, &wanted, &least);
-    let main = cell_chart(theme, &chart, width(theme), h[0])?;
-    let mut panels = vec![(main, h[0])];
-    if theory {
-        let even = xs
-            .windows(2)
-            .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
-        let range = if even && xs.len() > 1 {
-            let h = 0.5 * (xs[1] - xs[0]);
-            let w = crate::render::cells::cells_width(theme, &chart, width(theme));
-            Some((w, (xs[0] - h, xs[xs.len() - 1] + h)))
-        } else {
-            None
-        };
-        panels.extend(theory_panel(
-            theme,
-            plan,
-            px.label(),
-            false,
-            range,
-            (h[1], h[2]),
-        )?);
+    stacked(theme, &wanted, &least, |h, w| {
+        let main = cell_chart(theme, &chart, w, h[0])?;
+        let mut panels = vec![(main, h[0])];
+        if theory {
+            let even = xs
+                .windows(2)
+                .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
+            let range = if even && xs.len() > 1 {
+                let h = 0.5 * (xs[1] - xs[0]);
+                let cells = crate::render::cells::cells_width(theme, &chart, w);
+                (cells, Some((xs[0] - h, xs[xs.len() - 1] + h)))
+            } else {
+                (w, None)
+            };
+            panels.extend(theory_panel(
+                theme,
+                plan,
+                px.label(),
+                false,
+                range,
+                (h[1], h[2]),
+            )?);
+        }
+        Ok(panels)
+    })
+}
+
+/// Panels of heights fitted to the page ([`fitted_heights`]), drawn by
+/// `make` at those heights and at the width it is given, and stacked
+/// ([`stack`]).
+fn stacked(
+    theme: &Theme,
+    wanted: &[u32],
+    least: &[u32],
+    make: impl Fn(&[u32], u32) -> Result<Vec<(Chart, u32)>>,
+) -> Result<Chart> {
+    let h = fitted_heights(theme, wanted, least);
+    let indent = label_indent(theme, wanted.len());
+    let panels = make(&h, width(theme) - indent)?;
+    stack(theme, &panels, indent)
+}
+
+/// Whether a stack of `n` panels labels them: at a print style, where the
+/// caption names the panels by letter (the screen names them by their
+/// titles and axes), and when there are two or more.
+fn labelled(theme: &Theme, n: usize) -> bool {
+    theme.is_print() && n > 1
+}
+
+/// The label of the `k`-th stacked panel: "(a)", "(b)", …
+pub fn panel_label(k: usize) -> String {
+    format!("({})", char::from(b'a' + (k % 26) as u8))
+}
+
+/// How far a stack of `n` panels is moved right so that its labels have a
+/// column of their own at the left: the widest label and
+/// [`Theme::panel_label_clear`], less the blank margin each chart keeps
+/// at its left ([`Theme::chart_margin`]). A label in its own column at
+/// the top of its band overlaps no text, tick label or data of any panel,
+/// at every panel height, and costs the plots only the indent's width.
+fn label_indent(theme: &Theme, n: usize) -> u32 {
+    if !labelled(theme, n) {
+        return 0;
     }
-    stack(theme, &panels)
+    let widest = (0..n)
+        .map(|k| style::text_width(theme.font(), &panel_label(k), theme.panel_label))
+        .fold(0.0f32, f32::max);
+    (widest + theme.panel_label_clear - theme.chart_margin)
+        .ceil()
+        .max(0.0) as u32
 }
 
 /// Panels stacked top to bottom into one SVG (nested `<svg>` elements),
-/// rasterised at their own size.
-fn stack(theme: &Theme, panels: &[(Chart, u32)]) -> Result<Chart> {
+/// `indent` pixels from the left, rasterised at their own size; when the
+/// stack is [`labelled`], each panel's label at the top left of its band
+/// (drawn after the panels, over their blank left margin).
+fn stack(theme: &Theme, panels: &[(Chart, u32)], indent: u32) -> Result<Chart> {
     let height: u32 = panels.iter().map(|(_, h)| *h).sum();
     let width = width(theme);
     let mut svg = format!(
@@ -596,12 +641,27 @@ fn stack(theme: &Theme, panels: &[(Chart, u32)]) -> Result<Chart> {
          height=\"{height}\" fill=\"#ffffff\"/>\n"
     );
     let mut y = 0;
+    let mut tops = Vec::new();
     for (chart, h) in panels {
         let inner = strip_prolog(&chart.svg);
-        let placed = inner.replacen("<svg ", &format!("<svg x=\"0\" y=\"{y}\" "), 1);
+        let placed = inner.replacen("<svg ", &format!("<svg x=\"{indent}\" y=\"{y}\" "), 1);
         svg.push_str(&placed);
         svg.push('\n');
+        tops.push(y);
         y += h;
+    }
+    if labelled(theme, panels.len()) {
+        let ascent = style::ascent(theme.font(), theme.panel_label);
+        for (k, top) in tops.into_iter().enumerate() {
+            svg.push_str(&format!(
+                "<text x=\"0\" y=\"{}\" font-family=\"{}\" font-size=\"{}\" fill=\"{}\">{}</text>\n",
+                top as f32 + ascent,
+                style::family_of(theme.font()),
+                theme.panel_label,
+                style::hex(style::DARK),
+                panel_label(k)
+            ));
+        }
     }
     svg.push_str("</svg>\n");
     let pixmap = rasterize_svg(theme.font(), &svg, width, height)?;

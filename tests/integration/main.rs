@@ -36,6 +36,7 @@ mod mp4_quality;
 mod names;
 mod npz;
 mod output_paths;
+mod panel_labels;
 mod print;
 mod print_article;
 mod print_property;

@@ -4,8 +4,7 @@
 use super::ticks::short_number;
 use super::title::titled;
 use super::{
-    Area, Chart, Scale, X_LABEL_AREA, check_size, dark_axes, end_labels, font, plot_error, rgb,
-    y_label_area,
+    Area, Chart, Scale, check_size, dark_axes, end_labels, font, plot_error, rgb, y_label_area,
 };
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
@@ -105,9 +104,9 @@ fn draw_heatmap(theme: &Theme, area: &Area<'_>, k: &Kymograph<'_>) -> Result<()>
     let t1 = if t1 > t0 { t1 } else { t0 + 1.0 };
     let n = k.n as f64;
     let mut chart = ChartBuilder::on(area)
-        .margin(14)
+        .margin(theme.chart_margin as u32)
         .margin_right(4)
-        .x_label_area_size(X_LABEL_AREA)
+        .x_label_area_size(theme.x_label_area)
         .y_label_area_size(y_label_area(theme, &end_labels(t0, t1, Scale::Linear)))
         .build_cartesian_2d(0.5..n + 0.5, -t1..-t0)
         .map_err(plot_error)?;
@@ -168,7 +167,7 @@ fn heat_cells(k: &Kymograph<'_>, rows: usize, t_end: f64) -> Vec<Rectangle<(f64,
 
 fn draw_colorbar(theme: &Theme, area: &Area<'_>, label: &str) -> Result<()> {
     let mut chart = ChartBuilder::on(area)
-        .margin(14)
+        .margin(theme.chart_margin as u32)
         .margin_left(8)
         .margin_right(4)
         .caption(
@@ -180,7 +179,7 @@ fn draw_colorbar(theme: &Theme, area: &Area<'_>, label: &str) -> Result<()> {
             plotters::chart::LabelAreaPosition::Top,
             (0.7 * theme.tick).ceil() as u32,
         )
-        .x_label_area_size(X_LABEL_AREA)
+        .x_label_area_size(theme.x_label_area)
         .right_y_label_area_size(48)
         .build_cartesian_2d(0.0..1.0, -1.0..1.0)
         .map_err(plot_error)?;

@@ -64,7 +64,7 @@ pub(super) fn draw_outside_legend(
     spec: &ChartSpec,
     (x, y): (i32, i32),
 ) -> Result<()> {
-    let row = (theme.tick * 1.55) as i32;
+    let row = (theme.tick * theme.legend_row_em) as i32;
     draw_entries(theme, root, spec, |k| (x, y + row / 2 + k as i32 * row))
 }
 
@@ -88,7 +88,7 @@ pub(super) fn below_grid(
     let room = (width as i32 - 16).max(col_w);
     let cols = ((room / col_w.max(1)) as usize).clamp(1, labels.len().max(1));
     let rows = labels.len().div_ceil(cols);
-    let row = (theme.tick * 1.45).ceil() as i32;
+    let row = (theme.tick * theme.below_row_em).ceil() as i32;
     (cols, rows, col_w, row, (rows as i32 * row + 6) as u32)
 }
 
@@ -207,7 +207,7 @@ pub(super) fn legend_box(theme: &Theme, spec: &ChartSpec) -> (i32, i32) {
         .map(|l| style::text_width(theme.font(), l, theme.tick))
         .fold(0.0, f32::max);
     let w = text + 28.0 + 34.0;
-    let h = labels.len() as f32 * (theme.tick * 1.55) + 24.0;
+    let h = labels.len() as f32 * (theme.tick * theme.legend_row_em) + 24.0;
     (w as i32, h as i32)
 }
 

@@ -10,8 +10,8 @@ use super::ranges::{Range2, data_range, equalize, runs};
 use super::ticks::tick_label;
 use super::title::{fit_title, titled};
 use super::{
-    Area, Chart, ChartSpec, Ctx, Legend, LineStyle, Marker, Scale, Series, X_LABEL_AREA,
-    check_size, dark_axes, end_labels, font, plot_error, rgb, y_label_area,
+    Area, Chart, ChartSpec, Ctx, Legend, LineStyle, Marker, Scale, Series, check_size, dark_axes,
+    end_labels, font, plot_error, rgb, y_label_area,
 };
 use crate::error::Result;
 use crate::render::Theme;
@@ -101,7 +101,9 @@ fn layout(
         // A column right of the plot that would take more than a third of
         // the chart goes under the plot instead, in columns: the plot keeps
         // its width, the text its size.
-        if pass.legend == Legend::Outside && legend_box(theme, spec).0 as u32 + 8 > width / 3 {
+        if pass.legend == Legend::Outside
+            && legend_box(theme, spec).0 as u32 + theme.legend_gap_min > width / 3
+        {
             pass.legend = Legend::Below;
         }
         if pass.legend == Legend::Outside && spec.equal_aspect {
@@ -214,7 +216,12 @@ where
     let below =
         (pass.legend == Legend::Below).then(|| below_grid(theme, spec, root.dim_in_pixel().0).4);
     let area = if pass.legend == Legend::Outside {
-        root.margin(0, 0, 0, legend_box(theme, spec).0 as u32 + 8)
+        root.margin(
+            0,
+            0,
+            0,
+            legend_box(theme, spec).0 as u32 + theme.legend_gap_min,
+        )
     } else if let Some(band) = below {
         root.margin(0, band, 0, 0)
     } else {
@@ -234,9 +241,13 @@ where
     };
     let mut builder = ChartBuilder::on(&area);
     // A shared x axis is labelled by the panel below: no room for numbers.
-    let x_area = if spec.x.shared { 4 } else { X_LABEL_AREA };
+    let x_area = if spec.x.shared {
+        theme.shared_x_area
+    } else {
+        theme.x_label_area
+    };
     builder
-        .margin(14)
+        .margin(theme.chart_margin as u32)
         .x_label_area_size(x_area)
         .y_label_area_size(y_area);
     if let Some(t) = spec.title.as_ref().filter(|_| one_line) {
@@ -259,7 +270,12 @@ where
         draw_series(&mut chart, s, spec)?;
     }
     if pass.legend == Legend::Outside {
-        draw_outside_legend(theme, root, spec, (plot.0.end + 12, plot.1.start))?;
+        draw_outside_legend(
+            theme,
+            root,
+            spec,
+            (plot.0.end + theme.legend_gap, plot.1.start),
+        )?;
     } else if let Some(band) = below {
         let top = root.dim_in_pixel().1 as i32 - band as i32;
         draw_below_legend(theme, root, spec, top)?;

@@ -76,24 +76,21 @@ fn check_size(width: u32, height: u32) -> Result<()> {
     }
 }
 
-/// Left, right, top, bottom label areas and margins in pixels.
-const Y_LABEL_AREA: u32 = 64;
-pub const X_LABEL_AREA: u32 = 50;
-
 /// Width of a y label area that holds tick labels as wide as the widest of
 /// `ticks` (measured in the style's font), the tick marks, and the rotated
-/// axis label beside them with a gap: at least [`Y_LABEL_AREA`]. Placing
+/// axis label beside them with a gap: at least [`Theme::y_label_area`](crate::render::Theme::y_label_area). Placing
 /// the axis label from the measured tick labels keeps "t/τ" clear of
 /// "15000" (plotters puts the label at the area's outer edge).
 pub(super) fn y_label_area(theme: &crate::render::Theme, ticks: &[String]) -> u32 {
-    use super::style::{self, size};
+    use super::style;
     let widest = ticks
         .iter()
         .map(|t| style::text_width(theme.font(), t, theme.tick))
         .fold(0.0f32, f32::max);
-    // Tick mark and its gap (10 px), the label's line (1.3 em), a gap.
-    let need = widest + 10.0 + 1.3 * size::LABEL + 6.0;
-    (need.ceil() as u32).max(Y_LABEL_AREA)
+    // Tick mark and its gap, the label's line, a gap.
+    let need =
+        widest + theme.tick_gap + theme.axis_label_line_em * theme.label + theme.axis_label_gap;
+    (need.ceil() as u32).max(theme.y_label_area)
 }
 
 /// The tick labels a linear or log axis over `lo..hi` can show at its ends

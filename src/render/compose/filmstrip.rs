@@ -55,23 +55,13 @@ pub struct ChainMark {
     /// Where along the chain, in blocks: 1 is the centre of block 1, 2.5
     /// halfway between the centres of blocks 2 and 3.
     pub at: f64,
+    /// The words beside the triangle (none when empty).
     pub label: String,
     pub color: crate::encode::Rgb,
     /// The side of the ladder the pointer and its label go on (`Left` or
     /// `Right`).
     pub side: HAlign,
 }
-
-/// Font size of a [`ChainMark`]'s label: 11 px, and at a print style at
-/// least the style's text size (SPEC section 10).
-fn mark_text(theme: &Theme) -> f32 {
-    theme.text_at_least(11.0)
-}
-/// Pixels from the chain to a mark's tip, of its triangle, and from the
-/// triangle to the label.
-const MARK_CLEAR: f32 = 3.0;
-const MARK_ARROW: f32 = 7.0;
-const MARK_SPACE: f32 = 2.0;
 
 /// Draws `mark` onto a snapshot of `snap` drawn into `region` of `canvas`:
 /// a triangle pointing at the chain, its label beyond it. The tip clears
@@ -119,9 +109,11 @@ fn draw_mark(
     // The far end of the label on a side: a mark whose words would leave
     // the picture on its own side goes to the other side when they fit
     // there (the last snapshot of a row has no room on its right).
-    let text = mark_text(theme);
+    let text = theme.mark_text;
     let label_w = style::text_width(theme.font(), &mark.label, text);
-    let far = |dir: f32| x + dir * (reach(dir) + MARK_CLEAR + MARK_ARROW + MARK_SPACE + label_w);
+    let far = |dir: f32| {
+        x + dir * (reach(dir) + theme.mark_clear + theme.mark_arrow + theme.mark_space + label_w)
+    };
     let fits = |dir: f32| (0.0..=canvas.width()).contains(&far(dir));
     let mut side = mark.side;
     let asked = if side == HAlign::Left { -1.0 } else { 1.0 };
@@ -133,9 +125,13 @@ fn draw_mark(
         };
     }
     let dir = if side == HAlign::Left { -1.0 } else { 1.0 };
-    let tip = x + dir * (reach(dir) + MARK_CLEAR);
-    let base = tip + dir * MARK_ARROW;
-    canvas.polygon(&[(tip, y), (base, y - 4.5), (base, y + 4.5)], mark.color);
+    let tip = x + dir * (reach(dir) + theme.mark_clear);
+    let base = tip + dir * theme.mark_arrow;
+    let half = theme.mark_half;
+    canvas.polygon(&[(tip, y), (base, y - half), (base, y + half)], mark.color);
+    if mark.label.is_empty() {
+        return;
+    }
     let align = if side == HAlign::Left {
         HAlign::Right
     } else {
@@ -143,7 +139,7 @@ fn draw_mark(
     };
     canvas.text(
         &mark.label,
-        (base + dir * MARK_SPACE, y),
+        (base + dir * theme.mark_space, y),
         text,
         mark.color,
         (align, VAlign::Middle),
@@ -152,8 +148,8 @@ fn draw_mark(
 
 /// Pixels a mark reaches beyond the chain on its side.
 fn mark_room(theme: &Theme, mark: &ChainMark) -> f32 {
-    let label = style::text_width(theme.font(), &mark.label, mark_text(theme));
-    MARK_CLEAR + MARK_ARROW + MARK_SPACE + label + 2.0
+    let label = style::text_width(theme.font(), &mark.label, theme.mark_text);
+    theme.mark_clear + theme.mark_arrow + theme.mark_space + label + theme.mark_slack
 }
 
 /// Widest a folded snapshot may be, in pixels; a longer ladder is drawn
@@ -185,9 +181,6 @@ fn time_caption(k: usize, time: f64, once: bool) -> String {
     }
 }
 
-/// Margin of a strip fitted into a box (its figure has its own).
-const FIT_MARGIN: u32 = 4;
-
 /// A time caption, on two lines ("t/τ =" over the time) when `two`.
 fn two_lines(caption: &str, two: bool) -> String {
     if two {
@@ -196,17 +189,6 @@ fn two_lines(caption: &str, two: bool) -> String {
         caption.to_string()
     }
 }
-
-/// Gap between the snapshots of a strip, in pixels: folded snapshots get
-/// more, so that their columns group visibly.
-const SNAPSHOT_GAP: u32 = 6;
-const FOLDED_SNAPSHOT_GAP: u32 = 24;
-/// Font size of the block numbers above the columns of a folded ladder.
-fn column_number(theme: &Theme) -> f32 {
-    theme.text_at_least(10.0)
-}
-/// Pixels between a folded snapshot's frame and what it holds.
-const FOLDED_PAD: f32 = 4.0;
 
 /// One column of a snapshot: blocks `start..start + ladder.n()` of the
 /// whole ladder, seen through `view` in `region` of the snapshot.
@@ -279,7 +261,7 @@ impl StripPlan {
             }],
             fold: None,
             per_row: frames.len().max(1),
-            gap: SNAPSHOT_GAP,
+            gap: theme.snapshot_gap,
             two_line: false,
         };
         let Some(min) = opts.min_block_pixels.filter(|_| opts.view.is_none()) else {
@@ -301,9 +283,9 @@ impl StripPlan {
         };
         let (left, right) = (room(HAlign::Left), room(HAlign::Right));
         let gap = fold::COLUMN_GAP.max(left + right);
-        let (left, right) = (left + FOLDED_PAD, right + FOLDED_PAD);
-        let top = (FOLDED_PAD + 1.5 * column_number(theme)).ceil();
-        let column_h = (h as f32 - top - FOLDED_PAD).max(1.0);
+        let (left, right) = (left + theme.folded_pad, right + theme.folded_pad);
+        let top = (theme.folded_pad + theme.column_number_band_em * theme.column_number).ceil();
+        let column_h = (h as f32 - top - theme.folded_pad).max(1.0);
         // The ladder's window inside each column, after the margin.
         let height = (column_h - 2.0 * margin_within(column_h)) as f64;
         let across = {
@@ -339,10 +321,11 @@ impl StripPlan {
             .fit
             .map_or(MAX_FOLDED_ROW, |(w, _)| w.min(MAX_FOLDED_ROW))
             .saturating_sub(2 * theme.margin as u32);
-        let fits = ((row + FOLDED_SNAPSHOT_GAP) / (width + FOLDED_SNAPSHOT_GAP)).max(1) as usize;
+        let fits = ((row + theme.folded_snapshot_gap) / (width + theme.folded_snapshot_gap)).max(1)
+            as usize;
         // Many snapshots: rows wider than MAX_FOLDED_ROW rather than a
         // strip taller than a picture may be.
-        let row_h = h + (theme.label * 1.7) as u32 + FOLDED_SNAPSHOT_GAP;
+        let row_h = h + (theme.label * theme.folded_caption_em) as u32 + theme.folded_snapshot_gap;
         let max_rows = (MAX_FOLDED_HEIGHT / row_h).max(1) as usize;
         let rows = frames.len().div_ceil(fits).min(max_rows);
         Ok(StripPlan {
@@ -351,7 +334,7 @@ impl StripPlan {
             columns,
             fold: Some(folded),
             per_row: frames.len().div_ceil(rows.max(1)).max(1),
-            gap: FOLDED_SNAPSHOT_GAP,
+            gap: theme.folded_snapshot_gap,
             two_line: false,
         })
     }
@@ -361,15 +344,16 @@ impl StripPlan {
     /// its aspect ratio kept, and as tall as the box leaves room for), the
     /// one with the fewest rows that draws the ladder at least
     /// [`FIT_SHARE`] as large as the best does. Snapshots with marks keep
-    /// [`MARKED_SHARE`] of their width (the marks' words need it).
+    /// [`MARKED_SHARE`] of their width (the marks' words need it; marks
+    /// without words do not).
     /// Unchanged without a box.
     fn fitted(self, frames: &[Frame<'_>], opts: &FilmstripOptions) -> StripPlan {
         let Some((box_w, box_h)) = opts.fit else {
             return self;
         };
         let (w, h) = self.size;
-        let (m, gap) = (FIT_MARGIN as f32, self.gap as f32);
         let theme = self.theme;
+        let (m, gap) = (theme.fit_margin as f32, self.gap as f32);
         let title = if opts.title.is_some() || opts.label.is_some() {
             theme.title_band()
         } else {
@@ -392,7 +376,8 @@ impl StripPlan {
                 .map(|l| style::text_width(theme.font(), &l, theme.label))
                 .fold(0.0f32, f32::max)
         };
-        let marked = opts.marks.iter().any(|m| !m.is_empty());
+        // Words beside the chain need the room; a bare triangle does not.
+        let marked = opts.marks.iter().flatten().any(|m| !m.label.is_empty());
         let n = frames.len().max(1);
         // (rows, width, height, two-line captions, ladder scale) of each way.
         let mut ways = Vec::new();
@@ -400,19 +385,19 @@ impl StripPlan {
             let k = n.div_ceil(rows);
             let room = (box_w as f32 - 2.0 * m - (k as f32 - 1.0) * gap) / k as f32;
             let cw = room.min(w as f32).floor();
-            if cw < 8.0 || (marked && cw < MARKED_SHARE * w as f32) {
+            if cw < theme.min_snapshot.0 || (marked && cw < MARKED_SHARE * w as f32) {
                 continue;
             }
-            let two = widest(false) > cw + gap - 2.0;
-            if two && widest(true) > cw + gap - 2.0 {
+            let two = widest(false) > cw + gap - theme.caption_slack;
+            if two && widest(true) > cw + gap - theme.caption_slack {
                 continue;
             }
             let lines = if two { 2.0 } else { 1.0 };
-            let caption = (theme.label * (0.5 + 1.2 * lines)).floor();
+            let caption = theme.caption_band(lines).floor();
             let tall = (box_h as f32 - 2.0 * m - title - (rows as f32 - 1.0) * gap) / rows as f32
                 - caption;
             let ch = (h as f32 * cw / w as f32).min(tall).floor();
-            if ch < 24.0 {
+            if ch < theme.min_snapshot.1 {
                 continue;
             }
             let scale = (cw / w as f32).min(ch / h as f32);
@@ -447,10 +432,10 @@ impl StripPlan {
         let number = style::mix(style::GREY, DARK, 0.3);
         for c in &self.columns {
             snapshot::draw_snapshot_on(&mut img, c.region, &c.snapshot(frame.q)?);
-            let at = (c.region.x + 0.5 * c.region.w, FOLDED_PAD);
+            let at = (c.region.x + 0.5 * c.region.w, theme.folded_pad);
             let first = format!("{}", c.start + 1);
             let top = (HAlign::Center, VAlign::Top);
-            img.text(&first, at, column_number(theme), number, top);
+            img.text(&first, at, theme.column_number, number, top);
         }
         for mark in marks {
             let (j, at) = folded.locate(mark.at);
@@ -528,7 +513,7 @@ fn strip_panels(
     let mut layout = Layout::columns(theme, plan.per_row);
     layout.gap = plan.gap;
     if opts.fit.is_some() {
-        layout.margin = FIT_MARGIN;
+        layout.margin = theme.fit_margin;
     }
     // A label without a title still gets the title band, above the frames.
     layout.title = opts

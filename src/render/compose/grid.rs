@@ -86,11 +86,7 @@ impl Layout {
 fn bands(theme: &Theme, panels: &[Panel]) -> (u32, u32) {
     let label = panels.iter().any(|p| p.label.is_some());
     let caption = panels.iter().any(|p| p.caption.is_some());
-    let l = if label {
-        (theme.panel_label * 1.5) as u32
-    } else {
-        0
-    };
+    let l = if label { theme.label_band() } else { 0 };
     let lines = panels
         .iter()
         .filter_map(|p| p.caption.as_ref())
@@ -98,7 +94,7 @@ fn bands(theme: &Theme, panels: &[Panel]) -> (u32, u32) {
         .max()
         .unwrap_or(0);
     let c = if caption {
-        (theme.label * (0.5 + 1.2 * lines as f32)) as u32
+        theme.caption_band(lines as f32) as u32
     } else {
         0
     };
@@ -226,7 +222,7 @@ fn draw_panel(
 ) {
     out.place(&p.image, (ix as f32, iy as f32));
     if let Some(l) = &p.label {
-        let at = (x as f32 + 2.0, y as f32);
+        let at = (x as f32 + theme.panel_label_inset, y as f32);
         out.text(l, at, theme.panel_label, DARK, (HAlign::Left, VAlign::Top));
     }
     if let Some(c) = &p.caption {
@@ -234,7 +230,8 @@ fn draw_panel(
         for (k, line) in c.lines().enumerate() {
             let at = (
                 x as f32 + 0.5 * cw as f32,
-                (y + lh + ih) as f32 + (0.3 + 1.2 * k as f32) * theme.label,
+                (y + lh + ih) as f32
+                    + (theme.caption_top_em + theme.caption_line_em * k as f32) * theme.label,
             );
             out.text(line, at, theme.label, DARK, (HAlign::Center, VAlign::Top));
         }

@@ -8,7 +8,7 @@ use super::{FigureInput, configuration, frame, grid, signed_deg};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::model::Ladder;
-use crate::render::charts::{X_LABEL_AREA, line_chart, short_number};
+use crate::render::charts::{line_chart, line_chart_growing, short_number};
 use crate::render::compose::Panel;
 use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign, size};
 use crate::render::theme::palette;
@@ -20,9 +20,17 @@ use crate::theory::figures::{
 use crate::theory::gravity;
 use std::f64::consts::PI;
 
+/// A chart of a theory figure, `(w, h)` on the screen page ([`fit`]); a
+/// legend under its plot makes it taller, up to its share of the page
+/// budget (half on a narrow page, where panels stack two high).
 fn chart(theme: &Theme, spec: &ChartSpec, w: u32, h: u32) -> Result<Picture> {
     let (w, h) = fit(theme, (w, h));
-    Ok(line_chart(theme, spec, w, h)?.into())
+    let share = if narrow(theme) { 0.5 } else { 1.0 };
+    let most = theme
+        .style
+        .fit_box()
+        .map_or(u32::MAX, |(_, bh)| (share * bh) as u32);
+    Ok(line_chart_growing(theme, spec, w, h, most)?.into())
 }
 
 /// Panel `k` of a figure, holding a chart titled `title`: at a journal
@@ -240,7 +248,7 @@ pub fn dispersion(theme: &Theme, input: &FigureInput) -> Result<Picture> {
             // height, the panels lose the label's band).
             let shared = !theme.titles && k + cols < count;
             let size = if shared {
-                (w, h.saturating_sub(X_LABEL_AREA - 4).max(60))
+                (w, h.saturating_sub(theme.x_label_area - theme.shared_x_area).max(60))
             } else {
                 (w, h)
             };
