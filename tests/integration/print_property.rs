@@ -29,9 +29,10 @@
 //! an inch less is refused too (it is the smallest), and the size named is
 //! then drawn and checked like any other.
 //!
-//! For charts (every view but the filmstrip), the plot area, measured from
-//! the axis and grid lines in the PDF, spans at least half the page each
-//! way ([`MIN_PLOT_FRACTION`]).
+//! For charts (every view but the filmstrip) at `paper` and `paper-wide`
+//! whose height is the program's (no `--height`), the plot areas, found in
+//! the PDF by their axes, span at least half the figure each way
+//! ([`MIN_PLOT_FRACTION`]).
 //!
 //! `LADDER_PROPERTY_SEED` changes the seed (default fixed),
 //! `LADDER_PROPERTY_DRAWS` the number of figures (default 48),
@@ -581,7 +582,11 @@ fn problems(d: &Draw, page: &Page) -> (Vec<String>, f64) {
             ));
         }
     }
-    if d.chart && (d.style == "paper" || d.style == "paper-wide") {
+    // The figure grows within the page budget to keep its plots half of
+    // it; a --height of the user's leaves it no room to grow (the program
+    // honours it and refuses only a height at which text would shrink), so
+    // the share is checked where the height is the program's.
+    if d.chart && (d.style == "paper" || d.style == "paper-wide") && d.height_pt.is_none() {
         match plot_extent(page) {
             None => out.push("no plot area (no axes) found in a chart".into()),
             Some(((w, h), (fw, fh))) => {
