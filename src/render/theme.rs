@@ -126,6 +126,12 @@ pub struct Theme {
     /// pixels (14 px at every style): room for the half of an end tick
     /// label that reaches past the plot.
     pub chart_margin: f32,
+    /// The blank margin above and below a chart's own box, design pixels:
+    /// [`Theme::chart_margin`] (14 px) at screen and slide; at a print
+    /// style 0.6 of the tick text's size (9 px at `paper`), room for the
+    /// half of the top tick label that reaches above the plot, so that
+    /// stacked panels give their height to the plots (SPEC section 10).
+    pub chart_margin_y: f32,
     /// Least width of a chart's y label area (64 px): tick labels, ticks
     /// and the rotated axis label (wider where the tick labels need it).
     pub y_label_area: u32,
@@ -256,6 +262,11 @@ impl Theme {
             marker: 4.0,
             margin: size::MARGIN as f32,
             chart_margin: 14.0,
+            chart_margin_y: if print {
+                (0.6 * tick).ceil().min(14.0)
+            } else {
+                14.0
+            },
             y_label_area: 64,
             x_label_area: 50,
             shared_x_area: 4,

@@ -248,6 +248,8 @@ where
     };
     builder
         .margin(theme.chart_margin as u32)
+        .margin_top(theme.chart_margin_y as u32)
+        .margin_bottom(theme.chart_margin_y as u32)
         .x_label_area_size(x_area)
         .y_label_area_size(y_area);
     if let Some(t) = spec.title.as_ref().filter(|_| one_line) {

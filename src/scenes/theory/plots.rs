@@ -24,7 +24,18 @@ use std::f64::consts::PI;
 /// legend under its plot makes it taller, up to its share of the page
 /// budget (half on a narrow page, where panels stack two high).
 fn chart(theme: &Theme, spec: &ChartSpec, w: u32, h: u32) -> Result<Picture> {
+    chart_taller(theme, spec, (w, h), 0)
+}
+
+/// [`chart`], `extra` pixels taller than it fits by default.
+fn chart_taller(
+    theme: &Theme,
+    spec: &ChartSpec,
+    (w, h): (u32, u32),
+    extra: u32,
+) -> Result<Picture> {
     let (w, h) = fit(theme, (w, h));
+    let h = h + extra;
     let share = if narrow(theme) { 0.5 } else { 1.0 };
     let most = theme
         .style
@@ -92,6 +103,36 @@ fn page_width(theme: &Theme, screen: u32) -> u32 {
 /// Whether the page is too narrow for panels side by side (`paper`).
 fn narrow(theme: &Theme) -> bool {
     theme.is_print() && page_width(theme, FIGURE_WIDTH) < 600
+}
+
+/// A figure of `rows` rows of charts drawn by `draw(extra)`, every chart
+/// `extra` pixels taller than its default: on a narrow page the charts
+/// grow into the page budget the default leaves (SPEC section 10: the
+/// figure grows within the budget so that its plots keep half of it), by
+/// at most `most` each; elsewhere, or when the grown figure would not fit,
+/// as drawn by default.
+fn grown(
+    theme: &Theme,
+    rows: u32,
+    most: u32,
+    draw: impl Fn(u32) -> Result<Picture>,
+) -> Result<Picture> {
+    let first = draw(0)?;
+    let Some((_, budget)) = theme.style.fit_box().filter(|_| narrow(theme)) else {
+        return Ok(first);
+    };
+    // One pixel short of the budget: the page check allows no more.
+    let room = budget - 1.0 - first.pixel_size().1 as f32;
+    let extra = ((room / rows.max(1) as f32).floor().max(0.0) as u32).min(most);
+    if extra == 0 {
+        return Ok(first);
+    }
+    let tall = draw(extra)?;
+    Ok(if tall.misfit(&theme.style).is_none() {
+        tall
+    } else {
+        first
+    })
 }
 
 /// Columns of a grid of panels: one on a narrow page, else `n`.
@@ -239,7 +280,13 @@ pub fn dispersion(theme: &Theme, input: &FigureInput) -> Result<Picture> {
         (3, fit(theme, (300, 250)))
     };
     let count = lines.len();
-    let draw = |(w, h): (u32, u32)| -> Result<Picture> {
+    let notes = "ω₀ = √(k/m) = 1/τ, I = m s²/4, constraint δv_{n} = (−1)ⁿ(s/2) sin α δθ_{n}. The printed closed form is √2 too small for this ω₀ \
+                 (docs/paper-errata.md item 9): it is exact if ω₀ is read as √(2k/m). The \
+                 eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I), \
+                 as in the paper) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \
+                 of the rotational branch; ω₋ is acoustic.";
+    let draw = |extra: u32| -> Result<Picture> {
+        let (w, h) = (size.0, size.1 + extra);
         let mut panels = Vec::new();
         for (k, (l, d)) in lines.iter().zip(&dots).enumerate() {
             let title = format!("α = {}°", short_number(l.alpha_deg));
@@ -248,7 +295,11 @@ pub fn dispersion(theme: &Theme, input: &FigureInput) -> Result<Picture> {
             // height, the panels lose the label's band).
             let shared = !theme.titles && k + cols < count;
             let size = if shared {
-                (w, h.saturating_sub(theme.x_label_area - theme.shared_x_area).max(60))
+                (
+                    w,
+                    h.saturating_sub(theme.x_label_area - theme.shared_x_area)
+                        .max(60),
+                )
             } else {
                 (w, h)
             };
@@ -256,33 +307,21 @@ pub fn dispersion(theme: &Theme, input: &FigureInput) -> Result<Picture> {
             panels.push(titled_panel(theme, k, &title, chart));
         }
         let body = grid(theme, &panels, cols)?;
-        Ok(stack(&body, &dispersion_key(theme, body.pixel_size().0)?))
+        let body = stack(&body, &dispersion_key(theme, body.pixel_size().0)?);
+        frame(
+            theme,
+            &input.title,
+            &body,
+            notes,
+            page_width(theme, FIGURE_WIDTH),
+        )
     };
-    let mut body = draw(size)?;
-    // On a narrow page the panels grow taller into the page budget left
-    // (the plots keep half of the figure: SPEC section 10), no taller than
-    // wide.
-    if narrow(theme)
-        && let Some((_, budget)) = theme.style.fit_box()
-    {
-        let rows = count.div_ceil(cols) as u32;
-        let room = budget - body.pixel_size().1 as f32 - 2.0 * (size::MARGIN + size::GAP) as f32;
-        if room >= rows as f32 {
-            let grown = size.1 + (room / rows as f32).floor() as u32;
-            body = draw((size.0, grown.min(size.0)))?;
-        }
-    }
-    let notes = "ω₀ = √(k/m) = 1/τ, I = m s²/4, constraint δv_{n} = (−1)ⁿ(s/2) sin α δθ_{n}. The printed closed form is √2 too small for this ω₀ \
-                 (docs/paper-errata.md item 9): it is exact if ω₀ is read as √(2k/m). The \
-                 eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I), \
-                 as in the paper) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \
-                 of the rotational branch; ω₋ is acoustic.";
-    frame(
+    // Plots no taller than wide.
+    grown(
         theme,
-        &input.title,
-        &body,
-        notes,
-        page_width(theme, FIGURE_WIDTH),
+        count.div_ceil(cols) as u32,
+        size.0.saturating_sub(size.1),
+        draw,
     )
 }
 
@@ -458,22 +497,7 @@ fn winding_panel(theme: &Theme, p: &crate::model::Params) -> Result<(Picture, St
 /// and |c₂/c₁|^{n−1} ∝ e^{−κ(n−1)b} (eq:2nd_sol, lines), log scale; α > 0
 /// left (top edge), α < 0 right (bottom edge).
 pub fn edge_mode(theme: &Theme, input: &FigureInput) -> Result<Picture> {
-    let mut panels = Vec::new();
-    for (k, sign) in [1.0, -1.0].into_iter().enumerate() {
-        let title = if sign > 0.0 {
-            "α > 0: localised at the top"
-        } else {
-            "α < 0: localised at the bottom"
-        };
-        panels.push(titled_panel(
-            theme,
-            k,
-            title,
-            edge_panel(theme, input, sign, title)?,
-        ));
-    }
     let (n, b) = (input.model.n, input.model.b);
-    let body = grid(theme, &panels, columns(theme, 2))?;
     let notes = format!(
         "N = {n}, b/s = {b}; surface zero mode of the chain with the B nodes pinned \
                  (the paper's edge mode), found as the null vector of the model's compatibility \
@@ -484,16 +508,39 @@ pub fn edge_mode(theme: &Theme, input: &FigureInput) -> Result<Picture> {
         crate::theory::formulas::EDGE_DECAY,
         (0.5 * b).min(1.0).asin().to_degrees()
     );
-    frame(
-        theme,
-        &input.title,
-        &body,
-        &notes,
-        page_width(theme, FIGURE_WIDTH),
-    )
+    let cols = columns(theme, 2);
+    let draw = |extra: u32| -> Result<Picture> {
+        let mut panels = Vec::new();
+        for (k, sign) in [1.0, -1.0].into_iter().enumerate() {
+            let title = if sign > 0.0 {
+                "α > 0: localised at the top"
+            } else {
+                "α < 0: localised at the bottom"
+            };
+            let chart = edge_panel(theme, input, sign, title, extra)?;
+            panels.push(titled_panel(theme, k, title, chart));
+        }
+        let body = grid(theme, &panels, cols)?;
+        frame(
+            theme,
+            &input.title,
+            &body,
+            &notes,
+            page_width(theme, FIGURE_WIDTH),
+        )
+    };
+    grown(theme, (2 / cols) as u32, u32::MAX, draw)
 }
 
-fn edge_panel(theme: &Theme, input: &FigureInput, sign: f64, title: &str) -> Result<Picture> {
+/// One panel of the edge-mode figure, `extra` pixels taller than its
+/// default.
+fn edge_panel(
+    theme: &Theme,
+    input: &FigureInput,
+    sign: f64,
+    title: &str,
+    extra: u32,
+) -> Result<Picture> {
     let (n, b) = (input.model.n, input.model.b);
     let mut spec = ChartSpec::new(
         Axis::new("block n").range(0.5, n as f64 + 0.5),
@@ -529,7 +576,7 @@ fn edge_panel(theme: &Theme, input: &FigureInput, sign: f64, title: &str) -> Res
         ));
     }
     spec.y = spec.y.range(1e-9, 3.0);
-    chart(theme, &spec, 440, 420)
+    chart_taller(theme, &spec, (440, 420), extra)
 }
 
 /// The barrier figure: ΔU(α) = U(0) − U(α) (eq:delta_U) for b/s = 1.3, and
