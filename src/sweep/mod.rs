@@ -204,7 +204,12 @@ pub fn write_outputs(
     // a page is refused naming the smallest that holds the chart.
     let (picture, charted) = crate::render::fitted(&output.theme, |theme| {
         Ok(match chart::chart(theme, plan, records)? {
-            Some(c) => (crate::render::Picture::from(c).fit_page(), true),
+            Some(c) => (
+                crate::render::Picture::from(c)
+                    .fit_page()
+                    .titled(crate::scene::describe::title(&plan.scene)),
+                true,
+            ),
             None => (crate::render::Picture::new(theme, 1.0, 1.0), false),
         })
     })?;
