@@ -74,10 +74,21 @@ const LEAST_PANEL: u32 = 110;
 const FRONT_LEGEND_ROOM: u32 = 80;
 
 /// The least height of a panel whose y axis says `label`: room for the
-/// rotated label along the plot, and at least [`LEAST_PANEL`].
+/// rotated label along the plot, and at least [`LEAST_PANEL`] (less at a
+/// print style).
 fn least_for(theme: &Theme, label: &str) -> u32 {
-    let along = style::text_width(theme.font(), label, theme.label) + 24.0;
-    (along.ceil() as u32).max(LEAST_PANEL)
+    // The rotated label's length, within the chart's own margins above
+    // and below the plot, and a few pixels of air.
+    let along =
+        style::text_width(theme.font(), label, theme.label) + 2.0 * theme.chart_margin_y + 4.0;
+    // At a print style six lines of tick text (90 px at `paper`): a plot
+    // of two or three ticks, so that a stack of four keeps the budget.
+    let least = if theme.is_print() {
+        ((6.0 * theme.tick).ceil() as u32).min(LEAST_PANEL)
+    } else {
+        LEAST_PANEL
+    };
+    (along.ceil() as u32).max(least)
 }
 
 /// Pixels a panel whose x axis is shared (labelled below) does not need.

@@ -750,6 +750,12 @@ fn random_figures_keep_the_print_rules() {
             Err((Some(2), msg)) => {
                 // Refused: one line naming the flag and a size that works.
                 refused += 1;
+                // At its own size (no --width or --height of the user's) a
+                // figure keeps the page budget: refusing it is a failure.
+                let sized = d.args.iter().any(|a| a == "--width" || a == "--height");
+                if !sized && (d.style == "paper" || d.style == "paper-wide") {
+                    failures.push(format!("{:?}: refused at its own size: {msg}", d.args));
+                }
                 let Some((flag, value)) = named_size(&msg) else {
                     failures.push(format!("{:?}: refused without a size: {msg}", d.args));
                     continue;
