@@ -174,6 +174,17 @@ fn ticks(cells: usize, most: usize) -> usize {
     (cells - 1) / step + 1
 }
 
+/// The shade bar's three tick labels, at its ends and its middle
+/// (geometric on a log bar), in one number format.
+fn bar_ticks(bar: &ShadeBar) -> Vec<String> {
+    let mid = if bar.log && bar.lo > 0.0 {
+        (bar.lo * bar.hi).sqrt()
+    } else {
+        0.5 * (bar.lo + bar.hi)
+    };
+    same_format(&[bar.lo, mid, bar.hi])
+}
+
 fn draw_legend(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
     let text = font(theme, theme.tick).into_font().color(&rgb(DARK));
     let mut y = 30;
@@ -205,14 +216,8 @@ fn draw_legend(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
             ))
             .map_err(plot_error)?;
         }
-        // Ticks at the ends and the middle (geometric on a log bar), their
-        // labels centred on them, in one number format.
-        let mid = if bar.log && bar.lo > 0.0 {
-            (bar.lo * bar.hi).sqrt()
-        } else {
-            0.5 * (bar.lo + bar.hi)
-        };
-        let labels = same_format(&[bar.lo, mid, bar.hi]);
+        // Ticks at the ends and the middle, their labels centred on them.
+        let labels = bar_ticks(bar);
         for (k, label) in labels.into_iter().enumerate() {
             let ty = y + h - (k as i32) * h / 2;
             area.draw(&PathElement::new(
@@ -356,12 +361,7 @@ fn draw_legend_below(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()
             ))
             .map_err(plot_error)?;
         }
-        let mid = if bar.log && bar.lo > 0.0 {
-            (bar.lo * bar.hi).sqrt()
-        } else {
-            0.5 * (bar.lo + bar.hi)
-        };
-        let labels = same_format(&[bar.lo, mid, bar.hi]);
+        let labels = bar_ticks(bar);
         let ty = y + b.bar_h;
         for (k, label) in labels.into_iter().enumerate() {
             let tx = x0 + (k as i32) * len / 2;
