@@ -15,6 +15,8 @@ pub mod charts;
 pub mod compose;
 pub mod fit;
 pub mod fold;
+pub mod italic;
+pub mod markup;
 pub mod movie_layout;
 pub mod page_style;
 pub mod picture;

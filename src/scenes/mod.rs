@@ -9,6 +9,7 @@ pub mod dynamic;
 pub mod energy;
 pub mod experiments;
 pub mod kymograph;
+pub mod movie;
 pub mod options;
 pub mod run;
 pub mod stiff;

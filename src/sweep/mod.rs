@@ -19,6 +19,7 @@ pub mod outcome;
 pub mod results;
 pub mod run;
 pub mod shard;
+pub mod stack;
 
 use crate::error::{Error, Result};
 use crate::scene::sweep::{Param, Point, SweepSpec};
