@@ -4,6 +4,7 @@
 //! below, panels re-grid), so the size one layout needs is not the size
 //! the figure needs: it is found by drawing the figure again.
 
+use super::charts::{ChartSpec, line_chart_growing};
 use super::{PageSide, Picture, Style, Theme};
 use crate::error::Result;
 
@@ -67,4 +68,24 @@ pub fn fitted<T>(
         }
     }
     Err(picture.refusal(&style, side, hi as f32 * HUNDREDTH_PT))
+}
+
+/// A figure of one line chart, `spec`, `screen` pixels at the screen style
+/// (the style's frame elsewhere), taller by its legend's band when the
+/// legend goes under the plot (within the page), on the style's page and
+/// titled `title`; refused as [`fitted`] says when no layout fits. Only
+/// the chart is drawn again while the size is searched.
+pub fn line_chart_figure(
+    theme: &Theme,
+    spec: &ChartSpec,
+    screen: (u32, u32),
+    title: &str,
+) -> Result<Picture> {
+    let (picture, ()) = fitted(theme, |t| {
+        let (w, h) = t.style.frame(screen);
+        let most = t.style.fit_box().map_or(u32::MAX, |(_, bh)| bh as u32);
+        let chart = line_chart_growing(t, spec, w, h, most)?;
+        Ok((Picture::from(chart).fit_page().titled(title), ()))
+    })?;
+    Ok(picture)
 }

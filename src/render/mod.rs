@@ -30,7 +30,7 @@ pub mod theme;
 pub use canvas::{Canvas, Cap, Pen, Raster};
 pub use charts::{Axis, Chart, ChartSpec, Kymograph, Legend, LineStyle, Marker, Scale, Series};
 pub use compose::{FilmstripOptions, Frame, Layout, Panel};
-pub use fit::fitted;
+pub use fit::{fitted, line_chart_figure};
 pub use movie_layout::MovieLayout;
 pub use page_style::{FontChoice, Length, Style, StyleName, StyleSpec, TextMode};
 pub use picture::{Item, PageSide, Picture};

@@ -5,7 +5,8 @@ use super::data::RunData;
 use super::dynamic::{panel_labels, wave_name};
 use super::run::{self};
 use crate::error::Result;
-use crate::render::charts::{self, Axis, ChartSpec, Marker, Series};
+use crate::render::charts::{Axis, ChartSpec, Marker, Series};
+use crate::render::line_chart_figure;
 use crate::render::{Picture, Theme, style};
 use crate::scene::{Scene, describe};
 use crate::sim::{self};
@@ -38,12 +39,10 @@ fn fitted_line(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
 /// kink, dashed for an antikink) and its fitted speed in the legend;
 /// drawn with `theme`.
 pub fn arrivals_figure(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+    // The runs once; the chart is drawn again only to search a size.
     let (spec, data) = arrivals_chart(scene)?;
-    let (w, h) = theme.style.frame((820, 560));
-    // A legend under the plot makes the chart taller, within the page.
-    let most = theme.style.fit_box().map_or(u32::MAX, |(_, bh)| bh as u32);
-    let picture = Picture::from(charts::line_chart_growing(theme, &spec, w, h, most)?).fit_page();
-    Ok((picture.titled(describe::title(scene)), data))
+    let title = describe::title(scene);
+    Ok((line_chart_figure(theme, &spec, (820, 560), &title)?, data))
 }
 
 /// What [`arrivals_figure`] draws: the chart's series (each wave's marks,

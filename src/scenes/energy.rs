@@ -17,7 +17,8 @@ use super::data::RunData;
 pub use super::data::{ENERGY_SAMPLES, EnergyData};
 use super::run;
 use crate::error::{Error, Result};
-use crate::render::charts::{self, Axis, ChartSpec, Series};
+use crate::render::charts::{Axis, ChartSpec, Series};
+use crate::render::line_chart_figure;
 use crate::render::theme::palette;
 use crate::render::{Picture, Theme, style};
 use crate::scene::{Scene, describe};
@@ -53,11 +54,11 @@ pub fn energy_figure(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunDa
         dissipated: e.dissipated,
     };
     let spec = energy_chart(scene, &data);
-    let (w, h) = theme.style.frame((820, 560));
-    let picture = Picture::from(charts::line_chart(theme, &spec, w, h)?).fit_page();
+    // The run once; the chart is drawn again only to search a size.
+    let picture = line_chart_figure(theme, &spec, (820, 560), &describe::title(scene))?;
     let mut record = RunData::from_run(scene, &run);
     record.energies = Some(data);
-    Ok((picture.titled(describe::title(scene)), vec![record]))
+    Ok((picture, vec![record]))
 }
 
 /// The chart: each energy's change from t = 0 against t/τ.

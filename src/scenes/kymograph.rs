@@ -18,12 +18,13 @@ pub fn kymograph_figure(theme: &Theme, scene: &Scene, frames: usize) -> Result<(
     let times = frame_times(scene.run.t_end, frames);
     let run = run::simulate(scene, &times)?;
     let title = describe::title(scene);
-    let (w, h) = theme.style.frame((820, 560));
-    let image = kymograph_chart(theme, &title, &run.trajectory, scene.model.n, w, h)?;
-    Ok((
-        Picture::from(image).fit_page().titled(title),
-        RunData::with_kymograph(scene, run),
-    ))
+    // The run once; the chart is drawn again only to search a size.
+    let (picture, ()) = crate::render::fitted(theme, |t| {
+        let (w, h) = t.style.frame((820, 560));
+        let image = kymograph_chart(t, &title, &run.trajectory, scene.model.n, w, h)?;
+        Ok((Picture::from(image).fit_page().titled(title.clone()), ()))
+    })?;
+    Ok((picture, RunData::with_kymograph(scene, run)))
 }
 
 /// The kymograph of sin θ_n of `traj`: blocks across, time down, as a

@@ -165,14 +165,12 @@ pub fn figure_picture(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunD
         // Filmstrips search their own smallest height, without running
         // their scenes again.
         OutputSpec::Filmstrip { .. } => dynamic::filmstrip_figure(theme, scene, None),
-        OutputSpec::Arrivals { .. } => {
-            crate::render::fitted(theme, |t| arrivals::arrivals_figure(t, scene))
-        }
-        OutputSpec::Energy => crate::render::fitted(theme, |t| energy::energy_figure(t, scene)),
-        OutputSpec::Kymograph => crate::render::fitted(theme, |t| {
-            let (picture, run) = kymograph::kymograph_figure(t, scene, KYMOGRAPH_ROWS)?;
+        OutputSpec::Arrivals { .. } => arrivals::arrivals_figure(theme, scene),
+        OutputSpec::Energy => energy::energy_figure(theme, scene),
+        OutputSpec::Kymograph => {
+            let (picture, run) = kymograph::kymograph_figure(theme, scene, KYMOGRAPH_ROWS)?;
             Ok((picture, vec![run]))
-        }),
+        }
         OutputSpec::Experiment(e) => experiments::experiment_figure(theme, scene, e.figure),
         OutputSpec::Movie { .. } | OutputSpec::Data | OutputSpec::Sweep(_) => {
             Err(Error::bad_input(format!(

@@ -117,15 +117,7 @@ fn shown_text(path: &Path) -> Vec<(String, String)> {
         match op.operator.as_str() {
             "Tf" => font = a[0].as_name().unwrap_or(b"").to_vec(),
             "Tj" | "TJ" => {
-                let bytes: Vec<u8> = match &a[0] {
-                    lopdf::Object::String(b, _) => b.clone(),
-                    lopdf::Object::Array(parts) => parts
-                        .iter()
-                        .filter_map(|p| p.as_str().ok().map(|s| s.to_vec()))
-                        .flatten()
-                        .collect(),
-                    _ => Vec::new(),
-                };
+                let bytes = crate::common::pdf::shown_bytes(&a[0]);
                 let f = fonts.get(&font).expect("the shown font is a page font");
                 for c in bytes.chunks(2) {
                     let code = c.iter().fold(0u32, |a, &x| a * 256 + x as u32);

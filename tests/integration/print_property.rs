@@ -384,15 +384,7 @@ fn read_pdf(path: &Path) -> Page {
                 tm = [m[0], m[1], m[2], m[3], m[4], m[5]];
             }
             "Tj" | "TJ" => {
-                let bytes: Vec<u8> = match &a[0] {
-                    lopdf::Object::String(b, _) => b.clone(),
-                    lopdf::Object::Array(parts) => parts
-                        .iter()
-                        .filter_map(|p| p.as_str().ok().map(|s| s.to_vec()))
-                        .flatten()
-                        .collect(),
-                    _ => Vec::new(),
-                };
+                let bytes = crate::common::pdf::shown_bytes(&a[0]);
                 let m = mul(&tm, &ctm);
                 let scale = (m[0] * m[3] - m[1] * m[2]).abs().sqrt();
                 let w = fonts.get(&font);

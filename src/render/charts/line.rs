@@ -24,27 +24,10 @@ use std::ops::Range;
 /// habits of `theme` (the figure's, passed down by its builder).
 pub fn line_chart(theme: &Theme, spec: &ChartSpec, width: u32, height: u32) -> Result<Chart> {
     check_size(width, height)?;
-    // Journal styles draw no title: the caption is the document's.
-    let untitled;
-    let spec = if spec.title.is_some() && !theme.titles {
-        untitled = ChartSpec {
-            title: None,
-            ..spec.clone()
-        };
-        &untitled
-    } else {
-        spec
-    };
+    let spec = for_theme(theme, spec);
     style::register_plotters_font();
-    let (pass, xr, yr) = layout(theme, spec, width, height)?;
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
-        root.fill(&WHITE).map_err(plot_error)?;
-        draw_any(theme, &root, spec, pass, xr, yr)?;
-        root.present().map_err(plot_error)?;
-    }
-    Chart::from_svg(theme, &svg, width, height)
+    let (pass, xr, yr) = layout(theme, &spec, width, height)?;
+    draw(theme, &spec, (width, height), pass, (xr, yr))
 }
 
 /// [`line_chart`] `width` wide and `height` tall, or taller by the
@@ -60,19 +43,51 @@ pub fn line_chart_growing(
     max_height: u32,
 ) -> Result<Chart> {
     check_size(width, height)?;
-    let untitled = ChartSpec {
-        title: spec.title.clone().filter(|_| theme.titles),
-        ..spec.clone()
-    };
+    let spec = for_theme(theme, spec);
     style::register_plotters_font();
-    let (pass, _, _) = layout(theme, &untitled, width, height)?;
-    let height = if pass.legend == Legend::Below {
-        let band = below_grid(theme, &untitled, width).4;
-        (height + band).min(max_height.max(height))
+    let (pass, xr, yr) = layout(theme, &spec, width, height)?;
+    if pass.legend != Legend::Below {
+        return draw(theme, &spec, (width, height), pass, (xr, yr));
+    }
+    // Laid out again at the new height (the legend's place may change).
+    let band = below_grid(theme, &spec, width).4;
+    line_chart(
+        theme,
+        &spec,
+        width,
+        (height + band).min(max_height.max(height)),
+    )
+}
+
+/// `spec` as `theme` draws it: journal styles draw no title (the caption
+/// is the document's).
+fn for_theme<'a>(theme: &Theme, spec: &'a ChartSpec) -> std::borrow::Cow<'a, ChartSpec> {
+    if spec.title.is_some() && !theme.titles {
+        std::borrow::Cow::Owned(ChartSpec {
+            title: None,
+            ..spec.clone()
+        })
     } else {
-        height
-    };
-    line_chart(theme, spec, width, height)
+        std::borrow::Cow::Borrowed(spec)
+    }
+}
+
+/// The chart's SVG with the legend placement and ranges of [`layout`].
+fn draw(
+    theme: &Theme,
+    spec: &ChartSpec,
+    (width, height): (u32, u32),
+    pass: Pass,
+    (xr, yr): (Range<f64>, Range<f64>),
+) -> Result<Chart> {
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_error)?;
+        draw_any(theme, &root, spec, pass, xr, yr)?;
+        root.present().map_err(plot_error)?;
+    }
+    Chart::from_svg(theme, &svg, width, height)
 }
 
 /// Where the legend goes and the axes' ranges, for `spec` drawn

@@ -7,6 +7,7 @@ pub mod golden;
 pub mod h264;
 pub mod kernels;
 pub mod lcg;
+pub mod pdf;
 pub mod require;
 pub mod scenes;
 pub mod tempdir;
