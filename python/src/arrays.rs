@@ -21,7 +21,7 @@ const RETURN_EVERY: usize = 32 << 20;
 /// that threshold (up to 32 MB) each time a larger mapped block is freed:
 /// once `auto`'s two runs have freed their buffers, a run's rows come from
 /// the arenas, and without this their memory stayed resident beside the
-/// columns made from them (Python's peak at twice the CLI's, issue 32).
+/// columns made from them (Python's peak was twice the CLI's).
 /// `malloc_trim` returns the free pages of every arena (madvise); the
 /// numbers are untouched.
 fn give_back() {
@@ -74,7 +74,7 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
     let kink = std::mem::take(&mut traj.kink_position);
     // Layout of q and v: [X, Y, θ] per block (`model::ladder`). Each
     // sample's row is freed as soon as it is split, so the peak is the
-    // trajectory's size once, not twice (issue 32): the columns are
+    // trajectory's size once, not twice: the columns are
     // reserved (address space, no page touched) and fill as the rows go.
     let split = |rows: Vec<Vec<f64>>| -> Result<[Vec<f64>; 3]> {
         let mut out: [Vec<f64>; 3] = Default::default();

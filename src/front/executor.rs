@@ -1,5 +1,5 @@
 //! A sweep cut into chunks that a front end hands to workers it does not
-//! know (SPEC section 11: the Python package's `sweep(..., executor=EX)`,
+//! know (docs/python.md: the Python package's `sweep(..., executor=EX)`,
 //! for a process pool, dask, submitit or MPI). A chunk is a shard of the
 //! sweep ([`crate::sweep::shard`], round robin over the grid), run on this
 //! process's cores and handed back as the bytes of its shard file; the

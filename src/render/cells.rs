@@ -1,5 +1,5 @@
 //! A chart of coloured cells on a grid of two parameters (a sweep's phase
-//! diagram, SPEC section 7): one cell per grid point, its colour given,
+//! diagram, docs/sweeps.md): one cell per grid point, its colour given,
 //! a legend of the colours and, optionally, a shade bar. Cells sit at
 //! their index along each axis (uneven spacings such as 0.005, 0.01, 0.02
 //! get equal cells), ticks name the values. Drawn like the other charts:
@@ -70,7 +70,7 @@ pub fn cell_chart(theme: &Theme, c: &CellChart, width: u32, height: u32) -> Resu
         root.fill(&WHITE).map_err(plot_error)?;
         let root = titled(theme, root, c.title.as_deref(), width)?;
         // The legend beside the cells when the cells keep half the width
-        // that way, else under them in rows (SPEC section 10: the plot
+        // that way, else under them in rows (docs/formats.md: the plot
         // area keeps at least half of its panel each way).
         if legend_beside(theme, c, width) {
             let (main, side) = root.split_horizontally(width.saturating_sub(LEGEND_W));

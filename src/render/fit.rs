@@ -1,4 +1,4 @@
-//! The smallest page a figure fits at its style's text (SPEC section 10: a
+//! The smallest page a figure fits at its style's text (docs/formats.md: a
 //! size that cannot hold the figure is refused, naming the flag and the
 //! smallest size that works). A layout moves with the page (a legend goes
 //! below, panels re-grid), so the size one layout needs is not the size

@@ -1,6 +1,6 @@
 //! One [`Style`] for a figure: the page it is printed on (width and height
 //! in points), the size of its text, its font, the resolution of its PNG and
-//! whether its vector text stays text (SPEC section 10; matplotlib's
+//! whether its vector text stays text (docs/formats.md; matplotlib's
 //! rcParams and SciencePlots in spirit).
 //!
 //! Every figure is laid out in *design pixels* with the text sizes of
@@ -148,7 +148,7 @@ impl Default for Style {
 pub const PT_PER_IN: f32 = 72.0;
 /// Millimetres per inch.
 pub const MM_PER_IN: f32 = 25.4;
-/// Smallest text a print style may set, in points (SPEC section 10).
+/// Smallest text a print style may set, in points (docs/formats.md).
 pub const MIN_PRINT_TEXT_PT: f32 = 6.0;
 /// Tallest a figure may print at a print style without a page height, in
 /// points: 4.5 in, so that a figure with its caption takes at most about
@@ -379,7 +379,7 @@ fn dpi<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<f32>, D::Error> 
 }
 
 /// What a scene file's `[style]` table or the command line asks for; each
-/// field left out keeps the named style's value (SPEC section 10).
+/// field left out keeps the named style's value (docs/formats.md).
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct StyleSpec {

@@ -228,7 +228,7 @@ impl Picture {
 
     /// Refuses (exit 2) a picture that would print its text smaller than
     /// the style's size: one whose content is wider than the page, or
-    /// taller than the page allows, at the style's scale (SPEC section 10:
+    /// taller than the page allows, at the style's scale (docs/formats.md:
     /// text is never scaled to fit). The message names the flag and the
     /// smallest size that holds this layout (a layout that moves with the
     /// size is searched by [`super::fitted`]). Composed figures at

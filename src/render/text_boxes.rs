@@ -1,7 +1,7 @@
 //! Where a picture's text lies: the box of every text, from the picture's
 //! own display list (canvas text measured with the style's font, chart text
 //! from the layout of the chart's parsed SVG), in design pixels, with its
-//! size; and the layout rules of SPEC section 10 checked on them: every box
+//! size; and the layout rules of docs/formats.md checked on them: every box
 //! inside the page, no two boxes overlapping, no text under 6 pt at a print
 //! style.
 

@@ -1,6 +1,6 @@
 //! One [`Theme`] value for a figure, built from its [`Style`]: every text
 //! size (sub- and superscripts included), line width, marker size, margin,
-//! gap and colour the drawing code uses (SPEC section 10).
+//! gap and colour the drawing code uses (docs/formats.md).
 //!
 //! Sizes are in *design pixels*, the unit every layout works in; the style
 //! fixes how many design pixels a point is ([`Style::px_per_pt`]), so a
@@ -42,7 +42,7 @@ pub mod size {
     pub const GAP: u32 = 10;
 }
 
-/// Smallest a sub- or superscript may print, in points (SPEC section 10).
+/// Smallest a sub- or superscript may print, in points (docs/formats.md).
 pub const MIN_SCRIPT_PT: f32 = 5.0;
 
 /// Size of super- and subscripts relative to their text.
@@ -130,7 +130,7 @@ pub struct Theme {
     /// [`Theme::chart_margin`] (14 px) at screen and slide; at a print
     /// style 0.6 of the tick text's size (9 px at `paper`), room for the
     /// half of the top tick label that reaches above the plot, so that
-    /// stacked panels give their height to the plots (SPEC section 10).
+    /// stacked panels give their height to the plots (docs/formats.md).
     pub chart_margin_y: f32,
     /// Least width of a chart's y label area (64 px): tick labels, ticks
     /// and the rotated axis label (wider where the tick labels need it).
@@ -172,7 +172,7 @@ pub struct Theme {
     /// clear of the cell's edge, in line with the picture under it.
     pub panel_label_inset: f32,
     /// Words of a filmstrip's marks ("kink", "collision"): 11 px, and at a
-    /// print style at least the style's text size (SPEC section 10).
+    /// print style at least the style's text size (docs/formats.md).
     pub mark_text: f32,
     /// Pixels from the chain to a filmstrip mark's tip (3 px): the
     /// triangle points at the chain without touching it.

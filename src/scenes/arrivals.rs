@@ -122,7 +122,7 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
 }
 
 /// What the legend says of a wave with no fitted speed, from its fate
-/// (SPEC section 9): where the state proved it stopped (pinned if it never
+/// (docs/sweeps.md): where the state proved it stopped (pinned if it never
 /// got past block 2, as a sweep says), where it was annihilated, or that
 /// it has no speed.
 fn without_speed(wave: Option<&sim::waves::Wave>) -> String {

@@ -1,4 +1,4 @@
-//! The data file beside every output (`<output>.json`, SPEC section 6):
+//! The data file beside every output (`<output>.json`, docs/scenes.md):
 //! what made it and the numbers its picture shows, one [`RunData`] per
 //! simulation drawn.
 
@@ -19,8 +19,8 @@ use std::sync::Arc;
 pub use crate::output::data::{BYTES_PER_VALUE, MadeBy, write_json};
 
 /// `<output>.json`: the scene with every parameter, the program that made
-/// the output, and the numbers the picture shows (SPEC section 6); with
-/// `settings` and the scene, what reruns it (issue 19).
+/// the output, and the numbers the picture shows (docs/scenes.md); with
+/// `settings` and the scene, what reruns it.
 #[derive(Debug, Clone, Serialize)]
 pub struct DataFile<'a> {
     #[serde(flatten)]
@@ -113,7 +113,7 @@ pub struct RunData {
     /// in a sweep's CSV).
     pub blocks_flipped: usize,
     pub final_theta_deg: Vec<f64>,
-    /// Every wave of the run and block N's fate (SPEC section 9).
+    /// Every wave of the run and block N's fate (docs/sweeps.md).
     pub waves: sim::waves::Waves,
     /// The state at each drawn time, one [`FrameData`] each.
     pub frames: Frames,
@@ -233,10 +233,10 @@ impl Serialize for Frames {
     }
 }
 
-/// A kymograph's matrix (issue 19), written as `{"times": [...],
+/// A kymograph's matrix, written as `{"times": [...],
 /// "sin_theta": [[...], ...]}`: `sin_theta[k][i]` is sin θ of block i + 1
 /// at `times[k]`, the colour of the kymograph's row k and column i + 1
-/// (the polarisation, SPEC section 1).
+/// (the polarisation, docs/model.md).
 #[derive(Debug, Clone, Default)]
 pub struct Kymograph(Arc<SampleRows>);
 
@@ -412,7 +412,7 @@ pub const NPZ_ARRAYS: [&str; 12] = [
 /// [`NpzMetadata`]).
 pub const NPZ_METADATA: &str = "metadata";
 
-/// What an `.npz` says of itself (SPEC section 11: every file carries
+/// What an `.npz` says of itself (docs/python.md: every file carries
 /// its provenance): the program that wrote it and the scene it ran.
 #[derive(Debug, Clone, Serialize)]
 pub struct NpzMetadata<'a> {
@@ -444,12 +444,12 @@ fn column<W: Write>(
 }
 
 /// The whole state of `traj` at its sample times as NumPy's `.npz`
-/// (SPEC section 9), streamed into `w`: `t` (S), and S × N arrays `theta`
+/// (docs/sweeps.md), streamed into `w`: `t` (S), and S × N arrays `theta`
 /// (radians, wrapped to (−π, π]), `x`, `y` (centres, units of s), `vx`,
 /// `vy`, `omega` (θ̇), then per sample the energies (units of k s²):
 /// `kinetic_energy` ½m(Ẋ²+Ẏ²)+½Iθ̇², `elastic_energy`
 /// Σ½k[(L_A−a)²+(L_B−b)²], `gravitational_energy` −mGΣX_n and their sum
-/// `energy` (SPEC section 1). Nothing is held beyond one buffer.
+/// `energy` (docs/model.md). Nothing is held beyond one buffer.
 ///
 /// Last, `metadata`: the file's provenance as JSON text in a 0-d unicode
 /// array ([`NPZ_METADATA`]; `json.loads(str(npz["metadata"]))`): the

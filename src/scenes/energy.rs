@@ -1,9 +1,9 @@
 //! The energy view (`--view energy`, `[output] kind = "energy"`): the
-//! energies of the scene's run against t/τ (SPEC section 11), with the
+//! energies of the scene's run against t/τ (docs/python.md), with the
 //! numbers in its data file.
 //!
 //! Each energy is drawn as its change from t = 0, in units of k s²
-//! (SPEC section 1; the supplement's equations of motion, "Details of
+//! (docs/model.md; the supplement's equations of motion, "Details of
 //! numerical simulation"): the kinetic ½m(Ẋ² + Ẏ²) + ½Iθ̇², the elastic
 //! Σ½k[(L_A − a)² + (L_B − b)²], the gravitational −mGΣX_n, the energy
 //! the damping has dissipated so far (∫ γ(Ẋ² + Ẏ² + r²θ̇²) dt, recorded

@@ -44,7 +44,7 @@ pub struct Outputs {
     /// Default: none.
     pub style: crate::render::StyleSpec,
     /// The command line that asked for the files, word by word, recorded
-    /// in each data file (issue 19). Default: empty (the library called
+    /// in each data file. Default: empty (the library called
     /// directly).
     pub command_line: Vec<String>,
 }

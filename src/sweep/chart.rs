@@ -1,4 +1,4 @@
-//! Charts drawn from a sweep's results (SPEC section 7):
+//! Charts drawn from a sweep's results (docs/sweeps.md):
 //!
 //! - one varied parameter: how far the wave got (front, coloured by
 //!   outcome) and its speed against the parameter; a sweep over α of both

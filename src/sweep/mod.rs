@@ -1,4 +1,4 @@
-//! Sweeps (SPEC section 7): a scene run over a grid of parameters, every
+//! Sweeps (docs/sweeps.md): a scene run over a grid of parameters, every
 //! run until its outcome is decided, on every core, results in grid order.
 //!
 //! - `scene::sweep` holds the data (grid, rule, charts) of a scene whose

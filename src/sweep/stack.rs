@@ -1,4 +1,4 @@
-//! Sweep panels stacked into one chart (SPEC sections 7 and 10): their
+//! Sweep panels stacked into one chart (docs/sweeps.md and docs/formats.md): their
 //! heights fitted to the page budget, none below what its rotated y label
 //! needs, drawn at the sweep chart's width, and at a print style lettered
 //! (a), (b), … in a column of their own at the left.

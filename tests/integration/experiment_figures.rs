@@ -1,4 +1,4 @@
-//! The experiments' figures (SPEC section 12; docs/experiments.md) against
+//! The experiments' figures (docs/experiments.md; docs/experiments.md) against
 //! what their captions say: each level of model's kink speed and ratio in
 //! the water tank, the "stiff" links' k-and-2k check, and the printed
 //! linkage's antikink that stops where the kink runs.

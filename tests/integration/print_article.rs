@@ -1,4 +1,4 @@
-//! The figures as a physicist prints them (issue 30, SPEC section 10): at
+//! The figures as a physicist prints them (docs/formats.md): at
 //! `--style paper` and `paper-wide`, as PDF, included at their natural
 //! size in a two-column article with 0.75 in margins and compiled by
 //! pdflatex, an independent reader. The log must show no float too large

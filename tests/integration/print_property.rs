@@ -1,4 +1,4 @@
-//! A property test of the print rules (SPEC section 10) over figures the
+//! A property test of the print rules (docs/formats.md) over figures the
 //! catalogue does not hold: random views (filmstrip, kymograph, arrivals
 //! with 1–4 waves, sweeps over one and two axes, theory plots) at every
 //! style, at random `--width`/`--height`, drawn by the program as PDFs and

@@ -1,4 +1,4 @@
-"""A run carries its energies (SPEC section 11): kinetic, elastic,
+"""A run carries its energies (docs/python.md): kinetic, elastic,
 gravitational at each sample, and the energy dissipated so far when asked;
 after the drive ends their sum is flat to the integrator's accuracy."""
 

@@ -1,4 +1,4 @@
-"""The experiments' apparatus from Python (SPEC section 12,
+"""The experiments' apparatus from Python (docs/experiments.md,
 docs/experiments.md): the `[apparatus]` keys of a scene file reach
 ``Scene(apparatus=...)`` and ``simulate(..., apparatus=...)``; the
 conversion is made afresh after every keyword change (a stale one stayed

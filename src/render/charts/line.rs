@@ -33,7 +33,7 @@ pub fn line_chart(theme: &Theme, spec: &ChartSpec, width: u32, height: u32) -> R
 /// [`line_chart`] `width` wide and `height` tall, or taller by the
 /// legend's band when the legend goes under the plot (up to
 /// `max_height`), so that the plot keeps the height it would have had
-/// (SPEC section 10: the figure grows within the page budget; the plot
+/// (docs/formats.md: the figure grows within the page budget; the plot
 /// keeps at least half of its panel).
 pub fn line_chart_growing(
     theme: &Theme,

@@ -1,4 +1,4 @@
-//! The static figures of the catalogue (SPEC section 4): 2b, 2c, 2d, S3, S4,
+//! The static figures of the catalogue (README.md): 2b, 2c, 2d, S3, S4,
 //! S5, winding, edge-mode and barrier.
 //!
 //! Each figure is a title, a body (a drawing, snapshots of the model's

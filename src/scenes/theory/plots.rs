@@ -45,7 +45,7 @@ fn chart_taller(
 }
 
 /// Panel `k` of a figure, holding a chart titled `title`: at a journal
-/// style (no titles inside the figure, SPEC section 10) the title is the
+/// style (no titles inside the figure, docs/formats.md) the title is the
 /// panel's label instead, lettered, "(a) α = 15°"; elsewhere the chart
 /// draws its own title.
 fn titled_panel(theme: &Theme, k: usize, title: &str, image: Picture) -> Panel {
@@ -107,7 +107,7 @@ fn narrow(theme: &Theme) -> bool {
 
 /// A figure of `rows` rows of charts drawn by `draw(extra)`, every chart
 /// `extra` pixels taller than its default: on a narrow page the charts
-/// grow into the page budget the default leaves (SPEC section 10: the
+/// grow into the page budget the default leaves (docs/formats.md: the
 /// figure grows within the budget so that its plots keep half of it), by
 /// at most `most` each; elsewhere, or when the grown figure would not fit,
 /// as drawn by default.
