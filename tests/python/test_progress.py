@@ -6,6 +6,7 @@ import pytest
 
 import jacobs_ladder as jl
 from jacobs_ladder import _progress
+from test_cluster import needed
 
 GRID = dict(alpha="40:70:5", gamma=[0.01, 0.02], n=8)
 
@@ -74,7 +75,7 @@ def test_no_bar_where_nobody_sees_it(capsys, monkeypatch):
 
 def test_a_bar_with_tqdm_and_without(capsys, monkeypatch):
     monkeypatch.setattr(_progress, "BAR_DELAY", 0.0)
-    pytest.importorskip("tqdm")
+    needed("tqdm")
     jl.sweep(**GRID, progress=True)
     err = capsys.readouterr().err
     assert "sweep" in err and "14/14" in err
