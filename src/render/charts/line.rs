@@ -7,7 +7,6 @@ use super::legend::{
     legend_box,
 };
 use super::ranges::{Range2, data_range, equalize, runs};
-use super::ticks::tick_label;
 use super::title::{fit_title, titled};
 use super::{
     Area, Chart, ChartSpec, Ctx, Legend, LineStyle, Marker, Scale, Series, check_size, dark_axes,
@@ -144,7 +143,12 @@ fn draw_any(
     xr: Range<f64>,
     yr: Range<f64>,
 ) -> Result<Probe> {
-    let y_area = y_label_area(theme, &end_labels(yr.start, yr.end, spec.y.scale));
+    let y_ends = if spec.y.names.is_empty() {
+        end_labels(yr.start, yr.end, spec.y.scale)
+    } else {
+        spec.y.names.clone()
+    };
+    let y_area = y_label_area(theme, &y_ends);
     match (spec.x.scale, spec.y.scale) {
         (Scale::Linear, Scale::Linear) => draw_xy(theme, root, spec, pass, (xr, yr), y_area),
         (Scale::Linear, Scale::Log) => {
@@ -331,12 +335,13 @@ where
     X: Ranged<ValueType = f64> + ValueFormatter<f64>,
     Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
 {
-    let (xscale, yscale) = (spec.x.scale, spec.y.scale);
+    let xscale = spec.x.scale;
     let shared = spec.x.shared;
     // A shared axis keeps its numbers (every stacked panel can be read);
     // only its label is left to the panel below.
-    let xf = move |v: &f64| tick_label(*v, xscale);
-    let yf = move |v: &f64| tick_label(*v, yscale);
+    let (x_axis, y_axis) = (spec.x.clone(), spec.y.clone());
+    let xf = move |v: &f64| x_axis.tick_text(*v);
+    let yf = move |v: &f64| y_axis.tick_text(*v);
     // As many x labels as fit side by side with a gap (at most 7) at a
     // print style.
     let plot_w = {
@@ -349,7 +354,9 @@ where
         .map(|t| style::text_width(theme.font(), t, theme.tick))
         .fold(0.0f32, f32::max);
     // (Print styles only: the screen keeps its seven, and its goldens.)
-    let x_count = if theme.is_print() {
+    let x_count = if !spec.x.names.is_empty() {
+        spec.x.names.len()
+    } else if theme.is_print() {
         ((plot_w / (widest + 14.0)).floor() as usize).clamp(2, 7)
     } else {
         7
@@ -360,7 +367,9 @@ where
         let (_, py) = chart.plotting_area().get_pixel_range();
         (py.end - py.start) as f32
     };
-    let y_count = if theme.is_print() {
+    let y_count = if !spec.y.names.is_empty() {
+        spec.y.names.len()
+    } else if theme.is_print() {
         ((plot_h / (2.2 * theme.tick)).floor() as usize).clamp(2, 7)
     } else {
         7

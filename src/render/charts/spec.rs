@@ -21,6 +21,9 @@ pub struct Axis {
     /// Shared with a panel stacked below, which labels it: this panel
     /// draws its ticks without numbers or label.
     pub shared: bool,
+    /// Names of the categories at 1, 2, … (a chart of levels, one per
+    /// row): the ticks are these names, not numbers.
+    pub names: Vec<String>,
 }
 
 impl Axis {
@@ -42,6 +45,27 @@ impl Axis {
     pub fn log(mut self) -> Axis {
         self.scale = Scale::Log;
         self
+    }
+
+    /// Categories at 1, 2, …, `names.len()`, each tick labelled with its
+    /// name.
+    pub fn names(mut self, names: Vec<String>) -> Axis {
+        self.range = Some((0.5, names.len() as f64 + 0.5));
+        self.names = names;
+        self
+    }
+
+    /// The tick label of `v` on this axis: its category's name (none
+    /// between categories), else the number.
+    pub fn tick_text(&self, v: f64) -> String {
+        if self.names.is_empty() {
+            return super::ticks::tick_label(v, self.scale);
+        }
+        let k = v.round();
+        if (v - k).abs() > 1e-6 || k < 1.0 {
+            return String::new();
+        }
+        self.names.get(k as usize - 1).cloned().unwrap_or_default()
     }
 
     /// Shared with the panel stacked below, which labels it (an axis

@@ -7,9 +7,12 @@
 //! (docs/paper-errata.md).
 
 mod configurations;
+mod drawn;
 mod pen;
 mod plots;
 mod schematic;
+
+pub use drawn::{Drawn, drawn_numbers};
 
 use crate::error::Result;
 use crate::limits::{Limits, Resource};

@@ -13,10 +13,8 @@ use crate::render::compose::Panel;
 use crate::render::palette::{Palette, Role};
 use crate::render::style::{self, HAlign, VAlign, size};
 use crate::render::{Axis, Canvas, ChartSpec, Legend, Marker, Picture, Series, Theme};
-use crate::theory::figures::{
-    DispersionCurve, barrier_curve, det_loop, dispersion_curves, edge_mode_profile,
-    potential_curves,
-};
+use super::drawn::{self, LOOP_SAMPLES};
+use crate::theory::figures::{DispersionCurve, det_loop};
 use crate::theory::gravity;
 use std::f64::consts::PI;
 
@@ -149,21 +147,19 @@ fn pairs(points: &[[f64; 2]]) -> Vec<(f64, f64)> {
 /// of two of the curves beside the chart.
 pub fn gravity_potential(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let b = input.model.b;
-    let curves = potential_curves(b, &input.a_over_b, 1441);
+    let (curves, minima) = drawn::potential(input);
     let mut spec = ChartSpec::new(
         Axis::new("θ (°)").range(-90.0, 90.0),
         Axis::new("U(θ) / mgs per pair"),
     );
-    let mut minima = Vec::new();
     for (i, c) in curves.iter().enumerate() {
         let alpha = c.alpha_deg.unwrap_or(f64::NAN);
         let label = format!("a/b = {} (α = ±{alpha:.1}°)", c.a_over_b);
         spec = spec.series(Series::line(label, pairs(&c.points), curve_color(i)));
-        minima.extend([(-alpha, gravity::u_min(c.b)), (alpha, gravity::u_min(c.b))]);
     }
     spec = spec.series(Series::scatter(
         "minima U(±α) = −2mgb",
-        minima,
+        pairs(&minima),
         Palette.color(Role::Ink),
         Marker::Circle,
     ));
@@ -249,17 +245,12 @@ fn potential_insets(theme: &Theme, input: &FigureInput, which: &[usize]) -> Resu
 }
 
 /// Number of dispersion samples for lines and for dots.
-const LINE_SAMPLES: usize = 128;
-const DOT_SAMPLES: usize = 24;
 
 /// Fig. S5: ω±(q)/ω₀ against qb for each α of the scene, at its b/s,
 /// one panel per α: eq:dispersion as printed (dashed), ×√2 (solid, errata
 /// item 9) and the model's eigenvalues (dots).
 pub fn dispersion(theme: &Theme, input: &FigureInput) -> Result<Picture> {
-    let b = input.model.b;
-    let base = input.params(input.model.n, b, input.model.alpha)?;
-    let lines = dispersion_curves(&base, b, &input.alphas, LINE_SAMPLES)?;
-    let dots = dispersion_curves(&base, b, &input.alphas, DOT_SAMPLES)?;
+    let (lines, dots) = drawn::dispersion(input)?;
     let top = lines
         .iter()
         .flat_map(|c| c.samples.iter())
@@ -465,7 +456,7 @@ const WINDING_TOP: f64 = 3.4;
 
 /// A winding panel and its title.
 fn winding_panel(theme: &Theme, p: &crate::model::Params) -> Result<(Picture, String)> {
-    let l = det_loop(p, 720)?;
+    let l = det_loop(p, LOOP_SAMPLES)?;
     let n = l
         .winding_number
         .map_or_else(|| "undefined".to_string(), |n| n.to_string());
@@ -561,14 +552,8 @@ fn edge_panel(
     )
     .title(title);
     for (k, &alpha) in input.alphas.iter().enumerate() {
-        let e = edge_mode_profile(&input.params(n, b, sign * alpha.abs())?)?;
-        let color = [
-            Palette.color(Role::Series(1)),
-            Palette.color(Role::Series(2)),
-        ]
-        .get(k)
-        .copied()
-        .unwrap_or_else(|| style::series_color(k + 1));
+        pairs(&minima),
+        Palette.color(Role::Ink),
         let kb = e.kappa.map_or(f64::NAN, |x| x * b);
         let line = e.n.iter().map(|&n| n as f64).zip(e.formula.iter().copied());
         let dots =
@@ -599,10 +584,8 @@ fn edge_panel(
 /// the same from the model's two-block linkage solved at θ = 0 (dots).
 pub fn barrier(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let b = input.model.b;
-    let curve = pairs(&barrier_curve(b, 180));
-    let dots: Vec<(f64, f64)> = (0..=18)
-        .filter_map(|k| model_barrier(input, 5.0 * k as f64).map(|du| (5.0 * k as f64, du)))
-        .collect();
+    let (curve, dots) = drawn::barrier(input);
+    let (curve, dots) = (pairs(&curve), pairs(&dots));
     let mut spec = ChartSpec::new(
         Axis::new("equilibrium angle α (°)").range(-2.0, 92.0),
         Axis::new("ΔU / mgs per pair"),
@@ -628,16 +611,6 @@ pub fn barrier(theme: &Theme, input: &FigureInput) -> Result<Picture> {
                  configuration of Fig. S3) and is largest for the symmetric toy α → 90°."
     );
     frame(theme, &input.title, &plot, &notes, page_width(theme, 840))
-}
-
-/// U(0) − U(α) from the model's two-block linkage (no closed form).
-fn model_barrier(input: &FigureInput, alpha_deg: f64) -> Option<f64> {
-    let b = input.model.b;
-    let p = input.params(2, b, alpha_deg).ok()?;
-    let guess = [b, -p.alpha.cos().powi(2)];
-    let at_zero = gravity::model_pair_spacing(&p, 0.0, guess)?;
-    let at_alpha = gravity::model_pair_spacing(&p, p.alpha, [b, -p.alpha.cos()])?;
-    Some(2.0 * (at_alpha[0] - at_zero[0]))
 }
 
 #[cfg(test)]
