@@ -307,10 +307,18 @@ impl Scene {
     }
 }
 
-/// `frames` times evenly over [0, t_end].
+/// `frames` times evenly over [0, t_end], the last exactly t_end
+/// (t_end · k / k can round one ulp above t_end, outside the window).
 pub fn even_times(t_end: f64, frames: usize) -> Vec<f64> {
-    let last = (frames.max(2) - 1) as f64;
-    (0..frames.max(2))
-        .map(|k| t_end * k as f64 / last)
+    let count = frames.max(2);
+    let last = (count - 1) as f64;
+    (0..count)
+        .map(|k| {
+            if k + 1 == count {
+                t_end
+            } else {
+                t_end * k as f64 / last
+            }
+        })
         .collect()
 }

@@ -19,10 +19,11 @@ mod positions;
 mod runs;
 
 pub use decided::{HELD_FOR_S, HELD_RATE};
-pub use levels::{LevelResult, STIFF_TOLERANCE, levels};
-pub use linkage::{Front, fronts, refined_fronts};
+pub use levels::{LevelResult, STIFF_TOLERANCE, level_names, levels};
+pub use linkage::{Front, fronts, refined_fronts, steps};
+pub use positions::MOTOR_MARKERS;
 
-use super::data::RunData;
+use super::data::{ApparatusNumbers, BulkFit, RunData};
 use crate::error::Result;
 use crate::render::charts::{self, ChartSpec};
 use crate::render::{Picture, Theme};
@@ -156,6 +157,48 @@ pub fn bulk_speed(arrivals: &[Option<f64>]) -> Option<f64> {
         .map(|(i, t)| ((n / 2 + i + 1) as f64, *t))
         .collect();
     crate::sim::speed::fit(&pts).map(|f| f.speed)
+}
+
+/// The fitted line of [`bulk_speed`] in seconds and centimetres:
+/// position (n − 1) b against t_n − t_1, over the same blocks and under
+/// the same rule (`None` where [`bulk_speed`] is).
+pub fn bulk_fit(arrivals_s: &[Option<f64>], pitch_cm: f64) -> Option<BulkFit> {
+    let per_s = bulk_speed(arrivals_s)?;
+    let n = arrivals_s.len();
+    let t1 = arrivals_s.first().copied().flatten()?;
+    let pts: Vec<(f64, f64)> = (n / 2..n - 1)
+        .filter_map(|i| arrivals_s[i].map(|t| (t - t1, i as f64 * pitch_cm)))
+        .collect();
+    let k = pts.len() as f64;
+    let (centroid_s, centroid_cm) = pts
+        .iter()
+        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / k, b + p.1 / k));
+    Some(BulkFit {
+        speed_cm_s: per_s * pitch_cm,
+        blocks: [n / 2 + 1, n - 1],
+        centroid_s,
+        centroid_cm,
+    })
+}
+
+/// A run's numbers in seconds and centimetres (its data file's
+/// `apparatus`).
+pub(super) fn apparatus_numbers(
+    arrivals_s: &[Option<f64>],
+    tau_s: f64,
+    pitch_cm: f64,
+) -> ApparatusNumbers {
+    let t1 = arrivals_s.first().copied().flatten();
+    ApparatusNumbers {
+        tau_s,
+        pitch_cm,
+        arrival_times_s: arrivals_s.to_vec(),
+        since_block_1_s: arrivals_s
+            .iter()
+            .map(|t| t.zip(t1).map(|(t, t1)| t - t1))
+            .collect(),
+        bulk: bulk_fit(arrivals_s, pitch_cm),
+    }
 }
 
 /// "12.8 cm/s" or "no wave".
