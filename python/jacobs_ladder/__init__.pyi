@@ -105,6 +105,9 @@ class Run:
     def bulk_speed_cm_s(self) -> Optional[float]:
         """bulk_speed in cm/s (an apparatus' run; else None)."""
     @property
+    def bulk_fit(self) -> Optional[Dict[str, Any]]:
+        """The figures' fitted line: speed_cm_s, blocks, centroid_s, centroid_cm."""
+    @property
     def waves(self) -> Optional[List[Dict[str, Any]]]:
         """One record per domain wall, where the engine reports them."""
     @property

@@ -46,8 +46,8 @@ class Run:
     A run of an apparatus (``simulate(..., apparatus={...})``,
     docs/experiments.md) has its numbers in the apparatus' units beside
     the model's: ``t_s`` and ``arrival_times_s`` (s), ``speed_cm_s`` and
-    ``bulk_speed_cm_s`` (cm/s), and ``tau_s`` (τ in s); a run of the
-    model alone has None there.
+    ``bulk_speed_cm_s`` (cm/s), ``bulk_fit`` (the figures' fitted line)
+    and ``tau_s`` (τ in s); a run of the model alone has None there.
     """
 
     __slots__ = ("_d", "record", "scene")
@@ -162,11 +162,22 @@ class Run:
 
     @property
     def bulk_speed_cm_s(self) -> Optional[float]:
-        """:attr:`bulk_speed` in cm/s (an apparatus' run; else None)."""
+        """:attr:`bulk_speed` in cm/s, as the experiment figures draw it
+        (an apparatus' run; NaN when none; None for the model alone)."""
         if "cm_per_s" not in self.record:
             return None
-        s = self.record.get("bulk_speed_cm_s")
-        return float("nan") if s is None else float(s)
+        fit = self.bulk_fit
+        return float("nan") if fit is None else float(fit["speed_cm_s"])
+
+    @property
+    def bulk_fit(self) -> Optional[Dict[str, Any]]:
+        """The experiment figures' fitted line of an apparatus' run, as its
+        data file has it: position (n − 1) b = ``centroid_cm`` +
+        ``speed_cm_s`` (t − t_1 − ``centroid_s``) over ``blocks`` (first
+        and last, one-based); None where there is no bulk speed or no
+        apparatus."""
+        numbers = self.record.get("apparatus")
+        return numbers.get("bulk") if isinstance(numbers, dict) else None
 
     @property
     def waves(self) -> Optional[List[Dict[str, Any]]]:

@@ -329,23 +329,23 @@ pub fn sweep_chunk<'py>(
 }
 
 /// The columns of a sweep's JSON text (its scene and runs), as
-/// `_Sweep.run` gives them: a `Table` made again from its text.
+/// `_Sweep.run` gives them: a `Table` made again from its text (read and
+/// made without the GIL: a large sweep's JSON is hundreds of megabytes).
 #[pyfunction]
-pub fn table_columns<'py>(py: Python<'py>, json: &str) -> PyResult<Bound<'py, PyList>> {
+pub fn table_columns<'py>(py: Python<'py>, json: String) -> PyResult<Bound<'py, PyList>> {
     #[derive(serde::Deserialize)]
     struct Text {
         scene: Scene,
         runs: Vec<Record>,
     }
-    let text: Text = serde_json::from_str(json)
-        .map_err(|e| Error::bad_input(format!("json: not a sweep's JSON ({e})")))
-        .py_err()?;
-    let scene = kwargs::checked(text.scene).py_err()?;
-    let plan = Plan::new(&scene, usize::MAX)
-        .py_err()?
-        .map_err(|e| Error::bad_input(e.to_string()))
-        .py_err()?;
-    columns_py(py, columns::columns(&plan, &text.runs))
+    let cols = work::run(py, move |_| {
+        let text: Text = serde_json::from_str(&json)
+            .map_err(|e| Error::bad_input(format!("json: not a sweep's JSON ({e})")))?;
+        let scene = kwargs::checked(text.scene)?;
+        let plan = Plan::new(&scene, usize::MAX)?.map_err(|e| Error::bad_input(e.to_string()))?;
+        Ok(columns::columns(&plan, &text.runs))
+    })?;
+    columns_py(py, cols)
 }
 
 /// The sweep's parameters (`Param::ALL`), in the order the axes vary.
