@@ -249,7 +249,7 @@ impl MoviePlan {
             } else if l.text == format!("{t_end:.0}") {
                 l.text = format!("{:.1} s", t_end * clock.tau_s);
             }
-            c.text(&l.text, l.at, l.size, style::DARK, l.align);
+            c.text(&l.text, l.at, l.size, Palette.color(Role::Ink), l.align);
         }
         Ok(p)
     }

@@ -283,4 +283,3 @@ fn jobs_at_once(line: &str) -> Option<usize> {
     let k = words.iter().position(|w| *w == "-j" || *w == "--jobs")?;
     words.get(k + 1)?.parse().ok()
 }
-

@@ -3,6 +3,7 @@
 //! eq:winding), the surface zero mode (eq:2nd_sol) and the barrier ΔU(α)
 //! (eq:delta_U).
 
+use super::drawn::{self, LOOP_SAMPLES};
 use super::pen;
 use super::{FigureInput, configuration, frame, grid, signed_deg};
 use crate::encode::Rgb;
@@ -13,7 +14,6 @@ use crate::render::compose::Panel;
 use crate::render::palette::{Palette, Role};
 use crate::render::style::{self, HAlign, VAlign, size};
 use crate::render::{Axis, Canvas, ChartSpec, Legend, Marker, Picture, Series, Theme};
-use super::drawn::{self, LOOP_SAMPLES};
 use crate::theory::figures::{DispersionCurve, det_loop};
 use crate::theory::gravity;
 use std::f64::consts::PI;
@@ -552,8 +552,14 @@ fn edge_panel(
     )
     .title(title);
     for (k, &alpha) in input.alphas.iter().enumerate() {
-        pairs(&minima),
-        Palette.color(Role::Ink),
+        let e = drawn::edge_profile(input, sign * alpha.abs())?;
+        let color = [
+            Palette.color(Role::Series(1)),
+            Palette.color(Role::Series(2)),
+        ]
+        .get(k)
+        .copied()
+        .unwrap_or_else(|| style::series_color(k + 1));
         let kb = e.kappa.map_or(f64::NAN, |x| x * b);
         let line = e.n.iter().map(|&n| n as f64).zip(e.formula.iter().copied());
         let dots =
