@@ -55,7 +55,7 @@ fn theory(
         convert::number_or_none(Some(b), "b")?.unwrap_or(m.b),
     );
     work::run(py, move |_| {
-        let params = jacobs_ladder::model::Params::new(n, b, alpha, m.gamma, m.gravity, m.inertia)?;
+        let params = jacobs_ladder::scene::Model { alpha, n, b, ..m }.params()?;
         let report = jacobs_ladder::theory::TheoryReport::compute(&params)?;
         serde_json::to_string(&report).map_err(|e| Error::failed(format!("cannot encode: {e}")))
     })

@@ -73,7 +73,7 @@ pub(super) fn run_all(variants: &[Variant]) -> Result<Vec<Done>> {
             let r = run::simulate_with(&v.scene, &[], &options)?;
             let arrivals = &r.trajectory.arrival_times;
             let mut data = RunData::new(&v.label, &v.scene, &r);
-            data.t_end = r.trajectory.t_final;
+            data.ended_at(r.trajectory.t_final);
             Ok(Done {
                 arrivals_s: arrivals.iter().map(|t| t.map(|t| t * c.tau_s)).collect(),
                 bulk_cm_s: bulk_speed(arrivals).map(|v| v * c.cm_per_s),
