@@ -72,7 +72,7 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
         .apparatus
         .as_ref()
         .and_then(|a| Some((a.conversion.as_ref()?, a.b)))
-        .map(|(c, pitch_cm)| (c.tau_s, c.cm_per_s, pitch_cm));
+        .map(|(c, pitch_cm)| (c.tau_s, pitch_cm));
     let traj = &mut run.trajectory;
     let n = traj.final_state.q.len() / 3;
     let times = std::mem::take(&mut traj.times);
@@ -133,7 +133,7 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
     if let Some(d) = dissipated {
         columns.push(("dissipated", d, false));
     }
-    if let Some((tau_s, _, _)) = units {
+    if let Some((tau_s, _)) = units {
         let seconds = |name: &str| -> Vec<f64> {
             let (_, v, _) = columns.iter().find(|c| c.0 == name).expect("made above");
             v.iter().map(|t| t * tau_s).collect()
@@ -142,8 +142,8 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
         columns.push(("t_s", t_s, false));
         columns.push(("arrival_times_s", arrivals_s, false));
     }
-    let mut data = RunData::from_run(scene, &run);
-    if let Some((tau_s, _, pitch_cm)) = units {
+    let mut data = RunData::summary(scene, &run);
+    if let Some((tau_s, pitch_cm)) = units {
         // The experiment figures' numbers: arrivals in s, the bulk fit in
         // cm/s with its line (the data file's `apparatus`).
         let arrivals_s: Vec<Option<f64>> = data
@@ -172,13 +172,8 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
         // (`WaveKind::launched`), for the repr.
         let launched = jacobs_ladder::sim::waves::WaveKind::launched(scene.model.alpha);
         m.entry("launched").or_insert(launched.name().into());
-        let speed = m.get("speed").and_then(serde_json::Value::as_f64);
+        // (τ in s, the speed in cm/s: the record's `units`.)
         m.insert("bulk_speed".into(), bulk.into());
-        if let Some((tau_s, cm_per_s, _)) = units {
-            m.insert("tau_s".into(), tau_s.into());
-            m.insert("cm_per_s".into(), cm_per_s.into());
-            m.insert("speed_cm_s".into(), speed.map(|v| v * cm_per_s).into());
-        }
     }
     Ok(RunArrays {
         n,

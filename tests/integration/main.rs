@@ -40,6 +40,7 @@ mod names;
 mod npz;
 mod output_paths;
 mod panel_labels;
+mod parameter_table;
 mod print;
 mod print_article;
 mod print_property;

@@ -73,7 +73,7 @@ pub(super) fn run_all(variants: &[Variant]) -> Result<Vec<Done>> {
             let r = run::simulate_with(&v.scene, &[], &options)?;
             let arrivals = &r.trajectory.arrival_times;
             let mut data = RunData::new(&v.label, &v.scene, &r);
-            data.t_end = r.trajectory.t_final;
+            data.ended_at(r.trajectory.t_final);
             let arrivals_s: Vec<Option<f64>> =
                 arrivals.iter().map(|t| t.map(|t| t * c.tau_s)).collect();
             let numbers = apparatus_numbers(&arrivals_s, c.tau_s, a.b);
