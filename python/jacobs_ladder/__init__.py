@@ -30,7 +30,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 from . import _native
 from ._native import InternalError, RunError
-from ._params import DEFAULTS, PARAMETERS, filled, parameter_line
+from ._params import DEFAULTS, PARAMETERS, filled, parameter_line, parameter_lines
 from ._progress import Reporting
 from ._run import Run
 from ._scene import Files, Image, Scene, _scene_from_json
@@ -155,7 +155,7 @@ filled(simulate)
 # chains up to its own largest.
 filled(
     theory,
-    theory_parameters="\n    ".join(
+    theory_parameters=parameter_lines(
         [
             parameter_line("alpha", "|alpha| <= 90"),
             parameter_line("n", f"from 2 to {DEFAULTS['theory_max_n']}"),

@@ -28,10 +28,17 @@ def number(x: Any) -> str:
 
 
 def parameter_line(name: str, range_text: str = "") -> str:
-    """``- ``alpha``: <doc> (unit); <range>. Default <default>.``"""
+    """``- ``alpha`` (°): <doc>; <range>. Default <default>.``"""
     p = _BY_NAME[name]
     unit = f" ({p['unit']})" if p["unit"] else ""
-    return f"- ``{name}``: {p['doc']}{unit}; {range_text or p['range']}. Default {number(p['default'])}."
+    default = number(p["default"])
+    return f"- ``{name}``{unit}: {p['doc']}; {range_text or p['range']}. Default {default}."
+
+
+def parameter_lines(lines: "list[str]", indent: str = "    ") -> str:
+    """Docstring items, wrapped, the first line's indent left to the
+    placeholder they replace."""
+    return ("\n" + indent).join(_wrapped(line, indent) for line in lines)
 
 
 def filled(fn: Callable[..., Any], **fields: str) -> Callable[..., Any]:
@@ -45,10 +52,8 @@ def filled(fn: Callable[..., Any], **fields: str) -> Callable[..., Any]:
             text = "×".join(str(v) for v in value)
         doc = doc.replace("{" + key + "}", text)
     if "{parameters}" in doc:
-        line = next(l for l in doc.splitlines() if l.strip() == "{parameters}")
-        indent = line[: len(line) - len(line.lstrip())]
         lines = [parameter_line(p["name"]) for p in PARAMETERS]
-        doc = doc.replace(line, "\n".join(indent + _wrapped(l, indent) for l in lines))
+        doc = doc.replace("{parameters}", parameter_lines(lines))
     fn.__doc__ = doc
     return fn
 
