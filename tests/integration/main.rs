@@ -58,6 +58,7 @@ mod sources;
 mod speed_and_outcomes;
 mod start;
 mod state_consistency;
+mod stop_rules;
 mod sweep;
 mod sweep_caps;
 mod temp_cleanup;

@@ -122,6 +122,7 @@ impl Command {
             Self::Render(a) => (Some(&a.limits), Some(&a.pixel_limits)),
             Self::All(a) => (Some(&a.limits), Some(&a.pixel_limits)),
             Self::Sweep(a) => (Some(&a.limits), None),
+            Self::Bench(a) => (Some(&a.limits), None),
             _ => (None, None),
         };
         LimitArgs {
@@ -718,4 +719,7 @@ pub struct BenchArgs {
     /// Window of a built-in movie's study, in tau [default: the movie's]
     #[arg(long, value_name = "T")]
     pub t_end: Option<f64>,
+    /// The caps on the study's runs, all its runs together
+    #[command(flatten)]
+    pub limits: SimLimitArgs,
 }
