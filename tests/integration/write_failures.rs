@@ -1,7 +1,7 @@
-//! Where a write cannot happen, the exit code the README states (issue
-//! 32): 2 for what the user can fix before any work (a read-only folder
-//! or file system, a device such as /dev/full in place of a file), 1 for
-//! a write the machine failed (a full disk: tests/integration/reliability.rs,
+//! Where a write cannot happen, the exit code the README states: 2 for
+//! what the user can fix before any work (a read-only folder or file
+//! system, a device such as /dev/full in place of a file), 1 for a write
+//! the machine failed (a full disk: tests/integration/reliability.rs,
 //! `a_full_disk_is_a_failed_run`).
 
 use crate::common::require::require;

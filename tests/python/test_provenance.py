@@ -5,7 +5,7 @@ import re
 from pathlib import Path
 
 import jacobs_ladder as jl
-from test_cluster import needed
+from conftest import needed
 
 ROOT = Path(__file__).resolve().parents[2]
 
