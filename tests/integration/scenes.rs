@@ -40,7 +40,7 @@ fn rendered() -> &'static [Files] {
 fn every_catalogue_entry_renders_with_its_data() {
     for (entry, files) in catalog::catalogue().unwrap().iter().zip(rendered()) {
         assert_eq!(files.len(), scenes::file_names(&entry.scene).len());
-        for (name, bytes) in &files {
+        for (name, bytes) in files {
             assert!(bytes.len() > 100, "{name} is nearly empty");
             let magic: &[u8] = if name.ends_with(".gif") {
                 b"GIF89a"
