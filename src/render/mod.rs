@@ -26,6 +26,7 @@ pub mod style;
 mod svg;
 pub mod text_boxes;
 pub mod theme;
+pub mod tubes;
 
 pub use canvas::{Canvas, Cap, Pen, Raster};
 pub use charts::{Axis, Chart, ChartSpec, Kymograph, Legend, LineStyle, Marker, Scale, Series};
