@@ -28,7 +28,7 @@ pub struct RingChain {
     /// Coefficient of (kinetic) friction, steel on steel. Default 0.57.
     pub friction: f64,
     /// Sliding speed, m/s, below which friction is regularised (grows
-    /// linearly from 0). Default 0.02.
+    /// linearly from 0): a numerical choice, docs/rings.md. Default 0.05.
     pub slip_speed: f64,
     /// Penalty stiffness, as the overlap (a fraction of r) that the weight
     /// of the whole chain makes at one contact. Default 0.05.
@@ -105,7 +105,7 @@ impl Default for RingChain {
             density: 7850.0,
             restitution: 0.6,
             friction: 0.57,
-            slip_speed: 0.02,
+            slip_speed: 0.05,
             overlap: 0.05,
             links: None,
             tapes: Vec::new(),

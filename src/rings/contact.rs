@@ -16,7 +16,7 @@
 use super::math::{self, M3, V3};
 
 /// Sample angles along a ring's centre circle.
-pub const SAMPLES: usize = 32;
+pub const SAMPLES: usize = 24;
 /// Parabola refinements of each sampled minimum.
 const REFINEMENTS: usize = 4;
 /// Contacts kept per pair of rings (the deepest).
@@ -71,9 +71,14 @@ impl Circle {
 
     /// Distance from `p` to the circle.
     fn distance(&self, p: V3) -> f64 {
+        self.distance2(p).sqrt()
+    }
+
+    /// Squared distance from `p` to the circle.
+    fn distance2(&self, p: V3) -> f64 {
         let local = math::mul_mtv(&self.rot, math::sub(p, self.c));
         let rho = (local[0] * local[0] + local[1] * local[1]).sqrt();
-        ((rho - self.radius).powi(2) + local[2] * local[2]).sqrt()
+        (rho - self.radius).powi(2) + local[2] * local[2]
     }
 }
 
@@ -87,33 +92,82 @@ pub struct Touch {
 }
 
 /// The local minima of the distance between circles `a` and `b` below
-/// `reach` (2r), the deepest first, at most [`MAX_CONTACTS`].
-pub fn touches(a: &Circle, b: &Circle, reach: f64, table: &[(f64, f64); SAMPLES]) -> Vec<Touch> {
-    let d: Vec<f64> = table.iter().map(|&cs| b.distance(a.point(cs))).collect();
+/// `reach` (2r), the deepest first, at most [`MAX_CONTACTS`], appended to
+/// `out` (no allocation: this runs for every near pair at every step).
+pub fn touches_into(
+    a: &Circle,
+    b: &Circle,
+    reach: f64,
+    table: &[(f64, f64); SAMPLES],
+    out: &mut impl FnMut(Touch),
+) {
+    // Squared distances: their minima are the distance's. Every third
+    // sample first (a set the mirror keeps): if all are farther than 2r
+    // plus what the distance may fall between them, R·π/8, no contact.
+    let mut d2 = [0.0; SAMPLES];
+    let far = reach + a.radius * std::f64::consts::PI / 8.0;
+    let mut near = false;
+    for j in (1..SAMPLES).step_by(3) {
+        d2[j] = b.distance2(a.point(table[j]));
+        near |= d2[j] < far * far;
+    }
+    if !near {
+        return;
+    }
+    for j in (0..SAMPLES).filter(|j| j % 3 != 1) {
+        d2[j] = b.distance2(a.point(table[j]));
+    }
     // Between samples the distance falls at most R·π/M below a sample.
     let slack = a.radius * std::f64::consts::PI / SAMPLES as f64;
-    let mut out: Vec<Touch> = Vec::new();
+    let gate = (reach + slack) * (reach + slack);
+    let mut found = [None::<Touch>; MAX_CONTACTS + 1];
     for j in 0..SAMPLES {
-        let (prev, next) = (d[(j + SAMPLES - 1) % SAMPLES], d[(j + 1) % SAMPLES]);
-        if d[j] > prev || d[j] > next || d[j] >= reach + slack {
+        let (prev, next) = (d2[(j + SAMPLES - 1) % SAMPLES], d2[(j + 1) % SAMPLES]);
+        if d2[j] > prev || d2[j] > next || d2[j] >= gate {
             continue;
         }
-        if let Some(t) = refine(a, b, table[j]) {
-            if t.d < reach {
-                out.push(t);
+        let Some(t) = refine(a, b, table[j]) else {
+            continue;
+        };
+        // Two samples on one plateau refine to one contact: keep the deeper.
+        if t.d >= reach {
+            continue;
+        }
+        if let Some(k) = found
+            .iter()
+            .position(|f| f.is_some_and(|f| math::norm(math::sub(f.p, t.p)) <= slack))
+        {
+            if t.d < found[k].map_or(f64::INFINITY, |f| f.d) {
+                found[k] = Some(t);
+            }
+            continue;
+        }
+        // Insert by depth, dropping the shallowest past the capacity.
+        let mut item = Some(t);
+        for slot in found.iter_mut() {
+            match (*slot, item) {
+                (None, _) => {
+                    *slot = item;
+                    break;
+                }
+                (Some(f), Some(i)) if i.d < f.d => {
+                    *slot = Some(i);
+                    item = Some(f);
+                }
+                _ => {}
             }
         }
     }
-    out.sort_by(|x, y| x.d.total_cmp(&y.d));
-    // Two samples on one plateau refine to one contact: keep the deeper.
-    let mut kept: Vec<Touch> = Vec::new();
-    for t in out {
-        if kept.iter().all(|k| math::norm(math::sub(k.p, t.p)) > slack) {
-            kept.push(t);
-        }
+    for t in found.iter().take(MAX_CONTACTS).flatten() {
+        out(*t);
     }
-    kept.truncate(MAX_CONTACTS);
-    kept
+}
+
+/// [`touches_into`] as a vector.
+pub fn touches(a: &Circle, b: &Circle, reach: f64, table: &[(f64, f64); SAMPLES]) -> Vec<Touch> {
+    let mut v = Vec::new();
+    touches_into(a, b, reach, table, &mut |t| v.push(t));
+    v
 }
 
 /// The minimum near the sample at `cs`: successive parabolas through the
@@ -230,7 +284,7 @@ mod tests {
     fn the_table_is_mirror_symmetric() {
         let t = sample_table();
         for j in 0..SAMPLES {
-            let m = t[SAMPLES / 2 - 1 - j];
+            let m = t[(SAMPLES + SAMPLES / 2 - 1 - j) % SAMPLES];
             assert_eq!((-t[j].0, t[j].1), m);
             let a = (j as f64 + 0.5) * std::f64::consts::TAU / SAMPLES as f64;
             assert!((t[j].0 - a.cos()).abs() < 1e-15 && (t[j].1 - a.sin()).abs() < 1e-15);

@@ -31,7 +31,8 @@ pub struct Stats {
     pub guard_checks: u64,
     /// Largest overlap of two tubes, as a fraction of r.
     pub max_overlap: f64,
-    /// Pairs whose contact was evaluated (near enough to touch).
+    /// Pairs of rings tested for contact (near enough to touch), over all
+    /// steps.
     pub pair_evaluations: u64,
     /// Steps taken.
     pub steps: u64,
@@ -138,19 +139,26 @@ impl System {
 
     /// Every touch of every near pair, in pair order.
     pub fn touches(&self, rots: &[M3]) -> Vec<(usize, usize, Touch)> {
+        self.touches_counted(rots).0
+    }
+
+    /// [`System::touches`] and the number of near pairs tested.
+    fn touches_counted(&self, rots: &[M3]) -> (Vec<(usize, usize, Touch)>, u64) {
         let mut out = Vec::new();
+        let mut pairs = 0;
         for i in 0..self.n() {
             for j in i + 1..self.n() {
                 if !self.near(i, j) {
                     continue;
                 }
+                pairs += 1;
                 let (a, b) = (self.circle(i, &rots[i]), self.circle(j, &rots[j]));
-                for t in contact::touches(&a, &b, self.law.reach, &self.table) {
-                    out.push((i, j, t));
-                }
+                contact::touches_into(&a, &b, self.law.reach, &self.table, &mut |t| {
+                    out.push((i, j, t))
+                });
             }
         }
-        out
+        (out, pairs)
     }
 
     /// Forces and torques at the current state, into `self.force`/`torque`.
@@ -160,8 +168,8 @@ impl System {
         let weight = [0.0, 0.0, -self.inertia.m * G];
         self.force.iter_mut().for_each(|f| *f = weight);
         self.torque.iter_mut().for_each(|t| *t = [0.0; 3]);
-        let touches = self.touches(&rots);
-        self.stats.pair_evaluations += touches.len() as u64;
+        let (touches, pairs) = self.touches_counted(&rots);
+        self.stats.pair_evaluations += pairs;
         for (i, j, touch) in touches {
             let c = math::scale(math::add(touch.p, touch.q), 0.5);
             let v_rel = math::sub(

@@ -140,8 +140,8 @@ fn a_tunnelled_ring_is_caught() {
     assert!(e.is_failed_run(), "{e}");
 }
 
-/// The guard ran over the whole run, and no tube overlapped past a
-/// tenth of r.
+/// The guard ran over the whole run, and no tube overlapped past 30 %
+/// of r (the static overlap is 5 %; impacts go deeper).
 #[test]
 fn the_guard_runs_and_overlaps_stay_small() {
     let chain = small();
@@ -155,8 +155,9 @@ fn the_guard_runs_and_overlaps_stay_small() {
     );
 }
 
-/// Halving the step moves no flip of the turned ring and its neighbours
-/// by more than 5 ms.
+/// Halving the step keeps the first flip of every ring that flips: the
+/// same rings, at times within 5 ms (impacts make the chain chaotic: the
+/// positions drift apart by millimetres, the flips do not).
 #[test]
 fn halving_the_step_keeps_the_flip_times() {
     let chain = small();
@@ -164,22 +165,25 @@ fn halving_the_step_keeps_the_flip_times() {
     let half = rings::run(
         &RingChain {
             dt: 0.5 * full.dt,
-            ..chain
+            ..chain.clone()
         },
         &[],
     )
     .unwrap();
     let first =
         |run: &rings::RingRun, k: usize| run.flips.iter().find(|f| f.ring == k).map(|f| f.t);
-    let held = first(&full, 0).expect("the held ring flips");
-    assert!((held - first(&half, 0).unwrap()).abs() < 5e-3);
-    for k in 1..4 {
+    let mut compared = 0;
+    for k in 0..chain.n {
         match (first(&full, k), first(&half, k)) {
-            (Some(a), Some(b)) => assert!((a - b).abs() < 5e-3, "ring {k}: {a} vs {b}"),
+            (Some(a), Some(b)) => {
+                assert!((a - b).abs() < 5e-3, "ring {k}: {a} vs {b}");
+                compared += 1;
+            }
             (None, None) => {}
             (a, b) => panic!("ring {k} flips in one run only: {a:?} vs {b:?}"),
         }
     }
+    assert!(compared >= 2, "too few flips to compare");
 }
 
 fn ladder(dir: &TempDir, args: &[&str], threads: &str) -> std::process::Output {
