@@ -37,8 +37,9 @@
 //! 3. `error`: the error type and its exit codes;
 //! 4. `encode`, `output`: bytes from pictures, files written; they know
 //!    nothing of the model;
-//! 5. `sim`, `theory`, `render`: integrators, drives and observables;
-//!    the linear analysis; pictures of a ladder state and charts;
+//! 5. `sim`, `theory`, `render`, `rings`: integrators, drives and
+//!    observables; the linear analysis; pictures of a ladder state and
+//!    charts; the double ring chain of Fig. 4b;
 //! 6. `scene`: what one output needs, as data;
 //! 7. `scenes`, `catalog`, `sweep`, `bench`, `gallery`: scenes run and
 //!    rendered, the paper's catalogue, sweeps, speed against accuracy, the
