@@ -7,6 +7,7 @@
 //! (`tests/integration/reliability.rs` sends the real signals to the
 //! binary.)
 
+#[allow(dead_code)] // the helpers this test does not use
 #[path = "integration/common/tempdir.rs"]
 mod tempdir;
 
