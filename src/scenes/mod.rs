@@ -355,8 +355,7 @@ fn theory_drawn(scene: &Scene) -> Result<Option<serde_json::Value>> {
     let input = theory::FigureInput::of(scene, spec);
     theory::drawn_numbers(spec.figure, &input)?
         .map(|d| {
-            serde_json::to_value(d)
-                .map_err(|e| Error::failed(format!("the drawn numbers: {e}")))
+            serde_json::to_value(d).map_err(|e| Error::failed(format!("the drawn numbers: {e}")))
         })
         .transpose()
 }

@@ -69,10 +69,16 @@ fn each_level_of_model_lands_where_the_caption_says() {
         format!("{} Hz", experiments::LEVELS_MOTOR_HZ),
         format!("measured {MEASURED_KINK_CM_S:.1} cm/s"),
         format!("measured {MEASURED_RATIO}"),
-        format!("{}, against", two(running.iter().map(|r| r.ratio().unwrap()).collect())),
+        format!(
+            "{}, against",
+            two(running.iter().map(|r| r.ratio().unwrap()).collect())
+        ),
         format!(
             "{} %",
-            two(running.iter().map(|r| 100.0 * r.stiff_difference().unwrap()).collect())
+            two(running
+                .iter()
+                .map(|r| 100.0 * r.stiff_difference().unwrap())
+                .collect())
         ),
         format!("tolerance {:.0} %", 100.0 * experiments::STIFF_TOLERANCE),
         "0.125 τ".into(),

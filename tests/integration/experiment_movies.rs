@@ -18,22 +18,26 @@ fn scene(kind: Kind, id: &str) -> Scene {
 
 /// τ of a scene's apparatus (s).
 fn tau_s(s: &Scene) -> f64 {
-    s.apparatus.as_ref().unwrap().conversion.as_ref().unwrap().tau_s
+    s.apparatus
+        .as_ref()
+        .unwrap()
+        .conversion
+        .as_ref()
+        .unwrap()
+        .tau_s
 }
 
 /// `ladder movie ID` with two frames (the run is the movie's whatever the
 /// frames): its data file.
 fn movie_data(id: &str) -> Value {
     let dir = TempDir::new(&format!("movie-{id}"));
-    let out = crate::common::ladder_cli(&[
-        "movie",
-        id,
-        "--frames",
-        "2",
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out =
+        crate::common::ladder_cli(&["movie", id, "--frames", "2", "--out", dir.to_str().unwrap()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = std::fs::read_to_string(dir.join(format!("movie-{id}.json"))).unwrap();
     serde_json::from_str(&text).unwrap()
 }

@@ -79,8 +79,5 @@ fn since_block_1(d: &Done) -> Vec<(f64, f64)> {
 fn fit_line(fit: &BulkFit, pitch_cm: f64) -> Vec<(f64, f64)> {
     let at = |x: f64| (fit.centroid_s + (x - fit.centroid_cm) / fit.speed_cm_s, x);
     let (first, last) = (fit.blocks[0] as f64 - 1.0, fit.blocks[1] as f64 - 1.0);
-    vec![
-        at((first - 0.5) * pitch_cm),
-        at((last + 0.5) * pitch_cm),
-    ]
+    vec![at((first - 0.5) * pitch_cm), at((last + 0.5) * pitch_cm)]
 }

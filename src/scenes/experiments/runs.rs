@@ -3,8 +3,8 @@
 //! ([`Decided`]), two at a time or more.
 
 use super::STEP;
-use super::{apparatus_numbers, bulk_speed};
 use super::decided::Decided;
+use super::{apparatus_numbers, bulk_speed};
 use crate::error::{Error, Result};
 use crate::scene::apparatus::Apparatus;
 use crate::scene::{Method, OutputSpec, Scene};

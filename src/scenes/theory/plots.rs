@@ -3,6 +3,7 @@
 //! eq:winding), the surface zero mode (eq:2nd_sol) and the barrier ΔU(α)
 //! (eq:delta_U).
 
+use super::drawn::{self, LOOP_SAMPLES};
 use super::pen;
 use super::{FigureInput, configuration, frame, grid, signed_deg};
 use crate::encode::Rgb;
@@ -13,7 +14,6 @@ use crate::render::compose::Panel;
 use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign, size};
 use crate::render::theme::palette;
 use crate::render::{Axis, Canvas, ChartSpec, Legend, Marker, Picture, Series, Theme};
-use super::drawn::{self, LOOP_SAMPLES};
 use crate::theory::figures::{DispersionCurve, det_loop};
 use crate::theory::gravity;
 use std::f64::consts::PI;
