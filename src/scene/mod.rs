@@ -66,6 +66,12 @@ pub struct Scene {
     /// `[apparatus]`, `scene::apparatus`). Default none: the model's units.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub apparatus: Option<apparatus::Apparatus>,
+    /// The double ring chain (paper Fig. 4b, SI Movie 12; `[rings]`,
+    /// docs/rings.md). Default none: the scene is a ladder. A scene with
+    /// a ring chain runs it instead of the ladder and makes a movie, a
+    /// filmstrip or a kymograph of it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rings: Option<crate::rings::RingChain>,
     /// The caps on what making this output may cost (docs/limits.md):
     /// steps × N, samples × N, frames × pixels, a data file's bytes, a
     /// theory figure's work. Not part of a scene file and never recorded:
@@ -89,6 +95,7 @@ impl Default for Scene {
             output: OutputSpec::default(),
             style: crate::render::StyleSpec::default(),
             apparatus: None,
+            rings: None,
             limits: crate::limits::Limits::default(),
         }
     }

@@ -11,6 +11,7 @@ use crate::encode::{Format, MovieWriter, Mp4Quality};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::fold::{self, Fold};
+use crate::render::palette::{Palette, Role};
 use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::{Canvas, MovieLayout, Theme, style};
 use crate::scene::{Camera, MIN_BLOCK_PIXELS, OutputSpec, Scene, describe};
@@ -248,7 +249,7 @@ impl MoviePlan {
             } else if l.text == format!("{t_end:.0}") {
                 l.text = format!("{:.1} s", t_end * clock.tau_s);
             }
-            c.text(&l.text, l.at, l.size, style::DARK, l.align);
+            c.text(&l.text, l.at, l.size, Palette.color(Role::Ink), l.align);
         }
         Ok(p)
     }
@@ -278,7 +279,7 @@ impl MoviePlan {
         let ts = self.layout.transform();
         let mut canvas =
             crate::render::Raster::with_transform(background, ts, self.layout.theme.font());
-        let color = style::mix(style::GREY, style::DARK, 0.3);
+        let color = style::mix(Palette.color(Role::Ground), Palette.color(Role::Ink), 0.3);
         let align = (style::HAlign::Center, style::VAlign::Top);
         for (text, at) in self.column_numbers() {
             canvas.text(&text, at, style::size::TICK, color, align);
@@ -420,8 +421,13 @@ pub fn movie_at(
     frame_done: &(dyn Fn() + Sync),
 ) -> Result<MovieFiles> {
     let opts = opts.validated()?;
-    let mut writer =
-        MovieWriter::with_quality(formats, opts.width, opts.height, opts.fps, quality)?;
+    let mut writer = MovieWriter::with_quality(
+        formats,
+        (opts.width, opts.height),
+        opts.fps,
+        theme.palette.gif(),
+        quality,
+    )?;
     let plan = MoviePlan::new(theme, scene, &opts)?;
     let traj = &plan.run.trajectory;
     let n = plan.ladder.n();

@@ -46,6 +46,7 @@ mod print_property;
 mod provenance;
 mod reliability;
 mod render;
+mod rings;
 mod scene_files;
 mod scene_fuzz;
 mod scenes;

@@ -86,22 +86,7 @@ pub enum LineStyle {
     None,
 }
 
-/// Marker drawn at each point of a series.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Marker {
-    #[default]
-    None,
-    Circle,
-    Square,
-    Triangle,
-    /// A diagonal cross, e.g. for diverged runs.
-    Cross,
-    /// An open circle, larger than [`Marker::Circle`]: drawn around a
-    /// filled circle at the same point, both stay visible.
-    Ring,
-    /// An upright cross.
-    Plus,
-}
+pub use crate::render::palette::Marker;
 
 /// One data series. Non-finite points (and non-positive ones on log axes)
 /// break the line.
@@ -195,6 +180,11 @@ pub struct ChartSpec {
     pub equal_aspect: bool,
     /// Thin grey lines through x = 0 and y = 0 when in range.
     pub zero_lines: bool,
+    /// The plot area's left and right edges across the chart, pixels from
+    /// its left edge, when they are given (stacked panels sharing one x
+    /// extent, docs/formats.md); `None` lays them out from the tick labels
+    /// and the legend. A legend right of the plot goes right of `right`.
+    pub plot_x: Option<(i32, i32)>,
 }
 
 impl ChartSpec {
