@@ -62,5 +62,6 @@ mod sweep;
 mod sweep_caps;
 mod temp_cleanup;
 mod theory;
+mod theory_data;
 mod waves;
 mod write_failures;
