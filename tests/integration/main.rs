@@ -62,5 +62,6 @@ mod state_consistency;
 mod sweep;
 mod sweep_caps;
 mod theory;
+mod theory_data;
 mod waves;
 mod write_failures;

@@ -21,7 +21,7 @@ mod runs;
 pub use decided::{HELD_FOR_S, HELD_RATE};
 pub use levels::{LevelResult, STIFF_TOLERANCE, level_names, levels};
 pub use linkage::{Front, fronts, refined_fronts, steps};
-pub use positions::MOTOR_MARKERS;
+pub use positions::motor_marker;
 
 use super::data::{ApparatusNumbers, BulkFit, RunData};
 use crate::error::Result;
@@ -157,7 +157,13 @@ fn lower_half(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
     if times.windows(2).any(|w| w[1] <= w[0]) {
         return None;
     }
-    Some(times.iter().enumerate().map(|(i, t)| (i as f64, *t)).collect())
+    Some(
+        times
+            .iter()
+            .enumerate()
+            .map(|(i, t)| (i as f64, *t))
+            .collect(),
+    )
 }
 
 /// The fitted line of [`bulk_speed`] in seconds and centimetres:

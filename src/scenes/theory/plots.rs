@@ -244,8 +244,6 @@ fn potential_insets(theme: &Theme, input: &FigureInput, which: &[usize]) -> Resu
     grid(theme, &panels, columns)
 }
 
-/// Number of dispersion samples for lines and for dots.
-
 /// Fig. S5: ω±(q)/ω₀ against qb for each α of the scene, at its b/s,
 /// one panel per α: eq:dispersion as printed (dashed), ×√2 (solid, errata
 /// item 9) and the model's eigenvalues (dots).
