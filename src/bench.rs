@@ -1,5 +1,5 @@
 //! Speed against accuracy: work-precision sweeps and stability bisection
-//! (SPEC section 5, `bench work-precision` and `bench stability`), and the
+//! (README.md, `bench work-precision` and `bench stability`), and the
 //! paper's run timed with each kernel (`bench kernels`).
 //!
 //! Every error is measured against a reference computed by the program

@@ -1,4 +1,4 @@
-//! The paper's figures and movies (SPEC section 4) as scene files: TOML
+//! The paper's figures and movies (README.md) as scene files: TOML
 //! under `assets/scenes/`, built into the binary and read through the same
 //! parser as a user's file. A new catalogue entry is a new file in that
 //! folder and a line in [`FILES`], not new code.

@@ -1,4 +1,4 @@
-//! The program's error type and its exit codes (SPEC section 5).
+//! The program's error type and its exit codes (README.md).
 
 use thiserror::Error;
 
@@ -29,7 +29,7 @@ pub enum Error {
     Closed,
 }
 
-/// What the run loop knows about a diverged run (SPEC section 5).
+/// What the run loop knows about a diverged run (README.md).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Divergence {
     /// The integrator that diverged ("symplectic-euler").

@@ -1,4 +1,4 @@
-"""The Jacob's-ladder model of SPEC section 1 shared by the numba peers
+"""The Jacob's-ladder model of docs/model.md shared by the numba peers
 (ladder_numba.py, sweep_numba.py): units, the A springs' rest length and
 the ground state the runs start from.
 
@@ -10,7 +10,7 @@ import math
 import numpy as np
 from numba import njit
 
-# Units (SPEC section 1): block length s, arm r = s/2, mass m.
+# Units (docs/model.md): block length s, arm r = s/2, mass m.
 S = 1.0
 R = 0.5 * S
 M = 1.0

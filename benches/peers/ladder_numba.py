@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The peer of `ladder`'s kernels: the Jacob's-ladder model of SPEC section 1
+"""The peer of `ladder`'s kernels: the Jacob's-ladder model of docs/model.md
 integrated by symplectic Euler in a numba-compiled loop, as a physicist would
 write it today.
 

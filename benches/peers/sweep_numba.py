@@ -7,7 +7,7 @@ per alpha, spread over every core with multiprocessing. The peer of
     python3 benches/peers/sweep_numba.py [--alpha START:STOP:STEP] [--n N]
         [--t-end T] [--dt DT] [--processes P] [--out FILE.csv]
 
-Model of SPEC section 1 (ladder_model.py): blocks of length s = 1, mass m = 1, inertia I,
+Model of docs/model.md (ladder_model.py): blocks of length s = 1, mass m = 1, inertia I,
 A springs (rest length a = sqrt(b^2 + 4 cos^2 alpha)) between the A nodes
 X_n - (s/2) t_n and B springs (rest length b) between the B nodes
 X_n + (s/2) t_n, t_n = (sin theta_n, (-1)^n cos theta_n); gravity G pulls

@@ -19,7 +19,7 @@ pub struct SceneReport {
 }
 
 /// `bench work-precision --json`: the α = 60° kink's sweeps at the top level
-/// (SPEC section 5), both scenes under `scenes`, and the cheapest setting
+/// (README.md), both scenes under `scenes`, and the cheapest setting
 /// that keeps every arrival time within 1 τ of the reference.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct WorkPrecisionReport {
@@ -221,8 +221,8 @@ pub struct StabilityPoint {
     pub integrators: Vec<StabilityRow>,
 }
 
-/// `bench stability --json`: the α = 60° rows at the top level (SPEC
-/// section 5) and the sweep over α.
+/// `bench stability --json`: the α = 60° rows at the top level (README.md)
+/// and the sweep over α.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct StabilityReport {
     pub alpha_deg: f64,

@@ -1,4 +1,4 @@
-//! The command line (SPEC section 5): `args` collects the arguments (clap),
+//! The command line (README.md): `args` collects the arguments (clap),
 //! `convert` turns them into scenes and options, and this module runs the
 //! library and prints or writes what it returns. No physics and no drawing
 //! here.
@@ -28,7 +28,7 @@ where
 {
     crate::output::temp::install_signal_cleanup();
     let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
-    // Recorded in every data file (issue 19): what reruns it.
+    // Recorded in every data file: what reruns it.
     let command_line: Vec<String> = args
         .iter()
         .map(|a| a.to_string_lossy().into_owned())

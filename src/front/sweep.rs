@@ -1,4 +1,4 @@
-//! A sweep as both front ends run it (SPEC section 7): planned within the
+//! A sweep as both front ends run it (docs/sweeps.md): planned within the
 //! cap on runs, its files' bytes estimated before any run, run in chunks
 //! (each chunk handed back, for a shard file to keep it or a stop to be
 //! noticed between chunks), and its tables made the one way.

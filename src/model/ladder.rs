@@ -1,4 +1,4 @@
-//! Geometry, energy and analytic forces of the ladder (SPEC section 1; the
+//! Geometry, energy and analytic forces of the ladder (docs/model.md; the
 //! supplement's "Details of numerical simulation").
 //!
 //! Coordinates are stored block after block, `q = [X_1, Y_1, θ_1, X_2, ...]`
@@ -46,7 +46,7 @@ pub fn nodes(q: &[f64], i: usize) -> ([f64; 2], [f64; 2]) {
 }
 
 /// The ladder model: parameters plus the derived rest length a, and the
-/// terms of SPEC section 12 (`media`; none for the paper's model).
+/// terms of docs/experiments.md (`media`; none for the paper's model).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ladder {
     pub params: Params,
@@ -66,7 +66,7 @@ impl Ladder {
         }
     }
 
-    /// The same ladder with the terms of SPEC section 12.
+    /// The same ladder with the terms of docs/experiments.md.
     pub fn with_terms(self, terms: super::terms::Terms) -> Self {
         Self { terms, ..self }
     }
@@ -75,7 +75,7 @@ impl Ladder {
         self.params.n
     }
 
-    /// Ground state of sign α (SPEC section 1): θ_n = α, X_n = (n − 1) b,
+    /// Ground state of sign α (docs/model.md): θ_n = α, X_n = (n − 1) b,
     /// Y_{n+1} − Y_n = (−1)^n s cos|α|, Y_1 = 0. Every A spring has length a
     /// and every B spring length b.
     pub fn ground_state(&self) -> Vec<f64> {
@@ -121,7 +121,7 @@ impl Ladder {
     }
 
     /// Potential energy E = Σ ½k[(L_A,n − a)² + (L_B,n − b)²] − m G Σ X_n
-    /// (SPEC section 1; the paper's +mgX_n has the wrong sign).
+    /// (docs/model.md; the paper's +mgX_n has the wrong sign).
     pub fn energy(&self, q: &[f64]) -> f64 {
         let gravity: f64 = (0..self.n()).map(|i| q[ix(i)]).sum();
         self.elastic_energy(q) - M * self.params.gravity * gravity

@@ -1,5 +1,5 @@
 //! The links between the blocks beyond the paper's two-way springs of unit
-//! stiffness (SPEC section 12): a stiffness κ (in the model's unit k),
+//! stiffness (docs/experiments.md): a stiffness κ (in the model's unit k),
 //! tension-only links (tape, ribbon: energy ½ κ max(0, L − ℓ)²), and
 //! Coulomb friction at the pins of a printed linkage.
 //!

@@ -1,4 +1,4 @@
-//! Terms beyond the paper's model (SPEC section 12): added mass and added
+//! Terms beyond the paper's model (docs/experiments.md): added mass and added
 //! inertia of a flat plate, quadratic drag by strip theory, and the links'
 //! own terms (`links`: stiffness, tension-only tape, pin friction).
 //! Buoyancy needs no term of its own: it scales the gravity G of the

@@ -1,4 +1,4 @@
-//! Validated model parameters (SPEC section 1).
+//! Validated model parameters (docs/model.md).
 //!
 //! Units: block length s = 1, block mass m = 1, spring constant k = 1, time
 //! unit τ = sqrt(m/k). Angles are stored in radians; constructors take degrees
@@ -20,7 +20,7 @@ pub const K: f64 = 1.0;
 #[error("{0}")]
 pub struct ParamError(pub String);
 
-/// Parameters of the asymmetric ladder (SPEC section 1 table).
+/// Parameters of the asymmetric ladder (docs/model.md table).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Params {
     /// Number of blocks N; block 1 is the driven top block.

@@ -1,4 +1,4 @@
-//! Which terms of SPEC section 12 a ladder has beyond the paper's model,
+//! Which terms of docs/experiments.md a ladder has beyond the paper's model,
 //! as plain parameters (model units): added mass and inertia, strip drag,
 //! the links' stiffness and whether they push, pin friction. The forces
 //! they make are in `media` (the fluid) and `links` (links and pins); the
@@ -6,7 +6,7 @@
 
 use super::params::ParamError;
 
-/// The terms of SPEC section 12 beyond the paper's model, in model units.
+/// The terms of docs/experiments.md beyond the paper's model, in model units.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Terms {
     /// Added mass m_a of a block moving normal to its face, in m.

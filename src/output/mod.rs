@@ -2,7 +2,7 @@
 //! their temporary files (removed on failure, on SIGINT/SIGTERM, and when
 //! a later run finds them stale), and the standard streams.
 //!
-//! Exit codes follow SPEC section 5: a write that fails because of the
+//! Exit codes follow README.md: a write that fails because of the
 //! user's choice (no permission, not a folder, a device or a symlink in
 //! the way) is [`crate::Error::BadInput`] (exit 2); one that fails because
 //! of the machine (disk full, I/O error) is [`crate::Error::Failed`] (exit

@@ -7,6 +7,7 @@
 //! rotation, radii, colour), never the simulation.
 
 use super::canvas::{Canvas, Cap, Pen};
+use super::palette::Role;
 use super::theme::Theme;
 use crate::encode::Rgb;
 
@@ -129,8 +130,8 @@ pub fn mix(a: Rgb, b: Rgb, f: f64) -> Rgb {
 /// colour, lighter where the tube runs across the light (from the upper
 /// left, in front) and darker where it runs along it.
 pub fn draw_tubes(canvas: &mut impl Canvas, theme: &Theme, view: &Ortho, tubes: &[Tube]) {
-    let ink = theme.series(0);
-    let white = super::theme::palette::WHITE;
+    let ink = theme.color(Role::Ink);
+    let white = theme.color(Role::Paper);
     let light = unit([-0.5, 0.4, 0.75]);
     let light = [
         dot(light, view.right),

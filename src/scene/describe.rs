@@ -315,8 +315,8 @@ pub fn kymograph() -> String {
         .into()
 }
 
-/// A file name made from what differs between `scene` and `base` (SPEC
-/// section 6): "a70-n20" for α = 70° and N = 20 on the paper's scene,
+/// A file name made from what differs between `scene` and `base`
+/// (docs/scenes.md): "a70-n20" for α = 70° and N = 20 on the paper's scene,
 /// "kymograph-a-60" for an antikink's kymograph. Two scenes that differ
 /// get different names; "paper" when nothing differs. Letters, digits,
 /// `-` and `.` only; a name over 80 characters keeps its start and ends
@@ -346,7 +346,7 @@ pub fn derived_name(scene: &Scene, base: &Scene) -> String {
         parts.push(format!("flips{}", s.join("_")));
     }
     // A drive time in the name only where one differs from the base's:
-    // a second flip at the base's drive time asks for no `td` (issue 33).
+    // a second flip at the base's drive time asks for no `td`.
     let base_td = bd.first().map(|f| f.duration);
     if d.iter().any(|f| Some(f.duration) != base_td)
         && let Some(f) = d.first()

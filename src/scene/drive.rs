@@ -1,5 +1,4 @@
-//! `[drive]`: what block 1 does, a sequence of flips (SPEC sections 1
-//! and 6).
+//! `[drive]`: what block 1 does, a sequence of flips (docs/model.md and docs/scenes.md).
 
 use crate::error::{Error, Result};
 use crate::sim::Drive;
@@ -7,7 +6,7 @@ use serde::{Deserialize, Serialize};
 
 /// Block 1's drive: a sequence of flips, each turning block 1 from the
 /// ground state it is in to the other one (α → −α, then −α → α, ...)
-/// linearly over `duration` from `start` (SPEC sections 1 and 6).
+/// linearly over `duration` from `start` (docs/model.md and docs/scenes.md).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct DriveSpec {

@@ -1,4 +1,4 @@
-//! Scene files: TOML in, TOML out (SPEC section 6).
+//! Scene files: TOML in, TOML out (docs/scenes.md).
 //!
 //! A file is parsed in two passes: serde reads it into a [`Scene`]
 //! (unknown keys and wrong types are caught here, with the position the

@@ -1,4 +1,4 @@
-//! The scene: everything one output needs (SPEC section 6), as owned data.
+//! The scene: everything one output needs (docs/scenes.md), as owned data.
 //!
 //! A scene names the model (N, b, α, γ, G, I), the drive of block 1 (any
 //! number of flips), the time window and integrator, and what to render.
@@ -49,7 +49,7 @@ pub struct Scene {
     /// Default: none (the parameter line is always generated).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub caption: Option<String>,
-    /// The ladder (SPEC section 1). Default: the paper's values.
+    /// The ladder (docs/model.md). Default: the paper's values.
     pub model: Model,
     /// What block 1 does. Default: one flip over [0, 1000 τ].
     pub drive: DriveSpec,
@@ -62,7 +62,7 @@ pub struct Scene {
     /// Default: the `screen` style; command-line flags override it.
     #[serde(skip_serializing_if = "crate::render::StyleSpec::is_empty")]
     pub style: crate::render::StyleSpec,
-    /// The ladder as built, in physical units (SPEC section 12,
+    /// The ladder as built, in physical units (docs/experiments.md,
     /// `[apparatus]`, `scene::apparatus`). Default none: the model's units.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub apparatus: Option<apparatus::Apparatus>,
@@ -255,7 +255,7 @@ impl Scene {
     /// This scene changed from `before` (a built-in, say) with its
     /// window made to follow the chain: where N differs from `before`'s
     /// and the window is still `before`'s number, the window
-    /// becomes `"auto"` (SPEC section 9: until every wave has a fate, plus
+    /// becomes `"auto"` (docs/sweeps.md: until every wave has a fate, plus
     /// a margin), since a window fitted to the old chain cuts the new one
     /// short (movie 4, t_end = 2200 τ for N = 10, with N = 20 stopped with
     /// the kink at block 11). A filmstrip with times of its own, and a
@@ -321,10 +321,18 @@ impl Scene {
     }
 }
 
-/// `frames` times evenly over [0, t_end].
+/// `frames` times evenly over [0, t_end], the last exactly t_end
+/// (t_end · k / k can round one ulp above t_end, outside the window).
 pub fn even_times(t_end: f64, frames: usize) -> Vec<f64> {
-    let last = (frames.max(2) - 1) as f64;
-    (0..frames.max(2))
-        .map(|k| t_end * k as f64 / last)
+    let count = frames.max(2);
+    let last = (count - 1) as f64;
+    (0..count)
+        .map(|k| {
+            if k + 1 == count {
+                t_end
+            } else {
+                t_end * k as f64 / last
+            }
+        })
         .collect()
 }

@@ -1,4 +1,4 @@
-//! `[model]`: the ladder's parameters (SPEC section 1) and a panel's
+//! `[model]`: the ladder's parameters (docs/model.md) and a panel's
 //! patch of them.
 
 use crate::error::Result;
@@ -6,7 +6,7 @@ use crate::model::Params;
 use crate::sim::Start;
 use serde::{Deserialize, Serialize};
 
-/// The model's parameters (SPEC section 1, `[model]` in a scene file).
+/// The model's parameters (docs/model.md, `[model]` in a scene file).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Model {

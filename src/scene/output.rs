@@ -52,9 +52,9 @@ pub enum OutputSpec {
     /// The scene run over a grid of parameters, each run's outcome
     /// decided, charted (`figure-NAME.png`) and tabulated
     /// (`figure-NAME.csv`); `ladder sweep` writes `sweep-NAME.*`
-    /// (SPEC section 7, `sweep::SweepSpec`).
+    /// (docs/sweeps.md, `sweep::SweepSpec`).
     Sweep(sweep::SweepSpec),
-    /// A figure of the experiments (SPEC section 12) from the scene's
+    /// A figure of the experiments (docs/experiments.md) from the scene's
     /// `[apparatus]` (`figure-NAME.png`, `scenes::experiments`).
     Experiment(super::apparatus::ExperimentSpec),
 }
@@ -101,7 +101,7 @@ pub struct Panel {
     pub times: Vec<f64>,
 }
 
-/// The figures of the linear theory and the drawings (SPEC section 4).
+/// The figures of the linear theory and the drawings (README.md).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum TheoryFigure {

@@ -1,4 +1,4 @@
-//! `[run]`: the time window and the integrator (SPEC section 6).
+//! `[run]`: the time window and the integrator (docs/scenes.md).
 
 use crate::error::{Error, Result};
 use crate::sim::{IntegratorConfig, IntegratorKind};
@@ -8,7 +8,7 @@ use std::fmt;
 /// Which integrator a run uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Method {
-    /// Chosen by the program and verified (SPEC section 6): velocity Verlet
+    /// Chosen by the program and verified (docs/scenes.md): velocity Verlet
     /// at a step below the stability bound, checked against a run at half
     /// the step and tightened until every arrival time is within the
     /// scene's tolerance.

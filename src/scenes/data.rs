@@ -1,4 +1,4 @@
-//! The data file beside every output (`<output>.json`, SPEC section 6):
+//! The data file beside every output (`<output>.json`, docs/scenes.md):
 //! what made it and the numbers its picture shows, one [`RunData`] per
 //! simulation drawn.
 
@@ -19,8 +19,8 @@ use std::sync::Arc;
 pub use crate::output::data::{BYTES_PER_VALUE, MadeBy, write_json};
 
 /// `<output>.json`: the scene with every parameter, the program that made
-/// the output, and the numbers the picture shows (SPEC section 6); with
-/// `settings` and the scene, what reruns it (issue 19).
+/// the output, and the numbers the picture shows (docs/scenes.md); with
+/// `settings` and the scene, what reruns it.
 #[derive(Debug, Clone, Serialize)]
 pub struct DataFile<'a> {
     #[serde(flatten)]
@@ -34,6 +34,10 @@ pub struct DataFile<'a> {
     pub scene: &'a Scene,
     /// One entry per simulation drawn (empty for the theory figures).
     pub runs: Vec<RunData>,
+    /// The numbers a theory figure plots (its curves and points,
+    /// `scenes::theory::Drawn`); absent for every other output.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub drawn: Option<serde_json::Value>,
 }
 
 /// What an output was drawn with besides its scene: the scene rendered
@@ -113,7 +117,7 @@ pub struct RunData {
     /// in a sweep's CSV).
     pub blocks_flipped: usize,
     pub final_theta_deg: Vec<f64>,
-    /// Every wave of the run and block N's fate (SPEC section 9).
+    /// Every wave of the run and block N's fate (docs/sweeps.md).
     pub waves: sim::waves::Waves,
     /// The state at each drawn time, one [`FrameData`] each.
     pub frames: Frames,
@@ -125,6 +129,39 @@ pub struct RunData {
     /// `scenes::energy`); absent where none is drawn.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub energies: Option<EnergyData>,
+    /// An apparatus run's numbers in the apparatus' units, as the
+    /// experiment figures draw them (docs/experiments.md); absent for a
+    /// run in the model's units only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub apparatus: Option<ApparatusNumbers>,
+}
+
+/// An apparatus run in seconds and centimetres: what the experiment
+/// figures plot (docs/experiments.md, "Built-in scenes and figures").
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ApparatusNumbers {
+    /// The unit of time τ (s) and the block pitch b (cm).
+    pub tau_s: f64,
+    pub pitch_cm: f64,
+    /// Each block's arrival time t_n (s), and t_n − t_1: the time since
+    /// block 1 flipped, the positions figure's time axis.
+    pub arrival_times_s: Vec<Option<f64>>,
+    pub since_block_1_s: Vec<Option<f64>>,
+    /// The bulk speed (cm/s) and its fitted line, where the lower half
+    /// of the chain flipped down it one block after another.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bulk: Option<BulkFit>,
+}
+
+/// The least-squares line through the lower half of the chain's
+/// arrivals: position (n − 1) b = centroid_cm + speed_cm_s (t − t_1 −
+/// centroid_s), fitted over blocks `blocks` (one-based, inclusive).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct BulkFit {
+    pub speed_cm_s: f64,
+    pub blocks: [usize; 2],
+    pub centroid_s: f64,
+    pub centroid_cm: f64,
 }
 
 /// The state drawn at one time.
@@ -233,10 +270,10 @@ impl Serialize for Frames {
     }
 }
 
-/// A kymograph's matrix (issue 19), written as `{"times": [...],
+/// A kymograph's matrix, written as `{"times": [...],
 /// "sin_theta": [[...], ...]}`: `sin_theta[k][i]` is sin θ of block i + 1
 /// at `times[k]`, the colour of the kymograph's row k and column i + 1
-/// (the polarisation, SPEC section 1).
+/// (the polarisation, docs/model.md).
 #[derive(Debug, Clone, Default)]
 pub struct Kymograph(Arc<SampleRows>);
 
@@ -312,6 +349,7 @@ impl RunData {
             frames: Frames(Arc::new(rows)),
             kymograph: None,
             energies: None,
+            apparatus: None,
         }
     }
 }
@@ -412,7 +450,7 @@ pub const NPZ_ARRAYS: [&str; 12] = [
 /// [`NpzMetadata`]).
 pub const NPZ_METADATA: &str = "metadata";
 
-/// What an `.npz` says of itself (SPEC section 11: every file carries
+/// What an `.npz` says of itself (docs/python.md: every file carries
 /// its provenance): the program that wrote it and the scene it ran.
 #[derive(Debug, Clone, Serialize)]
 pub struct NpzMetadata<'a> {
@@ -444,12 +482,12 @@ fn column<W: Write>(
 }
 
 /// The whole state of `traj` at its sample times as NumPy's `.npz`
-/// (SPEC section 9), streamed into `w`: `t` (S), and S × N arrays `theta`
+/// (docs/sweeps.md), streamed into `w`: `t` (S), and S × N arrays `theta`
 /// (radians, wrapped to (−π, π]), `x`, `y` (centres, units of s), `vx`,
 /// `vy`, `omega` (θ̇), then per sample the energies (units of k s²):
 /// `kinetic_energy` ½m(Ẋ²+Ẏ²)+½Iθ̇², `elastic_energy`
 /// Σ½k[(L_A−a)²+(L_B−b)²], `gravitational_energy` −mGΣX_n and their sum
-/// `energy` (SPEC section 1). Nothing is held beyond one buffer.
+/// `energy` (docs/model.md). Nothing is held beyond one buffer.
 ///
 /// Last, `metadata`: the file's provenance as JSON text in a 0-d unicode
 /// array ([`NPZ_METADATA`]; `json.loads(str(npz["metadata"]))`): the

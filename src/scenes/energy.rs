@@ -1,9 +1,9 @@
 //! The energy view (`--view energy`, `[output] kind = "energy"`): the
-//! energies of the scene's run against t/τ (SPEC section 11), with the
+//! energies of the scene's run against t/τ (docs/python.md), with the
 //! numbers in its data file.
 //!
 //! Each energy is drawn as its change from t = 0, in units of k s²
-//! (SPEC section 1; the supplement's equations of motion, "Details of
+//! (docs/model.md; the supplement's equations of motion, "Details of
 //! numerical simulation"): the kinetic ½m(Ẋ² + Ẏ²) + ½Iθ̇², the elastic
 //! Σ½k[(L_A − a)² + (L_B − b)²], the gravitational −mGΣX_n, the energy
 //! the damping has dissipated so far (∫ γ(Ẋ² + Ẏ² + r²θ̇²) dt, recorded
@@ -19,8 +19,8 @@ use super::run;
 use crate::error::{Error, Result};
 use crate::render::charts::{Axis, ChartSpec, Series};
 use crate::render::line_chart_figure;
-use crate::render::theme::palette;
-use crate::render::{Picture, Theme, style};
+use crate::render::palette::{Palette, Role};
+use crate::render::{Picture, Theme};
 use crate::scene::{Scene, describe};
 use crate::sim::RunOptions;
 
@@ -74,17 +74,27 @@ pub fn energy_chart(scene: &Scene, e: &EnergyData) -> ChartSpec {
         Axis::new("energy − its value at t = 0 (k s²)"),
     );
     let lines: [(&str, &[f64], crate::encode::Rgb, bool); 6] = [
-        ("kinetic", &e.kinetic, palette::SKY_BLUE, false),
-        ("elastic", &e.elastic, palette::BLUISH_GREEN, false),
-        ("gravitational", &e.gravitational, palette::ORANGE, false),
+        ("kinetic", &e.kinetic, Palette.color(Role::Series(5)), false),
+        ("elastic", &e.elastic, Palette.color(Role::Series(3)), false),
+        (
+            "gravitational",
+            &e.gravitational,
+            Palette.color(Role::Series(4)),
+            false,
+        ),
         (
             "dissipated so far",
             &e.dissipated,
-            palette::REDDISH_PURPLE,
+            Palette.color(Role::Series(6)),
             true,
         ),
-        ("total", &e.total, palette::VERMILLION, false),
-        ("total + dissipated", &with, palette::BLUE, false),
+        ("total", &e.total, Palette.color(Role::Series(1)), false),
+        (
+            "total + dissipated",
+            &with,
+            Palette.color(Role::Series(2)),
+            false,
+        ),
     ];
     for (label, values, color, dashed) in lines {
         let s = Series::line(label, change(values), color).with_width(1.5);
@@ -111,7 +121,7 @@ pub fn energy_chart(scene: &Scene, e: &EnergyData) -> ChartSpec {
             Series::line(
                 format!("drive ends, t/τ = {}", describe::num(drive_end)),
                 vec![(drive_end, lo), (drive_end, hi)],
-                style::GREY,
+                Palette.color(Role::Ground),
             )
             .dashed(),
         );

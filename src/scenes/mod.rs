@@ -46,7 +46,7 @@ pub struct Outputs {
     /// Default: none.
     pub style: crate::render::StyleSpec,
     /// The command line that asked for the files, word by word, recorded
-    /// in each data file (issue 19). Default: empty (the library called
+    /// in each data file. Default: empty (the library called
     /// directly).
     pub command_line: Vec<String>,
 }
@@ -349,6 +349,7 @@ fn render_styled(
         files: names.clone(),
         scene: asked,
         runs,
+        drawn: theory_drawn(scene)?,
     };
     let (data_name, pictures) = names.split_last().expect("a data file is always named");
     for (name, b) in pictures.iter().zip(&bytes) {
@@ -356,6 +357,19 @@ fn render_styled(
     }
     drop(bytes);
     sink(data_name, &|w| data::write_json(w, &data))
+}
+
+/// The numbers a theory figure plots, for its data file.
+fn theory_drawn(scene: &Scene) -> Result<Option<serde_json::Value>> {
+    let OutputSpec::Theory(spec) = &scene.output else {
+        return Ok(None);
+    };
+    let input = theory::FigureInput::of(scene, spec);
+    theory::drawn_numbers(spec.figure, &input)?
+        .map(|d| {
+            serde_json::to_value(d).map_err(|e| Error::failed(format!("the drawn numbers: {e}")))
+        })
+        .transpose()
 }
 
 /// A sweep's files ([`crate::sweep::render_to`]), handed to `sink`, its

@@ -164,6 +164,7 @@ pub fn render_to(
         files: names.clone(),
         scene,
         runs: Vec::new(),
+        drawn: None,
     };
     let file = RingsFile {
         head,
@@ -202,8 +203,13 @@ fn movie_bytes(
         w - 16.0,
         h - band - 2.0 * theme.label,
     );
-    let mut writer =
-        MovieWriter::with_quality(formats, movie.width, movie.height, movie.fps, quality)?;
+    let mut writer = MovieWriter::with_quality(
+        formats,
+        (movie.width, movie.height),
+        movie.fps,
+        theme.palette.gif(),
+        quality,
+    )?;
     for chunk in run.samples.chunks(32) {
         let frames: Vec<Result<tiny_skia::Pixmap>> = chunk
             .par_iter()

@@ -6,6 +6,7 @@
 //! paper's yellow tapes); the azimuth wheel runs through series 1 to 6.
 
 use crate::encode::Rgb;
+use crate::render::palette::Role;
 use crate::render::style::{HAlign, VAlign};
 use crate::render::tubes::{self, Ortho, Tube};
 use crate::render::{Canvas, Picture, Theme};
@@ -20,9 +21,9 @@ pub const VIEW_ELEVATION: f64 = 15.0;
 /// Ring k's colour.
 pub fn ring_color(theme: &Theme, chain: &RingChain, k: usize) -> Rgb {
     if chain.tapes.iter().any(|t| t.contains(&k)) {
-        theme.series(4)
+        theme.color(Role::Series(4))
     } else {
-        theme.series(2 + RingChain::strand(k))
+        theme.color(Role::Series(2 + RingChain::strand(k)))
     }
 }
 
@@ -77,7 +78,7 @@ pub fn draw_frame(
     title: &str,
     size: (f32, f32),
 ) {
-    let ink = theme.series(0);
+    let ink = theme.color(Role::Ink);
     tubes::draw_tubes(canvas, theme, view, &tubes_of(theme, chain, s));
     if theme.titles && !title.is_empty() {
         canvas.text(
@@ -109,7 +110,7 @@ fn figure_width(theme: &Theme) -> f32 {
 /// one view for all, each labelled with its time.
 pub fn strip_picture(theme: &Theme, chain: &RingChain, run: &RingRun, title: &str) -> Picture {
     let width = figure_width(theme);
-    let ink = theme.series(0);
+    let ink = theme.color(Role::Ink);
     let count = run.samples.len().max(1) as f32;
     let margin = theme.label;
     let panel = (width - 2.0 * margin) / count;
@@ -157,7 +158,7 @@ pub fn strip_picture(theme: &Theme, chain: &RingChain, run: &RingRun, title: &st
 pub fn azimuth_color(theme: &Theme, degrees: f64) -> Rgb {
     let anchors: Vec<Rgb> = [1, 4, 3, 5, 2, 6]
         .iter()
-        .map(|&i| theme.series(i))
+        .map(|&i| theme.color(Role::Series(i)))
         .collect();
     let x = degrees.rem_euclid(360.0) / 60.0;
     let k = x.floor() as usize % 6;
@@ -171,7 +172,7 @@ pub const KYMOGRAPH_ROWS: usize = 200;
 /// odd strand), each cell the azimuth of the ring's normal, paler as the
 /// ring lies flat (its normal vertical); flips marked with ink dots.
 pub fn kymograph_picture(theme: &Theme, chain: &RingChain, run: &RingRun, title: &str) -> Picture {
-    let ink = theme.series(0);
+    let ink = theme.color(Role::Ink);
     let width = figure_width(theme).min(640.0);
     let top = if theme.titles {
         theme.title_band()
@@ -207,11 +208,7 @@ pub fn kymograph_picture(theme: &Theme, chain: &RingChain, run: &RingRun, title:
             let n = crate::rings::run::normals(&[body_of(s, k)])[0];
             let az = n[1].atan2(n[0]).to_degrees();
             let flat = n[2].abs();
-            let color = tubes::mix(
-                azimuth_color(theme, az),
-                crate::render::theme::palette::WHITE,
-                flat,
-            );
+            let color = tubes::mix(azimuth_color(theme, az), theme.color(Role::Paper), flat);
             p.rect(
                 left + cell_w * c as f32,
                 top + cell_h * r as f32,
@@ -252,7 +249,7 @@ fn axes(
     cols: &[Option<usize>],
     t_end: f64,
 ) {
-    let ink = theme.series(0);
+    let ink = theme.color(Role::Ink);
     let cell = w / cols.len() as f32;
     for (c, ring) in cols.iter().enumerate() {
         if let Some(k) = ring

@@ -182,7 +182,7 @@ const CRITICAL_STEP_BUDGET: f64 = 2e7;
 /// The largest fixed step of `kind` at which every run of `scene` stays
 /// bounded, measured by bisection to 5 % (as `bench stability` does for
 /// the paper's scene), starting from the linear prediction (2/ω_max for
-/// symplectic Euler and Verlet, SPEC section 5). `None` where measuring
+/// symplectic Euler and Verlet, README.md). `None` where measuring
 /// would cost more than [`CRITICAL_STEP_BUDGET`], or no step down to a
 /// thousandth of the prediction stays bounded; `predicted` is returned
 /// either way.

@@ -1,5 +1,6 @@
-//! "Stiff" links shown to be stiff, as `auto` shows its step (SPEC
-//! section 12, "Units and the apparatus"): a scene whose `[apparatus]`
+//! "Stiff" links shown to be stiff, as `auto` shows its step
+//! (docs/experiments.md, "Units and the apparatus"): a scene whose
+//! `[apparatus]`
 //! gives its links as `stiffness = "stiff"` gets a stiffness k from
 //! `stiff_gravity` (`scene::apparatus`), a modelling choice, not a
 //! measured value. The same run with the links twice as stiff (2k: half

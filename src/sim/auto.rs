@@ -1,4 +1,4 @@
-//! The `auto` integrator with verified accuracy (SPEC section 6).
+//! The `auto` integrator with verified accuracy (docs/scenes.md).
 //!
 //! Velocity Verlet (second order, symplectic, one force evaluation a step)
 //! starts at dt = min(0.25, 0.4 · 2/ω_max), well inside its stability
@@ -72,7 +72,7 @@ pub fn simulate_verified(
     );
     // Of the coarser run only its arrival times are compared: its samples
     // (none for the first, which records none) are dropped at once, so a
-    // halving never holds two sampled trajectories (issue 32).
+    // halving never holds two sampled trajectories.
     let mut coarse = match first_coarse {
         Ok(t) => Some(Coarse::of(t)),
         Err(e) if e.is_failed_run() => None,

@@ -1,4 +1,4 @@
-//! Many runs at once, for sweeps (SPEC section 7): the lanes of a SIMD
+//! Many runs at once, for sweeps (docs/sweeps.md): the lanes of a SIMD
 //! register hold different runs of the same N, one run per lane, all
 //! stepping in lockstep, so no lane waits on a neighbour; a run that ends
 //! leaves its lane to the next run in the queue; every core runs such a

@@ -15,7 +15,7 @@ use crate::error::{Error, Result};
 use std::fmt;
 use std::str::FromStr;
 
-/// The integrators of SPEC section 5, by their command-line names.
+/// The integrators of README.md, by their command-line names.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum IntegratorKind {
     ExplicitEuler,
@@ -104,7 +104,7 @@ pub struct IntegratorConfig {
 }
 
 impl IntegratorConfig {
-    /// The paper's setting: symplectic Euler, dt = 0.01 (SPEC section 5 default).
+    /// The paper's setting: symplectic Euler, dt = 0.01 (README.md default).
     pub fn paper() -> Self {
         Self {
             kind: IntegratorKind::SymplecticEuler,

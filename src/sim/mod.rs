@@ -50,7 +50,7 @@ pub struct Scenario {
 }
 
 impl Scenario {
-    /// The kink (α > 0) or antikink (α < 0) scene of SPEC section 1: start at
+    /// The kink (α > 0) or antikink (α < 0) scene of docs/model.md: start at
     /// rest in the ground state of sign α, not pre-relaxed; block 1 flips
     /// α → −α over [0, T_d].
     pub fn single_flip(params: Params, t_d: f64, t_end: f64) -> Result<Self> {
@@ -114,7 +114,7 @@ pub fn check_terms(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
     )))
 }
 
-/// `simulate` needs 0 < |α| < 90° (SPEC section 5).
+/// `simulate` needs 0 < |α| < 90° (README.md).
 /// α is read to 1e-9° (`Params::alpha_deg`), so a smaller |α| counts as 0.
 pub fn check_simulable(params: &Params) -> Result<()> {
     let deg = params.alpha_deg();
@@ -171,7 +171,7 @@ pub struct StopView<'a> {
 }
 
 /// A stop rule: true once the run has decided what it was run for (a
-/// sweep's outcome, SPEC section 7). Asked at every divergence check
+/// sweep's outcome, docs/sweeps.md). Asked at every divergence check
 /// (every 5 τ, at most 512 steps apart, and at every sample time and
 /// drive corner).
 pub type StopRule<'a> = dyn Fn(&StopView) -> bool + Sync + 'a;
@@ -281,7 +281,7 @@ const SMALL_SAMPLES: u64 = 16 << 20;
 /// as one reservation (address space only: no page is touched) and given
 /// back at once. So a process under an address-space limit (RLIMIT_AS,
 /// `ulimit -v`) gets a failed run with a hint instead of an abort when a
-/// sample is stored halfway through (issue 32).
+/// sample is stored halfway through.
 pub fn ensure_memory(samples: usize, n: usize) -> Result<()> {
     reserve(samples, n, WORKING_BYTES)
 }
@@ -366,7 +366,7 @@ pub fn run_streaming(
     let config = config.validated()?;
     check_terms(&scenario.ladder, &config)?;
     // The fused and chain kernels compute the paper's forces only: a
-    // ladder with any term of SPEC section 12 takes the portable path.
+    // ladder with any term of docs/experiments.md takes the portable path.
     let stepping = if scenario.ladder.terms.is_paper() {
         options.stepping
     } else {

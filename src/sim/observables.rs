@@ -1,10 +1,11 @@
-//! Observables of a run: arrival times of the flip at each block (SPEC
-//! section 1), the kink position, and the topological polarisation sin θ_n.
+//! Observables of a run: arrival times of the flip at each block
+//! (docs/model.md), the kink position, and the topological polarisation sin
+//! θ_n.
 
 use crate::model::ladder::itheta;
 
 /// Records, for every block, the first time its polarisation sin θ_n
-/// changes sign from the one it started with (SPEC section 1): θ_n leaves
+/// changes sign from the one it started with (docs/model.md): θ_n leaves
 /// the interval (kπ, (k + 1)π) it started in, through the horizontal
 /// (θ = kπ, the usual flip) or by turning the other way round (through
 /// ±180°, as whole groups of blocks do near α = ±90°). The time is
@@ -228,13 +229,13 @@ pub fn least_squares_slope(pts: &[(f64, f64)]) -> f64 {
     sxy / sxx
 }
 
-/// Topological polarisation of each block, sin θ_n (SPEC section 1).
+/// Topological polarisation of each block, sin θ_n (docs/model.md).
 pub fn polarisation(q: &[f64]) -> Vec<f64> {
     (0..q.len() / 3).map(|i| q[itheta(i)].sin()).collect()
 }
 
 /// Block angles θ_n in degrees, wrapped to (−180°, 180°] as they are
-/// reported to the user (SPEC section 1).
+/// reported to the user (docs/model.md).
 pub fn angles_deg(q: &[f64]) -> Vec<f64> {
     angles_deg_unwrapped(q).into_iter().map(wrap_deg).collect()
 }

@@ -1,5 +1,5 @@
-//! Drive protocols (SPEC section 1, "Kink and antikink"; movies 10 and 11 of
-//! SPEC section 4): block 1's centre is held at its ground-state position and
+//! Drive protocols (docs/model.md, "Kink and antikink"; movies 10 and 11 of
+//! README.md): block 1's centre is held at its ground-state position and
 //! its angle follows a piecewise-linear ramp θ_1(t).
 
 use crate::error::{Error, Result};

@@ -1,10 +1,10 @@
-//! The hanging start (SPEC section 9): the static equilibrium of the chain
+//! The hanging start (docs/sweeps.md): the static equilibrium of the chain
 //! under gravity with block 1 clamped, as the toy hangs before its top
 //! block is turned.
 //!
 //! The equilibrium solves ∂E/∂q = 0 for the free coordinates (blocks
-//! 2..N), E = Σ ½k[(L_A,n − a)² + (L_B,n − b)²] − m G Σ X_n (SPEC
-//! section 1; the supplement's equations of motion, "Details of numerical
+//! 2..N), E = Σ ½k[(L_A,n − a)² + (L_B,n − b)²] − m G Σ X_n
+//! (docs/model.md; the supplement's equations of motion, "Details of numerical
 //! simulation", at rest). Block 1 keeps its ground-state centre and the
 //! drive's angle at t = 0 (θ_1 = α).
 //!

@@ -1,6 +1,7 @@
 //! The equations of motion as a right-hand side for the integrators
 //! (supplement, "Details of numerical simulation"):
-//! m Ẍ = −∂E/∂X − γẊ, I θ̈ = −∂E/∂θ − γ r² θ̇, with block 1 constrained by the
+//! m Ẍ = −∂E/∂X − γẊ, I θ̈ = −∂E/∂θ − γ r² θ̇,
+//! with block 1 constrained by the
 //! protocol.
 
 use super::protocol::{Drive, Protocol};
@@ -40,7 +41,7 @@ pub struct Rhs<'a> {
     scratch: ForceScratch,
     /// Number of force (gradient) evaluations so far.
     pub force_evals: u64,
-    /// The ladder's terms of SPEC section 12 (`model::media`), and
+    /// The ladder's terms of docs/experiments.md (`model::media`), and
     /// scratch for their generalised forces.
     terms: Terms,
     force: Vec<f64>,

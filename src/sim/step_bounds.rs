@@ -1,4 +1,4 @@
-//! The linear stability bounds of the fixed-step schemes (SPEC section 5):
+//! The linear stability bounds of the fixed-step schemes (README.md):
 //! the largest step each takes for a mode of frequency ω and damping rate
 //! c. `auto` starts from them (`scenes::run`), and `ladder bench stability`
 //! charts them beside the measured critical steps.
@@ -8,7 +8,7 @@ use crate::model::Params;
 use nalgebra::Complex;
 
 /// Linear stability bound of each scheme for a mode of frequency ω and
-/// damping rate c, λ = −c/2 ± i sqrt(ω² − c²/4) (SPEC section 5): 2/ω for
+/// damping rate c, λ = −c/2 ± i sqrt(ω² − c²/4) (README.md): 2/ω for
 /// symplectic Euler and Verlet, 2√2/ω for RK4 (the undamped bounds the spec
 /// quotes), and for explicit Euler and fixed-step dopri5 the damped bound,
 /// the first h at which |R(hλ)| exceeds 1 (c/ω² for explicit Euler). Both of

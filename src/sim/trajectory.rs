@@ -1,5 +1,5 @@
 //! The result of a run ([`Trajectory`]) and its energies at the samples
-//! ([`Energies`], SPEC section 1).
+//! ([`Energies`], docs/model.md).
 
 use super::observables::{self, kink_position};
 use super::waves::Waves;
@@ -25,10 +25,10 @@ pub struct Trajectory {
     /// asked for).
     pub dissipated: Vec<f64>,
     /// Arrival time per block: the first sign change of its polarisation
-    /// sin θ_n (SPEC section 1), `None` where it never flipped.
+    /// sin θ_n (docs/model.md), `None` where it never flipped.
     pub arrival_times: Vec<Option<f64>>,
     /// Every domain wall of the run as a wave, and block N's fate
-    /// (`waves`, SPEC section 9).
+    /// (`waves`, docs/sweeps.md).
     pub waves: Waves,
     /// State at the end of the run: at t_end, or at `t_final` where a stop
     /// rule ended it earlier (`RunOptions::stop`).
@@ -40,7 +40,7 @@ pub struct Trajectory {
 }
 
 impl Trajectory {
-    /// θ_n at t_end, in degrees, wrapped to (−180°, 180°] (SPEC section 1).
+    /// θ_n at t_end, in degrees, wrapped to (−180°, 180°] (docs/model.md).
     pub fn final_theta_deg(&self) -> Vec<f64> {
         observables::angles_deg(&self.final_state.q)
     }
@@ -87,8 +87,8 @@ impl Trajectory {
     }
 }
 
-/// The energies of a trajectory at its samples, in units of k s² (SPEC
-/// section 1): one value per sample each.
+/// The energies of a trajectory at its samples, in units of k s²
+/// (docs/model.md): one value per sample each.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Energies {
     /// ½ m (Ẋ² + Ẏ²) + ½ I θ̇² summed over the blocks (with the added mass

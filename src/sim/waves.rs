@@ -1,7 +1,6 @@
-//! The domain walls of a run, each one a wave with its own record (SPEC
-//! section 9).
+//! The domain walls of a run, each one a wave with its own record (docs/sweeps.md).
 //!
-//! A block's polarisation sign is that of sin θ_n (SPEC section 1). A wall
+//! A block's polarisation sign is that of sin θ_n (docs/model.md). A wall
 //! sits in gap g (between blocks g + 1 and g + 2, one-based) wherever two
 //! neighbouring blocks have opposite signs. Every sign change of a block
 //! moves, creates or removes walls, and the tracker follows each wall from
@@ -48,7 +47,7 @@ pub enum WaveKind {
 
 impl WaveKind {
     /// The wave the first flip of block 1 launches from the ground state
-    /// of sign α (SPEC section 1): block 1 turned from α to −α leaves
+    /// of sign α (docs/model.md): block 1 turned from α to −α leaves
     /// negative polarisation above positive for α > 0, a kink; the
     /// reverse, an antikink, for α < 0. The one rule the program names
     /// waves by; α = 0 (no ground state to flip) is named a kink.
@@ -85,8 +84,7 @@ pub enum Fate {
     /// (block N turns its own way: `Waves::block_n`), or block 2 for a
     /// wave running up.
     End,
-    /// The state proved it stopped (rest at a stable equilibrium, SPEC
-    /// section 9), at its `front`.
+    /// The state proved it stopped (rest at a stable equilibrium, docs/sweeps.md), at its `front`.
     Stopped,
     /// It met wave `with` (index into `waves`) at `block`, time `at`.
     Annihilated { with: usize, at: f64, block: usize },

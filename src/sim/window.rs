@@ -1,4 +1,4 @@
-//! `t_end = "auto"` (SPEC section 9): the window that shows every wave's
+//! `t_end = "auto"` (docs/sweeps.md): the window that shows every wave's
 //! fate.
 //!
 //! The scenario is run to at most [`AUTO_CAP`] and stopped at the first

@@ -1,4 +1,4 @@
-//! A sweep's JSON (SPEC section 7): the sweep (scene, axes, rule,
+//! A sweep's JSON (docs/sweeps.md): the sweep (scene, axes, rule,
 //! fingerprint), the count of each outcome, the linear theory along α,
 //! and every run with its arrival times and waves. It is written record by
 //! record into the writer given (the output's temporary file), never held
@@ -64,7 +64,7 @@ struct Rule {
 
 #[derive(Serialize)]
 struct SweepData<'a> {
-    /// The program, its build and the command line (issue 19).
+    /// The program, its build and the command line.
     #[serde(flatten)]
     made_by: crate::output::data::MadeBy<'a>,
     title: String,

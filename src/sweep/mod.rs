@@ -1,4 +1,4 @@
-//! Sweeps (SPEC section 7): a scene run over a grid of parameters, every
+//! Sweeps (docs/sweeps.md): a scene run over a grid of parameters, every
 //! run until its outcome is decided, on every core, results in grid order.
 //!
 //! - `scene::sweep` holds the data (grid, rule, charts) of a scene whose
@@ -14,6 +14,7 @@
 //! charts; it knows no command-line flag.
 
 pub mod chart;
+pub mod columns;
 pub mod json;
 pub mod outcome;
 pub mod results;

@@ -1,4 +1,4 @@
-//! What the wave of one run did (SPEC sections 7 and 9; the rule is
+//! What the wave of one run did (docs/sweeps.md; the rule is
 //! documented in docs/sweeps.md).
 //!
 //! - **propagated**: the wave's front reached block N − 1: blocks 1 to

@@ -1,4 +1,4 @@
-//! A sweep's results as files (SPEC section 7): the CSV, one row per run
+//! A sweep's results as files (docs/sweeps.md): the CSV, one row per run
 //! in grid order, and the JSON with every arrival time. Both are made from
 //! the records alone (no wall times, no paths), so they are byte-identical
 //! between runs, and between a sharded sweep and an unsharded one.

@@ -62,8 +62,8 @@ pub struct RunResult {
     pub arrival_error: Option<f64>,
     /// Force evaluations of every run made for this point.
     pub force_evals: u64,
-    /// Every wave of the returned run and block N's fate (SPEC section
-    /// 9); the outcome columns describe the chain's blocks from the top
+    /// Every wave of the returned run and block N's fate (docs/sweeps.md); the
+    /// outcome columns describe the chain's blocks from the top
     /// (the arrival times above), whichever wave flipped them.
     #[serde(default)]
     pub waves: Waves,
@@ -268,7 +268,7 @@ struct AutoState {
 ///
 /// A point that cannot start (a relaxed start that finds no hanging
 /// equilibrium: a failed run, not bad input) is a `failed` record with
-/// the reason, and the other points run on (issue 32).
+/// the reason, and the other points run on.
 pub fn run_points(scenes: &[Scene], spec: &SweepSpec) -> Result<Vec<RunResult>> {
     let prepared: Vec<Result<Prepared>> = scenes.par_iter().map(|s| prepare(s, spec)).collect();
     let mut results: Vec<Option<RunResult>> = scenes.iter().map(|_| None).collect();

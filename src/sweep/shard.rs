@@ -1,4 +1,4 @@
-//! A sweep over several processes or machines (SPEC section 7): shard K
+//! A sweep over several processes or machines (docs/sweeps.md): shard K
 //! of N runs the points i with i mod N = K − 1 (round robin, so that slow
 //! regions of the grid are shared out) and keeps its results in
 //! `DIR/shards/sweep-NAME.K-of-N.json`, rewritten atomically after every
@@ -369,7 +369,7 @@ pub fn write_records(dir: &Path, plan: &Plan, shard: Shard, records: &[Record]) 
 /// counted as they are written, and past `max` the writing stops, the
 /// temporary file is removed and the file written before (with the runs
 /// of the chunks before) stays, so that no shard file is ever one its
-/// reader refuses (issue 32: a 1.09 GB shard was written, then read as
+/// reader refuses (a 1.09 GB shard was written, then read as
 /// stale and all its runs done again). The error (bad input, exit 2) says
 /// how many shards would hold the runs.
 pub fn write_records_within(

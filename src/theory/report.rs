@@ -1,4 +1,4 @@
-//! The numbers of `ladder theory` (SPEC section 5, `theory --json`).
+//! The numbers of `ladder theory` (README.md, `theory --json`).
 
 use super::bloch::{BlochChain, Coefficients};
 use super::compatibility::{Boundary, IndexCount, index_count};
@@ -71,7 +71,7 @@ pub struct TheoryReport {
 pub const MAX_THEORY_BLOCKS: usize = crate::limits::MAX_THEORY_BLOCKS;
 
 impl TheoryReport {
-    /// The JSON fields SPEC section 7 requires of `ladder theory --json`.
+    /// The JSON fields docs/sweeps.md requires of `ladder theory --json`.
     pub const SPEC_FIELDS: [&'static str; 11] = [
         "a",
         "alpha_deg",

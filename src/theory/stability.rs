@@ -1,9 +1,9 @@
-//! Rest and linear stability of a state of the clamped chain (SPEC
-//! section 9): the proof that a wave has stopped.
+//! Rest and linear stability of a state of the clamped chain (docs/sweeps.md):
+//! the proof that a wave has stopped.
 //!
 //! Block 1's centre and angle are held (clamped), so the free coordinates
 //! are those of blocks 2..N, 3(N − 1) of them. The Hessian of the energy E
-//! (SPEC section 1, springs and gravity) at any state, not only the ground
+//! (docs/model.md, springs and gravity) at any state, not only the ground
 //! state, is a band matrix of half-bandwidth 5, like the ground-state one
 //! behind ω_max (`dispersion::clamped_band_hessian`): a spring couples two
 //! neighbouring blocks. It is built here from the analytic gradient by
@@ -206,7 +206,7 @@ pub fn smallest_omega_sq(ladder: &Ladder, q: &[f64]) -> f64 {
     lo
 }
 
-/// The rest test of SPEC section 9 at state (`q`, `v`): kinetic energy and
+/// The rest test of docs/sweeps.md at state (`q`, `v`): kinetic energy and
 /// residual forces under `tol`, then (only then: it costs 18 gradients)
 /// the clamped Hessian above `tol.margin`.
 pub fn rest_proof(ladder: &Ladder, q: &[f64], v: &[f64], tol: &RestTolerances) -> RestProof {

@@ -3,7 +3,7 @@
 //! binary writes θ_n(t) at every τ (`--csv`) and its arrival times
 //! (`--json`) from the same run; this test finds, for each block, the first
 //! sample at which the polarisation sin θ_n has the sign opposite to the
-//! one it started with (SPEC section 1), and requires the program's
+//! one it started with (docs/model.md), and requires the program's
 //! arrival time to lie between that sample and the one before it. A block
 //! whose samples never change sign must have no arrival. So a shift of any
 //! block's arrival by more than one sample interval, or a missed or
@@ -131,7 +131,7 @@ fn arrivals_match_with_other_integrators_and_longer_ladders() {
 
 #[test]
 fn pinned_and_turned_round_blocks_match_an_independent_detector() {
-    // α = −50°: the antikink is pinned near the top (SPEC section 2).
+    // α = −50°: the antikink is pinned near the top (docs/model.md).
     let n = check(&["--alpha", "-50"]);
     assert!(n <= 3, "{n} blocks arrived");
     // α = 88°: groups of blocks turn through ±180° instead of through the

@@ -1,4 +1,4 @@
-//! The `auto` integrator's acceptance rule (SPEC section 6), for
+//! The `auto` integrator's acceptance rule (docs/scenes.md), for
 //! `simulate` and for sweeps, at its boundary: a coarse/fine pair whose
 //! arrival times differ by more than the tolerance, or in which a block
 //! flips in one run and not the other, is rejected and the step halved.

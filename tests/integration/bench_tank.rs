@@ -1,4 +1,4 @@
-//! The integrators on the water tank (issue 31, "Integrators"): the
+//! The integrators on the water tank ("Integrators"): the
 //! work-precision and stability studies run on a scene whose terms some
 //! schemes refuse, and say so point by point instead of failing.
 

@@ -1,4 +1,4 @@
-//! Costs checked before work (issue 22, family 4): the worst case of
+//! Costs checked before work: the worst case of
 //! `auto`'s halvings and the cost of every theory figure are estimated and
 //! refused before any work, naming the flag that raises the cap, in
 //! `render` and in `render --check` alike; the catalogue passes the

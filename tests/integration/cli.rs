@@ -1,4 +1,4 @@
-//! The command-line contract (SPEC section 5): exit codes, one-line errors,
+//! The command-line contract (README.md): exit codes, one-line errors,
 //! `simulate --json` fields and the CSV file.
 
 use jacobs_ladder::theory::TheoryReport;

@@ -1,4 +1,4 @@
-//! Every data file records what reproduces it (issue 19): the scene with
+//! Every data file records what reproduces it: the scene with
 //! every value, the settings it was drawn with, the command line, the
 //! program's version and git commit. The proof: a scene file made from a
 //! data file's recorded scene, rendered with its recorded settings, gives

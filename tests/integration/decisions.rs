@@ -1,7 +1,7 @@
 //! Each decision the program makes, tested at its boundary against values
 //! written down independently of the code that makes it:
 //!
-//! - the threshold between `pinned` and `stalled` (SPEC section 7: pinned
+//! - the threshold between `pinned` and `stalled` (docs/sweeps.md: pinned
 //!   when "no block past block 2 ever flips"), through
 //!   `outcome::stopped_outcome` and through real sweep runs whose outcome
 //!   the test re-derives from their arrival times;
@@ -20,7 +20,7 @@ use jacobs_ladder::sweep::run::RunResult;
 use jacobs_ladder::sweep::{Plan, Record, chart};
 use std::collections::BTreeMap;
 
-/// SPEC section 7, written out: a stopped wave whose front is at block
+/// docs/sweeps.md, written out: a stopped wave whose front is at block
 /// `front` is pinned when no block past block 2 flipped (front ≤ 2).
 fn spec_stopped(front: usize) -> Outcome {
     if front <= 2 {
@@ -32,7 +32,7 @@ fn spec_stopped(front: usize) -> Outcome {
 
 #[test]
 fn front_2_is_pinned_and_front_3_is_stalled() {
-    // The boundary itself, from the SPEC's words.
+    // The boundary itself, from the words of docs/sweeps.md.
     assert_eq!(stopped_outcome(2), Outcome::Pinned, "front 2");
     assert_eq!(stopped_outcome(3), Outcome::Stalled, "front 3");
     // And every front either side of it.
@@ -44,9 +44,9 @@ fn front_2_is_pinned_and_front_3_is_stalled() {
 /// The rule applied to arrival histories that stop at every front: a
 /// history whose blocks 1..=front flipped (at the paper's kink pace,
 /// 220 τ a block after t₁ = 500 τ) and nothing after is decided, once the
-/// state is proved at rest after the drive, with the SPEC's outcome; while
+/// state is proved at rest after the drive, with the outcome of docs/sweeps.md; while
 /// it is not proved at rest it stays undecided until the cap, and then is
-/// `undecided` (SPEC section 9: no quiet time calls a wave stopped).
+/// `undecided` (docs/sweeps.md: no quiet time calls a wave stopped).
 #[test]
 fn the_rule_decides_each_stopped_front_as_the_spec_says() {
     let rule = outcome::Rule {
@@ -73,10 +73,10 @@ fn the_rule_decides_each_stopped_front_as_the_spec_says() {
     }
 }
 
-/// Real sweep runs that stop: each one's outcome is the SPEC's for the
+/// Real sweep runs that stop: each one's outcome is docs/sweeps.md's for the
 /// front the test reads off its own arrival times (blocks 1..=n flipped),
 /// and the set covers both sides of the boundary. α = −50° is the paper's
-/// pinned antikink (SPEC section 2, item 3); α = −52° and −51.2° antikinks
+/// pinned antikink (docs/model.md, item 3); α = −52° and −51.2° antikinks
 /// stop in the bulk (tests/integration/sources.rs checks −52° with dopri5); the run at
 /// −51.2° stops with its front at block 3 exactly, the boundary's other
 /// side (regression value: a sweep over −50.6°…−51.8° in steps of 0.2°
@@ -333,10 +333,11 @@ fn every_outcome_colour_and_legend_swatch_matches_the_documented_table() {
             want,
             "cell ({col}, {row}), {o}: SVG fill"
         );
-        // The rasterised PNG: the pixel at the cell's centre.
+        // The rasterised PNG: a pixel near the cell's corner (its centre
+        // holds the outcome's mark, the cue besides colour).
         let (px, py) = (
-            (c.num("x") + 0.5 * c.num("width")) as u32,
-            (c.num("y") + 0.5 * c.num("height")) as u32,
+            (c.num("x") + 0.15 * c.num("width")) as u32,
+            (c.num("y") + 0.15 * c.num("height")) as u32,
         );
         let p = chart.pixmap.pixel(px, py).unwrap().demultiply();
         assert_eq!(

@@ -1,4 +1,4 @@
-//! The terms of SPEC section 12 against physics: buoyancy, terminal
+//! The terms of docs/experiments.md against physics: buoyancy, terminal
 //! velocity, periods with added mass, the Lagrangian velocity terms, the
 //! energy budget of a water-tank run, slack tape, stiff links, the
 //! kink–antikink symmetry at a = b, and bad apparatus values.
@@ -499,7 +499,7 @@ fn kink_and_antikink(alpha: f64, gamma: f64, terms: Terms) -> (Option<f64>, Opti
 #[test]
 fn symmetric_terms_give_equal_kink_and_antikink_speeds_at_a_equal_b() {
     // At a = b (α = ±90°) turning every block over and mirroring y maps the
-    // kink onto the antikink; each term of SPEC 12 respects it, so with
+    // kink onto the antikink; each term of docs/experiments.md respects it, so with
     // each term on (over quadratic drag, which damps the wave) the two
     // runs' arrival times, and so their speeds, agree to 1e-6. The test
     // names the term that breaks it. (At a = b exactly several of these

@@ -1,4 +1,4 @@
-//! Output formats (SPEC section 8): every figure as PNG, SVG and PDF that
+//! Output formats (docs/formats.md): every figure as PNG, SVG and PDF that
 //! look alike; PDFs that hold vector drawing and no page-sized raster; MP4s
 //! that an independent reader parses and that decode back to the GIF's
 //! frames; movie layouts that scale with the frame.

@@ -164,7 +164,7 @@ fn every_link_and_picture_of_the_page_is_a_file_the_run_wrote() {
 
 #[test]
 fn figures_asked_without_png_still_show_a_png_preview() {
-    // `ladder all --format pdf,mp4` (issue 20): every figure card shows a
+    // `ladder all --format pdf,mp4`: every figure card shows a
     // PNG preview, the PDF is linked, and no full PNG is written.
     let formats = if cfg!(feature = "mp4") {
         "pdf,mp4"

@@ -1,4 +1,4 @@
-//! Hostile files and shared folders (issue 22): nothing that is not ours
+//! Hostile files and shared folders: nothing that is not ours
 //! is touched, no shard file is trusted, every cost is checked before
 //! work, and the user's words are checked where they enter.
 

@@ -1,4 +1,4 @@
-//! The paper's physics (SPEC section 2) and the arrival precision of the
+//! The paper's physics (docs/model.md) and the arrival precision of the
 //! paper's scheme, through the portable path and through every fused
 //! kernel this CPU has (`sim::Stepping`): a force or update bug confined
 //! to one path fails here on its own, not only as a bit-identity mismatch.
@@ -13,8 +13,7 @@ use crate::common::kernels;
 use jacobs_ladder::model::Params;
 use jacobs_ladder::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Stepping, Trajectory};
 
-/// The paper's scene at `alpha` (N = 10, T_d = 1000 τ, 4000 τ), SPEC
-/// section 1.
+/// The paper's scene at `alpha` (N = 10, T_d = 1000 τ, 4000 τ), docs/model.md.
 fn paper_scene(alpha: f64) -> Scenario {
     let params = Params::paper(alpha).unwrap();
     Scenario::single_flip(params, sim::PAPER_DRIVE_TIME, 4000.0).unwrap()
@@ -30,8 +29,8 @@ fn speed(t: &Trajectory) -> f64 {
     sim::speed::wave_speed(&t.arrival_times).expect("the wave ran")
 }
 
-/// SPEC section 2, item 1: the kink runs top to bottom, t₁ = T_d/2 (SPEC
-/// section 1: block 1 is horizontal half-way through its drive), and
+/// docs/model.md, item 1: the kink runs top to bottom, t₁ = T_d/2
+/// (docs/model.md: block 1 is horizontal half-way through its drive), and
 /// blocks 1–9 end near −60°.
 #[test]
 fn kink_at_60_degrees_through_every_kernel() {
@@ -54,7 +53,7 @@ fn kink_at_60_degrees_through_every_kernel() {
     }
 }
 
-/// SPEC section 2, item 2: the antikink is slower, blocks 1–8 end at +60°,
+/// docs/model.md, item 2: the antikink is slower, blocks 1–8 end at +60°,
 /// the free bottom block turns backwards past 180°.
 #[test]
 fn antikink_at_60_degrees_through_every_kernel() {
@@ -79,7 +78,7 @@ fn antikink_at_60_degrees_through_every_kernel() {
     }
 }
 
-/// SPEC section 2, item 3: at 50° the kink propagates, the antikink stays
+/// docs/model.md, item 3: at 50° the kink propagates, the antikink stays
 /// pinned near the top (no block past block 2 flips).
 #[test]
 fn at_50_degrees_kink_runs_and_antikink_is_pinned_through_every_kernel() {
@@ -97,7 +96,7 @@ fn at_50_degrees_kink_runs_and_antikink_is_pinned_through_every_kernel() {
     }
 }
 
-/// SPEC section 2, item 4: at ±86° kink and antikink run at the same speed
+/// docs/model.md, item 4: at ±86° kink and antikink run at the same speed
 /// (within 5 %) and both reach every block.
 #[test]
 fn at_86_degrees_speeds_are_equal_through_every_kernel() {

@@ -1,6 +1,6 @@
 //! MP4 quality (docs/formats.md): at the default `--quality` every decoded
 //! MP4 frame of movie 4 at the default size is at least 39.5 dB PSNR from
-//! the GIF's frame (issue 23's aim; before `--quality`, at the encoder's
+//! the GIF's frame (before `--quality`, at the encoder's
 //! fixed QP 26, the worst frame was 37.4 dB and frame 100 38.5 dB; the
 //! previous encoder's default reached 39.0 dB); `--quality` is taken and
 //! trades bytes for fidelity.

@@ -1,4 +1,4 @@
-//! Names of the user's own outputs (SPEC section 6, docs/scenes.md): made
+//! Names of the user's own outputs (docs/scenes.md, docs/scenes.md): made
 //! from what differs from the paper (or from the built-in entry they start
 //! from), never a shared `custom`; a scene that replaces the files of a
 //! different scene says so; `ladder figure` / `ladder movie` with nothing

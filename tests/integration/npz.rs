@@ -1,4 +1,4 @@
-//! `simulate --npz` (SPEC section 9): the archive is read back by a small
+//! `simulate --npz` (docs/sweeps.md): the archive is read back by a small
 //! ZIP and `.npy` reader written here (with its own bitwise CRC-32), and
 //! its arrays are checked against the CSV of the same run at the same
 //! times (θ in degrees there), against the JSON report's final angles, and
@@ -218,7 +218,7 @@ fn npz_reads_back_equal_to_the_csv_at_the_same_times() {
         let deg = a["theta"].at(last, i).to_degrees();
         assert!((deg - th.as_f64().unwrap()).abs() < 1e-9, "block {i}");
     }
-    // Energies from the state (SPEC section 1, m = 1): kinetic
+    // Energies from the state (docs/model.md, m = 1): kinetic
     // ½(Ẋ²+Ẏ²)+½Iθ̇², gravitational −GΣX, and the total is their sum with
     // the elastic energy.
     let inertia = report["inertia"].as_f64().unwrap();

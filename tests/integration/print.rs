@@ -1,4 +1,4 @@
-//! Figures at print size (SPEC section 10): the layout rules over the whole
+//! Figures at print size (docs/formats.md): the layout rules over the whole
 //! catalogue at every style, read from the program's own picture model
 //! (`Picture::text_boxes`); and PDFs read by an independent reader,
 //! poppler's `pdffonts`, `pdftotext` and `pdfinfo` (Debian: poppler-utils,

@@ -1,5 +1,5 @@
-//! Provenance in the data files of `simulate` (issue 33, SPEC section
-//! 11): the `.npz` carries a `metadata` array (JSON text: program,
+//! Provenance in the data files of `simulate` (docs/python.md): the
+//! `.npz` carries a `metadata` array (JSON text: program,
 //! version, commit, build, command line, scene); the CSV stays plain and
 //! its provenance is its JSON sidecar, `FILE.json` (docs/formats.md).
 

@@ -1,4 +1,4 @@
-//! Reliability under hostile input (issue 15), one test per row of the
+//! Reliability under hostile input, one test per row of the
 //! issue's table, run against the binary: no hang, no panic, no abort,
 //! bounded memory, nothing left behind. A hang is caught by a watchdog
 //! that kills the process (a bound on "forever", not a speed assertion).

@@ -1,4 +1,4 @@
-//! A grammar fuzz of the scene-file parser (issue 15): 10 000 scene files
+//! A grammar fuzz of the scene-file parser: 10 000 scene files
 //! built from the keys of docs/scenes.md with hostile values (extreme,
 //! non-finite, wrong-typed numbers; odd names; overlapping or huge flip
 //! lists), with a fixed seed, in the normal suite. Where the mutation fuzz

@@ -1,5 +1,5 @@
 //! The paper's scenes: every catalogue entry renders, with its data file;
-//! the movies show what the paper says (SPEC section 2); a printed scene
+//! the movies show what the paper says (docs/model.md); a printed scene
 //! renders back to the same bytes; golden images of figure 3 and a
 //! kymograph; custom movies at N = 2, 40 and 200.
 

@@ -1,4 +1,4 @@
-//! Accuracy of the `auto` integrator (SPEC section 6) against a tight
+//! Accuracy of the `auto` integrator (docs/scenes.md) against a tight
 //! dopri5 reference (rtol 1e-10), with every block compared: each block
 //! flips in both runs or in neither, and every arrival time agrees within
 //! the scene's tolerance. Checked on every simulation of the catalogue and
@@ -115,7 +115,7 @@ fn every_catalogue_run_matches_the_reference_within_its_tolerance() {
     assert_all_pass(&failures);
 }
 
-/// The experiments' built-in scenes (SPEC section 12: the water tank and
+/// The experiments' built-in scenes (docs/experiments.md: the water tank and
 /// the printed linkage, with added mass, drag and pin friction) are among
 /// the runs checked above, with `auto` choosing and verifying the step: no
 /// scene of the catalogue names its own step to escape the check.
@@ -191,7 +191,7 @@ fn auto_matches_the_reference_on_20_random_scenes() {
 }
 
 /// Near α = 90° whole groups of blocks turn the other way round, through
-/// ±180°: they flip too (SPEC section 1), and each gets an arrival time.
+/// ±180°: they flip too (docs/model.md), and each gets an arrival time.
 #[test]
 fn every_block_that_ends_flipped_at_88_degrees_has_an_arrival() {
     let mut s = Scene::default();

@@ -1,4 +1,4 @@
-//! Fuzzing of shard files (issue 22): a genuine shard file of a small
+//! Fuzzing of shard files: a genuine shard file of a small
 //! sweep, mutated at random (run indices, counts, values, duplicated and
 //! dropped records, the fingerprint), is gathered and resumed through the
 //! library. Either the mutation left the file valid and the result is the

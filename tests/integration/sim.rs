@@ -1,5 +1,5 @@
 //! Simulation core: forces, ground states, energy decay, convergence orders
-//! and the paper's qualitative results (SPEC section 2).
+//! and the paper's qualitative results (docs/model.md).
 
 use crate::common;
 
@@ -203,7 +203,7 @@ fn antikink_at_60_degrees_is_slower_and_spares_the_last_block() {
     }
     // The free bottom block turns backwards past 180° (its polarisation
     // changes sign, so it has an arrival time) into a configuration of its
-    // own, never reaching +60° (SPEC section 1 and section 2, item 2).
+    // own, never reaching +60° (docs/model.md and section 2, item 2).
     let last = theta[9];
     assert!((last - 60.0).abs() > 20.0, "block 10: {last}°");
     let unwrapped = anti.final_theta_deg_unwrapped()[9];
@@ -453,7 +453,7 @@ fn fused_stepper_reports_the_same_divergence() {
 
 /// Near α = 90° whole groups of blocks turn the other way round, through
 /// ±180°, instead of through the horizontal: their polarisation sin θ
-/// changes sign although θ does not (SPEC section 1). Every block that ends
+/// changes sign although θ does not (docs/model.md). Every block that ends
 /// near −α (mod 360°) has arrived, and the fused kernels agree with the
 /// portable path bit for bit.
 #[test]

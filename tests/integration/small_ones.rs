@@ -1,4 +1,4 @@
-//! The smaller surprises of issues 32 and 33, each as the user met it:
+//! Smaller behaviours, each as a user met it:
 //! a built-in movie whose N is changed keeps a window fitted to the old
 //! chain; a sweep file refuses the axis text the command line takes;
 //! `sweep` has no `--start`; `render --check` passes a figure that cannot

@@ -1,6 +1,6 @@
 //! One wave speed, consistent counts and outcome words that say what the
-//! driven wave did (issue 33), and a sweep point that cannot start kept
-//! as a `failed` outcome (issue 32): checked through every front end that
+//! driven wave did, and a sweep point that cannot start kept
+//! as a `failed` outcome: checked through every front end that
 //! reports them (`simulate --json`, a run's data, figure S6's legend, a
 //! sweep's CSV and JSON).
 

@@ -1,4 +1,4 @@
-//! The hanging start (SPEC section 9, docs/model.md "The hanging start"):
+//! The hanging start (docs/sweeps.md, docs/model.md "The hanging start"):
 //! `[model] start = "relaxed"` starts every run at rest in the static
 //! equilibrium under gravity with block 1 clamped. Its residual force is at
 //! most 1e-12; it is the same state, and gives the same arrival times, as
@@ -16,7 +16,7 @@ use jacobs_ladder::scene::Scene;
 use jacobs_ladder::sim::{self, IntegratorConfig, IntegratorKind, Start, State};
 use std::process::Command;
 
-/// Residual the relaxed start must reach (SPEC section 9 / issue 19).
+/// Residual the relaxed start must reach (docs/sweeps.md).
 const RESIDUAL: f64 = 1e-12;
 
 fn scene(alpha: f64, n: usize, start: Start) -> Scene {

@@ -1,4 +1,4 @@
-//! The state arrays checked against each other (issue 33): each velocity
+//! The state arrays checked against each other: each velocity
 //! against its position's rate of change between close samples, vx
 //! against ΔX/Δt, vy against ΔY/Δt, ω against Δθ/Δt, in the `.npz` and,
 //! for θ, in the CSV of the same run. The energies alone cannot tell vx

@@ -1,4 +1,4 @@
-//! `ladder sweep` (SPEC section 7): outcomes decided on real runs, files
+//! `ladder sweep` (docs/sweeps.md): outcomes decided on real runs, files
 //! byte-identical between runs and between a sharded and an unsharded
 //! sweep, resume, gather, and bad input.
 
@@ -545,6 +545,7 @@ fn the_slurm_array_script_runs_its_shard() {
                 .env("PATH", &path)
                 .env("SLURM_ARRAY_TASK_ID", id.to_string())
                 .env("SLURM_ARRAY_TASK_COUNT", "3")
+                .env("SHARDS", "3")
                 .env("SLURM_CPUS_PER_TASK", "1")
                 .stderr(std::process::Stdio::piped())
                 .spawn()
@@ -564,7 +565,7 @@ fn the_slurm_array_script_runs_its_shard() {
 
 /// The supplement's 3D-printed linkage model (a = 7 cm, b = 6 cm, s = 5 cm,
 /// 8 blocks, α ≈ 69°): the paper says the antikink "stops halfway". In the
-/// model of SPEC §1 it reaches block N − 1, at the paper's γ and G, with
+/// model of docs/model.md it reaches block N − 1, at the paper's γ and G, with
 /// little damping and with a stiffer chain (docs/paper-errata.md).
 #[test]
 fn the_printed_linkage_model_does_not_stop_halfway() {
@@ -706,7 +707,7 @@ fn a_two_flip_sweep_has_per_wave_columns() {
 }
 
 /// The pinning chart draws the front up to N − 1 and block N's own turn
-/// apart (SPEC section 9): in the CSV, `front` never passes N − 1 and
+/// apart (docs/sweeps.md): in the CSV, `front` never passes N − 1 and
 /// `block_n_turned_at` is filled exactly where block N fell over first; in
 /// the chart, the legend names both marks.
 #[test]

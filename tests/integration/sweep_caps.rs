@@ -1,4 +1,4 @@
-//! A sweep's bytes bounded as its runs come in (issue 32): runs with more
+//! A sweep's bytes bounded as its runs come in: runs with more
 //! waves than the estimate before work assumed stop the sweep at the cap
 //! on a data file's bytes, with their runs kept, and a rerun with a
 //! raised cap resumes them without running them again; a shard file is

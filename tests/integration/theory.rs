@@ -1,4 +1,4 @@
-//! Closed forms of the supplement against the model (SPEC section 3). Test
+//! Closed forms of the supplement against the model (docs/model.md). Test
 //! names are cited by docs/paper-errata.md.
 
 use jacobs_ladder::model::ladder::{itheta, iy, nodes};

@@ -1,4 +1,4 @@
-//! Every domain wall a wave of its own (SPEC section 9), checked against a
+//! Every domain wall a wave of its own (docs/sweeps.md), checked against a
 //! detector written here, and outcomes proved by the state.
 
 use jacobs_ladder::scene::sweep::SweepSpec;
@@ -174,7 +174,7 @@ fn movie_11s_two_waves_annihilate_each_other_at_the_same_time() {
 
 #[test]
 fn a_pinned_antikink_is_proved_at_rest_and_its_wave_stopped() {
-    // α = −50°, N = 10: pinned at the top (SPEC section 2, item 3).
+    // α = −50°, N = 10: pinned at the top (docs/model.md, item 3).
     let s = scene(-50.0, 10, &[0.0], 10_000.0);
     let run = jacobs_ladder::scenes::run::simulate(&s, &[]).unwrap();
     let waves = &run.trajectory.waves.waves;
@@ -200,7 +200,7 @@ fn a_pinned_antikink_is_proved_at_rest_and_its_wave_stopped() {
 }
 
 /// Block N is free and turns its own way: kept out of the front (which
-/// stops at N − 1) and recorded apart (SPEC section 9, "front and block
+/// stops at N − 1) and recorded apart (docs/sweeps.md, "front and block
 /// N"). In the pinning sweep's setting (N = 10) the bottom block falls over
 /// on its own at α = 40° (at about 136 τ, before block 1 changes sign) and
 /// at 48° (just before the kink arrives): the wall it launches annihilates

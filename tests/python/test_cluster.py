@@ -1,4 +1,4 @@
-"""From a notebook to a cluster (SPEC section 11): a process forked after
+"""From a notebook to a cluster (docs/python.md): a process forked after
 the engine ran still works; scenes, runs, tables, images and exceptions
 pickle; `sweep(..., executor=EX)` gives, byte for byte, the local sweep's
 table through a process pool, dask.distributed and submitit."""

@@ -1,4 +1,4 @@
-"""Jupyter display of rendered files (issue 33): a PDF shown inline
+"""Jupyter display of rendered files: a PDF shown inline
 carries a PNG of the same figure beside it (a PDF alone is a blank box in
 Chromium), through `_repr_mimebundle_`, which IPython asks first; the
 PNG is the one `render(format="png")` gives."""

@@ -1,5 +1,5 @@
 """The package gives what the command line gives: the same numbers bit for
-bit, the same files byte for byte, the same messages (SPEC section 11)."""
+bit, the same files byte for byte, the same messages (docs/python.md)."""
 
 import json
 import math
@@ -118,7 +118,7 @@ def test_the_run_carries_the_waves_when_the_engine_reports_them():
     waves = run.waves
     assert len(waves) == 1, "one flip launches one wave"
     first = waves[0]
-    # SPEC section 9: the top-level arrival times are the first wave's.
+    # docs/sweeps.md: the top-level arrival times are the first wave's.
     assert same_bits(first["arrival_times"], run.arrival_times)
     assert first["kind"] == "kink"
     assert first["fate"] == "end"

@@ -1,4 +1,4 @@
-"""One conversion of keywords (issue 32): every message names the key;
+"""One conversion of keywords: every message names the key;
 ValueError for a value, TypeError only for an object that is no value at
 all; keywords that set one key twice are refused; samples are kept as
 asked; sizes are refused before anything is allocated."""

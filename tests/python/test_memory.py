@@ -1,4 +1,4 @@
-"""Python's memory against the command line's (issue 32): the arrays cross
+"""Python's memory against the command line's: the arrays cross
 to numpy without a second copy of the run resident, so a run's peak is
 within 1.2 times the CLI's for the same run; and a run the process has no
 memory for (an address-space limit, RLIMIT_AS) raises an exception with a
@@ -19,7 +19,7 @@ import pytest
 from conftest import ladder_bin
 
 # N = 20000 kept at 401 samples (t_end 200, every 0.5 τ): 385 MB of
-# positions and velocities, the size of issue 32's run (N = 20000 to
+# positions and velocities, the size of a reported run (N = 20000 to
 # t_end 4000 every 10 τ) at a twentieth of its time.
 N = 20000
 T_END = 200

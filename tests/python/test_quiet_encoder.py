@@ -1,5 +1,5 @@
-"""Rendering a movie prints nothing on stderr but the usual lines
-(issue 33): OpenH264 printed a warning when its encoder was initialised
+"""Rendering a movie prints nothing on stderr but the usual lines:
+OpenH264 printed a warning when its encoder was initialised
 ("[OpenH264] this = 0x…, Warning: bEnableFrameSkip = 0, …"), on the
 command line's stderr and into notebook cells. Its log is silenced before
 the encoder starts, which leaves the MP4's bytes as they were: the

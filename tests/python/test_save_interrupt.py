@@ -1,4 +1,4 @@
-"""Ctrl-C during `Scene.save()` (issue 32): the save stops within 0.2 s of
+"""Ctrl-C during `Scene.save()`: the save stops within 0.2 s of
 the signal, and writes nothing after it: no file appears once the
 KeyboardInterrupt is raised, and no half-written (temporary) file is left.
 

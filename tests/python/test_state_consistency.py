@@ -1,4 +1,4 @@
-"""The state arrays of a Run checked against each other (issue 33): each
+"""The state arrays of a Run checked against each other: each
 velocity against its position's rate of change between close samples,
 vx against ΔX/Δt, vy against ΔY/Δt, ω against Δθ/Δt. The energies alone
 cannot tell vx from vy (the kinetic energy is symmetric in them); this
@@ -57,7 +57,7 @@ def test_each_velocity_is_its_position_rate_of_change(run):
 
 
 def test_swapped_velocities_fail_the_same_check(run):
-    # The planted probe of issue 33: vx and vy swapped must not pass.
+    # A planted probe: vx and vy swapped must not pass.
     assert not agrees(run.t, run.x, run.vy)
     assert not agrees(run.t, run.y, run.vx)
     # Nor ω of the neighbouring block.

@@ -1,5 +1,5 @@
 """The engine releases the GIL while it works, and Ctrl-C stops a long run
-(SPEC section 11)."""
+(docs/python.md)."""
 
 import _thread
 import os

@@ -1,5 +1,5 @@
 """`pip wheel .` gives an abi3 wheel that installs into a fresh virtual
-environment with no Rust on PATH and imports (SPEC section 11). The build
+environment with no Rust on PATH and imports (docs/python.md). The build
 shares target/ with the rest of the tests (CARGO_TARGET_DIR), so it mostly
 relinks."""
 

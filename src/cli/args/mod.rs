@@ -210,7 +210,7 @@ pub struct ModelArgs {
     /// relaxed (at rest hanging under gravity, block 1 clamped) [default: ground]
     #[arg(long, value_name = "START")]
     pub start: Option<StartArg>,
-    /// The ladder as built, in cm, g and s (SPEC section 12): a TOML file
+    /// The ladder as built, in cm, g and s (docs/experiments.md): a TOML file
     /// whose [apparatus] table has the keys of a scene file's
     /// (docs/experiments.md); it replaces the scene's apparatus
     #[arg(long, value_name = "FILE")]
@@ -499,7 +499,7 @@ pub struct FigureFormat {
     pub style: StyleArgs,
 }
 
-/// How figures look and the page they are printed on (SPEC section 10).
+/// How figures look and the page they are printed on (docs/formats.md).
 #[derive(Args, Debug, Clone, Default)]
 pub struct StyleArgs {
     /// paper (APS column, 3.375 in, 8 pt, serif), paper-wide (7 in),

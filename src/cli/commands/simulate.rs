@@ -14,7 +14,7 @@ use crate::sim;
 use serde::Serialize;
 use std::time::Instant;
 
-/// `simulate --json` (SPEC section 5), with what reruns it (issue 19):
+/// `simulate --json` (README.md), with what reruns it:
 /// the program, its build, the command line and the scene.
 #[derive(Serialize, Debug)]
 pub struct SimulateReport<'a> {
@@ -54,7 +54,7 @@ pub struct SimulateReport<'a> {
     /// sweep counts).
     pub blocks_flipped: usize,
     pub final_theta_deg: Vec<f64>,
-    /// Every wave of the run and block N's fate (SPEC section 9).
+    /// Every wave of the run and block N's fate (docs/sweeps.md).
     pub waves: crate::sim::waves::Waves,
     /// A scene with "stiff" links: how far the wave moves with 2k
     /// (`scenes::stiff`).

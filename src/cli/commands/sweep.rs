@@ -1,4 +1,4 @@
-//! `ladder sweep` (SPEC section 7): run a sweep, or one shard of it, with
+//! `ladder sweep` (docs/sweeps.md): run a sweep, or one shard of it, with
 //! resume; `ladder sweep gather DIR` merges the shards. Everything the
 //! user typed is validated before anything is written.
 

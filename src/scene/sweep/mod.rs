@@ -1,4 +1,4 @@
-//! A sweep: one scene run over a grid of parameters (SPEC section 7), as
+//! A sweep: one scene run over a grid of parameters (docs/sweeps.md), as
 //! data. `[output] kind = "sweep"` names the grid in `[output.grid]`, one
 //! key per varied parameter, in the order the file gives them (the first
 //! varies slowest), each a range `"start:stop:step"` (inclusive), a list
@@ -72,7 +72,7 @@ impl Param {
             Self::Alpha => "α (°)",
             Self::N => "number of blocks N",
             Self::B => "b / s",
-            Self::Gamma => "damping γ",
+            Self::Gamma => "damping γ (m/τ)",
             Self::Gravity => "gravity G = mg/(ks)",
             Self::Inertia => "moment of inertia I / (m s²)",
             Self::DriveTime => "drive time T_d / τ",
@@ -227,7 +227,7 @@ pub struct SweepSpec {
     /// the scene's.
     pub grid: Grid,
     /// Removed: the quiet-time rule no longer decides outcomes (the state
-    /// does, SPEC section 9). Still read, so that an old file gets a clear
+    /// does, docs/sweeps.md). Still read, so that an old file gets a clear
     /// error rather than an unknown key.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub quiet: Option<f64>,

@@ -1,0 +1,189 @@
+//! The tank's levels figure: c_kink and c_antikink / c_kink for each level
+//! of model, beside the measured 6.0 cm/s and 1.75.
+
+use super::runs::{run_all, variant};
+use super::{LEVELS, LEVELS_MOTOR_HZ, MEASURED_KINK_CM_S, MEASURED_RATIO};
+use crate::error::{Error, Result};
+use crate::render::charts::{self, Axis, ChartSpec, Marker, Series};
+use crate::render::compose::{self, Layout, Panel};
+use crate::render::{Picture, Theme, style};
+use crate::scene::Scene;
+use crate::scenes::data::RunData;
+
+/// What one level of model gives in the tank: the bulk speeds (cm/s) of
+/// the kink and the antikink, and of the kink with the links twice as
+/// stiff ("stiff" links: k and 2k must agree, [`STIFF_TOLERANCE`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LevelResult {
+    pub name: &'static str,
+    pub kink_cm_s: Option<f64>,
+    pub antikink_cm_s: Option<f64>,
+    pub kink_2k_cm_s: Option<f64>,
+}
+
+impl LevelResult {
+    /// c_antikink / c_kink, where both run.
+    pub fn ratio(&self) -> Option<f64> {
+        self.kink_cm_s.zip(self.antikink_cm_s).map(|(k, a)| a / k)
+    }
+
+    /// |c(2k)/c(k) − 1|, where both run.
+    pub fn stiff_difference(&self) -> Option<f64> {
+        self.kink_cm_s
+            .zip(self.kink_2k_cm_s)
+            .map(|(k, k2)| (k2 / k - 1.0).abs())
+    }
+}
+
+pub use crate::scenes::stiff::STIFF_TOLERANCE;
+
+/// Every level of [`LEVELS`] run on `scene`'s apparatus at
+/// [`LEVELS_MOTOR_HZ`]: kink, antikink, and kink at 2k.
+pub fn levels(scene: &Scene) -> Result<(Vec<LevelResult>, Vec<RunData>)> {
+    let mut variants = Vec::new();
+    for (name, level) in LEVELS {
+        for (sign, word, stiffer) in [
+            (1.0, "kink", 1.0),
+            (-1.0, "antikink", 1.0),
+            (1.0, "kink, links 2k", 0.5),
+        ] {
+            variants.push(variant(scene, format!("{name}, {word}"), sign, |a| {
+                level.apply(a);
+                a.motor = Some(LEVELS_MOTOR_HZ);
+                a.stiff_gravity *= stiffer;
+            })?);
+        }
+    }
+    let done = run_all(&variants)?;
+    let results = LEVELS
+        .iter()
+        .enumerate()
+        .map(|(k, (name, _))| LevelResult {
+            name,
+            kink_cm_s: done[3 * k].bulk_cm_s,
+            antikink_cm_s: done[3 * k + 1].bulk_cm_s,
+            kink_2k_cm_s: done[3 * k + 2].bulk_cm_s,
+        })
+        .collect();
+    Ok((results, done.into_iter().map(|d| d.data).collect()))
+}
+
+/// Figure 2: c_kink (cm/s) and c_antikink / c_kink for each level of
+/// model at [`LEVELS_MOTOR_HZ`], one row per level named on the axis,
+/// beside the measured 6.0 cm/s and 1.75; a level without a wave says
+/// "no wave" in its name and has no point on the value axis.
+pub(super) fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+    let (results, data) = levels(scene)?;
+    if let Some(r) = results
+        .iter()
+        .find(|r| r.stiff_difference().is_some_and(|d| d > STIFF_TOLERANCE))
+    {
+        return Err(Error::failed(format!(
+            "{}: the kink's speed moves by {:.1} % between k and 2k, more than the {} % of \
+             \"stiff\" links: give the links' stiffness in N/m or a smaller stiff_gravity",
+            r.name,
+            100.0 * r.stiff_difference().unwrap_or(0.0),
+            100.0 * STIFF_TOLERANCE
+        )));
+    }
+    let speed = level_chart(
+        Axis::new("c_{kink} (cm/s)"),
+        (
+            MEASURED_KINK_CM_S,
+            format!("measured {MEASURED_KINK_CM_S:.1} cm/s"),
+        ),
+        &results,
+        |r| r.kink_cm_s,
+    );
+    let ratio = level_chart(
+        Axis::new("c_{antikink} / c_{kink}"),
+        (MEASURED_RATIO, format!("measured {MEASURED_RATIO}")),
+        &results,
+        LevelResult::ratio,
+    );
+    // Side by side on a wide print page (paper-wide, slide), where two
+    // charts stacked would be taller than the page allows; stacked on a
+    // column (paper) and at screen.
+    let w_frame = theme.style.frame(LEVEL_CHART);
+    let w = w_frame.0;
+    let side_by_side = theme.is_print() && w >= WIDE_PAGE_PX;
+    let size = if side_by_side {
+        let half = w.saturating_sub(theme.gap as u32) / 2;
+        (half, (half as f32 * SIDE_BY_SIDE_ASPECT) as u32)
+    } else {
+        w_frame
+    };
+    let chart = |spec: &ChartSpec| -> Result<Picture> {
+        Ok(Picture::from(charts::line_chart(
+            theme, spec, size.0, size.1,
+        )?))
+    };
+    let panels = [
+        Panel::new(chart(&speed)?).label("(a)"),
+        Panel::new(chart(&ratio)?).label("(b)"),
+    ];
+    let mut layout = Layout::columns(theme, if side_by_side { 2 } else { 1 });
+    if theme.is_print() {
+        layout.margin = 0;
+    }
+    let picture = compose::compose_picture(&panels, &layout)?.fit_page();
+    Ok((picture, data))
+}
+
+/// The natural size of one chart of the levels' figure (design pixels).
+const LEVEL_CHART: (u32, u32) = (820, 420);
+/// The page width (design pixels) from which the levels' two charts go
+/// side by side.
+const WIDE_PAGE_PX: u32 = 600;
+/// Height over width of each of the two charts side by side.
+const SIDE_BY_SIDE_ASPECT: f32 = 0.75;
+
+/// The name of each level on the axis, "no wave" added where its
+/// kink has no speed.
+pub fn level_names(results: &[LevelResult]) -> Vec<String> {
+    results
+        .iter()
+        .map(|r| match r.kink_cm_s {
+            Some(_) => r.name.to_string(),
+            None => format!("{}: no wave", r.name),
+        })
+        .collect()
+}
+
+/// One panel of the levels' figure: one row per level (the first at the
+/// top, named on the axis), `value` of each level where it has one (a
+/// level without a wave has no point: its name says "no wave"), beside
+/// the `measured` value (a dashed line across the rows).
+fn level_chart(
+    x: Axis,
+    measured: (f64, String),
+    results: &[LevelResult],
+    value: impl Fn(&LevelResult) -> Option<f64>,
+) -> ChartSpec {
+    let n = results.len() as f64;
+    let top = results.iter().filter_map(&value).fold(measured.0, f64::max);
+    let row = |k: usize| n - k as f64;
+    let mut names = level_names(results);
+    names.reverse();
+    let mut spec = ChartSpec::new(x.range(0.0, 1.15 * top), Axis::new("").names(names));
+    spec = spec.series(
+        Series::line(
+            measured.1,
+            vec![(measured.0, 0.5), (measured.0, n + 0.5)],
+            style::series_color(0),
+        )
+        .dashed(),
+    );
+    let points: Vec<(f64, f64)> = results
+        .iter()
+        .enumerate()
+        .filter_map(|(k, r)| value(r).map(|v| (v, row(k))))
+        .collect();
+    if !points.is_empty() {
+        spec = spec.series(
+            Series::scatter("model", points, style::series_color(1), Marker::Circle)
+                .with_width(2.0),
+        );
+    }
+    spec
+}

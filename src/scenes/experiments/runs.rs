@@ -1,0 +1,101 @@
+//! A figure's runs: each a variant of the scene's apparatus (its terms,
+//! motor, μ_p, wave), run by RK4 at [`STEP`] τ until it has decided
+//! ([`Decided`]), two at a time or more.
+
+use super::STEP;
+use super::decided::Decided;
+use super::{apparatus_numbers, bulk_speed};
+use crate::error::{Error, Result};
+use crate::scene::apparatus::Apparatus;
+use crate::scene::{Method, OutputSpec, Scene};
+use crate::scenes::data::RunData;
+use crate::scenes::run;
+use crate::sim::IntegratorKind;
+use crate::sim::{RunOptions, StopView};
+use rayon::prelude::*;
+
+/// One run of the figure: its label, and `scene` as a data scene with its
+/// apparatus changed by `change`, its α of sign `sign`, RK4 at [`STEP`].
+pub(super) struct Variant {
+    pub(super) label: String,
+    pub(super) scene: Scene,
+}
+
+pub(super) fn variant(
+    scene: &Scene,
+    label: String,
+    sign: f64,
+    change: impl FnOnce(&mut Apparatus),
+) -> Result<Variant> {
+    let mut s = scene.clone();
+    let mut a = scene.apparatus.clone().ok_or_else(|| {
+        Error::bad_input(format!(
+            "{} {}: an experiment figure needs an [apparatus]",
+            scene.kind().name(),
+            scene.name
+        ))
+    })?;
+    change(&mut a);
+    s.model.alpha = sign * scene.model.alpha.abs();
+    let a = a.converted(s.model.alpha);
+    if let Some(t) = a.conversion.as_ref().and_then(|c| c.t_end) {
+        s.run.t_end = t;
+    }
+    s.apparatus = Some(a);
+    s.output = OutputSpec::Data;
+    s.run.integrator = Method::Fixed(IntegratorKind::Rk4);
+    s.run.dt = Some(STEP);
+    Ok(Variant { label, scene: s })
+}
+
+/// A finished run: its arrival times (s), bulk speed (cm/s), the block
+/// pitch b (cm), and its data.
+pub(super) struct Done {
+    pub(super) arrivals_s: Vec<Option<f64>>,
+    pub(super) bulk_cm_s: Option<f64>,
+    pub(super) pitch_cm: f64,
+    pub(super) data: RunData,
+}
+
+/// Runs every variant, two at a time or more (rayon), in order, each
+/// until it has decided ([`Decided`]); each run's data says where it
+/// ended (`t_end`).
+pub(super) fn run_all(variants: &[Variant]) -> Result<Vec<Done>> {
+    variants
+        .par_iter()
+        .map(|v| {
+            let a = v.scene.apparatus.as_ref().ok_or_else(|| unconverted(v))?;
+            let c = a.conversion.as_ref().ok_or_else(|| unconverted(v))?;
+            let drive_end = v.scene.scenario()?.protocol.drive_end();
+            let decided = Decided::new(drive_end, c.tau_s);
+            let stop = |view: &StopView| decided.decided(view);
+            let options = RunOptions::default().limits(v.scene.limits).stop(&stop);
+            let r = run::simulate_with(&v.scene, &[], &options)?;
+            let arrivals = &r.trajectory.arrival_times;
+            let mut data = RunData::new(&v.label, &v.scene, &r);
+            data.t_end = r.trajectory.t_final;
+            let arrivals_s: Vec<Option<f64>> =
+                arrivals.iter().map(|t| t.map(|t| t * c.tau_s)).collect();
+            let numbers = apparatus_numbers(&arrivals_s, c.tau_s, a.b);
+            let bulk_cm_s = numbers.bulk.map(|f| f.speed_cm_s);
+            debug_assert_eq!(
+                bulk_cm_s.is_some(),
+                bulk_speed(arrivals).is_some(),
+                "the bulk fit in s and cm is the bulk speed's"
+            );
+            data.apparatus = Some(numbers);
+            Ok(Done {
+                arrivals_s,
+                bulk_cm_s,
+                pitch_cm: a.b,
+                data,
+            })
+        })
+        .collect()
+}
+
+/// The error of a variant without its converted apparatus (never made by
+/// [`variant`]).
+fn unconverted(v: &Variant) -> Error {
+    Error::failed(format!("{}: the run has no converted [apparatus]", v.label))
+}
