@@ -289,3 +289,37 @@ impl RingChain {
         Ok(())
     }
 }
+
+/// Words for captions and the gallery (docs/rings.md).
+impl RingChain {
+    /// "30 rings, R = 12.5 mm, r = 1 mm, e = 0.6, μ = 0.57, 14 tapes".
+    pub fn parameters(&self) -> String {
+        format!(
+            "{} rings, R = {} mm, r = {} mm, e = {}, μ = {}{}{}",
+            self.n,
+            self.major_radius * 1e3,
+            self.tube_radius * 1e3,
+            self.restitution,
+            self.friction,
+            if self.tapes.is_empty() {
+                String::new()
+            } else {
+                format!(", {} tapes", self.tapes.len())
+            },
+            if self.mirror { ", mirrored" } else { "" }
+        )
+    }
+
+    /// How the pictures are computed.
+    pub fn model_level() -> &'static str {
+        "Simulated in 3D: rigid steel rings with contact between their tubes (Hertz with \
+         Hunt–Crossley damping, regularised Coulomb friction), every linked pair checked still \
+         linked as it runs (docs/rings.md)."
+    }
+
+    /// What the kymograph shows.
+    pub fn kymograph_words() -> &'static str {
+        "Kymograph: the azimuth of each ring's normal (across: the even strand, then the odd) \
+         against time (down), on a colour wheel, paler where the ring lies flat; dots mark flips"
+    }
+}

@@ -111,6 +111,9 @@ pub fn drive(d: &DriveSpec) -> String {
 
 /// Everything a reader needs to rerun the scene, in one line.
 pub fn parameters(scene: &Scene) -> String {
+    if let Some(chain) = &scene.rings {
+        return chain.parameters();
+    }
     match &scene.output {
         OutputSpec::Theory(t) => {
             let m = &scene.model;
@@ -161,6 +164,9 @@ pub fn parameters(scene: &Scene) -> String {
 /// Which level of the model made the scene's picture, in a sentence
 /// (the gallery's line under each caption).
 pub fn model_level(scene: &Scene) -> String {
+    if scene.rings.is_some() {
+        return crate::rings::RingChain::model_level().into();
+    }
     match scene.fidelity() {
         Fidelity::Drawing => "Drawn from the ladder's geometry alone: no forces or motion are \
                               computed."
@@ -199,6 +205,21 @@ pub fn model_level(scene: &Scene) -> String {
 /// What the picture shows, for a reader who cannot see it (the gallery's
 /// alt text, after the title).
 pub fn picture(scene: &Scene) -> String {
+    if let Some(chain) = &scene.rings {
+        return match &scene.output {
+            OutputSpec::Movie { .. } => format!(
+                "Animation of the {} rings from 0 to {} s, seen from the side, with the \
+                 kymograph of their azimuths beside it",
+                chain.n,
+                num(chain.t_end)
+            ),
+            OutputSpec::Filmstrip { .. } => format!(
+                "Snapshots of the {} rings seen from the side, at the times written under them",
+                chain.n
+            ),
+            _ => crate::rings::RingChain::kymograph_words().into(),
+        };
+    }
     let n = scene.model.n;
     match &scene.output {
         OutputSpec::Movie { camera } => {

@@ -236,6 +236,13 @@ impl Scene {
     /// state of sign α or hanging from it (`model.start`), block 1 driven
     /// as `drive` says, over [0, t_end].
     pub fn scenario(&self) -> Result<Scenario> {
+        if self.rings.is_some() {
+            return Err(crate::error::Error::bad_input(format!(
+                "{} is a ring chain ([rings], docs/rings.md): it has no ladder to simulate; \
+                 render it (`ladder render`, Python's Scene.render) for its pictures and data file",
+                self.name
+            )));
+        }
         if let Some(a) = &self.apparatus {
             return a.scenario(self);
         }

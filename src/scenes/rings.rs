@@ -133,7 +133,11 @@ pub fn render_to(
                 outputs.mp4_quality,
                 frame_done,
             )?;
-            let kymo = draw::kymograph_picture(theme, chain, &run, &format!("{title}: kymograph"));
+            let kymo_title = scene
+                .label
+                .as_ref()
+                .map_or("kymograph".to_string(), |l| format!("{l}: kymograph"));
+            let kymo = draw::kymograph_picture(theme, chain, &run, &kymo_title);
             v.extend(figure_bytes(&kymo, &formats, outputs.scale)?);
             (v, run)
         }
@@ -155,7 +159,7 @@ pub fn render_to(
         made_by: super::data::MadeBy::new(&outputs.command_line),
         settings: super::data::Settings::new(scene, movie, outputs),
         title,
-        parameters: parameters(chain),
+        parameters: chain.parameters(),
         fidelity: "simulation",
         files: names.clone(),
         scene,
@@ -171,24 +175,6 @@ pub fn render_to(
         sink(name, &|w| w.write_all(b))?;
     }
     sink(data_name, &|w| super::data::write_json(w, &file))
-}
-
-/// "30 rings, R = 12.5 mm, r = 1 mm, steel; partner strand taped".
-pub fn parameters(chain: &RingChain) -> String {
-    format!(
-        "{} rings, R = {} mm, r = {} mm, e = {}, μ = {}{}{}",
-        chain.n,
-        chain.major_radius * 1e3,
-        chain.tube_radius * 1e3,
-        chain.restitution,
-        chain.friction,
-        if chain.tapes.is_empty() {
-            String::new()
-        } else {
-            format!(", {} tapes", chain.tapes.len())
-        },
-        if chain.mirror { ", mirrored" } else { "" }
-    )
 }
 
 /// The movie's files: frames drawn in parallel (in order), encoded once.

@@ -58,7 +58,13 @@ pub fn fixed_view(
 
 /// "t = 0.45 s".
 pub fn time_label(t: f64) -> String {
-    format!("t = {t:.2} s")
+    format!("t = {} s", short(t))
+}
+
+/// A time in seconds to the hundredth, without trailing zeros: "0.4".
+fn short(t: f64) -> String {
+    let s = format!("{t:.2}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
 /// A movie frame: the chain through `view`, the title above, the time
@@ -138,7 +144,7 @@ pub fn strip_picture(theme: &Theme, chain: &RingChain, run: &RingRun, title: &st
         );
         tubes::draw_tubes(&mut p, theme, &view, &tubes_of(theme, chain, s));
         p.text(
-            &time_label(s.t),
+            &format!("{} s", short(s.t)),
             (x0 + 0.5 * panel, top + tall + 0.3 * theme.label),
             theme.tick,
             ink,
@@ -172,7 +178,7 @@ pub fn kymograph_picture(theme: &Theme, chain: &RingChain, run: &RingRun, title:
         theme.title_band()
     } else {
         0.0
-    } + 0.5 * theme.label;
+    } + 1.5 * theme.label;
     let (left, bottom, right) = (3.5 * theme.tick, 3.2 * theme.label, 2.0 * theme.tick);
     let cols: Vec<Option<usize>> = (0..chain.n)
         .filter(|k| k % 2 == 0)
