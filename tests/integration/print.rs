@@ -526,10 +526,21 @@ fn arrivals_draw_every_wave_with_its_fitted_line() {
     let waves: usize = data.iter().map(|d| d.waves.waves.len().max(1)).sum();
     let labelled: Vec<_> = spec.series.iter().filter(|s| s.label.is_some()).collect();
     assert_eq!(labelled.len(), waves, "one labelled series per wave");
-    let mut colors: Vec<_> = labelled.iter().map(|s| s.color).collect();
-    colors.sort();
-    colors.dedup();
-    assert_eq!(colors.len(), labelled.len(), "distinct colours");
+    // Each wave its own look: its kind's colour (a kink vermillion, an
+    // antikink blue, the palette's roles) and its own marker.
+    let mut looks: Vec<_> = labelled
+        .iter()
+        .map(|s| (s.color, format!("{:?}", s.marker)))
+        .collect();
+    looks.sort();
+    looks.dedup();
+    assert_eq!(looks.len(), labelled.len(), "distinct colour and marker");
+    use jacobs_ladder::render::{Palette, Role};
+    for s in &labelled {
+        let kink = s.label.as_ref().unwrap().starts_with("kink");
+        let role = if kink { Role::Kink } else { Role::Antikink };
+        assert_eq!(s.color, Palette.color(role), "{:?}", s.label);
+    }
     let mut fits = 0;
     for pair in spec.series.windows(2) {
         let (marks, line) = (&pair[0], &pair[1]);
@@ -548,11 +559,13 @@ fn arrivals_draw_every_wave_with_its_fitted_line() {
         // Least squares over blocks 3..N−1 (the wave speed c,
         // docs/sweeps.md "The wave speed").
         let n_max = data[0].model.n as f64;
+        // The marks are set a little off their block across (so that
+        // none hides another): the block is the nearest whole number.
         let pts: Vec<(f64, f64)> = marks
             .points
             .iter()
             .copied()
-            .filter(|p| p.0 >= 3.0 && p.0 <= n_max - 1.0)
+            .filter(|p| p.0.round() >= 3.0 && p.0.round() <= n_max - 1.0)
             .collect();
         let k = pts.len() as f64;
         let mx = pts.iter().map(|p| p.0).sum::<f64>() / k;
