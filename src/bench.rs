@@ -14,9 +14,11 @@ use serde::{Deserialize, Serialize};
 use std::time::Instant;
 
 pub mod charts;
+pub mod cost;
 pub mod kernels;
 pub mod report;
 pub use charts::{stability_caption, stability_chart, work_precision_chart};
+pub use cost::{check_stability_cost, check_work_precision_cost};
 pub use kernels::{KernelReport, kernels, kernels_table};
 pub use report::*;
 
@@ -449,8 +451,15 @@ pub fn is_stable(scene: &BenchScene, kind: IntegratorKind, dt: f64) -> Result<bo
     }
 }
 
+/// The fewest steps a window must hold for a step to be judged stable
+/// ([`critical_dt`] reports no step longer than the window over this).
+pub const MIN_STEPS_IN_WINDOW: f64 = 20.0;
+
 /// The largest stable dt, by geometric bisection from a bracket around
-/// `guess`, to a relative precision `rel`.
+/// `guess`, to a relative precision `rel`; a failed run (`Error::failed`)
+/// where the scheme is stable at every step the window can judge (at most
+/// the window over [`MIN_STEPS_IN_WINDOW`]): never a step longer than
+/// that.
 pub fn critical_dt(scene: &BenchScene, kind: IntegratorKind, guess: f64, rel: f64) -> Result<f64> {
     let (mut lo, mut hi) = (guess, guess);
     while !is_stable(scene, kind, lo)? {
@@ -460,11 +469,19 @@ pub fn critical_dt(scene: &BenchScene, kind: IntegratorKind, guess: f64, rel: f6
         }
     }
     hi = hi.max(lo * 2.0);
+    // A step the window holds fewer than MIN_STEPS_IN_WINDOW of is not
+    // judged: the run would end before any growth showed.
+    let longest = scene.t_end / MIN_STEPS_IN_WINDOW;
     while is_stable(scene, kind, hi)? {
-        hi *= 2.0;
-        if hi > scene.t_end {
-            return Ok(hi);
+        if hi >= longest {
+            return Err(Error::failed(format!(
+                "{kind}: stable at every step up to {} τ ({MIN_STEPS_IN_WINDOW} steps in the \
+                 window of {} τ): the window cannot decide its limit; give a longer --t-end",
+                crate::error::num(longest),
+                crate::error::num(scene.t_end)
+            )));
         }
+        hi = (hi * 2.0).min(longest);
     }
     while hi / lo > 1.0 + rel {
         let mid = (lo * hi).sqrt();

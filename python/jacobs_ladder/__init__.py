@@ -30,6 +30,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 from . import _native
 from ._native import InternalError, RunError
+from ._params import DEFAULTS, PARAMETERS, filled, parameter_line, parameter_lines
 from ._progress import Reporting
 from ._run import Run
 from ._scene import Files, Image, Scene, _scene_from_json
@@ -88,28 +89,26 @@ def simulate(
 
     The keywords are ``ladder simulate``'s long flags with underscores;
     a keyword left out (None) keeps the engine's default, the paper's
-    value:
+    value. The parameters (``PARAMETERS``, the engine's table, whose
+    words, ranges and defaults these are):
 
-    - ``alpha``: equilibrium angle α, degrees, 0 < |α| < 90; its sign picks
-      the wave (α > 0 kink, α < 0 antikink). Default 60.
-    - ``n``: number of blocks N, 2 to 100000. Default 10.
-    - ``b``: rest length of the B springs, in units of the block length s.
-      Default 1.3.
-    - ``gamma``: damping γ (force −γẊ, torque −γr²θ̇). Default 0.02.
-    - ``gravity``: G = mg/(ks). Default 2e-4.
-    - ``inertia``: moment of inertia I of a block, m s². Default 0.25.
-    - ``drive_time``: time T_d each flip of block 1 takes, τ. Default 1000.
+    {parameters}
+
+    and the run's:
+
     - ``flips``: start times of the flips of block 1, τ. Default [0].
     - ``second_flip``: turn block 1 back from this time too (= flips [0, T]).
-    - ``t_end``: end of the window, τ. Default 4000.
+    - ``t_end``: end of the window, τ (or ``"auto"``). Default {t_end}.
     - ``integrator``: ``auto`` (picks the step and verifies the arrival
       times to ``tolerance``), ``explicit-euler``, ``symplectic-euler`` (the
-      paper's, dt 0.01), ``verlet``, ``rk4`` or ``dopri5``. Default auto.
-    - ``dt``: step of a named integrator, τ. Default 0.01.
-    - ``rtol``: tolerance of dopri5. Default 1e-6.
-    - ``tolerance``: largest arrival-time error auto accepts, τ. Default 0.1.
-    - ``sample_every``: interval of the samples kept, τ. Default 10 (as
-      ``simulate --csv``); or ``samples``: the sample times themselves.
+      paper's), ``verlet``, ``rk4`` or ``dopri5``. Default {integrator}.
+    - ``dt``: step of a named integrator, τ. Default {dt}.
+    - ``rtol``: tolerance of dopri5. Default {rtol}.
+    - ``tolerance``: largest arrival-time error auto accepts, τ. Default
+      {tolerance}.
+    - ``sample_every``: interval of the samples kept, τ. Default
+      {sample_every} (as ``simulate --csv``); or ``samples``: the sample
+      times themselves.
     - ``dissipation``: also record the energy dissipated so far at each
       sample (``Run.dissipated``; the steps are then taken one per call,
       a slower run with the same trajectory bit for bit). Default False:
@@ -141,9 +140,7 @@ def theory(
     ``u_min`` and ``barrier`` (m g s), ``kappa``, ``winding_number``,
     ``gap_omega_plus_q0``, ``omega_max``, zero modes, ...
 
-    - ``alpha``: degrees, 0 ≤ |α| ≤ 90. Default 60.
-    - ``n``: blocks of the finite chain, 2 to 400. Default 10.
-    - ``b``: rest length of the B springs, s. Default 1.3.
+    {theory_parameters}
     """
     return json.loads(_native.theory(alpha, n, b))
 
@@ -153,7 +150,22 @@ def catalogue() -> List[Tuple[str, str, str]]:
     return _native.catalogue()
 
 
+filled(simulate)
+# The theory takes α = 0 and 90 (the gapless and the symmetric ladder) and
+# chains up to its own largest.
+filled(
+    theory,
+    theory_parameters=parameter_lines(
+        [
+            parameter_line("alpha", "|alpha| <= 90"),
+            parameter_line("n", f"from 2 to {DEFAULTS['theory_max_n']}"),
+            parameter_line("b"),
+        ]
+    ),
+)
+
+
 def __dir__() -> List[str]:
     """The public names only (``dir(jl)``, tab completion): not the
     helpers this module imports (typing, json, numpy)."""
-    return sorted(set(__all__) | {"ENGINE_VERSION", "SWEEP_PARAMETERS", "OUTCOMES"})
+    return sorted(set(__all__) | {"ENGINE_VERSION", "SWEEP_PARAMETERS", "OUTCOMES", "PARAMETERS"})

@@ -12,6 +12,7 @@ __version__: str
 ENGINE_VERSION: str
 SWEEP_PARAMETERS: Tuple[str, ...]
 OUTCOMES: Tuple[str, ...]
+PARAMETERS: Tuple[Dict[str, Any], ...]
 
 class RunError(RuntimeError):
     """A run that failed (a diverging integrator, ...): message and hint."""
@@ -137,18 +138,17 @@ def simulate(
     progress: Any = None,
     **scene_keys: Any,
 ) -> Run:
-    """Simulate the ladder. alpha: degrees (default 60); n: blocks (10); b: s
-    (1.3); gamma (0.02); gravity G = mg/(ks) (2e-4); inertia: m s² (0.25);
-    drive_time: τ (1000); flips: start times, τ ([0]); t_end: τ (4000);
-    integrator: auto | explicit-euler | symplectic-euler | verlet | rk4 |
-    dopri5 (auto); dt: τ (0.01); rtol (1e-6); tolerance: τ (0.1);
-    sample_every: τ (10); progress: None (a bar where seen) | True | False |
-    progress(t, t_end)."""
+    """Simulate the ladder. The parameters' words, ranges and defaults are
+    the engine's table, PARAMETERS; the run's defaults (t_end, integrator,
+    dt, rtol, tolerance, sample_every) are in the docstring of
+    jacobs_ladder.simulate, read from the engine. progress: None (a bar
+    where seen) | True | False | progress(t, t_end)."""
 
 def theory(
     alpha: Optional[float] = None, n: Optional[int] = None, b: Optional[float] = None
 ) -> Dict[str, Any]:
-    """`ladder theory --json` as a dict. alpha: degrees (60); n (10); b: s (1.3)."""
+    """`ladder theory --json` as a dict; alpha, n, b as PARAMETERS say (n up
+    to the theory's largest chain)."""
 
 def catalogue() -> List[Tuple[str, str, str]]:
     """The built-in scenes: (ID, kind, title)."""
@@ -201,7 +201,7 @@ class Scene:
         *,
         progress: Any = None,
     ) -> Run:
-        """sample_every: τ (10)."""
+        """sample_every: τ (the engine's default, in Scene.simulate's docstring)."""
     def render(
         self,
         format: Union[str, Sequence[str], None] = None,
@@ -213,8 +213,8 @@ class Scene:
         scale: Optional[float] = None,
         data: bool = False,
     ) -> Union[Image, Files]:
-        """format: png|svg|pdf|gif|mp4 or several (png / gif); size: WxH
-        pixels (640x480); frames (200); fps (25); scale (1)."""
+        """format: png|svg|pdf|gif|mp4 or several; size: WxH pixels; frames;
+        fps; scale (defaults: the engine's, in Scene.render's docstring)."""
     def save(
         self,
         dir: Union[str, os.PathLike[str]] = "out",
@@ -263,8 +263,8 @@ def sweep(
     progress: Any = None,
     **keys: Any,
 ) -> Table:
-    """Grid keywords SWEEP_PARAMETERS (alpha, n, b, gamma, gravity, inertia,
-    drive_time): a list, a value or "start:stop:step". cap: τ (100000).
-    executor: anything with submit(fn, *args) → future.result(); chunks:
-    pieces of the grid sent to it (about 64 runs each, at least 16);
-    progress: None (a bar where seen) | True | False | progress(done, runs)."""
+    """Grid keywords SWEEP_PARAMETERS (the table's, PARAMETERS): a list, a
+    value or "start:stop:step". cap: τ; executor: anything with
+    submit(fn, *args) → future.result(); chunks: pieces of the grid sent to
+    it; progress: None (a bar where seen) | True | False |
+    progress(done, runs). Defaults: the engine's, in sweep's docstring."""

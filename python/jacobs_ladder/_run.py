@@ -121,7 +121,8 @@ class Run:
     @property
     def tau_s(self) -> Optional[float]:
         """τ = √(m/k) in seconds (an apparatus' run; else None)."""
-        return self.record.get("tau_s")
+        units = self.record.get("units")
+        return None if units is None else units["tau_s"]
 
     @property
     def n(self) -> int:
@@ -146,9 +147,10 @@ class Run:
     def speed_cm_s(self) -> Optional[float]:
         """:attr:`speed` in cm/s (an apparatus' run; NaN when no speed;
         None for a run of the model alone)."""
-        if "cm_per_s" not in self.record:
+        units = self.record.get("units")
+        if units is None:
             return None
-        s = self.record.get("speed_cm_s")
+        s = units.get("speed_cm_s")
         return float("nan") if s is None else float(s)
 
     @property
@@ -164,7 +166,7 @@ class Run:
     def bulk_speed_cm_s(self) -> Optional[float]:
         """:attr:`bulk_speed` in cm/s, as the experiment figures draw it
         (an apparatus' run; NaN when none; None for the model alone)."""
-        if "cm_per_s" not in self.record:
+        if self.record.get("units") is None:
             return None
         fit = self.bulk_fit
         return float("nan") if fit is None else float(fit["speed_cm_s"])

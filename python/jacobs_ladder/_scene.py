@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 from . import _native
+from ._params import filled
 from ._progress import Reporting
 from ._run import Run
 
@@ -119,7 +120,7 @@ class Scene:
     ) -> Run:
         """Simulate run ``index`` of the scene (its only one, for most), as
         :func:`simulate` does; samples every ``sample_every`` τ (the
-        engine's default, 10) or at ``samples``; ``progress`` as
+        engine's default, {sample_every}) or at ``samples``; ``progress`` as
         :func:`simulate`'s."""
         with Reporting(progress, "simulate", "τ") as report:
             arrays = self._s.simulate(sample_every, samples, index, bool(dissipation), report)
@@ -148,14 +149,15 @@ class Scene:
         """Render the scene as the command line does, in memory.
 
         - ``format``: ``png``, ``svg``, ``pdf`` (figures), ``gif``, ``mp4``
-          (movies), or several (``"png,svg"`` or a list). Default png / gif.
+          (movies), or several (``"png,svg"`` or a list). Default those of
+          {formats} the scene makes.
         - ``size``: a movie's frame size, ``(640, 480)`` or ``"640x480"``,
-          pixels. Default 640 × 480.
+          pixels. Default {size}.
         - ``style``: the scene's ``style`` key (print styles), where the
           engine has one.
-        - ``frames``: frames of a movie, 2 to 5000. Default 200.
-        - ``fps``: frames per second of a movie. Default 25.
-        - ``scale``: pixels per design pixel of PNG figures. Default 1.
+        - ``frames``: frames of a movie. Default {frames}.
+        - ``fps``: frames per second of a movie. Default {fps}.
+        - ``scale``: pixels per design pixel of PNG figures. Default {scale}.
         - ``data``: keep the data file (``NAME.json``) among the files.
 
         Returns the bytes of the one file (an :class:`Image`, shown inline
@@ -199,6 +201,10 @@ class Scene:
 
     def __repr__(self) -> str:
         return f"<Scene {self.kind} {self.name}: {self.title}; {self._s.parameters}>"
+
+
+filled(Scene.simulate)
+filled(Scene.render)
 
 
 def _scene_from_json(text: str) -> Scene:

@@ -15,6 +15,7 @@ from typing import Any, Dict, List, Optional, Tuple
 from . import _native
 from ._lazy import np
 from ._native import RunError
+from ._params import filled, grid_names
 from ._progress import Reporting
 
 #: The parameters a sweep varies (``ladder sweep``'s grid flags), in the
@@ -270,20 +271,20 @@ def sweep(
     """Run a scene over a grid of parameters and decide what the wave did
     in each run, as ``ladder sweep`` does (same batch kernel, every core).
 
-    - a grid keyword per varied parameter (``SWEEP_PARAMETERS``: ``alpha``,
-      ``n``, ``b``, ``gamma``, ``gravity``, ``inertia``, ``drive_time``): a
+    - a grid keyword per varied parameter (``SWEEP_PARAMETERS``, the
+      engine's table: {grid}): a
       list of values, one value, or a range string ``"start:stop:step"``
       (inclusive), e.g. ``sweep(alpha=[-50, -55, -60], gamma="0.01:0.04:0.01")``.
       The axes vary in that order (the first slowest), whatever the order
       of the keywords, as ``ladder sweep``'s flags do.
     - ``base``: the scene swept (default: the paper's). Other keywords
       (``t_end``, ``integrator``, ``tolerance``, scene keys) change it.
-    - ``cap``: latest time a run may reach undecided, τ (the engine's
-      default, ``[output] cap`` of docs/sweeps.md). A run is called
+    - ``cap``: latest time a run may reach undecided, τ. Default {cap}
+      (``[output] cap`` of docs/sweeps.md). A run is called
       stopped only when its state is proved at rest; otherwise it runs on
       to the cap.
     - ``name``: the sweep's name (in its JSON). Default the base's.
-    - ``max_runs``: refuse a larger grid (the engine's default cap).
+    - ``max_runs``: refuse a larger grid. Default {max_runs}.
     - ``executor``: run the sweep on other processes or machines: any
       ``concurrent.futures.Executor`` (a ``ProcessPoolExecutor``,
       dask.distributed's ``client.get_executor()``, submitit's
@@ -300,7 +301,8 @@ def sweep(
       once every chunk is in; ``err.resume(executor)`` runs only the lost
       ones again. docs/cluster.md.
     - ``chunks``: how many pieces the grid is cut into for ``executor``.
-      Default about 64 runs a chunk, at least 16 (so that progress shows).
+      Default about {chunk_runs} runs a chunk, at least {min_chunks} (so
+      that progress shows).
     - ``progress``: None shows a bar in a notebook or a terminal (tqdm's,
       where installed), True always, False never; a callable is called
       ``progress(runs_done, runs)`` as runs (or chunks) finish.
@@ -319,6 +321,9 @@ def sweep(
     with Reporting(progress, "sweep", "runs") as report:
         csv_text, json_text, columns = plan.run(report)
     return Table(csv_text, json_text, columns, command)
+
+
+filled(sweep, grid=grid_names())
 
 
 def _sweep_chunk(scene: str, max_runs: int, k: int, chunks: int) -> bytes:

@@ -57,59 +57,22 @@ pub struct RunArrays {
 /// The arrays of `run` of `scene`.
 pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
     // The energies at each sample (`Trajectory::energies`), before the
-    // states are handed over; `dissipated` is NaN where the run did not
-    // record it (`RunOptions::dissipation`).
+    // states are handed over. Only a run that recorded it has
+    // `dissipated` (`RunOptions::dissipation`; Python's `Run` runs the
+    // scene again with it when it is asked for).
     let ladder = scene.scenario()?.ladder;
     let energies = run.trajectory.energies(&ladder);
     let samples = run.trajectory.times.len();
-    // Only a run that recorded it has `dissipated` (Python's `Run` runs
-    // the scene again with it when it is asked for).
     let dissipated = (energies.dissipated.len() == samples).then_some(energies.dissipated);
-    // The experiment figures' fit over the chain's lower half, and the
-    // apparatus' units (τ in s, a block per τ in cm/s), where it has one.
-    let bulk = experiments::bulk_speed(&run.trajectory.arrival_times);
-    let units = scene
-        .apparatus
-        .as_ref()
-        .and_then(|a| Some((a.conversion.as_ref()?, a.b)))
-        .map(|(c, pitch_cm)| (c.tau_s, c.cm_per_s, pitch_cm));
+    let record = record(scene, &run)?;
     let traj = &mut run.trajectory;
     let n = traj.final_state.q.len() / 3;
     let times = std::mem::take(&mut traj.times);
     let states = std::mem::take(&mut traj.states);
     let velocities = std::mem::take(&mut traj.velocities);
     let kink = std::mem::take(&mut traj.kink_position);
-    // Layout of q and v: [X, Y, θ] per block (`model::ladder`). Each
-    // sample's row is freed as soon as it is split, so the peak is the
-    // trajectory's size once, not twice: the columns are
-    // reserved (address space, no page touched) and fill as the rows go.
-    let split = |rows: Vec<Vec<f64>>| -> Result<[Vec<f64>; 3]> {
-        let mut out: [Vec<f64>; 3] = Default::default();
-        for column in &mut out {
-            column
-                .try_reserve_exact(rows.len().saturating_mul(n))
-                .map_err(|_| out_of_memory(rows.len(), n))?;
-        }
-        let mut freed = 0usize;
-        for row in rows {
-            for (k, column) in out.iter_mut().enumerate() {
-                column.extend((0..n).map(|i| row[3 * i + k]));
-            }
-            freed += std::mem::size_of_val(row.as_slice());
-            drop(row);
-            if freed >= RETURN_EVERY {
-                give_back();
-                freed = 0;
-            }
-        }
-        // (A small run's rows are not worth the walk over the arenas.)
-        if freed >= 1 << 20 {
-            give_back();
-        }
-        Ok(out)
-    };
-    let [x, y, theta] = split(states)?;
-    let [vx, vy, omega] = split(velocities)?;
+    let [x, y, theta] = split(states, n)?;
+    let [vx, vy, omega] = split(velocities, n)?;
     let arrival: Vec<f64> = traj
         .arrival_times
         .iter()
@@ -133,7 +96,8 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
     if let Some(d) = dissipated {
         columns.push(("dissipated", d, false));
     }
-    if let Some((tau_s, _, _)) = units {
+    // An apparatus' run: the times in seconds too.
+    if let Some((tau_s, _)) = apparatus_units(scene) {
         let seconds = |name: &str| -> Vec<f64> {
             let (_, v, _) = columns.iter().find(|c| c.0 == name).expect("made above");
             v.iter().map(|t| t * tau_s).collect()
@@ -142,10 +106,57 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
         columns.push(("t_s", t_s, false));
         columns.push(("arrival_times_s", arrivals_s, false));
     }
-    let mut data = RunData::from_run(scene, &run);
-    if let Some((tau_s, _, pitch_cm)) = units {
-        // The experiment figures' numbers: arrivals in s, the bulk fit in
-        // cm/s with its line (the data file's `apparatus`).
+    Ok(RunArrays { n, columns, record })
+}
+
+/// Rows of samples ([X, Y, θ] per block, `model::ladder`) as three
+/// columns in sample-major order. Each sample's row is freed as soon as
+/// it is split, so the peak is the trajectory's size once, not twice: the
+/// columns are reserved (address space, no page touched) and fill as the
+/// rows go.
+fn split(rows: Vec<Vec<f64>>, n: usize) -> Result<[Vec<f64>; 3]> {
+    let mut out: [Vec<f64>; 3] = Default::default();
+    for column in &mut out {
+        column
+            .try_reserve_exact(rows.len().saturating_mul(n))
+            .map_err(|_| out_of_memory(rows.len(), n))?;
+    }
+    let mut freed = 0usize;
+    for row in rows {
+        for (k, column) in out.iter_mut().enumerate() {
+            column.extend((0..n).map(|i| row[3 * i + k]));
+        }
+        freed += std::mem::size_of_val(row.as_slice());
+        drop(row);
+        if freed >= RETURN_EVERY {
+            give_back();
+            freed = 0;
+        }
+    }
+    // (A small run's rows are not worth the walk over the arenas.)
+    if freed >= 1 << 20 {
+        give_back();
+    }
+    Ok(out)
+}
+
+/// τ in seconds and the block pitch in cm of `scene`'s converted
+/// apparatus, if it has one.
+fn apparatus_units(scene: &Scene) -> Option<(f64, f64)> {
+    let a = scene.apparatus.as_ref()?;
+    Some((a.conversion.as_ref()?.tau_s, a.b))
+}
+
+/// The run's record as JSON: what a data file says of the run
+/// (`RunData::summary`: the integrator report, arrival times, speed, an
+/// apparatus' units), its provenance, the scene run, the wave launched,
+/// the experiment figures' bulk speed (blocks/τ), and an apparatus' run's
+/// numbers as those figures draw them (arrivals in s, the bulk fit in
+/// cm/s with its line: the data file's `apparatus`).
+fn record(scene: &Scene, run: &SceneRun) -> Result<String> {
+    let encode = |e: serde_json::Error| Error::failed(format!("cannot encode the run: {e}"));
+    let mut data = RunData::summary(scene, run);
+    if let Some((tau_s, pitch_cm)) = apparatus_units(scene) {
         let arrivals_s: Vec<Option<f64>> = data
             .arrival_times
             .iter()
@@ -153,9 +164,7 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
             .collect();
         data.apparatus = Some(experiments::apparatus_numbers(&arrivals_s, tau_s, pitch_cm));
     }
-    let mut record = serde_json::to_value(data)
-        .map_err(|e| Error::failed(format!("cannot encode the run: {e}")))?;
-    let encode = |e: serde_json::Error| Error::failed(format!("cannot encode the run: {e}"));
+    let mut record = serde_json::to_value(data).map_err(encode)?;
     // Provenance, as every data file carries it: the program, its version
     // and commit, and the scene run (no command line: Python has none).
     let made_by = serde_json::to_value(MadeBy::new(&[])).map_err(encode)?;
@@ -172,19 +181,10 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
         // (`WaveKind::launched`), for the repr.
         let launched = jacobs_ladder::sim::waves::WaveKind::launched(scene.model.alpha);
         m.entry("launched").or_insert(launched.name().into());
-        let speed = m.get("speed").and_then(serde_json::Value::as_f64);
+        let bulk = experiments::bulk_speed(&run.trajectory.arrival_times);
         m.insert("bulk_speed".into(), bulk.into());
-        if let Some((tau_s, cm_per_s, _)) = units {
-            m.insert("tau_s".into(), tau_s.into());
-            m.insert("cm_per_s".into(), cm_per_s.into());
-            m.insert("speed_cm_s".into(), speed.map(|v| v * cm_per_s).into());
-        }
     }
-    Ok(RunArrays {
-        n,
-        columns,
-        record: record.to_string(),
-    })
+    Ok(record.to_string())
 }
 
 impl RunArrays {

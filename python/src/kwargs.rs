@@ -2,10 +2,11 @@
 //! JSON object (`convert::keywords`), are merged into the scene's JSON value and read back as a
 //! `Scene`, so every scene key works from Python without new code.
 //!
-//! - The command line's long flags, with underscores: `alpha`, `n`, `b`,
-//!   `gamma`, `gravity`, `inertia` (→ `[model]`), `t_end`, `integrator`,
-//!   `dt`, `rtol`, `tolerance` (→ `[run]`), and `drive_time`, `flips`,
-//!   `second_flip` (→ `[drive]`, as the flags do it).
+//! - The command line's long flags, with underscores: the parameter
+//!   table's (`scene::params`: `alpha`, `n`, ... → `[model]`, and
+//!   `drive_time` → `[drive]`), `t_end`, `integrator`, `dt`, `rtol`,
+//!   `tolerance` (→ `[run]`), and `flips`, `second_flip` (→ `[drive]`, as
+//!   the flags do it).
 //! - Any top-level scene key (`name`, `title`, `model`, `drive`, `run`,
 //!   `output`, ...), merged table by table into the scene's.
 //! - A dotted key path (`"run.tolerance"`, `"output.camera"`).
@@ -21,15 +22,41 @@
 //! (`model=[70, 20]`) is refused: a table's keys are named.
 
 use jacobs_ladder::scene::Scene;
+use jacobs_ladder::scene::params::{Param, Place};
 use jacobs_ladder::{Error, Result};
 use serde_json::{Map, Value};
 
-/// The flags that set `[model]` keys.
-const MODEL: [&str; 6] = ["alpha", "n", "b", "gamma", "gravity", "inertia"];
 /// The flags that set `[run]` keys.
 const RUN: [&str; 5] = ["t_end", "integrator", "dt", "rtol", "tolerance"];
-/// The flags that set the drive.
-const DRIVE: [&str; 3] = ["drive_time", "flips", "second_flip"];
+/// The drive's flags beside the table's drive time: where and how often
+/// block 1 flips.
+const DRIVE_FLIPS: [&str; 2] = ["flips", "second_flip"];
+
+/// Whether `key` is a parameter of the table set in `place`.
+fn in_table(key: &str, place: Place) -> bool {
+    Param::from_name(key).is_some_and(|p| p.spec().place == place)
+}
+
+/// Whether `key` is a keyword that sets `[model]` (the table's model
+/// parameters).
+fn is_model(key: &str) -> bool {
+    in_table(key, Place::Model)
+}
+
+/// Whether `key` is a keyword that reshapes the drive (the table's drive
+/// time, the flips).
+fn is_drive(key: &str) -> bool {
+    in_table(key, Place::Drive) || DRIVE_FLIPS.contains(&key)
+}
+
+/// Every keyword of a flag, for messages: the table's, then the run's and
+/// the drive's.
+fn keyword_names() -> Vec<&'static str> {
+    let mut names: Vec<&str> = Param::ALL.iter().map(|p| p.name()).collect();
+    names.extend(RUN);
+    names.extend(DRIVE_FLIPS);
+    names
+}
 
 /// `scene` with the keywords `kwargs` applied, checked.
 pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
@@ -45,7 +72,7 @@ pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
     // Each keyword's path in the scene, then every key it sets.
     let mut given: Vec<(Vec<String>, String, Value)> = Vec::new();
     for (key, v) in kwargs {
-        if DRIVE.contains(&key.as_str()) {
+        if is_drive(&key) {
             given.push((vec!["drive".into()], key, Value::Null));
             continue;
         }
@@ -56,7 +83,7 @@ pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
             }
             (_, v) => v,
         };
-        let path: Vec<String> = if MODEL.contains(&key.as_str()) {
+        let path: Vec<String> = if is_model(&key) {
             vec!["model".into(), key.clone()]
         } else if RUN.contains(&key.as_str()) {
             vec!["run".into(), key.clone()]
@@ -73,7 +100,7 @@ pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
     check_conflicts(&given)?;
     given.sort_by_key(|(path, _, _)| path.len());
     for (path, key, v) in given {
-        if DRIVE.contains(&key.as_str()) {
+        if is_drive(&key) {
             continue;
         }
         let path: Vec<&str> = path.iter().map(String::as_str).collect();
@@ -85,7 +112,7 @@ pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
         if inner.starts_with("unknown field") && !path.contains('.') {
             Error::bad_input(format!(
                 "{inner}; or one of the keywords {}",
-                [&MODEL[..], &RUN[..], &DRIVE[..]].concat().join(", ")
+                keyword_names().join(", ")
             ))
         } else {
             Error::bad_input(format!("{path}: {inner}"))
@@ -128,13 +155,12 @@ fn drive_args(kwargs: &Map<String, Value>) -> Result<DriveKeywords> {
         get(kwargs, "second_flip", "a time in τ")?,
     );
     // Checked here, in the keywords' words (the scene would name the
-    // flips they reshape).
-    if let Some(t) = args.0
-        && !(t.is_finite() && t > 0.0)
-    {
-        return Err(Error::bad_input(format!(
-            "drive_time: must be a finite time > 0, got {t}"
-        )));
+    // flips they reshape): the drive time by the table's range.
+    if let Some(t) = args.0 {
+        let p = Param::DriveTime;
+        p.spec()
+            .check(t, true)
+            .map_err(|m| Error::bad_input(format!("{}: {m}", p.name())))?;
     }
     if let Some(t) = args.2
         && !(t.is_finite() && t >= 0.0)
@@ -177,7 +203,7 @@ fn check_conflicts(given: &[(Vec<String>, String, Value)]) -> Result<()> {
             out
         })
         .collect();
-    let flag = |i: usize| DRIVE.contains(&given[i].1.as_str());
+    let flag = |i: usize| is_drive(&given[i].1);
     for i in 0..given.len() {
         for j in i + 1..given.len() {
             // The drive flags reshape one drive together (`drive_args`).

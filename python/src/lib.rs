@@ -10,6 +10,7 @@ mod arrays;
 mod convert;
 mod errors;
 mod kwargs;
+mod params;
 mod scene;
 mod sweep;
 mod work;
@@ -63,7 +64,7 @@ fn theory(
         convert::number_or_none(Some(b), "b")?.unwrap_or(m.b),
     );
     work::run(py, move |_| {
-        let params = jacobs_ladder::model::Params::new(n, b, alpha, m.gamma, m.gravity, m.inertia)?;
+        let params = jacobs_ladder::scene::Model { alpha, n, b, ..m }.params()?;
         let report = jacobs_ladder::theory::TheoryReport::compute(&params)?;
         serde_json::to_string(&report).map_err(|e| Error::failed(format!("cannot encode: {e}")))
     })
@@ -93,6 +94,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep::table_columns, m)?)?;
     m.add_class::<sweep::PySweep>()?;
     m.add("SWEEP_PARAMETERS", sweep::parameters())?;
+    m.add("PARAMETERS", params::parameters(m.py())?)?;
+    m.add("DEFAULTS", params::defaults(m.py())?)?;
     m.add(
         "OUTCOMES",
         jacobs_ladder::sweep::outcome::Outcome::ALL

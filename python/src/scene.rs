@@ -395,7 +395,7 @@ pub fn simulate_scene<'py>(
 }
 
 /// Interval of the samples kept, τ: the CSV's of `ladder simulate`.
-const DEFAULT_SAMPLE_EVERY: f64 = 10.0;
+pub const DEFAULT_SAMPLE_EVERY: f64 = 10.0;
 
 /// 0, every, 2 every, ... up to t_end (as `simulate --csv`), within the
 /// cap on samples × N.

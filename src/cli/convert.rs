@@ -19,12 +19,7 @@ use crate::sim;
 impl ModelArgs {
     /// Whether any model flag was given.
     pub fn any(&self) -> bool {
-        self.alpha.is_some()
-            || self.n.is_some()
-            || self.b.is_some()
-            || self.gamma.is_some()
-            || self.gravity.is_some()
-            || self.inertia.is_some()
+        self.params.any()
             || self.start.is_some()
             || self.apparatus.is_some()
             || self.medium.is_some()
@@ -67,13 +62,10 @@ impl ModelArgs {
     }
 
     fn apply(&self, scene: &mut Scene) {
+        for (p, x) in self.params.given() {
+            scene.set_param(p, x);
+        }
         let m = &mut scene.model;
-        m.alpha = self.alpha.unwrap_or(m.alpha);
-        m.n = self.n.unwrap_or(m.n);
-        m.b = self.b.unwrap_or(m.b);
-        m.gamma = self.gamma.unwrap_or(m.gamma);
-        m.gravity = self.gravity.unwrap_or(m.gravity);
-        m.inertia = self.inertia.unwrap_or(m.inertia);
         m.start = self.start.map_or(m.start, |s| match s {
             StartArg::Ground => sim::Start::Ground,
             StartArg::Relaxed => sim::Start::Relaxed,
@@ -181,18 +173,7 @@ fn flag_of(key: &str) -> String {
 impl GridArgs {
     /// The grid flags given, in the order of [`Param::ALL`].
     pub fn given(&self) -> Vec<(Param, &str)> {
-        [
-            (Param::Alpha, &self.alpha),
-            (Param::N, &self.n),
-            (Param::B, &self.b),
-            (Param::Gamma, &self.gamma),
-            (Param::Gravity, &self.gravity),
-            (Param::Inertia, &self.inertia),
-            (Param::DriveTime, &self.drive_time),
-        ]
-        .into_iter()
-        .filter_map(|(p, v)| v.as_deref().map(|v| (p, v)))
-        .collect()
+        self.axes.given()
     }
 }
 
@@ -217,7 +198,7 @@ pub fn sweep_scene(args: &SweepArgs) -> Result<Scene> {
         None if grid.is_empty() => {
             return Err(Error::bad_input(format!(
                 "ladder sweep needs a sweep file or at least one grid flag: --{} (e.g. --alpha=-45:-60:-0.5)",
-                Param::ALL.map(|p| p.name().replace('_', "-")).join(", --")
+                Param::ALL.map(Param::flag).join(", ")
             )));
         }
         None => Scene {
@@ -232,7 +213,7 @@ pub fn sweep_scene(args: &SweepArgs) -> Result<Scene> {
         unreachable!("checked above")
     };
     for (param, text) in grid {
-        let flag = format!("--{}", param.name().replace('_', "-"));
+        let flag = param.flag();
         let values = Values::parse(text).map_err(|m| Error::bad_input(format!("{flag}: {m}")))?;
         values
             .expand(param)
@@ -396,43 +377,19 @@ fn check_fits_entry(
             panels.len()
         )));
     }
-    let given = [
-        (
-            "--alpha",
-            model.alpha.is_some(),
-            panels.iter().any(|p| p.model.alpha.is_some()),
-        ),
-        (
-            "--n",
-            model.n.is_some(),
-            panels.iter().any(|p| p.model.n.is_some()),
-        ),
-        (
-            "--b",
-            model.b.is_some(),
-            panels.iter().any(|p| p.model.b.is_some()),
-        ),
-        (
-            "--gamma",
-            model.gamma.is_some(),
-            panels.iter().any(|p| p.model.gamma.is_some()),
-        ),
-        (
-            "--gravity",
-            model.gravity.is_some(),
-            panels.iter().any(|p| p.model.gravity.is_some()),
-        ),
-        (
-            "--inertia",
-            model.inertia.is_some(),
-            panels.iter().any(|p| p.model.inertia.is_some()),
-        ),
-        (
-            "--t-end",
-            run.t_end.is_some(),
-            panels.iter().any(|p| p.t_end.is_some()),
-        ),
-    ];
+    // Each model flag given that a panel sets too, then the window.
+    let mut given: Vec<(String, bool, bool)> = Param::MODEL
+        .into_iter()
+        .map(|p| {
+            let set = panels.iter().any(|panel| panel.model.get(p).is_some());
+            (p.flag(), model.params.get(p).is_some(), set)
+        })
+        .collect();
+    given.push((
+        "--t-end".into(),
+        run.t_end.is_some(),
+        panels.iter().any(|p| p.t_end.is_some()),
+    ));
     if let Some((flag, ..)) = given.iter().find(|(_, g, set)| *g && *set) {
         return Err(Error::bad_input(format!(
             "figure {id}: each of its {} panels sets {} itself, so {flag} cannot change it; \
@@ -608,6 +565,7 @@ impl KernelArg {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::cli::args::ParamFlags;
 
     #[test]
     fn sweep_keys_are_worded_as_flags() {
@@ -628,8 +586,7 @@ mod tests {
     #[test]
     fn flags_land_on_the_scene() {
         let model = ModelArgs {
-            alpha: Some(70.0),
-            n: Some(20),
+            params: ParamFlags::of(&[(Param::Alpha, 70.0), (Param::N, 20.0)]),
             ..Default::default()
         };
         let drive = DriveArgs {
@@ -644,7 +601,7 @@ mod tests {
         assert_eq!(s.drive.flips.len(), 2);
         assert_eq!(s.drive.flips[1].start, 1500.0);
         let bad = ModelArgs {
-            alpha: Some(120.0),
+            params: ParamFlags::of(&[(Param::Alpha, 120.0)]),
             ..Default::default()
         };
         let e = movie_scene(None, None, None, &bad, &drive, &RunArgs::default()).unwrap_err();

@@ -78,20 +78,25 @@ pub fn into_folder(
     let written: Vec<Vec<String>> = scenes
         .par_iter()
         .map(|s| {
-            // Each file written as soon as it is drawn, the data file
-            // streamed into place.
+            // Each file streamed into its temporary file as it is drawn;
+            // the scene's files are put in place together once all are
+            // complete, its data file first (`output::group`).
             let mut files: Vec<String> = Vec::new();
-            scenes::render_to(s, movie, outputs, progress.frame, &mut |name, fill| {
-                (progress.file)();
-                output::write_atomic_with(&out.join(name), |f| {
-                    fill(f)?;
+            let mut group = output::group::Group::new();
+            let rendered =
+                scenes::render_to(s, movie, outputs, progress.frame, &mut |name, fill| {
                     (progress.file)();
+                    group.write_with(&out.join(name), |f| {
+                        fill(f)?;
+                        (progress.file)();
+                        Ok(())
+                    })?;
+                    files.push(name.to_string());
                     Ok(())
-                })?;
-                files.push(name.to_string());
-                Ok(())
-            })
-            .map_err(|e| (progress.hint)(e, s))?;
+                });
+            rendered
+                .and_then(|()| group.commit())
+                .map_err(|e| (progress.hint)(e, s))?;
             (progress.scene)(s);
             Ok(files)
         })

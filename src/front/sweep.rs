@@ -80,8 +80,17 @@ pub fn run_in_chunks_within(
     let cap = limits.cap(crate::limits::Resource::DataBytes);
     let threads = rayon::current_num_threads().max(1);
     // Runs go through the batch kernel a chunk at a time (one run per SIMD
-    // lane): start with enough to fill every core's lanes several times.
-    let mut chunk = (64 * threads).max(128);
+    // lane): start with enough to fill every core's lanes several times;
+    // where the files are counted against a cap on bytes, with one run a
+    // core, as no run's bytes are known before it (a run can hold many
+    // times the waves the estimate assumes), so that the first chunk
+    // to pass the cap is a small one; later chunks grow (doubling) within
+    // the room the cap leaves at the most bytes a run has taken.
+    let mut chunk = if count_files.is_some() && cap.is_finite() {
+        threads
+    } else {
+        (64 * threads).max(128)
+    };
     let mut at = 0;
     // The largest JSON bytes one run has taken so far.
     let mut per_run: f64 = 0.0;

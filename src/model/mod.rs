@@ -5,8 +5,10 @@ pub mod ladder;
 pub mod links;
 pub mod media;
 pub mod params;
+pub mod table;
 pub mod terms;
 pub mod trig;
 
 pub use ladder::Ladder;
 pub use params::{ParamError, Params};
+pub use table::{Kind, Param, Place, Range, Spec};

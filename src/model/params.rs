@@ -4,6 +4,7 @@
 //! unit τ = sqrt(m/k). Angles are stored in radians; constructors take degrees
 //! because the paper quotes degrees.
 
+use super::table::Param;
 use thiserror::Error;
 
 /// Block length s (the unit of length).
@@ -42,89 +43,129 @@ pub struct Params {
 pub const MAX_BLOCKS: usize = crate::limits::MAX_BLOCKS;
 
 impl Params {
-    /// Parameters from their values, validated: N blocks, rest length b
-    /// (units of s), α in degrees, damping γ, gravity G = mg/(ks) and
-    /// moment of inertia I (units of m s²).
-    pub fn new(
-        n: usize,
-        b: f64,
-        alpha_deg: f64,
-        gamma: f64,
-        gravity: f64,
-        inertia: f64,
-    ) -> Result<Self, ParamError> {
-        if !(alpha_deg.is_finite() && alpha_deg.abs() <= 90.0) {
-            // Reported as typed, not as converted back from radians.
-            return Err(ParamError(format!(
-                "alpha must be a number of degrees with |alpha| <= 90, got {alpha_deg}"
-            )));
-        }
-        Self {
-            n,
-            b,
-            alpha: alpha_deg.to_radians(),
-            inertia,
-            gamma,
-            gravity,
-        }
-        .validated()
-    }
-
     /// The paper's simulation values (supplement, "Details of numerical
-    /// simulation"): N = 10, b/s = 1.3, I = m s²/4, γ = 0.02, G = 2e-4.
+    /// simulation"; the defaults of the parameter table,
+    /// [`crate::model::table`]) at α = `alpha_deg`, validated. The
+    /// other values by name (`with_n`, `with_b`, ...):
+    /// `Params::paper(60.0)?.with_n(20).with_gamma(0.0).validated()`.
     pub fn paper(alpha_deg: f64) -> Result<Self, ParamError> {
-        Self {
-            n: 10,
-            b: 1.3,
-            alpha: alpha_deg.to_radians(),
-            inertia: 0.25 * M * S * S,
-            gamma: 0.02,
-            gravity: 2e-4,
-        }
-        .validated()
+        Self::defaults().with_alpha_deg(alpha_deg).validated()
     }
 
-    /// Same parameters with another N, b or α (degrees), validated again.
-    pub fn with(self, n: usize, b: f64, alpha_deg: f64) -> Result<Self, ParamError> {
+    /// The table's defaults, unvalidated (every one is valid).
+    pub fn defaults() -> Self {
+        let d = |p: Param| p.default_value();
         Self {
-            n,
-            b,
+            n: d(Param::N) as usize,
+            b: d(Param::B),
+            alpha: d(Param::Alpha).to_radians(),
+            inertia: d(Param::Inertia),
+            gamma: d(Param::Gamma),
+            gravity: d(Param::Gravity),
+        }
+    }
+
+    /// Parameter `p`'s value in the table's unit (α in degrees, as
+    /// [`Params::alpha_deg`]); `None` for the drive's.
+    pub fn get(&self, p: Param) -> Option<f64> {
+        Some(match p {
+            Param::Alpha => self.alpha_deg(),
+            Param::N => self.n as f64,
+            Param::B => self.b,
+            Param::Gamma => self.gamma,
+            Param::Gravity => self.gravity,
+            Param::Inertia => self.inertia,
+            Param::DriveTime => return None,
+        })
+    }
+
+    /// Parameter `p` set to `x` in the table's unit (α in degrees; N a
+    /// whole number, as [`Params::validated`] then checks), unvalidated;
+    /// the drive's leave the parameters as they are.
+    pub fn with_param(self, p: Param, x: f64) -> Self {
+        match p {
+            Param::Alpha => self.with_alpha_deg(x),
+            Param::N => Self {
+                n: x as usize,
+                ..self
+            },
+            Param::B => Self { b: x, ..self },
+            Param::Gamma => Self { gamma: x, ..self },
+            Param::Gravity => Self { gravity: x, ..self },
+            Param::Inertia => Self { inertia: x, ..self },
+            Param::DriveTime => self,
+        }
+    }
+
+    /// The parameters from each one's value (the table's units, α in
+    /// degrees), each checked against the table's range as given (so
+    /// that an error quotes the number typed), then validated.
+    pub fn from_values(value: impl Fn(Param) -> f64) -> Result<Self, ParamError> {
+        let mut params = Self::defaults();
+        for p in Param::MODEL {
+            let x = value(p);
+            p.spec()
+                .check(x, false)
+                .map_err(|e| ParamError(format!("{}: {e}", p.name())))?;
+            params = params.with_param(p, x);
+        }
+        params.validated()
+    }
+
+    /// With N blocks, unvalidated.
+    pub fn with_n(self, n: usize) -> Self {
+        Self { n, ..self }
+    }
+
+    /// With rest length b (units of s), unvalidated.
+    pub fn with_b(self, b: f64) -> Self {
+        Self { b, ..self }
+    }
+
+    /// With α in degrees, unvalidated.
+    pub fn with_alpha_deg(self, alpha_deg: f64) -> Self {
+        Self {
             alpha: alpha_deg.to_radians(),
             ..self
         }
-        .validated()
     }
 
-    /// Checks every field; returns the parameters unchanged when they are legal.
-    /// |α| ≤ 90° is allowed here (α = 90° is the symmetric toy, α = 0 the
-    /// gapless configuration); simulations further require 0 < |α| < 90°.
+    /// With damping γ, unvalidated.
+    pub fn with_gamma(self, gamma: f64) -> Self {
+        Self { gamma, ..self }
+    }
+
+    /// With gravity G = mg/(ks), unvalidated.
+    pub fn with_gravity(self, gravity: f64) -> Self {
+        Self { gravity, ..self }
+    }
+
+    /// With moment of inertia I (units of m s²), unvalidated.
+    pub fn with_inertia(self, inertia: f64) -> Self {
+        Self { inertia, ..self }
+    }
+
+    /// Same parameters with another N, b and α (degrees), validated again.
+    pub fn with(self, n: usize, b: f64, alpha_deg: f64) -> Result<Self, ParamError> {
+        self.with_n(n)
+            .with_b(b)
+            .with_alpha_deg(alpha_deg)
+            .validated()
+    }
+
+    /// Checks every field against the parameter table's range
+    /// ([`crate::model::table`]); returns the parameters unchanged when
+    /// they are legal. |α| ≤ 90° is allowed here (α = 90° is the
+    /// symmetric toy, α = 0 the gapless configuration); simulations
+    /// further require 0 < |α| < 90°.
     pub fn validated(self) -> Result<Self, ParamError> {
-        let deg = self.alpha.to_degrees();
-        if !self.alpha.is_finite() || deg.abs() > 90.0 + 1e-9 {
-            return Err(ParamError(format!(
-                "alpha must be a number of degrees with |alpha| <= 90, got {}",
-                crate::numfmt::plain(deg)
-            )));
+        for p in Param::MODEL {
+            // α read back from radians within 1e-9° ([`Params::alpha_deg`]).
+            let x = self.get(p).expect("a model parameter");
+            if let Err(e) = p.spec().check(x, false) {
+                return Err(ParamError(format!("{}: {e}", p.name())));
+            }
         }
-        if self.n < 2 || self.n > MAX_BLOCKS {
-            return Err(ParamError(format!(
-                "the number of blocks N must be between 2 and {MAX_BLOCKS}, got {}",
-                self.n
-            )));
-        }
-        use crate::limits::{MAX_INERTIA, MAX_LENGTH, MIN_INERTIA, MIN_LENGTH};
-        within(
-            "b (rest length of the B springs, in units of s)",
-            self.b,
-            (MIN_LENGTH, MAX_LENGTH),
-        )?;
-        within(
-            "the moment of inertia I (in units of m s²)",
-            self.inertia,
-            (MIN_INERTIA, MAX_INERTIA),
-        )?;
-        non_negative("the damping gamma", self.gamma)?;
-        non_negative("the gravity G", self.gravity)?;
         Ok(self)
     }
 
@@ -143,30 +184,6 @@ impl Params {
     /// Number of generalised coordinates, 3N (X, Y, θ per block).
     pub fn dof(&self) -> usize {
         3 * self.n
-    }
-}
-
-/// `x` within [lo, hi] (`crate::limits`: outside, the linear algebra
-/// cannot converge or the numbers overflow).
-fn within(name: &str, x: f64, (lo, hi): (f64, f64)) -> Result<(), ParamError> {
-    if x.is_finite() && (lo..=hi).contains(&x) {
-        Ok(())
-    } else {
-        Err(ParamError(format!(
-            "{name} must be a number between {lo:e} and {hi:e}, got {}",
-            crate::numfmt::plain(x)
-        )))
-    }
-}
-
-fn non_negative(name: &str, x: f64) -> Result<(), ParamError> {
-    if x.is_finite() && x >= 0.0 {
-        Ok(())
-    } else {
-        Err(ParamError(format!(
-            "{name} must be a finite number >= 0, got {}",
-            crate::numfmt::plain(x)
-        )))
     }
 }
 
@@ -196,5 +213,28 @@ mod tests {
         assert!(p.with(10, 1e-3, 60.0).is_ok() && p.with(10, 1e3, 60.0).is_ok());
         let neg = Params { gamma: -1.0, ..p };
         assert!(neg.validated().is_err());
+    }
+
+    #[test]
+    fn the_paper_values_are_the_tables() {
+        let p = Params::paper(60.0).unwrap();
+        for param in Param::MODEL {
+            assert_eq!(p.get(param), Some(param.default_value()), "{param}");
+        }
+        let q = Params::from_values(|p| match p {
+            Param::N => 20.0,
+            p => p.default_value(),
+        })
+        .unwrap();
+        assert_eq!(q, p.with_n(20));
+        let e = Params::from_values(|p| match p {
+            Param::Alpha => 120.0,
+            p => p.default_value(),
+        })
+        .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "alpha: must be degrees with |alpha| <= 90, got 120"
+        );
     }
 }

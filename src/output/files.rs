@@ -137,7 +137,7 @@ fn file_identity(path: &Path) -> PathBuf {
 }
 
 /// `Ok` when `path` does not exist or is a regular file (not a symlink).
-fn check_kind(path: &Path) -> Result<()> {
+pub(super) fn check_kind(path: &Path) -> Result<()> {
     let meta = match fs::symlink_metadata(path) {
         Ok(m) => m,
         Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(()),
@@ -179,7 +179,7 @@ fn special_kind(_: &fs::FileType) -> &'static str {
     "not a regular file"
 }
 
-fn parent_dir(path: &Path) -> PathBuf {
+pub(super) fn parent_dir(path: &Path) -> PathBuf {
     match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
         _ => PathBuf::from("."),

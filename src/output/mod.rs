@@ -11,6 +11,7 @@
 
 pub mod data;
 pub mod files;
+pub mod group;
 pub mod stream;
 pub mod temp;
 

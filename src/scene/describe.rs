@@ -75,17 +75,11 @@ pub fn generated_title(scene: &Scene) -> String {
     }
 }
 
-/// "α = 60°, N = 10, b/s = 1.3, γ = 0.02, G = 2e−4, I = 0.25 m s²".
+/// "α = 60°, N = 10, b/s = 1.3, γ = 0.02, G = 2e−4, I = 0.25 m s²": every
+/// parameter of the model's table, its symbol, value and unit.
 pub fn model(m: &Model) -> String {
-    format!(
-        "α = {}°, N = {}, b/s = {}, γ = {}, G = {}, I = {} m s²",
-        num(m.alpha),
-        m.n,
-        num(m.b),
-        num(m.gamma),
-        num(m.gravity),
-        num(m.inertia)
-    )
+    let parts: Vec<String> = m.values().map(|(p, x)| p.spec().equation(x, num)).collect();
+    parts.join(", ")
 }
 
 /// "block 1 turned α → −α over 0–1000 τ, and back over 1500–2500 τ".
@@ -324,16 +318,9 @@ pub fn kymograph() -> String {
 pub fn derived_name(scene: &Scene, base: &Scene) -> String {
     let mut parts: Vec<String> = Vec::new();
     let (m, b) = (&scene.model, &base.model);
-    for (key, x, y) in [
-        ("a", m.alpha, b.alpha),
-        ("n", m.n as f64, b.n as f64),
-        ("b", m.b, b.b),
-        ("gamma", m.gamma, b.gamma),
-        ("grav", m.gravity, b.gravity),
-        ("inertia", m.inertia, b.inertia),
-    ] {
+    for ((p, x), (_, y)) in m.values().zip(b.values()) {
         if x != y {
-            parts.push(format!("{key}{}", token(x)));
+            parts.push(format!("{}{}", p.spec().tag, token(x)));
         }
     }
     if m.start != b.start {
@@ -351,7 +338,11 @@ pub fn derived_name(scene: &Scene, base: &Scene) -> String {
     if d.iter().any(|f| Some(f.duration) != base_td)
         && let Some(f) = d.first()
     {
-        parts.push(format!("td{}", token(f.duration)));
+        parts.push(format!(
+            "{}{}",
+            crate::model::Param::DriveTime.spec().tag,
+            token(f.duration)
+        ));
     }
     let (r, br) = (&scene.run, &base.run);
     // The window the change of model gives by itself
@@ -442,25 +433,12 @@ fn shortened(name: String) -> String {
 
 /// The fields of `m` that differ from `base`, e.g. "α = −60°, to 3700 τ".
 fn differences(base: &Model, m: &Model, t0: f64, t: f64) -> String {
-    let mut d = Vec::new();
-    if m.alpha != base.alpha {
-        d.push(format!("α = {}°", num(m.alpha)));
-    }
-    if m.n != base.n {
-        d.push(format!("N = {}", m.n));
-    }
-    if m.b != base.b {
-        d.push(format!("b/s = {}", num(m.b)));
-    }
-    if m.gamma != base.gamma {
-        d.push(format!("γ = {}", num(m.gamma)));
-    }
-    if m.gravity != base.gravity {
-        d.push(format!("G = {}", num(m.gravity)));
-    }
-    if m.inertia != base.inertia {
-        d.push(format!("I = {}", num(m.inertia)));
-    }
+    let mut d: Vec<String> = m
+        .values()
+        .zip(base.values())
+        .filter(|((_, x), (_, y))| x != y)
+        .map(|((p, x), _)| p.spec().equation(x, num))
+        .collect();
     if t != t0 {
         d.push(format!("to {} τ", num(t)));
     }

@@ -17,6 +17,7 @@ pub mod drive;
 pub mod file;
 pub mod model;
 pub mod output;
+pub mod params;
 pub mod run;
 pub mod sweep;
 
@@ -27,7 +28,7 @@ pub use output::{Camera, OutputSpec, Panel, TheoryFigure, TheorySpec, ZeroMode};
 pub use run::{AUTO_T_END, DEFAULT_DT, DEFAULT_RTOL, Method, Run};
 
 use crate::error::Result;
-use crate::sim::{IntegratorConfig, Scenario};
+use crate::sim::Scenario;
 use serde::{Deserialize, Serialize};
 
 /// One output: a model, a drive, a window, an integrator and a picture.
@@ -182,6 +183,9 @@ impl Scene {
 
     /// The single-run scene of variant `panel` (its model patched, its own
     /// window), rendered as plain data.
+    /// With an apparatus, its conversion is made again for the patched
+    /// model (`Scene::with_conversion`), so that the variant records the
+    /// values its run uses.
     pub fn variant(&self, panel: &Panel) -> Scene {
         let mut s = self.clone();
         s.model = panel.model.apply(&self.model);
@@ -192,7 +196,7 @@ impl Scene {
         s.label = None;
         s.title = None;
         s.caption = None;
-        s
+        s.with_conversion()
     }
 
     /// Every simulation this scene runs, as single-run scenes, with the
@@ -305,9 +309,7 @@ impl Scene {
             let scenario = v.scenario()?;
             let config = match v.run.fixed_config()? {
                 Some(c) => c,
-                None => IntegratorConfig::auto(crate::theory::dispersion::omega_max_clamped(
-                    &scenario.ladder.params,
-                )?),
+                None => run::auto_config(&scenario)?,
             };
             let options = crate::sim::RunOptions::default().limits(self.limits);
             t_end = t_end.max(crate::sim::window::auto_window(&scenario, &config, &options)?.t_end);

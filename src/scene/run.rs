@@ -136,6 +136,21 @@ mod t_end_value {
     }
 }
 
+/// The highest frequency ω_max of the chain `scenario` runs, from its
+/// parameters as run (an apparatus's converted ones, not the scene
+/// file's `[model]`): the one source of `auto`'s first step
+/// ([`auto_config`]) and of its stability bound, for a scene and for a
+/// sweep's point alike.
+pub fn omega_max(scenario: &crate::sim::Scenario) -> Result<f64> {
+    crate::theory::dispersion::omega_max_clamped(&scenario.ladder.params)
+}
+
+/// `auto`'s first configuration for `scenario` (`IntegratorConfig::auto`
+/// at [`omega_max`]).
+pub fn auto_config(scenario: &crate::sim::Scenario) -> Result<IntegratorConfig> {
+    Ok(IntegratorConfig::auto(omega_max(scenario)?))
+}
+
 /// Default step of a fixed-step integrator: the paper's 0.01 τ.
 pub const DEFAULT_DT: f64 = 0.01;
 /// Default tolerance of adaptive dopri5.

@@ -97,14 +97,22 @@ impl Settings {
     }
 }
 
-/// What the data file says of one run: the scene it ran, the integrator
-/// and accuracy, the arrival times, the final angles and, at each drawn
-/// time, θ_n (degrees, wrapped to (−180°, 180°]) and the centres.
+/// What the program says of one run, in a data file (one per simulation
+/// drawn), in `ladder simulate --json` and in Python's `Run.record`: the
+/// model, drive and window the run used (an apparatus's converted values,
+/// `Scene::with_conversion`), the integrator and accuracy, the arrival
+/// times, the final angles, the same in seconds and cm/s where an
+/// apparatus gives units, and, at each drawn time, θ_n (degrees, wrapped
+/// to (−180°, 180°]) and the centres.
 #[derive(Debug, Clone, Serialize)]
 pub struct RunData {
     pub label: String,
+    /// The model run.
     pub model: Model,
+    /// The drive of block 1 run (a motor's flip where the apparatus has
+    /// one).
     pub drive: DriveSpec,
+    /// The window run, τ.
     pub t_end: f64,
     pub integrator: IntegratorReport,
     pub arrival_times: Vec<Option<f64>>,
@@ -119,6 +127,10 @@ pub struct RunData {
     pub final_theta_deg: Vec<f64>,
     /// Every wave of the run and block N's fate (docs/sweeps.md).
     pub waves: sim::waves::Waves,
+    /// Times in seconds and speeds in cm/s, where an apparatus gives the
+    /// units (docs/experiments.md); absent in the model's units alone.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub units: Option<Units>,
     /// The state at each drawn time, one [`FrameData`] each.
     pub frames: Frames,
     /// The kymograph drawn from this run (a movie's, a kymograph
@@ -333,8 +345,24 @@ impl RunData {
         Self::with_rows(label, scene, run, rows)
     }
 
+    /// The run ended at `t` (before its window, where a stop rule ended
+    /// it): its `t_end`, in τ and in seconds.
+    pub fn ended_at(&mut self, t: f64) {
+        if let Some(u) = &mut self.units {
+            u.t_end_s = t * u.tau_s;
+        }
+        self.t_end = t;
+    }
+
+    /// The record of `run` without its samples (`ladder simulate`,
+    /// Python's `Run.record`): `frames` is empty.
+    pub fn summary(scene: &Scene, run: &SceneRun) -> Self {
+        Self::with_rows("", scene, run, SampleRows::default())
+    }
+
     fn with_rows(label: &str, scene: &Scene, run: &SceneRun, rows: SampleRows) -> Self {
         let traj = &run.trajectory;
+        let speed = crate::sim::speed::wave_speed(&traj.arrival_times);
         Self {
             label: label.to_string(),
             model: scene.model,
@@ -342,15 +370,54 @@ impl RunData {
             t_end: scene.run.t_end,
             integrator: run.integrator.clone(),
             arrival_times: traj.arrival_times.clone(),
-            speed: crate::sim::speed::wave_speed(&traj.arrival_times),
+            speed,
             blocks_flipped: crate::sweep::outcome::blocks_flipped(&traj.arrival_times),
             final_theta_deg: traj.final_theta_deg(),
             waves: traj.waves.clone(),
+            units: Units::of(scene, &traj.arrival_times, speed),
             frames: Frames(Arc::new(rows)),
             kymograph: None,
             energies: None,
             apparatus: None,
         }
+    }
+}
+
+/// A run's times in seconds and its speed in cm/s, beside the model's τ
+/// and blocks per τ, where the scene's apparatus gives the units
+/// (docs/experiments.md: τ = √(m/k) in s; one block per τ is b/τ in
+/// cm/s).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Units {
+    /// τ in seconds.
+    pub tau_s: f64,
+    /// One block per τ in cm/s.
+    pub cm_per_s: f64,
+    /// The window, s.
+    pub t_end_s: f64,
+    /// The first flip's drive time T_d, s; absent without a flip.
+    pub drive_time_s: Option<f64>,
+    /// The first wave's arrival times, s.
+    pub arrival_times_s: Vec<Option<f64>>,
+    /// The wave speed c, cm/s.
+    pub speed_cm_s: Option<f64>,
+}
+
+impl Units {
+    /// The units of `scene`'s converted apparatus, if it has one.
+    pub fn of(scene: &Scene, arrival_times: &[Option<f64>], speed: Option<f64>) -> Option<Self> {
+        let c = scene.apparatus.as_ref()?.conversion.as_ref()?;
+        Some(Self {
+            tau_s: c.tau_s,
+            cm_per_s: c.cm_per_s,
+            t_end_s: scene.run.t_end * c.tau_s,
+            drive_time_s: scene.drive.flips.first().map(|f| f.duration * c.tau_s),
+            arrival_times_s: arrival_times
+                .iter()
+                .map(|t| t.map(|t| t * c.tau_s))
+                .collect(),
+            speed_cm_s: speed.map(|v| v * c.cm_per_s),
+        })
     }
 }
 

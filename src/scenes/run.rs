@@ -87,9 +87,7 @@ pub fn check_cost(scene: &Scene, samples: usize) -> Result<()> {
         let scenario = capped.scenario()?;
         let config = match scene.run.fixed_config()? {
             Some(config) => config,
-            None => sim::IntegratorConfig::auto(crate::theory::dispersion::omega_max_clamped(
-                &scene.model.params()?,
-            )?),
+            None => crate::scene::run::auto_config(&scenario)?,
         };
         sim::check_cost(&scenario, 0, &config, &limits)?;
         return Ok(());
@@ -100,8 +98,7 @@ pub fn check_cost(scene: &Scene, samples: usize) -> Result<()> {
             sim::check_cost(&scenario, samples, &config, &limits)?;
         }
         None => {
-            let params = scene.model.params()?;
-            let omega_max = crate::theory::dispersion::omega_max_clamped(&params)?;
+            let omega_max = crate::scene::run::omega_max(&scenario)?;
             sim::auto::worst_case(&scenario, samples, omega_max, &limits)?;
         }
     }
@@ -132,8 +129,7 @@ pub fn simulate_with(scene: &Scene, samples: &[f64], options: &RunOptions) -> Re
             })
         }
         None => {
-            let params = scene.model.params()?;
-            let omega_max = crate::theory::dispersion::omega_max_clamped(&params)?;
+            let omega_max = crate::scene::run::omega_max(&scenario)?;
             let v = sim::auto::simulate_verified(
                 &scenario,
                 samples,
@@ -194,11 +190,11 @@ pub fn critical_step(scene: &Scene, kind: sim::IntegratorKind) -> Result<Critica
     let mut predicted = f64::INFINITY;
     let mut scenarios = Vec::new();
     for s in &runs {
-        let params = s.model.params()?;
-        let omega_max = crate::theory::dispersion::omega_max_clamped(&params)?;
-        let damping = sim::step_bounds::damping_rate(&params);
+        let scenario = s.scenario()?;
+        let omega_max = crate::scene::run::omega_max(&scenario)?;
+        let damping = sim::step_bounds::damping_rate(&scenario.ladder.params);
         predicted = predicted.min(sim::step_bounds::predicted_dt(kind, omega_max, damping));
-        scenarios.push(s.scenario()?);
+        scenarios.push(scenario);
     }
     let bounded = |dt: f64| -> Result<bool> {
         let config = IntegratorConfig::fixed(kind, dt);

@@ -7,7 +7,7 @@
 //! the `stiff_gravity`) must give the same wave in physical units, within
 //! [`STIFF_TOLERANCE`]; how far it moves is said beside the run.
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::scene::Scene;
 use crate::scene::apparatus::{StiffWord, Stiffness};
 use crate::scenes::run::{self, SceneRun};
@@ -94,6 +94,33 @@ pub fn doubled(scene: &Scene) -> Option<Scene> {
         s.run.t_end = scene.run.t_end * tau_k / tau_2k;
     }
     Some(s)
+}
+
+/// Refuses, before the first run, a scene whose "stiff" links' check
+/// (its second run, at 2k: τ is √2 shorter, so √2 more steps over the
+/// same seconds) is past the scene's caps (`run::check_cost`), saying
+/// that it is that run: the check is made before any run, never after the
+/// first has been paid for.
+pub fn check_cost(scene: &Scene, samples: usize) -> Result<()> {
+    let Some(stiffer) = doubled(scene) else {
+        return Ok(());
+    };
+    let word = |m: String| {
+        format!(
+            "the \"stiff\" links' check, a second run with the links twice as stiff (2k) over \
+             the same seconds, {} τ of its own (τ √2 shorter): {m}; or give the links' \
+             stiffness in N/m, which makes no second run",
+            crate::error::num(stiffer.run.t_end)
+        )
+    };
+    run::check_cost(&stiffer, samples).map_err(|e| match e {
+        Error::BadInput(m) => Error::bad_input(word(m)),
+        Error::Limit(mut l) => {
+            l.detail = word(l.detail);
+            Error::Limit(l)
+        }
+        other => other,
+    })
 }
 
 /// Runs `scene` again with 2k (with `options`) and compares the wave's

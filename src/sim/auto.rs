@@ -83,6 +83,8 @@ pub fn simulate_verified(
     }
     let mut first_fine = Some(first_fine);
     let mut last_difference = f64::INFINITY;
+    // Halvings in a row whose difference did not shrink ([`diverging`]).
+    let mut shrinks = 0usize;
     for _ in 0..budget.pairs {
         let config = scheme(scenario, 0.5 * dt);
         let run = match first_fine.take() {
@@ -115,6 +117,9 @@ pub fn simulate_verified(
                     total_force_evals: total,
                 });
             }
+            if diverging(&mut shrinks, last_difference, difference) {
+                return Err(not_converging(last_difference, difference, dt, tolerance));
+            }
             last_difference = difference;
         }
         coarse = Some(Coarse::of(fine));
@@ -144,6 +149,38 @@ pub fn simulate_verified(
          hint: raise the tolerance, or name an integrator and step",
         num(dt)
     )))
+}
+
+/// Halvings in a row whose arrival-time difference did not at least halve
+/// after which `auto` stops: a second-order scheme's difference shrinks
+/// fourfold a halving once the step resolves the run, so two halvings in
+/// a row that do not even halve it say the arrivals do not converge in
+/// the step (an undamped apparatus whose motion is chaotic: `--medium air`
+/// or tension-only links), and more halvings would only spend the budget.
+pub const NOT_SHRINKING_HALVINGS: usize = 2;
+
+/// Counts in `run` the halvings in a row whose difference `now` is not
+/// under half of `before` (both finite); true once there are
+/// [`NOT_SHRINKING_HALVINGS`].
+fn diverging(run: &mut usize, before: f64, now: f64) -> bool {
+    if before.is_finite() && now.is_finite() && now > 0.5 * before {
+        *run += 1;
+    } else {
+        *run = 0;
+    }
+    *run >= NOT_SHRINKING_HALVINGS
+}
+
+/// The failed run of arrivals that do not converge in the step.
+fn not_converging(before: f64, now: f64, dt: f64, tolerance: f64) -> Error {
+    Error::failed(format!(
+        "the auto integrator could not verify this run within {tolerance} τ: halving the step \
+         does not bring the arrival times together ({before:.3} τ, then {now:.3} τ at dt = {} τ; \
+         a second-order step shrinks the difference fourfold once it resolves the run), so the \
+         motion is not resolved by any step the budget holds; hint: name an integrator and \
+         step (--integrator rk4 --dt 0.125), or add damping",
+        num(dt)
+    ))
 }
 
 /// What `auto` keeps of the coarser run of a pair: what the comparison

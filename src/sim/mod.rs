@@ -37,8 +37,9 @@ use crate::model::{Ladder, Params};
 use observables::ArrivalDetector;
 use waves::WaveTracker;
 
-/// The paper's drive time T_d = 1000 τ (10^5 steps of 0.01).
-pub const PAPER_DRIVE_TIME: f64 = 1000.0;
+/// The paper's drive time T_d = 1000 τ (10^5 steps of 0.01), the
+/// parameter table's default (`model::table`).
+pub const PAPER_DRIVE_TIME: f64 = crate::model::Param::DriveTime.default_value();
 
 /// What to simulate: a model, what happens to block 1, a start and an end.
 #[derive(Debug, Clone)]

@@ -81,7 +81,7 @@ pub fn theory_points(plan: &Plan) -> Vec<TheoryPoint> {
     values
         .into_iter()
         .map(|alpha| {
-            let params = crate::model::Params::new(m.n, m.b, alpha, m.gamma, m.gravity, m.inertia);
+            let params = crate::scene::Model { alpha, ..m }.params();
             let gap = params.as_ref().ok().and_then(|p| {
                 crate::theory::bloch::BlochChain::new(p)
                     .ok()

@@ -28,9 +28,10 @@ pub struct Column {
     pub values: Values,
 }
 
-/// Whether parameter `p` takes whole numbers only (N).
+/// Whether parameter `p` takes whole numbers only (N): the parameter
+/// table's kind.
 pub fn is_whole(p: Param) -> bool {
-    matches!(p, Param::N)
+    p.spec().kind == crate::scene::params::Kind::Int
 }
 
 /// What a column holds, as the CSV's cells are filled.

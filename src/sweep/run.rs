@@ -137,8 +137,7 @@ fn prepare(scene: &Scene, spec: &SweepSpec) -> Result<Prepared> {
     let method = match scene.run.fixed_config()? {
         Some(config) => Method::Fixed(config),
         None => {
-            let params = scene.model.params()?;
-            let omega_max = crate::theory::dispersion::omega_max_clamped(&params)?;
+            let omega_max = crate::scene::run::omega_max(&scenario)?;
             Method::Auto {
                 dt: first_auto_dt(omega_max),
                 tolerance: scene.run.tolerance,

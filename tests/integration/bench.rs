@@ -175,3 +175,128 @@ fn every_kernel_gives_the_portable_trajectory() {
         "{table}"
     );
 }
+
+/// `bench stability` on a window too short to decide is refused (before,
+/// `--t-end 1e-300` gave "rk4 4.05 ... ratio 4.00", the real limit being
+/// 1.047; `--t-end 10` an explicit-Euler critical step of 14.68 τ, longer
+/// than the window); a window long enough never reports a step longer
+/// than the window over `MIN_STEPS_IN_WINDOW`.
+#[test]
+fn stability_refuses_a_window_too_short_and_no_step_passes_the_window() {
+    let dir = crate::common::tempdir::TempDir::new("stability-window");
+    let d = dir.path().to_str().unwrap();
+    for t in ["1e-300", "10"] {
+        let out = crate::common::ladder_cli(&[
+            "bench",
+            "stability",
+            "--scene",
+            "water-tank",
+            "--t-end",
+            t,
+            "--out",
+            d,
+        ]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{t}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{t}: {err}");
+        assert!(
+            err.contains("too short to decide stability") && err.contains("--t-end"),
+            "{err}"
+        );
+    }
+    // The library refuses it too (the check is not the command line's).
+    let short = BenchScene::movie("water-tank", Some(10.0), 0).unwrap();
+    assert!(bench::stability_of_scene(&short, &|_| {}).is_err());
+    // The bisection of an undamped scheme on a short window says it
+    // cannot decide instead of returning a step past the window.
+    let scene = BenchScene::from_scene(small(40.0), 10).unwrap();
+    match bench::critical_dt(&scene, IntegratorKind::Rk4, 30.0, 0.02) {
+        Ok(dt) => assert!(dt <= 40.0 / bench::MIN_STEPS_IN_WINDOW, "{dt}"),
+        Err(e) => assert!(
+            e.is_failed_run() && e.to_string().contains("cannot decide"),
+            "{e}"
+        ),
+    }
+}
+
+/// The table prints the prediction the CSV holds: a damped bound with
+/// little damping is a small number, not "0 (undamped)".
+#[test]
+fn the_stability_table_says_what_the_csv_says() {
+    let row = bench::StabilityRow {
+        name: "explicit-euler".into(),
+        critical_dt: 0.0123,
+        predicted_dt: 3.58e-7,
+        refused: None,
+        failed: None,
+    };
+    let report = bench::StabilityReport {
+        alpha_deg: 86.0,
+        omega_max: 2.7,
+        damping_rate: 0.0,
+        integrators: vec![row.clone()],
+        sweep: vec![bench::StabilityPoint {
+            alpha_deg: 86.0,
+            omega_max: 2.7,
+            integrators: vec![row],
+        }],
+        scene: Some("water-tank".into()),
+        terms: None,
+    };
+    let table = bench::stability_table(&report);
+    assert!(!table.contains("0 (undamped)"), "{table}");
+    assert!(table.contains("3.580e-7"), "{table}");
+    assert!(bench::stability_csv(&report).contains("3.580000e-7"));
+}
+
+/// `bench` has the caps of the commands that simulate, checked for the
+/// study's runs together before any run (before, `bench work-precision
+/// --scene water-tank --t-end 1e6` started silently: about 10¹¹ steps × N).
+#[test]
+fn bench_studies_are_capped_before_any_run() {
+    for args in [
+        &[
+            "bench",
+            "work-precision",
+            "--scene",
+            "water-tank",
+            "--t-end",
+            "1e6",
+        ][..],
+        &[
+            "bench",
+            "stability",
+            "--scene",
+            "water-tank",
+            "--t-end",
+            "1e6",
+        ][..],
+        &[
+            "bench",
+            "work-precision",
+            "--scene",
+            "water-tank",
+            "--t-end",
+            "300",
+            "--max-block-steps",
+            "1e5",
+        ][..],
+    ] {
+        let dir = crate::common::tempdir::TempDir::new("bench-caps");
+        let mut a = args.to_vec();
+        a.extend(["--out", dir.path().to_str().unwrap()]);
+        let started = std::time::Instant::now();
+        let out = crate::common::ladder_cli(&a);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
+        assert!(
+            err.contains("--max-block-steps") && err.contains("past the cap"),
+            "{err}"
+        );
+        assert!(
+            started.elapsed().as_secs() < 60,
+            "{args:?}: refused only after work"
+        );
+    }
+}

@@ -226,3 +226,36 @@ fn each_scene_carries_its_own_caps() {
     assert!(scenes::run::check_cost(&capped, 0).is_err());
     assert!(scenes::run::check_cost(&base, 0).is_ok());
 }
+
+/// The "stiff" links' check is a second run (2k, √2 more steps over the
+/// same seconds); its cost is checked with the first, before any run.
+/// Before, with `--max-block-steps 800000` the first run was made, then
+/// the command ended (exit 2) naming a t_end of 11436.78 the user never
+/// gave.
+#[test]
+fn the_stiff_links_second_run_is_checked_before_the_first() {
+    let tank = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/assets/scenes/movie-water-tank.toml"
+    );
+    let args = [
+        "simulate",
+        "--apparatus",
+        tank,
+        "--integrator",
+        "rk4",
+        "--dt",
+        "0.125",
+        "--max-block-steps",
+        "800000",
+    ];
+    let out = crate::common::ladder_cli(&args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(
+        err.contains("\"stiff\" links' check") && err.contains("--max-block-steps"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty());
+}

@@ -96,7 +96,15 @@ fn lone_plate_falls_broadside_at_its_terminal_velocity() {
     for added in [0.0, 6.3] {
         let g = 2e-4;
         let c = 8.1;
-        let params = Params::new(2, 30.0, 10.0, 0.0, g, 0.0837).unwrap();
+        let params = Params::paper(10.0)
+            .unwrap()
+            .with_n(2)
+            .with_b(30.0)
+            .with_gamma(0.0)
+            .with_gravity(g)
+            .with_inertia(0.0837)
+            .validated()
+            .unwrap();
         let terms = Terms {
             added_mass: added,
             added_inertia: 0.1 * added,
@@ -216,7 +224,15 @@ fn periods_with_and_without_added_mass_normal_and_along_the_plate() {
     // Along the plate through the whole ladder: at α = 90° (a = b) block 2
     // hangs below block 1 on two parallel links; its motion along its
     // length (x) stretches both, 2π√(m/2k), whatever the added mass.
-    let params = Params::new(2, 1.5, 90.0, 0.0, 0.0, 0.0837).unwrap();
+    let params = Params::paper(90.0)
+        .unwrap()
+        .with_n(2)
+        .with_b(1.5)
+        .with_gamma(0.0)
+        .with_gravity(0.0)
+        .with_inertia(0.0837)
+        .validated()
+        .unwrap();
     let terms = Terms {
         added_mass: ma,
         added_inertia: 0.3,
@@ -241,7 +257,15 @@ fn a_free_plate_keeps_its_impulse_and_energy() {
     // and the linear impulse M V = m V + m_a (V·ν) ν, while the Munk
     // moment turns a plate moving obliquely (here with tension-only links
     // slack all along, no gravity, no damping).
-    let params = Params::new(2, 50.0, 10.0, 0.0, 0.0, 0.0837).unwrap();
+    let params = Params::paper(10.0)
+        .unwrap()
+        .with_n(2)
+        .with_b(50.0)
+        .with_gamma(0.0)
+        .with_gravity(0.0)
+        .with_inertia(0.0837)
+        .validated()
+        .unwrap();
     let terms = Terms {
         added_mass: 6.3,
         added_inertia: 0.4,
@@ -478,7 +502,15 @@ fn kink_and_antikink_arrivals(
     terms: Terms,
 ) -> (Vec<Option<f64>>, Vec<Option<f64>>) {
     let arrivals = |alpha: f64| {
-        let p = Params::new(8, 1.5, alpha, gamma, 2e-4, 0.0837).unwrap();
+        let p = Params::paper(alpha)
+            .unwrap()
+            .with_n(8)
+            .with_b(1.5)
+            .with_gamma(gamma)
+            .with_gravity(2e-4)
+            .with_inertia(0.0837)
+            .validated()
+            .unwrap();
         let ladder = Ladder::new(p).with_terms(terms);
         let sc = Scenario {
             ladder,
@@ -663,7 +695,15 @@ fn bad_apparatus_values_name_file_line_and_key() {
 /// the limit μ_p r_p T with T = m g: it holds for sin δ < μ_p r_p / r.
 fn pin_turn(delta_deg: f64, mu_rp: f64, omega_eps: f64, t_end: f64) -> f64 {
     let g = 2e-4;
-    let params = Params::new(2, 0.5, 10.0, 0.0, g, 0.0837).unwrap();
+    let params = Params::paper(10.0)
+        .unwrap()
+        .with_n(2)
+        .with_b(0.5)
+        .with_gamma(0.0)
+        .with_gravity(g)
+        .with_inertia(0.0837)
+        .validated()
+        .unwrap();
     let terms = Terms {
         links: Links {
             stiffness: 1.0,
@@ -948,7 +988,8 @@ fn stiff_links_are_shown_stiff_beside_the_run() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{err}");
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert!((v["b"].as_f64().unwrap() - 1.5).abs() < 1e-12, "{}", v["b"]);
+    let b = &v["model"]["b"];
+    assert!((b.as_f64().unwrap() - 1.5).abs() < 1e-12, "{b}");
     let check = &v["stiff_links"];
     let (k, k2) = (
         check["speed_k"].as_f64().expect("a wave at k"),

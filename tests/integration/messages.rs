@@ -373,3 +373,82 @@ fn the_max_flags_belong_to_the_commands_they_limit() {
         &["--max-block-steps"],
     );
 }
+
+/// The linkage's scene file with `key = value` set in `[apparatus]` (added
+/// where the file has no such key), written into `dir`.
+fn apparatus_with(dir: &std::path::Path, edits: &[(&str, &str)]) -> String {
+    let base = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/assets/scenes/movie-linkage-69.toml"
+    ))
+    .unwrap();
+    let mut lines: Vec<String> = base.lines().map(String::from).collect();
+    for (key, value) in edits {
+        let set = format!("{key} = {value}");
+        match lines
+            .iter()
+            .position(|l| l.starts_with(&format!("{key} = ")))
+        {
+            Some(i) => lines[i] = set,
+            None => {
+                let at = lines.iter().position(|l| l == "[apparatus]").unwrap();
+                lines.insert(at + 1, set);
+            }
+        }
+    }
+    std::fs::create_dir_all(dir).unwrap();
+    let path = dir.join("hostile.toml");
+    std::fs::write(&path, lines.join("\n") + "\n").unwrap();
+    path.to_str().unwrap().to_string()
+}
+
+/// Every apparatus value that passes its own check but not what it gives
+/// in the model's units is named by file:line:col and the key the user
+/// wrote, with advice that fits (before: "the added mass must be a finite
+/// number >= 0, got inf" with no file or key for a 5e-324 thickness; a
+/// message about T_d for a 5e-324 motor; "dt = 0.125 is too small ... use
+/// dt >= 89.78", 85 times RK4's stability limit, for g or stiffness =
+/// 1e300 with duration = 1e12; g = 5e-324 blamed on the stiffness; 369
+/// characters of zeros for s = 1e300).
+#[test]
+fn apparatus_values_that_break_the_conversion_name_their_key() {
+    let dir = temp_dir("apparatus-keys");
+    let cases: [(&[(&str, &str)], &str, &[&str]); 8] = [
+        (
+            &[("thickness", "5e-324")],
+            "apparatus.thickness",
+            &["block mass"],
+        ),
+        (&[("motor", "5e-324")], "apparatus.motor", &["T_d", "Hz"]),
+        (&[("g", "1e300")], "apparatus.g", &["τ"]),
+        (&[("stiffness", "1e300")], "apparatus.stiffness", &["τ"]),
+        (
+            &[("g", "1e300"), ("duration", "1e12")],
+            "apparatus.duration",
+            &["no step that any scheme keeps stable", "at most"],
+        ),
+        (&[("g", "5e-324")], "apparatus.g", &["τ"]),
+        (
+            &[("stiffness", "1.0"), ("g", "5e-324")],
+            "apparatus.g",
+            &["G = m g/(k s) = 0"],
+        ),
+        (&[("s", "1e300")], "apparatus.b", &["b/s", "6e-300"]),
+    ];
+    for (edits, key, needles) in cases {
+        let file = apparatus_with(&dir, edits);
+        let err = bad_input(&["render", &file, "--check"], needles);
+        let located = format!("hostile.toml:");
+        assert!(
+            err.contains(&located) && err.contains(&format!(": {key}: ")),
+            "{edits:?}: {err}"
+        );
+        assert!(!err.contains("dt = "), "{edits:?}: advice about dt: {err}");
+        assert!(
+            err.len() < 600,
+            "{edits:?}: {} characters: {err}",
+            err.len()
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -221,8 +221,8 @@ fn npz_reads_back_equal_to_the_csv_at_the_same_times() {
     // Energies from the state (docs/model.md, m = 1): kinetic
     // ½(Ẋ²+Ẏ²)+½Iθ̇², gravitational −GΣX, and the total is their sum with
     // the elastic energy.
-    let inertia = report["inertia"].as_f64().unwrap();
-    let gravity = report["gravity"].as_f64().unwrap();
+    let inertia = report["model"]["inertia"].as_f64().unwrap();
+    let gravity = report["model"]["gravity"].as_f64().unwrap();
     let mut moving = false;
     for k in 0..samples {
         let kinetic: f64 = (0..n)

@@ -193,8 +193,8 @@ fn auto_runs_a_hundred_thousand_blocks() {
     let out = ladder(&args);
     assert_eq!(out.status.code(), Some(0), "{}", stderr_of(&out));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!(v["n"], 100_000);
-    assert_eq!(v["integrator"], "verlet");
+    assert_eq!(v["model"]["n"], 100_000);
+    assert_eq!(v["integrator"]["name"], "verlet");
     assert_eq!(v["arrival_times"].as_array().unwrap().len(), 100_000);
     // A ladder past the largest N is one line.
     let args = ["simulate", "--n", "100001", "--integrator", "auto"];
@@ -218,7 +218,7 @@ fn auto_at_five_thousand_blocks_needs_no_dense_matrix() {
     assert_eq!(out.status.code(), Some(0), "{}", stderr_of(&out));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     // ω_max ≈ 2.57 allows auto's largest step, 0.25, checked at half of it.
-    let dt = v["dt"].as_f64().unwrap();
+    let dt = v["integrator"]["dt"].as_f64().unwrap();
     assert!(dt > 0.1 && dt <= 0.25, "dt = {dt}");
 }
 

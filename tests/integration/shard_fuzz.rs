@@ -143,10 +143,14 @@ proptest! {
                 let runs: Vec<usize> = records.iter().map(|r| r.run).collect();
                 prop_assert_eq!(runs, (0..plan.len()).collect::<Vec<_>>());
                 prop_assert_eq!(plan.len(), truth.len());
-                // Ten arrival times (N = 10) of 1.0 τ are as sane as any:
-                // a changed value too, not a malformed record.
+                // Only the values no rule derives (the step, the count of
+                // force evaluations, and a stopped run's t_decided, any
+                // check time after its last arrival and within the cap)
+                // can change and still be taken: every other field is
+                // checked against the run's own arrival times and the
+                // outcome rule.
                 let values_changed = ms.iter().any(|m| {
-                    matches!(m, Mutation::Field(..) | Mutation::Arrivals(_, 10))
+                    matches!(m, Mutation::Field(_, "dt" | "force_evals" | "t_decided", _))
                 });
                 for (r, t) in records.iter().zip(&truth) {
                     let got = serde_json::to_value(r).unwrap();
@@ -166,4 +170,92 @@ proptest! {
             Err(e) => prop_assert!(false, "not bad input: {}", e),
         }
     }
+}
+
+/// The genuine file of `genuine()` with `edit` applied, gathered from the
+/// command line: exit 2, one line naming the file and `field`.
+fn refused_by_gather(edit: impl FnOnce(&mut Value), field: &str) {
+    let mut v = genuine().clone();
+    edit(&mut v);
+    let dir = TempDir::new("edited");
+    std::fs::create_dir_all(dir.join("shards")).unwrap();
+    std::fs::write(
+        dir.join("shards").join(FILE),
+        serde_json::to_vec(&v).unwrap(),
+    )
+    .unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(["sweep", "gather", dir.path().to_str().unwrap()])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{field}: {err}");
+    assert_eq!(err.trim().lines().count(), 1, "{field}: {err}");
+    assert!(err.contains(FILE) && err.contains(field), "{field}: {err}");
+    assert!(!dir.join("sweep-fz.csv").exists(), "{field}: wrote a CSV");
+}
+
+/// Shards edited to say what their own arrival times do not (before,
+/// `sweep gather` exited 0 on each, and wrote a t_decided of 1e300 into
+/// the CSV as a 301-digit number); and a shard of another version.
+#[test]
+fn every_field_of_a_shard_is_checked_against_its_own_arrivals() {
+    // Find a run whose chain flipped (a propagated kink or stalled wave)
+    // and one pinned.
+    let recs = genuine()["records"].as_array().unwrap();
+    let flipped = recs
+        .iter()
+        .position(|r| r["blocks_flipped"].as_u64().unwrap() > 2)
+        .expect("a run that flipped more than 2 blocks");
+    let i = flipped;
+    refused_by_gather(
+        |v| v["records"][i]["outcome"] = "pinned".into(),
+        "outcome pinned",
+    );
+    refused_by_gather(
+        |v| v["records"][i]["blocks_flipped"] = 2.into(),
+        "blocks_flipped 2",
+    );
+    refused_by_gather(|v| v["records"][i]["speed"] = 99.0.into(), "speed 99");
+    refused_by_gather(
+        |v| v["records"][i]["t_decided"] = 1e300.into(),
+        "t_decided 1e300",
+    );
+    refused_by_gather(|v| v["version"] = "0.0.1".into(), "version");
+    refused_by_gather(|v| v["program"] = "other".into(), "version");
+}
+
+/// A chunk made for another sweep (an executor's cache of an earlier
+/// sweep) is refused by the check the Python executor's merge makes:
+/// `shard::check_chunk` and `shard::gather_for` check against the plan the
+/// caller made, not the one the chunk names.
+#[test]
+fn a_chunk_of_another_sweep_is_refused_by_the_callers_plan() {
+    use jacobs_ladder::sweep::shard::ShardFile;
+    let bytes = serde_json::to_vec(genuine()).unwrap();
+    let file: ShardFile = serde_json::from_slice(&bytes).unwrap();
+    let own = jacobs_ladder::sweep::Plan::new(&file.scene, 1000)
+        .unwrap()
+        .unwrap();
+    assert!(shard::check_chunk(&own, "chunk 1", &bytes).is_ok());
+    let mut other_scene = file.scene.clone();
+    other_scene.model.gamma = 0.03;
+    let other = jacobs_ladder::sweep::Plan::new(&other_scene, 1000)
+        .unwrap()
+        .unwrap();
+    let e = shard::check_chunk(&other, "chunk 1", &bytes)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("chunk 1: ") && e.contains("fingerprint"),
+        "{e}"
+    );
+    let dir = TempDir::new("foreign-chunk");
+    std::fs::create_dir_all(dir.join("shards")).unwrap();
+    std::fs::write(dir.join("shards").join(FILE), &bytes).unwrap();
+    let e = shard::gather_for(dir.path(), &other, 1000)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains(FILE) && e.contains("fingerprint"), "{e}");
+    assert!(shard::gather_for(dir.path(), &own, 1000).is_ok());
 }

@@ -149,3 +149,33 @@ alpha = [55, 60, 65, 70]
     assert!(json::estimate(&plan).json > whole as f64);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The first chunk of a sweep counted against a cap on bytes is one run a
+/// core, and the chunks grow within the room the cap leaves, so the sweep
+/// stops soon after the run that passes the cap (before, the first chunk
+/// was the whole sweep: the many-waves sweep stopped only after all its
+/// runs, 33 times past its estimate).
+#[test]
+fn a_sweep_stops_soon_after_the_run_that_passes_the_cap() {
+    let fresh = tmp("waves-whole");
+    let once = many_waves(&fresh, "1e8");
+    assert!(once.status.success(), "{}", stderr(&once));
+    let json = std::fs::metadata(fresh.join("sweep-m.json")).unwrap().len() as f64;
+    let per_run = json / 151.0;
+    let out = tmp("waves-first-chunk");
+    // Past the estimate before work (1.4e6), so the runs start.
+    let cap = 2e6;
+    let o = many_waves(&out, "2e6");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let kept = shard_records(&out) as f64;
+    // The runs the cap holds, and a few runs more (the runs a run's bytes
+    // differ by, and one chunk of one run a core).
+    let holds = cap / per_run;
+    println!("kept {kept} runs; the cap holds about {holds:.0} at {per_run:.0} bytes a run");
+    assert!(
+        kept <= 2.0 * holds + 8.0,
+        "kept {kept}, the cap holds {holds:.0}"
+    );
+    let _ = std::fs::remove_dir_all(&out);
+    let _ = std::fs::remove_dir_all(&fresh);
+}

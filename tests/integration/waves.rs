@@ -361,7 +361,15 @@ fn the_rest_proof_decides_stability_by_the_hessian() {
     // Without gravity the ground state is an equilibrium with zero force
     // whose springs-only Hessian CᵀC has N − 1 zero modes (3(N − 1) free
     // coordinates, 2(N − 1) springs): marginal, never proved.
-    let flat = Params::new(10, 1.3, 60.0, 0.02, 0.0, 0.25).unwrap();
+    let flat = Params::paper(60.0)
+        .unwrap()
+        .with_n(10)
+        .with_b(1.3)
+        .with_gamma(0.02)
+        .with_gravity(0.0)
+        .with_inertia(0.25)
+        .validated()
+        .unwrap();
     let ladder = Ladder::new(flat);
     let q = ladder.ground_state();
     let v = vec![0.0; q.len()];

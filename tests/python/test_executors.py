@@ -197,11 +197,6 @@ def say_decided_late(d):
     propagated(d)["t_decided"] = 1e300
 
 
-# The records' checks against their own arrivals and the outcome rules are
-# the shard format's (`ShardFile::validate`), being added beside this work:
-# until they land these are expected to fail, and strict, so that a pass
-# is noticed and the mark removed.
-@pytest.mark.xfail(strict=True, reason="the shard format's record checks are not in yet")
 @pytest.mark.parametrize("change", [say_pinned, say_two_flipped, say_speed_99, say_decided_late])
 def test_a_chunk_with_an_edited_record_is_refused(change):
     """Each record is checked against its own arrival times and the

@@ -111,6 +111,7 @@ def test_an_apparatus_run_gives_seconds_and_cm_per_s_beside_the_models_units():
     # The figures' fit over the lower half (blocks 6..10), as cm/s too.
     assert 0 < run.bulk_speed < 1
     assert run.bulk_speed_cm_s == pytest.approx(run.bulk_speed * c["cm_per_s"], rel=1e-12)
+    assert run.record["units"]["speed_cm_s"] == run.speed_cm_s
     # The bulk fit is the figures' line (the data file's `apparatus.bulk`).
     fit = run.bulk_fit
     assert fit["blocks"] == [6, 10] and fit["speed_cm_s"] == run.bulk_speed_cm_s

@@ -3,10 +3,13 @@
 //! options; nothing here builds physics.
 
 use crate::scene::Model;
+use crate::scene::params::Param;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
+mod params;
 mod sweep;
+pub use params::{GridFlags, ParamFlags};
 pub use sweep::{GridArgs, SweepArgs, SweepCommand};
 
 #[derive(Parser, Debug)]
@@ -51,16 +54,23 @@ pub struct LimitArgs {
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Limits (docs/limits.md)")]
 pub struct SimLimitArgs {
-    /// Most steps × N of one simulation (about 10 ns each) [default: 1e10]
-    #[arg(long, value_name = "X")]
+    // Most steps × N of one simulation.
+    #[arg(long, value_name = "X", help = with_default(
+        "Most steps × N of one simulation (about 10 ns each)",
+        limits().block_steps,
+    ))]
     pub max_block_steps: Option<f64>,
-    /// Most samples × N kept of one simulation (48 bytes each in memory)
-    /// [default: 5e7]
-    #[arg(long, value_name = "X")]
+    // Most samples × N kept of one simulation.
+    #[arg(long, value_name = "X", help = with_default(
+        "Most samples × N kept of one simulation (48 bytes each in memory)",
+        limits().block_samples,
+    ))]
     pub max_block_samples: Option<f64>,
-    /// Most bytes of one data file (<output>.json), estimated before any
-    /// work [default: 2e9]
-    #[arg(long, value_name = "X")]
+    // Most bytes of one data file.
+    #[arg(long, value_name = "X", help = with_default(
+        "Most bytes of one data file (<output>.json), estimated before any work",
+        limits().data_bytes,
+    ))]
     pub max_data_bytes: Option<f64>,
 }
 
@@ -69,8 +79,11 @@ pub struct SimLimitArgs {
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Limits (docs/limits.md)")]
 pub struct DataLimitArgs {
-    /// Most bytes of one data file (the sweep's .json or .csv) [default: 2e9]
-    #[arg(long, value_name = "X")]
+    // Most bytes of one data file.
+    #[arg(long, value_name = "X", help = with_default(
+        "Most bytes of one data file (the sweep's .json or .csv)",
+        limits().data_bytes,
+    ))]
     pub max_data_bytes: Option<f64>,
 }
 
@@ -78,8 +91,11 @@ pub struct DataLimitArgs {
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Limits (docs/limits.md)")]
 pub struct PixelLimitArgs {
-    /// Most frames × width × height of one movie [default: 5e9]
-    #[arg(long, value_name = "X")]
+    // Most frames × pixels of one movie.
+    #[arg(long, value_name = "X", help = with_default(
+        "Most frames × width × height of one movie",
+        limits().movie_pixels,
+    ))]
     pub max_pixels: Option<f64>,
 }
 
@@ -87,9 +103,11 @@ pub struct PixelLimitArgs {
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Limits (docs/limits.md)")]
 pub struct TheoryLimitArgs {
-    /// Most estimated operations of one theory figure (about 1 ns each;
-    /// Fig. 2d at N = 20000 is 5.2e10) [default: 6e10]
-    #[arg(long, value_name = "X")]
+    // Most operations of one theory figure.
+    #[arg(long, value_name = "X", help = with_default(
+        "Most estimated operations of one theory figure (about 1 ns each; Fig. 2d at N = 20000 is 5.2e10)",
+        limits().theory_work,
+    ))]
     pub max_theory_work: Option<f64>,
 }
 
@@ -104,6 +122,7 @@ impl Command {
             Self::Render(a) => (Some(&a.limits), Some(&a.pixel_limits)),
             Self::All(a) => (Some(&a.limits), Some(&a.pixel_limits)),
             Self::Sweep(a) => (Some(&a.limits), None),
+            Self::Bench(a) => (Some(&a.limits), None),
             _ => (None, None),
         };
         LimitArgs {
@@ -185,27 +204,10 @@ pub struct OutArgs {
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Model (defaults: the paper's values)")]
 pub struct ModelArgs {
-    /// Equilibrium angle alpha in degrees, 0 < |alpha| < 90; its sign picks
-    /// the ground state (alpha > 0 launches a kink, alpha < 0 an antikink)
-    /// [default: 60]
-    #[arg(long, value_name = "DEG")]
-    pub alpha: Option<f64>,
-    /// Number of blocks N, 2 to 100000 [default: 10]
-    #[arg(long, value_name = "N")]
-    pub n: Option<usize>,
-    /// Rest length b of the B springs, in units of the block length s,
-    /// 1e-3 to 1e3 [default: 1.3]
-    #[arg(long, value_name = "B")]
-    pub b: Option<f64>,
-    /// Damping gamma (force -gamma*dX/dt, torque -gamma*r^2*dtheta/dt) [default: 0.02]
-    #[arg(long, value_name = "G")]
-    pub gamma: Option<f64>,
-    /// Gravity G = mg/(ks) [default: 2e-4]
-    #[arg(long, value_name = "G")]
-    pub gravity: Option<f64>,
-    /// Moment of inertia I of a block, in units of m s^2, 1e-6 to 1e6 [default: 0.25]
-    #[arg(long, value_name = "I")]
-    pub inertia: Option<f64>,
+    /// `--alpha`, `--n`, `--b`, `--gamma`, `--gravity`, `--inertia`: one
+    /// flag per parameter of the model's table (`model::table`).
+    #[command(flatten)]
+    pub params: ParamFlags,
     /// How the run starts: ground (at rest, springs at rest length) or
     /// relaxed (at rest hanging under gravity, block 1 clamped) [default: ground]
     #[arg(long, value_name = "START")]
@@ -239,12 +241,15 @@ pub enum StartArg {
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Drive of block 1")]
 pub struct DriveArgs {
-    /// Time T_d each flip of block 1 takes (alpha -> -alpha, then back) [default: 1000]
-    #[arg(long, value_name = "TD")]
+    // The drive time T_d (the table's `drive_time`)
+    #[arg(long, value_name = Param::DriveTime.spec().value_name, help = Param::DriveTime.help(true))]
     pub drive_time: Option<f64>,
-    /// Start times of the flips of block 1, comma-separated; each flip turns
-    /// it to the other ground state over the drive time [default: 0]
-    #[arg(long, value_name = "T1,T2,..", value_delimiter = ',', num_args = 1..)]
+    // Start times of the flips of block 1.
+    #[arg(long, value_name = "T1,T2,..", value_delimiter = ',', num_args = 1..,
+          help = with_default(
+              "Start times of the flips of block 1, comma-separated; each flip turns it to the other ground state over the drive time",
+              crate::scene::Flip::default().start,
+          ))]
     pub flips: Option<Vec<f64>>,
     /// Turn block 1 back (-alpha -> alpha) from T as well: the same as --flips 0,T
     #[arg(long, value_name = "T", conflicts_with = "flips")]
@@ -255,15 +260,20 @@ pub struct DriveArgs {
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Run")]
 pub struct RunArgs {
-    /// End time, in units of tau = sqrt(m/k)
+    /// End time, in units of tau = sqrt(m/k), or auto (until every wave
+    /// has a fate) [default: the scene's; auto for your own]
     #[arg(long, value_name = "T")]
     pub t_end: Option<f64>,
     /// auto (choose the method and step, then verify the arrival times to
-    /// --tolerance), explicit-euler, symplectic-euler, verlet, rk4, or dopri5
+    /// --tolerance), explicit-euler, symplectic-euler (the paper's),
+    /// verlet, rk4, or dopri5 [default: the scene's; auto for your own]
     #[arg(long, value_name = "NAME")]
     pub integrator: Option<String>,
-    /// Time step of a fixed-step integrator (first trial step for dopri5) [default: 0.01]
-    #[arg(long, value_name = "DT")]
+    // The step of a fixed-step integrator.
+    #[arg(long, value_name = "DT", help = with_default(
+        "Time step of a fixed-step integrator (first trial step for dopri5); auto picks its own",
+        crate::scene::DEFAULT_DT,
+    ))]
     pub dt: Option<f64>,
     #[command(flatten)]
     pub tol: ToleranceArgs,
@@ -273,66 +283,99 @@ pub struct RunArgs {
 /// that flattens them ("Run").
 #[derive(Args, Debug, Clone, Default)]
 pub struct ToleranceArgs {
-    /// Error tolerance of dopri5 (relative and absolute) [default: 1e-6]
-    #[arg(long, value_name = "R")]
+    // The tolerance of dopri5.
+    #[arg(long, value_name = "R", help = with_default(
+        "Error tolerance of dopri5 (relative and absolute)",
+        crate::scene::DEFAULT_RTOL,
+    ))]
     pub rtol: Option<f64>,
-    /// Largest arrival-time error auto accepts, in tau [default: 0.1]
-    #[arg(long, value_name = "T")]
+    // The tolerance of auto.
+    #[arg(long, value_name = "T", help = with_default(
+        "Largest arrival-time error auto accepts, in tau",
+        crate::scene::Run::default().tolerance,
+    ))]
     pub tolerance: Option<f64>,
 }
 
 #[derive(Args, Debug)]
-#[command(allow_negative_numbers = true)]
+#[command(
+    allow_negative_numbers = true,
+    // The run flags' defaults are `simulate`'s ([`simulate_run`]).
+    mut_arg("t_end", |a| a.help(with_default(
+        "End time, in units of tau = sqrt(m/k)",
+        simulate_run().t_end,
+    ))),
+    mut_arg("integrator", |a| a.help(with_default(
+        "explicit-euler, symplectic-euler (the paper's), verlet, rk4, dopri5, or auto \
+         (velocity Verlet with its step chosen and verified to --tolerance)",
+        simulate_run().integrator,
+    ))),
+)]
 pub struct SimulateArgs {
     #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
     pub drive: DriveArgs,
-    /// End time, in units of tau = sqrt(m/k)
-    #[arg(long, value_name = "T", default_value_t = 4000.0, help_heading = "Run")]
-    pub t_end: f64,
-    /// explicit-euler, symplectic-euler (the paper's), verlet, rk4, dopri5,
-    /// or auto (velocity Verlet with its step chosen and verified to
-    /// --tolerance)
-    #[arg(
-        long,
-        value_name = "NAME",
-        default_value = "symplectic-euler",
-        help_heading = "Run"
-    )]
-    pub integrator: String,
-    /// Time step (first trial step for dopri5); auto picks its own
-    #[arg(long, value_name = "DT", help_heading = "Run")]
-    pub dt: Option<f64>,
+    /// --t-end, --integrator, --dt, --rtol and --tolerance, defaults
+    /// [`simulate_run`]'s.
+    #[command(flatten)]
+    pub run: RunArgs,
     /// Print one JSON object instead of a table
-    #[arg(long)]
+    #[arg(long, help_heading = "Output")]
     pub json: bool,
     /// Write theta_n(t) in degrees (wrapped to (-180, 180]) at the sample
     /// times to this CSV file, and its provenance (program, version,
     /// commit, scene) to the JSON sidecar FILE.json
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", help_heading = "Output")]
     pub csv: Option<PathBuf>,
     /// Write the whole state at the sample times to this NumPy .npz file: t,
     /// theta (radians), x, y, vx, vy, omega (samples x N), the energies and
     /// metadata (the file's provenance, JSON text)
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", help_heading = "Output")]
     pub npz: Option<PathBuf>,
     /// Interval between CSV and npz samples, in tau
-    #[arg(long, default_value_t = 10.0, value_name = "T")]
+    #[arg(
+        long,
+        default_value_t = 10.0,
+        value_name = "T",
+        help_heading = "Output"
+    )]
     pub sample_every: f64,
     /// Code that takes symplectic Euler's steps (the other integrators use
     /// the portable loop): the fused kernel (N <= 32) or the chain kernel
     /// (longer ladders) for the best instruction set of this CPU, the one
     /// for a given set, or the portable loop. All give the same numbers,
     /// bit for bit; only the time differs
-    #[arg(long, value_enum, default_value_t = KernelArg::Fastest, value_name = "KERNEL")]
+    #[arg(long, value_enum, default_value_t = KernelArg::Fastest, value_name = "KERNEL", help_heading = "Output")]
     pub kernel: KernelArg,
-    /// --rtol and --tolerance, last: the heading they set ("Run") would
-    /// otherwise carry over to the flags after them.
-    #[command(flatten, next_help_heading = "Run")]
-    pub tol: ToleranceArgs,
     #[command(flatten)]
     pub limits: SimLimitArgs,
+}
+
+/// The window and integrator of `ladder simulate` where its flags give
+/// none: the paper's run, [0, 4000 τ] with symplectic Euler at dt =
+/// 0.01 (`Run::default`'s window; the paper's integrator, not `auto`).
+pub fn simulate_run() -> crate::scene::Run {
+    crate::scene::Run {
+        integrator: crate::scene::Method::Fixed(crate::sim::IntegratorKind::SymplecticEuler),
+        ..crate::scene::Run::default()
+    }
+}
+
+/// The caps' defaults (`Limits::default`), for help texts.
+fn limits() -> crate::limits::Limits {
+    crate::limits::Limits::default()
+}
+
+/// A help text with its default read from the program: "TEXT [default:
+/// VALUE]" (2e-4, 1e10: exponent form where shorter).
+fn with_default(text: &str, value: impl std::fmt::Display) -> String {
+    let v = value.to_string();
+    let v = match v.parse::<f64>() {
+        Ok(x) => crate::model::table::short(x),
+        Err(_) => v,
+    };
+    format!("{text} [default: {v}]")
 }
 
 /// `simulate --kernel`.
@@ -347,13 +390,13 @@ pub enum KernelArg {
 #[derive(Args, Debug, Clone)]
 pub struct MovieFormat {
     /// Frames per movie (2..=5000)
-    #[arg(long, default_value_t = 200, help_heading = "Movie format")]
+    #[arg(long, default_value_t = render_defaults().frames, help_heading = "Movie format")]
     pub frames: usize,
     /// Frame size WxH in pixels, each side 64 to 4096
     #[arg(long, default_value = crate::front::options::DEFAULT_SIZE, value_name = "WxH", value_parser = crate::front::options::parse_size, help_heading = "Movie format")]
     pub size: (u32, u32),
     /// Frames per second
-    #[arg(long, default_value_t = 25.0, help_heading = "Movie format")]
+    #[arg(long, default_value_t = render_defaults().fps, help_heading = "Movie format")]
     pub fps: f64,
     /// Quality of MP4 movies: draft, standard, high or best (H.264
     /// quantiser 30, 24, 18, 12; each step about 1.5 to 2 times the bytes;
@@ -361,7 +404,7 @@ pub struct MovieFormat {
     #[arg(
         long,
         value_enum,
-        default_value_t = QualityArg::High,
+        default_value_t = QualityArg::of(render_defaults().quality),
         value_name = "LEVEL",
         help_heading = "Movie format"
     )]
@@ -375,6 +418,25 @@ pub enum QualityArg {
     Standard,
     High,
     Best,
+}
+
+impl QualityArg {
+    /// The flag's word for the encoder's level.
+    pub fn of(q: crate::encode::Mp4Quality) -> Self {
+        use crate::encode::Mp4Quality as Q;
+        match q {
+            Q::Draft => Self::Draft,
+            Q::Standard => Self::Standard,
+            Q::High => Self::High,
+            Q::Best => Self::Best,
+        }
+    }
+}
+
+/// The render options' defaults (`front::options::RenderOptions`, which
+/// holds every one), for the flags' defaults.
+fn render_defaults() -> crate::front::options::RenderOptions {
+    crate::front::options::RenderOptions::default()
 }
 
 #[derive(Args, Debug)]
@@ -408,7 +470,7 @@ pub struct MovieArgs {
     /// (png if none)
     #[arg(
         long = "format",
-        default_value = "gif",
+        default_value_t = crate::scenes::Outputs::default().movies.to_string(),
         value_name = "LIST",
         help_heading = "Movie format"
     )]
@@ -417,7 +479,7 @@ pub struct MovieArgs {
     /// way (0.25..=8)
     #[arg(
         long,
-        default_value_t = 1.0,
+        default_value_t = render_defaults().scale,
         value_name = "S",
         help_heading = "Movie format"
     )]
@@ -477,7 +539,7 @@ pub struct FigureFormat {
     /// with real text; pdflatex includes the PDF)
     #[arg(
         long = "format",
-        default_value = "png",
+        default_value_t = crate::scenes::Outputs::default().figures.to_string(),
         value_name = "LIST",
         help_heading = "Figure format"
     )]
@@ -486,7 +548,7 @@ pub struct FigureFormat {
     /// each way (0.25..=8)
     #[arg(
         long,
-        default_value_t = 1.0,
+        default_value_t = render_defaults().scale,
         value_name = "S",
         help_heading = "Figure format"
     )]
@@ -533,14 +595,14 @@ pub struct MixedFormat {
     /// for movies (a kind left out keeps its default, png or gif)
     #[arg(
         long = "format",
-        default_value = "png,gif",
+        default_value_t = render_defaults().formats,
         value_name = "LIST",
         help_heading = "Format"
     )]
     pub formats: String,
     /// Scale of PNG figures: 2 draws the same layout with twice the pixels
     /// each way (0.25..=8)
-    #[arg(long, default_value_t = 1.0, value_name = "S", help_heading = "Format")]
+    #[arg(long, default_value_t = render_defaults().scale, value_name = "S", help_heading = "Format")]
     pub scale: f32,
     #[command(flatten)]
     pub style: StyleArgs,
@@ -607,18 +669,27 @@ pub struct AllArgs {
 #[derive(Args, Debug)]
 #[command(allow_negative_numbers = true)]
 pub struct TheoryArgs {
-    /// Equilibrium angle alpha in degrees, 0 <= |alpha| <= 90
-    #[arg(long, default_value_t = Model::default().alpha, value_name = "DEG")]
+    // The table's `alpha` (|alpha| <= 90: the theory takes 0 and 90)
+    #[arg(long, default_value_t = Model::default().alpha, value_name = Param::Alpha.spec().value_name,
+          help = theory_help(Param::Alpha, &Param::Alpha.spec().range_text(false)))]
     pub alpha: f64,
-    /// Rest length b of the B springs, in units of s, 1e-3 to 1e3
-    #[arg(long, default_value_t = Model::default().b)]
+    // The table's `b`
+    #[arg(long, default_value_t = Model::default().b, value_name = Param::B.spec().value_name,
+          help = theory_help(Param::B, &Param::B.spec().range_text(false)))]
     pub b: f64,
-    /// Number of blocks N of the finite chain (2..=400)
-    #[arg(long, default_value_t = Model::default().n)]
+    // The table's `n`, up to the theory's largest chain
+    #[arg(long, default_value_t = Model::default().n, value_name = Param::N.spec().value_name,
+          help = theory_help(Param::N, &format!("from 2 to {}", crate::limits::MAX_THEORY_BLOCKS)))]
     pub n: usize,
     /// Print one JSON object instead of a table
     #[arg(long)]
     pub json: bool,
+}
+
+/// A theory flag's help: the table's words and the theory's range
+/// (clap adds the default).
+fn theory_help(p: Param, range: &str) -> String {
+    format!("{}, {range}", p.spec().doc)
 }
 
 #[derive(Args, Debug)]
@@ -648,4 +719,7 @@ pub struct BenchArgs {
     /// Window of a built-in movie's study, in tau [default: the movie's]
     #[arg(long, value_name = "T")]
     pub t_end: Option<f64>,
+    /// The caps on the study's runs, all its runs together
+    #[command(flatten)]
+    pub limits: SimLimitArgs,
 }

@@ -76,29 +76,11 @@ pub enum SweepCommand {
     },
 }
 
-/// The grid: each flag a range START:STOP:STEP or a comma list.
+/// The grid: one flag per parameter of the table (`model::table`), each
+/// a range START:STOP:STEP or a comma list.
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Grid (each a value, START:STOP:STEP inclusive, or a comma list)")]
 pub struct GridArgs {
-    /// Equilibrium angle alpha in degrees (negative: antikink)
-    #[arg(long, value_name = "RANGE", allow_hyphen_values = true)]
-    pub alpha: Option<String>,
-    /// Number of blocks N
-    #[arg(long, value_name = "RANGE", allow_hyphen_values = true)]
-    pub n: Option<String>,
-    /// Rest length b of the B springs, in units of s
-    #[arg(long, value_name = "RANGE", allow_hyphen_values = true)]
-    pub b: Option<String>,
-    /// Damping gamma
-    #[arg(long, value_name = "RANGE", allow_hyphen_values = true)]
-    pub gamma: Option<String>,
-    /// Gravity G = mg/(ks)
-    #[arg(long, value_name = "RANGE", allow_hyphen_values = true)]
-    pub gravity: Option<String>,
-    /// Moment of inertia I, in units of m s^2
-    #[arg(long, value_name = "RANGE", allow_hyphen_values = true)]
-    pub inertia: Option<String>,
-    /// Duration T_d of each flip of block 1, in tau
-    #[arg(long, value_name = "RANGE", allow_hyphen_values = true)]
-    pub drive_time: Option<String>,
+    #[command(flatten)]
+    pub axes: super::GridFlags,
 }

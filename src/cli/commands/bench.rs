@@ -45,6 +45,15 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<()> {
     }
 }
 
+/// The caps of the study's flags (`--max-block-steps`).
+fn study_limits(args: &BenchArgs) -> Result<crate::limits::Limits> {
+    crate::cli::args::LimitArgs {
+        max_block_steps: args.limits.max_block_steps,
+        ..Default::default()
+    }
+    .caps()
+}
+
 pub(crate) fn bench_kernels(args: &BenchArgs) -> Result<()> {
     let runs = args.repeats * crate::bench::kernels::kernel_count();
     let bar = progress_bar(runs as u64, "kernels");
@@ -63,6 +72,7 @@ pub(crate) fn bench_work_precision(args: &BenchArgs) -> Result<()> {
         "paper" => vec![BenchScene::paper(60.0)?, BenchScene::paper(-60.0)?],
         id => vec![BenchScene::movie(id, args.t_end, 200)?],
     };
+    bench::check_work_precision_cost(&scenes, args.repeats, &study_limits(args)?)?;
     let total: usize = scenes.len()
         * IntegratorKind::ALL
             .iter()
@@ -109,6 +119,7 @@ pub(crate) fn bench_stability(args: &BenchArgs) -> Result<()> {
     use crate::bench;
     if args.scene != "paper" {
         let scene = bench::BenchScene::movie(&args.scene, args.t_end, 0)?;
+        bench::check_stability_cost(&scene, &study_limits(args)?)?;
         let bar = progress_bar(IntegratorKind::ALL.len() as u64, "stability");
         let report = bench::stability_of_scene(&scene, &ticker(&bar))?;
         bar.finish_and_clear();

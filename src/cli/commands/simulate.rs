@@ -14,8 +14,10 @@ use crate::sim;
 use serde::Serialize;
 use std::time::Instant;
 
-/// `simulate --json` (README.md), with what reruns it:
-/// the program, its build, the command line and the scene.
+/// `simulate --json` (README.md): what reruns it (the program, its
+/// build, the command line and the scene), then the run in the one shape
+/// every run is reported in ([`scenes::data::RunData`]: a data file's
+/// runs and Python's `Run.record` alike), then the wall time.
 #[derive(Serialize, Debug)]
 pub struct SimulateReport<'a> {
     #[serde(flatten)]
@@ -23,39 +25,12 @@ pub struct SimulateReport<'a> {
     /// The scene run, every value (a data scene: `ladder scene` writes it
     /// as TOML, `ladder render` reruns it).
     pub scene: &'a Scene,
-    pub alpha_deg: f64,
-    pub n: usize,
-    pub b: f64,
-    pub a: f64,
-    pub gamma: f64,
-    pub gravity: f64,
-    pub inertia: f64,
-    /// The scheme that made the numbers below.
-    pub integrator: String,
-    /// `auto` when the program chose it.
-    pub requested_integrator: String,
-    pub dt: f64,
-    pub rtol: Option<f64>,
-    /// `auto` only: estimated largest error of the arrival times, in τ.
-    pub arrival_error: Option<f64>,
-    pub t_end: f64,
-    pub drive_time: f64,
-    pub flips: Vec<f64>,
-    pub steps: u64,
-    pub force_evals: u64,
+    /// The run: the model, drive and window it used, the integrator, the
+    /// arrival times, speed, final angles and waves (and in seconds and
+    /// cm/s where an apparatus gives units).
+    #[serde(flatten)]
+    pub run: scenes::data::RunData,
     pub wall_seconds: f64,
-    /// The first wave's arrival times (per block, the first sign change).
-    pub arrival_times: Vec<Option<f64>>,
-    /// The wave speed c, blocks per τ (`sim::speed::wave_speed`: the
-    /// one definition, also a run's, figure S6's and a sweep's); `null`
-    /// when too few blocks flipped in order.
-    pub speed: Option<f64>,
-    /// Of blocks 1..N − 1, how many flipped (block N, free, apart: as a
-    /// sweep counts).
-    pub blocks_flipped: usize,
-    pub final_theta_deg: Vec<f64>,
-    /// Every wave of the run and block N's fate (docs/sweeps.md).
-    pub waves: crate::sim::waves::Waves,
     /// A scene with "stiff" links: how far the wave moves with 2k
     /// (`scenes::stiff`).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -64,29 +39,10 @@ pub struct SimulateReport<'a> {
 
 pub(crate) fn simulate(args: &SimulateArgs, call: &Call<'_>) -> Result<()> {
     let command_line = call.command_line;
-    let run = RunArgs {
-        t_end: Some(args.t_end),
-        integrator: Some(args.integrator.clone()),
-        dt: args.dt,
-        tol: args.tol.clone(),
-    };
-    let base = Scene {
-        output: scene::OutputSpec::Data,
-        ..Scene::default()
-    };
-    let method = convert::parse_method(&args.integrator)?;
-    if args.dt.is_some() && method == scene::Method::Auto {
-        return Err(Error::bad_input(
-            "--dt: the auto integrator picks its own step; name an integrator to set --dt",
-        ));
-    }
-    let scene = call.capped_one(convert::scene_from_flags(
-        base,
-        &args.model,
-        &args.drive,
-        &run,
-    )?);
+    let scene = call.capped_one(simulate_scene(args)?);
     let samples = csv_samples(args, &scene)?;
+    // The "stiff" links' second run, before the first (`scenes::stiff`).
+    scenes::stiff::check_cost(&scene, 0)?;
     let stepping = args.kernel.stepping()?;
     let sidecar = args.csv.as_deref().map(csv_sidecar);
     let targets: Vec<(std::path::PathBuf, String)> = [
@@ -141,29 +97,8 @@ pub(crate) fn simulate(args: &SimulateArgs, call: &Call<'_>) -> Result<()> {
     let report = SimulateReport {
         made_by: scenes::data::MadeBy::new(command_line),
         scene: &scene,
-        alpha_deg: scene.model.alpha,
-        n: params.n,
-        b: params.b,
-        a: params.a(),
-        gamma: params.gamma,
-        gravity: params.gravity,
-        inertia: params.inertia,
-        integrator: result.integrator.name.clone(),
-        requested_integrator: result.integrator.requested.clone(),
-        dt: result.integrator.dt,
-        rtol: result.integrator.rtol,
-        arrival_error: result.integrator.arrival_error,
-        t_end: scene.run.t_end,
-        drive_time: scene.drive.flips.first().map_or(0.0, |f| f.duration),
-        flips: scene.drive.flips.iter().map(|f| f.start).collect(),
-        steps: traj.steps,
-        force_evals: traj.force_evals,
+        run: scenes::data::RunData::summary(&scene, &result),
         wall_seconds,
-        arrival_times: traj.arrival_times.clone(),
-        speed: crate::sim::speed::wave_speed(&traj.arrival_times),
-        blocks_flipped: crate::sweep::outcome::blocks_flipped(&traj.arrival_times),
-        final_theta_deg: traj.final_theta_deg(),
-        waves: traj.waves.clone(),
         stiff_links,
     };
     if let Some(path) = &sidecar {
@@ -181,8 +116,34 @@ pub(crate) fn simulate(args: &SimulateArgs, call: &Call<'_>) -> Result<()> {
     if args.json {
         output::print(&format!("{}\n", to_json(&report)?))
     } else {
-        output::print(&simulate_table(&report))
+        output::print(&simulate_table(&report, &params))
     }
+}
+
+/// The scene of `ladder simulate`: a data scene with `simulate`'s run
+/// ([`simulate_run`]: the paper's window and integrator) under the flags;
+/// the window stays a number (no `auto` window follows a changed N).
+fn simulate_scene(args: &SimulateArgs) -> Result<Scene> {
+    let defaults = simulate_run();
+    let base = Scene {
+        output: scene::OutputSpec::Data,
+        run: defaults,
+        ..Scene::default()
+    };
+    let run = RunArgs {
+        t_end: Some(args.run.t_end.unwrap_or(defaults.t_end)),
+        ..args.run.clone()
+    };
+    let method = match &run.integrator {
+        Some(name) => convert::parse_method(name)?,
+        None => defaults.integrator,
+    };
+    if run.dt.is_some() && method == scene::Method::Auto {
+        return Err(Error::bad_input(
+            "--dt: the auto integrator picks its own step; name an integrator to set --dt",
+        ));
+    }
+    convert::scene_from_flags(base, &args.model, &args.drive, &run)
 }
 
 /// The JSON sidecar of `simulate --csv FILE`: `FILE.json` (`run.csv` →
@@ -208,7 +169,7 @@ pub(crate) fn csv_samples(args: &SimulateArgs, scene: &Scene) -> Result<Vec<f64>
             crate::numfmt::plain(every)
         )));
     }
-    let count = (args.t_end / every).floor() + 1.0;
+    let count = (scene.run.t_end / every).floor() + 1.0;
     scene.limits.check_samples(count, scene.model.n)?;
     let mut times = Vec::new();
     times
@@ -218,22 +179,77 @@ pub(crate) fn csv_samples(args: &SimulateArgs, scene: &Scene) -> Result<Vec<f64>
     Ok(times)
 }
 
-pub(crate) fn simulate_table(r: &SimulateReport) -> String {
-    let step = r
+/// The table of `simulate`: the parameters run (`params`, the model's
+/// derived a) and the integrator, then each block's arrival time and
+/// final angle (and the arrival in seconds, and the speed in cm/s, where
+/// an apparatus gives units).
+pub(crate) fn simulate_table(r: &SimulateReport, params: &crate::model::Params) -> String {
+    let run = &r.run;
+    let i = &run.integrator;
+    let step = i
         .rtol
-        .map_or(format!("dt = {}", r.dt), |x| format!("rtol = {x:e}"));
-    let chosen = match (r.requested_integrator.as_str(), r.arrival_error) {
+        .map_or(format!("dt = {}", i.dt), |x| format!("rtol = {x:e}"));
+    let chosen = match (i.requested.as_str(), i.arrival_error) {
         ("auto", Some(e)) => format!(" (chosen by auto; arrival times within about {e:.2e} τ)"),
         _ => String::new(),
     };
     let mut s = format!(
         "alpha = {}°, N = {}, b = {}, a = {:.6}; {} with {step}{chosen}; {} steps, {} force evaluations, {:.3} s\n",
-        r.alpha_deg, r.n, r.b, r.a, r.integrator, r.steps, r.force_evals, r.wall_seconds
+        run.model.alpha,
+        run.model.n,
+        run.model.b,
+        params.a(),
+        i.name,
+        i.steps,
+        i.force_evals,
+        r.wall_seconds
     );
-    s.push_str("block  arrival t/τ   final θ (deg)\n");
-    for (i, (t, th)) in r.arrival_times.iter().zip(&r.final_theta_deg).enumerate() {
+    match &run.units {
+        None => {
+            s.push_str("block  arrival t/τ   final θ (deg)\n");
+            for (k, (t, th)) in run
+                .arrival_times
+                .iter()
+                .zip(&run.final_theta_deg)
+                .enumerate()
+            {
+                let t = t.map_or("never".to_string(), |t| format!("{t:.2}"));
+                s.push_str(&format!("{:>5}  {:>11}   {:>13.3}\n", k + 1, t, th));
+            }
+        }
+        Some(u) => s.push_str(&units_table(run, u)),
+    }
+    s
+}
+
+/// The table of a run with an apparatus: τ and the speed in its units,
+/// and each block's arrival in τ and in seconds.
+fn units_table(run: &scenes::data::RunData, u: &scenes::data::Units) -> String {
+    let speed = match (run.speed, u.speed_cm_s) {
+        (Some(c), Some(cm)) => format!("{c:.4} blocks/τ = {cm:.2} cm/s"),
+        _ => "none (too few blocks flipped in order)".into(),
+    };
+    let mut s = format!(
+        "τ = {:.4} s; run to {} τ = {:.2} s; wave speed {speed}\n",
+        u.tau_s, run.t_end, u.t_end_s
+    );
+    s.push_str("block  arrival t/τ   arrival t (s)   final θ (deg)\n");
+    for (k, ((t, ts), th)) in run
+        .arrival_times
+        .iter()
+        .zip(&u.arrival_times_s)
+        .zip(&run.final_theta_deg)
+        .enumerate()
+    {
         let t = t.map_or("never".to_string(), |t| format!("{t:.2}"));
-        s.push_str(&format!("{:>5}  {:>11}   {:>13.3}\n", i + 1, t, th));
+        let ts = ts.map_or("never".to_string(), |t| format!("{t:.3}"));
+        s.push_str(&format!(
+            "{:>5}  {:>11}   {:>13}   {:>13.3}\n",
+            k + 1,
+            t,
+            ts,
+            th
+        ));
     }
     s
 }

@@ -6,9 +6,13 @@ use crate::output;
 use crate::scene;
 
 pub(crate) fn theory(args: &TheoryArgs) -> Result<()> {
-    let m = scene::Model::default();
-    let params =
-        crate::model::Params::new(args.n, args.b, args.alpha, m.gamma, m.gravity, m.inertia)?;
+    let params = scene::Model {
+        alpha: args.alpha,
+        n: args.n,
+        b: args.b,
+        ..scene::Model::default()
+    }
+    .params()?;
     let report = crate::theory::TheoryReport::compute(&params)?;
     if args.json {
         output::print(&format!("{}\n", to_json(&report)?))

@@ -14,7 +14,7 @@
 //!
 //! Running it is `crate::sweep`'s job; this module parses and checks.
 
-use super::{DriveSpec, Model, Scene};
+use super::{Model, Scene};
 use serde::de::{self, MapAccess, Visitor};
 use serde::ser::SerializeMap;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -23,126 +23,9 @@ use std::fmt;
 mod values;
 pub use values::{MAX_AXIS_VALUES, Piece, Values, range_values};
 
-/// A parameter a sweep can vary.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Param {
-    /// α in degrees (`[model] alpha`).
-    Alpha,
-    /// N (`[model] n`).
-    N,
-    /// b/s (`[model] b`).
-    B,
-    /// γ (`[model] gamma`).
-    Gamma,
-    /// G (`[model] gravity`).
-    Gravity,
-    /// I in m s² (`[model] inertia`).
-    Inertia,
-    /// T_d, the duration of every flip of block 1 (`[drive] flips`).
-    DriveTime,
-}
-
-impl Param {
-    pub const ALL: [Param; 7] = [
-        Self::Alpha,
-        Self::N,
-        Self::B,
-        Self::Gamma,
-        Self::Gravity,
-        Self::Inertia,
-        Self::DriveTime,
-    ];
-
-    /// The key in a sweep file and the CSV column: `alpha`, `drive_time`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Alpha => "alpha",
-            Self::N => "n",
-            Self::B => "b",
-            Self::Gamma => "gamma",
-            Self::Gravity => "gravity",
-            Self::Inertia => "inertia",
-            Self::DriveTime => "drive_time",
-        }
-    }
-
-    /// The symbol with its unit, for chart axes: "α (°)", "T_d / τ".
-    pub fn label(self) -> &'static str {
-        match self {
-            Self::Alpha => "α (°)",
-            Self::N => "number of blocks N",
-            Self::B => "b / s",
-            Self::Gamma => "damping γ (m/τ)",
-            Self::Gravity => "gravity G = mg/(ks)",
-            Self::Inertia => "moment of inertia I / (m s²)",
-            Self::DriveTime => "drive time T_d / τ",
-        }
-    }
-
-    /// The symbol: α, N, b/s, γ, G, I, T_d.
-    pub fn symbol(self) -> &'static str {
-        match self {
-            Self::Alpha => "α",
-            Self::N => "N",
-            Self::B => "b/s",
-            Self::Gamma => "γ",
-            Self::Gravity => "G",
-            Self::Inertia => "I",
-            Self::DriveTime => "T_d",
-        }
-    }
-
-    pub fn from_name(s: &str) -> Option<Param> {
-        Self::ALL.into_iter().find(|p| p.name() == s)
-    }
-
-    /// The names, for messages: "alpha, n, b, gamma, gravity, inertia or drive_time".
-    pub fn names() -> String {
-        let names: Vec<&str> = Self::ALL.iter().map(|p| p.name()).collect();
-        format!(
-            "{} or {}",
-            names[..names.len() - 1].join(", "),
-            names[names.len() - 1]
-        )
-    }
-
-    /// The parameter's value in `scene`.
-    pub fn get(self, scene: &Scene) -> f64 {
-        let m = &scene.model;
-        match self {
-            Self::Alpha => m.alpha,
-            Self::N => m.n as f64,
-            Self::B => m.b,
-            Self::Gamma => m.gamma,
-            Self::Gravity => m.gravity,
-            Self::Inertia => m.inertia,
-            Self::DriveTime => scene
-                .drive
-                .flips
-                .first()
-                .map_or(crate::sim::PAPER_DRIVE_TIME, |f| f.duration),
-        }
-    }
-
-    /// Sets the parameter to `v` in `scene` (N must be a whole number,
-    /// checked by [`Values::expand`]). T_d sets the duration of every flip,
-    /// keeping each flip's start.
-    pub fn set(self, scene: &mut Scene, v: f64) {
-        let m: &mut Model = &mut scene.model;
-        match self {
-            Self::Alpha => m.alpha = v,
-            Self::N => m.n = v as usize,
-            Self::B => m.b = v,
-            Self::Gamma => m.gamma = v,
-            Self::Gravity => m.gravity = v,
-            Self::Inertia => m.inertia = v,
-            Self::DriveTime => {
-                let starts: Vec<f64> = scene.drive.flips.iter().map(|f| f.start).collect();
-                scene.drive = DriveSpec::flips_at(&starts, v);
-            }
-        }
-    }
-}
+/// A parameter a sweep can vary: every parameter of the table
+/// ([`crate::model::table`]), its key in `[output.grid]` its name.
+pub use crate::scene::params::Param;
 
 /// The axes of a grid, in order: the first varies slowest. Keys that name
 /// no parameter are kept aside (second field) for [`SweepSpec::check`] to
@@ -173,7 +56,12 @@ impl<'de> Deserialize<'de> for Grid {
         impl<'de> Visitor<'de> for G {
             type Value = Grid;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("a table of parameters (alpha, n, b, gamma, gravity, inertia, drive_time) and their values")
+                let names: Vec<&str> = Param::ALL.iter().map(|p| p.name()).collect();
+                write!(
+                    f,
+                    "a table of parameters ({}) and their values",
+                    names.join(", ")
+                )
             }
             fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Grid, A::Error> {
                 let mut grid = Grid::default();
@@ -319,13 +207,14 @@ impl SweepSpec {
     pub fn scene_at(&self, base: &Scene, point: &[f64]) -> Scene {
         let mut s = base.clone();
         for ((p, _), v) in self.grid.0.iter().zip(point) {
-            p.set(&mut s, *v);
+            s.set_param(*p, *v);
         }
         s.output = super::OutputSpec::Data;
         s.label = None;
         s.title = None;
         s.caption = None;
-        s
+        // An apparatus's values for this point's model (what it runs).
+        s.with_conversion()
     }
 
     /// Checks the grid and the rule; every point of the grid must make a
@@ -372,7 +261,7 @@ impl SweepSpec {
             let key = format!("output.grid.{}", param.name());
             for v in vals {
                 let mut s = base.clone();
-                param.set(&mut s, *v);
+                s.set_param(*param, *v);
                 s.output = super::OutputSpec::Data;
                 check_point(&s).map_err(|(_, msg)| {
                     (

@@ -18,7 +18,10 @@ mod linkage;
 mod positions;
 mod runs;
 
-pub use decided::{HELD_FOR_S, HELD_RATE};
+pub use decided::{
+    DECIDABLE_FRACTION_OF_BLOCK_RATE, HELD_FOR_S, HELD_FRACTION_OF_BLOCK_RATE, HELD_RATE,
+    block_rate, decidable,
+};
 pub use levels::{LevelResult, STIFF_TOLERANCE, level_names, levels};
 pub use linkage::{Front, fronts, refined_fronts, steps};
 pub use positions::motor_marker;

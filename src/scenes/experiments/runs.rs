@@ -3,7 +3,7 @@
 //! ([`Decided`]), two at a time or more.
 
 use super::STEP;
-use super::decided::Decided;
+use super::decided::{Decided, block_rate};
 use super::{apparatus_numbers, bulk_speed};
 use crate::error::{Error, Result};
 use crate::scene::apparatus::Apparatus;
@@ -67,13 +67,20 @@ pub(super) fn run_all(variants: &[Variant]) -> Result<Vec<Done>> {
             let a = v.scene.apparatus.as_ref().ok_or_else(|| unconverted(v))?;
             let c = a.conversion.as_ref().ok_or_else(|| unconverted(v))?;
             let drive_end = v.scene.scenario()?.protocol.drive_end();
-            let decided = Decided::new(drive_end, c.tau_s);
+            let block_rate = block_rate(c.gravity, c.inertia, c.added_inertia);
+            let decided = Decided::new(drive_end, c.tau_s, c.friction_rate, block_rate);
             let stop = |view: &StopView| decided.decided(view);
             let options = RunOptions::default().limits(v.scene.limits).stop(&stop);
             let r = run::simulate_with(&v.scene, &[], &options)?;
             let arrivals = &r.trajectory.arrival_times;
-            let mut data = RunData::new(&v.label, &v.scene, &r);
-            data.t_end = r.trajectory.t_final;
+            // A run with pin friction whose held rule cannot decide says so
+            // in its data (its label), having run to its duration.
+            let label = match decided.verdict() {
+                Err(why) if a.pin_friction > 0.0 => format!("{} ({why})", v.label),
+                _ => v.label.clone(),
+            };
+            let mut data = RunData::new(&label, &v.scene, &r);
+            data.ended_at(r.trajectory.t_final);
             let arrivals_s: Vec<Option<f64>> =
                 arrivals.iter().map(|t| t.map(|t| t * c.tau_s)).collect();
             let numbers = apparatus_numbers(&arrivals_s, c.tau_s, a.b);

@@ -66,8 +66,13 @@ impl FigureInput {
 
     /// The scene's model with another N, b and α (degrees).
     fn params(&self, n: usize, b: f64, alpha_deg: f64) -> Result<Params> {
-        let m = &self.model;
-        Ok(Params::new(n, b, alpha_deg, m.gamma, m.gravity, m.inertia)?)
+        let m = crate::scene::Model {
+            n,
+            b,
+            alpha: alpha_deg,
+            ..self.model
+        };
+        m.params()
     }
 }
 

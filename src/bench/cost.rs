@@ -1,0 +1,84 @@
+//! What a study costs, checked against the caps before any run (docs/limits.md):
+//! its runs together, in steps × N, as one simulation is.
+
+use super::{BenchScene, config_at, default_steps};
+use crate::error::Result;
+use crate::limits::{Limits, Resource, count};
+use crate::sim::IntegratorKind;
+use crate::sim::integrators::DOPRI5_MAX_STEP;
+
+/// Steps × N of one run of `scene` at sweep value `x` of `kind`: t_end/dt
+/// steps at a fixed step, the fewest an adaptive dopri5 can take (t_end /
+/// its largest step) otherwise.
+fn run_cost(scene: &BenchScene, kind: IntegratorKind, x: f64) -> f64 {
+    let config = config_at(kind, x);
+    let step = if config.rtol.is_some() {
+        DOPRI5_MAX_STEP
+    } else {
+        config.dt
+    };
+    (scene.t_end / step).ceil() * scene.params.n as f64
+}
+
+/// Refuses, before any run, a work-precision study whose runs together
+/// (every integrator at every step, `repeats` times, and each scene's
+/// reference) pass the cap on steps × N.
+pub fn check_work_precision_cost(
+    scenes: &[BenchScene],
+    repeats: usize,
+    limits: &Limits,
+) -> Result<()> {
+    let mut total = 0.0;
+    for scene in scenes {
+        total += run_cost(scene, IntegratorKind::Dopri5, super::REFERENCE_RTOL);
+        for kind in IntegratorKind::ALL {
+            for x in default_steps(kind) {
+                total += repeats as f64 * run_cost(scene, kind, x);
+            }
+        }
+    }
+    let window = scenes.first().map_or(0.0, |s| s.t_end);
+    limits.check(Resource::BlockSteps, total, || {
+        format!(
+            "the work-precision study's runs together: {} steps × N over a window of {} τ \
+             (its smallest step, explicit Euler at 0.0005 τ, alone is {} a run)",
+            count(total),
+            crate::error::num(window),
+            count(scenes.first().map_or(0.0, |s| run_cost(
+                s,
+                IntegratorKind::ExplicitEuler,
+                0.0005
+            )))
+        )
+    })?;
+    Ok(())
+}
+
+/// Runs a stability bisection makes, at most, per scheme (a bracket of a
+/// few doublings, then halvings to 2 % in the step).
+pub const BISECTION_RUNS: f64 = 16.0;
+
+/// Refuses, before any run, a stability study of `scene` whose bisections
+/// would pass the cap on steps × N: [`BISECTION_RUNS`] runs a scheme, each
+/// at half the step its bracket starts from (the linear prediction, at
+/// least 0.02/ω_max), an estimate.
+pub fn check_stability_cost(scene: &BenchScene, limits: &Limits) -> Result<()> {
+    let omega_max = crate::theory::dispersion::omega_max_clamped(&scene.params)?;
+    let c = super::damping_rate(&scene.params);
+    let total: f64 = IntegratorKind::ALL
+        .iter()
+        .map(|&kind| {
+            let guess =
+                super::predicted_dt(kind, omega_max, c).clamp(0.02 / omega_max, 10.0 / omega_max);
+            BISECTION_RUNS * (2.0 * scene.t_end / guess).ceil() * scene.params.n as f64
+        })
+        .sum();
+    limits.check(Resource::BlockSteps, total, || {
+        format!(
+            "the stability study's bisections, about {} steps × N over a window of {} τ",
+            count(total),
+            crate::error::num(scene.t_end)
+        )
+    })?;
+    Ok(())
+}
