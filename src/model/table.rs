@@ -208,7 +208,7 @@ macro_rules! parameter_table {
                     doc: "Rest length b of the B springs, in units of the block length s",
                 },
                 gamma: f64 = Gamma {
-                    tag: "gamma", symbol: "γ", unit: "", label: "damping γ", value_name: "G",
+                    tag: "gamma", symbol: "γ", unit: "", label: "damping γ (m/τ)", value_name: "G",
                     default: 0.02, range: AtLeast(0.0), what: "a finite number",
                     doc: "Damping gamma (force -gamma*dX/dt, torque -gamma*r^2*dtheta/dt)",
                 },
