@@ -16,6 +16,7 @@ pub mod describe;
 pub mod drive;
 pub mod file;
 pub mod model;
+pub mod names;
 pub mod output;
 pub mod params;
 pub mod run;
