@@ -43,6 +43,7 @@ mod print_property;
 mod provenance;
 mod reliability;
 mod render;
+mod ribbons;
 mod scene_files;
 mod scene_fuzz;
 mod scenes;
