@@ -123,7 +123,8 @@ fn the_energy_budget_of_the_ribbon_tank_closes() {
     let (h1, h2) = (t_d / n1 as f64, (sc.t_end - t_d) / n2 as f64);
     let mut times: Vec<f64> = (0..=n1).map(|k| k as f64 * h1).collect();
     times.extend((1..=n2).map(|k| t_d + k as f64 * h2));
-    let traj = sim::simulate(&sc, &times, &rk4(h1.min(h2) / 4.0)).unwrap();
+    // Contact (k_c = 1000 k) needs RK4 well inside ω dt < 2.8: 1/64 τ.
+    let traj = sim::simulate(&sc, &times, &rk4(h1.min(h2) / 16.0)).unwrap();
     let terms = ladder.terms;
     let energy = |q: &[f64], v: &[f64]| {
         media::kinetic_energy(&ladder, &terms, q, v, true)
