@@ -51,6 +51,7 @@ mod print_property;
 mod provenance;
 mod reliability;
 mod render;
+mod ribbons;
 mod rings;
 mod scene_files;
 mod scene_fuzz;
