@@ -208,7 +208,15 @@ mod tests {
     use crate::model::Params;
 
     fn setup() -> (Ladder, Outline, Contact, Vec<f64>) {
-        let p = Params::new(3, 1.0, 90.0, 0.0, 2e-4, (1.0 + 0.1f64.powi(2)) / 12.0).unwrap();
+        let p = Params::defaults()
+            .with_n(3)
+            .with_b(1.0)
+            .with_alpha_deg(90.0)
+            .with_gamma(0.0)
+            .with_gravity(2e-4)
+            .with_inertia((1.0 + 0.1f64.powi(2)) / 12.0)
+            .validated()
+            .unwrap();
         let o = Outline::new(0.1);
         let c = Contact {
             stiffness: 1000.0,
@@ -272,7 +280,15 @@ mod tests {
         // (e = 0.5 for one corner alone gives e' = 0.37) if the dashpot
         // could pull; clamped at 0 it lets go early and rebounds faster:
         // measured 0.45, between e' and e' + 0.1.
-        let p = Params::new(2, 1.0, 90.0, 0.0, 0.0, (1.0 + 0.1f64.powi(2)) / 12.0).unwrap();
+        let p = Params::defaults()
+            .with_n(2)
+            .with_b(1.0)
+            .with_alpha_deg(90.0)
+            .with_gamma(0.0)
+            .with_gravity(0.0)
+            .with_inertia((1.0 + 0.1f64.powi(2)) / 12.0)
+            .validated()
+            .unwrap();
         let l = Ladder::new(p);
         let o = Outline::new(0.1);
         let c = Contact {

@@ -445,7 +445,15 @@ mod tests {
     }
 
     fn ladder(n: usize, b: f64, r: Ribbons) -> Ladder {
-        let p = Params::new(n, b, 90.0, 0.0, 2e-4, (1.0 + 0.06f64.powi(2)) / 12.0).unwrap();
+        let p = Params::defaults()
+            .with_n(n)
+            .with_b(b)
+            .with_alpha_deg(90.0)
+            .with_gamma(0.0)
+            .with_gravity(2e-4)
+            .with_inertia((1.0 + 0.06f64.powi(2)) / 12.0)
+            .validated()
+            .unwrap();
         Ladder::new(p).with_built(crate::model::built::AsBuilt {
             ribbons: r,
             contact: None,
@@ -539,7 +547,15 @@ mod dashpot_tests {
     fn the_dashpot_dissipates_what_its_forces_take() {
         let b = 1.5;
         let r = tank_ribbons(b);
-        let p = Params::new(3, b, 90.0, 0.0, 2e-4, 0.1).unwrap();
+        let p = Params::defaults()
+            .with_n(3)
+            .with_b(b)
+            .with_alpha_deg(90.0)
+            .with_gamma(0.0)
+            .with_gravity(2e-4)
+            .with_inertia(0.1)
+            .validated()
+            .unwrap();
         let l = Ladder::new(p);
         let mut q = l.ground_state();
         q[3] += 0.01;

@@ -4,6 +4,7 @@
 
 use super::*;
 use crate::error::{Error, Result};
+use crate::model::Params;
 use crate::scene::{DriveSpec, Model};
 use crate::sim::{Drive, Scenario};
 

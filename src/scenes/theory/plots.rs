@@ -646,7 +646,15 @@ mod tests {
         for style in [Style::default(), Style::named(StyleName::Paper)] {
             let theme = Theme::of(&style);
             for alpha in [60.0, -60.0] {
-                let p = crate::model::Params::new(10, 1.3, alpha, 0.02, 2e-4, 0.25).unwrap();
+                let p = crate::model::Params::defaults()
+                    .with_n(10)
+                    .with_b(1.3)
+                    .with_alpha_deg(alpha)
+                    .with_gamma(0.02)
+                    .with_gravity(2e-4)
+                    .with_inertia(0.25)
+                    .validated()
+                    .unwrap();
                 let (picture, _) = winding_panel(&theme, &p).unwrap();
                 let Some(Item::Chart { chart, .. }) = picture
                     .items()
