@@ -46,7 +46,7 @@ fn frame(ladder: &Ladder, q: &[f64], view: View, k: usize, canvas: &mut Pixmap) 
 
 fn movie_bytes(ladder: &Ladder, states: &[Vec<f64>], view: View) -> Vec<u8> {
     let mut canvas = Pixmap::new(W, H).expect("frame size");
-    let mut gif = GifWriter::new(W, H, 25.0).expect("gif");
+    let mut gif = GifWriter::new(W, H, 25.0, jacobs_ladder::render::Palette.gif()).expect("gif");
     for (k, q) in states.iter().enumerate() {
         frame(ladder, q, view, k, &mut canvas);
         gif.push_frame(&canvas).expect("push");
@@ -75,7 +75,8 @@ fn bench(c: &mut Criterion) {
         })
     });
     c.bench_function("snapshot + GIF frame 640x480", |b| {
-        let mut gif = GifWriter::new(W, H, 25.0).expect("gif");
+        let mut gif =
+            GifWriter::new(W, H, 25.0, jacobs_ladder::render::Palette.gif()).expect("gif");
         let mut k = 0;
         b.iter(|| {
             frame(&ladder, &states[k % FRAMES], view, k, &mut canvas);

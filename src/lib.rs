@@ -43,6 +43,7 @@ pub mod limits;
 pub mod model;
 pub mod numfmt;
 pub mod render;
+pub mod rings;
 pub mod sim;
 pub mod theory;
 pub mod version;

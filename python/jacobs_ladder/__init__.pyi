@@ -11,9 +11,19 @@ import numpy.typing as npt
 __version__: str
 ENGINE_VERSION: str
 SWEEP_PARAMETERS: Tuple[str, ...]
+OUTCOMES: Tuple[str, ...]
 
 class RunError(RuntimeError):
     """A run that failed (a diverging integrator, ...): message and hint."""
+
+class ChunkError(RunError):
+    """Chunks of an executor's sweep lost: each one's error and grid points;
+    the chunks that came back kept for resume()."""
+
+    lost: Dict[int, BaseException]
+    points: Dict[int, List[Tuple[int, Dict[str, float]]]]
+    done: Dict[int, bytes]
+    def resume(self, executor: Any, *, progress: Any = None) -> Table: ...
 
 class InternalError(RuntimeError):
     """A bug of jacobs_ladder (a caught panic of the engine)."""
@@ -48,7 +58,17 @@ class Run:
         """−m G Σ X_n at each sample, k s²."""
     @property
     def dissipated(self) -> FloatArray:
-        """Energy dissipated since t = 0, k s²; NaN unless dissipation=True."""
+        """Energy dissipated since t = 0, k s²; recorded with dissipation=True,
+        else computed by a second run when first asked for."""
+    @property
+    def t_s(self) -> Optional[FloatArray]:
+        """Sample times, s (an apparatus' run; else None)."""
+    @property
+    def arrival_times_s(self) -> Optional[FloatArray]:
+        """Arrival times, s (an apparatus' run; else None)."""
+    @property
+    def tau_s(self) -> Optional[float]:
+        """τ in s (an apparatus' run; else None)."""
     @property
     def vx(self) -> FloatArray:
         """dX_n/dt, s/τ."""
@@ -76,6 +96,18 @@ class Run:
     def speed(self) -> float:
         """Wave speed, blocks/τ; NaN when too few blocks flipped."""
     @property
+    def speed_cm_s(self) -> Optional[float]:
+        """speed in cm/s (an apparatus' run; else None)."""
+    @property
+    def bulk_speed(self) -> float:
+        """The experiment figures' fit over the lower half, blocks/τ; NaN if none."""
+    @property
+    def bulk_speed_cm_s(self) -> Optional[float]:
+        """bulk_speed in cm/s (an apparatus' run; else None)."""
+    @property
+    def bulk_fit(self) -> Optional[Dict[str, Any]]:
+        """The figures' fitted line: speed_cm_s, blocks, centroid_s, centroid_cm."""
+    @property
     def waves(self) -> Optional[List[Dict[str, Any]]]:
         """One record per domain wall, where the engine reports them."""
     @property
@@ -102,6 +134,7 @@ def simulate(
     sample_every: Optional[float] = None,
     samples: Optional[Sequence[float]] = None,
     dissipation: bool = False,
+    progress: Any = None,
     **scene_keys: Any,
 ) -> Run:
     """Simulate the ladder. alpha: degrees (default 60); n: blocks (10); b: s
@@ -109,7 +142,8 @@ def simulate(
     drive_time: τ (1000); flips: start times, τ ([0]); t_end: τ (4000);
     integrator: auto | explicit-euler | symplectic-euler | verlet | rk4 |
     dopri5 (auto); dt: τ (0.01); rtol (1e-6); tolerance: τ (0.1);
-    sample_every: τ (10)."""
+    sample_every: τ (10); progress: None (a bar where seen) | True | False |
+    progress(t, t_end)."""
 
 def theory(
     alpha: Optional[float] = None, n: Optional[int] = None, b: Optional[float] = None
@@ -164,6 +198,8 @@ class Scene:
         samples: Optional[Sequence[float]] = None,
         index: int = 0,
         dissipation: bool = False,
+        *,
+        progress: Any = None,
     ) -> Run:
         """sample_every: τ (10)."""
     def render(
@@ -188,6 +224,7 @@ class Scene:
         frames: Optional[int] = None,
         fps: Optional[float] = None,
         scale: Optional[float] = None,
+        progress: Any = None,
     ) -> List[Path]: ...
 
 class Table(Dict[str, Any]):
@@ -196,9 +233,21 @@ class Table(Dict[str, Any]):
     csv: str
     json: Dict[str, Any]
     json_text: str
-    def __init__(self, csv_text: str, json_text: str) -> None: ...
+    command: str
+    def __init__(
+        self,
+        csv_text: str,
+        json_text: str,
+        columns: Optional[List[Tuple[str, Any]]] = None,
+        command: str = "",
+    ) -> None: ...
     @property
     def columns(self) -> List[str]: ...
+    @property
+    def provenance(self) -> Dict[str, str]:
+        """program, version, git_commit, build, scene (JSON), fingerprint, command."""
+    def to_csv(self, path: Any = None) -> str:
+        """The CSV with its provenance as leading '# key: value' lines."""
     def to_pandas(self) -> Any: ...
     def to_xarray(self) -> Any:
         """An xarray.Dataset with the grid's axes as dimensions."""
@@ -211,9 +260,11 @@ def sweep(
     max_runs: Optional[int] = None,
     executor: Any = None,
     chunks: Optional[int] = None,
+    progress: Any = None,
     **keys: Any,
 ) -> Table:
-    """Grid keywords alpha, n, b, gamma, gravity, inertia, drive_time: a
-    list, a value or "start:stop:step". cap: τ (100000). executor: any
-    concurrent.futures.Executor; chunks: pieces of the grid sent to it
-    (about one per 512 runs)."""
+    """Grid keywords SWEEP_PARAMETERS (alpha, n, b, gamma, gravity, inertia,
+    drive_time): a list, a value or "start:stop:step". cap: τ (100000).
+    executor: anything with submit(fn, *args) → future.result(); chunks:
+    pieces of the grid sent to it (about 64 runs each, at least 16);
+    progress: None (a bar where seen) | True | False | progress(done, runs)."""

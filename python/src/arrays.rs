@@ -7,6 +7,7 @@
 use jacobs_ladder::output::data::MadeBy;
 use jacobs_ladder::scene::Scene;
 use jacobs_ladder::scenes::RunData;
+use jacobs_ladder::scenes::experiments;
 use jacobs_ladder::scenes::run::SceneRun;
 use jacobs_ladder::{Error, Result};
 use numpy::{PyArray1, PyArrayMethods};
@@ -61,11 +62,17 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
     let ladder = scene.scenario()?.ladder;
     let energies = run.trajectory.energies(&ladder);
     let samples = run.trajectory.times.len();
-    let dissipated = if energies.dissipated.len() == samples {
-        energies.dissipated
-    } else {
-        vec![f64::NAN; samples]
-    };
+    // Only a run that recorded it has `dissipated` (Python's `Run` runs
+    // the scene again with it when it is asked for).
+    let dissipated = (energies.dissipated.len() == samples).then_some(energies.dissipated);
+    // The experiment figures' fit over the chain's lower half, and the
+    // apparatus' units (τ in s, a block per τ in cm/s), where it has one.
+    let bulk = experiments::bulk_speed(&run.trajectory.arrival_times);
+    let units = scene
+        .apparatus
+        .as_ref()
+        .and_then(|a| Some((a.conversion.as_ref()?, a.b)))
+        .map(|(c, pitch_cm)| (c.tau_s, c.cm_per_s, pitch_cm));
     let traj = &mut run.trajectory;
     let n = traj.final_state.q.len() / 3;
     let times = std::mem::take(&mut traj.times);
@@ -108,7 +115,7 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
         .iter()
         .map(|t| t.unwrap_or(f64::NAN))
         .collect();
-    let columns = vec![
+    let mut columns = vec![
         ("t", times, false),
         ("x", x, true),
         ("y", y, true),
@@ -122,9 +129,31 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
         ("kinetic", energies.kinetic, false),
         ("elastic", energies.elastic, false),
         ("gravitational", energies.gravitational, false),
-        ("dissipated", dissipated, false),
     ];
-    let mut record = serde_json::to_value(RunData::from_run(scene, &run))
+    if let Some(d) = dissipated {
+        columns.push(("dissipated", d, false));
+    }
+    if let Some((tau_s, _, _)) = units {
+        let seconds = |name: &str| -> Vec<f64> {
+            let (_, v, _) = columns.iter().find(|c| c.0 == name).expect("made above");
+            v.iter().map(|t| t * tau_s).collect()
+        };
+        let (t_s, arrivals_s) = (seconds("t"), seconds("arrival_times"));
+        columns.push(("t_s", t_s, false));
+        columns.push(("arrival_times_s", arrivals_s, false));
+    }
+    let mut data = RunData::from_run(scene, &run);
+    if let Some((tau_s, _, pitch_cm)) = units {
+        // The experiment figures' numbers: arrivals in s, the bulk fit in
+        // cm/s with its line (the data file's `apparatus`).
+        let arrivals_s: Vec<Option<f64>> = data
+            .arrival_times
+            .iter()
+            .map(|t| t.map(|t| t * tau_s))
+            .collect();
+        data.apparatus = Some(experiments::apparatus_numbers(&arrivals_s, tau_s, pitch_cm));
+    }
+    let mut record = serde_json::to_value(data)
         .map_err(|e| Error::failed(format!("cannot encode the run: {e}")))?;
     let encode = |e: serde_json::Error| Error::failed(format!("cannot encode the run: {e}"));
     // Provenance, as every data file carries it: the program, its version
@@ -143,6 +172,13 @@ pub fn arrays(scene: &Scene, mut run: SceneRun) -> Result<RunArrays> {
         // (`WaveKind::launched`), for the repr.
         let launched = jacobs_ladder::sim::waves::WaveKind::launched(scene.model.alpha);
         m.entry("launched").or_insert(launched.name().into());
+        let speed = m.get("speed").and_then(serde_json::Value::as_f64);
+        m.insert("bulk_speed".into(), bulk.into());
+        if let Some((tau_s, cm_per_s, _)) = units {
+            m.insert("tau_s".into(), tau_s.into());
+            m.insert("cm_per_s".into(), cm_per_s.into());
+            m.insert("speed_cm_s".into(), speed.map(|v| v * cm_per_s).into());
+        }
     }
     Ok(RunArrays {
         n,

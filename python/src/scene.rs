@@ -242,7 +242,7 @@ impl PyScene {
     }
 
     /// Simulates run `index` of the scene (its only one for most scenes).
-    #[pyo3(signature = (sample_every=None, samples=None, index=None, dissipation=false))]
+    #[pyo3(signature = (sample_every=None, samples=None, index=None, dissipation=false, progress=None))]
     fn simulate<'py>(
         &self,
         py: Python<'py>,
@@ -250,6 +250,7 @@ impl PyScene {
         samples: Option<&Bound<'py, PyAny>>,
         index: Option<&Bound<'py, PyAny>>,
         dissipation: bool,
+        progress: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let index = convert::whole_or_none(index, "index")?.unwrap_or(0);
         let runs = self.scene.runs();
@@ -263,7 +264,13 @@ impl PyScene {
             )))
             .py_err();
         };
-        simulate_scene(py, single, sample_every, samples, dissipation)
+        let how = Sampling {
+            every: sample_every,
+            at: samples,
+            dissipation,
+            progress,
+        };
+        simulate_scene(py, single, how)
     }
 
     /// The files the command line writes for this scene, as (name, bytes).
@@ -277,23 +284,40 @@ impl PyScene {
 
     /// Writes the files into `dir` as `ladder render --out DIR` does
     /// (atomically; every target checked first); returns their paths.
-    fn save(&self, py: Python<'_>, dir: PathBuf, args: RenderArgs) -> PyResult<Vec<PathBuf>> {
+    /// `progress(done, total)`: a movie's frames, else the scene's files.
+    #[pyo3(signature = (dir, args, progress=None))]
+    fn save(
+        &self,
+        py: Python<'_>,
+        dir: PathBuf,
+        args: RenderArgs,
+        progress: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Vec<PathBuf>> {
         if dir.as_os_str().is_empty() {
             // As `--out ""`: an empty name is no folder (not the current one).
             return Err(convert::bad("dir", "must name a folder, got \"\""));
         }
         let scene = self.scene.clone();
-        work::run(py, move |stop| {
+        // As the command line's bar: a movie's frames, else the files.
+        let movie = scene.kind() == Kind::Movie;
+        let total = if movie {
+            args.outputs(&scene).py_err()?.0.frames as f64
+        } else {
+            f64::NAN
+        };
+        let report = work::Report::new(progress, total.is_finite().then_some(total), true);
+        work::run_reporting(py, report, move |stop| {
             let (opts, outputs) = args.outputs(&scene)?;
             // Ctrl-C stops the drawing as it stops a sweep (`work::Stop`):
             // the work unwinds at the next frame of a movie, or before a
             // figure's next file (or its file's rename), each file's
             // temporary removed as it unwinds, so nothing is written after
             // it.
-            let frame = || stop.check(0.0);
+            let frame = || if movie { stop.add(1.0) } else { stop.check() };
+            let file = || if movie { stop.check() } else { stop.add(1.0) };
             let progress = front::render::Progress {
                 frame: &frame,
-                file: &frame,
+                file: &file,
                 ..front::render::Progress::quiet()
             };
             let files = front::render::into_folder(
@@ -309,14 +333,27 @@ impl PyScene {
     }
 }
 
+/// How a run is sampled and reported: every `every` τ or at the times
+/// `at`, the energy dissipated recorded or not, `progress(t, t_end)`.
+pub struct Sampling<'a, 'py> {
+    pub every: Option<&'a Bound<'py, PyAny>>,
+    pub at: Option<&'a Bound<'py, PyAny>>,
+    pub dissipation: bool,
+    pub progress: Option<&'a Bound<'py, PyAny>>,
+}
+
 /// Simulates a single-run scene without the GIL; the arrays as a dict.
 pub fn simulate_scene<'py>(
     py: Python<'py>,
     scene: Scene,
-    sample_every: Option<&Bound<'py, PyAny>>,
-    samples: Option<&Bound<'py, PyAny>>,
-    dissipation: bool,
+    how: Sampling<'_, 'py>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let Sampling {
+        every: sample_every,
+        at: samples,
+        dissipation,
+        progress,
+    } = how;
     let limits = scene.limits;
     let n = scene.model.n;
     // Counted against the cap on samples × N before any is copied.
@@ -330,7 +367,10 @@ pub fn simulate_scene<'py>(
         None => None,
     };
     let sample_every = convert::number_or_none(sample_every, "sample_every")?;
-    let out = work::run(py, move |stop| {
+    // t_end "auto" is resolved in the work: its end is not known here.
+    let t_end = scene.run.t_end;
+    let report = work::Report::new(progress, t_end.is_finite().then_some(t_end), false);
+    let out = work::run_reporting(py, report, move |stop| {
         // `t_end = "auto"` resolved first: the samples reach its end.
         let scene = scene.with_auto_window()?;
         let times = match samples {
@@ -343,7 +383,7 @@ pub fn simulate_scene<'py>(
         // that an address-space limit fails the call before the work.
         scenes::run::check_cost(&scene, times.len())?;
         jacobs_ladder::sim::ensure_memory(times.len().saturating_mul(2), scene.model.n)?;
-        let progress = |t: f64| stop.check(t);
+        let progress = |t: f64| stop.at(t);
         let options = jacobs_ladder::sim::RunOptions::default()
             .limits(scene.limits)
             .progress(&progress)

@@ -24,7 +24,7 @@ use crate::errors::{panicked, to_py};
 use jacobs_ladder::Error;
 use pyo3::prelude::*;
 use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::mpsc::{RecvTimeoutError, channel};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
@@ -66,16 +66,82 @@ fn pool() -> Result<&'static rayon::ThreadPool, Error> {
 struct Cancelled;
 
 /// What the work is given: a progress hook that stops it once the caller
-/// was interrupted.
+/// was interrupted, and the work's progress so far (simulated time, runs
+/// or frames done) for the caller's callback ([`Report`]).
 #[derive(Clone)]
-pub struct Stop(Arc<AtomicBool>);
+pub struct Stop {
+    stopped: Arc<AtomicBool>,
+    /// The progress so far, an `f64` as bits.
+    done: Arc<AtomicU64>,
+}
 
 impl Stop {
-    /// For the run loop's `progress` hook: unwinds out of the work once
-    /// the call was interrupted.
-    pub fn check(&self, _t: f64) {
-        if self.0.load(Ordering::Relaxed) {
+    /// Unwinds out of the work once the call was interrupted (or its
+    /// progress callback raised).
+    pub fn check(&self) {
+        if self.stopped.load(Ordering::Relaxed) {
             resume_unwind(Box::new(Cancelled));
+        }
+    }
+
+    /// For the run loop's `progress` hook: records that the work reached
+    /// `t` (the furthest of the runs, as the command line's bar does), then
+    /// [`Stop::check`].
+    pub fn at(&self, t: f64) {
+        let _ = self
+            .done
+            .fetch_update(Ordering::Relaxed, Ordering::Relaxed, |old| {
+                (t > f64::from_bits(old)).then_some(t.to_bits())
+            });
+        self.check();
+    }
+
+    /// Records `dx` more done (a run of a sweep, a frame), then
+    /// [`Stop::check`].
+    pub fn add(&self, dx: f64) {
+        let _ = self
+            .done
+            .fetch_update(Ordering::Relaxed, Ordering::Relaxed, |old| {
+                Some((f64::from_bits(old) + dx).to_bits())
+            });
+        self.check();
+    }
+
+    fn done(&self) -> f64 {
+        f64::from_bits(self.done.load(Ordering::Relaxed))
+    }
+}
+
+/// A progress callback: `callback(done, total)` (both whole numbers when
+/// `whole`: runs, frames; else τ), called from the waiting thread with the
+/// GIL every [`POLL`] while the progress moved, and once at the end.
+pub struct Report {
+    pub callback: Py<PyAny>,
+    pub total: Option<f64>,
+    pub whole: bool,
+}
+
+impl Report {
+    /// The callback, if the caller gave one (None is no callback).
+    pub fn new(
+        callback: Option<&Bound<'_, PyAny>>,
+        total: Option<f64>,
+        whole: bool,
+    ) -> Option<Self> {
+        callback.filter(|c| !c.is_none()).map(|c| Self {
+            callback: c.clone().unbind(),
+            total,
+            whole,
+        })
+    }
+
+    fn call(&self, py: Python<'_>, done: f64) -> PyResult<()> {
+        let cb = self.callback.bind(py);
+        if self.whole {
+            let total = self.total.map(|t| t as u64);
+            cb.call1((done as u64, total)).map(|_| ())
+        } else {
+            cb.call1((done, self.total)).map(|_| ())
         }
     }
 }
@@ -87,9 +153,27 @@ where
     T: Send + 'static,
     F: FnOnce(&Stop) -> Result<T, Error> + Send + 'static,
 {
-    let stop = Stop(Arc::new(AtomicBool::new(false)));
+    run_reporting(py, None, work)
+}
+
+/// [`run`], and `report` told of the work's progress (the progress the
+/// work records on its [`Stop`]) while it runs and once when it is done.
+/// An exception the callback raises stops the work as Ctrl-C does and is
+/// the call's exception.
+pub fn run_reporting<T, F>(py: Python<'_>, report: Option<Report>, work: F) -> PyResult<T>
+where
+    T: Send + 'static,
+    F: FnOnce(&Stop) -> Result<T, Error> + Send + 'static,
+{
+    let stop = Stop {
+        stopped: Arc::new(AtomicBool::new(false)),
+        done: Arc::new(AtomicU64::new(0.0f64.to_bits())),
+    };
     let (tx, rx) = channel();
     let worker_stop = stop.clone();
+    let watch = stop.clone();
+    let mut shown = f64::NAN;
+    let shown_to = &report;
     std::thread::Builder::new()
         .name("jacobs-ladder".into())
         .spawn(move || {
@@ -106,8 +190,17 @@ where
             match rx.recv_timeout(POLL) {
                 Ok(result) => return Ok(result),
                 Err(RecvTimeoutError::Timeout) => {
-                    if let Err(interrupt) = Python::attach(|py| py.check_signals()) {
-                        stop.0.store(true, Ordering::Relaxed);
+                    let done = watch.done();
+                    let checked = Python::attach(|py| {
+                        py.check_signals()?;
+                        match shown_to {
+                            Some(r) if done != shown => r.call(py, done),
+                            _ => Ok(()),
+                        }
+                    });
+                    shown = done;
+                    if let Err(interrupt) = checked {
+                        watch.stopped.store(true, Ordering::Relaxed);
                         let _ = rx.recv_timeout(UNWIND_WAIT);
                         return Err(interrupt);
                     }
@@ -121,7 +214,12 @@ where
         }
     })?;
     match outcome {
-        Ok(Ok(value)) => Ok(value),
+        Ok(Ok(value)) => {
+            if let Some(r) = &report {
+                r.call(py, stop.done())?;
+            }
+            Ok(value)
+        }
         Ok(Err(e)) => Err(to_py(e)),
         Err(payload) if payload.is::<Cancelled>() => Err(
             pyo3::exceptions::PyKeyboardInterrupt::new_err("interrupted"),

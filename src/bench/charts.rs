@@ -7,7 +7,8 @@ use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::render::charts::{Axis, ChartSpec, Legend, Marker, Series, line_chart};
 use crate::render::compose::{Layout, Panel, compose};
-use crate::render::style::{self, DARK, GREY, HAlign, VAlign, size};
+use crate::render::palette::{Palette, Role};
+use crate::render::style::{self, HAlign, VAlign, size};
 use crate::render::{Picture, Theme};
 use crate::sim::IntegratorKind;
 use tiny_skia::Pixmap;
@@ -23,17 +24,17 @@ use scene::scene_stability_chart;
 /// The colour of an integrator, the same in every chart.
 pub fn integrator_color(kind: IntegratorKind) -> Rgb {
     match kind {
-        IntegratorKind::ExplicitEuler => style::SERIES_EXTRA[0], // orange
-        IntegratorKind::SymplecticEuler => style::BLUE,
-        IntegratorKind::Verlet => style::GREEN,
-        IntegratorKind::Rk4 => style::SERIES_EXTRA[1], // purple
-        IntegratorKind::Dopri5 => style::RED,
+        IntegratorKind::ExplicitEuler => Palette.color(Role::Series(4)),
+        IntegratorKind::SymplecticEuler => Palette.color(Role::Series(2)),
+        IntegratorKind::Verlet => Palette.color(Role::Series(3)),
+        IntegratorKind::Rk4 => Palette.color(Role::Series(6)),
+        IntegratorKind::Dopri5 => Palette.color(Role::Series(1)),
     }
 }
 
 fn color_of(name: &str) -> Rgb {
     name.parse::<IntegratorKind>()
-        .map_or(DARK, integrator_color)
+        .map_or(Palette.color(Role::Ink), integrator_color)
 }
 
 /// Legend name: "symplectic Euler", "dopri5 (adaptive)".
@@ -192,7 +193,7 @@ fn wp_panel(
             Series::scatter(
                 "paper's setting: symplectic Euler, dt = 0.01",
                 paper,
-                DARK,
+                Palette.color(Role::Ink),
                 Marker::Square,
             )
             .with_width(3.0),
@@ -204,7 +205,7 @@ fn wp_panel(
             Series::scatter(
                 format!("cheapest within 1 τ: {}, dt = {step}", pretty(name)),
                 best,
-                DARK,
+                Palette.color(Role::Ink),
                 Marker::Triangle,
             )
             .with_width(3.0),
@@ -215,7 +216,7 @@ fn wp_panel(
             Series::scatter(
                 format!("inaccurate (θ error > {INACCURATE_THETA} rad or a flip differs)"),
                 inaccurate,
-                DARK,
+                Palette.color(Role::Ink),
                 Marker::Ring,
             )
             .with_width(2.0),
@@ -502,11 +503,18 @@ fn ratio_spec(report: &StabilityReport, names: &[&str]) -> ChartSpec {
     let lo = all.iter().copied().fold(1.0, f64::min);
     let pad = 0.08 * (hi - lo).max(0.1);
     let mut spec = ChartSpec::new(
-        Axis::new("equilibrium angle α (degrees)").range(0.0, 90.0),
+        Axis::new("equilibrium angle α (°)").range(0.0, 90.0),
         Axis::new("observed / predicted").range(lo - pad, hi + pad),
     );
     spec.legend = Legend::Outside;
-    spec = spec.series(Series::line("", vec![(0.0, 1.0), (90.0, 1.0)], GREY).dashed());
+    spec = spec.series(
+        Series::line(
+            "",
+            vec![(0.0, 1.0), (90.0, 1.0)],
+            Palette.color(Role::Ground),
+        )
+        .dashed(),
+    );
     for &name in names {
         let (marker, width) = stability_marker(name);
         spec = spec.series(
@@ -531,7 +539,7 @@ fn stability_spec(report: &StabilityReport, names: &[&str]) -> ChartSpec {
     });
     let yr = log_range(all, 1.4).unwrap_or((1e-3, 1.0));
     let mut spec = ChartSpec::new(
-        Axis::new("equilibrium angle α (degrees)").range(0.0, 90.0),
+        Axis::new("equilibrium angle α (°)").range(0.0, 90.0),
         Axis::new("critical dt (τ)").log().range(yr.0, yr.1),
     )
     .title("Stability limits of the fixed-step integrators, kink scene");
@@ -557,8 +565,22 @@ fn stability_spec(report: &StabilityReport, names: &[&str]) -> ChartSpec {
             .dashed(),
         );
     }
-    spec.series(Series::line("observed (bisection)", Vec::new(), GREY).with_marker(Marker::Circle))
-        .series(Series::line("predicted (linear, ω_max)", Vec::new(), GREY).dashed())
+    spec.series(
+        Series::line(
+            "observed (bisection)",
+            Vec::new(),
+            Palette.color(Role::Ground),
+        )
+        .with_marker(Marker::Circle),
+    )
+    .series(
+        Series::line(
+            "predicted (linear, ω_max)",
+            Vec::new(),
+            Palette.color(Role::Ground),
+        )
+        .dashed(),
+    )
 }
 
 /// `image` with `text` wrapped underneath it.
@@ -586,7 +608,7 @@ fn with_caption(image: &Pixmap, text: &str) -> Result<Pixmap> {
             line,
             (margin, y),
             font_size,
-            DARK,
+            Palette.color(Role::Ink),
             (HAlign::Left, VAlign::Top),
         );
     }

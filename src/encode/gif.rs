@@ -1,18 +1,20 @@
-//! GIF bytes from pixels, with one fixed global palette made for our scenes
-//! (ramps from the white background to each drawing colour), mapped by a
+//! GIF bytes from pixels, with one fixed global palette made for the
+//! caller's scenes (ramps from the white background to each drawing colour
+//! the caller names: the renderer's palette), mapped by a
 //! 32×32×32 lookup table, so no per-frame quantiser runs and the output is
 //! deterministic. Each frame after the first encodes only the bounding box
 //! of the pixels that changed, with unchanged pixels inside that box
 //! transparent.
 
-use super::{PALETTE_ANCHORS, PALETTE_EXTRAS, Rgb, WHITE};
+use super::{Rgb, WHITE};
 use crate::error::{Error, Result};
 use std::borrow::Cow;
-use std::sync::OnceLock;
 use tiny_skia::Pixmap;
 
-/// Ramp steps from white to each anchor (the anchor itself is the last step).
-const RAMP_STEPS: usize = 42;
+/// Ramp steps from white to each anchor (the anchor itself is the last
+/// step): six anchors and two extras fill the 255 colours a GIF palette
+/// holds besides its transparent index.
+pub const GIF_RAMP_STEPS: usize = 42;
 
 /// The palette index that marks "unchanged since the previous frame".
 pub const TRANSPARENT_INDEX: u8 = 255;
@@ -45,15 +47,6 @@ impl Palette {
         }
         let lut = build_lut(&colors, anchors, extras);
         Ok(Self { colors, lut })
-    }
-
-    /// The palette used for every movie of the program.
-    pub fn scene() -> &'static Palette {
-        static SCENE: OnceLock<Palette> = OnceLock::new();
-        SCENE.get_or_init(|| {
-            Palette::new(&PALETTE_ANCHORS, RAMP_STEPS, &PALETTE_EXTRAS)
-                .unwrap_or_else(|_| unreachable!("the scene palette has 255 colours"))
-        })
     }
 
     /// The palette's colours in index order.
@@ -220,18 +213,10 @@ impl LzwStage {
 }
 
 impl GifWriter {
-    /// A writer for `width × height` frames shown at `fps` frames per second.
-    pub fn new(width: u32, height: u32, fps: f64) -> Result<Self> {
-        Self::with_palette(width, height, fps, Palette::scene())
-    }
-
-    /// Same as [`GifWriter::new`] with a caller-given palette.
-    pub fn with_palette(
-        width: u32,
-        height: u32,
-        fps: f64,
-        palette: &'static Palette,
-    ) -> Result<Self> {
+    /// A writer for `width × height` frames shown at `fps` frames per
+    /// second, in the colours of `palette` (the renderer's:
+    /// `render::Palette::gif`).
+    pub fn new(width: u32, height: u32, fps: f64, palette: &'static Palette) -> Result<Self> {
         check_gif_size(width, height)?;
         check_gif_fps(fps)?;
         let table = palette.gif_table();
@@ -442,14 +427,25 @@ fn gif_error(e: gif::EncodingError) -> Error {
 mod tests {
     use super::*;
 
+    /// A palette of six ramps and two extras (as the renderer's).
+    fn six() -> &'static Palette {
+        static P: std::sync::OnceLock<Palette> = std::sync::OnceLock::new();
+        P.get_or_init(|| Palette::new(&ANCHORS, GIF_RAMP_STEPS, &EXTRAS).unwrap())
+    }
+    const ANCHORS: [Rgb; 6] = [
+        [34, 34, 34],
+        [213, 94, 0],
+        [0, 114, 178],
+        [0, 158, 115],
+        [33, 102, 172],
+        [178, 24, 43],
+    ];
+    const EXTRAS: [Rgb; 2] = [[150, 150, 150], [0, 0, 0]];
+
     #[test]
     fn palette_colours_map_to_themselves() {
-        let p = Palette::scene();
-        for c in PALETTE_ANCHORS
-            .iter()
-            .chain(&PALETTE_EXTRAS)
-            .chain([&WHITE])
-        {
+        let p = six();
+        for c in ANCHORS.iter().chain(&EXTRAS).chain([&WHITE]) {
             assert_eq!(p.color(p.index(*c)), *c);
         }
         assert!(p.colors().len() <= 255);
@@ -457,13 +453,13 @@ mod tests {
 
     #[test]
     fn delays_do_not_drift() {
-        let w = GifWriter::new(4, 4, 30.0).unwrap();
+        let w = GifWriter::new(4, 4, 30.0, six()).unwrap();
         let total: u32 = (0..30).map(|k| w.delay(k) as u32).sum();
         assert_eq!(total, 100);
         // At the slowest rate allowed every delay fits its 16 bits
         // (100 / 0.0016 = 62,500 hundredths, under 65,535); below it the
         // delay would be cut to 655.35 s and the movie play faster.
-        let slow = GifWriter::new(4, 4, GIF_MIN_FPS).unwrap();
+        let slow = GifWriter::new(4, 4, GIF_MIN_FPS, six()).unwrap();
         assert!((0..3).all(|k| f64::from(slow.delay(k)) == (100.0 / GIF_MIN_FPS).round()));
         assert!(check_gif_fps(100.0 / 65_536.0).is_err());
     }

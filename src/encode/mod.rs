@@ -24,7 +24,7 @@ pub use format::{
     Format, FormatError, Formats, Kind, MP4_MAX, Mp4Quality, check_movie_fps, check_movie_frame,
     check_movie_size, parse_mixed,
 };
-pub use gif::{GIF_MAX_FPS, GifWriter, Palette, TRANSPARENT_INDEX};
+pub use gif::{GIF_MAX_FPS, GIF_RAMP_STEPS, GifWriter, Palette, TRANSPARENT_INDEX};
 pub use isobmff::{Mp4Track, annex_b_units, mp4_file};
 pub use movie::MovieWriter;
 #[cfg(feature = "mp4")]
@@ -37,22 +37,7 @@ pub use yuv::{Yuv420, rgba_to_yuv420};
 /// An sRGB colour without alpha.
 pub type Rgb = [u8; 3];
 
-/// Background of every scene.
+/// White: the background every frame is drawn on and the GIF palette's
+/// first entry (the colours of the scenes are the renderer's palette,
+/// handed to the GIF writer as a [`Palette`]).
 pub const WHITE: Rgb = [255, 255, 255];
-
-/// Colours the scene palette ramps to from white: dark grey (blocks, text,
-/// axes), vermillion (A springs, A ends), blue (B springs, B ends), bluish
-/// green (the Okabe–Ito colours of `render::theme::palette`), and the two
-/// ends of the kymograph's diverging map.
-pub const PALETTE_ANCHORS: [Rgb; 6] = [
-    [34, 34, 34],
-    [213, 94, 0],
-    [0, 114, 178],
-    [0, 158, 115],
-    [33, 102, 172],
-    [178, 24, 43],
-];
-
-/// Colours added to the palette verbatim (not ramps): mid grey for the
-/// ground state underneath, and pure black.
-pub const PALETTE_EXTRAS: [Rgb; 2] = [[150, 150, 150], [0, 0, 0]];

@@ -2,7 +2,7 @@
 //! formats get the very same frames.
 
 use super::format::{Format, Kind, Mp4Quality, check_movie_frame};
-use super::gif::GifWriter;
+use super::gif::{GifWriter, Palette};
 
 #[cfg(feature = "mp4")]
 use super::mp4::Mp4Writer;
@@ -19,18 +19,31 @@ pub struct MovieWriter {
 
 impl MovieWriter {
     /// A writer of `width × height` frames at `fps` for each of `formats`
-    /// (movie formats only; each is checked with [`check_movie_frame`]).
-    pub fn new(formats: &[Format], width: u32, height: u32, fps: f64) -> Result<Self> {
-        Self::with_quality(formats, width, height, fps, Mp4Quality::default())
+    /// (movie formats only; each is checked with [`check_movie_frame`]),
+    /// in the colours of `palette` (the GIF's table, which the MP4 shows
+    /// too).
+    pub fn new(
+        formats: &[Format],
+        (width, height): (u32, u32),
+        fps: f64,
+        palette: &'static Palette,
+    ) -> Result<Self> {
+        Self::with_quality(
+            formats,
+            (width, height),
+            fps,
+            palette,
+            Mp4Quality::default(),
+        )
     }
 
     /// [`MovieWriter::new`] with the MP4 at `quality` (the GIF is lossless
     /// within its palette and has no quality).
     pub fn with_quality(
         formats: &[Format],
-        width: u32,
-        height: u32,
+        (width, height): (u32, u32),
         fps: f64,
+        palette: &'static Palette,
         quality: Mp4Quality,
     ) -> Result<Self> {
         if formats.is_empty() {
@@ -49,7 +62,7 @@ impl MovieWriter {
             check_movie_frame(f, width, height, fps)?;
         }
         let gif = if formats.contains(&Format::Gif) {
-            Some(GifWriter::with_palette(width, height, fps, gif_palette())?)
+            Some(GifWriter::new(width, height, fps, palette)?)
         } else {
             None
         };
@@ -57,7 +70,7 @@ impl MovieWriter {
         let mp4 = if formats.contains(&Format::Mp4) {
             // The MP4 shows the GIF's colours, whether or not a GIF is
             // written (the same MP4 either way).
-            Some(Mp4Writer::with_quality(width, height, fps, quality)?.showing(gif_palette()))
+            Some(Mp4Writer::with_quality(width, height, fps, quality)?.showing(palette))
         } else {
             None
         };
@@ -106,9 +119,4 @@ impl MovieWriter {
         }
         Ok(out)
     }
-}
-
-/// The palette of every movie's GIF, in whose colours the MP4 is encoded.
-fn gif_palette() -> &'static super::gif::Palette {
-    super::gif::Palette::scene()
 }

@@ -12,6 +12,7 @@ use super::charts::Chart;
 use super::page_style::FontChoice;
 use super::style::{self, HAlign, VAlign};
 use crate::encode::Rgb;
+use crate::render::palette::{Palette, Role};
 use std::sync::Arc;
 use tiny_skia::{
     FillRule, FilterQuality, LineCap, Paint, Path, PathBuilder, Pixmap, PixmapPaint, Stroke,
@@ -238,7 +239,7 @@ impl Canvas for Raster<'_> {
             if let Some(r) = tiny_skia::Rect::from_xywh(0.0, 0.0, size.width(), size.height()) {
                 self.pixmap.fill_path(
                     &PathBuilder::from_rect(r),
-                    &paint(style::WHITE),
+                    &paint(Palette.color(Role::Paper)),
                     FillRule::Winding,
                     ts,
                     None,

@@ -6,9 +6,11 @@
 //! plotters writes an SVG with the bundled font, resvg rasterises it.
 
 use super::charts::{
-    Area, Chart, dark_axes, font, plot_error, rgb, same_format, short_number, titled,
+    Area, Chart, Glyph, LineStyle, Marker, dark_axes, font, plot_error, rgb, same_format,
+    short_number, titled,
 };
-use super::style::{self, DARK, size};
+use super::palette::{Palette, Role, contrast_on_white};
+use super::style::{self, size};
 use super::theme::Theme;
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
@@ -20,6 +22,9 @@ pub struct Cell {
     pub col: usize,
     pub row: usize,
     pub color: Rgb,
+    /// A mark drawn at the cell's centre (the cue besides colour:
+    /// [`Marker::None`] for none).
+    pub marker: Marker,
 }
 
 /// A shade bar beside the legend: `label`, from `lo` (colour `from`) to
@@ -44,9 +49,14 @@ pub struct CellChart {
     pub xs: Vec<f64>,
     pub ys: Vec<f64>,
     pub cells: Vec<Cell>,
-    /// (label, colour) of each colour used.
-    pub legend: Vec<(String, Rgb)>,
+    /// (label, colour, marker) of each colour used: the marker, drawn in
+    /// every cell of that colour and beside its swatch, is the second cue
+    /// ([`Cell::marker`]).
+    pub legend: Vec<(String, Rgb, Marker)>,
     pub shade: Option<ShadeBar>,
+    /// The cells' left and right edges across the chart, pixels, when
+    /// given (stacked panels sharing one x extent); `None` lays them out.
+    pub plot_x: Option<(i32, i32)>,
 }
 
 /// Width of the legend column, pixels.
@@ -65,6 +75,7 @@ pub fn cell_chart(theme: &Theme, c: &CellChart, width: u32, height: u32) -> Resu
     }
     style::register_plotters_font();
     let mut svg = String::new();
+    let plot_x;
     {
         let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
@@ -72,21 +83,25 @@ pub fn cell_chart(theme: &Theme, c: &CellChart, width: u32, height: u32) -> Resu
         // The legend beside the cells when the cells keep half the width
         // that way, else under them in rows (docs/formats.md: the plot
         // area keeps at least half of its panel each way).
-        if legend_beside(theme, c, width) {
+        plot_x = if legend_beside(theme, c, width) {
             let (main, side) = root.split_horizontally(width.saturating_sub(LEGEND_W));
-            draw_cells(theme, &main, c)?;
+            let x = draw_cells(theme, &main, c)?;
             draw_legend(theme, &side, c)?;
+            x
         } else {
             let below = legend_below_height(theme, c, width);
             let h = root.dim_in_pixel().1;
             let (main, bottom) = root.split_vertically(h.saturating_sub(below));
-            draw_cells(theme, &main, c)?;
+            let x = draw_cells(theme, &main, c)?;
             draw_legend_below(theme, &bottom, c)?;
-        }
+            x
+        };
         root.present().map_err(plot_error)?;
     }
     let svg = svg.replace("<rect ", "<rect shape-rendering=\"crispEdges\" ");
-    Chart::from_svg(theme, &svg, width, height)
+    let mut chart = Chart::from_svg(theme, &svg, width, height)?;
+    chart.plot_x = Some(plot_x);
+    Ok(chart)
 }
 
 /// Whether the legend goes beside the cells (else under them): when the
@@ -116,7 +131,8 @@ fn y_area(theme: &Theme, c: &CellChart) -> u32 {
     (widest + size::LABEL + 11.0).floor().max(64.0) as u32
 }
 
-fn draw_cells(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
+/// Draws the cells, their marks and axes; the plot's span across.
+fn draw_cells(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<(i32, i32)> {
     let (nx, ny) = (c.xs.len() as f64, c.ys.len() as f64);
     let y_area = y_area(theme, c);
     // As many x labels as fit side by side with a gap (at most 10).
@@ -126,13 +142,22 @@ fn draw_cells(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
             .fold(0.0f32, f32::max);
     let plot_w = area.dim_in_pixel().0 as f32 - y_area as f32 - 20.0;
     let x_room = ((plot_w / (widest_x + 12.0)).floor() as usize).clamp(2, 10);
-    let mut chart = ChartBuilder::on(area)
+    let mut builder = ChartBuilder::on(area);
+    builder
         .margin(14)
         .margin_right(6)
         .x_label_area_size(50)
-        .y_label_area_size(y_area)
+        .y_label_area_size(y_area);
+    if let Some((left, right)) = c.plot_x {
+        let width = area.dim_in_pixel().0 as i32;
+        builder
+            .y_label_area_size((left - 14).max(0) as u32)
+            .margin_right((width - right).max(0) as u32);
+    }
+    let mut chart = builder
         .build_cartesian_2d(-0.5..nx - 0.5, -0.5..ny - 0.5)
         .map_err(plot_error)?;
+    let span = chart.plotting_area().get_pixel_range().0;
     chart
         .draw_series(c.cells.iter().map(|cell| {
             let (x, y) = (cell.col as f64, cell.row as f64);
@@ -159,7 +184,78 @@ fn draw_cells(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
         .y_labels(ticks(c.ys.len(), 10))
         .x_label_formatter(&xf)
         .y_label_formatter(&yf);
-    dark_axes(theme, &mut mesh).draw().map_err(plot_error)
+    dark_axes(theme, &mut mesh).draw().map_err(plot_error)?;
+    draw_cell_marks(theme, &mut chart, c)?;
+    Ok((span.start, span.end))
+}
+
+/// Each cell's mark at its centre, in white on a dark fill and in ink on
+/// a pale one, so that outcomes differ by shape as well as by colour.
+fn draw_cell_marks<X, Y>(
+    theme: &Theme,
+    chart: &mut ChartContext<'_, SVGBackend<'_>, Cartesian2d<X, Y>>,
+    c: &CellChart,
+) -> Result<()>
+where
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let marks = c.cells.iter().filter(|cell| cell.marker != Marker::None);
+    let glyphs = marks.map(|cell| Glyph {
+        at: (cell.col as f64, cell.row as f64),
+        line: LineStyle::None,
+        marker: cell.marker,
+        color: mark_color(theme, cell.color),
+        width: CELL_MARK_WIDTH,
+        offset: 0,
+    });
+    chart.draw_series(glyphs).map_err(plot_error)?;
+    Ok(())
+}
+
+/// A legend swatch's mark (its cells' marker) at pixel `at` of `area`.
+fn swatch_mark(
+    theme: &Theme,
+    area: &Area<'_>,
+    at: (i32, i32),
+    fill: Rgb,
+    marker: Marker,
+) -> Result<()> {
+    if marker == Marker::None {
+        return Ok(());
+    }
+    let glyph = Glyph {
+        at,
+        line: LineStyle::None,
+        marker,
+        color: mark_color(theme, fill),
+        width: CELL_MARK_WIDTH,
+        offset: 0,
+    };
+    area.draw(&glyph).map_err(plot_error)
+}
+
+/// Line width of the marks in cells and beside the legend's swatches.
+const CELL_MARK_WIDTH: f64 = 1.5;
+
+/// The colour of a mark drawn on `fill`: white on a dark fill, ink on a
+/// pale one (whichever reads better).
+fn mark_color(theme: &Theme, fill: Rgb) -> Rgb {
+    let (ink, paper) = (theme.color(Role::Ink), theme.color(Role::Paper));
+    if contrast(fill, paper) > contrast(fill, ink) {
+        paper
+    } else {
+        ink
+    }
+}
+
+/// WCAG contrast of two colours.
+fn contrast(a: Rgb, b: Rgb) -> f64 {
+    let (la, lb) = (
+        1.05 / contrast_on_white(a) - 0.05,
+        1.05 / contrast_on_white(b) - 0.05,
+    );
+    (la.max(lb) + 0.05) / (la.min(lb) + 0.05)
 }
 
 /// Tick count that lands on whole cell indices: the number of cells when
@@ -186,14 +282,17 @@ fn bar_ticks(bar: &ShadeBar) -> Vec<String> {
 }
 
 fn draw_legend(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
-    let text = font(theme, theme.tick).into_font().color(&rgb(DARK));
+    let text = font(theme, theme.tick)
+        .into_font()
+        .color(&rgb(Palette.color(Role::Ink)));
     let mut y = 30;
-    for (label, color) in &c.legend {
+    for (label, color, marker) in &c.legend {
         area.draw(&Rectangle::new(
             [(8, y), (26, y + 18)],
             rgb(*color).filled(),
         ))
         .map_err(plot_error)?;
+        swatch_mark(theme, area, (17, y + 9), *color, *marker)?;
         area.draw(&Text::new(label.clone(), (32, y + 2), text.clone()))
             .map_err(plot_error)?;
         y += 26;
@@ -222,7 +321,7 @@ fn draw_legend(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
             let ty = y + h - (k as i32) * h / 2;
             area.draw(&PathElement::new(
                 vec![(8 + w, ty), (8 + w + 4, ty)],
-                rgb(DARK).stroke_width(1),
+                rgb(Palette.color(Role::Ink)).stroke_width(1),
             ))
             .map_err(plot_error)?;
             let anchored = text.clone().pos(plotters::style::text_anchor::Pos::new(
@@ -259,7 +358,7 @@ fn below_layout(theme: &Theme, c: &CellChart, width: u32) -> Below {
     let left = 8;
     let (mut x, mut row) = (left, 0);
     let mut entries = Vec::new();
-    for (label, _) in &c.legend {
+    for (label, _, _) in &c.legend {
         let w = swatch + (0.5 * t) as i32 + style::text_width(theme.font(), label, t).ceil() as i32;
         if x > left && x + w > width as i32 - left {
             x = left;
@@ -319,20 +418,24 @@ fn legend_below_height(theme: &Theme, c: &CellChart, width: u32) -> u32 {
 }
 
 fn draw_legend_below(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
-    let text = font(theme, theme.tick).into_font().color(&rgb(DARK));
+    let text = font(theme, theme.tick)
+        .into_font()
+        .color(&rgb(Palette.color(Role::Ink)));
     let b = below_layout(theme, c, area.dim_in_pixel().0);
     let t = theme.tick as i32;
     let left_middle = text.clone().pos(plotters::style::text_anchor::Pos::new(
         plotters::style::text_anchor::HPos::Left,
         plotters::style::text_anchor::VPos::Center,
     ));
-    for ((label, color), (x, row)) in c.legend.iter().zip(&b.entries) {
+    for ((label, color, marker), (x, row)) in c.legend.iter().zip(&b.entries) {
         let y = row * b.row_h + (b.row_h - b.swatch) / 2;
         area.draw(&Rectangle::new(
             [(*x, y), (x + b.swatch, y + b.swatch)],
             rgb(*color).filled(),
         ))
         .map_err(plot_error)?;
+        let centre = (x + b.swatch / 2, y + b.swatch / 2);
+        swatch_mark(theme, area, centre, *color, *marker)?;
         let at = (x + b.swatch + t / 2, y + b.swatch / 2);
         area.draw(&Text::new(label.clone(), at, left_middle.clone()))
             .map_err(plot_error)?;
@@ -367,7 +470,7 @@ fn draw_legend_below(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()
             let tx = x0 + (k as i32) * len / 2;
             area.draw(&PathElement::new(
                 vec![(tx, ty), (tx, ty + 4)],
-                rgb(DARK).stroke_width(1),
+                rgb(Palette.color(Role::Ink)).stroke_width(1),
             ))
             .map_err(plot_error)?;
             let anchored = text.clone().pos(plotters::style::text_anchor::Pos::new(
@@ -400,13 +503,15 @@ mod tests {
                         (0..3).map(move |row| Cell {
                             col,
                             row,
-                            color: DARK,
+                            color: Palette.color(Role::Ink),
+                            marker: Marker::None,
                         })
                     })
                     .collect(),
                 ys,
                 legend: vec![],
                 shade: None,
+                plot_x: None,
             };
             let theme = Theme::of(&Default::default());
             let chart = cell_chart(&theme, &c, 820, 480).unwrap();

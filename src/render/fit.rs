@@ -6,7 +6,7 @@
 
 use super::charts::{ChartSpec, line_chart_growing};
 use super::{PageSide, Picture, Style, Theme};
-use crate::error::Result;
+use crate::error::{Error, Result};
 
 /// Hundredths of an inch (the unit a refusal names) in points.
 const HUNDREDTH_PT: f32 = 0.72;
@@ -16,16 +16,30 @@ const LARGEST: u32 = 2778;
 /// `draw(theme)`, or when it does not fit its page at the style's text, a
 /// refusal naming the smallest width or height (in hundredths of an inch)
 /// at which `draw` fits: at that size the figure is drawn, and a hundredth
-/// less is refused. `draw` is called again for each size tried (by
-/// bisection), so it should not repeat costly work.
+/// less is refused. On a page of the user's (`--width`, `--height`) a
+/// figure also does not fit when its layout is crowded there
+/// ([`Picture::crowded`]: a text off the picture, texts overlapping, a
+/// plot collapsed) or a chart of it cannot be drawn that small; the side
+/// searched is then the one the user set. `draw` is called again for each
+/// size tried (by bisection), so it should not repeat costly work.
 pub fn fitted<T>(
     theme: &Theme,
     draw: impl Fn(&Theme) -> Result<(Picture, T)>,
 ) -> Result<(Picture, T)> {
-    let (picture, extra) = draw(theme)?;
     let style = theme.style;
-    let Some((side, need)) = picture.misfit(&style) else {
-        return Ok((picture, extra));
+    let first = draw(theme);
+    let (side, need) = match &first {
+        Ok((picture, _)) => match misfit(picture, &style) {
+            None => return first,
+            Some(m) => m,
+        },
+        // A chart asked smaller than it can be drawn on a page of the
+        // user's ("chart size must be between 60x60 …"): searched too.
+        Err(Error::BadInput(_)) if user_side(&style).is_some() => {
+            let side = user_side(&style).unwrap_or(PageSide::Width);
+            (side, 1.25 * asked(&style, side))
+        }
+        Err(_) => return first,
     };
     let at = |k: u32| {
         let pt = Some(k as f32 * HUNDREDTH_PT);
@@ -42,19 +56,26 @@ pub fn fitted<T>(
     };
     let fits = |k: u32| -> Result<bool> {
         let s = at(k);
-        Ok(draw(&Theme::of(&s))?.0.misfit(&s).is_none())
+        match draw(&Theme::of(&s)) {
+            Ok((p, _)) => Ok(misfit(&p, &s).is_none()),
+            Err(Error::BadInput(_)) => Ok(false),
+            Err(e) => Err(e),
+        }
     };
-    let asked = match side {
-        PageSide::Width => style.width_pt,
-        PageSide::Height => style.max_height_pt(),
-    }
-    .unwrap_or(0.0);
     // `lo` does not fit (it is the size asked, or below); `hi` does.
-    let mut lo = (asked / HUNDREDTH_PT).floor() as u32;
+    let mut lo = (asked(&style, side) / HUNDREDTH_PT).floor() as u32;
     let mut hi = ((need / HUNDREDTH_PT).round() as u32).max(lo + 1);
     while !fits(hi)? {
         if hi >= LARGEST {
-            return Err(picture.refusal(&style, side, need));
+            // Crowded at every size (or never drawn): what was drawn, or
+            // the refusal of the page's own overflow.
+            return match first {
+                Ok((picture, extra)) => match picture.misfit(&style) {
+                    Some((side, need)) => Err(picture.refusal(&style, side, need)),
+                    None => Ok((picture, extra)),
+                },
+                Err(e) => Err(e),
+            };
         }
         lo = hi;
         hi = (hi * 2).min(LARGEST);
@@ -67,7 +88,47 @@ pub fn fitted<T>(
             lo = mid;
         }
     }
-    Err(picture.refusal(&style, side, hi as f32 * HUNDREDTH_PT))
+    let smallest = hi as f32 * HUNDREDTH_PT;
+    let picture = match first {
+        Ok((p, _)) => p,
+        Err(_) => draw(&Theme::of(&at(hi)))?.0,
+    };
+    Err(picture.refusal(&style, side, smallest))
+}
+
+/// The side of the page and the size it needs when `picture` does not
+/// fit `style`: its own overflow ([`Picture::misfit`]), or on a page of
+/// the user's a crowded layout (a hundredth of an inch more than asked,
+/// on the side the user set).
+fn misfit(picture: &Picture, style: &Style) -> Option<(PageSide, f32)> {
+    picture.misfit(style).or_else(|| {
+        let side = user_side(style)?;
+        picture
+            .crowded()
+            .then(|| (side, asked(style, side) + HUNDREDTH_PT))
+    })
+}
+
+/// The side of the page the user set (`--height` before `--width`), if
+/// either differs from the named style's.
+fn user_side(style: &Style) -> Option<PageSide> {
+    let named = Style::named(style.name);
+    if style.height_pt != named.height_pt {
+        Some(PageSide::Height)
+    } else if style.width_pt != named.width_pt {
+        Some(PageSide::Width)
+    } else {
+        None
+    }
+}
+
+/// The size of `side` asked at `style`, pt (0 when it has none).
+fn asked(style: &Style, side: PageSide) -> f32 {
+    match side {
+        PageSide::Width => style.width_pt,
+        PageSide::Height => style.max_height_pt(),
+    }
+    .unwrap_or(0.0)
 }
 
 /// A figure of one line chart, `spec`, `screen` pixels at the screen style

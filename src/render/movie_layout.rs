@@ -11,9 +11,10 @@
 use super::canvas::{Canvas, Raster};
 use super::page_style::FontChoice;
 use super::snapshot::{self, Region, Snapshot};
-use super::style::{self, DARK, HAlign, VAlign, size};
+use super::style::{self, HAlign, VAlign, size};
 use super::theme::Theme;
 use crate::error::{Error, Result};
+use crate::render::palette::{Palette, Role};
 use tiny_skia::{Pixmap, Transform};
 
 /// The frame size at which one design pixel is one pixel.
@@ -168,7 +169,7 @@ impl MovieLayout {
 
     fn decorate(&self, c: &mut impl Canvas, title: &str, t_end: f64, n: usize) {
         for l in self.labels(title, t_end, n) {
-            c.text(&l.text, l.at, l.size, DARK, l.align);
+            c.text(&l.text, l.at, l.size, Palette.color(Role::Ink), l.align);
         }
     }
 
@@ -260,7 +261,7 @@ impl MovieLayout {
             if let Some((band, text)) = time_label {
                 let centre = (band.x + 0.5 * band.w, band.y + 0.5 * band.h);
                 let middle = (HAlign::Center, VAlign::Middle);
-                c.text(text, centre, size::LABEL, DARK, middle);
+                c.text(text, centre, size::LABEL, Palette.color(Role::Ink), middle);
             }
         }
         let bytes = 4 * canvas.width() as usize * self.title_rows();

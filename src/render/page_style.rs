@@ -156,10 +156,6 @@ pub const MIN_PRINT_TEXT_PT: f32 = 6.0;
 /// floats beside text (the paper's Fig. 3, four rows of seven ladders, is
 /// one PRL column about that tall).
 pub const MAX_FIGURE_HEIGHT_PT: f32 = 4.5 * PT_PER_IN;
-/// Text size, in points, down to which a figure composed for a style with
-/// larger text (a slide's 20 pt) may be set, so that filmstrips and
-/// panels fit one slide.
-pub const SMALLEST_COMPOSED_TEXT_PT: f32 = 10.0;
 
 impl Style {
     /// The style `name` with its own sizes.
@@ -237,13 +233,12 @@ impl Style {
 
     /// The box, in design pixels, that composed figures (filmstrips,
     /// panels of drawings) are laid out to fit at a print style: the page
-    /// width by [`Style::max_height_pt`], enlarged where the style's text is
-    /// above [`SMALLEST_COMPOSED_TEXT_PT`] (a slide: twice) so that text may
-    /// print down to that size.
+    /// width by [`Style::max_height_pt`], at the style's own scale, so that
+    /// text prints at the style's size at every style (a slide's 20 pt
+    /// too: docs/formats.md, text never shrinks to fit).
     pub fn fit_box(&self) -> Option<(f32, f32)> {
         let (w, h) = (self.width_pt?, self.max_height_pt()?);
-        let zoom = (self.font_pt / SMALLEST_COMPOSED_TEXT_PT).max(1.0);
-        let px = self.px_per_pt() * zoom;
+        let px = self.px_per_pt();
         Some((w * px, h * px))
     }
 
@@ -514,10 +509,11 @@ mod tests {
         assert!((w - 243.0 * 15.0 / 8.0).abs() < 1e-3 && (h - 324.0 * 15.0 / 8.0).abs() < 1e-3);
         let s = Style::named(StyleName::Slide);
         assert_eq!(s.max_height_pt(), Some(540.0));
-        // 20 pt text composed down to 10 pt: twice the 0.75 px per pt frame.
+        // 20 pt text at 20 pt: the 0.75 px per pt frame (it was twice
+        // that, and slides set 20 pt text down to 10 pt).
         let (w, h) = s.fit_box().unwrap();
         assert!(
-            (w - 960.0 * 1.5).abs() < 0.1 && (h - 540.0 * 1.5).abs() < 0.1,
+            (w - 960.0 * 0.75).abs() < 0.1 && (h - 540.0 * 0.75).abs() < 0.1,
             "{w} {h}"
         );
         assert_eq!(Style::default().fit_box(), None);

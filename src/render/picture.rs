@@ -231,10 +231,8 @@ impl Picture {
     /// taller than the page allows, at the style's scale (docs/formats.md:
     /// text is never scaled to fit). The message names the flag and the
     /// smallest size that holds this layout (a layout that moves with the
-    /// size is searched by [`super::fitted`]). Composed figures at
-    /// a style whose text is above
-    /// [`super::page_style::SMALLEST_COMPOSED_TEXT_PT`] (a slide) may set
-    /// their text down to that size.
+    /// size is searched by [`super::fitted`]). No style sets its text
+    /// smaller (a slide's 20 pt included).
     pub fn check_print_scale(&self, style: &Style) -> Result<()> {
         match self.misfit(style) {
             None => Ok(()),
@@ -248,8 +246,7 @@ impl Picture {
     /// it does not. `None` when it fits (or the style has no page).
     pub fn misfit(&self, style: &Style) -> Option<(PageSide, f32)> {
         let (w_pt, max_h) = (style.width_pt?, style.max_height_pt()?);
-        let zoom = (style.font_pt / super::page_style::SMALLEST_COMPOSED_TEXT_PT).max(1.0);
-        let px_per_pt = style.px_per_pt() * zoom;
+        let px_per_pt = style.px_per_pt();
         let (cw, ch) = self.content.unwrap_or((self.width, self.height));
         let (need_w, need_h) = (cw / px_per_pt, ch / px_per_pt);
         let smallest = |need_pt: f32| (need_pt / PRINT_SLACK / 0.72).ceil() * 0.72;

@@ -8,14 +8,14 @@
 
 use super::canvas::{Canvas, Pen, Raster};
 use super::picture::Picture;
-use super::style::{self, DARK, GREY, HAlign, VAlign, WHITE, size};
+use super::style::{self, HAlign, VAlign, size};
 use super::theme::Theme;
-use super::theme::palette;
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::model::ladder::{ix, iy, nodes};
 use crate::model::params::S;
+use crate::render::palette::{Palette, Role};
 use tiny_skia::Pixmap;
 
 /// Model units added around the fitted states (room for the pin support).
@@ -304,7 +304,7 @@ pub fn snapshot_picture(
 /// Clears `pixmap` to white and renders a snapshot over all of it (reuses
 /// the allocation: the per-frame path of movies).
 pub fn render_snapshot_into(theme: &Theme, pixmap: &mut Pixmap, snap: &Snapshot<'_>) {
-    pixmap.fill(style::color(WHITE));
+    pixmap.fill(style::color(Palette.color(Role::Paper)));
     let r = Region::full(pixmap.width(), pixmap.height());
     draw_snapshot(theme, pixmap, r, snap);
 }
@@ -331,24 +331,30 @@ pub fn draw_snapshot_on(canvas: &mut impl Canvas, region: Region, snap: &Snapsho
         draw_lab_scale(canvas, &map, inner, xs);
     }
     if let Some(g) = snap.ghost {
-        draw_ladder(canvas, &map, g, &Palette::ghost());
+        draw_ladder(canvas, &map, g, &LadderInks::ghost());
     }
     if snap.clamp && snap.q.len() >= 3 {
         draw_clamp(canvas, &map, [snap.q[ix(0)], snap.q[iy(0)]]);
     }
-    draw_ladder(canvas, &map, snap.q, &Palette::live());
+    draw_ladder(canvas, &map, snap.q, &LadderInks::live());
     if snap.clamp && snap.q.len() >= 3 {
         draw_pivot(canvas, &map, [snap.q[ix(0)], snap.q[iy(0)]]);
     }
     // A fixed window (a camera) may cut the ladder: clear the label bands.
     if snap.view.is_some() {
-        canvas.rect(region.x, region.y, region.w, margin + top, WHITE);
+        canvas.rect(
+            region.x,
+            region.y,
+            region.w,
+            margin + top,
+            Palette.color(Role::Paper),
+        );
         canvas.rect(
             region.x,
             inner.y + inner.h,
             region.w,
             margin + bottom,
-            WHITE,
+            Palette.color(Role::Paper),
         );
     }
     draw_labels(canvas, region, margin, snap);
@@ -356,8 +362,15 @@ pub fn draw_snapshot_on(canvas: &mut impl Canvas, region: Region, snap: &Snapsho
 
 /// The lines and numbers of [`Snapshot::lab_scale`] inside `inner`.
 fn draw_lab_scale(canvas: &mut impl Canvas, map: &Mapping, inner: Region, xs: &[f64]) {
-    let line = Pen::new(1.0, style::mix(GREY, WHITE, 0.55));
-    let number = style::mix(GREY, DARK, 0.3);
+    let line = Pen::new(
+        1.0,
+        style::mix(
+            Palette.color(Role::Ground),
+            Palette.color(Role::Paper),
+            0.55,
+        ),
+    );
+    let number = style::mix(Palette.color(Role::Ground), Palette.color(Role::Ink), 0.3);
     let label_size = 0.8 * size::TICK;
     for (i, &x) in xs.iter().enumerate() {
         let (_, py) = map.px([x, map.y_mid]);
@@ -407,7 +420,13 @@ pub fn pixel_of(region: Region, snap: &Snapshot<'_>, p: [f64; 2]) -> (f32, f32) 
 fn draw_labels(canvas: &mut impl Canvas, region: Region, margin: f32, snap: &Snapshot<'_>) {
     if let Some(title) = snap.title {
         let at = (region.x + 0.5 * region.w, region.y + margin);
-        canvas.text(title, at, size::TITLE, DARK, (HAlign::Center, VAlign::Top));
+        canvas.text(
+            title,
+            at,
+            size::TITLE,
+            Palette.color(Role::Ink),
+            (HAlign::Center, VAlign::Top),
+        );
     }
     if let Some(t) = snap.time {
         // Centred under the ladder: in movies the changed rectangle of each
@@ -418,14 +437,14 @@ fn draw_labels(canvas: &mut impl Canvas, region: Region, margin: f32, snap: &Sna
             &label,
             at,
             size::LABEL,
-            DARK,
+            Palette.color(Role::Ink),
             (HAlign::Center, VAlign::Baseline),
         );
     }
 }
 
 /// Colours of one drawn ladder.
-struct Palette {
+struct LadderInks {
     block: Rgb,
     a_end: Rgb,
     b_end: Rgb,
@@ -433,23 +452,23 @@ struct Palette {
     b_spring: Rgb,
 }
 
-impl Palette {
-    fn live() -> Palette {
-        Palette {
-            block: DARK,
-            a_end: palette::SPRING_A,
-            b_end: palette::SPRING_B,
-            a_spring: palette::SPRING_A,
-            b_spring: palette::SPRING_B,
+impl LadderInks {
+    fn live() -> LadderInks {
+        LadderInks {
+            block: Palette.color(Role::Ink),
+            a_end: Palette.color(Role::SpringA),
+            b_end: Palette.color(Role::SpringB),
+            a_spring: Palette.color(Role::SpringA),
+            b_spring: Palette.color(Role::SpringB),
         }
     }
 
-    fn ghost() -> Palette {
-        let light = style::mix(WHITE, GREY, 0.6);
-        Palette {
-            block: GREY,
-            a_end: GREY,
-            b_end: GREY,
+    fn ghost() -> LadderInks {
+        let light = style::mix(Palette.color(Role::Paper), Palette.color(Role::Ground), 0.6);
+        LadderInks {
+            block: Palette.color(Role::Ground),
+            a_end: Palette.color(Role::Ground),
+            b_end: Palette.color(Role::Ground),
             a_spring: light,
             b_spring: light,
         }
@@ -459,7 +478,7 @@ impl Palette {
 /// Springs first, then the blocks on top of them. B springs are dashed
 /// (dashes three spring widths long, gaps two): the cue besides colour that
 /// tells them from the A springs in grey print and to colour-blind eyes.
-fn draw_ladder(canvas: &mut impl Canvas, map: &Mapping, q: &[f64], pal: &Palette) {
+fn draw_ladder(canvas: &mut impl Canvas, map: &Mapping, q: &[f64], pal: &LadderInks) {
     let n = q.len() / 3;
     let spring_w = map.len(0.045, 1.0, 4.0);
     let block_w = map.len(0.16, 2.5, 14.0);
@@ -491,7 +510,7 @@ fn draw_block(
     a: [f64; 2],
     b: [f64; 2],
     w: f32,
-    pal: &Palette,
+    pal: &LadderInks,
 ) {
     let at = |f: f64| map.px([a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f]);
     canvas.line(at(0.0), at(1.0), &Pen::new(w, pal.block));
@@ -505,10 +524,17 @@ fn draw_clamp(canvas: &mut impl Canvas, map: &Mapping, centre: [f64; 2]) {
     let apex = map.px(centre);
     let l = map.px([centre[0] - h, centre[1] - 0.22 * S]);
     let r = map.px([centre[0] - h, centre[1] + 0.22 * S]);
-    canvas.polygon(&[apex, l, r], style::mix(WHITE, DARK, 0.55));
+    canvas.polygon(
+        &[apex, l, r],
+        style::mix(Palette.color(Role::Paper), Palette.color(Role::Ink), 0.55),
+    );
     let wl = map.px([centre[0] - h, centre[1] - 0.32 * S]);
     let wr = map.px([centre[0] - h, centre[1] + 0.32 * S]);
-    canvas.line(wl, wr, &Pen::new(map.len(0.06, 1.5, 4.0), DARK));
+    canvas.line(
+        wl,
+        wr,
+        &Pen::new(map.len(0.06, 1.5, 4.0), Palette.color(Role::Ink)),
+    );
 }
 
 /// A white pin with a dark rim at the centre of block 1.
@@ -516,7 +542,10 @@ fn draw_pivot(canvas: &mut impl Canvas, map: &Mapping, centre: [f64; 2]) {
     let (x, y) = map.px(centre);
     let r = map.len(0.06, 1.5, 6.0);
     if let Some(path) = tiny_skia::PathBuilder::from_circle(x, y, r) {
-        canvas.fill(&path, WHITE);
-        canvas.stroke(&path, &Pen::new((0.5 * r).max(1.0), DARK));
+        canvas.fill(&path, Palette.color(Role::Paper));
+        canvas.stroke(
+            &path,
+            &Pen::new((0.5 * r).max(1.0), Palette.color(Role::Ink)),
+        );
     }
 }

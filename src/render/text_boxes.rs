@@ -11,6 +11,10 @@ use super::style;
 use resvg::usvg;
 use tiny_skia::{Point, Transform};
 
+/// The least width and height of a chart's plot, in tick text sizes
+/// (60 px at 15 px ticks): room for two tick labels and the data between.
+pub const MIN_PLOT_EM: f32 = 4.0;
+
 /// One text's box on the page, design pixels.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TextBox {
@@ -42,6 +46,45 @@ impl Picture {
             &mut out,
         );
         out
+    }
+
+    /// Whether the picture's layout is too tight to read at its size: a
+    /// text leaving the picture, two texts overlapping, or a chart's plot
+    /// narrower or shorter than [`MIN_PLOT_EM`] tick sizes (the energy
+    /// view 1 in wide once collapsed its plot). A figure drawn on a page
+    /// of the user's that is crowded is refused, naming a size at which it
+    /// is not ([`super::fitted`]).
+    pub fn crowded(&self) -> bool {
+        let boxes = self.text_boxes();
+        let (w, h) = (self.width(), self.height());
+        let tol = 0.5;
+        let off = boxes.iter().any(|b| {
+            let [x0, y0, x1, y1] = b.rect;
+            x0 < -tol || y0 < -tol || x1 > w + tol || y1 > h + tol
+        });
+        let overlap = boxes
+            .iter()
+            .enumerate()
+            .any(|(i, a)| boxes[i + 1..].iter().any(|b| a.overlaps(b, 1.0)));
+        off || overlap || self.plot_collapsed()
+    }
+
+    /// Whether a chart of the picture has a plot narrower or shorter than
+    /// [`MIN_PLOT_EM`] of its tick text.
+    fn plot_collapsed(&self) -> bool {
+        fn any(items: &[Item]) -> bool {
+            items.iter().any(|i| match i {
+                Item::Chart { chart, .. } => {
+                    let least = MIN_PLOT_EM * chart.theme.tick;
+                    let short =
+                        |s: Option<(i32, i32)>| s.is_some_and(|(a, b)| ((b - a) as f32) < least);
+                    short(chart.plot_x) || short(chart.plot_y)
+                }
+                Item::Group { items, .. } => any(items),
+                _ => false,
+            })
+        }
+        any(self.items())
     }
 
     /// What breaks the layout rules at `style`, one line each (empty: none).

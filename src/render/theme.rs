@@ -9,18 +9,16 @@
 //! included, 8 pt at `paper`) and sub- and superscripts at no less than
 //! [`MIN_SCRIPT_PT`]; the screen keeps its pixel sizes.
 //!
-//! The one palette is Okabe and Ito's colour-blind-safe set ("Color
-//! Universal Design", 2008), without its yellow (too pale on paper): the
-//! ladder's springs, every chart series and every categorical mark take
-//! their colour from [`palette`]. Every categorical distinction carries a
-//! second cue besides colour (B springs dashed, outcomes by marker, waves
-//! by marker and dash).
+//! The theme holds the one palette ([`Theme::palette`],
+//! [`super::palette`]): the ladder's springs, every chart series and every
+//! categorical mark ask it for the colour and marker of their role
+//! ([`Theme::color`], [`Theme::marker`]).
 //!
-//! Floors: `theme` knows the style ([`super::page_style`]); the text and
-//! colour helpers ([`super::style`]) know the theme; nothing here reaches
-//! back to them.
+//! Floors: `theme` knows the style ([`super::page_style`]) and the
+//! palette; the text and colour helpers know neither.
 
 use super::page_style::{FontChoice, Style, StyleName};
+use super::palette::{Marker, Palette, Role};
 use crate::encode::Rgb;
 
 /// Sizes at the screen style, in pixels at 100 % zoom: the base every
@@ -48,50 +46,13 @@ pub const MIN_SCRIPT_PT: f32 = 5.0;
 /// Size of super- and subscripts relative to their text.
 pub const SCRIPT_SCALE: f32 = 0.7;
 
-/// The one palette: Okabe and Ito's colours by name, and the roles the
-/// drawing code gives them.
-pub mod palette {
-    use crate::encode::Rgb;
-
-    /// Ink: text, axes, blocks (Okabe–Ito's black, softened).
-    pub const INK: Rgb = [34, 34, 34];
-    pub const VERMILLION: Rgb = [213, 94, 0];
-    pub const BLUE: Rgb = [0, 114, 178];
-    pub const BLUISH_GREEN: Rgb = [0, 158, 115];
-    pub const ORANGE: Rgb = [230, 159, 0];
-    pub const SKY_BLUE: Rgb = [86, 180, 233];
-    pub const REDDISH_PURPLE: Rgb = [204, 121, 167];
-    /// Mid grey: the ground state drawn underneath, undecided runs.
-    pub const GREY: Rgb = [150, 150, 150];
-    pub const WHITE: Rgb = [255, 255, 255];
-
-    /// The series colours in order (yellow left out: too pale on paper).
-    pub const SERIES: [Rgb; 7] = [
-        INK,
-        VERMILLION,
-        BLUE,
-        BLUISH_GREEN,
-        ORANGE,
-        SKY_BLUE,
-        REDDISH_PURPLE,
-    ];
-
-    /// A springs and the A end of each block (paper Fig. 2), drawn solid.
-    pub const SPRING_A: Rgb = VERMILLION;
-    /// B springs and the B end of each block, drawn dashed: the second
-    /// cue besides colour.
-    pub const SPRING_B: Rgb = BLUE;
-    /// A kink, in every chart (drawn solid, with circles).
-    pub const KINK: Rgb = VERMILLION;
-    /// An antikink, in every chart (drawn dashed, with squares or rings).
-    pub const ANTIKINK: Rgb = BLUE;
-}
-
 /// Everything a figure's drawing code sizes and colours by.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Theme {
     /// The style the theme was built from.
     pub style: Style,
+    /// The colours and markers of every role.
+    pub palette: Palette,
     /// Whether titles are drawn inside the figure: at `screen` and
     /// `slide`; journal styles leave the title to the caption.
     pub titles: bool,
@@ -139,7 +100,9 @@ pub struct Theme {
     /// axis label under them.
     pub x_label_area: u32,
     /// Height of the x label area of a panel whose x axis is shared with
-    /// the panel below (4 px: its ticks only, the labels are below).
+    /// the panel below: its ticks and their numbers (1.3 tick sizes and
+    /// 6 px), so that every stacked panel's axis can be read; the axis
+    /// label is the bottom panel's.
     pub shared_x_area: u32,
     /// Pixels a y tick mark and its gap take beside the tick labels (10).
     pub tick_gap: f32,
@@ -234,6 +197,7 @@ impl Theme {
         };
         Theme {
             style: *style,
+            palette: Palette,
             titles: !journal,
             px_per_pt,
             // Titles and panel titles at a print style: the text's size.
@@ -269,7 +233,7 @@ impl Theme {
             },
             y_label_area: 64,
             x_label_area: 50,
-            shared_x_area: 4,
+            shared_x_area: (1.3 * tick + 6.0).ceil() as u32,
             tick_gap: 10.0,
             axis_label_line_em: 1.3,
             axis_label_gap: 6.0,
@@ -346,10 +310,20 @@ impl Theme {
         (size * SCRIPT_SCALE).max(self.min_script.min(size))
     }
 
-    /// The `i`-th series colour (the palette repeats after seven: series
-    /// should also differ by dash or marker).
-    pub fn series(&self, i: usize) -> Rgb {
-        palette::SERIES[i % palette::SERIES.len()]
+    /// The colour of `role` ([`Palette::color`]).
+    pub fn color(&self, role: Role) -> Rgb {
+        self.palette.color(role)
+    }
+
+    /// The colour of words in `role`'s colour, readable on white
+    /// ([`Palette::text`]).
+    pub fn text_color(&self, role: Role) -> Rgb {
+        self.palette.text(role)
+    }
+
+    /// The marker of `role`, open for an antikink ([`Palette::marker`]).
+    pub fn marker(&self, role: Role, antikink: bool) -> Marker {
+        self.palette.marker(role, antikink)
     }
 
     /// Points per design pixel at the style's own scale.
@@ -420,8 +394,10 @@ mod tests {
 
     #[test]
     fn the_springs_take_two_palette_colours() {
-        assert!(palette::SERIES.contains(&palette::SPRING_A));
-        assert!(palette::SERIES.contains(&palette::SPRING_B));
-        assert_ne!(palette::SPRING_A, palette::SPRING_B);
+        use crate::render::palette::named::SERIES;
+        let t = Theme::of(&Style::default());
+        assert!(SERIES.contains(&t.color(Role::SpringA)));
+        assert!(SERIES.contains(&t.color(Role::SpringB)));
+        assert_ne!(t.color(Role::SpringA), t.color(Role::SpringB));
     }
 }

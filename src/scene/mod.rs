@@ -66,6 +66,12 @@ pub struct Scene {
     /// `[apparatus]`, `scene::apparatus`). Default none: the model's units.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub apparatus: Option<apparatus::Apparatus>,
+    /// The double ring chain (paper Fig. 4b, SI Movie 12; `[rings]`,
+    /// docs/rings.md). Default none: the scene is a ladder. A scene with
+    /// a ring chain runs it instead of the ladder and makes a movie, a
+    /// filmstrip or a kymograph of it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rings: Option<crate::rings::RingChain>,
     /// The caps on what making this output may cost (docs/limits.md):
     /// steps × N, samples × N, frames × pixels, a data file's bytes, a
     /// theory figure's work. Not part of a scene file and never recorded:
@@ -89,6 +95,7 @@ impl Default for Scene {
             output: OutputSpec::default(),
             style: crate::render::StyleSpec::default(),
             apparatus: None,
+            rings: None,
             limits: crate::limits::Limits::default(),
         }
     }
@@ -307,10 +314,18 @@ impl Scene {
     }
 }
 
-/// `frames` times evenly over [0, t_end].
+/// `frames` times evenly over [0, t_end], the last exactly t_end
+/// (t_end · k / k can round one ulp above t_end, outside the window).
 pub fn even_times(t_end: f64, frames: usize) -> Vec<f64> {
-    let last = (frames.max(2) - 1) as f64;
-    (0..frames.max(2))
-        .map(|k| t_end * k as f64 / last)
+    let count = frames.max(2);
+    let last = (count - 1) as f64;
+    (0..count)
+        .map(|k| {
+            if k + 1 == count {
+                t_end
+            } else {
+                t_end * k as f64 / last
+            }
+        })
         .collect()
 }

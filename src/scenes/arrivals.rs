@@ -5,9 +5,9 @@ use super::data::RunData;
 use super::dynamic::{panel_labels, wave_name};
 use super::run::{self};
 use crate::error::Result;
-use crate::render::charts::{Axis, ChartSpec, Marker, Series};
+use crate::render::charts::{Axis, ChartSpec, Series};
 use crate::render::line_chart_figure;
-use crate::render::{Picture, Theme, style};
+use crate::render::{Palette, Picture, Role, Theme};
 use crate::scene::{Scene, describe};
 use crate::sim::{self};
 
@@ -34,10 +34,12 @@ fn fitted_line(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
 }
 
 /// The arrival-time chart (figure S6): t_n against n for every wave of
-/// every run (from the run's waves record), each wave its own colour of
-/// the palette and its own marker, with its fitted line (solid for a
-/// kink, dashed for an antikink) and its fitted speed in the legend;
-/// drawn with `theme`.
+/// every run (from the run's waves record), a kink's marks vermillion and
+/// filled, an antikink's blue and open, each wave of a kind its own
+/// shape, with its fitted line (solid for a kink, dashed for an
+/// antikink) and its fitted speed in the legend; successive waves set
+/// [`DODGE`] blocks apart across so that none hides another; drawn with
+/// `theme`.
 pub fn arrivals_figure(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     // The runs once; the chart is drawn again only to search a size.
     let (spec, data) = arrivals_chart(scene)?;
@@ -59,13 +61,11 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
         Axis::new("arrival time tₙ / τ"),
     )
     .title(describe::title(scene));
-    let markers = [
-        Marker::Circle,
-        Marker::Square,
-        Marker::Triangle,
-        Marker::Cross,
-    ];
-    let mut k = 0;
+    // Every wave's marks and fitted line, collected first: each is then
+    // set off across by its own small step, so that marks at one block
+    // (every run's flip of block 1, a pinned wave's block 2) stand side
+    // by side instead of on top of one another.
+    let mut drawn: Vec<Arrivals> = Vec::new();
     let mut data = Vec::with_capacity(runs.len());
     for ((s, _), label) in runs.iter().zip(&labels) {
         let run = run::simulate(s, &[])?;
@@ -105,18 +105,39 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
                 ),
                 (true, false) => format!("{label}, {word} from t/τ = {launched}"),
             };
-            let color = style::series_color(k + 1);
-            spec = spec.series(
-                Series::scatter(format!("{name}: {speed}"), pts, color, markers[k % 4])
-                    .with_width(1.5),
-            );
-            if let Some(line) = fitted_line(&arrivals) {
-                let fit = Series::line("", line, color).with_width(1.5);
-                spec = spec.series(if kink { fit } else { fit.dashed() });
-            }
-            k += 1;
+            drawn.push(Arrivals {
+                label: format!("{name}: {speed}"),
+                kink,
+                marks: pts,
+                line: fitted_line(&arrivals),
+            });
         }
         data.push(RunData::new(label, s, &run));
+    }
+    let count = drawn.len();
+    let (mut kinks, mut antikinks) = (0, 0);
+    for (k, wave) in drawn.into_iter().enumerate() {
+        let dx = DODGE * (k as f64 - 0.5 * (count as f64 - 1.0));
+        let shift = |p: Vec<(f64, f64)>| p.into_iter().map(|(x, y)| (x + dx, y)).collect();
+        // The wave's role colours it (a kink vermillion, an antikink
+        // blue, as in every figure); its place among the waves of its
+        // kind gives its shape, filled for a kink and open for an
+        // antikink.
+        let (role, j) = if wave.kink {
+            kinks += 1;
+            (Role::Kink, kinks - 1)
+        } else {
+            antikinks += 1;
+            (Role::Antikink, antikinks - 1)
+        };
+        let color = Palette.color(role);
+        let marker = Palette.series_marker(j, !wave.kink);
+        spec = spec
+            .series(Series::scatter(wave.label, shift(wave.marks), color, marker).with_width(1.5));
+        if let Some(line) = wave.line {
+            let fit = Series::line("", shift(line), color).with_width(1.5);
+            spec = spec.series(if wave.kink { fit } else { fit.dashed() });
+        }
     }
     Ok((spec, data))
 }
@@ -135,6 +156,19 @@ fn without_speed(wave: Option<&sim::waves::Wave>) -> String {
         Some((Fate::Annihilated { block, .. }, _)) => format!("annihilated at block {block}"),
         _ => "no speed".to_string(),
     }
+}
+
+/// How far apart across, in blocks, the marks of successive waves are
+/// set at one block (0.08: six waves take a third of a block).
+const DODGE: f64 = 0.08;
+
+/// One wave as drawn: its legend, kind, marks (block, arrival time) and
+/// fitted line.
+struct Arrivals {
+    label: String,
+    kink: bool,
+    marks: Vec<(f64, f64)>,
+    line: Option<Vec<(f64, f64)>>,
 }
 
 /// A wave of the arrivals chart: kink or not, launched at, its arrival

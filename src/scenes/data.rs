@@ -34,6 +34,10 @@ pub struct DataFile<'a> {
     pub scene: &'a Scene,
     /// One entry per simulation drawn (empty for the theory figures).
     pub runs: Vec<RunData>,
+    /// The numbers a theory figure plots (its curves and points,
+    /// `scenes::theory::Drawn`); absent for every other output.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub drawn: Option<serde_json::Value>,
 }
 
 /// What an output was drawn with besides its scene: the scene rendered
@@ -125,6 +129,39 @@ pub struct RunData {
     /// `scenes::energy`); absent where none is drawn.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub energies: Option<EnergyData>,
+    /// An apparatus run's numbers in the apparatus' units, as the
+    /// experiment figures draw them (docs/experiments.md); absent for a
+    /// run in the model's units only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub apparatus: Option<ApparatusNumbers>,
+}
+
+/// An apparatus run in seconds and centimetres: what the experiment
+/// figures plot (docs/experiments.md, "Built-in scenes and figures").
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ApparatusNumbers {
+    /// The unit of time τ (s) and the block pitch b (cm).
+    pub tau_s: f64,
+    pub pitch_cm: f64,
+    /// Each block's arrival time t_n (s), and t_n − t_1: the time since
+    /// block 1 flipped, the positions figure's time axis.
+    pub arrival_times_s: Vec<Option<f64>>,
+    pub since_block_1_s: Vec<Option<f64>>,
+    /// The bulk speed (cm/s) and its fitted line, where the lower half
+    /// of the chain flipped down it one block after another.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bulk: Option<BulkFit>,
+}
+
+/// The least-squares line through the lower half of the chain's
+/// arrivals: position (n − 1) b = centroid_cm + speed_cm_s (t − t_1 −
+/// centroid_s), fitted over blocks `blocks` (one-based, inclusive).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct BulkFit {
+    pub speed_cm_s: f64,
+    pub blocks: [usize; 2],
+    pub centroid_s: f64,
+    pub centroid_cm: f64,
 }
 
 /// The state drawn at one time.
@@ -312,6 +349,7 @@ impl RunData {
             frames: Frames(Arc::new(rows)),
             kymograph: None,
             energies: None,
+            apparatus: None,
         }
     }
 }

@@ -14,6 +14,7 @@ use crate::model::Ladder;
 use crate::render::compose::{
     self, ChainMark, FilmstripOptions, Frame, Layout, Panel, StripGeometry,
 };
+use crate::render::palette::Role;
 use crate::render::{Picture, Theme, style};
 use crate::scene::{MIN_BLOCK_PIXELS, OutputSpec, Scene, describe};
 
@@ -141,11 +142,7 @@ pub(crate) fn front_marks(waves: &crate::sim::waves::Waves, t: f64) -> Vec<Chain
             Some(ChainMark {
                 at: last.map_or(w.origin, |(b, _)| b) as f64,
                 label: String::new(),
-                color: if kink {
-                    crate::render::theme::palette::KINK
-                } else {
-                    crate::render::theme::palette::ANTIKINK
-                },
+                role: if kink { Role::Kink } else { Role::Antikink },
                 side: if kink {
                     style::HAlign::Left
                 } else {
@@ -354,7 +351,7 @@ pub(crate) fn panel_labels(scene: &Scene) -> Vec<String> {
 #[cfg(test)]
 mod front_mark_tests {
     use super::*;
-    use crate::render::theme::palette;
+    use crate::render::Palette;
     use crate::render::{Item, Style, StyleName};
     use crate::scene::Kind;
     use tiny_skia::Transform;
@@ -430,7 +427,7 @@ mod front_mark_tests {
         triangles(
             picture.items(),
             Transform::identity(),
-            &[palette::KINK, palette::ANTIKINK],
+            &[Palette.color(Role::Kink), Palette.color(Role::Antikink)],
             &mut found,
         );
         let mut expected_total = 0;

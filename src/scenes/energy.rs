@@ -19,8 +19,8 @@ use super::run;
 use crate::error::{Error, Result};
 use crate::render::charts::{Axis, ChartSpec, Series};
 use crate::render::line_chart_figure;
-use crate::render::theme::palette;
-use crate::render::{Picture, Theme, style};
+use crate::render::palette::{Palette, Role};
+use crate::render::{Picture, Theme};
 use crate::scene::{Scene, describe};
 use crate::sim::RunOptions;
 
@@ -74,17 +74,27 @@ pub fn energy_chart(scene: &Scene, e: &EnergyData) -> ChartSpec {
         Axis::new("energy − its value at t = 0 (k s²)"),
     );
     let lines: [(&str, &[f64], crate::encode::Rgb, bool); 6] = [
-        ("kinetic", &e.kinetic, palette::SKY_BLUE, false),
-        ("elastic", &e.elastic, palette::BLUISH_GREEN, false),
-        ("gravitational", &e.gravitational, palette::ORANGE, false),
+        ("kinetic", &e.kinetic, Palette.color(Role::Series(5)), false),
+        ("elastic", &e.elastic, Palette.color(Role::Series(3)), false),
+        (
+            "gravitational",
+            &e.gravitational,
+            Palette.color(Role::Series(4)),
+            false,
+        ),
         (
             "dissipated so far",
             &e.dissipated,
-            palette::REDDISH_PURPLE,
+            Palette.color(Role::Series(6)),
             true,
         ),
-        ("total", &e.total, palette::VERMILLION, false),
-        ("total + dissipated", &with, palette::BLUE, false),
+        ("total", &e.total, Palette.color(Role::Series(1)), false),
+        (
+            "total + dissipated",
+            &with,
+            Palette.color(Role::Series(2)),
+            false,
+        ),
     ];
     for (label, values, color, dashed) in lines {
         let s = Series::line(label, change(values), color).with_width(1.5);
@@ -111,7 +121,7 @@ pub fn energy_chart(scene: &Scene, e: &EnergyData) -> ChartSpec {
             Series::line(
                 format!("drive ends, t/τ = {}", describe::num(drive_end)),
                 vec![(drive_end, lo), (drive_end, hi)],
-                style::GREY,
+                Palette.color(Role::Ground),
             )
             .dashed(),
         );

@@ -11,6 +11,7 @@ use crate::encode::{Format, MovieWriter, Mp4Quality};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::fold::{self, Fold};
+use crate::render::palette::{Palette, Role};
 use crate::render::snapshot::{self, Region, Snapshot, View};
 use crate::render::{Canvas, MovieLayout, Theme, style};
 use crate::scene::{Camera, MIN_BLOCK_PIXELS, OutputSpec, Scene, describe};
@@ -95,6 +96,52 @@ struct MoviePlan {
     /// A following camera's reference fixed in the lab: the rest position
     /// X_n of every block, drawn as a scale behind the ladder.
     lab_scale: Option<Vec<f64>>,
+    /// An apparatus movie's clock: τ in seconds, and how many seconds of
+    /// the apparatus one second of the movie shows ([`SecondsClock`]).
+    clock: Option<SecondsClock>,
+    /// Whether the ladder is folded into numbered columns.
+    folded: bool,
+}
+
+/// The clock of a movie of an apparatus (a scene with `[apparatus]`):
+/// its time labels count seconds of the apparatus, and say how the
+/// movie plays them (in real time, or slowed or sped up by a stated
+/// factor).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SecondsClock {
+    pub tau_s: f64,
+    /// Apparatus seconds per second of the movie: t_end / (frames / fps).
+    pub speed_up: f64,
+}
+
+impl SecondsClock {
+    /// The clock of `scene`'s movie at `opts`, if it is an apparatus.
+    pub fn of(scene: &Scene, opts: &MovieOptions) -> Option<Self> {
+        let c = scene.apparatus.as_ref()?.conversion.as_ref()?;
+        let played_s = opts.frames as f64 / opts.fps;
+        Some(Self {
+            tau_s: c.tau_s,
+            speed_up: scene.run.t_end * c.tau_s / played_s,
+        })
+    }
+
+    /// "t = 1.23 s", and how the movie plays it: "real time" within 2 %,
+    /// else "played 2.1× slower" or "3.0× faster".
+    pub fn label(&self, t: f64) -> String {
+        format!("t = {:.2} s ({})", t * self.tau_s, self.rate())
+    }
+
+    /// How the movie plays the apparatus' seconds.
+    pub fn rate(&self) -> String {
+        let r = self.speed_up;
+        if (r - 1.0).abs() < 0.02 {
+            "real time".into()
+        } else if r < 1.0 {
+            format!("played {:.1}× slower", 1.0 / r)
+        } else {
+            format!("played {r:.1}× faster")
+        }
+    }
 }
 
 impl MoviePlan {
@@ -152,6 +199,14 @@ impl MoviePlan {
                 (folded_columns(&ladder, &traj.states, inner), Some(time))
             }
         };
+        let clock = SecondsClock::of(scene, opts);
+        let folded = time_band.is_some();
+        // An apparatus' clock in seconds is drawn in a band of its own
+        // under the ladder, as a folded ladder's time is.
+        let (columns, time_band) = match (clock, time_band) {
+            (Some(_), None) => with_time_band(columns, region),
+            other => (columns, other.1),
+        };
         let lab_scale = (camera == Camera::Follow).then(|| {
             let rest = ladder.ground_state();
             (0..ladder.n()).map(|i| rest[3 * i]).collect()
@@ -164,13 +219,45 @@ impl MoviePlan {
             columns,
             time_band,
             lab_scale,
+            clock,
+            folded,
         })
+    }
+
+    /// The time label of frame time `t` (τ): seconds for an apparatus.
+    fn time_text(&self, t: f64) -> String {
+        match self.clock {
+            Some(c) => c.label(t),
+            None => snapshot::time_label(t),
+        }
+    }
+
+    /// What every frame shares ([`MovieLayout::background`]), with an
+    /// apparatus' kymograph time axis in seconds.
+    fn background(&self, t_end: f64) -> Result<Pixmap> {
+        let n = self.ladder.n();
+        let Some(clock) = self.clock else {
+            return self.layout.background(&self.title, t_end, n);
+        };
+        let mut p = style::white_pixmap(self.layout.width, self.layout.height)
+            .ok_or_else(|| Error::failed("the movie frame does not fit in memory"))?;
+        let ts = self.layout.transform();
+        let mut c = crate::render::Raster::with_transform(&mut p, ts, self.layout.theme.font());
+        for mut l in self.layout.labels(&self.title, t_end, n) {
+            if l.text == "t/τ = 0" {
+                l.text = "t = 0 s".into();
+            } else if l.text == format!("{t_end:.0}") {
+                l.text = format!("{:.1} s", t_end * clock.tau_s);
+            }
+            c.text(&l.text, l.at, l.size, Palette.color(Role::Ink), l.align);
+        }
+        Ok(p)
     }
 
     /// Each column's number (its first block) and where it is drawn, top
     /// centre in design pixels: none unless the ladder is folded.
     fn column_numbers(&self) -> Vec<(String, (f32, f32))> {
-        if self.time_band.is_none() {
+        if !self.folded {
             return Vec::new();
         }
         self.columns
@@ -192,7 +279,7 @@ impl MoviePlan {
         let ts = self.layout.transform();
         let mut canvas =
             crate::render::Raster::with_transform(background, ts, self.layout.theme.font());
-        let color = style::mix(style::GREY, style::DARK, 0.3);
+        let color = style::mix(Palette.color(Role::Ground), Palette.color(Role::Ink), 0.3);
         let align = (style::HAlign::Center, style::VAlign::Top);
         for (text, at) in self.column_numbers() {
             canvas.text(&text, at, style::size::TICK, color, align);
@@ -230,12 +317,27 @@ impl MoviePlan {
             .collect::<Result<Vec<_>>>()?;
         let label = self
             .time_band
-            .map(|band| (band, snapshot::time_label(self.run.trajectory.times[k])));
+            .map(|band| (band, self.time_text(self.run.trajectory.times[k])));
         let label = label.as_ref().map(|(band, text)| (*band, text.as_str()));
         self.layout
             .draw_frame(canvas, background, &snaps, label, heat, fraction);
         Ok(())
     }
+}
+
+/// The one column of an unfolded ladder with a band for the time label
+/// taken from the bottom of `region`.
+fn with_time_band(mut columns: Vec<Column>, region: Region) -> (Vec<Column>, Option<Region>) {
+    let band = 1.6 * style::size::LABEL;
+    let time = Region {
+        y: region.y + region.h - band,
+        h: band,
+        ..region
+    };
+    for c in &mut columns {
+        c.region.h = (c.region.h - band).max(1.0);
+    }
+    (columns, Some(time))
 }
 
 /// Pixel positions of both ends of every block, one list per frame.
@@ -319,15 +421,20 @@ pub fn movie_at(
     frame_done: &(dyn Fn() + Sync),
 ) -> Result<MovieFiles> {
     let opts = opts.validated()?;
-    let mut writer =
-        MovieWriter::with_quality(formats, opts.width, opts.height, opts.fps, quality)?;
+    let mut writer = MovieWriter::with_quality(
+        formats,
+        (opts.width, opts.height),
+        opts.fps,
+        theme.palette.gif(),
+        quality,
+    )?;
     let plan = MoviePlan::new(theme, scene, &opts)?;
     let traj = &plan.run.trajectory;
     let n = plan.ladder.n();
     let layout = &plan.layout;
     let heat = layout.heat_map(&traj.states, n)?;
     // What every frame shares is drawn once; each frame starts from a copy.
-    let mut background = layout.background(&plan.title, scene.run.t_end, n)?;
+    let mut background = plan.background(scene.run.t_end)?;
     plan.number_columns(&mut background);
     let mut canvas = style::white_pixmap(opts.width, opts.height)
         .ok_or_else(|| Error::failed("the movie frame does not fit in memory"))?;
@@ -365,7 +472,7 @@ pub fn movie_frame(theme: &Theme, scene: &Scene, opts: &MovieOptions, k: usize) 
     let n = plan.ladder.n();
     let layout = &plan.layout;
     let heat = layout.heat_map(&traj.states, n)?;
-    let mut background = layout.background(&plan.title, scene.run.t_end, n)?;
+    let mut background = plan.background(scene.run.t_end)?;
     plan.number_columns(&mut background);
     let mut canvas = background.clone();
     let shown = (k + 1) as f32 / frames as f32;

@@ -2,6 +2,7 @@
 //! and the marks a filmstrip draws at them.
 
 use crate::render::compose::*;
+use crate::render::palette::Role;
 use crate::render::style;
 use crate::sim::{self};
 
@@ -46,21 +47,24 @@ pub(crate) fn wall_marks(q: &[f64]) -> Vec<ChainMark> {
             marks.push(ChainMark {
                 at: 0.5 * (w[k].at + next.at),
                 label: "collision".into(),
-                color: style::DARK,
+                role: Role::Ink,
                 side: style::HAlign::Right,
             });
             k += 2;
             continue;
         }
-        let (label, color, side) = if w[k].kink {
-            ("kink", style::SERIES_EXTRA[0], style::HAlign::Left)
+        // The waves' roles, as in figure 3 and every chart: a kink
+        // vermillion, an antikink blue (the words in a shade of each that
+        // reads on white).
+        let (label, role, side) = if w[k].kink {
+            ("kink", Role::Kink, style::HAlign::Left)
         } else {
-            ("antikink", style::SERIES_EXTRA[1], style::HAlign::Right)
+            ("antikink", Role::Antikink, style::HAlign::Right)
         };
         marks.push(ChainMark {
             at: w[k].at,
             label: label.into(),
-            color,
+            role,
             side,
         });
         k += 1;
@@ -93,6 +97,8 @@ mod wall_tests {
         assert_eq!(marks.len(), 2);
         assert!(marks[0].label == "kink" && marks[0].side == style::HAlign::Left);
         assert!(marks[1].label == "antikink" && marks[1].side == style::HAlign::Right);
+        // Figure 3's roles: a kink vermillion, an antikink blue.
+        assert_eq!((marks[0].role, marks[1].role), (Role::Kink, Role::Antikink));
         assert!(
             walls(&state(&[60.0; 5])).is_empty(),
             "a ground state has none"

@@ -60,6 +60,16 @@ pub fn wave_speed_fit(arrivals: &[Option<f64>]) -> Option<SpeedFit> {
     let pts: Vec<(f64, f64)> = (FIRST_SPEED_BLOCK - 1..n.saturating_sub(1))
         .filter_map(|i| arrivals[i].map(|t| (i as f64 + 1.0, t)))
         .collect();
+    fit(&pts)
+}
+
+/// The speed through the points (block n, arrival time t_n) of a wave:
+/// the inverse least-squares slope of t_n against n, and the centroid.
+/// `None` with fewer than three points, no positive slope, or blocks that
+/// flip in groups (at least half the gaps between successive arrivals
+/// shorter than [`COLLECTIVE_FLIP_GAP`]): the rule of [`wave_speed`], for
+/// any stretch of the chain (the experiment figures' lower half too).
+pub fn fit(pts: &[(f64, f64)]) -> Option<SpeedFit> {
     if pts.len() < 3 {
         return None;
     }
@@ -70,7 +80,7 @@ pub fn wave_speed_fit(arrivals: &[Option<f64>]) -> Option<SpeedFit> {
     if 2 * together >= pts.len() - 1 {
         return None;
     }
-    let slope = super::observables::least_squares_slope(&pts);
+    let slope = super::observables::least_squares_slope(pts);
     let k = pts.len() as f64;
     let centroid = pts
         .iter()

@@ -19,8 +19,8 @@ use crate::error::{Error, Result};
 use crate::render::Theme;
 use crate::render::cells::{Cell, CellChart, ShadeBar, cell_chart};
 use crate::render::charts::{Axis, Chart, ChartSpec, Marker, Series, line_chart};
+use crate::render::palette::{OutcomeRole, Role};
 use crate::render::style;
-use crate::render::theme::palette;
 use crate::scene::describe;
 use crate::scene::sweep::Param;
 use serde::Serialize;
@@ -30,32 +30,29 @@ use serde::Serialize;
 /// lines up with the panels below.
 const FRONT_HEIGHT: u32 = 380;
 
-/// The colour of each outcome (Okabe–Ito: blue and vermillion stay apart
-/// under deuteranopia and protanopia, where green and red are one olive).
-pub fn outcome_color(o: Outcome) -> Rgb {
-    match o {
-        Outcome::Propagated => palette::BLUE,
-        Outcome::Stalled => palette::ORANGE,
-        Outcome::Pinned => palette::VERMILLION,
-        Outcome::Diverged => style::DARK,
-        Outcome::Undecided => style::GREY,
-        Outcome::Annihilated => palette::REDDISH_PURPLE,
-        Outcome::Failed => palette::BLUISH_GREEN,
-    }
+/// The palette's role of each outcome (docs/formats.md "One palette").
+pub fn outcome_role(o: Outcome) -> Role {
+    Role::Outcome(match o {
+        Outcome::Propagated => OutcomeRole::Propagated,
+        Outcome::Stalled => OutcomeRole::Stalled,
+        Outcome::Pinned => OutcomeRole::Pinned,
+        Outcome::Diverged => OutcomeRole::Diverged,
+        Outcome::Undecided => OutcomeRole::Undecided,
+        Outcome::Annihilated => OutcomeRole::Annihilated,
+        Outcome::Failed => OutcomeRole::Failed,
+    })
+}
+
+/// The colour of each outcome.
+pub fn outcome_color(theme: &Theme, o: Outcome) -> Rgb {
+    theme.color(outcome_role(o))
 }
 
 /// The marker of each outcome, the cue besides colour; an antikink's is
-/// open or upright where a kink's is filled or diagonal, so that a kink
-/// and an antikink at the same point both show.
-pub fn outcome_marker(o: Outcome, antikink: bool) -> Marker {
-    match (o, antikink) {
-        (Outcome::Propagated, false) => Marker::Circle,
-        (Outcome::Propagated, true) => Marker::Ring,
-        (Outcome::Pinned, false) => Marker::Cross,
-        (Outcome::Pinned, true) => Marker::Plus,
-        (Outcome::Stalled | Outcome::Annihilated, _) => Marker::Triangle,
-        (Outcome::Diverged | Outcome::Undecided | Outcome::Failed, _) => Marker::Square,
-    }
+/// open where a kink's is filled, so that a kink and an antikink at the
+/// same point both show ([`crate::render::Palette::marker`]).
+pub fn outcome_marker(theme: &Theme, o: Outcome, antikink: bool) -> Marker {
+    theme.marker(outcome_role(o), antikink)
 }
 
 /// Height the front panel's legend (up to six entries, in rows of two
@@ -125,72 +122,106 @@ fn x_axis(plan: &Plan) -> (Param, usize, bool) {
     (p, k, fold)
 }
 
-/// A mark of the front panel: its label, its marker, and the block it
-/// marks in a run (none: no mark).
+/// An event of the front panel: its label, its marker (in ink), and the
+/// block it marks in a run (none: no mark).
 type BlockMark<'a> = (&'static str, Marker, &'a dyn Fn(&Record) -> Option<usize>);
 
-/// A wave drawn as its own series: name, marker, which records.
-type Wave<'a> = (&'static str, Marker, Box<dyn Fn(&Record) -> bool + 'a>);
+/// A wave drawn as its own series: name, role, which records.
+type Wave<'a> = (
+    &'static str,
+    Option<Role>,
+    Box<dyn Fn(&Record) -> bool + 'a>,
+);
 
-fn one_parameter(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
-    let (param, k, fold) = x_axis(plan);
-    let x_of = |r: &Record| {
-        let v = plan.points[r.run][k];
-        if fold { v.abs() } else { v }
-    };
-    let x_label = if fold { "|α| (°)" } else { param.label() };
-    // One horizontal range for every panel, so that they line up.
-    let (x_lo, x_hi) = records
-        .iter()
-        .map(x_of)
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(v), b.max(v))
-        });
-    let pad = if x_hi > x_lo {
-        0.04 * (x_hi - x_lo)
-    } else {
-        0.5 * x_lo.abs().max(1.0)
-    };
-    let x_range = (x_lo - pad, x_hi + pad);
-    let x_axis = || Axis::new(x_label).range(x_range.0, x_range.1);
+/// What the panels of a 1-D sweep share: the plan, the varied axis, the
+/// x of a run, and the waves drawn apart.
+struct OneAxis<'a> {
+    plan: &'a Plan,
+    param: Param,
+    fold: bool,
+    x_label: &'static str,
+    x_range: (f64, f64),
+    x_of: Box<dyn Fn(&Record) -> f64 + 'a>,
+    waves: Vec<Wave<'a>>,
+}
+
+impl<'a> OneAxis<'a> {
+    fn new(plan: &'a Plan, records: &[Record]) -> OneAxis<'a> {
+        let (param, k, fold) = x_axis(plan);
+        let x_of = move |r: &Record| {
+            let v = plan.points[r.run][k];
+            if fold { v.abs() } else { v }
+        };
+        let x_label = if fold { "|α| (°)" } else { param.label() };
+        // One horizontal range for every panel, so that they line up.
+        let (x_lo, x_hi) = records
+            .iter()
+            .map(x_of)
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            });
+        let pad = if x_hi > x_lo {
+            0.04 * (x_hi - x_lo)
+        } else {
+            0.5 * x_lo.abs().max(1.0)
+        };
+        // Which waves: kinks and antikinks apart when folded.
+        let waves: Vec<Wave<'a>> = if fold {
+            vec![
+                (
+                    "kink",
+                    Some(Role::Kink),
+                    Box::new(move |r: &Record| plan.points[r.run][k] > 0.0),
+                ),
+                (
+                    "antikink",
+                    Some(Role::Antikink),
+                    Box::new(move |r: &Record| plan.points[r.run][k] < 0.0),
+                ),
+            ]
+        } else {
+            vec![("", None, Box::new(|_: &Record| true))]
+        };
+        OneAxis {
+            plan,
+            param,
+            fold,
+            x_label,
+            x_range: (x_lo - pad, x_hi + pad),
+            x_of: Box::new(x_of),
+            waves,
+        }
+    }
+
+    fn x_axis(&self) -> Axis {
+        Axis::new(self.x_label).range(self.x_range.0, self.x_range.1)
+    }
+}
+
+/// The front panel: every run's front at its value (the CSV's front),
+/// marked by its outcome's shape; folded, a wave's colour is its role's
+/// (as in the speed panel) and an antikink's marks open, so that both
+/// show where they coincide; unfolded, the colour is the outcome's. Beside
+/// the front, in ink, what is not the front: the free block N's own turn
+/// (at N, ▼) and where the wave the drive launched met a wall coming the
+/// other way (✱; outcome::front, docs/sweeps.md "Spontaneous flips").
+fn front_panel(theme: &Theme, a: &OneAxis<'_>, records: &[Record], title: &str) -> ChartSpec {
     let n_max = records
         .iter()
         .map(|r| r.result.arrival_times.len())
         .max()
-        .unwrap_or(plan.scene.model.n);
-    // Which waves: kinks and antikinks apart when folded.
-    let waves: Vec<Wave> = if fold {
-        vec![
-            (
-                "kink",
-                Marker::Circle,
-                Box::new(|r: &Record| plan.points[r.run][k] > 0.0),
-            ),
-            (
-                "antikink",
-                Marker::Square,
-                Box::new(|r: &Record| plan.points[r.run][k] < 0.0),
-            ),
-        ]
-    } else {
-        vec![("", Marker::Circle, Box::new(|_: &Record| true))]
-    };
+        .unwrap_or(a.plan.scene.model.n);
     let mut front = ChartSpec::new(
-        x_axis().shared(),
+        a.x_axis().shared(),
         Axis::new("front (last block)").range(-0.3, n_max as f64 + 0.6),
     )
     .title(title);
-    // Every mark at its value (the CSV's front): folded, a wave's colour
-    // is its kind's (the same as in the speed panel) and its marker its
-    // outcome, a kink's filled, an antikink's open, so that both show where
-    // they coincide; unfolded, the colour is the outcome's.
-    let offsets = [0.0, 0.0];
-    for (i, ((wave, _, keep), dy)) in waves.iter().zip(offsets).enumerate() {
+    for (wave, role, keep) in &a.waves {
         for o in Outcome::ALL {
             let pts: Vec<(f64, f64)> = records
                 .iter()
                 .filter(|r| keep(r) && r.result.outcome == o)
-                .map(|r| (x_of(r), r.result.front as f64 + dy))
+                .map(|r| ((a.x_of)(r), r.result.front as f64))
                 .collect();
             if pts.is_empty() {
                 continue;
@@ -200,71 +231,71 @@ fn one_parameter(theme: &Theme, plan: &Plan, records: &[Record], title: &str) ->
             } else {
                 format!("{wave}: {o}")
             };
-            let color = if fold {
-                wave_color(i)
-            } else {
-                outcome_color(o)
-            };
-            let marker = outcome_marker(o, fold && i == 1);
+            let color = theme.color(role.unwrap_or(outcome_role(o)));
+            let marker = outcome_marker(theme, o, *role == Some(Role::Antikink));
             front = front.series(Series::scatter(label, pts, color, marker));
         }
     }
-    // Beside the front, what is not the front: the free block N's own turn
-    // (at N), and where the wave the drive launched met a wall coming the
-    // other way (outcome::front, docs/sweeps.md "Spontaneous flips").
-    let dy_of = |r: &Record| {
-        waves
-            .iter()
-            .zip(offsets)
-            .find(|((_, _, keep), _)| keep(r))
-            .map_or(0.0, |(_, dy)| dy)
-    };
-    // Each mark at the block it names, for the runs that have one.
     let marks: [BlockMark<'_>; 2] = [
-        ("block N turned first", Marker::Triangle, &|r: &Record| {
-            r.result
-                .block_n_turned_at
-                .map(|_| r.result.arrival_times.len())
-        }),
-        ("annihilated at", Marker::Cross, &driven_wave_met_at),
+        (
+            "block N turned first",
+            Marker::TriangleDown,
+            &|r: &Record| {
+                r.result
+                    .block_n_turned_at
+                    .map(|_| r.result.arrival_times.len())
+            },
+        ),
+        ("annihilated at", Marker::Star, &driven_wave_met_at),
     ];
     for (label, marker, block_of) in marks {
         let pts: Vec<(f64, f64)> = records
             .iter()
-            .filter_map(|r| Some((x_of(r), block_of(r)? as f64 + dy_of(r))))
+            .filter_map(|r| Some(((a.x_of)(r), block_of(r)? as f64)))
             .collect();
         if !pts.is_empty() {
-            front = front.series(Series::scatter(label, pts, style::DARK, marker));
+            let ink = theme.color(Role::Ink);
+            front = front.series(Series::scatter(label, pts, ink, marker));
         }
     }
-    // A log axis when the speeds span more than a decade (near 90° the
-    // whole chain flips at once), else linear, so that ticks show.
+    front
+}
+
+/// The speed panel: each wave's speeds against the parameter, a kink's
+/// solid with filled circles, an antikink's dashed with open ones; a log
+/// axis when the speeds span more than a decade (near 90° the whole
+/// chain flips at once), else linear in 10⁻³ blocks/τ.
+fn speed_panel(theme: &Theme, a: &OneAxis<'_>, records: &[Record], shared: bool) -> ChartSpec {
     let (s_lo, s_hi) = records
         .iter()
         .filter_map(|r| r.result.speed)
         .fold((f64::INFINITY, 0.0f64), |(a, b), v| (a.min(v), b.max(v)));
     let log = s_hi > 10.0 * s_lo;
-    // Linear speeds in 10⁻³ blocks/τ, so that tick labels stay short.
     let unit = if log { 1.0 } else { 1e3 };
     let speed_axis = if log {
         Axis::new("speed (blocks/τ)").log()
     } else {
         Axis::new("speed (10⁻³ blocks/τ)")
     };
-    let theory = param == Param::Alpha && plan.spec.charts.theory;
-    let speed_x = if theory { x_axis().shared() } else { x_axis() };
-    let mut speed = ChartSpec::new(speed_x, speed_axis);
-    for (i, (wave, marker, keep)) in waves.iter().enumerate() {
+    let x = if shared {
+        a.x_axis().shared()
+    } else {
+        a.x_axis()
+    };
+    let mut speed = ChartSpec::new(x, speed_axis);
+    for (wave, role, keep) in &a.waves {
         let mut pts: Vec<(f64, f64)> = records
             .iter()
             .filter(|r| keep(r))
-            .map(|r| (x_of(r), r.result.speed.map_or(f64::NAN, |v| unit * v)))
+            .map(|r| ((a.x_of)(r), r.result.speed.map_or(f64::NAN, |v| unit * v)))
             .collect();
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let color = if fold { wave_color(i) } else { palette::BLUE };
+        let role = role.unwrap_or(outcome_role(Outcome::Propagated));
+        let antikink = role == Role::Antikink;
         let label = if wave.is_empty() { "speed" } else { wave };
-        let mut s = Series::line(label, pts, color).with_marker(*marker);
-        if i == 1 {
+        let marker = theme.marker(role, antikink);
+        let mut s = Series::line(label, pts, theme.color(role)).with_marker(marker);
+        if antikink {
             s = s.dashed();
         }
         speed = speed.series(s);
@@ -278,6 +309,14 @@ fn one_parameter(theme: &Theme, plan: &Plan, records: &[Record], title: &str) ->
         speed.series.clear();
         speed.title = Some("no run propagated far enough to measure a speed".into());
     }
+    speed
+}
+
+fn one_parameter(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
+    let a = OneAxis::new(plan, records);
+    let theory = a.param == Param::Alpha && plan.spec.charts.theory;
+    let front = front_panel(theme, &a, records, title);
+    let speed = speed_panel(theme, &a, records, theory);
     let wanted: Vec<u32> = if theory {
         vec![FRONT_HEIGHT, 260, THEORY_PANEL_HEIGHT, THEORY_PANEL_HEIGHT]
     } else {
@@ -294,32 +333,26 @@ fn one_parameter(theme: &Theme, plan: &Plan, records: &[Record], title: &str) ->
     } else {
         FRONT_LEGEND_ROOM
     };
-    stacked(theme, &wanted, &least, |h, w| {
+    stacked(theme, &wanted, &least, |h, w, plot_x| {
+        let at = |spec: &ChartSpec| ChartSpec {
+            plot_x,
+            ..spec.clone()
+        };
         let mut panels = vec![
-            (line_chart(theme, &front, w, h[0])?, h[0]),
-            (line_chart(theme, &speed, w, h[1])?, h[1]),
+            (line_chart(theme, &at(&front), w, h[0])?, h[0]),
+            (line_chart(theme, &at(&speed), w, h[1])?, h[1]),
         ];
         if theory {
             panels.extend(theory_panel(
                 theme,
                 plan,
-                x_label,
-                fold,
-                (w, Some(x_range)),
+                (a.x_label, a.fold),
+                (w, Some(a.x_range), plot_x),
                 (h[2], h[3]),
             )?);
         }
         Ok(panels)
     })
-}
-
-/// The colour of wave kind `i` (0: kink, 1: antikink) in every panel.
-fn wave_color(i: usize) -> Rgb {
-    if i == 0 {
-        palette::KINK
-    } else {
-        palette::ANTIKINK
-    }
 }
 
 /// The block where the wave the drive launched (the first wave from block
@@ -333,43 +366,41 @@ fn driven_wave_met_at(r: &Record) -> Option<usize> {
     }
 }
 
-/// ω₊(0) and ΔU against α (or |α|), one panel each; `x_range` pins the
-/// axis.
+/// ω₊(0) and ΔU against α (or |α|, `fold`), one panel each, `width`
+/// wide; `range` pins the axis and `plot_x` the plots' edges (the stack's
+/// shared x extent).
 fn theory_panel(
     theme: &Theme,
     plan: &Plan,
-    x_label: &str,
-    fold: bool,
-    (width, range): (u32, Option<(f64, f64)>),
+    (x_label, fold): (&str, bool),
+    (width, range, plot_x): (u32, Option<(f64, f64)>, Option<(i32, i32)>),
     (gap_h, barrier_h): (u32, u32),
 ) -> Result<Vec<(Chart, u32)>> {
     let pts = theory_points(plan);
     let x = |a: f64| if fold { a.abs() } else { a };
-    let mut gap: Vec<(f64, f64)> = pts
-        .iter()
-        .map(|p| (x(p.alpha), p.gap_omega_plus_q0.unwrap_or(f64::NAN)))
-        .collect();
-    let mut barrier: Vec<(f64, f64)> = pts
-        .iter()
-        .map(|p| (x(p.alpha), p.barrier.unwrap_or(f64::NAN)))
-        .collect();
-    gap.sort_by(|a, b| a.0.total_cmp(&b.0));
-    gap.dedup_by(|a, b| a.0 == b.0);
-    barrier.sort_by(|a, b| a.0.total_cmp(&b.0));
-    barrier.dedup_by(|a, b| a.0 == b.0);
+    let curve = |y: &dyn Fn(&TheoryPoint) -> Option<f64>| {
+        let mut c: Vec<(f64, f64)> = pts
+            .iter()
+            .map(|p| (x(p.alpha), y(p).unwrap_or(f64::NAN)))
+            .collect();
+        c.sort_by(|a, b| a.0.total_cmp(&b.0));
+        c.dedup_by(|a, b| a.0 == b.0);
+        c
+    };
     let mut xa = Axis::new(x_label);
     if let Some((lo, hi)) = range {
         xa = xa.range(lo, hi);
     }
     // Two quantities in two units: one panel each (never one axis for
     // both), each named by its y axis, so no legend covers the curves.
-    let panel = |label: &str, pts: Vec<(f64, f64)>, color, dashed: bool, shared: bool, h: u32| {
+    let ink = theme.color(Role::Ink);
+    let panel = |label: &str, pts: Vec<(f64, f64)>, dashed: bool, shared: bool, h: u32| {
         let top = pts
             .iter()
             .map(|p| p.1)
             .filter(|v| v.is_finite())
             .fold(0.0, f64::max);
-        let mut series = Series::line("", pts, color);
+        let mut series = Series::line("", pts, ink);
         if dashed {
             series = series.dashed();
         }
@@ -381,16 +412,96 @@ fn theory_panel(
         let mut spec =
             ChartSpec::new(x, Axis::new(label).range(0.0, 1.1 * top.max(1e-3))).series(series);
         spec.legend = crate::render::charts::Legend::Hidden;
+        spec.plot_x = plot_x;
         line_chart(theme, &spec, width, h).map(|c| (c, h))
     };
     Ok(vec![
-        panel("gap ω₊(0) τ", gap, palette::INK, false, true, gap_h)?,
-        panel("ΔU / mgs", barrier, palette::INK, true, false, barrier_h)?,
+        panel(
+            "gap ω₊(0) τ",
+            curve(&|p| p.gap_omega_plus_q0),
+            false,
+            true,
+            gap_h,
+        )?,
+        panel("ΔU / mgs", curve(&|p| p.barrier), true, false, barrier_h)?,
     ])
 }
 
 /// Height of each linear-theory panel under a sweep chart, pixels.
 const THEORY_PANEL_HEIGHT: u32 = 170;
+
+/// The phase diagram's cells: outcome as colour (a propagated run's
+/// shaded by its speed) and, the second cue, as the outcome's marker in
+/// each cell but the propagated ones (whose shade is their speed).
+fn phase_cells(
+    theme: &Theme,
+    plan: &Plan,
+    records: &[Record],
+    (x, y): ((usize, &[f64]), (usize, &[f64])),
+) -> (Vec<Cell>, Option<ShadeBar>) {
+    let speeds: Vec<f64> = records
+        .iter()
+        .filter(|r| r.result.outcome == Outcome::Propagated)
+        .filter_map(|r| r.result.speed)
+        .collect();
+    let (lo, hi) = speeds
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(*v), b.max(*v))
+        });
+    let pale = |c: Rgb| style::mix(theme.color(Role::Paper), c, 0.35);
+    // Speeds over more than a decade are shaded on a log scale, so that
+    // equal ratios look equally far apart (and runs of equal speed alike).
+    let log = lo > 0.0 && hi > 10.0 * lo;
+    let fraction = |v: f64| {
+        if log {
+            (v / lo).ln() / (hi / lo).ln()
+        } else {
+            (v - lo) / (hi - lo)
+        }
+    };
+    let propagated = outcome_color(theme, Outcome::Propagated);
+    let shade = |o: Outcome, v: Option<f64>| -> Rgb {
+        let c = outcome_color(theme, o);
+        match v {
+            Some(v) if o == Outcome::Propagated && hi > lo => style::mix(pale(c), c, fraction(v)),
+            _ => c,
+        }
+    };
+    let index = |vals: &[f64], v: f64| vals.iter().position(|x| *x == v).unwrap_or(0);
+    let cells = records
+        .iter()
+        .map(|r| Cell {
+            col: index(x.1, plan.points[r.run][x.0]),
+            row: index(y.1, plan.points[r.run][y.0]),
+            color: shade(r.result.outcome, r.result.speed),
+            marker: cell_marker(theme, r.result.outcome),
+        })
+        .collect();
+    let bar = (hi > lo).then(|| ShadeBar {
+        label: if log {
+            "speed, blocks/τ (log)".into()
+        } else {
+            "speed, blocks/τ".into()
+        },
+        lo,
+        hi,
+        log,
+        from: pale(propagated),
+        to: propagated,
+    });
+    (cells, bar)
+}
+
+/// The mark of an outcome's cells: none for a propagated run (its shade
+/// is its speed), else the outcome's filled marker.
+fn cell_marker(theme: &Theme, o: Outcome) -> Marker {
+    if o == Outcome::Propagated {
+        Marker::None
+    } else {
+        outcome_marker(theme, o, false)
+    }
+}
 
 fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
     let varied = plan.varied();
@@ -409,43 +520,7 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
         s
     };
     let (xs, ys) = (sorted(xs), sorted(ys));
-    let speeds: Vec<f64> = records
-        .iter()
-        .filter(|r| r.result.outcome == Outcome::Propagated)
-        .filter_map(|r| r.result.speed)
-        .collect();
-    let (lo, hi) = speeds
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(*v), b.max(*v))
-        });
-    let pale = |c: Rgb| style::mix(style::WHITE, c, 0.35);
-    // Speeds over more than a decade are shaded on a log scale, so that
-    // equal ratios look equally far apart (and runs of equal speed alike).
-    let log = lo > 0.0 && hi > 10.0 * lo;
-    let fraction = |v: f64| {
-        if log {
-            (v / lo).ln() / (hi / lo).ln()
-        } else {
-            (v - lo) / (hi - lo)
-        }
-    };
-    let shade = |o: Outcome, v: Option<f64>| -> Rgb {
-        let c = outcome_color(o);
-        match v {
-            Some(v) if o == Outcome::Propagated && hi > lo => style::mix(pale(c), c, fraction(v)),
-            _ => c,
-        }
-    };
-    let index = |vals: &[f64], v: f64| vals.iter().position(|x| *x == v).unwrap_or(0);
-    let cells = records
-        .iter()
-        .map(|r| Cell {
-            col: index(&xs, plan.points[r.run][kx]),
-            row: index(&ys, plan.points[r.run][ky]),
-            color: shade(r.result.outcome, r.result.speed),
-        })
-        .collect();
+    let (cells, shade) = phase_cells(theme, plan, records, ((kx, &xs), (ky, &ys)));
     let present: Vec<Outcome> = Outcome::ALL
         .into_iter()
         .filter(|o| records.iter().any(|r| r.result.outcome == *o))
@@ -459,20 +534,13 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
         cells,
         legend: present
             .iter()
-            .map(|o| (o.name().to_string(), outcome_color(*o)))
+            .map(|o| {
+                let (c, m) = (outcome_color(theme, *o), cell_marker(theme, *o));
+                (o.name().to_string(), c, m)
+            })
             .collect(),
-        shade: (hi > lo).then(|| ShadeBar {
-            label: if log {
-                "speed, blocks/τ (log)".into()
-            } else {
-                "speed, blocks/τ".into()
-            },
-            lo,
-            hi,
-            log,
-            from: pale(outcome_color(Outcome::Propagated)),
-            to: outcome_color(Outcome::Propagated),
-        }),
+        shade,
+        plot_x: None,
     };
     let theory = px == Param::Alpha && plan.spec.charts.theory;
     let wanted: Vec<u32> = if theory {
@@ -486,28 +554,32 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
         least_for(theme, "gap ω₊(0) τ"),
         least_for(theme, "ΔU / mgs"),
     ];
-    stacked(theme, &wanted, &least, |h, w| {
-        let main = cell_chart(theme, &chart, w, h[0])?;
-        let mut panels = vec![(main, h[0])];
+    // Evenly spaced α: the theory panels' axis runs over the cells' span
+    // (cells sit at their index, so uneven values have no common axis).
+    let even = xs.len() > 1
+        && xs
+            .windows(2)
+            .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
+    stacked(theme, &wanted, &least, |h, w, plot_x| {
+        let plot_x = plot_x.filter(|_| even);
+        let cells = CellChart {
+            plot_x,
+            ..chart.clone()
+        };
+        let mut panels = vec![(cell_chart(theme, &cells, w, h[0])?, h[0])];
         if theory {
-            let even = xs
-                .windows(2)
-                .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
-            let range = if even && xs.len() > 1 {
+            let range = if even {
                 let h = 0.5 * (xs[1] - xs[0]);
-                let cells = crate::render::cells::cells_width(theme, &chart, w);
-                (cells, Some((xs[0] - h, xs[xs.len() - 1] + h)))
+                let w = crate::render::cells::cells_width(theme, &chart, w);
+                (w, Some((xs[0] - h, xs[xs.len() - 1] + h)), plot_x)
             } else {
-                (w, None)
+                (w, None, None)
             };
-            panels.extend(theory_panel(
-                theme,
-                plan,
-                px.label(),
-                false,
-                range,
-                (h[1], h[2]),
-            )?);
+            let label = (px.label(), false);
+            panels.extend(theory_panel(theme, plan, label, range, (h[1], h[2]))?);
+        }
+        if !even {
+            panels.iter_mut().for_each(|(c, _)| c.plot_x = None);
         }
         Ok(panels)
     })

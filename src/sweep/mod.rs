@@ -14,6 +14,7 @@
 //! charts; it knows no command-line flag.
 
 pub mod chart;
+pub mod columns;
 pub mod json;
 pub mod outcome;
 pub mod results;

@@ -6,6 +6,7 @@
 use crate::error::Result;
 use crate::render::Theme;
 use crate::render::charts::{Chart, rasterize_svg};
+use crate::render::palette::{Palette, Role};
 use crate::render::style;
 
 /// Width of a sweep chart at the screen style, pixels.
@@ -38,8 +39,11 @@ pub(super) fn least_for(theme: &Theme, label: &str) -> u32 {
     (along.ceil() as u32).max(least)
 }
 
-/// Pixels a panel whose x axis is shared (labelled below) does not need.
-const SHARED_SAVES: u32 = 46;
+/// Pixels a panel whose x axis is shared (labelled below) does not need:
+/// the axis label's line under its numbers.
+fn shared_saves(theme: &Theme) -> u32 {
+    theme.x_label_area.saturating_sub(theme.shared_x_area)
+}
 
 /// Heights of stacked panels that want `wanted` pixels each: as asked at
 /// screen; at a print style scaled down together, if need be, so that the
@@ -52,6 +56,7 @@ fn fitted_heights(theme: &Theme, wanted: &[u32], least: &[u32]) -> Vec<u32> {
         return wanted.to_vec();
     };
     let budget = page.floor();
+    let saves = shared_saves(theme);
     // Panels above the last share its axis and give up their label area.
     let last = wanted.len().saturating_sub(1);
     let wanted: Vec<u32> = wanted
@@ -59,7 +64,7 @@ fn fitted_heights(theme: &Theme, wanted: &[u32], least: &[u32]) -> Vec<u32> {
         .enumerate()
         .map(|(k, h)| {
             if k < last {
-                h.saturating_sub(SHARED_SAVES)
+                h.saturating_sub(saves)
             } else {
                 *h
             }
@@ -72,7 +77,7 @@ fn fitted_heights(theme: &Theme, wanted: &[u32], least: &[u32]) -> Vec<u32> {
     // The last panel keeps its axis' label area whole; none goes below
     // `least` (then the stack is taller than the page, and the figure is
     // refused naming the height that holds it: the same heights again).
-    let keep = |k: usize| if k == last { SHARED_SAVES } else { 0 };
+    let keep = |k: usize| if k == last { saves } else { 0 };
     let at = |f: f32| -> Vec<u32> {
         wanted
             .iter()
@@ -83,7 +88,7 @@ fn fitted_heights(theme: &Theme, wanted: &[u32], least: &[u32]) -> Vec<u32> {
     // The largest common factor whose heights (each at least `least`)
     // keep the budget; at the smallest the heights no longer change, so a
     // page as tall as they need holds them.
-    let mut f = (budget - SHARED_SAVES as f32) / (sum - SHARED_SAVES) as f32;
+    let mut f = (budget - saves as f32) / (sum - saves) as f32;
     while f > 0.01 && at(f).iter().sum::<u32>() as f32 > budget {
         f *= 0.97;
     }
@@ -92,17 +97,39 @@ fn fitted_heights(theme: &Theme, wanted: &[u32], least: &[u32]) -> Vec<u32> {
 
 /// Panels of heights fitted to the page ([`fitted_heights`]), drawn by
 /// `make` at those heights and at the width it is given, and stacked
-/// ([`stack`]).
+/// ([`stack`]). Stacked panels share one x extent: when their plot areas
+/// span differently across (a legend right of one plot, wider tick labels
+/// left of another), they are drawn again with the plots' edges given,
+/// the rightmost left edge and the leftmost right edge of them all
+/// (`make`'s third argument), so that one x value is at one place down
+/// the stack.
 pub(super) fn stacked(
     theme: &Theme,
     wanted: &[u32],
     least: &[u32],
-    make: impl Fn(&[u32], u32) -> Result<Vec<(Chart, u32)>>,
+    make: impl Fn(&[u32], u32, Option<(i32, i32)>) -> Result<Vec<(Chart, u32)>>,
 ) -> Result<Chart> {
     let h = fitted_heights(theme, wanted, least);
     let indent = label_indent(theme, wanted.len());
-    let panels = make(&h, width(theme) - indent)?;
+    let w = width(theme) - indent;
+    let mut panels = make(&h, w, None)?;
+    if let Some(extent) = shared_extent(&panels) {
+        panels = make(&h, w, Some(extent))?;
+    }
     stack(theme, &panels, indent)
+}
+
+/// The one x extent of stacked panels whose plots span differently across
+/// (the rightmost left edge, the leftmost right edge), or `None` when they
+/// already share one.
+pub(super) fn shared_extent(panels: &[(Chart, u32)]) -> Option<(i32, i32)> {
+    let spans: Vec<(i32, i32)> = panels.iter().filter_map(|(c, _)| c.plot_x).collect();
+    let left = spans.iter().map(|s| s.0).max()?;
+    let right = spans.iter().map(|s| s.1).min()?;
+    spans
+        .iter()
+        .any(|s| *s != (left, right))
+        .then_some((left, right))
 }
 
 /// Whether a stack of `n` panels labels them: at a print style, where the
@@ -165,7 +192,7 @@ pub(super) fn stack(theme: &Theme, panels: &[(Chart, u32)], indent: u32) -> Resu
                 top as f32 + ascent,
                 style::family_of(theme.font()),
                 theme.panel_label,
-                style::hex(style::DARK),
+                style::hex(Palette.color(Role::Ink)),
                 panel_label(k)
             ));
         }

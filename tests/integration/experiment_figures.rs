@@ -60,6 +60,61 @@ fn each_level_of_model_lands_where_the_caption_says() {
         assert_eq!(r.kink_cm_s, None, "{}", r.name);
     }
     assert!(caption.contains("no wave"));
+    // Every number of the caption is one of these.
+    let running = &levels[..3];
+    let two = |v: Vec<f64>| {
+        crate::captions::list(&v.iter().map(|x| format!("{x:.2}")).collect::<Vec<_>>())
+    };
+    let mut numbers = vec![
+        format!("{} Hz", experiments::LEVELS_MOTOR_HZ),
+        format!("measured {MEASURED_KINK_CM_S:.1} cm/s"),
+        format!("measured {MEASURED_RATIO}"),
+        format!(
+            "{}, against",
+            two(running.iter().map(|r| r.ratio().unwrap()).collect())
+        ),
+        format!(
+            "{} %",
+            two(running
+                .iter()
+                .map(|r| 100.0 * r.stiff_difference().unwrap())
+                .collect())
+        ),
+        format!("tolerance {:.0} %", 100.0 * experiments::STIFF_TOLERANCE),
+        "0.125 τ".into(),
+    ];
+    for r in running {
+        let c = r.kink_cm_s.unwrap();
+        numbers.push(format!("{c:.1} cm/s"));
+        numbers.push(format!("{:.1} times", c / MEASURED_KINK_CM_S));
+    }
+    crate::captions::accounted("tank-levels", &caption, &numbers);
+    // The axis names every level, "no wave" where there is none.
+    let names = experiments::level_names(&levels);
+    assert_eq!(names.len(), experiments::LEVELS.len());
+    for (name, r) in names.iter().zip(&levels) {
+        assert!(name.starts_with(r.name));
+        assert_eq!(name.ends_with("no wave"), r.kink_cm_s.is_none(), "{name}");
+    }
+}
+
+/// The linkage's fronts are drawn as steps: flat at each point, jumping
+/// halfway between two points whose fronts differ.
+#[test]
+fn the_linkage_steps_jump_halfway_between_points() {
+    let s = experiments::steps(&[(0.5, 8.0), (0.75, 3.0), (1.0, 3.0)]);
+    assert_eq!(
+        s,
+        vec![
+            (0.5, 8.0),
+            (0.625, 8.0),
+            (0.625, 3.0),
+            (0.75, 3.0),
+            (0.875, 3.0),
+            (0.875, 3.0),
+            (1.0, 3.0)
+        ]
+    );
 }
 
 #[test]

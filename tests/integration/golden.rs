@@ -6,7 +6,12 @@ use crate::common::scenes::{domain_wall, kink_state, ladder};
 use jacobs_ladder::render::charts::{self, line_chart};
 use jacobs_ladder::render::compose::{self, filmstrip};
 use jacobs_ladder::render::snapshot::render_snapshot;
-use jacobs_ladder::render::style::{BLUE, DARK, GREEN, RED};
+use jacobs_ladder::render::{Palette, Role};
+
+const RED: [u8; 3] = Palette.color(Role::Series(1));
+const BLUE: [u8; 3] = Palette.color(Role::Series(2));
+const GREEN: [u8; 3] = Palette.color(Role::Series(3));
+const DARK: [u8; 3] = Palette.color(Role::Ink);
 use jacobs_ladder::render::{
     Axis, ChartSpec, FilmstripOptions, Frame, Kymograph, Layout, Legend, Marker, Panel, Picture,
     Series, Snapshot,

@@ -176,17 +176,24 @@ fn draw(rng: &mut Rng, k: usize) -> Draw {
     };
     args.extend([s("--style"), s(style), s("--format"), s("pdf")]);
     let mut height_pt = None;
-    if style == "paper" || style == "paper-wide" {
-        // Half the time a width and/or height of the user's.
-        if rng.below(2) == 0 {
-            let w = rng.range(2.5, 7.5);
-            args.extend([s("--width"), format!("{w:.2}in")]);
-        }
-        if rng.below(3) == 0 {
-            let h = rng.range(1.5, 6.0);
-            args.extend([s("--height"), format!("{h:.2}in")]);
-            height_pt = Some((h * 100.0).round() / 100.0 * 72.0);
-        }
+    // Half the time a width of the user's, a third of the time a height
+    // (at `screen` a height needs a width): journal widths at `paper`
+    // and `paper-wide`, a window's or a slide's widths at `screen` and
+    // `slide` (docs/formats.md: text never leaves the page nor shrinks).
+    let (widths, heights) = match style {
+        "slide" => ((3.0, 14.0), (2.0, 8.0)),
+        "screen" => ((2.5, 10.0), (2.0, 7.0)),
+        _ => ((2.5, 7.5), (1.5, 6.0)),
+    };
+    let sized = rng.below(2) == 0;
+    if sized {
+        let w = rng.range(widths.0, widths.1);
+        args.extend([s("--width"), format!("{w:.2}in")]);
+    }
+    if rng.below(3) == 0 && (sized || style != "screen") {
+        let h = rng.range(heights.0, heights.1);
+        args.extend([s("--height"), format!("{h:.2}in")]);
+        height_pt = Some((h * 100.0).round() / 100.0 * 72.0);
     }
     Draw {
         args,
@@ -197,12 +204,19 @@ fn draw(rng: &mut Rng, k: usize) -> Draw {
     }
 }
 
-/// The smallest text, pt, other than sub- and superscripts, at `style`.
-fn min_text_pt(style: &str) -> f64 {
+/// The smallest text, pt, other than sub- and superscripts, of a figure
+/// drawn with `args` at `style`: the style's size (8 pt at `paper` and
+/// `paper-wide`, 20 pt at `slide`, 11.25 pt at `screen` on a page of the
+/// user's), never less (docs/formats.md: text never shrinks to fit); at
+/// `screen` on its own pixels, the smallest size its design sets (block
+/// numbers, 10 px = 7.5 pt).
+fn min_text_pt(style: &str, args: &[String]) -> f64 {
+    let sized = args.iter().any(|a| a == "--width");
     match style {
         "paper" | "paper-wide" => 8.0,
-        "slide" => 10.0,
-        _ => MIN_SCRIPT_PT,
+        "slide" => 20.0,
+        _ if sized => 11.25,
+        _ => 7.5,
     }
 }
 
@@ -511,7 +525,7 @@ fn categorical(colors: &[[u8; 3]]) -> Vec<[u8; 3]> {
 /// Everything wrong with one drawn figure.
 fn problems(d: &Draw, page: &Page) -> (Vec<String>, f64) {
     let mut out = Vec::new();
-    let min_text = min_text_pt(d.style);
+    let min_text = min_text_pt(d.style, &d.args);
     let mut smallest = f64::INFINITY;
     // Sizes by run: a run is a script when it is 0.7 of a run beside it.
     let mut run_size: BTreeMap<usize, f64> = BTreeMap::new();
@@ -525,6 +539,7 @@ fn problems(d: &Draw, page: &Page) -> (Vec<String>, f64) {
                 .is_some_and(|b| (size / b - 0.7).abs() < 0.03)
         })
     };
+    let mut off = 0;
     for g in &page.glyphs {
         smallest = smallest.min(g.size);
         if g.size < MIN_SCRIPT_PT - 0.01 {
@@ -537,11 +552,15 @@ fn problems(d: &Draw, page: &Page) -> (Vec<String>, f64) {
         }
         let r = g.rect;
         if r[0] < -0.5 || r[1] < -0.5 || r[2] > page.width + 0.5 || r[3] > page.height + 0.5 {
+            off += 1;
             out.push(format!(
                 "a glyph at {r:?} leaves the {}×{} page",
                 page.width, page.height
             ));
         }
+    }
+    if off > 0 {
+        out.insert(0, format!("{off} glyphs off the page"));
     }
     // Runs' boxes, pairwise.
     let mut runs: BTreeMap<usize, [f64; 4]> = BTreeMap::new();
@@ -564,6 +583,9 @@ fn problems(d: &Draw, page: &Page) -> (Vec<String>, f64) {
                 out.push(format!("text runs at {a:?} and {b:?} overlap"));
             }
         }
+    }
+    if d.style == "slide" && page.height > d.height_pt.unwrap_or(540.0) + 0.5 {
+        out.push(format!("the slide is {:.1} pt tall", page.height));
     }
     if d.style == "paper" || d.style == "paper-wide" {
         let cap = d.height_pt.unwrap_or(324.0);
@@ -720,6 +742,104 @@ fn named_size(message: &str) -> Option<(String, String)> {
     (flag == "--height" || flag == "--width").then_some((flag, value))
 }
 
+/// Draws `d` into `dir`: the PDF written, or when the program refuses
+/// the size asked, the PDF of the size its refusal names (then `d` says
+/// that size). A refusal must be exit 2, one line, naming the flag and
+/// the smallest size in inches, a hundredth of an inch less refused too;
+/// every way it is not is pushed to `failures`. `None`: nothing to read.
+fn draw_following_refusal(
+    d: &mut Draw,
+    dir: &Path,
+    refused: &mut usize,
+    failures: &mut Vec<String>,
+) -> Option<PathBuf> {
+    let msg = match run(&d.args, dir) {
+        Ok(p) => return Some(p),
+        Err((Some(2), msg)) => msg,
+        Err((code, msg)) => {
+            failures.push(format!("{:?}: exit {code:?}: {msg}", d.args));
+            return None;
+        }
+    };
+    // Refused: one line naming the flag and a size that works.
+    *refused += 1;
+    // At its own size (no --width or --height of the user's) a figure
+    // keeps the page budget: refusing it is a failure.
+    let sized = d.args.iter().any(|a| a == "--width" || a == "--height");
+    if !sized && d.style != "screen" {
+        failures.push(format!("{:?}: refused at its own size: {msg}", d.args));
+    }
+    let Some((flag, value)) = named_size(&msg) else {
+        failures.push(format!("{:?}: refused without a size: {msg}", d.args));
+        return None;
+    };
+    if msg.trim().lines().count() != 1 {
+        failures.push(format!("{:?}: refusal is not one line: {msg}", d.args));
+    }
+    let at = d.args.iter().position(|a| *a == flag);
+    let n = d.args.len();
+    let set = |args: &mut Vec<String>, v: &str| match at {
+        Some(i) => args[i + 1] = v.to_string(),
+        None => {
+            args.truncate(n);
+            args.extend([flag.clone(), v.to_string()]);
+        }
+    };
+    // The size named is the smallest: a hundredth of an inch less is
+    // refused too.
+    if let Some(v) = value.strip_suffix("in").and_then(|v| v.parse::<f64>().ok()) {
+        let mut below = d.args.clone();
+        set(&mut below, &format!("{:.2}in", v - 0.01));
+        match run(&below, dir) {
+            Err((Some(2), _)) => {}
+            other => failures.push(format!(
+                "{below:?}: a hundredth below the size named ({value}) is not refused: {:?}",
+                other.map(|_| "drawn")
+            )),
+        }
+    } else {
+        failures.push(format!(
+            "{:?}: the size named is not in inches: {msg}",
+            d.args
+        ));
+    }
+    let mut args = d.args.clone();
+    set(&mut args, &value);
+    d.args = args;
+    if flag == "--height" {
+        d.height_pt = value
+            .trim_end_matches("in")
+            .parse::<f64>()
+            .ok()
+            .map(|h| h * 72.0);
+    }
+    match run(&d.args, dir) {
+        Ok(p) => Some(p),
+        Err((_, msg)) => {
+            failures.push(format!("{:?}: the size named fails too: {msg}", d.args));
+            None
+        }
+    }
+}
+
+/// Reads the PDF of `d` and pushes what breaks the rules to `failures`;
+/// the smallest glyph, pt.
+fn check_drawn(d: &Draw, pdf: &Path, failures: &mut Vec<String>) -> f64 {
+    let page = read_pdf(pdf);
+    assert!(!page.glyphs.is_empty(), "{:?}: no text read", d.args);
+    let (found, small) = problems(d, &page);
+    if !found.is_empty() {
+        let shown: Vec<_> = found.iter().take(4).cloned().collect();
+        failures.push(format!(
+            "{} (+{} more) in `ladder {}`",
+            shown.join("; "),
+            found.len().saturating_sub(4),
+            d.args.join(" ")
+        ));
+    }
+    small
+}
+
 #[test]
 fn random_figures_keep_the_print_rules() {
     let seed: u64 = std::env::var("LADDER_PROPERTY_SEED")
@@ -734,96 +854,22 @@ fn random_figures_keep_the_print_rules() {
     let root = std::env::temp_dir().join(format!("ladder-property-{}", std::process::id()));
     let (mut drawn, mut refused, mut smallest) = (0, 0, f64::INFINITY);
     let mut failures = Vec::new();
+    let mut failed_figures = 0;
     for k in 0..count {
         let mut d = draw(&mut rng, k);
         let dir = root.join(format!("{k}"));
-        let pdf = match run(&d.args, &dir) {
-            Ok(p) => p,
-            Err((Some(2), msg)) => {
-                // Refused: one line naming the flag and a size that works.
-                refused += 1;
-                // At its own size (no --width or --height of the user's) a
-                // figure keeps the page budget: refusing it is a failure.
-                let sized = d.args.iter().any(|a| a == "--width" || a == "--height");
-                if !sized && (d.style == "paper" || d.style == "paper-wide") {
-                    failures.push(format!("{:?}: refused at its own size: {msg}", d.args));
-                }
-                let Some((flag, value)) = named_size(&msg) else {
-                    failures.push(format!("{:?}: refused without a size: {msg}", d.args));
-                    continue;
-                };
-                if msg.trim().lines().count() != 1 {
-                    failures.push(format!("{:?}: refusal is not one line: {msg}", d.args));
-                }
-                let at = d.args.iter().position(|a| *a == flag);
-                let set = |args: &mut Vec<String>, v: &str| match at {
-                    Some(i) => args[i + 1] = v.to_string(),
-                    None => {
-                        args.truncate(d.args.len());
-                        args.extend([flag.clone(), v.to_string()]);
-                    }
-                };
-                // The size named is the smallest: a hundredth of an inch
-                // less is refused too.
-                if let Some(v) = value.strip_suffix("in").and_then(|v| v.parse::<f64>().ok()) {
-                    let mut below = d.args.clone();
-                    set(&mut below, &format!("{:.2}in", v - 0.01));
-                    match run(&below, &dir) {
-                        Err((Some(2), _)) => {}
-                        other => failures.push(format!(
-                            "{below:?}: a hundredth below the size named ({value}) is not \
-                             refused: {:?}",
-                            other.map(|_| "drawn")
-                        )),
-                    }
-                } else {
-                    failures.push(format!(
-                        "{:?}: the size named is not in inches: {msg}",
-                        d.args
-                    ));
-                }
-                let mut args = d.args.clone();
-                set(&mut args, &value);
-                d.args = args;
-                if flag == "--height" {
-                    d.height_pt = value
-                        .trim_end_matches("in")
-                        .parse::<f64>()
-                        .ok()
-                        .map(|h| h * 72.0);
-                }
-                match run(&d.args, &dir) {
-                    Ok(p) => p,
-                    Err((_, msg)) => {
-                        failures.push(format!("{:?}: the size named fails too: {msg}", d.args));
-                        continue;
-                    }
-                }
-            }
-            Err((code, msg)) => {
-                failures.push(format!("{:?}: exit {code:?}: {msg}", d.args));
-                continue;
-            }
-        };
-        drawn += 1;
-        let page = read_pdf(&pdf);
-        assert!(!page.glyphs.is_empty(), "{:?}: no text read", d.args);
-        let (found, small) = problems(&d, &page);
-        smallest = smallest.min(small);
-        if !found.is_empty() {
-            let shown: Vec<_> = found.iter().take(4).cloned().collect();
-            failures.push(format!(
-                "{} (+{} more) in `ladder {}`",
-                shown.join("; "),
-                found.len().saturating_sub(4),
-                d.args.join(" ")
-            ));
+        let before = failures.len();
+        if let Some(pdf) = draw_following_refusal(&mut d, &dir, &mut refused, &mut failures) {
+            drawn += 1;
+            smallest = smallest.min(check_drawn(&d, &pdf, &mut failures));
         }
+        failed_figures += usize::from(failures.len() > before);
     }
     let _ = std::fs::remove_dir_all(&root);
     eprintln!(
         "print property: seed {seed:#x}, {count} figures asked, {drawn} drawn and read \
-         ({refused} first refused with a size that works), smallest glyph {smallest:.2} pt"
+         ({refused} first refused with a size that works), {failed_figures} break a rule, \
+         smallest glyph {smallest:.2} pt"
     );
     assert!(
         drawn >= count * 3 / 4,
@@ -831,10 +877,71 @@ fn random_figures_keep_the_print_rules() {
     );
     assert!(
         failures.is_empty(),
-        "{} of {count} figures break the print rules:\n{}",
-        failures.len(),
+        "{failed_figures} of {count} figures break the print rules:\n{}",
         failures.join("\n")
     );
+}
+
+/// The sizes a referee tried at `paper` (docs/formats.md "Text never
+/// leaves the page"): S6 at the width its refusal once named (0.51 in,
+/// 193 glyphs off a 36.7 pt page) and at a 0.51 in height (the legend
+/// overprinted), the energy view 1 in wide (the plot collapsed), the
+/// kymograph 0.6 in tall (tick labels overprinted), S5 1.2 in wide
+/// (refused as "chart size must be between 60x60 …"). Each is drawn
+/// keeping every rule, or refused in one line naming a size that is
+/// then drawn keeping every rule.
+#[test]
+fn the_sizes_a_referee_tried_draw_or_name_one_that_does() {
+    let view = |v: &str, flag: &str, size: &str| -> Vec<String> {
+        let mut a: Vec<String> = ["figure", "--view", v, "--alpha=60", "--n", "10"]
+            .map(String::from)
+            .to_vec();
+        a.extend(
+            [
+                "--t-end", "3000", "--name", "v", "--style", "paper", "--format", "pdf",
+            ]
+            .map(String::from),
+        );
+        a.extend([flag.to_string(), size.to_string()]);
+        a
+    };
+    let figure = |id: &str, flag: &str, size: &str| -> Vec<String> {
+        [
+            "figure", id, "--style", "paper", "--format", "pdf", flag, size,
+        ]
+        .map(String::from)
+        .to_vec()
+    };
+    let cases = [
+        figure("S6", "--width", "0.51in"),
+        figure("S6", "--height", "0.51in"),
+        view("energy", "--width", "1in"),
+        view("kymograph", "--height", "0.6in"),
+        figure("S5", "--width", "1.2in"),
+    ];
+    let root = std::env::temp_dir().join(format!("ladder-referee-sizes-{}", std::process::id()));
+    let mut failures = Vec::new();
+    let mut refused = 0;
+    for (k, args) in cases.into_iter().enumerate() {
+        let height_pt = args
+            .iter()
+            .position(|a| a == "--height")
+            .and_then(|i| args[i + 1].trim_end_matches("in").parse::<f64>().ok())
+            .map(|h| h * 72.0);
+        let mut d = Draw {
+            args,
+            style: "paper",
+            categorical: true,
+            height_pt,
+            chart: false,
+        };
+        let dir = root.join(k.to_string());
+        if let Some(pdf) = draw_following_refusal(&mut d, &dir, &mut refused, &mut failures) {
+            check_drawn(&d, &pdf, &mut failures);
+        }
+    }
+    let _ = std::fs::remove_dir_all(&root);
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 /// The two figures seed 12345 drew that broke the rules: figure 2d's
@@ -898,4 +1005,78 @@ fn captions_and_marks_stay_apart_and_on_the_page() {
         assert!(found.is_empty(), "{args:?}: {found:?}");
     }
     let _ = std::fs::remove_dir_all(&root);
+}
+
+/// Figure pinning at `paper-wide` (docs/formats.md "Stacked panels"): its
+/// stacked panels share one x extent (panel (a)'s plot once spanned
+/// 58.7–386.7 pt and the others 62.4–487.5 pt, so that its 88° read as
+/// 77°), and every panel's x axis carries its numbers. Read from the PDF:
+/// the long horizontal lines (axes and grid lines, each as wide as its
+/// plot) all start and end at one x, and under each panel's x axis (the
+/// foot of each y axis, the leftmost long vertical lines) stand at least
+/// three tick numbers.
+#[test]
+fn stacked_panels_share_one_x_extent_and_each_axis_reads() {
+    let dir = std::env::temp_dir().join(format!("ladder-pinning-x-{}", std::process::id()));
+    let args: Vec<String> = [
+        "figure",
+        "pinning",
+        "--style",
+        "paper-wide",
+        "--format",
+        "pdf",
+    ]
+    .map(String::from)
+    .to_vec();
+    let pdf = run(&args, &dir).unwrap_or_else(|e| panic!("{e:?}"));
+    let page = read_pdf(&pdf);
+    let _ = std::fs::remove_dir_all(&dir);
+    let wide: Vec<[f64; 4]> = page
+        .lines
+        .iter()
+        .filter(|l| (l[1] - l[3]).abs() < 0.2 && (l[2] - l[0]).abs() > 0.5 * page.width)
+        .map(|l| [l[0].min(l[2]), l[1], l[0].max(l[2]), l[3]])
+        .collect();
+    assert!(wide.len() >= 8, "{} long horizontal lines", wide.len());
+    let (lo, hi) = (wide[0][0], wide[0][2]);
+    for l in &wide {
+        assert!(
+            (l[0] - lo).abs() < 0.6 && (l[2] - hi).abs() < 0.6,
+            "a plot spans {:.1}–{:.1} pt, another {lo:.1}–{hi:.1} pt",
+            l[0],
+            l[2]
+        );
+    }
+    // The y axes: long vertical lines at the plots' left edge.
+    let mut axes: Vec<(f64, f64)> = page
+        .lines
+        .iter()
+        .filter(|l| (l[0] - l[2]).abs() < 0.2 && (l[0] - lo).abs() < 0.6)
+        .filter(|l| (l[1] - l[3]).abs() > 20.0)
+        .map(|l| (l[1].min(l[3]), l[1].max(l[3])))
+        .collect();
+    axes.sort_by(|a, b| a.0.total_cmp(&b.0));
+    axes.dedup_by(|a, b| (a.0 - b.0).abs() < 1.0);
+    assert_eq!(axes.len(), 4, "four panels: {axes:?}");
+    let mut runs: BTreeMap<usize, [f64; 4]> = BTreeMap::new();
+    for g in &page.glyphs {
+        let b = runs.entry(g.run).or_insert(g.rect);
+        *b = [
+            b[0].min(g.rect[0]),
+            b[1].min(g.rect[1]),
+            b[2].max(g.rect[2]),
+            b[3].max(g.rect[3]),
+        ];
+    }
+    for (foot, _) in &axes {
+        let under = runs
+            .values()
+            .filter(|r| r[3] <= foot + 0.5 && r[3] > foot - 14.0)
+            .filter(|r| r[0] >= lo - 8.0 && r[2] <= hi + 8.0)
+            .count();
+        assert!(
+            under >= 3,
+            "the panel whose x axis is at {foot:.1} pt has {under} numbers under it"
+        );
+    }
 }

@@ -4,12 +4,21 @@ use crate::common;
 
 use crate::common::golden::rgba;
 use crate::common::scenes::{domain_wall, kink_state, ladder, ladder_with};
-use jacobs_ladder::encode::{GifWriter, Palette, TRANSPARENT_INDEX, png_bytes};
+use jacobs_ladder::encode::{GifWriter, TRANSPARENT_INDEX, png_bytes};
+
+/// The colour table every movie of the program is encoded with.
+fn gif_palette() -> &'static jacobs_ladder::encode::Palette {
+    jacobs_ladder::render::Palette.gif()
+}
 use jacobs_ladder::output::{check_writable, write_atomic, write_atomic_with};
 use jacobs_ladder::render::charts::{self, line_chart};
 use jacobs_ladder::render::compose::filmstrip;
 use jacobs_ladder::render::snapshot::{render_snapshot, render_snapshot_into};
-use jacobs_ladder::render::style::{self, BLUE, DARK, GREEN, GREY, KYMO_NEG, KYMO_POS, RED, WHITE};
+use jacobs_ladder::render::style;
+use jacobs_ladder::render::{Palette, Role};
+
+const RED: [u8; 3] = Palette.color(Role::Series(1));
+const BLUE: [u8; 3] = Palette.color(Role::Series(2));
 use jacobs_ladder::render::{
     Axis, ChartSpec, FilmstripOptions, Frame, Kymograph, Series, Snapshot, View,
 };
@@ -33,7 +42,7 @@ fn sweep(l: &Ladder, frames: usize, w: u32, h: u32) -> Vec<Pixmap> {
 }
 
 fn gif_of(frames: &[Pixmap], fps: f64) -> Vec<u8> {
-    let mut g = GifWriter::new(frames[0].width(), frames[0].height(), fps).unwrap();
+    let mut g = GifWriter::new(frames[0].width(), frames[0].height(), fps, gif_palette()).unwrap();
     for f in frames {
         g.push_frame(f).unwrap();
     }
@@ -90,8 +99,18 @@ fn gif_round_trip() {
 
 #[test]
 fn scene_colours_are_exact_in_the_gif_palette() {
-    let p = Palette::scene();
-    for c in [WHITE, DARK, RED, BLUE, GREEN, GREY, KYMO_NEG, KYMO_POS] {
+    let p = gif_palette();
+    let roles = [
+        Role::Paper,
+        Role::Ink,
+        Role::SpringA,
+        Role::SpringB,
+        Role::Series(3),
+        Role::Ground,
+        Role::Negative,
+        Role::Positive,
+    ];
+    for c in roles.map(|r| Palette.color(r)) {
         assert_eq!(p.color(p.index(c)), c, "{c:?}");
         assert_ne!(p.index(c), TRANSPARENT_INDEX);
     }
@@ -120,14 +139,14 @@ fn unchanged_frames_still_count() {
 #[test]
 fn gif_rejects_bad_sizes_and_fps() {
     assert!(matches!(
-        GifWriter::new(0, 10, 10.0),
+        GifWriter::new(0, 10, 10.0, gif_palette()),
         Err(Error::BadInput(_))
     ));
     assert!(matches!(
-        GifWriter::new(10, 10, f64::NAN),
+        GifWriter::new(10, 10, f64::NAN, gif_palette()),
         Err(Error::BadInput(_))
     ));
-    let mut g = GifWriter::new(10, 10, 10.0).unwrap();
+    let mut g = GifWriter::new(10, 10, 10.0, gif_palette()).unwrap();
     let wrong = Pixmap::new(5, 5).unwrap();
     assert!(matches!(g.push_frame(&wrong), Err(Error::BadInput(_))));
     assert!(g.finish().is_err());

@@ -545,6 +545,7 @@ fn the_slurm_array_script_runs_its_shard() {
                 .env("PATH", &path)
                 .env("SLURM_ARRAY_TASK_ID", id.to_string())
                 .env("SLURM_ARRAY_TASK_COUNT", "3")
+                .env("SHARDS", "3")
                 .env("SLURM_CPUS_PER_TASK", "1")
                 .stderr(std::process::Stdio::piped())
                 .spawn()

@@ -26,9 +26,16 @@ def test_total_plus_dissipated_is_flat_after_the_drive():
     assert np.all(np.diff(run.dissipated) >= 0)
 
 
-def test_dissipated_is_nan_unless_asked_and_the_trajectory_is_the_same():
+def test_dissipated_is_computed_when_asked_for_and_the_trajectory_is_the_same():
+    """Before: NaN unless dissipation=True was passed."""
     plain = jl.simulate(integrator="verlet", dt=0.05, t_end=1500)
     asked = jl.simulate(integrator="verlet", dt=0.05, t_end=1500, dissipation=True)
-    assert np.isnan(plain.dissipated).all()
     assert plain.theta.tobytes() == asked.theta.tobytes()
     assert plain.kinetic.tobytes() == asked.kinetic.tobytes()
+    assert "dissipated" not in plain.to_dict()  # not made until asked for
+    assert plain.dissipated.tobytes() == asked.dissipated.tobytes()
+    assert np.isfinite(plain.dissipated).all() and plain.dissipated[-1] > 0
+    # A scene's run (and an `auto` one) the same way.
+    scene = jl.Scene.builtin("4", kind="movie").replace(n=6, t_end=1500)
+    run = scene.simulate(sample_every=100)
+    assert run.dissipated.tobytes() == scene.simulate(sample_every=100, dissipation=True).dissipated.tobytes()

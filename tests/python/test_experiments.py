@@ -97,3 +97,29 @@ def test_bad_apparatus_values_name_their_key(key, value, words):
     scene = jl.Scene(alpha=86, n=4, apparatus=TANK)
     with pytest.raises(ValueError, match=words.replace(".", r"\.")):
         scene.replace(**{key: value})
+
+
+def test_an_apparatus_run_gives_seconds_and_cm_per_s_beside_the_models_units():
+    """Before: speeds only in blocks/τ and times in τ, and no bulk fit."""
+    run = jl.simulate(alpha=86, n=11, integrator="rk4", dt=0.125, apparatus=dict(TANK, duration=6.0))
+    c = conversion(run.record)
+    assert run.tau_s == c["tau_s"]
+    assert list(run.t_s) == [t * c["tau_s"] for t in run.t]
+    finite = [a for a in run.arrival_times if a == a]
+    assert [a for a in run.arrival_times_s if a == a] == [a * c["tau_s"] for a in finite]
+    assert run.speed_cm_s == run.speed * c["cm_per_s"]
+    # The figures' fit over the lower half (blocks 6..10), as cm/s too.
+    assert 0 < run.bulk_speed < 1
+    assert run.bulk_speed_cm_s == pytest.approx(run.bulk_speed * c["cm_per_s"], rel=1e-12)
+    # The bulk fit is the figures' line (the data file's `apparatus.bulk`).
+    fit = run.bulk_fit
+    assert fit["blocks"] == [6, 10] and fit["speed_cm_s"] == run.bulk_speed_cm_s
+    assert abs(run.bulk_speed_cm_s - run.speed_cm_s) < 0.2 * run.speed_cm_s
+    assert run.record["apparatus"]["arrival_times_s"][0] == run.arrival_times_s[0]
+
+
+def test_a_run_of_the_model_alone_has_no_apparatus_units():
+    run = jl.simulate(n=10, t_end=4000)
+    assert run.t_s is None and run.speed_cm_s is None and run.tau_s is None
+    assert run.bulk_speed_cm_s is None and run.bulk_fit is None
+    assert run.bulk_speed > 0  # the paper's kink runs steadily in the bulk

@@ -2,6 +2,7 @@
 //! ID`): the refusals' wording and the stability chart of one scene.
 
 use super::*;
+use crate::render::palette::{Palette, Role};
 
 /// The terms a refusal names (`sim::check_terms`' message: "integrator X
 /// cannot integrate TERMS: ..."), or the whole message,
@@ -52,8 +53,14 @@ pub(super) fn scene_stability_chart(report: &StabilityReport) -> Result<Pixmap> 
         report.alpha_deg
     ));
     spec.legend = Legend::Outside;
-    spec =
-        spec.series(Series::line("observed = predicted", vec![(lo, lo), (hi, hi)], GREY).dashed());
+    spec = spec.series(
+        Series::line(
+            "observed = predicted",
+            vec![(lo, lo), (hi, hi)],
+            Palette.color(Role::Ground),
+        )
+        .dashed(),
+    );
     for r in rows {
         let color = color_of(&r.name);
         let label = match (&r.refused, &r.failed) {

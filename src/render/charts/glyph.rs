@@ -10,15 +10,15 @@ use plotters_backend::{BackendCoord, DrawingErrorKind};
 /// backend at the pixel of its anchor point (a data point, or the legend
 /// entry's position).
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Glyph<C> {
-    pub(super) at: C,
+pub(crate) struct Glyph<C> {
+    pub(crate) at: C,
     /// Legend line (22 px, starting at the anchor); `None` for data markers.
-    pub(super) line: LineStyle,
-    pub(super) marker: Marker,
-    pub(super) color: Rgb,
-    pub(super) width: f64,
+    pub(crate) line: LineStyle,
+    pub(crate) marker: Marker,
+    pub(crate) color: Rgb,
+    pub(crate) width: f64,
     /// Horizontal pixel offset of the marker from the anchor.
-    pub(super) offset: i32,
+    pub(crate) offset: i32,
 }
 
 impl<'a, C: 'a> PointCollection<'a, C> for &'a Glyph<C> {
@@ -95,7 +95,7 @@ fn draw_marker<DB: DrawingBackend>(
         }
         Marker::Ring => {
             let st = rgb(c).stroke_width(2);
-            backend.draw_circle((x, y), (r + 3) as u32, &st, false)
+            backend.draw_circle((x, y), (r + 2) as u32, &st, false)
         }
         Marker::Plus => {
             let st = rgb(c).stroke_width(2);
@@ -103,5 +103,52 @@ fn draw_marker<DB: DrawingBackend>(
             backend.draw_line((x - h, y), (x + h, y), &st)?;
             backend.draw_line((x, y - h), (x, y + h), &st)
         }
+        Marker::OpenTriangle => {
+            let h = r + 2;
+            outline(backend, &triangle((x, y), h, false), c)
+        }
+        Marker::TriangleDown => backend.fill_polygon(triangle((x, y), r + 1, true), &fill),
+        Marker::Diamond => backend.fill_polygon(diamond((x, y), r + 1), &fill),
+        Marker::OpenDiamond => outline(backend, &diamond((x, y), r + 2), c),
+        Marker::OpenSquare => {
+            let st = rgb(c).stroke_width(2);
+            let h = r + 2;
+            backend.draw_rect((x - h, y - h), (x + h, y + h), &st, false)
+        }
+        Marker::Star => {
+            let st = rgb(c).stroke_width(2);
+            let h = r + 1;
+            let d = (h as f64 * 0.866).round() as i32;
+            let k = h / 2;
+            backend.draw_line((x, y - h), (x, y + h), &st)?;
+            backend.draw_line((x - d, y - k), (x + d, y + k), &st)?;
+            backend.draw_line((x - d, y + k), (x + d, y - k), &st)
+        }
     }
+}
+
+/// A triangle of half-width `h` about `(x, y)`, apex up (or `down`).
+fn triangle((x, y): BackendCoord, h: i32, down: bool) -> [BackendCoord; 3] {
+    let s = if down { -1 } else { 1 };
+    [
+        (x, y - s * h),
+        (x - h, y + s * h * 2 / 3),
+        (x + h, y + s * h * 2 / 3),
+    ]
+}
+
+/// A diamond of half-diagonal `h` about `(x, y)`.
+fn diamond((x, y): BackendCoord, h: i32) -> [BackendCoord; 4] {
+    [(x, y - h), (x + h, y), (x, y + h), (x - h, y)]
+}
+
+/// The closed outline of `points`, 2 px wide, in `c`.
+fn outline<DB: DrawingBackend>(
+    backend: &mut DB,
+    points: &[BackendCoord],
+    c: Rgb,
+) -> std::result::Result<(), DrawingErrorKind<DB::ErrorType>> {
+    let st = rgb(c).stroke_width(2);
+    let closed: Vec<BackendCoord> = points.iter().chain(points.first()).copied().collect();
+    backend.draw_path(closed, &st)
 }

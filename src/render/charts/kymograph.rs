@@ -9,7 +9,8 @@ use super::{
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::render::Theme;
-use crate::render::style::{self, DARK, size};
+use crate::render::palette::{Palette, Role};
+use crate::render::style::{self, size};
 use plotters::prelude::*;
 
 /// A kymograph: `values` holds one row per time (row-major, `n` columns,
@@ -172,7 +173,9 @@ fn draw_colorbar(theme: &Theme, area: &Area<'_>, label: &str) -> Result<()> {
         .margin_right(4)
         .caption(
             label,
-            font(theme, size::LABEL).into_font().color(&rgb(DARK)),
+            font(theme, size::LABEL)
+                .into_font()
+                .color(&rgb(Palette.color(Role::Ink))),
         )
         // Room under the caption for the upper half of the top tick label.
         .set_label_area_size(
@@ -202,8 +205,12 @@ fn draw_colorbar(theme: &Theme, area: &Area<'_>, label: &str) -> Result<()> {
         .disable_x_axis()
         .y_labels(5)
         .y_label_formatter(&yf)
-        .label_style(font(theme, theme.tick).into_font().color(&rgb(DARK)))
-        .axis_style(rgb(DARK).stroke_width(1))
+        .label_style(
+            font(theme, theme.tick)
+                .into_font()
+                .color(&rgb(Palette.color(Role::Ink))),
+        )
+        .axis_style(rgb(Palette.color(Role::Ink)).stroke_width(1))
         .draw()
         .map_err(plot_error)
 }

@@ -6,7 +6,8 @@ use super::ranges::runs;
 use super::{Area, ChartSpec, Ctx, Legend, LineStyle, font, plot_error, rgb};
 use crate::error::Result;
 use crate::render::Theme;
-use crate::render::style::{self, DARK};
+use crate::render::palette::{Palette, Role};
+use crate::render::style;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
@@ -49,9 +50,13 @@ where
         .position(pos)
         .margin(8)
         .legend_area_size(28)
-        .label_font(font(theme, theme.tick).into_font().color(&rgb(DARK)))
+        .label_font(
+            font(theme, theme.tick)
+                .into_font()
+                .color(&rgb(Palette.color(Role::Ink))),
+        )
         .background_style(WHITE.mix(0.9))
-        .border_style(rgb(DARK).mix(0.4))
+        .border_style(rgb(Palette.color(Role::Ink)).mix(0.4))
         .draw()
         .map_err(plot_error)
 }
@@ -120,7 +125,7 @@ fn draw_entries(
 ) -> Result<()> {
     let text_style = font(theme, theme.tick)
         .into_font()
-        .color(&rgb(DARK))
+        .color(&rgb(Palette.color(Role::Ink)))
         .pos(Pos::new(HPos::Left, VPos::Center));
     let labelled = spec
         .series
@@ -185,15 +190,23 @@ where
         (Legend::UpperMiddle, mid, py.start),
         (Legend::LowerMiddle, mid, py.end - bh),
     ];
+    // The box as drawn sits a margin in from the plot's corner and may
+    // be a little larger than estimated: a band of LEGEND_CLEAR pixels
+    // round it must be free of data too (winding's legend once touched
+    // the det C circle).
+    let c = LEGEND_CLEAR;
     let free = |x0: i32, y0: i32| {
         !pts.iter()
-            .any(|p| p.0 >= x0 && p.0 <= x0 + bw && p.1 >= y0 && p.1 <= y0 + bh)
+            .any(|p| p.0 >= x0 - c && p.0 <= x0 + bw + c && p.1 >= y0 - c && p.1 <= y0 + bh + c)
     };
     candidates
         .into_iter()
         .find(|(_, x0, y0)| free(*x0, *y0))
         .map_or(Legend::Outside, |c| c.0)
 }
+
+/// Pixels round an inside legend's estimated box that must hold no data.
+const LEGEND_CLEAR: i32 = 10;
 
 /// Estimated legend box in pixels (with its margin).
 pub(super) fn legend_box(theme: &Theme, spec: &ChartSpec) -> (i32, i32) {
@@ -227,7 +240,7 @@ where
             }
             for w in pix.windows(2) {
                 let steps =
-                    ((w[1].0 - w[0].0).abs().max((w[1].1 - w[0].1).abs()) / 4).clamp(1, 200);
+                    ((w[1].0 - w[0].0).abs().max((w[1].1 - w[0].1).abs()) / 2).clamp(1, 400);
                 for k in 1..steps {
                     let f = k as f64 / steps as f64;
                     let lerp = |a: i32, b: i32| a + ((b - a) as f64 * f).round() as i32;

@@ -7,7 +7,6 @@ use super::legend::{
     legend_box,
 };
 use super::ranges::{Range2, data_range, equalize, runs};
-use super::ticks::tick_label;
 use super::title::{fit_title, titled};
 use super::{
     Area, Chart, ChartSpec, Ctx, Legend, LineStyle, Marker, Scale, Series, check_size, dark_axes,
@@ -15,7 +14,8 @@ use super::{
 };
 use crate::error::Result;
 use crate::render::Theme;
-use crate::render::style::{self, DARK, GREY, size};
+use crate::render::palette::{Palette, Role};
+use crate::render::style::{self, size};
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
 use std::ops::Range;
@@ -81,13 +81,18 @@ fn draw(
     (xr, yr): (Range<f64>, Range<f64>),
 ) -> Result<Chart> {
     let mut svg = String::new();
+    let plot;
     {
         let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
-        draw_any(theme, &root, spec, pass, xr, yr)?;
+        let probe = draw_any(theme, &root, spec, pass, xr, yr)?;
+        plot = probe.plot;
         root.present().map_err(plot_error)?;
     }
-    Chart::from_svg(theme, &svg, width, height)
+    let mut chart = Chart::from_svg(theme, &svg, width, height)?;
+    chart.plot_x = Some((plot.0.start, plot.0.end));
+    chart.plot_y = Some((plot.1.start, plot.1.end));
+    Ok(chart)
 }
 
 /// Where the legend goes and the axes' ranges, for `spec` drawn
@@ -138,7 +143,12 @@ fn draw_any(
     xr: Range<f64>,
     yr: Range<f64>,
 ) -> Result<Probe> {
-    let y_area = y_label_area(theme, &end_labels(yr.start, yr.end, spec.y.scale));
+    let y_ends = if spec.y.names.is_empty() {
+        end_labels(yr.start, yr.end, spec.y.scale)
+    } else {
+        spec.y.names.clone()
+    };
+    let y_area = y_label_area(theme, &y_ends);
     match (spec.x.scale, spec.y.scale) {
         (Scale::Linear, Scale::Linear) => draw_xy(theme, root, spec, pass, (xr, yr), y_area),
         (Scale::Linear, Scale::Log) => {
@@ -230,7 +240,10 @@ where
 {
     let below =
         (pass.legend == Legend::Below).then(|| below_grid(theme, spec, root.dim_in_pixel().0).4);
-    let area = if pass.legend == Legend::Outside {
+    let area = if spec.plot_x.is_some() {
+        // The plot's edges are given: the legend goes right of them.
+        root.margin(0, below.unwrap_or(0), 0, 0)
+    } else if pass.legend == Legend::Outside {
         root.margin(
             0,
             0,
@@ -255,7 +268,8 @@ where
         titled(theme, area, spec.title.as_deref(), width)?
     };
     let mut builder = ChartBuilder::on(&area);
-    // A shared x axis is labelled by the panel below: no room for numbers.
+    // A shared x axis is labelled by the panel below: room for its
+    // numbers only.
     let x_area = if spec.x.shared {
         theme.shared_x_area
     } else {
@@ -267,8 +281,19 @@ where
         .margin_bottom(theme.chart_margin_y as u32)
         .x_label_area_size(x_area)
         .y_label_area_size(y_area);
+    if let Some((left, right)) = spec.plot_x {
+        let m = theme.chart_margin as i32;
+        builder
+            .y_label_area_size((left - m).max(0) as u32)
+            .margin_right((width as i32 - right).max(0) as u32);
+    }
     if let Some(t) = spec.title.as_ref().filter(|_| one_line) {
-        builder.caption(t, font(theme, size::TITLE).into_font().color(&rgb(DARK)));
+        builder.caption(
+            t,
+            font(theme, size::TITLE)
+                .into_font()
+                .color(&rgb(Palette.color(Role::Ink))),
+        );
     }
     let mut chart = builder.build_cartesian_2d(xs, ys).map_err(plot_error)?;
     let plot = chart.plotting_area().get_pixel_range();
@@ -310,16 +335,13 @@ where
     X: Ranged<ValueType = f64> + ValueFormatter<f64>,
     Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
 {
-    let (xscale, yscale) = (spec.x.scale, spec.y.scale);
+    let xscale = spec.x.scale;
     let shared = spec.x.shared;
-    let xf = move |v: &f64| {
-        if shared {
-            String::new()
-        } else {
-            tick_label(*v, xscale)
-        }
-    };
-    let yf = move |v: &f64| tick_label(*v, yscale);
+    // A shared axis keeps its numbers (every stacked panel can be read);
+    // only its label is left to the panel below.
+    let (x_axis, y_axis) = (spec.x.clone(), spec.y.clone());
+    let xf = move |v: &f64| x_axis.tick_text(*v);
+    let yf = move |v: &f64| y_axis.tick_text(*v);
     // As many x labels as fit side by side with a gap (at most 7) at a
     // print style.
     let plot_w = {
@@ -332,7 +354,9 @@ where
         .map(|t| style::text_width(theme.font(), t, theme.tick))
         .fold(0.0f32, f32::max);
     // (Print styles only: the screen keeps its seven, and its goldens.)
-    let x_count = if theme.is_print() {
+    let x_count = if !spec.x.names.is_empty() {
+        spec.x.names.len()
+    } else if theme.is_print() {
         ((plot_w / (widest + 14.0)).floor() as usize).clamp(2, 7)
     } else {
         7
@@ -343,7 +367,9 @@ where
         let (_, py) = chart.plotting_area().get_pixel_range();
         (py.end - py.start) as f32
     };
-    let y_count = if theme.is_print() {
+    let y_count = if !spec.y.names.is_empty() {
+        spec.y.names.len()
+    } else if theme.is_print() {
         ((plot_h / (2.2 * theme.tick)).floor() as usize).clamp(2, 7)
     } else {
         7
@@ -361,8 +387,8 @@ where
         mesh.max_light_lines(1);
     }
     dark_axes(theme, &mut mesh)
-        .bold_line_style(rgb(DARK).mix(0.12))
-        .light_line_style(rgb(DARK).mix(0.05))
+        .bold_line_style(rgb(Palette.color(Role::Ink)).mix(0.12))
+        .light_line_style(rgb(Palette.color(Role::Ink)).mix(0.05))
         .draw()
         .map_err(plot_error)
 }
@@ -373,7 +399,7 @@ where
     Y: Ranged<ValueType = f64>,
 {
     let (xr, yr) = (chart.x_range(), chart.y_range());
-    let grey = rgb(GREY).stroke_width(1);
+    let grey = rgb(Palette.color(Role::Ground)).stroke_width(1);
     if xr.start < 0.0 && xr.end > 0.0 {
         let l = PathElement::new(vec![(0.0, yr.start), (0.0, yr.end)], grey);
         chart.draw_series(std::iter::once(l)).map_err(plot_error)?;

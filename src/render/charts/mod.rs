@@ -18,6 +18,7 @@ mod svg_text;
 mod ticks;
 mod title;
 
+pub(super) use glyph::Glyph;
 pub use kymograph::{Kymograph, kymograph, polarisation_rows};
 pub use line::{line_chart, line_chart_growing};
 pub use rasterize::{Chart, rasterize_svg, rasterize_tree};
@@ -29,6 +30,7 @@ pub use title::{FittedTitle, fit_title};
 
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
+use crate::render::palette::{Palette, Role};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -60,10 +62,18 @@ where
     Y: Ranged,
     DB: DrawingBackend,
 {
-    use super::style::{DARK, size};
-    mesh.label_style(font(theme, theme.tick).into_font().color(&rgb(DARK)))
-        .axis_desc_style(font(theme, size::LABEL).into_font().color(&rgb(DARK)))
-        .axis_style(rgb(DARK).stroke_width(1))
+    use super::style::size;
+    mesh.label_style(
+        font(theme, theme.tick)
+            .into_font()
+            .color(&rgb(Palette.color(Role::Ink))),
+    )
+    .axis_desc_style(
+        font(theme, size::LABEL)
+            .into_font()
+            .color(&rgb(Palette.color(Role::Ink))),
+    )
+    .axis_style(rgb(Palette.color(Role::Ink)).stroke_width(1))
 }
 
 fn check_size(width: u32, height: u32) -> Result<()> {

@@ -15,6 +15,13 @@ pub struct Chart {
     pub svg: String,
     /// The theme it was drawn with (its font parses the SVG).
     pub theme: Theme,
+    /// Where its plot area spans across, pixels from its left edge (left,
+    /// right): set by the charts that have one axis of numbers across, so
+    /// that stacked panels can share one x extent.
+    pub plot_x: Option<(i32, i32)>,
+    /// Where its plot area spans down, pixels from its top (top, bottom),
+    /// where the chart has one.
+    pub plot_y: Option<(i32, i32)>,
     /// The SVG parsed with the bundled font (for drawing at other scales).
     tree: OnceLock<Option<resvg::usvg::Tree>>,
 }
@@ -26,6 +33,8 @@ impl Chart {
             pixmap,
             svg,
             theme: *theme,
+            plot_x: None,
+            plot_y: None,
             tree: OnceLock::new(),
         }
     }
@@ -40,6 +49,8 @@ impl Chart {
             pixmap,
             svg,
             theme: *theme,
+            plot_x: None,
+            plot_y: None,
             tree: OnceLock::from(Some(tree)),
         })
     }

@@ -21,6 +21,9 @@ pub struct Axis {
     /// Shared with a panel stacked below, which labels it: this panel
     /// draws its ticks without numbers or label.
     pub shared: bool,
+    /// Names of the categories at 1, 2, … (a chart of levels, one per
+    /// row): the ticks are these names, not numbers.
+    pub names: Vec<String>,
 }
 
 impl Axis {
@@ -44,6 +47,27 @@ impl Axis {
         self
     }
 
+    /// Categories at 1, 2, …, `names.len()`, each tick labelled with its
+    /// name.
+    pub fn names(mut self, names: Vec<String>) -> Axis {
+        self.range = Some((0.5, names.len() as f64 + 0.5));
+        self.names = names;
+        self
+    }
+
+    /// The tick label of `v` on this axis: its category's name (none
+    /// between categories), else the number.
+    pub fn tick_text(&self, v: f64) -> String {
+        if self.names.is_empty() {
+            return super::ticks::tick_label(v, self.scale);
+        }
+        let k = v.round();
+        if (v - k).abs() > 1e-6 || k < 1.0 {
+            return String::new();
+        }
+        self.names.get(k as usize - 1).cloned().unwrap_or_default()
+    }
+
     /// Shared with the panel stacked below, which labels it (an axis
     /// shared by stacked panels is labelled once).
     pub fn shared(mut self) -> Axis {
@@ -62,22 +86,7 @@ pub enum LineStyle {
     None,
 }
 
-/// Marker drawn at each point of a series.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Marker {
-    #[default]
-    None,
-    Circle,
-    Square,
-    Triangle,
-    /// A diagonal cross, e.g. for diverged runs.
-    Cross,
-    /// An open circle, larger than [`Marker::Circle`]: drawn around a
-    /// filled circle at the same point, both stay visible.
-    Ring,
-    /// An upright cross.
-    Plus,
-}
+pub use crate::render::palette::Marker;
 
 /// One data series. Non-finite points (and non-positive ones on log axes)
 /// break the line.
@@ -171,6 +180,11 @@ pub struct ChartSpec {
     pub equal_aspect: bool,
     /// Thin grey lines through x = 0 and y = 0 when in range.
     pub zero_lines: bool,
+    /// The plot area's left and right edges across the chart, pixels from
+    /// its left edge, when they are given (stacked panels sharing one x
+    /// extent, docs/formats.md); `None` lays them out from the tick labels
+    /// and the legend. A legend right of the plot goes right of `right`.
+    pub plot_x: Option<(i32, i32)>,
 }
 
 impl ChartSpec {

@@ -5,7 +5,8 @@ use super::{Area, font, plot_error, rgb};
 use crate::error::Result;
 use crate::render::Theme;
 use crate::render::page_style::FontChoice;
-use crate::render::style::{self, DARK, size};
+use crate::render::palette::{Palette, Role};
+use crate::render::style::{self, size};
 use plotters::prelude::*;
 
 /// Space kept free left and right of a title, in pixels.
@@ -35,7 +36,11 @@ impl FittedTitle {
 
 /// Lays out `title` for a chart `width` pixels wide: on one line at
 /// [`size::TITLE`] if it fits, else on at most two lines at the largest
-/// size from `size::TITLE` down to 10 px that fits; a title too wide even
+/// size from `size::TITLE` down to the smallest the theme sets text at
+/// that fits; then on as many lines as it takes at that size. A style
+/// with a text size of its own (print, slide, a page of the user's)
+/// never sets a title smaller than it (docs/formats.md: text never
+/// shrinks to fit); on the screen's own pixels a title too wide even
 /// then is split into two lines and shrunk until the wider one fits.
 pub fn fit_title(theme: &Theme, title: &str, width: u32) -> FittedTitle {
     let font = theme.font();
@@ -49,8 +54,13 @@ pub fn fit_title(theme: &Theme, title: &str, width: u32) -> FittedTitle {
     if fits(&one) {
         return one;
     }
+    let smallest = if theme.min_text > 0.0 {
+        theme.min_text.min(size::TITLE)
+    } else {
+        MIN_SIZE
+    };
     let mut size = size::TITLE;
-    while size >= MIN_SIZE {
+    while size >= smallest {
         let t = FittedTitle {
             lines: style::wrap_text(font, title, room, size),
             size,
@@ -61,8 +71,20 @@ pub fn fit_title(theme: &Theme, title: &str, width: u32) -> FittedTitle {
         }
         size -= 0.5;
     }
-    // Two lines at the smallest size, as balanced as the words allow, then
-    // shrunk until the wider one fits.
+    let wrapped = FittedTitle {
+        lines: style::wrap_text(font, title, room, smallest),
+        size: smallest,
+        font,
+    };
+    if theme.min_text > 0.0 || fits(&wrapped) {
+        return wrapped;
+    }
+    shrunk_to(title, font, room)
+}
+
+/// Two lines at [`MIN_SIZE`], as balanced as the words allow, shrunk until
+/// the wider one fits `room` (the screen's own pixels only).
+fn shrunk_to(title: &str, font: FontChoice, room: f32) -> FittedTitle {
     let mut wrap = 0.5 * style::text_width(font, title, MIN_SIZE);
     let mut t = FittedTitle {
         lines: style::wrap_text(font, title, wrap, MIN_SIZE),
@@ -75,7 +97,7 @@ pub fn fit_title(theme: &Theme, title: &str, width: u32) -> FittedTitle {
     }
     t.size *= room / t.width().max(1.0);
     // Text width is not exactly linear in size (hinting, rounding).
-    while !fits(&t) && t.size > 1.0 {
+    while t.width() > room && t.size > 1.0 {
         t.size *= 0.98;
     }
     t
@@ -96,7 +118,12 @@ pub(in crate::render) fn titled<'a>(
         let fitted = fit_title(theme, t, width);
         for line in &fitted.lines {
             root = root
-                .titled(line, font(theme, fitted.size).into_font().color(&rgb(DARK)))
+                .titled(
+                    line,
+                    font(theme, fitted.size)
+                        .into_font()
+                        .color(&rgb(Palette.color(Role::Ink))),
+                )
                 .map_err(plot_error)?;
         }
     }
@@ -112,6 +139,21 @@ mod tests {
         let t = fit_title(&Theme::of(&Default::default()), "kink, α = 60°", 360);
         assert_eq!(t.lines, vec!["kink, α = 60°".to_string()]);
         assert_eq!(t.size, size::TITLE);
+    }
+
+    /// At a slide a title wraps onto more lines rather than shrink below
+    /// the slide's text size (it was set down to 10 px, 13 pt).
+    #[test]
+    fn a_slide_title_wraps_and_never_shrinks() {
+        use crate::render::{Style, StyleName};
+        let theme = Theme::of(&Style::named(StyleName::Slide));
+        let title = "Movie 3: the kink of movie 4 in the frame moving with it: sin θₙ";
+        for width in [200, 320, 480] {
+            let t = fit_title(&theme, title, width);
+            assert!(t.size >= theme.min_text, "{width}: {t:?}");
+            assert!(t.width() <= width as f32 - 2.0 * SIDE, "{width}: {t:?}");
+            assert_eq!(t.lines.join(" "), title, "{width}");
+        }
     }
 
     #[test]

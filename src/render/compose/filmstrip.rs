@@ -7,9 +7,10 @@ use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::canvas::{Canvas, Pen};
 use crate::render::fold::{self, Fold};
+use crate::render::palette::{Palette, Role};
 use crate::render::picture::Picture;
 use crate::render::snapshot::{self, Region, Snapshot, View};
-use crate::render::style::{self, DARK, HAlign, VAlign};
+use crate::render::style::{self, HAlign, VAlign};
 use crate::render::theme::Theme;
 use tiny_skia::Pixmap;
 
@@ -57,7 +58,10 @@ pub struct ChainMark {
     pub at: f64,
     /// The words beside the triangle (none when empty).
     pub label: String,
-    pub color: crate::encode::Rgb,
+    /// What the mark points at (a kink, an antikink, an event): the
+    /// triangle takes the role's colour, the words its readable shade
+    /// ([`Theme::text_color`]).
+    pub role: Role,
     /// The side of the ladder the pointer and its label go on (`Left` or
     /// `Right`).
     pub side: HAlign,
@@ -128,7 +132,10 @@ fn draw_mark(
     let tip = x + dir * (reach(dir) + theme.mark_clear);
     let base = tip + dir * theme.mark_arrow;
     let half = theme.mark_half;
-    canvas.polygon(&[(tip, y), (base, y - half), (base, y + half)], mark.color);
+    canvas.polygon(
+        &[(tip, y), (base, y - half), (base, y + half)],
+        theme.color(mark.role),
+    );
     if mark.label.is_empty() {
         return;
     }
@@ -141,7 +148,7 @@ fn draw_mark(
         &mark.label,
         (base + dir * theme.mark_space, y),
         text,
-        mark.color,
+        theme.text_color(mark.role),
         (align, VAlign::Middle),
     );
 }
@@ -429,7 +436,7 @@ impl StripPlan {
             return Ok(img);
         };
         let mut img = Picture::new(theme, w as f32, h as f32);
-        let number = style::mix(style::GREY, DARK, 0.3);
+        let number = style::mix(Palette.color(Role::Ground), Palette.color(Role::Ink), 0.3);
         for c in &self.columns {
             snapshot::draw_snapshot_on(&mut img, c.region, &c.snapshot(frame.q)?);
             let at = (c.region.x + 0.5 * c.region.w, theme.folded_pad);
@@ -453,7 +460,14 @@ impl StripPlan {
             (0.5, h - 0.5),
         ];
         if let Some(path) = crate::render::canvas::polyline_path(&corners, true) {
-            let pen = Pen::new(1.0, style::mix(style::WHITE, style::GREY, 0.45));
+            let pen = Pen::new(
+                1.0,
+                style::mix(
+                    Palette.color(Role::Paper),
+                    Palette.color(Role::Ground),
+                    0.45,
+                ),
+            );
             img.stroke(&path, &pen);
         }
         Ok(img)
@@ -538,7 +552,13 @@ pub fn filmstrip_picture(
     if let Some(l) = &opts.label {
         let at = (layout.margin as f32, layout.margin as f32);
         let size = theme.panel_label;
-        strip.text(l, at, size, DARK, (HAlign::Left, VAlign::Top));
+        strip.text(
+            l,
+            at,
+            size,
+            Palette.color(Role::Ink),
+            (HAlign::Left, VAlign::Top),
+        );
     }
     Ok(strip)
 }

@@ -3,9 +3,10 @@
 
 use crate::error::{Error, Result};
 use crate::render::canvas::Canvas;
+use crate::render::palette::{Palette, Role};
 use crate::render::picture::Picture;
 use crate::render::snapshot::{self, Region, Snapshot};
-use crate::render::style::{DARK, HAlign, VAlign, text_width};
+use crate::render::style::{HAlign, VAlign, text_width};
 use crate::render::theme::Theme;
 use tiny_skia::{Pixmap, PixmapPaint, Transform};
 
@@ -203,7 +204,13 @@ pub fn compose_picture(panels: &[Panel], layout: &Layout) -> Result<Picture> {
     if let Some(t) = &layout.title {
         let at = (0.5 * width as f32, m as f32);
         let size = theme.title;
-        out.text(t, at, size, DARK, (HAlign::Center, VAlign::Top));
+        out.text(
+            t,
+            at,
+            size,
+            Palette.color(Role::Ink),
+            (HAlign::Center, VAlign::Top),
+        );
     }
     for (k, p) in panels.iter().enumerate() {
         let at = grid.image_origin(k, p.image.pixel_size());
@@ -223,7 +230,13 @@ fn draw_panel(
     out.place(&p.image, (ix as f32, iy as f32));
     if let Some(l) = &p.label {
         let at = (x as f32 + theme.panel_label_inset, y as f32);
-        out.text(l, at, theme.panel_label, DARK, (HAlign::Left, VAlign::Top));
+        out.text(
+            l,
+            at,
+            theme.panel_label,
+            Palette.color(Role::Ink),
+            (HAlign::Left, VAlign::Top),
+        );
     }
     if let Some(c) = &p.caption {
         // One text per line, each centred under the image.
@@ -233,7 +246,13 @@ fn draw_panel(
                 (y + lh + ih) as f32
                     + (theme.caption_top_em + theme.caption_line_em * k as f32) * theme.label,
             );
-            out.text(line, at, theme.label, DARK, (HAlign::Center, VAlign::Top));
+            out.text(
+                line,
+                at,
+                theme.label,
+                Palette.color(Role::Ink),
+                (HAlign::Center, VAlign::Top),
+            );
         }
     }
 }

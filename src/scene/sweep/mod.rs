@@ -72,7 +72,7 @@ impl Param {
             Self::Alpha => "α (°)",
             Self::N => "number of blocks N",
             Self::B => "b / s",
-            Self::Gamma => "damping γ",
+            Self::Gamma => "damping γ (m/τ)",
             Self::Gravity => "gravity G = mg/(ks)",
             Self::Inertia => "moment of inertia I / (m s²)",
             Self::DriveTime => "drive time T_d / τ",

@@ -69,10 +69,9 @@ pub fn levels(scene: &Scene) -> Result<(Vec<LevelResult>, Vec<RunData>)> {
 }
 
 /// Figure 2: c_kink (cm/s) and c_antikink / c_kink for each level of
-/// model at [`LEVELS_MOTOR_HZ`], beside the measured 6.0 cm/s and 1.75; a
-/// level without a wave is drawn at zero and named "no wave". The legend
-/// gives how far each level lands, and how much the kink moves when the
-/// "stiff" links are made twice as stiff.
+/// model at [`LEVELS_MOTOR_HZ`], one row per level named on the axis,
+/// beside the measured 6.0 cm/s and 1.75; a level without a wave says
+/// "no wave" in its name and has no point on the value axis.
 pub(super) fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     let (results, data) = levels(scene)?;
     if let Some(r) = results
@@ -87,10 +86,7 @@ pub(super) fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<
             100.0 * STIFF_TOLERANCE
         )));
     }
-    let n = LEVELS.len() as f64;
-    let x_axis = || Axis::new("level of model (caption)").range(0.5, n + 0.5);
     let speed = level_chart(
-        x_axis(),
         Axis::new("c_{kink} (cm/s)"),
         (
             MEASURED_KINK_CM_S,
@@ -100,7 +96,6 @@ pub(super) fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<
         |r| r.kink_cm_s,
     );
     let ratio = level_chart(
-        x_axis(),
         Axis::new("c_{antikink} / c_{kink}"),
         (MEASURED_RATIO, format!("measured {MEASURED_RATIO}")),
         &results,
@@ -143,56 +138,51 @@ const WIDE_PAGE_PX: u32 = 600;
 /// Height over width of each of the two charts side by side.
 const SIDE_BY_SIDE_ASPECT: f32 = 0.75;
 
-/// One panel of the levels' figure: `value` of each level (the model's
-/// points; a level without a wave drawn at zero, as its own series)
-/// beside the `measured` value (dashed). Short legend entries: the
-/// caption names the levels and gives their numbers.
+/// The name of each level on the axis, "no wave" added where its
+/// kink has no speed.
+pub fn level_names(results: &[LevelResult]) -> Vec<String> {
+    results
+        .iter()
+        .map(|r| match r.kink_cm_s {
+            Some(_) => r.name.to_string(),
+            None => format!("{}: no wave", r.name),
+        })
+        .collect()
+}
+
+/// One panel of the levels' figure: one row per level (the first at the
+/// top, named on the axis), `value` of each level where it has one (a
+/// level without a wave has no point: its name says "no wave"), beside
+/// the `measured` value (a dashed line across the rows).
 fn level_chart(
     x: Axis,
-    y: Axis,
     measured: (f64, String),
     results: &[LevelResult],
     value: impl Fn(&LevelResult) -> Option<f64>,
 ) -> ChartSpec {
     let n = results.len() as f64;
     let top = results.iter().filter_map(&value).fold(measured.0, f64::max);
-    let y = y.range(0.0, 1.15 * top);
-    let (runs, none): (Vec<_>, Vec<_>) = results
-        .iter()
-        .enumerate()
-        .map(|(k, r)| (k as f64 + 1.0, value(r)))
-        .partition(|(_, v)| v.is_some());
-    let mut spec = ChartSpec::new(x, y).series(
+    let row = |k: usize| n - k as f64;
+    let mut names = level_names(results);
+    names.reverse();
+    let mut spec = ChartSpec::new(x.range(0.0, 1.15 * top), Axis::new("").names(names));
+    spec = spec.series(
         Series::line(
             measured.1,
-            vec![(0.5, measured.0), (n + 0.5, measured.0)],
+            vec![(measured.0, 0.5), (measured.0, n + 0.5)],
             style::series_color(0),
         )
         .dashed(),
     );
-    let points = |v: Vec<(f64, Option<f64>)>| -> Vec<(f64, f64)> {
-        v.into_iter().map(|(x, y)| (x, y.unwrap_or(0.0))).collect()
-    };
-    if !runs.is_empty() {
+    let points: Vec<(f64, f64)> = results
+        .iter()
+        .enumerate()
+        .filter_map(|(k, r)| value(r).map(|v| (v, row(k))))
+        .collect();
+    if !points.is_empty() {
         spec = spec.series(
-            Series::scatter(
-                "model",
-                points(runs),
-                style::series_color(1),
-                Marker::Circle,
-            )
-            .with_width(2.0),
-        );
-    }
-    if !none.is_empty() {
-        spec = spec.series(
-            Series::scatter(
-                "model: no wave (at 0)",
-                points(none),
-                style::series_color(2),
-                Marker::Cross,
-            )
-            .with_width(2.0),
+            Series::scatter("model", points, style::series_color(1), Marker::Circle)
+                .with_width(2.0),
         );
     }
     spec

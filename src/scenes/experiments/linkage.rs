@@ -66,7 +66,12 @@ pub fn refined_fronts(scene: &Scene) -> Result<(Vec<Front>, Vec<RunData>)> {
 }
 
 /// Figure 3: how far the linkage's kink and antikink get (blocks flipped,
-/// of N) against the pin friction μ_p.
+/// of N) against the pin friction μ_p: a point per run, and each front
+/// as a step function that changes halfway between two points whose
+/// fronts differ (the threshold is known to within half their distance).
+/// The kink is drawn under the antikink, wider, in filled marks; the
+/// antikink in open rings around them, dashed: where both flip as many
+/// blocks, both stay visible.
 pub(super) fn linkage_friction(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     let (rows, data) = refined_fronts(scene)?;
     let n = scene.model.n as f64;
@@ -74,7 +79,7 @@ pub(super) fn linkage_friction(theme: &Theme, scene: &Scene) -> Result<(Picture,
         Axis::new("pin friction μ_{p}"),
         Axis::new("blocks flipped (front)").range(0.0, n + 0.5),
     );
-    for (j, (word, marker)) in [("kink", Marker::Circle), ("antikink", Marker::Square)]
+    for (j, (word, marker)) in [("kink", Marker::Circle), ("antikink", Marker::Ring)]
         .into_iter()
         .enumerate()
     {
@@ -87,11 +92,27 @@ pub(super) fn linkage_friction(theme: &Theme, scene: &Scene) -> Result<(Picture,
             "{word} (α = {sign}{}°)",
             describe::num(scene.model.alpha.abs())
         );
-        let s = Series::line(label, pts, style::series_color(j + 1))
-            .with_marker(marker)
-            .with_width(1.5);
-        spec = spec.series(if j == 0 { s } else { s.dashed() });
+        let color = style::series_color(j + 1);
+        let width = if j == 0 { 3.0 } else { 1.5 };
+        let line = Series::line("", steps(&pts), color).with_width(width);
+        spec = spec.series(if j == 0 { line } else { line.dashed() });
+        spec = spec.series(Series::scatter(label, pts, color, marker).with_width(1.5));
     }
     let picture = chart_picture(theme, &spec, (820, 560))?.fit_page();
     Ok((picture, data))
+}
+
+/// The step function through `pts` (sorted by x): each value held to
+/// halfway to the next point, where it jumps.
+pub fn steps(pts: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let mut out = Vec::with_capacity(3 * pts.len());
+    for (i, &(x, y)) in pts.iter().enumerate() {
+        if i > 0 {
+            let mid = 0.5 * (pts[i - 1].0 + x);
+            out.push((mid, pts[i - 1].1));
+            out.push((mid, y));
+        }
+        out.push((x, y));
+    }
+    out
 }

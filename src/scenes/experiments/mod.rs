@@ -22,10 +22,11 @@ pub use decided::{
     DECIDABLE_FRACTION_OF_BLOCK_RATE, HELD_FOR_S, HELD_FRACTION_OF_BLOCK_RATE, HELD_RATE,
     block_rate, decidable,
 };
-pub use levels::{LevelResult, STIFF_TOLERANCE, levels};
-pub use linkage::{Front, fronts, refined_fronts};
+pub use levels::{LevelResult, STIFF_TOLERANCE, level_names, levels};
+pub use linkage::{Front, fronts, refined_fronts, steps};
+pub use positions::MOTOR_MARKERS;
 
-use super::data::RunData;
+use super::data::{ApparatusNumbers, BulkFit, RunData};
 use crate::error::Result;
 use crate::render::charts::{self, ChartSpec};
 use crate::render::{Picture, Theme};
@@ -137,26 +138,81 @@ pub fn experiment_figure(
 
 /// The steady wave's speed (blocks per τ) in the lower half of the chain,
 /// blocks N/2 + 1 .. N − 1 (one-based), away from the driven block: the
-/// least-squares slope of n against t_n, as `sim::speed::wave_speed`
-/// fits the whole chain. `None` unless every one of those blocks flipped,
-/// each after the one above it (a wave running down): a chain that turns
-/// all at once, or from the bottom up, has no speed.
+/// least-squares slope of n against t_n by the rule of the program's one
+/// wave speed (`sim::speed::fit`: blocks that flip in groups, less than
+/// `COLLECTIVE_FLIP_GAP` apart, have no speed). `None` unless every one of
+/// those blocks flipped, each after the one above it (a wave running
+/// down): a chain that turns all at once, or from the bottom up, has no
+/// speed.
 pub fn bulk_speed(arrivals: &[Option<f64>]) -> Option<f64> {
+    crate::sim::speed::fit(&lower_half(arrivals)?).map(|f| f.speed)
+}
+
+/// The points (k, t_n) of blocks N/2 + 1 .. N − 1 (k counting them from
+/// 0), when every one of them flipped, each after the one above it.
+fn lower_half(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
     let n = arrivals.len();
     let times: Vec<f64> = arrivals
         .get(n / 2..n.checked_sub(1)?)?
         .iter()
         .copied()
         .collect::<Option<Vec<f64>>>()?;
-    if times.len() < 3 || times.windows(2).any(|w| w[1] <= w[0]) {
+    if times.windows(2).any(|w| w[1] <= w[0]) {
         return None;
     }
-    let pts: Vec<(f64, f64)> = times
-        .iter()
-        .enumerate()
-        .map(|(i, t)| (i as f64, *t))
+    Some(
+        times
+            .iter()
+            .enumerate()
+            .map(|(i, t)| (i as f64, *t))
+            .collect(),
+    )
+}
+
+/// The fitted line of [`bulk_speed`] in seconds and centimetres:
+/// position (n − 1) b against t_n − t_1, over the same blocks and under
+/// the same rule (`None` where [`bulk_speed`] is: the rule's gap between
+/// blocks that flip together is in τ, so the arrivals are put back in τ
+/// for it, with τ = `tau_s`).
+pub fn bulk_fit(arrivals_s: &[Option<f64>], tau_s: f64, pitch_cm: f64) -> Option<BulkFit> {
+    let arrivals: Vec<Option<f64>> = arrivals_s.iter().map(|t| t.map(|t| t / tau_s)).collect();
+    bulk_speed(&arrivals)?;
+    let per_s = 1.0 / crate::sim::observables::least_squares_slope(&lower_half(arrivals_s)?);
+    let n = arrivals_s.len();
+    let t1 = arrivals_s.first().copied().flatten()?;
+    let pts: Vec<(f64, f64)> = (n / 2..n - 1)
+        .filter_map(|i| arrivals_s[i].map(|t| (t - t1, i as f64 * pitch_cm)))
         .collect();
-    Some(1.0 / crate::sim::observables::least_squares_slope(&pts))
+    let k = pts.len() as f64;
+    let (centroid_s, centroid_cm) = pts
+        .iter()
+        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / k, b + p.1 / k));
+    Some(BulkFit {
+        speed_cm_s: per_s * pitch_cm,
+        blocks: [n / 2 + 1, n - 1],
+        centroid_s,
+        centroid_cm,
+    })
+}
+
+/// A run's numbers in seconds and centimetres (its data file's
+/// `apparatus`).
+pub fn apparatus_numbers(
+    arrivals_s: &[Option<f64>],
+    tau_s: f64,
+    pitch_cm: f64,
+) -> ApparatusNumbers {
+    let t1 = arrivals_s.first().copied().flatten();
+    ApparatusNumbers {
+        tau_s,
+        pitch_cm,
+        arrival_times_s: arrivals_s.to_vec(),
+        since_block_1_s: arrivals_s
+            .iter()
+            .map(|t| t.zip(t1).map(|(t, t1)| t - t1))
+            .collect(),
+        bulk: bulk_fit(arrivals_s, tau_s, pitch_cm),
+    }
 }
 
 /// "12.8 cm/s" or "no wave".
@@ -172,4 +228,35 @@ pub(super) fn chart_picture(
 ) -> Result<Picture> {
     let (w, h) = theme.style.frame(natural);
     Ok(Picture::from(charts::line_chart(theme, spec, w, h)?))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::bulk_speed;
+
+    /// Blocks 6..10 of 11 flipping 0.4 τ apart turn together: no wave, as
+    /// the program's one wave speed says (`sim::speed::wave_speed`), not
+    /// the 2.5 blocks/τ (7750 cm/s in a tank) a slope through them gives.
+    #[test]
+    fn blocks_that_flip_together_have_no_bulk_speed() {
+        let mut arrivals: Vec<Option<f64>> = (0..11).map(|i| Some(100.0 * i as f64)).collect();
+        for (k, t) in arrivals[5..10].iter_mut().enumerate() {
+            *t = Some(600.0 + 0.4 * k as f64);
+        }
+        assert_eq!(crate::sim::speed::wave_speed(&arrivals), None);
+        assert_eq!(bulk_speed(&arrivals), None);
+        // A steady wave, 100 τ a block: 0.01 blocks/τ in the bulk too.
+        let steady: Vec<Option<f64>> = (0..11).map(|i| Some(100.0 * i as f64)).collect();
+        let c = bulk_speed(&steady).unwrap();
+        assert!((c - 0.01).abs() < 1e-15, "{c}");
+        // In seconds (τ = 2.5 ms: 0.25 s a block) and cm (b = 7.5): the
+        // same fit, 30 cm/s; and none for the blocks that flip together.
+        let tau_s = 2.5e-3;
+        let seconds = |a: &[Option<f64>]| -> Vec<Option<f64>> {
+            a.iter().map(|t| t.map(|t| t * tau_s)).collect()
+        };
+        let fit = super::bulk_fit(&seconds(&steady), tau_s, 7.5).unwrap();
+        assert!((fit.speed_cm_s - 30.0).abs() < 1e-9, "{}", fit.speed_cm_s);
+        assert!(super::bulk_fit(&seconds(&arrivals), tau_s, 7.5).is_none());
+    }
 }

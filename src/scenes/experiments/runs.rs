@@ -3,8 +3,8 @@
 //! ([`Decided`]), two at a time or more.
 
 use super::STEP;
-use super::bulk_speed;
 use super::decided::{Decided, block_rate};
+use super::{apparatus_numbers, bulk_speed};
 use crate::error::{Error, Result};
 use crate::scene::apparatus::Apparatus;
 use crate::scene::{Method, OutputSpec, Scene};
@@ -81,9 +81,19 @@ pub(super) fn run_all(variants: &[Variant]) -> Result<Vec<Done>> {
             };
             let mut data = RunData::new(&label, &v.scene, &r);
             data.t_end = r.trajectory.t_final;
+            let arrivals_s: Vec<Option<f64>> =
+                arrivals.iter().map(|t| t.map(|t| t * c.tau_s)).collect();
+            let numbers = apparatus_numbers(&arrivals_s, c.tau_s, a.b);
+            let bulk_cm_s = numbers.bulk.map(|f| f.speed_cm_s);
+            debug_assert_eq!(
+                bulk_cm_s.is_some(),
+                bulk_speed(arrivals).is_some(),
+                "the bulk fit in s and cm is the bulk speed's"
+            );
+            data.apparatus = Some(numbers);
             Ok(Done {
-                arrivals_s: arrivals.iter().map(|t| t.map(|t| t * c.tau_s)).collect(),
-                bulk_cm_s: bulk_speed(arrivals).map(|v| v * c.cm_per_s),
+                arrivals_s,
+                bulk_cm_s,
                 pitch_cm: a.b,
                 data,
             })

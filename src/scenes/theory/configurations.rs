@@ -8,8 +8,9 @@ use crate::model::Ladder;
 use crate::model::ladder::nodes;
 use crate::render::charts::line_chart;
 use crate::render::compose::Panel;
+use crate::render::palette::{Palette, Role};
 use crate::render::snapshot::{Region, Snapshot, pixel_of};
-use crate::render::style::{self, DARK, size};
+use crate::render::style::size;
 use crate::render::{Axis, ChartSpec, Legend, Marker, Picture, Series, Theme};
 use crate::theory::figures::{gapless_configuration, zero_mode_shape};
 use crate::theory::gravity;
@@ -84,7 +85,7 @@ fn orientation_arrows(p: &mut Picture, ladder: &Ladder, q: &[f64]) -> Result<()>
             (mid.0 - half * ux, mid.1 - half * uy),
             (mid.0 + half * ux, mid.1 + half * uy),
             1.6,
-            DARK,
+            Palette.color(Role::Ink),
         );
     }
     Ok(())
@@ -140,14 +141,18 @@ fn gapless_potential(theme: &Theme, a: f64, b: f64, (w, h): (u32, u32)) -> Resul
         })
         .collect();
     let mut spec = ChartSpec::new(
-        Axis::new("θ (degrees)").range(-90.0, 90.0),
+        Axis::new("θ (°)").range(-90.0, 90.0),
         Axis::new("U(θ) / mgs per pair"),
     )
-    .series(Series::line("U(θ), a² = b² + 4s²", points, style::RED))
+    .series(Series::line(
+        "U(θ), a² = b² + 4s²",
+        points,
+        Palette.color(Role::Series(1)),
+    ))
     .series(Series::scatter(
         "U_{min} = −2mgb",
         vec![(0.0, gravity::u_min(b))],
-        DARK,
+        Palette.color(Role::Ink),
         Marker::Circle,
     ));
     spec.legend = Legend::Auto;

@@ -7,16 +7,20 @@
 //! (docs/paper-errata.md).
 
 mod configurations;
+mod drawn;
 mod pen;
 mod plots;
 mod schematic;
+
+pub use drawn::{Drawn, drawn_numbers};
 
 use crate::error::Result;
 use crate::limits::{Limits, Resource};
 use crate::model::{Ladder, Params};
 use crate::render::compose::{self, Layout, Panel};
+use crate::render::palette::{Palette, Role};
 use crate::render::snapshot::{self, Snapshot};
-use crate::render::style::{self, DARK, HAlign, VAlign, size};
+use crate::render::style::{self, HAlign, VAlign, size};
 use crate::render::{Canvas, Picture, Theme};
 use crate::scene::{Model, TheoryFigure, TheorySpec, ZeroMode};
 use crate::theory::cost::{self, Work};
@@ -200,11 +204,13 @@ fn frame(
     min_width: u32,
 ) -> Result<Picture> {
     // Journal styles carry neither title nor notes: the caption is the
-    // document's.
-    let (title, notes) = if theme.titles {
-        (title, notes)
+    // document's; a slide keeps its title and leaves the notes (a
+    // paragraph at 20 pt) to the speaker.
+    let title = if theme.titles { title } else { "" };
+    let notes = if theme.style.name == crate::render::StyleName::Screen {
+        notes
     } else {
-        ("", "")
+        ""
     };
     let m = size::MARGIN;
     let (bw, bh) = body.pixel_size();
@@ -215,10 +221,18 @@ fn frame(
     } else {
         style::wrap_text(theme.font(), notes, (width - 2 * m) as f32, size::LABEL)
     };
-    let title_h = if title.is_empty() {
-        0
+    // The title wrapped to the page, never shrunk below the style's text
+    // (a title wider than a narrow page once left it on both sides).
+    let fitted = crate::render::charts::fit_title(theme, title, width);
+    let title_lines = if title.is_empty() {
+        Vec::new()
     } else {
-        (1.8 * size::TITLE) as u32
+        fitted.lines.clone()
+    };
+    let title_h = match title_lines.len() {
+        0 => 0,
+        1 => (1.8 * fitted.size) as u32,
+        k => ((1.2 * k as f32 + 0.6) * fitted.size) as u32,
     };
     let notes_h = if lines.is_empty() {
         0
@@ -229,14 +243,15 @@ fn frame(
     let mut out = Picture::new(theme, width as f32, height as f32);
     let centre = 0.5 * width as f32;
     let top = (centre, m as f32);
-    if !title.is_empty() {
-        out.text(title, top, size::TITLE, DARK, TOP_CENTRE);
+    for (k, line) in title_lines.iter().enumerate() {
+        let at = (top.0, top.1 + 1.2 * k as f32 * fitted.size);
+        out.text(line, at, fitted.size, theme.color(Role::Ink), TOP_CENTRE);
     }
     out.place(body, (((width - bw) / 2) as f32, (m + title_h) as f32));
     let y0 = (m + title_h + bh) as f32 + 0.4 * size::LABEL;
     for (k, l) in lines.iter().enumerate() {
         let at = (m as f32, y0 + k as f32 * NOTE_LINE);
-        out.text(l, at, size::LABEL, DARK, TOP_LEFT);
+        out.text(l, at, size::LABEL, Palette.color(Role::Ink), TOP_LEFT);
     }
     Ok(out)
 }

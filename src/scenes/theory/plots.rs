@@ -3,6 +3,7 @@
 //! eq:winding), the surface zero mode (eq:2nd_sol) and the barrier ΔU(α)
 //! (eq:delta_U).
 
+use super::drawn::{self, LOOP_SAMPLES};
 use super::pen;
 use super::{FigureInput, configuration, frame, grid, signed_deg};
 use crate::encode::Rgb;
@@ -10,13 +11,10 @@ use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::charts::{line_chart, line_chart_growing, short_number};
 use crate::render::compose::Panel;
-use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign, size};
-use crate::render::theme::palette;
+use crate::render::palette::{Palette, Role};
+use crate::render::style::{self, HAlign, VAlign, size};
 use crate::render::{Axis, Canvas, ChartSpec, Legend, Marker, Picture, Series, Theme};
-use crate::theory::figures::{
-    DispersionCurve, barrier_curve, det_loop, dispersion_curves, edge_mode_profile,
-    potential_curves,
-};
+use crate::theory::figures::{DispersionCurve, det_loop};
 use crate::theory::gravity;
 use std::f64::consts::PI;
 
@@ -149,22 +147,20 @@ fn pairs(points: &[[f64; 2]]) -> Vec<(f64, f64)> {
 /// of two of the curves beside the chart.
 pub fn gravity_potential(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let b = input.model.b;
-    let curves = potential_curves(b, &input.a_over_b, 1441);
+    let (curves, minima) = drawn::potential(input);
     let mut spec = ChartSpec::new(
-        Axis::new("θ (degrees)").range(-90.0, 90.0),
+        Axis::new("θ (°)").range(-90.0, 90.0),
         Axis::new("U(θ) / mgs per pair"),
     );
-    let mut minima = Vec::new();
     for (i, c) in curves.iter().enumerate() {
         let alpha = c.alpha_deg.unwrap_or(f64::NAN);
         let label = format!("a/b = {} (α = ±{alpha:.1}°)", c.a_over_b);
         spec = spec.series(Series::line(label, pairs(&c.points), curve_color(i)));
-        minima.extend([(-alpha, gravity::u_min(c.b)), (alpha, gravity::u_min(c.b))]);
     }
     spec = spec.series(Series::scatter(
         "minima U(±α) = −2mgb",
-        minima,
-        DARK,
+        pairs(&minima),
+        Palette.color(Role::Ink),
         Marker::Circle,
     ));
     let plot = chart(theme, &spec, 620, 560)?;
@@ -198,11 +194,11 @@ pub fn gravity_potential(theme: &Theme, input: &FigureInput) -> Result<Picture> 
 /// is red, green or blue, the colours of the A springs, the B springs and
 /// the block ends drawn in the insets.
 const CURVE_COLORS: [(Rgb, &str); 5] = [
-    (DARK, "black"),
-    (palette::REDDISH_PURPLE, "purple"),
-    (palette::SKY_BLUE, "sky blue"),
-    (palette::ORANGE, "orange"),
-    (palette::BLUISH_GREEN, "green"),
+    (Palette.color(Role::Ink), "black"),
+    (Palette.color(Role::Series(6)), "purple"),
+    (Palette.color(Role::Series(5)), "sky blue"),
+    (Palette.color(Role::Series(4)), "orange"),
+    (Palette.color(Role::Series(3)), "green"),
 ];
 
 fn curve_color(i: usize) -> Rgb {
@@ -249,17 +245,12 @@ fn potential_insets(theme: &Theme, input: &FigureInput, which: &[usize]) -> Resu
 }
 
 /// Number of dispersion samples for lines and for dots.
-const LINE_SAMPLES: usize = 128;
-const DOT_SAMPLES: usize = 24;
 
 /// Fig. S5: ω±(q)/ω₀ against qb for each α of the scene, at its b/s,
 /// one panel per α: eq:dispersion as printed (dashed), ×√2 (solid, errata
 /// item 9) and the model's eigenvalues (dots).
 pub fn dispersion(theme: &Theme, input: &FigureInput) -> Result<Picture> {
-    let b = input.model.b;
-    let base = input.params(input.model.n, b, input.model.alpha)?;
-    let lines = dispersion_curves(&base, b, &input.alphas, LINE_SAMPLES)?;
-    let dots = dispersion_curves(&base, b, &input.alphas, DOT_SAMPLES)?;
+    let (lines, dots) = drawn::dispersion(input)?;
     let top = lines
         .iter()
         .flat_map(|c| c.samples.iter())
@@ -340,7 +331,10 @@ fn dispersion_panel(
         Axis::new("ω/ω₀").range(0.0, y_max),
     )
     .title(title);
-    for (branch, color) in [(1, RED), (0, BLUE)] {
+    for (branch, color) in [
+        (1, Palette.color(Role::Series(1))),
+        (0, Palette.color(Role::Series(2))),
+    ] {
         let pick = |f: fn(&crate::theory::figures::DispersionSample) -> [f64; 2]| {
             lines
                 .samples
@@ -366,12 +360,12 @@ fn dispersion_panel(
 /// row where the next would pass the width.
 fn dispersion_key(theme: &Theme, width: u32) -> Result<Picture> {
     let entries: [(&str, Rgb, u8); 6] = [
-        ("ω₊ closed form × √2", RED, 0),
-        ("ω₊ as printed", RED, 1),
-        ("ω₊ model", RED, 2),
-        ("ω₋ closed form × √2", BLUE, 0),
-        ("ω₋ as printed", BLUE, 1),
-        ("ω₋ model", BLUE, 2),
+        ("ω₊ closed form × √2", Palette.color(Role::Series(1)), 0),
+        ("ω₊ as printed", Palette.color(Role::Series(1)), 1),
+        ("ω₊ model", Palette.color(Role::Series(1)), 2),
+        ("ω₋ closed form × √2", Palette.color(Role::Series(2)), 0),
+        ("ω₋ as printed", Palette.color(Role::Series(2)), 1),
+        ("ω₋ model", Palette.color(Role::Series(2)), 2),
     ];
     let widths: Vec<f32> = entries
         .iter()
@@ -407,7 +401,7 @@ fn dispersion_key(theme: &Theme, width: u32) -> Result<Picture> {
                 e.0,
                 (x + 34.0, y),
                 theme.tick,
-                DARK,
+                Palette.color(Role::Ink),
                 (HAlign::Left, VAlign::Middle),
             );
             x += widths[k];
@@ -456,13 +450,21 @@ pub fn winding(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     )
 }
 
+/// The top of the winding panels' imaginary axis: room above the loops
+/// for the legend.
+const WINDING_TOP: f64 = 3.4;
+
 /// A winding panel and its title.
 fn winding_panel(theme: &Theme, p: &crate::model::Params) -> Result<(Picture, String)> {
-    let l = det_loop(p, 720)?;
+    let l = det_loop(p, LOOP_SAMPLES)?;
     let n = l
         .winding_number
         .map_or_else(|| "undefined".to_string(), |n| n.to_string());
-    let color = if l.alpha_deg > 0.0 { RED } else { BLUE };
+    let color = if l.alpha_deg > 0.0 {
+        Palette.color(Role::Series(1))
+    } else {
+        Palette.color(Role::Series(2))
+    };
     let closed = |v: &[[f64; 2]]| {
         let mut v = pairs(v);
         if let Some(&first) = v.first() {
@@ -478,18 +480,20 @@ fn winding_panel(theme: &Theme, p: &crate::model::Params) -> Result<(Picture, St
             closed(&l.reduced),
             color,
         ))
-        .series(Series::line("det C", closed(&l.det), GREY).dashed())
+        .series(Series::line("det C", closed(&l.det), Palette.color(Role::Ground)).dashed())
         .series(Series::scatter(
             "origin",
             vec![(0.0, 0.0)],
-            DARK,
+            Palette.color(Role::Ink),
             Marker::Cross,
         ));
+    // Room above the loops (|det C| ≤ 1.6 here) for the legend, placed
+    // where it covers no data (it sat on the det C circle).
     spec.x = spec.x.range(-2.6, 2.6);
-    spec.y = spec.y.range(-2.2, 2.2);
+    spec.y = spec.y.range(-2.2, WINDING_TOP);
     spec.equal_aspect = true;
     spec.zero_lines = true;
-    spec.legend = Legend::UpperLeft;
+    spec.legend = Legend::Auto;
     Ok((chart(theme, &spec, 440, 440)?, title))
 }
 
@@ -548,11 +552,14 @@ fn edge_panel(
     )
     .title(title);
     for (k, &alpha) in input.alphas.iter().enumerate() {
-        let e = edge_mode_profile(&input.params(n, b, sign * alpha.abs())?)?;
-        let color = [RED, BLUE]
-            .get(k)
-            .copied()
-            .unwrap_or_else(|| style::series_color(k + 1));
+        let e = drawn::edge_profile(input, sign * alpha.abs())?;
+        let color = [
+            Palette.color(Role::Series(1)),
+            Palette.color(Role::Series(2)),
+        ]
+        .get(k)
+        .copied()
+        .unwrap_or_else(|| style::series_color(k + 1));
         let kb = e.kappa.map_or(f64::NAN, |x| x * b);
         let line = e.n.iter().map(|&n| n as f64).zip(e.formula.iter().copied());
         let dots =
@@ -583,19 +590,21 @@ fn edge_panel(
 /// the same from the model's two-block linkage solved at θ = 0 (dots).
 pub fn barrier(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     let b = input.model.b;
-    let curve = pairs(&barrier_curve(b, 180));
-    let dots: Vec<(f64, f64)> = (0..=18)
-        .filter_map(|k| model_barrier(input, 5.0 * k as f64).map(|du| (5.0 * k as f64, du)))
-        .collect();
+    let (curve, dots) = drawn::barrier(input);
+    let (curve, dots) = (pairs(&curve), pairs(&dots));
     let mut spec = ChartSpec::new(
-        Axis::new("equilibrium angle α (degrees)").range(-2.0, 92.0),
+        Axis::new("equilibrium angle α (°)").range(-2.0, 92.0),
         Axis::new("ΔU / mgs per pair"),
     )
-    .series(Series::line("ΔU(α), closed form", curve, RED))
+    .series(Series::line(
+        "ΔU(α), closed form",
+        curve,
+        Palette.color(Role::Series(1)),
+    ))
     .series(Series::scatter(
         "model linkage, U(0) − U(α)",
         dots,
-        DARK,
+        Palette.color(Role::Ink),
         Marker::Circle,
     ));
     spec.legend = Legend::UpperLeft;
@@ -610,16 +619,6 @@ pub fn barrier(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     frame(theme, &input.title, &plot, &notes, page_width(theme, 840))
 }
 
-/// U(0) − U(α) from the model's two-block linkage (no closed form).
-fn model_barrier(input: &FigureInput, alpha_deg: f64) -> Option<f64> {
-    let b = input.model.b;
-    let p = input.params(2, b, alpha_deg).ok()?;
-    let guess = [b, -p.alpha.cos().powi(2)];
-    let at_zero = gravity::model_pair_spacing(&p, 0.0, guess)?;
-    let at_alpha = gravity::model_pair_spacing(&p, p.alpha, [b, -p.alpha.cos()])?;
-    Some(2.0 * (at_alpha[0] - at_zero[0]))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -627,7 +626,7 @@ mod tests {
     #[test]
     fn u_curves_avoid_the_spring_and_block_end_colours() {
         for (c, name) in CURVE_COLORS {
-            for taken in [palette::SPRING_A, palette::SPRING_B] {
+            for taken in [Palette.color(Role::SpringA), Palette.color(Role::SpringB)] {
                 let d = crate::render::theme::delta_e(c, taken);
                 assert!(d > 20.0, "{name} is {d:.1} ΔE from {taken:?}");
             }

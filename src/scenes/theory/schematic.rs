@@ -10,7 +10,8 @@ use crate::encode::Rgb;
 use crate::error::Result;
 use crate::model::Ladder;
 use crate::model::ladder::nodes;
-use crate::render::style::{self, BLUE, DARK, GREY, HAlign, RED, VAlign};
+use crate::render::palette::{Palette, Role};
+use crate::render::style::{HAlign, VAlign};
 use crate::render::{Canvas, Picture, Theme};
 
 /// Canvas size, pixels per s and the pixel position of block n's centre.
@@ -102,39 +103,81 @@ impl Unit {
 }
 
 fn draw_links_and_blocks(p: &mut Picture, u: &Unit) {
-    pen::line(p, u.a1, u.a2, 3.5, RED);
+    pen::line(p, u.a1, u.a2, 3.5, Palette.color(Role::SpringA));
     // The B link as the ladder drawings draw it: blue and dashed.
-    pen::dashed(p, u.b1, u.b2, 3.5, BLUE);
+    pen::dashed(p, u.b1, u.b2, 3.5, Palette.color(Role::SpringB));
     for (a, b) in [(u.a1, u.b1), (u.a2, u.b2)] {
         let at = |f: f32| (a.0 + (b.0 - a.0) * f, a.1 + (b.1 - a.1) * f);
-        pen::line(p, a, b, 14.0, DARK);
-        pen::line(p, a, at(0.22), 14.0, RED);
-        pen::line(p, at(0.78), b, 14.0, BLUE);
+        pen::line(p, a, b, 14.0, Palette.color(Role::Ink));
+        pen::line(p, a, at(0.22), 14.0, Palette.color(Role::SpringA));
+        pen::line(p, at(0.78), b, 14.0, Palette.color(Role::SpringB));
     }
     for c in [u.c1, u.c2] {
-        pen::dot(p, c, 4.0, style::WHITE);
+        pen::dot(p, c, 4.0, Palette.color(Role::Paper));
     }
     let ma = mid(u.a1, u.a2);
-    text(p, "a", add(ma, (-22.0, -6.0)), RED, MIDDLE);
-    text(p, "A", add(u.a1, (16.0, -10.0)), RED, LEFT);
+    text(
+        p,
+        "a",
+        add(ma, (-22.0, -6.0)),
+        Palette.color(Role::SpringA),
+        MIDDLE,
+    );
+    text(
+        p,
+        "A",
+        add(u.a1, (16.0, -10.0)),
+        Palette.color(Role::SpringA),
+        LEFT,
+    );
     let mb = mid(u.b1, u.b2);
-    text(p, "b", add(mb, (16.0, 0.0)), BLUE, LEFT);
-    text(p, "B", add(u.b1, (-26.0, 4.0)), BLUE, MIDDLE);
-    text(p, "block n", add(u.c1, (120.0, -60.0)), DARK, LEFT);
+    text(
+        p,
+        "b",
+        add(mb, (16.0, 0.0)),
+        Palette.color(Role::SpringB),
+        LEFT,
+    );
+    text(
+        p,
+        "B",
+        add(u.b1, (-26.0, 4.0)),
+        Palette.color(Role::SpringB),
+        MIDDLE,
+    );
+    text(
+        p,
+        "block n",
+        add(u.c1, (120.0, -60.0)),
+        Palette.color(Role::Ink),
+        LEFT,
+    );
     let at = add(u.c2, (-60.0, -30.0));
-    text(p, "block n + 1", at, DARK, (HAlign::Right, VAlign::Middle));
+    text(
+        p,
+        "block n + 1",
+        at,
+        Palette.color(Role::Ink),
+        (HAlign::Right, VAlign::Middle),
+    );
 }
 
 /// θ between the transverse axis (dashed, through block n's centre) and
 /// the upper half of block n.
 fn draw_theta(p: &mut Picture, u: &Unit) {
     let r = 0.36 * SCALE as f32;
-    pen::dashed(p, u.c1, add(u.c1, (1.35 * r, 0.0)), 1.3, GREY);
+    pen::dashed(
+        p,
+        u.c1,
+        add(u.c1, (1.35 * r, 0.0)),
+        1.3,
+        Palette.color(Role::Ground),
+    );
     let up = ((u.a1.1 - u.c1.1).atan2(u.a1.0 - u.c1.0), 0.0);
-    pen::arc(p, u.c1, r, up.0, up.1, 1.6, DARK);
+    pen::arc(p, u.c1, r, up.0, up.1, 1.6, Palette.color(Role::Ink));
     let half = 0.5 * up.0;
     let at = add(u.c1, (1.28 * r * half.cos(), 1.28 * r * half.sin()));
-    text(p, "θ", at, DARK, MIDDLE);
+    text(p, "θ", at, Palette.color(Role::Ink), MIDDLE);
 }
 
 /// The block length s as a dimension line beside block n + 1.
@@ -146,9 +189,9 @@ fn draw_s(p: &mut Picture, u: &Unit) {
     let off = (0.16 * SCALE) as f32;
     let o = (nrm.0 * off, nrm.1 * off);
     let (a, b) = (add(u.a2, o), add(u.b2, o));
-    pen::dimension(p, a, b, DARK);
+    pen::dimension(p, a, b, Palette.color(Role::Ink));
     let m = add(mid(a, b), (nrm.0 * 18.0, nrm.1 * 18.0));
-    text(p, "s", m, DARK, MIDDLE);
+    text(p, "s", m, Palette.color(Role::Ink), MIDDLE);
 }
 
 /// Δx (gap along gravity between the facing block ends) to the right, Δy
@@ -156,25 +199,79 @@ fn draw_s(p: &mut Picture, u: &Unit) {
 fn draw_offsets(p: &mut Picture, u: &Unit) {
     let right = u.c1.0 + (0.62 * SCALE) as f32;
     let (top, bottom) = (u.b1.1, u.a2.1);
-    pen::dashed(p, u.b1, (right + 12.0, top), 1.2, GREY);
-    pen::dashed(p, u.a2, (right + 12.0, bottom), 1.2, GREY);
-    pen::dimension(p, (right, top), (right, bottom), DARK);
-    text(p, "Δx", (right + 14.0, 0.5 * (top + bottom)), DARK, LEFT);
+    pen::dashed(
+        p,
+        u.b1,
+        (right + 12.0, top),
+        1.2,
+        Palette.color(Role::Ground),
+    );
+    pen::dashed(
+        p,
+        u.a2,
+        (right + 12.0, bottom),
+        1.2,
+        Palette.color(Role::Ground),
+    );
+    pen::dimension(p, (right, top), (right, bottom), Palette.color(Role::Ink));
+    text(
+        p,
+        "Δx",
+        (right + 14.0, 0.5 * (top + bottom)),
+        Palette.color(Role::Ink),
+        LEFT,
+    );
     let low = u.b2.1 + (0.32 * SCALE) as f32;
-    pen::dashed(p, u.c1, (u.c1.0, low + 12.0), 1.2, GREY);
-    pen::dashed(p, u.c2, (u.c2.0, low + 12.0), 1.2, GREY);
-    pen::dimension(p, (u.c2.0, low), (u.c1.0, low), DARK);
-    text(p, "Δy", (0.5 * (u.c1.0 + u.c2.0), low + 22.0), DARK, MIDDLE);
+    pen::dashed(
+        p,
+        u.c1,
+        (u.c1.0, low + 12.0),
+        1.2,
+        Palette.color(Role::Ground),
+    );
+    pen::dashed(
+        p,
+        u.c2,
+        (u.c2.0, low + 12.0),
+        1.2,
+        Palette.color(Role::Ground),
+    );
+    pen::dimension(p, (u.c2.0, low), (u.c1.0, low), Palette.color(Role::Ink));
+    text(
+        p,
+        "Δy",
+        (0.5 * (u.c1.0 + u.c2.0), low + 22.0),
+        Palette.color(Role::Ink),
+        MIDDLE,
+    );
 }
 
 /// Axes (x down along gravity, y across) and the gravity arrow, top left.
 fn draw_frame_hints(p: &mut Picture) {
     let o = (60.0, 40.0);
-    pen::arrow(p, o, (o.0, o.1 + 70.0), 1.6, DARK);
-    pen::arrow(p, o, (o.0 + 70.0, o.1), 1.6, DARK);
-    text(p, "x", (o.0 - 16.0, o.1 + 62.0), DARK, MIDDLE);
-    text(p, "y", (o.0 + 66.0, o.1 - 14.0), DARK, MIDDLE);
+    pen::arrow(p, o, (o.0, o.1 + 70.0), 1.6, Palette.color(Role::Ink));
+    pen::arrow(p, o, (o.0 + 70.0, o.1), 1.6, Palette.color(Role::Ink));
+    text(
+        p,
+        "x",
+        (o.0 - 16.0, o.1 + 62.0),
+        Palette.color(Role::Ink),
+        MIDDLE,
+    );
+    text(
+        p,
+        "y",
+        (o.0 + 66.0, o.1 - 14.0),
+        Palette.color(Role::Ink),
+        MIDDLE,
+    );
     let g = (o.0 + 8.0, o.1 + 160.0);
-    pen::arrow(p, g, (g.0, g.1 + 110.0), 3.0, DARK);
-    text(p, "g", (g.0 + 14.0, g.1 + 50.0), DARK, LEFT);
+    pen::arrow(p, g, (g.0, g.1 + 110.0), 3.0, Palette.color(Role::Ink));
+    text(
+        p,
+        "g",
+        (g.0 + 14.0, g.1 + 50.0),
+        Palette.color(Role::Ink),
+        LEFT,
+    );
 }
