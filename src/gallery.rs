@@ -272,7 +272,10 @@ fn card(it: &Item<'_>, level: &str) -> String {
     let pictures: String = pictures(it)
         .iter()
         .map(|shown| {
-            let what = if split_name(&shown.src).0.ends_with("-kymograph") {
+            let what = if scene.rings.is_some() && split_name(&shown.src).0.ends_with("-kymograph")
+            {
+                crate::rings::RingChain::kymograph_words().into()
+            } else if split_name(&shown.src).0.ends_with("-kymograph") {
                 describe::kymograph()
             } else {
                 describe::picture(scene)

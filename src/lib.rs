@@ -28,11 +28,24 @@
 //! # Ok::<(), jacobs_ladder::Error>(())
 //! ```
 //!
-//! Floors, from the ground up: `model` (parameters, energy, forces);
-//! `sim` (integrators, drives, observables), `theory` (linear analysis) and
-//! `render` (pixels of a ladder state, charts) on the model; `encode` and
-//! `output` know nothing of it; `catalog` and `bench` bring them together;
-//! `cli` on top.
+//! Floors, from the ground up: a module uses its own floor's and lower
+//! floors' modules, never a higher floor's (`scripts/check-layers` checks
+//! it, from the same list):
+//!
+//! 1. `numfmt`, `version`, `limits`: numbers as text, the build, the caps;
+//! 2. `model`: parameters, energy, forces;
+//! 3. `error`: the error type and its exit codes;
+//! 4. `encode`, `output`: bytes from pictures, files written; they know
+//!    nothing of the model;
+//! 5. `sim`, `theory`, `render`, `rings`: integrators, drives and
+//!    observables; the linear analysis; pictures of a ladder state and
+//!    charts; the double ring chain of Fig. 4b;
+//! 6. `scene`: what one output needs, as data;
+//! 7. `scenes`, `catalog`, `sweep`, `bench`, `gallery`: scenes run and
+//!    rendered, the paper's catalogue, sweeps, speed against accuracy, the
+//!    gallery page;
+//! 8. `front`: what the command line and the Python package both do;
+//! 9. `cli`: the command line, and the binary on top.
 
 // Numerical loops index several arrays with one index, as the formulas do.
 #![allow(clippy::needless_range_loop)]
@@ -43,6 +56,7 @@ pub mod limits;
 pub mod model;
 pub mod numfmt;
 pub mod render;
+pub mod rings;
 pub mod sim;
 pub mod theory;
 pub mod version;

@@ -6,6 +6,8 @@
 pub mod args;
 pub mod commands;
 pub mod convert;
+pub mod custom;
+pub mod formats;
 pub mod hints;
 pub mod progress;
 

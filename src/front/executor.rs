@@ -93,24 +93,40 @@ pub fn chunk_points(plan: &Plan, chunk: Shard) -> Vec<(usize, Vec<(Param, f64)>)
 }
 
 /// Reads chunk `chunk`'s bytes as a worker returned them and checks them
-/// against the sweep `plan` they were sent for: the shard format's checks
-/// ([`shard::check_chunk`]: this program and version, this sweep's
-/// fingerprint, so that a cached chunk of an earlier sweep is refused,
-/// every record against its own arrivals and the outcome rule), then this
-/// chunk, complete. The error (bad input) names the chunk and the field.
+/// against the sweep `plan` they were sent for: a shard file of this
+/// program and version, of this sweep (its fingerprint: a cached chunk of
+/// an earlier sweep is refused), of this chunk, complete, every record
+/// checked ([`ShardFile::validate`]). The error (a failed run) names the
+/// chunk and what is wrong.
 pub fn check_chunk(plan: &Plan, chunk: Shard, bytes: &[u8]) -> Result<ShardFile> {
     let Shard { k, n } = chunk;
-    let name = format!("chunk {k} of {n}");
-    // The shard format's checks: program, version, fingerprint, counts,
-    // every record against its own arrivals and the outcome rule.
-    let file = shard::check_chunk(plan, &name, bytes)?;
-    let bad = |what: String| Error::bad_input(format!("{name}: {what}"));
+    let bad = |what: String| Error::failed(format!("chunk {k} of {n}: {what}"));
+    let file: ShardFile = serde_json::from_slice(bytes).map_err(|e| {
+        bad(format!(
+            "what the worker returned is not a chunk of a sweep ({e})"
+        ))
+    })?;
+    let version = env!("CARGO_PKG_VERSION");
+    if file.program != "ladder" || file.version != version {
+        return Err(bad(format!(
+            "made by {} {}, not by this ladder {version}: install one version on every worker",
+            file.program, file.version
+        )));
+    }
+    if file.fingerprint != plan.fingerprint {
+        return Err(bad(format!(
+            "made for another sweep (fingerprint {}; this sweep's is {}): the executor returned \
+             an earlier sweep's chunk (a cache?) or an edited one",
+            file.fingerprint, plan.fingerprint
+        )));
+    }
     if file.shard != chunk {
         return Err(bad(format!(
             "holds chunk {} of {}, not the chunk sent",
             file.shard.k, file.shard.n
         )));
     }
+    file.validate(plan).map_err(bad)?;
     if !file.complete() {
         return Err(bad(format!(
             "holds {} of its {} runs",

@@ -55,6 +55,9 @@ pub struct Ladder {
     /// Added mass, drag, links and friction; the paper's model has none,
     /// and its force loop ([`Ladder::gradient_with`]) never reads them.
     pub terms: super::terms::Terms,
+    /// The toy as built (`built`): blocks with thickness, ribbons and
+    /// contact in place of the springs; none for the paper's model.
+    pub built: Option<super::built::AsBuilt>,
 }
 
 impl Ladder {
@@ -63,7 +66,28 @@ impl Ladder {
             a: params.a(),
             params,
             terms: super::terms::Terms::default(),
+            built: None,
         }
+    }
+
+    /// The same ladder as built: ribbons (and contact) in place of the
+    /// springs (`built`).
+    pub fn with_built(self, built: super::built::AsBuilt) -> Self {
+        Self {
+            built: Some(built),
+            ..self
+        }
+    }
+
+    /// Whether this is the paper's model: no term and not as built.
+    pub fn is_paper_model(&self) -> bool {
+        self.terms.is_paper() && self.built.is_none()
+    }
+
+    /// Whether the accelerations depend on the velocities beyond linear
+    /// damping: the terms' (`Terms::velocity_dependent`) or contact.
+    pub fn velocity_dependent(&self) -> bool {
+        self.terms.velocity_dependent() || self.built.is_some_and(|b| b.velocity_dependent())
     }
 
     /// The same ladder with the terms of docs/experiments.md.

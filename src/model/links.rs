@@ -86,6 +86,9 @@ impl Links {
 
     /// Elastic energy Σ ½ κ (L − ℓ)², the slack tension-only links left out.
     pub fn elastic_energy(&self, ladder: &Ladder, q: &[f64]) -> f64 {
+        if let Some(b) = &ladder.built {
+            return b.elastic_energy(ladder, q);
+        }
         self.states(ladder, q)
             .map(|s| 0.5 * s.tension * s.tension / self.stiffness)
             .sum()
@@ -94,7 +97,11 @@ impl Links {
     /// ∂E/∂q of the links' energy and of gravity (−m G per X_n) written
     /// into `grad`: ∂E/∂d = T d/L, the node moving with X and turning
     /// with ∂p/∂θ = ±r ν.
+    /// A ladder as built (`built`) has ribbons in place of the links.
     pub fn gradient(&self, ladder: &Ladder, q: &[f64], grad: &mut [f64]) {
+        if let Some(b) = &ladder.built {
+            return b.ribbons.gradient(ladder, q, grad);
+        }
         let g = M * ladder.params.gravity;
         for (k, x) in grad.iter_mut().enumerate().take(3 * ladder.n()) {
             *x = if k % 3 == 0 { -g } else { 0.0 };

@@ -1,10 +1,14 @@
 //! The ladder model: parameters, geometry, energy and analytic forces.
 //! Knows nothing else of the project.
 
+pub mod built;
+pub mod contact;
 pub mod ladder;
 pub mod links;
 pub mod media;
+pub mod outline;
 pub mod params;
+pub mod ribbons;
 pub mod table;
 pub mod terms;
 pub mod trig;

@@ -106,7 +106,7 @@ impl Params {
             let x = value(p);
             p.spec()
                 .check(x, false)
-                .map_err(|e| ParamError(format!("{}: {e}", p.name())))?;
+                .map_err(|e| ParamError(format!("{} ({}): {e}", p.name(), p.spec().symbol)))?;
             params = params.with_param(p, x);
         }
         params.validated()
@@ -163,7 +163,11 @@ impl Params {
             // α read back from radians within 1e-9° ([`Params::alpha_deg`]).
             let x = self.get(p).expect("a model parameter");
             if let Err(e) = p.spec().check(x, false) {
-                return Err(ParamError(format!("{}: {e}", p.name())));
+                return Err(ParamError(format!(
+                    "{} ({}): {e}",
+                    p.name(),
+                    p.spec().symbol
+                )));
             }
         }
         Ok(self)
@@ -234,7 +238,7 @@ mod tests {
         .unwrap_err();
         assert_eq!(
             e.to_string(),
-            "alpha: must be degrees with |alpha| <= 90, got 120"
+            "alpha (α): must be degrees with |alpha| <= 90, got 120"
         );
     }
 }

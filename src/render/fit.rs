@@ -31,7 +31,12 @@ pub fn fitted<T>(
     let (side, need) = match &first {
         Ok((picture, _)) => match misfit(picture, &style) {
             None => return first,
-            Some(m) => m,
+            Some(m) => {
+                if let Some(found) = packed(&style, m.0, &draw)? {
+                    return Ok(found);
+                }
+                m
+            }
         },
         // A chart asked smaller than it can be drawn on a page of the
         // user's ("chart size must be between 60x60 …"): searched too.
@@ -57,7 +62,10 @@ pub fn fitted<T>(
     let fits = |k: u32| -> Result<bool> {
         let s = at(k);
         match draw(&Theme::of(&s)) {
-            Ok((p, _)) => Ok(misfit(&p, &s).is_none()),
+            Ok((p, _)) => match misfit(&p, &s) {
+                None => Ok(true),
+                Some((over, _)) => Ok(packed(&s, over, &draw)?.is_some()),
+            },
             Err(Error::BadInput(_)) => Ok(false),
             Err(e) => Err(e),
         }
@@ -96,16 +104,77 @@ pub fn fitted<T>(
     Err(picture.refusal(&style, side, smallest))
 }
 
+/// Fractions of the page a figure that overflows it is laid out for
+/// instead, largest first ([`packed`]).
+const PACKED: [f32; 3] = [0.85, 0.7, 0.55];
+
+/// A figure that overflows `side` of `style`'s page laid out for a page
+/// [`PACKED`] times as long that way (its drawings and plots smaller, its
+/// text the same size), the first that fits `style`'s page, if any: a
+/// slide's composed figures fit the slide at 20 pt this way, where they
+/// once set their text down to 10 pt. The figure is then put on
+/// `style`'s page ([`repaged`]).
+fn packed<T>(
+    style: &Style,
+    side: PageSide,
+    draw: &impl Fn(&Theme) -> Result<(Picture, T)>,
+) -> Result<Option<(Picture, T)>> {
+    for f in PACKED {
+        let s = match side {
+            PageSide::Width => Style {
+                width_pt: style.width_pt.map(|w| w * f),
+                ..*style
+            },
+            PageSide::Height => Style {
+                height_pt: style.max_height_pt().map(|h| h * f),
+                ..*style
+            },
+        };
+        match draw(&Theme::of(&s)) {
+            // Its content fits the page asked: put on that page.
+            Ok((p, extra)) if misfit(&p, style).is_none() => {
+                return Ok(Some((repaged(&p, style), extra)));
+            }
+            Ok(_) | Err(Error::BadInput(_)) => {}
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(None)
+}
+
+/// The content of `p`, laid out for a smaller page, on `style`'s page
+/// (centred across, as every picture narrower than its page), at the
+/// style's own scale.
+fn repaged(p: &Picture, style: &Style) -> Picture {
+    let theme = Theme::of(style);
+    let (cw, ch) = p.content_size();
+    let left = (0.5 * (p.width() - cw)).floor();
+    let mut out = Picture::new(&theme, cw, ch);
+    out.place(p, (-left, 0.0));
+    let out = match p.title() {
+        Some(t) => out.titled(t),
+        None => out,
+    };
+    out.fit_page()
+}
+
 /// The side of the page and the size it needs when `picture` does not
 /// fit `style`: its own overflow ([`Picture::misfit`]), or on a page of
 /// the user's a crowded layout (a hundredth of an inch more than asked,
 /// on the side the user set).
 fn misfit(picture: &Picture, style: &Style) -> Option<(PageSide, f32)> {
     picture.misfit(style).or_else(|| {
-        let side = user_side(style)?;
-        picture
-            .crowded()
-            .then(|| (side, asked(style, side) + HUNDREDTH_PT))
+        let set = user_side(style)?;
+        let crowd = picture.crowded()?;
+        // A text off the side of a page whose width the user set needs a
+        // wider page; anything else a taller one, where the user set it.
+        let side =
+            if crowd == PageSide::Width && Style::named(style.name).width_pt != style.width_pt {
+                PageSide::Width
+            } else {
+                set
+            };
+        Some((side, asked(style, side) + HUNDREDTH_PT))
     })
 }
 

@@ -30,6 +30,7 @@ pub mod style;
 mod svg;
 pub mod text_boxes;
 pub mod theme;
+pub mod tubes;
 pub mod typeset;
 
 pub use canvas::{Canvas, Cap, Pen, Raster};

@@ -118,6 +118,13 @@ impl Picture {
         self.height
     }
 
+    /// The size of what the picture holds, design pixels: its own size, or
+    /// when [`Picture::fit_page`] widened it with white, the content it
+    /// centred.
+    pub fn content_size(&self) -> (f32, f32) {
+        self.content.unwrap_or((self.width, self.height))
+    }
+
     /// Design size rounded up to whole pixels.
     pub fn pixel_size(&self) -> (u32, u32) {
         (self.width.ceil() as u32, self.height.ceil() as u32)

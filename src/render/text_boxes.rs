@@ -54,19 +54,26 @@ impl Picture {
     /// view 1 in wide once collapsed its plot). A figure drawn on a page
     /// of the user's that is crowded is refused, naming a size at which it
     /// is not ([`super::fitted`]).
-    pub fn crowded(&self) -> bool {
+    /// `Some(PageSide::Width)` when a text leaves the picture's side,
+    /// `Some(PageSide::Height)` when it is crowded otherwise.
+    pub fn crowded(&self) -> Option<super::PageSide> {
         let boxes = self.text_boxes();
         let (w, h) = (self.width(), self.height());
         let tol = 0.5;
-        let off = boxes.iter().any(|b| {
-            let [x0, y0, x1, y1] = b.rect;
-            x0 < -tol || y0 < -tol || x1 > w + tol || y1 > h + tol
-        });
+        let across = boxes
+            .iter()
+            .any(|b| b.rect[0] < -tol || b.rect[2] > w + tol);
+        if across {
+            return Some(super::PageSide::Width);
+        }
+        let down = boxes
+            .iter()
+            .any(|b| b.rect[1] < -tol || b.rect[3] > h + tol);
         let overlap = boxes
             .iter()
             .enumerate()
             .any(|(i, a)| boxes[i + 1..].iter().any(|b| a.overlaps(b, 1.0)));
-        off || overlap || self.plot_collapsed()
+        (down || overlap || self.plot_collapsed()).then_some(super::PageSide::Height)
     }
 
     /// Whether a chart of the picture has a plot narrower or shorter than

@@ -51,6 +51,9 @@ impl Scene {
         if let Some(a) = &self.apparatus {
             a.check().map_err(|(k, m)| (format!("apparatus.{k}"), m))?;
         }
+        if let Some(chain) = &self.rings {
+            self.check_rings(chain)?;
+        }
         if let Err((k, msg)) = self.drive.check() {
             return Err((format!("drive.flips.{k}"), msg));
         }
@@ -90,6 +93,27 @@ impl Scene {
             );
         }
         self.check_output()
+    }
+
+    /// A ring chain that builds (docs/rings.md) and an output it makes.
+    fn check_rings(
+        &self,
+        chain: &crate::rings::RingChain,
+    ) -> std::result::Result<(), (String, String)> {
+        if !matches!(
+            self.output,
+            OutputSpec::Movie { .. } | OutputSpec::Filmstrip { .. } | OutputSpec::Kymograph
+        ) {
+            return Err((
+                "output.kind".into(),
+                "a ring chain makes a \"movie\", a \"filmstrip\" or a \"kymograph\"".into(),
+            ));
+        }
+        crate::rings::build::build(chain).map(drop).map_err(|e| {
+            let msg = e.to_string();
+            let msg = msg.strip_prefix("rings: ").unwrap_or(&msg).to_string();
+            ("rings".to_string(), msg)
+        })
     }
 
     fn check_output(&self) -> std::result::Result<(), (String, String)> {

@@ -6,6 +6,7 @@
 
 use super::{Camera, DriveSpec, Fidelity, Method, Model, OutputSpec, Scene, TheoryFigure};
 
+pub use super::names::derived_name;
 pub use crate::numfmt::typeset as num;
 
 /// "kink, α = 60°" or "antikink, α = −60°".
@@ -105,6 +106,9 @@ pub fn drive(d: &DriveSpec) -> String {
 
 /// Everything a reader needs to rerun the scene, in one line.
 pub fn parameters(scene: &Scene) -> String {
+    if let Some(chain) = &scene.rings {
+        return chain.parameters();
+    }
     match &scene.output {
         OutputSpec::Theory(t) => {
             let m = &scene.model;
@@ -155,6 +159,9 @@ pub fn parameters(scene: &Scene) -> String {
 /// Which level of the model made the scene's picture, in a sentence
 /// (the gallery's line under each caption).
 pub fn model_level(scene: &Scene) -> String {
+    if scene.rings.is_some() {
+        return crate::rings::RingChain::model_level().into();
+    }
     match scene.fidelity() {
         Fidelity::Drawing => "Drawn from the ladder's geometry alone: no forces or motion are \
                               computed."
@@ -193,6 +200,21 @@ pub fn model_level(scene: &Scene) -> String {
 /// What the picture shows, for a reader who cannot see it (the gallery's
 /// alt text, after the title).
 pub fn picture(scene: &Scene) -> String {
+    if let Some(chain) = &scene.rings {
+        return match &scene.output {
+            OutputSpec::Movie { .. } => format!(
+                "Animation of the {} rings from 0 to {} s, seen from the side, with the \
+                 kymograph of their azimuths beside it",
+                chain.n,
+                num(chain.t_end)
+            ),
+            OutputSpec::Filmstrip { .. } => format!(
+                "Snapshots of the {} rings seen from the side, at the times written under them",
+                chain.n
+            ),
+            _ => crate::rings::RingChain::kymograph_words().into(),
+        };
+    }
     let n = scene.model.n;
     match &scene.output {
         OutputSpec::Movie { camera } => {
@@ -245,39 +267,43 @@ pub fn picture(scene: &Scene) -> String {
              how fast, coloured by its outcome, against the parameters swept",
             sw.describe_grid()
         ),
-        OutputSpec::Theory(t) => match t.figure {
-            TheoryFigure::UnitSchematic => "Drawing of two blocks of length s joined by an A \
+        OutputSpec::Theory(t) => theory_picture(t.figure, n),
+    }
+}
+
+/// What a figure of the linear theory shows, for a reader who cannot see
+/// it.
+fn theory_picture(figure: TheoryFigure, n: usize) -> String {
+    match figure {
+        TheoryFigure::UnitSchematic => "Drawing of two blocks of length s joined by an A \
                                             link (a) and a B link (b), with θ, Δx and Δy marked"
-                .into(),
-            TheoryFigure::GravityPotential => "Chart of the potential U against θ, one curve \
+            .into(),
+        TheoryFigure::GravityPotential => "Chart of the potential U against θ, one curve \
                                                per ratio a/b, with the ladder at its minimum as \
                                                an inset"
-                .into(),
-            TheoryFigure::GroundStates => format!(
-                "Two drawings of the {n}-block ladder at rest, with its blocks tilted at +α and \
+            .into(),
+        TheoryFigure::GroundStates => format!(
+            "Two drawings of the {n}-block ladder at rest, with its blocks tilted at +α and \
                  at −α, an arrow on each block for its orientation"
-            ),
-            TheoryFigure::Gapless => {
-                format!("Drawing of the {n}-block ladder at rest with horizontal blocks")
-            }
-            TheoryFigure::ZeroModes => {
-                "Drawings of the ladder deformed along its zero modes, over the ground state in \
+        ),
+        TheoryFigure::Gapless => {
+            format!("Drawing of the {n}-block ladder at rest with horizontal blocks")
+        }
+        TheoryFigure::ZeroModes => {
+            "Drawings of the ladder deformed along its zero modes, over the ground state in \
                  grey"
-                    .into()
-            }
-            TheoryFigure::Dispersion => {
-                "Chart of the phonon frequencies ω₊ and ω₋ against qb, one pair of curves per α"
-                    .into()
-            }
-            TheoryFigure::Winding => {
-                "Closed curves of det C(q) in the complex plane, one for α > 0 and one for α < 0"
-                    .into()
-            }
-            TheoryFigure::EdgeMode => "Chart of the zero mode's amplitude |δθₙ| against block \
+                .into()
+        }
+        TheoryFigure::Dispersion => {
+            "Chart of the phonon frequencies ω₊ and ω₋ against qb, one pair of curves per α".into()
+        }
+        TheoryFigure::Winding => {
+            "Closed curves of det C(q) in the complex plane, one for α > 0 and one for α < 0".into()
+        }
+        TheoryFigure::EdgeMode => "Chart of the zero mode's amplitude |δθₙ| against block \
                                        n on a logarithmic scale, dots against a line"
-                .into(),
-            TheoryFigure::Barrier => "Chart of the energy barrier ΔU against α".into(),
-        },
+            .into(),
+        TheoryFigure::Barrier => "Chart of the energy barrier ΔU against α".into(),
     }
 }
 
@@ -286,128 +312,6 @@ pub fn kymograph() -> String {
     "Kymograph: sin θₙ of each block n (across) against time (down), red for +1 and blue \
      for −1"
         .into()
-}
-
-/// A file name made from what differs between `scene` and `base`
-/// (docs/scenes.md): "a70-n20" for α = 70° and N = 20 on the paper's scene,
-/// "kymograph-a-60" for an antikink's kymograph. Two scenes that differ
-/// get different names; "paper" when nothing differs. Letters, digits,
-/// `-` and `.` only; a name over 80 characters keeps its start and ends
-/// with a hash of the rest.
-pub fn derived_name(scene: &Scene, base: &Scene) -> String {
-    let mut parts: Vec<String> = Vec::new();
-    let (m, b) = (&scene.model, &base.model);
-    for ((p, x), (_, y)) in m.values().zip(b.values()) {
-        if x != y {
-            parts.push(format!("{}{}", p.spec().tag, token(x)));
-        }
-    }
-    if m.start != b.start {
-        parts.push(m.start.to_string());
-    }
-    let (d, bd) = (&scene.drive.flips, &base.drive.flips);
-    let starts = |f: &[super::Flip]| f.iter().map(|f| f.start).collect::<Vec<_>>();
-    if starts(d) != starts(bd) {
-        let s: Vec<String> = d.iter().map(|f| token(f.start)).collect();
-        parts.push(format!("flips{}", s.join("_")));
-    }
-    // A drive time in the name only where one differs from the base's:
-    // a second flip at the base's drive time asks for no `td`.
-    let base_td = bd.first().map(|f| f.duration);
-    if d.iter().any(|f| Some(f.duration) != base_td)
-        && let Some(f) = d.first()
-    {
-        parts.push(format!(
-            "{}{}",
-            crate::model::Param::DriveTime.spec().tag,
-            token(f.duration)
-        ));
-    }
-    let (r, br) = (&scene.run, &base.run);
-    // The window the change of model gives by itself
-    // (`Scene::window_following`) is no request of the user's: not named;
-    // any other window is (the base's own number too, where the change
-    // would have made it `auto`).
-    let followed = {
-        let mut s = scene.clone();
-        s.run.t_end = br.t_end;
-        s.window_following(base).run.t_end
-    };
-    if r.t_end != followed {
-        let t = if r.t_end == super::AUTO_T_END {
-            "auto".to_string()
-        } else {
-            token(r.t_end)
-        };
-        parts.push(format!("to{t}"));
-    }
-    if r.integrator != br.integrator {
-        parts.push(r.integrator.to_string());
-    }
-    if r.dt != br.dt
-        && let Some(dt) = r.dt
-    {
-        parts.push(format!("dt{}", token(dt)));
-    }
-    if r.rtol != br.rtol
-        && let Some(x) = r.rtol
-    {
-        parts.push(format!("rtol{}", token(x)));
-    }
-    if r.tolerance != br.tolerance {
-        parts.push(format!("tol{}", token(r.tolerance)));
-    }
-    match (&scene.output, &base.output) {
-        (a, b) if a == b => {}
-        (OutputSpec::Movie { camera }, OutputSpec::Movie { .. }) => {
-            parts.push(camera_word(*camera).into());
-        }
-        (OutputSpec::Filmstrip { times, .. }, _) => {
-            if !matches!(base.output, OutputSpec::Filmstrip { .. }) {
-                parts.push("filmstrip".into());
-            }
-            if !times.is_empty() {
-                let t: Vec<String> = times.iter().map(|t| token(*t)).collect();
-                parts.push(format!("t{}", t.join("_")));
-            }
-        }
-        (OutputSpec::Kymograph, _) => parts.push("kymograph".into()),
-        (OutputSpec::Arrivals { .. }, _) => parts.push("arrivals".into()),
-        (OutputSpec::Energy, _) => parts.push("energy".into()),
-        _ => {}
-    }
-    if parts.is_empty() {
-        return "paper".into();
-    }
-    shortened(parts.join("-"))
-}
-
-/// The camera's word in a derived name.
-fn camera_word(c: Camera) -> &'static str {
-    match c {
-        Camera::Auto => "auto",
-        Camera::Fixed => "fixed",
-        Camera::Follow => "follow",
-    }
-}
-
-/// A number in a file name: 70, -60, 1.5, 0.0002 (as Rust prints it,
-/// which reads back to the same number).
-fn token(x: f64) -> String {
-    format!("{x}")
-}
-
-/// `name`, cut to 80 characters with a hash (FNV-1a) of the whole so that
-/// names that differ stay different.
-fn shortened(name: String) -> String {
-    const MAX: usize = 80;
-    if name.len() <= MAX {
-        return name;
-    }
-    let hash = name.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
-    });
-    format!("{}-{hash:016x}", &name[..MAX - 17])
 }
 
 /// The fields of `m` that differ from `base`, e.g. "α = −60°, to 3700 τ".

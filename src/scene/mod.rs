@@ -16,6 +16,7 @@ pub mod describe;
 pub mod drive;
 pub mod file;
 pub mod model;
+pub mod names;
 pub mod output;
 pub mod params;
 pub mod run;
@@ -67,6 +68,12 @@ pub struct Scene {
     /// `[apparatus]`, `scene::apparatus`). Default none: the model's units.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub apparatus: Option<apparatus::Apparatus>,
+    /// The double ring chain (paper Fig. 4b, SI Movie 12; `[rings]`,
+    /// docs/rings.md). Default none: the scene is a ladder. A scene with
+    /// a ring chain runs it instead of the ladder and makes a movie, a
+    /// filmstrip or a kymograph of it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rings: Option<crate::rings::RingChain>,
     /// The caps on what making this output may cost (docs/limits.md):
     /// steps × N, samples × N, frames × pixels, a data file's bytes, a
     /// theory figure's work. Not part of a scene file and never recorded:
@@ -90,6 +97,7 @@ impl Default for Scene {
             output: OutputSpec::default(),
             style: crate::render::StyleSpec::default(),
             apparatus: None,
+            rings: None,
             limits: crate::limits::Limits::default(),
         }
     }
@@ -233,6 +241,13 @@ impl Scene {
     /// state of sign α or hanging from it (`model.start`), block 1 driven
     /// as `drive` says, over [0, t_end].
     pub fn scenario(&self) -> Result<Scenario> {
+        if self.rings.is_some() {
+            return Err(crate::error::Error::bad_input(format!(
+                "{} is a ring chain ([rings], docs/rings.md): it has no ladder to simulate; \
+                 render it (`ladder render`, Python's Scene.render) for its pictures and data file",
+                self.name
+            )));
+        }
         if let Some(a) = &self.apparatus {
             return a.scenario(self);
         }

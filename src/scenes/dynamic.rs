@@ -410,6 +410,50 @@ mod front_mark_tests {
             .collect()
     }
 
+    /// Every text drawn in `items`: (text, colour).
+    fn texts(items: &[Item], out: &mut Vec<(String, crate::encode::Rgb)>) {
+        for item in items {
+            match item {
+                Item::Text { text, color, .. } => out.push((text.clone(), *color)),
+                Item::Group { items, .. } => texts(items, out),
+                _ => {}
+            }
+        }
+    }
+
+    /// Figure 4a marks its kinks and antikinks in the colours figure 3
+    /// marks them in (the palette's roles: vermillion and blue; 4a drew
+    /// them orange and purple), and the words beside its marks read at
+    /// 4.5:1 on white (4a's orange "kink" read at 2.25:1).
+    #[test]
+    fn figure_4a_marks_kinks_as_figure_3_does_in_words_that_read() {
+        use crate::render::palette::contrast_on_white;
+        let theme = Theme::of(&Style::default());
+        let scene = crate::catalog::find(Kind::Figure, "4a")
+            .unwrap()
+            .scene
+            .clone();
+        let strips = strips(&theme, &scene, None).unwrap();
+        let picture = compose_strips(&theme, &scene, &strips).unwrap();
+        let (kink, antikink) = (Palette.color(Role::Kink), Palette.color(Role::Antikink));
+        for (color, what) in [(kink, "kink"), (antikink, "antikink")] {
+            let mut found = Vec::new();
+            triangles(picture.items(), Transform::identity(), &[color], &mut found);
+            assert!(!found.is_empty(), "no {what} mark in {color:?}");
+        }
+        let mut words = Vec::new();
+        texts(picture.items(), &mut words);
+        for want in ["kink", "antikink", "collision"] {
+            let (_, c) = words
+                .iter()
+                .find(|(t, _)| t == want)
+                .unwrap_or_else(|| panic!("no \"{want}\" in 4a"));
+            assert!(contrast_on_white(*c) >= 4.5, "{want} in {c:?}");
+        }
+        let kink_word = words.iter().find(|(t, _)| t == "kink").unwrap().1;
+        assert_eq!(kink_word, Palette.text(Role::Kink), "the kink's own hue");
+    }
+
     /// Figure 3 at paper: each row marks, with a triangle in its wave's
     /// colour, every snapshot where the tracker has a wave and no other,
     /// each at the height of the front block's centre, exactly.

@@ -11,6 +11,8 @@ pub mod experiments;
 pub mod kymograph;
 pub mod movie;
 pub mod options;
+pub mod rings;
+mod rings_draw;
 pub mod run;
 pub mod stiff;
 pub mod theory;
@@ -155,6 +157,9 @@ pub fn figure_bytes(picture: &Picture, formats: &Formats, scale: f32) -> Result<
 /// figure format is made from), with the runs it simulated. Movie and data
 /// scenes have no picture.
 pub fn figure_picture(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+    if scene.rings.is_some() && scene.kind() == crate::scene::Kind::Figure {
+        return Ok((rings::figure_picture(theme, scene)?, vec![]));
+    }
     match &scene.output {
         OutputSpec::Theory(spec) => {
             let input = theory::FigureInput::of(scene, spec);
@@ -214,6 +219,10 @@ pub fn render_to(
     frame_done: &(dyn Fn() + Sync),
     sink: &mut dyn FnMut(&str, Fill<'_>) -> Result<()>,
 ) -> Result<()> {
+    if scene.rings.is_some() {
+        let theme = Theme::of(&style_of(scene, outputs)?);
+        return rings::render_to(&theme, scene, movie, outputs, frame_done, sink);
+    }
     // The data file records the scene as asked (`t_end = "auto"` reruns to
     // the same window); everything drawn uses the window found.
     let asked = scene;
@@ -254,6 +263,9 @@ pub fn style_of(scene: &Scene, outputs: &Outputs) -> Result<crate::render::Style
 /// `render --check` runs it; rendering runs it for every scene first.
 pub fn check(scene: &Scene, movie: &MovieOptions, outputs: &Outputs) -> Result<()> {
     style_of(scene, outputs)?;
+    if scene.rings.is_some() {
+        return rings::check(scene, movie);
+    }
     match &scene.output {
         OutputSpec::Theory(spec) => {
             let input = theory::FigureInput::of(scene, spec);

@@ -209,22 +209,33 @@ pub fn critical_step(scene: &Scene, kind: sim::IntegratorKind) -> Result<Critica
     };
     let cost_per_unit_step: f64 = runs.iter().map(|s| s.run.t_end * s.model.n as f64).sum();
     let mut spent = 0.0;
-    let mut affordable = |dt: f64| {
+    let affordable = |dt: f64| {
         spent += cost_per_unit_step / dt;
         spent <= CRITICAL_STEP_BUDGET
     };
-    let unmeasured = CriticalStep {
-        measured: None,
+    Ok(CriticalStep {
+        measured: largest_bounded(predicted, bounded, affordable)?,
         predicted,
-    };
+    })
+}
+
+/// The largest step found bounded, by bisection to 5 % from the
+/// prediction: first a bracket [lo, hi] (lo bounded, hi not) by halving
+/// or doubling, within a thousandth to a thousand times the prediction;
+/// `None` where no bracket is found or `affordable` refuses a trial
+/// before one is.
+fn largest_bounded(
+    predicted: f64,
+    bounded: impl Fn(f64) -> Result<bool>,
+    mut affordable: impl FnMut(f64) -> bool,
+) -> Result<Option<f64>> {
     if !predicted.is_finite() || predicted <= 0.0 {
-        return Ok(unmeasured);
+        return Ok(None);
     }
-    // Bracket [lo, hi]: lo bounded, hi not.
     let (mut lo, mut hi) = (predicted, predicted);
     loop {
         if !affordable(lo) {
-            return Ok(unmeasured);
+            return Ok(None);
         }
         if bounded(lo)? {
             break;
@@ -232,21 +243,21 @@ pub fn critical_step(scene: &Scene, kind: sim::IntegratorKind) -> Result<Critica
         hi = lo;
         lo *= 0.5;
         if lo < 1e-3 * predicted {
-            return Ok(unmeasured);
+            return Ok(None);
         }
     }
     if hi == lo {
         loop {
             hi *= 2.0;
             if !affordable(hi) {
-                return Ok(unmeasured);
+                return Ok(None);
             }
             if !bounded(hi)? {
                 break;
             }
             lo = hi;
             if hi > 1e3 * predicted {
-                return Ok(unmeasured);
+                return Ok(None);
             }
         }
     }
@@ -261,10 +272,7 @@ pub fn critical_step(scene: &Scene, kind: sim::IntegratorKind) -> Result<Critica
             hi = mid;
         }
     }
-    Ok(CriticalStep {
-        measured: Some(lo),
-        predicted,
-    })
+    Ok(Some(lo))
 }
 
 /// The stable step of a scene: measured (the largest step found bounded)

@@ -277,7 +277,7 @@ pub fn worst_case(
 /// drag, pin friction: `sim::check_terms`), which Verlet cannot take. RK4
 /// is fourth order, so its error estimate is the difference / 15.
 pub fn scheme(scenario: &Scenario, dt: f64) -> IntegratorConfig {
-    let kind = if scenario.ladder.terms.velocity_dependent() {
+    let kind = if scenario.ladder.velocity_dependent() {
         IntegratorKind::Rk4
     } else {
         IntegratorKind::Verlet

@@ -60,7 +60,7 @@ pub fn simulate_many(
     };
     let valid = config.validated();
     // The batch kernels compute the paper's forces only (`model::media`).
-    let paper = scenarios.iter().all(|sc| sc.ladder.terms.is_paper());
+    let paper = scenarios.iter().all(|sc| sc.ladder.is_paper_model());
     let isa = match (&valid, batch_isa(stepping).filter(|_| paper)) {
         (Ok(c), Some(isa))
             if matches!(

@@ -50,7 +50,7 @@ impl DivergenceWatch {
             return Err(self.diverged(t, "a block turned more than four times"));
         }
         let ladder = rhs.ladder;
-        if !ladder.terms.is_paper() {
+        if !ladder.is_paper_model() {
             return self.check_terms(rhs, st, t);
         }
         let elastic = ladder.elastic_energy(&st.q);
@@ -75,6 +75,17 @@ impl DivergenceWatch {
     /// energy with added mass.
     fn check_terms(&mut self, rhs: &Rhs, st: &State, t: f64) -> Result<()> {
         let terms = &rhs.ladder.terms;
+        if let Some(b) = rhs.ladder.built
+            && b.contact.is_some()
+            && rhs.deepest_overlap
+                > crate::model::contact::MAX_OVERLAP * b.ribbons.outline.thickness()
+        {
+            return Err(self.diverged(
+                t,
+                "two blocks overlapped by more than a tenth of their thickness (the contact \
+                 is too soft for the impact, or the step too long)",
+            ));
+        }
         let elastic = terms.links.elastic_energy(rhs.ladder, &st.q);
         if elastic > self.max_elastic * terms.links.stiffness {
             return Err(self.diverged(t, "the springs stretched beyond any physical state"));

@@ -79,6 +79,34 @@ impl Scenario {
     }
 }
 
+impl Scenario {
+    /// The toy as built (`model::built`) at rest in its hanging column
+    /// (the ground state of α = ±90°, which ribbons allow), block 1
+    /// driven by `drive`.
+    pub fn as_built(
+        params: Params,
+        drive: Drive,
+        t_end: f64,
+        terms: crate::model::media::Terms,
+        built: crate::model::built::AsBuilt,
+    ) -> Result<Self> {
+        if !(t_end.is_finite() && t_end >= 0.0) {
+            return Err(Error::bad_input(format!(
+                "t_end must be a finite number >= 0, got {}",
+                crate::error::num(t_end)
+            )));
+        }
+        let ladder = Ladder::new(params).with_terms(terms).with_built(built);
+        let initial = State::at_rest(ladder.ground_state());
+        Ok(Self {
+            ladder,
+            protocol: Protocol::Driven(drive),
+            initial,
+            t_end,
+        })
+    }
+}
+
 /// Refuses an integrator that cannot integrate the ladder's terms
 /// (`model::media`): symplectic Euler and velocity Verlet kick with forces
 /// of the positions only (their damping is the linear γ, folded into the
@@ -89,7 +117,7 @@ impl Scenario {
 /// scheme takes them.
 pub fn check_terms(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
     let t = &ladder.terms;
-    if !t.velocity_dependent()
+    if !ladder.velocity_dependent()
         || !matches!(
             config.kind,
             IntegratorKind::SymplecticEuler | IntegratorKind::Verlet
@@ -106,6 +134,12 @@ pub fn check_terms(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
     }
     if t.friction.is_some() {
         what.push("pin friction");
+    }
+    if ladder.built.is_some_and(|b| b.ribbons.damping != 0.0) {
+        what.push("the ribbons' dashpots");
+    }
+    if ladder.built.is_some_and(|b| b.contact.is_some()) {
+        what.push("contact between blocks (a dashpot and friction)");
     }
     Err(Error::bad_input(format!(
         "integrator {} cannot integrate {}: its kick takes forces of the positions only; \
@@ -368,7 +402,7 @@ pub fn run_streaming(
     check_terms(&scenario.ladder, &config)?;
     // The fused and chain kernels compute the paper's forces only: a
     // ladder with any term of docs/experiments.md takes the portable path.
-    let stepping = if scenario.ladder.terms.is_paper() {
+    let stepping = if scenario.ladder.is_paper_model() {
         options.stepping
     } else {
         Stepping::Portable

@@ -45,6 +45,9 @@ pub struct Rhs<'a> {
     /// scratch for their generalised forces.
     terms: Terms,
     force: Vec<f64>,
+    /// The deepest overlap of two blocks in contact seen so far, in s
+    /// (`model::contact`; 0 without contact).
+    pub deepest_overlap: f64,
 }
 
 impl<'a> Rhs<'a> {
@@ -72,6 +75,7 @@ impl<'a> Rhs<'a> {
             force_evals: 0,
             terms: ladder.terms,
             force: Vec::new(),
+            deepest_overlap: 0.0,
         }
     }
 
@@ -141,7 +145,7 @@ impl<'a> Rhs<'a> {
     #[inline]
     pub fn gradient(&mut self, q: &[f64]) -> (&[f64], &[f64]) {
         self.force_evals += 1;
-        if self.terms.links.is_paper() {
+        if self.terms.links.is_paper() && self.ladder.built.is_none() {
             self.ladder
                 .gradient_with(q, &mut self.grad, &mut self.scratch);
         } else {
@@ -153,7 +157,7 @@ impl<'a> Rhs<'a> {
     /// Full acceleration including damping, −M⁻¹(∂E/∂q + Γ v).
     #[inline]
     pub fn acceleration(&mut self, q: &[f64], v: &[f64], acc: &mut [f64]) {
-        if self.terms.velocity_dependent() {
+        if self.ladder.velocity_dependent() {
             return self.acceleration_with_terms(q, v, acc);
         }
         self.conservative(q, acc);
@@ -179,6 +183,16 @@ impl<'a> Rhs<'a> {
         if let Some(friction) = t.friction {
             friction.add_forces(ladder, &t.links, q, v, &mut self.force);
         }
+        if let Some(b) = ladder.built {
+            b.ribbons.add_damping(ladder, q, v, &mut self.force);
+        }
+        if let Some(b) = ladder.built
+            && let Some(c) = b.contact
+        {
+            let o = b.ribbons.outline;
+            let deepest = c.add_forces(ladder, &o, q, v, &mut self.force);
+            self.deepest_overlap = self.deepest_overlap.max(deepest);
+        }
         let j = ladder.params.inertia + t.added_inertia;
         for i in 0..ladder.n() {
             let k = 3 * i;
@@ -202,7 +216,7 @@ impl<'a> Rhs<'a> {
     /// Mechanical energy: kinetic plus potential (with the terms'
     /// kinetic and elastic energies where the ladder has them).
     pub fn mechanical_energy(&self, s: &State) -> f64 {
-        if self.terms.is_paper() {
+        if self.ladder.is_paper_model() {
             return self.ladder.kinetic_energy(&s.v) + self.ladder.energy(&s.q);
         }
         media::kinetic_energy(self.ladder, &self.terms, &s.q, &s.v, false)

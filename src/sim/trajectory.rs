@@ -123,7 +123,7 @@ impl Trajectory {
             ..Energies::default()
         };
         for (q, v) in self.states.iter().zip(&self.velocities) {
-            let (kinetic, elastic) = if terms.is_paper() {
+            let (kinetic, elastic) = if ladder.is_paper_model() {
                 (ladder.kinetic_energy(v), ladder.elastic_energy(q))
             } else {
                 (
@@ -150,5 +150,6 @@ impl Trajectory {
 /// over every block.
 pub fn dissipated_power(ladder: &Ladder, q: &[f64], v: &[f64]) -> f64 {
     let (linear, drag, friction) = media::dissipation(ladder, &ladder.terms, q, v, 0);
-    linear + drag + friction
+    let contact = ladder.built.map_or(0.0, |b| b.dissipation(ladder, q, v));
+    linear + drag + friction + contact
 }

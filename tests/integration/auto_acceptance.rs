@@ -12,7 +12,7 @@
 //! checked against dopri5 at rtol 1e-10 (an independent integrator, with
 //! errors far below the tolerance) on every block.
 //!
-//! Run in release: `cargo test --release --test auto_acceptance`.
+//! Run in release: `cargo test --release --test integration auto_acceptance::`.
 
 #![allow(clippy::field_reassign_with_default)]
 

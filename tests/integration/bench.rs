@@ -1,4 +1,5 @@
-//! Work-precision and stability machinery (issue: speed against accuracy).
+//! Work-precision and stability machinery: speed against accuracy
+//! (README.md, `bench work-precision` and `bench stability`).
 
 #![allow(clippy::field_reassign_with_default)]
 

@@ -229,9 +229,9 @@ fn each_scene_carries_its_own_caps() {
 
 /// The "stiff" links' check is a second run (2k, √2 more steps over the
 /// same seconds); its cost is checked with the first, before any run.
-/// Before, with `--max-block-steps 800000` the first run was made, then
-/// the command ended (exit 2) naming a t_end of 11436.78 the user never
-/// gave.
+/// Before, with a cap between the two runs' costs (the tank's 8 s:
+/// 258 800 and 366 010 steps × N) the first run was made, then the
+/// command ended (exit 2) naming a t_end of 4574.7 τ the user never gave.
 #[test]
 fn the_stiff_links_second_run_is_checked_before_the_first() {
     let tank = concat!(

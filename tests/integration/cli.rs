@@ -145,7 +145,7 @@ fn csv_has_theta_at_the_sample_times_and_is_reproducible() {
 #[test]
 fn render_commands_reject_bad_input_with_one_line() {
     assert_bad_input(&["figure", "9z"], "unknown figure '9z'");
-    assert_bad_input(&["movie", "12"], "movie 12 of the paper is a recording");
+    assert_bad_input(&["movie", "1"], "movie 1 of the paper is a recording");
     assert_bad_input(&["movie", "4", "--frames", "0"], "--frames");
     assert_bad_input(&["movie", "4", "--frames", "-3"], "--frames");
     assert_bad_input(&["movie", "4", "--frames", "100000000"], "--frames");
@@ -398,4 +398,77 @@ fn the_version_names_the_git_commit_when_built_from_a_clone() {
         // Not a clone (a crate tarball): the version alone.
         _ => assert!(text.contains(env!("CARGO_PKG_VERSION")), "{text}"),
     }
+}
+
+/// `simulate --apparatus FILE --json` reports the values the run used,
+/// once: the motor's drive time T_d = 2|α| / (2π f) in τ (not the scene's
+/// 1000 τ), and the apparatus's b, γ and I (not the paper's 1.3, 0.02,
+/// 0.25), in the run and in the recorded scene alike; and its times in
+/// seconds and its speed in cm/s beside τ and blocks per τ, in the JSON
+/// and in the table.
+#[test]
+fn simulate_with_an_apparatus_reports_the_values_it_ran() {
+    let dir = crate::common::tempdir::TempDir::new("simulate-apparatus");
+    let tank = dir.file(
+        "tank.toml",
+        "[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\ndensity = 1.2\nmedium = \"water\"\n\
+         medium_density = 1.0\ng = 981.0\nbuoyancy = true\nadded_mass = true\ndrag = true\n\
+         motor = 0.2\nduration = 20.0\n",
+    );
+    let args = [
+        "simulate",
+        "--alpha",
+        "86",
+        "--n",
+        "11",
+        "--integrator",
+        "rk4",
+        "--dt",
+        "0.125",
+        "--apparatus",
+        &tank,
+    ];
+    let mut json_args = args.to_vec();
+    json_args.push("--json");
+    let out = ladder_ok(&json_args);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    // τ = √(m/k) with "stiff" links k = m g*/(s G): τ = √(s G / g*),
+    // g* = (1 − ρ_m/ρ) g (docs/experiments.md).
+    let tau = (5.0 * 2e-4 / ((1.0 - 1.0 / 1.2) * 981.0f64)).sqrt();
+    let t_d_s = 2.0 * 86f64.to_radians() / (std::f64::consts::TAU * 0.2);
+    let close = |x: &serde_json::Value, want: f64| {
+        let x = x.as_f64().unwrap_or(f64::NAN);
+        assert!(
+            (x - want).abs() <= 1e-9 * want.abs().max(1.0),
+            "{x} vs {want}"
+        );
+    };
+    for record in [&v, &v["scene"]] {
+        close(&record["drive"]["flips"][0]["duration"], t_d_s / tau);
+        close(&record["model"]["b"], 1.5);
+        close(&record["model"]["gamma"], 0.0);
+        close(
+            &record["model"]["inertia"],
+            (1.0 + (0.3f64 / 5.0).powi(2)) / 12.0,
+        );
+    }
+    close(&v["t_end"], 20.0 / tau);
+    let u = &v["units"];
+    close(&u["tau_s"], tau);
+    close(&u["t_end_s"], 20.0);
+    close(&u["drive_time_s"], t_d_s);
+    let speed = v["speed"].as_f64().expect("a wave");
+    close(&u["speed_cm_s"], speed * 7.5 / tau);
+    let first = v["arrival_times"][1].as_f64().unwrap();
+    close(&u["arrival_times_s"][1], first * tau);
+    // The table says the same in seconds and cm/s.
+    let table = String::from_utf8(ladder_ok(&args).stdout).unwrap();
+    let cm_s = format!("{:.2} cm/s", speed * 7.5 / tau);
+    assert!(
+        table.contains(&cm_s) && table.contains("arrival t (s)"),
+        "{table}"
+    );
+    // Without an apparatus there are no units.
+    let plain = json_with(&["simulate", "--t-end", "10", "--json"], &["model"]);
+    assert!(plain.get("units").is_none());
 }

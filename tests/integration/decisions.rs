@@ -10,7 +10,7 @@
 //!
 //! The `auto` acceptance rule is in tests/integration/auto_acceptance.rs.
 //!
-//! Run in release: `cargo test --release --test decisions`.
+//! Run in release: `cargo test --release --test integration decisions::`.
 
 use crate::common;
 

@@ -1,6 +1,7 @@
 //! What a newcomer meets outside the program: the inertia's unit
 //! in parameter lines, docs/model.md's value of a, no tracked Python
-//! caches, and a release profile without full debug info. (Names,
+//! caches, a release profile without full debug info, and `src/lib.rs`'s
+//! floors those `scripts/check-layers` enforces. (Names,
 //! messages, completions, man page, gallery and MP4 PSNR: tests/integration/names.rs,
 //! tests/integration/messages.rs, tests/integration/cli.rs, tests/integration/gallery.rs, tests/integration/mp4_quality.rs.)
 
@@ -30,28 +31,30 @@ fn model_md_gives_a_at_60_degrees_from_its_formula() {
 
 #[test]
 fn no_python_caches_are_tracked_and_they_are_ignored() {
-    let Ok(run) = std::process::Command::new("git")
+    let ignore = std::fs::read_to_string(format!("{ROOT}/.gitignore")).unwrap();
+    for pattern in ["__pycache__/", "*.nbi", "*.nbc"] {
+        assert!(ignore.lines().any(|l| l.trim() == pattern), "{pattern}");
+    }
+    let test = "docs_and_packaging::no_python_caches_are_tracked_and_they_are_ignored";
+    let run = std::process::Command::new("git")
         .args(["ls-files"])
         .current_dir(ROOT)
-        .output()
-    else {
-        eprintln!("skipped: no git");
-        return;
-    };
-    if !run.status.success() {
-        eprintln!("skipped: not a git clone");
+        .output();
+    if !crate::common::require::require(
+        test,
+        run.as_ref().is_ok_and(|r| r.status.success()),
+        "`git ls-files` does not run here (no git, or not a clone)",
+        "apt-get install git, and test a git clone",
+    ) {
         return;
     }
+    let run = run.expect("checked above");
     let files = String::from_utf8_lossy(&run.stdout);
     let cached: Vec<&str> = files
         .lines()
         .filter(|f| f.contains("__pycache__/") || f.ends_with(".nbi") || f.ends_with(".nbc"))
         .collect();
     assert!(cached.is_empty(), "tracked caches: {cached:?}");
-    let ignore = std::fs::read_to_string(format!("{ROOT}/.gitignore")).unwrap();
-    for pattern in ["__pycache__/", "*.nbi", "*.nbc"] {
-        assert!(ignore.lines().any(|l| l.trim() == pattern), "{pattern}");
-    }
 }
 
 #[test]
@@ -73,4 +76,42 @@ fn the_release_profile_keeps_at_most_line_tables() {
         _ => false,
     };
     assert!(ok, "[profile.release] debug = {debug:?}");
+}
+
+/// `src/lib.rs`'s list of floors is the one `scripts/check-layers`
+/// enforces (`FLOORS`, ground first): the doc cannot drift from the rule.
+#[test]
+fn the_floors_lib_rs_lists_are_the_ones_check_layers_enforces() {
+    let script = std::fs::read_to_string(format!("{ROOT}/scripts/check-layers")).unwrap();
+    let block = script
+        .split("FLOORS = [")
+        .nth(1)
+        .and_then(|b| b.split("\n]").next())
+        .expect("FLOORS = [ ... ] in scripts/check-layers");
+    let enforced: Vec<Vec<&str>> = block
+        .lines()
+        .filter(|l| l.trim_start().starts_with('['))
+        .map(|l| {
+            l.split('"')
+                .skip(1)
+                .step_by(2)
+                .filter(|n| !n.is_empty() && *n != "main")
+                .collect()
+        })
+        .collect();
+    let lib = std::fs::read_to_string(format!("{ROOT}/src/lib.rs")).unwrap();
+    let listed: Vec<Vec<&str>> = lib
+        .lines()
+        .filter_map(|l| l.strip_prefix("//! "))
+        .filter(|l| l.starts_with(|c: char| c.is_ascii_digit()) && l.contains(". `"))
+        .map(|l| {
+            let names = l.split(':').next().unwrap();
+            names.split('`').skip(1).step_by(2).collect()
+        })
+        .collect();
+    assert!(enforced.len() > 5, "{enforced:?}");
+    assert_eq!(
+        listed, enforced,
+        "src/lib.rs's floors against scripts/check-layers's"
+    );
 }

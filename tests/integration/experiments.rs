@@ -786,7 +786,7 @@ const LEVELS: [(&str, &str); 5] = [
 ];
 
 /// The table of docs/experiments.md: `cargo test --release --test
-/// experiments -- --ignored --nocapture numbers`.
+/// integration -- --ignored --nocapture experiments::numbers`.
 #[test]
 #[ignore]
 fn numbers() {

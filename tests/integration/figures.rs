@@ -1,6 +1,7 @@
 //! The static figures (`scenes::theory`): every one renders, is not blank
 //! and is deterministic; golden images of Fig. 2c and Fig. S5
-//! (`LADDER_BLESS=1 cargo test --release --test figures` regenerates them).
+//! (`LADDER_BLESS=1 cargo test --release --test integration figures::`
+//! regenerates them).
 //! `LADDER_FIGURE_DIR=DIR` also writes every figure to DIR for inspection.
 
 use crate::common::golden::check;

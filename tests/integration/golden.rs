@@ -1,5 +1,6 @@
-//! Golden images of the renderer (`LADDER_BLESS=1 cargo test --test golden`
-//! regenerates them; look at every one before committing).
+//! Golden images of the renderer (`LADDER_BLESS=1 cargo test --release
+//! --test integration golden::` regenerates them; look at every one before
+//! committing).
 
 use crate::common::golden::check;
 use crate::common::scenes::{domain_wall, kink_state, ladder};

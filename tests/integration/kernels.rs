@@ -5,7 +5,7 @@
 //! Each test prints (uncaptured) which kernels ran; a kernel this CPU
 //! lacks is reported as a skip (docs/testing.md).
 //!
-//! Run in release: `cargo test --release --test kernels`.
+//! Run in release: `cargo test --release --test integration kernels::`.
 
 use crate::common;
 

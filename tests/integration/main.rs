@@ -5,12 +5,14 @@
 //!
 //! The two tests that count the heap's allocations (`tests/alloc.rs`,
 //! `tests/memory_caps.rs`) stay binaries of their own: a counting global
-//! allocator would count every other test's allocations too.
+//! allocator would count every other test's allocations too. So does
+//! `tests/temp_cleanup.rs`: it leaves its process unable to write.
 
 mod common;
 
 mod arrivals;
 mod auto_acceptance;
+mod auto_window;
 mod batch;
 mod bench;
 mod bench_tank;
@@ -31,6 +33,7 @@ mod filmstrips;
 mod formats;
 mod gallery;
 mod golden;
+mod hanging_start;
 mod hostile;
 mod italic;
 mod kernels;
@@ -38,6 +41,7 @@ mod messages;
 mod mp4_quality;
 mod names;
 mod npz;
+mod outcome_reports;
 mod output_paths;
 mod panel_labels;
 mod parameter_table;
@@ -47,21 +51,20 @@ mod print_property;
 mod provenance;
 mod reliability;
 mod render;
+mod ribbons;
+mod rings;
 mod scene_files;
 mod scene_fuzz;
 mod scenes;
 mod scenes_accuracy;
 mod shard_fuzz;
 mod sim;
-mod small_ones;
 mod sources;
-mod speed_and_outcomes;
-mod start;
 mod state_consistency;
 mod stop_rules;
 mod sweep;
 mod sweep_caps;
-mod temp_cleanup;
 mod theory;
+mod theory_data;
 mod waves;
 mod write_failures;

@@ -145,8 +145,8 @@ fn the_quality_flag_trades_bytes_for_fidelity() {
     assert!(draft_db < best_db, "{draft_db:.1} vs {best_db:.1} dB");
 }
 
-/// The table of docs/formats.md: `cargo test --release --test mp4_quality
-/// -- --ignored --nocapture` (movie 4 at the default 640 × 480, movie 3 at
+/// The table of docs/formats.md: `cargo test --release --test integration
+/// mp4_quality:: -- --ignored --nocapture` (movie 4 at the default 640 × 480, movie 3 at
 /// 1280 × 720).
 #[test]
 #[ignore]

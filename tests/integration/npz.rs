@@ -6,7 +6,7 @@
 //! present its zipfile module checks the archive; when numpy is present,
 //! numpy.load reads it.
 
-use crate::common::require::{note, require};
+use crate::common::require::{numpy, require};
 use crate::common::tempdir::TempDir;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -252,7 +252,7 @@ fn npz_reads_back_equal_to_the_csv_at_the_same_times() {
         .output();
     let has_python = python.as_ref().is_ok_and(|o| o.status.code().is_some());
     if require(
-        "npz_reads_back_equal_to_the_csv_at_the_same_times",
+        "npz::npz_reads_back_equal_to_the_csv_at_the_same_times",
         has_python,
         "python3 is not installed",
         "apt-get install python3",
@@ -260,6 +260,8 @@ fn npz_reads_back_equal_to_the_csv_at_the_same_times() {
         let o = python.unwrap();
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), "13");
+    }
+    if numpy("npz::npz_reads_back_equal_to_the_csv_at_the_same_times") {
         let numpy = "import sys, numpy; d = numpy.load(sys.argv[1]); \
                      print(d['theta'].shape, repr(float(d['theta'][-1, -1])))";
         let o = Command::new("python3")
@@ -268,18 +270,15 @@ fn npz_reads_back_equal_to_the_csv_at_the_same_times() {
             .arg(&npz)
             .output()
             .unwrap();
-        if o.status.success() {
-            let text = String::from_utf8_lossy(&o.stdout).to_string();
-            assert!(text.starts_with(&format!("({samples}, {n})")), "{text}");
-            let value: f64 = text.split_whitespace().last().unwrap().parse().unwrap();
-            assert_eq!(
-                value,
-                a["theta"].at(last, n - 1),
-                "numpy reads the same bits"
-            );
-        } else {
-            note("npz: numpy is not installed in python3; numpy.load not tried");
-        }
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let text = String::from_utf8_lossy(&o.stdout).to_string();
+        assert!(text.starts_with(&format!("({samples}, {n})")), "{text}");
+        let value: f64 = text.split_whitespace().last().unwrap().parse().unwrap();
+        assert_eq!(
+            value,
+            a["theta"].at(last, n - 1),
+            "numpy reads the same bits"
+        );
     }
 }
 

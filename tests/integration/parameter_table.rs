@@ -25,12 +25,21 @@ fn help(command: &[&str]) -> String {
     String::from_utf8(out.stdout).unwrap()
 }
 
-/// The help line of `flag` (its text runs to the next flag).
-fn flag_help<'a>(text: &'a str, flag: &str, value_name: &str) -> Option<&'a str> {
+/// The help of `flag`: its line and the lines that continue it (clap
+/// puts a long help under its flag), up to the next flag or heading.
+fn flag_help(text: &str, flag: &str, value_name: &str) -> Option<String> {
     let start = text.find(&format!("{flag} <{value_name}>"))?;
-    let rest = &text[start..];
-    let end = rest[2..].find("\n  ").map_or(rest.len(), |e| e + 2);
-    Some(&rest[..end])
+    let mut lines = text[start..].lines();
+    let mut help = lines.next()?.to_string();
+    for line in lines {
+        let t = line.trim_start();
+        if t.is_empty() || t.starts_with('-') || !line.starts_with(' ') {
+            break;
+        }
+        help.push(' ');
+        help.push_str(t);
+    }
+    Some(help)
 }
 
 #[test]

@@ -522,6 +522,15 @@ fn categorical(colors: &[[u8; 3]]) -> Vec<[u8; 3]> {
         .collect()
 }
 
+/// Whether two colours are shades of one hue (CIELAB hue angles within
+/// 6°): one category, told apart by lightness on purpose (a mark's words
+/// in a darker shade of its colour, so that they read on white).
+fn shades(a: [u8; 3], b: [u8; 3]) -> bool {
+    let (p, q) = (lab(a, None), lab(b, None));
+    let d = (p[2].atan2(p[1]) - q[2].atan2(q[1])).to_degrees().abs();
+    d.min(360.0 - d) < 6.0
+}
+
 /// Everything wrong with one drawn figure.
 fn problems(d: &Draw, page: &Page) -> (Vec<String>, f64) {
     let mut out = Vec::new();
@@ -584,7 +593,9 @@ fn problems(d: &Draw, page: &Page) -> (Vec<String>, f64) {
             }
         }
     }
-    if d.style == "slide" && page.height > d.height_pt.unwrap_or(540.0) + 0.5 {
+    // A slide is no taller than asked (whole design pixels may round it
+    // up by 0.5 %, as the program allows).
+    if d.style == "slide" && page.height > 1.005 * d.height_pt.unwrap_or(540.0) + 0.5 {
         out.push(format!("the slide is {:.1} pt tall", page.height));
     }
     if d.style == "paper" || d.style == "paper-wide" {
@@ -618,7 +629,7 @@ fn problems(d: &Draw, page: &Page) -> (Vec<String>, f64) {
         for i in 0..cats.len() {
             for j in i + 1..cats.len() {
                 let (a, b) = (cats[i], cats[j]);
-                if delta_e(lab(a, None), lab(b, None)) <= 10.0 {
+                if delta_e(lab(a, None), lab(b, None)) <= 10.0 || shades(a, b) {
                     continue;
                 }
                 for (name, m) in [("deuteranopia", &DEUTAN), ("protanopia", &PROTAN)] {
@@ -928,10 +939,12 @@ fn the_sizes_a_referee_tried_draw_or_name_one_that_does() {
             .position(|a| a == "--height")
             .and_then(|i| args[i + 1].trim_end_matches("in").parse::<f64>().ok())
             .map(|h| h * 72.0);
+        // A kymograph's colours are a ramp, not categories.
+        let categorical = !args.iter().any(|a| a == "kymograph");
         let mut d = Draw {
             args,
             style: "paper",
-            categorical: true,
+            categorical,
             height_pt,
             chart: false,
         };

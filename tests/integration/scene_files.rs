@@ -1,15 +1,22 @@
 //! Scene files (docs/scenes.md): every TOML example in the docs parses; a
-//! bad file is one line naming file, line, column and key, with exit 2;
-//! files mutated at random never make the parser panic and always give
-//! exit 0 or 2.
+//! bad file is one line naming file, line, column and key, with exit 2,
+//! and `render --check` refuses a value that would fail only when drawn;
+//! a sweep file's grid takes the axis text the command line takes; files
+//! mutated at random never make the parser panic and always give exit 0
+//! or 2.
 
 use crate::common::fuzz;
 use crate::common::tempdir::TempDir;
 use jacobs_ladder::catalog;
 use jacobs_ladder::error::Error;
 use jacobs_ladder::scene::{self, file};
+use jacobs_ladder::sweep::Plan;
 use proptest::prelude::*;
-use std::process::Command;
+use std::process::{Command, Output};
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
 
 fn ladder(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_ladder"))
@@ -261,4 +268,48 @@ fn mutated_scene_files_exit_0_or_2() {
             Ok(())
         })
         .unwrap();
+}
+
+#[test]
+fn a_sweep_file_takes_the_axis_text_the_command_line_takes() {
+    let toml = r#"
+name = "g"
+[output]
+kind = "sweep"
+[output.grid]
+alpha = "40:45:1,47:50:1"
+"#;
+    let scene = file::parse(toml, "g.toml", "g").unwrap();
+    let plan = Plan::new(&scene, 100).unwrap().unwrap();
+    let alphas: Vec<f64> = plan.points.iter().map(|p| p[0]).collect();
+    assert_eq!(
+        alphas,
+        [40.0, 41.0, 42.0, 43.0, 44.0, 45.0, 47.0, 48.0, 49.0, 50.0]
+    );
+}
+
+#[test]
+fn render_check_refuses_a_potential_that_cannot_render() {
+    let dir = TempDir::new("check-2c");
+    let scene = String::from_utf8(ladder(&["scene", "2c"]).stdout).unwrap();
+    assert!(scene.contains("a_over_b = ["), "{scene}");
+    let bad = scene
+        .lines()
+        .map(|l| {
+            if l.starts_with("a_over_b") {
+                "a_over_b = [1.05, 6]".to_string()
+            } else {
+                l.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let path = dir.file("2c.toml", &bad);
+    let o = ladder(&["render", "--check", &path]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("output.a_over_b"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("a/b = 6"), "{}", stderr(&o));
+    // The catalogue's own passes.
+    let good = dir.file("ok.toml", &scene);
+    assert!(ladder(&["render", "--check", &good]).status.success());
 }

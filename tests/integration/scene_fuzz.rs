@@ -12,8 +12,8 @@
 //!   never a failure or a panic; `auto`'s ω_max is found.
 //!
 //! `LADDER_FUZZ_CASES=N` runs N cases instead, and `LADDER_FUZZ_SEED=K` (a
-//! byte) another sequence (the issue asks for a run of at least 10
-//! minutes: about 3 000 000 cases).
+//! byte) another sequence (a run of 10 minutes is about 3 000 000
+//! cases).
 
 use crate::common::fuzz;
 use jacobs_ladder::error::Error;

@@ -224,38 +224,3 @@ fn every_field_of_a_shard_is_checked_against_its_own_arrivals() {
     refused_by_gather(|v| v["version"] = "0.0.1".into(), "version");
     refused_by_gather(|v| v["program"] = "other".into(), "version");
 }
-
-/// A chunk made for another sweep (an executor's cache of an earlier
-/// sweep) is refused by the check the Python executor's merge makes:
-/// `shard::check_chunk` and `shard::gather_for` check against the plan the
-/// caller made, not the one the chunk names.
-#[test]
-fn a_chunk_of_another_sweep_is_refused_by_the_callers_plan() {
-    use jacobs_ladder::sweep::shard::ShardFile;
-    let bytes = serde_json::to_vec(genuine()).unwrap();
-    let file: ShardFile = serde_json::from_slice(&bytes).unwrap();
-    let own = jacobs_ladder::sweep::Plan::new(&file.scene, 1000)
-        .unwrap()
-        .unwrap();
-    assert!(shard::check_chunk(&own, "chunk 1", &bytes).is_ok());
-    let mut other_scene = file.scene.clone();
-    other_scene.model.gamma = 0.03;
-    let other = jacobs_ladder::sweep::Plan::new(&other_scene, 1000)
-        .unwrap()
-        .unwrap();
-    let e = shard::check_chunk(&other, "chunk 1", &bytes)
-        .unwrap_err()
-        .to_string();
-    assert!(
-        e.starts_with("chunk 1: ") && e.contains("fingerprint"),
-        "{e}"
-    );
-    let dir = TempDir::new("foreign-chunk");
-    std::fs::create_dir_all(dir.join("shards")).unwrap();
-    std::fs::write(dir.join("shards").join(FILE), &bytes).unwrap();
-    let e = shard::gather_for(dir.path(), &other, 1000)
-        .unwrap_err()
-        .to_string();
-    assert!(e.contains(FILE) && e.contains("fingerprint"), "{e}");
-    assert!(shard::gather_for(dir.path(), &own, 1000).is_ok());
-}

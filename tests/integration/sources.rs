@@ -10,7 +10,7 @@
 //!   dominates (G/γ ≤ 0.005), the antikink runs at about 0.30 G/γ blocks/τ
 //!   (regression value of Verlet at dt = 0.25 τ).
 //!
-//! Run in release: `cargo test --release --test sources`.
+//! Run in release: `cargo test --release --test integration sources::`.
 
 #![allow(clippy::field_reassign_with_default)]
 

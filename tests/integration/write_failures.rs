@@ -1,7 +1,7 @@
-//! Where a write cannot happen, the exit code the README states (issue
-//! 32): 2 for what the user can fix before any work (a read-only folder
-//! or file system, a device such as /dev/full in place of a file), 1 for
-//! a write the machine failed (a full disk: tests/integration/reliability.rs,
+//! Where a write cannot happen, the exit code the README states: 2 for
+//! what the user can fix before any work (a read-only folder or file
+//! system, a device such as /dev/full in place of a file), 1 for a write
+//! the machine failed (a full disk: tests/integration/reliability.rs,
 //! `a_full_disk_is_a_failed_run`).
 
 use crate::common::require::require;
@@ -86,28 +86,33 @@ fn a_read_only_folder_is_exit_2() {
     assert!(!csv.exists());
 }
 
-/// A disk that fills while a figure's files are written leaves no picture
+/// A disk that fills while an output's files are written leaves no picture
 /// without its data file (before, `ladder all` on a full disk left
 /// `figure-chain-length.png` and `.csv` without their `.json`): a scene's
 /// files go into place together once all are written, the data first.
-/// The disk is a file-size limit (`ulimit -f`) that the picture fits under
-/// and the data file does not.
+/// The disk is a file-size limit (`ulimit -f`) that the movie and its
+/// kymograph fit under and the data file (written last) does not.
 #[test]
 fn a_full_disk_leaves_no_picture_without_its_data() {
+    let args = ["movie", "4", "--frames", "200", "--size", "64x64", "--out"];
     let whole = TempDir::new("group-whole");
-    let args = ["figure", "S6", "--out"];
     let mut a = args.to_vec();
     a.push(whole.path().to_str().unwrap());
     let out = ladder(&a);
     assert_eq!(out.status.code(), Some(0), "{out:?}");
     let size = |name: &str| std::fs::metadata(whole.join(name)).unwrap().len();
-    let (png, json) = (size("figure-S6.png"), size("figure-S6.json"));
-    assert!(json > png + 4096, "png {png}, json {json} bytes");
+    let pictures = size("movie-4.gif").max(size("movie-4-kymograph.png"));
+    let json = size("movie-4.json");
+    assert!(
+        json > pictures + 8192,
+        "pictures {pictures}, json {json} bytes"
+    );
     // A limit in 512-byte blocks between the two sizes.
-    let blocks = png / 512 + 2;
+    let blocks = pictures / 512 + 4;
     let dir = TempDir::new("group-full");
     let script = format!(
-        "ulimit -f {blocks} && trap '' XFSZ && exec \"$0\" figure S6 --out '{}'",
+        "ulimit -f {blocks} && trap '' XFSZ && exec \"$0\" {} '{}'",
+        args.join(" "),
         dir.path().display()
     );
     let out = Command::new("sh")
@@ -116,13 +121,15 @@ fn a_full_disk_leaves_no_picture_without_its_data() {
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{err}");
-    assert!(err.contains("figure-S6.json"), "{err}");
+    assert!(err.contains("movie-4.json"), "{err}");
     let names: Vec<String> = std::fs::read_dir(dir.path())
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
     assert!(
-        !names.iter().any(|n| n.ends_with(".png")),
+        !names
+            .iter()
+            .any(|n| n.ends_with(".png") || n.ends_with(".gif")),
         "a picture without its data: {names:?}"
     );
 }

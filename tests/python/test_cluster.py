@@ -16,24 +16,10 @@ import numpy as np
 import pytest
 
 import jacobs_ladder as jl
+from conftest import needed
 
 # A small sweep: 7 × 2 runs of N = 8, under a second on one core.
 GRID = dict(alpha="40:70:5", gamma=[0.01, 0.02], n=8, name="ex")
-
-
-def needed(module):
-    """The test extra `module`: a missing one fails under CI (it is in
-    pyproject's test extras) and is skipped elsewhere, said loudly."""
-    try:
-        return __import__(module)
-    except ImportError:
-        if os.environ.get("CI") == "true":
-            pytest.fail(f"{module} is missing: pip install '.[test]'")
-        log = os.environ.get("LADDER_SKIP_LOG")
-        if log:
-            with open(log, "a") as f:
-                f.write(f"python: {module} missing (pip install '.[test]')\n")
-        pytest.skip(f"{module} is not installed")
 
 
 # ----------------------------------------------------------------- fork

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 import jacobs_ladder as jl
+from conftest import needed
 
 
 def nan_list(values):
@@ -258,7 +259,7 @@ def test_sweep_table_reads_per_wave_and_block_n_columns():
 
 
 def test_sweep_to_pandas():
-    pd = pytest.importorskip("pandas", reason="pandas is not installed: to_pandas untested")
+    pd = needed("pandas")
     table = jl.sweep(alpha="60:70:10", n=6)
     frame = table.to_pandas()
     assert list(frame.columns) == table.columns and len(frame) == 2

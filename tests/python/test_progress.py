@@ -6,7 +6,7 @@ import pytest
 
 import jacobs_ladder as jl
 from jacobs_ladder import _progress
-from test_cluster import needed
+from conftest import needed
 
 GRID = dict(alpha="40:70:5", gamma=[0.01, 0.02], n=8)
 

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 import jacobs_ladder as jl
-from test_cluster import needed
+from conftest import needed
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -208,9 +208,12 @@ pub struct ModelArgs {
     /// flag per parameter of the model's table (`model::table`).
     #[command(flatten)]
     pub params: ParamFlags,
-    /// How the run starts: ground (at rest, springs at rest length) or
-    /// relaxed (at rest hanging under gravity, block 1 clamped) [default: ground]
-    #[arg(long, value_name = "START")]
+    // How the run starts.
+    #[arg(long, value_name = "START", help = with_default(
+        "How the run starts: ground (at rest, springs at rest length) or relaxed (at rest \
+         hanging under gravity, block 1 clamped)",
+        crate::sim::Start::default(),
+    ))]
     pub start: Option<StartArg>,
     /// The ladder as built, in cm, g and s (docs/experiments.md): a TOML file
     /// whose [apparatus] table has the keys of a scene file's
@@ -369,7 +372,7 @@ fn limits() -> crate::limits::Limits {
 
 /// A help text with its default read from the program: "TEXT [default:
 /// VALUE]" (2e-4, 1e10: exponent form where shorter).
-fn with_default(text: &str, value: impl std::fmt::Display) -> String {
+pub(super) fn with_default(text: &str, value: impl std::fmt::Display) -> String {
     let v = value.to_string();
     let v = match v.parse::<f64>() {
         Ok(x) => crate::model::table::short(x),
@@ -450,10 +453,15 @@ pub struct MovieArgs {
     /// from the movie ID given), e.g. a70-n20 or 4-a70]
     #[arg(long, value_name = "NAME")]
     pub name: Option<String>,
-    /// Camera: auto (fixed when the ladder fits the frame, else folded into
-    /// columns), fixed (one window for every frame) or follow (moves with
-    /// the kink) [default: auto]
-    #[arg(long, value_name = "CAMERA")]
+    // The camera.
+    #[arg(long, value_name = "CAMERA", help = with_default(
+        "Camera: auto (fixed when the ladder fits the frame, else folded into columns), fixed \
+         (one window for every frame) or follow (moves with the kink)",
+        serde_json::to_value(crate::scene::Camera::default())
+            .ok()
+            .and_then(|v| v.as_str().map(str::to_string))
+            .unwrap_or_default(),
+    ))]
     pub camera: Option<CameraArg>,
     #[command(flatten)]
     pub model: ModelArgs,

@@ -26,14 +26,18 @@ pub struct SweepArgs {
     pub grid: GridArgs,
     #[command(flatten)]
     pub run: RunArgs,
-    /// How every run starts: ground (at rest, springs at rest length) or
-    /// relaxed (at rest hanging under gravity, block 1 clamped) [default:
-    /// the file's, or ground]
-    #[arg(long, value_name = "START", help_heading = "Run")]
+    // How every run starts.
+    #[arg(long, value_name = "START", help_heading = "Run", help = super::with_default(
+        "How every run starts: ground (at rest, springs at rest length) or relaxed (at rest \
+         hanging under gravity, block 1 clamped)",
+        format!("the file's, or {}", crate::sim::Start::default()),
+    ))]
     pub start: Option<super::StartArg>,
-    /// Latest time a run may reach while its outcome is undecided, in tau
-    /// [default: 100000]
-    #[arg(long, value_name = "T", help_heading = "Outcome")]
+    // The latest time of an undecided run.
+    #[arg(long, value_name = "T", help_heading = "Outcome", help = super::with_default(
+        "Latest time a run may reach while its outcome is undecided, in tau",
+        crate::scene::sweep::SweepSpec::default().cap,
+    ))]
     pub cap: Option<f64>,
     /// Removed (an error if given): outcomes are proved by the state
     #[arg(long, value_name = "K", help_heading = "Outcome", hide = true)]

@@ -76,7 +76,7 @@ pub fn fit_title(theme: &Theme, title: &str, width: u32) -> FittedTitle {
         size: smallest,
         font,
     };
-    if theme.min_text > 0.0 || fits(&wrapped) {
+    if theme.min_text > 0.0 || (fits(&wrapped) && wrapped.lines.len() <= 2) {
         return wrapped;
     }
     shrunk_to(title, font, room)

@@ -107,6 +107,9 @@ pub fn compose(panels: &[Panel], layout: &Layout) -> Result<Pixmap> {
     compose_picture(panels, layout)?.to_pixmap()
 }
 
+/// The distance between a wrapped title's lines, in ems.
+const LINE_EM: f32 = 1.2;
+
 /// Where a grid puts its panels: the picture's size, the title band's
 /// height, and for each panel its cell's top left corner and size.
 pub(super) struct Grid {
@@ -114,6 +117,8 @@ pub(super) struct Grid {
     pub(super) height: u32,
     cells: Vec<((u32, u32), (u32, u32))>,
     bands: (u32, u32),
+    /// The title's lines, wrapped to the grid's width (never shrunk).
+    title: Vec<String>,
 }
 
 impl Grid {
@@ -145,12 +150,22 @@ impl Grid {
             row_h[k / cols] = row_h[k / cols].max(h);
         }
         let (label_h, caption_h) = bands(&layout.theme, panels);
-        let title_h = layout
-            .title
-            .as_ref()
-            .map_or(0, |_| layout.theme.title_band() as u32);
         let (m, g) = (layout.margin, layout.gap);
         let width = 2 * m + col_w.iter().sum::<u32>() + (cols as u32 - 1) * g;
+        // A title wider than the grid goes on more lines (a title once
+        // left a narrow page on both sides).
+        let title = layout.title.as_ref().map_or_else(Vec::new, |t| {
+            let room = width.saturating_sub(2 * m).max(1) as f32;
+            if text_width(theme.font(), t, theme.title) <= room {
+                vec![t.clone()]
+            } else {
+                crate::render::style::wrap_text(theme.font(), t, room, theme.title)
+            }
+        });
+        let title_h = match title.len() {
+            0 => 0,
+            k => (theme.title_band() + (k - 1) as f32 * LINE_EM * theme.title) as u32,
+        };
         let cells_h: u32 = row_h.iter().map(|h| h + label_h + caption_h).sum();
         let height = 2 * m + title_h + cells_h + (rows as u32 - 1) * g;
         if width > crate::render::picture::MAX_RASTER_SIDE
@@ -180,6 +195,7 @@ impl Grid {
             height,
             cells,
             bands: (label_h, caption_h),
+            title,
         })
     }
 
@@ -201,14 +217,17 @@ pub fn compose_picture(panels: &[Panel], layout: &Layout) -> Result<Picture> {
     let (width, m) = (grid.width, layout.margin);
     let theme = &layout.theme;
     let mut out = Picture::new(theme, width as f32, grid.height as f32);
-    if let Some(t) = &layout.title {
-        let at = (0.5 * width as f32, m as f32);
+    for (k, t) in grid.title.iter().enumerate() {
+        let at = (
+            0.5 * width as f32,
+            m as f32 + k as f32 * LINE_EM * theme.title,
+        );
         let size = theme.title;
         out.text(
             t,
             at,
             size,
-            Palette.color(Role::Ink),
+            theme.color(Role::Ink),
             (HAlign::Center, VAlign::Top),
         );
     }

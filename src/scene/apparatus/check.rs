@@ -68,6 +68,7 @@ impl Apparatus {
     /// (the file loader locates `apparatus.KEY`).
     pub fn check(&self) -> Checked {
         self.check_values()?;
+        self.check_built()?;
         self.check_converted()
     }
 
@@ -384,5 +385,45 @@ impl Apparatus {
             .find(|k| ok(&typical(k)))
             .unwrap_or(fallback)
             .to_string()
+    }
+
+    /// The ribbons' and the contact's keys (docs/experiments.md, "The toy
+    /// as built").
+    fn check_built(&self) -> std::result::Result<(), (String, String)> {
+        let bad = |k: &str, m: String| Err((k.to_string(), m));
+        if let Some(x) = self.ribbon_anchors
+            && !x.iter().all(|x| x.is_finite() && (0.0..=1.0).contains(x))
+        {
+            return bad(
+                "ribbon_anchors",
+                format!("must be two fractions of s in [0, 1], got {x:?}"),
+            );
+        }
+        if let Some(k) = self.contact_stiffness
+            && !(k.is_finite() && k > 0.0)
+        {
+            return bad(
+                "contact_stiffness",
+                format!("must be a number > 0 (the links' k per s), got {k}"),
+            );
+        }
+        let built = self.ribbon_anchors.is_some()
+            || self.ribbon_mirror
+            || self.contact.is_some()
+            || self.contact_stiffness.is_some();
+        if built && !self.ribbons {
+            return bad(
+                "ribbons",
+                "ribbon and contact keys need ribbons = true (blocks with thickness held by ribbons)"
+                    .into(),
+            );
+        }
+        if self.ribbons && (self.tension_only || self.pin_friction > 0.0) {
+            return bad(
+                "ribbons",
+                "ribbons replace the links: leave tension_only and pin_friction out".into(),
+            );
+        }
+        Ok(())
     }
 }

@@ -2,8 +2,12 @@
 //! unit physics of the module's doc, and the terms it switches on.
 
 use super::*;
+use crate::model::built::AsBuilt;
+use crate::model::contact::Contact;
 use crate::model::links::{Links, PinFriction};
 use crate::model::media::Terms;
+use crate::model::outline::Outline;
+use crate::model::ribbons::{Anchor, Ribbons};
 
 /// The apparatus in the model's units, and the units themselves.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -116,6 +120,12 @@ impl Apparatus {
                 .to_degrees()
                 .copysign(if alpha_deg < 0.0 { -1.0 } else { 1.0 })
         });
+        // Ribbons hang the blocks in a column: α = ±90°.
+        let alpha = if self.ribbons {
+            Some(90.0_f64.copysign(alpha_deg))
+        } else {
+            alpha
+        };
         let alpha_used = alpha.unwrap_or(alpha_deg).to_radians();
         let drive_time = self
             .motor
@@ -165,5 +175,88 @@ impl Apparatus {
                 omega_eps: c.friction_rate,
             }),
         }
+    }
+
+    /// The toy as built (`model::built`), where the apparatus has ribbons:
+    /// ribbon 1 on the face w = +h (edge 2) glued at fraction x₁ of s from
+    /// the A end, ribbon 2 on the face w = −h (edge 0) at x₂, each the same
+    /// on both blocks of a junction (the faces swapped when mirrored),
+    /// glued taut in the hanging column at pitch b; contact with the
+    /// material's e and μ.
+    pub fn built(&self, c: &Conversion) -> Option<AsBuilt> {
+        if !self.ribbons {
+            return None;
+        }
+        let [x1, x2] = self.ribbon_anchors.unwrap_or([0.0, 1.0]);
+        // Face w = +h runs c₂ → c₃ (from the B end), w = −h c₀ → c₁.
+        let plus = |x: f64| face_anchor(2, 1.0 - x);
+        let minus = |x: f64| face_anchor(0, x);
+        let (a1, a2) = if self.ribbon_mirror {
+            (minus(x1), plus(x2))
+        } else {
+            (plus(x1), minus(x2))
+        };
+        let outline = Outline::new(self.thickness / self.s);
+        let ribbons = Ribbons::glued_in_column(outline, [(a1, a1), (a2, a2)], c.b);
+        let contact = self.contact.map(|m| {
+            let (restitution, friction) = m.coefficients();
+            Contact {
+                stiffness: self.contact_stiffness.unwrap_or(CONTACT_STIFFNESS),
+                restitution,
+                friction,
+                slip_speed: SLIP_SPEED,
+            }
+        });
+        Some(AsBuilt { ribbons, contact })
+    }
+}
+
+impl Apparatus {
+    /// The ribbons that break the kink–antikink symmetry (docs/experiments.md,
+    /// "The toy as built"): the map between the two waves (every block
+    /// turned over, y mirrored) takes a ribbon glued at x on a face to
+    /// 1 − x on the same face; a ribbon whose image is not a ribbon of the
+    /// arrangement is named, with its anchor. Empty without ribbons.
+    pub fn symmetry_breakers(&self) -> Vec<String> {
+        if !self.ribbons {
+            return Vec::new();
+        }
+        let [x1, x2] = self.ribbon_anchors.unwrap_or([0.0, 1.0]);
+        let faces = if self.ribbon_mirror {
+            ["-h", "+h"]
+        } else {
+            ["+h", "-h"]
+        };
+        let ribbons = [(faces[0], x1), (faces[1], x2)];
+        ribbons
+            .iter()
+            .enumerate()
+            .filter(|(_, (face, x))| {
+                !ribbons
+                    .iter()
+                    .any(|(f, y)| f == face && (y - (1.0 - x)).abs() < 1e-12)
+            })
+            .map(|(k, (face, x))| {
+                format!(
+                    "ribbon {} (glued at {x} s from the A end of face {face}, wrapping round the \
+                     block's {} end) maps to {} s, where no ribbon is glued",
+                    k + 1,
+                    if *x < 0.5 { "B" } else { "A" },
+                    1.0 - x
+                )
+            })
+            .collect()
+    }
+}
+
+/// The anchor at fraction f along edge k, at the next corner where f = 1.
+fn face_anchor(k: usize, f: f64) -> Anchor {
+    if f >= 1.0 {
+        Anchor {
+            edge: (k + 1) % 4,
+            along: 0.0,
+        }
+    } else {
+        Anchor { edge: k, along: f }
     }
 }

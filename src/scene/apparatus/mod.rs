@@ -59,6 +59,31 @@ impl Medium {
     }
 }
 
+/// A block material's contact coefficients (docs/experiments.md cites
+/// them): restitution e and Coulomb friction μ between two blocks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Material {
+    Wood,
+    Acrylic,
+}
+
+impl Material {
+    /// (e, μ): wood on wood e = 0.5, μ = 0.3 (kinetic); acrylic on
+    /// acrylic e = 0.6, μ = 0.5 (docs/experiments.md, "The toy as built").
+    pub fn coefficients(self) -> (f64, f64) {
+        match self {
+            Self::Wood => (0.5, 0.3),
+            Self::Acrylic => (0.6, 0.5),
+        }
+    }
+}
+
+/// The contact's default penalty stiffness, in the links' k per s.
+pub const CONTACT_STIFFNESS: f64 = 1000.0;
+/// The friction's slip speed v_ε, in s/τ.
+pub const SLIP_SPEED: f64 = 1e-4;
+
 /// "stiff" or a stiffness in N/m.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
@@ -164,6 +189,29 @@ pub struct Apparatus {
     /// Friction's smoothing rate ω_ε (rad/s). Default 0.05.
     #[serde(default = "friction_rate")]
     pub friction_rate: f64,
+    /// Ribbons glued to the blocks' faces and wrapped round their ends in
+    /// place of the links (docs/experiments.md, "The toy as built"); the
+    /// run hangs the blocks in a column (α = ±90°, the sign of `[model]
+    /// alpha`). Default false.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub ribbons: bool,
+    /// Where ribbons 1 and 2 are glued, as fractions of s along their
+    /// faces from the block's A end (its top in the hanging column):
+    /// ribbon 1 on one face, ribbon 2 on the other. Default [0, 1]: at the
+    /// two ends, where the paper's links join the nodes.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ribbon_anchors: Option<[f64; 2]>,
+    /// The mirror arrangement: each ribbon on the other face. Default false.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub ribbon_mirror: bool,
+    /// Contact between the blocks, with the restitution and friction of
+    /// a material: "wood" or "acrylic" (docs/experiments.md). Default none.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact: Option<Material>,
+    /// The contact's penalty stiffness, in units of the links' k per s
+    /// of overlap. Default 1000.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact_stiffness: Option<f64>,
     /// The motor turns block 1 through its flip at this rate (Hz).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub motor: Option<f64>,

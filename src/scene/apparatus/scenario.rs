@@ -4,6 +4,7 @@
 
 use super::*;
 use crate::error::{Error, Result};
+use crate::model::Params;
 use crate::scene::{DriveSpec, Model};
 use crate::sim::{Drive, Scenario};
 
@@ -70,6 +71,9 @@ impl Apparatus {
         let c = self.convert(scene.model.alpha);
         let model = c.model(&scene.model);
         let params = model.params()?;
+        if let Some(built) = self.built(&c) {
+            return self.built_scenario(scene, params, built, &c);
+        }
         crate::sim::check_simulable(&params)?;
         let drive = match c.drive_time {
             Some(t_d) => Drive::single_flip(params.alpha, t_d)?,
@@ -88,5 +92,23 @@ impl Apparatus {
         let terms = self.terms(&c).validated()?;
         sc.ladder = sc.ladder.with_terms(terms);
         Ok(sc)
+    }
+
+    /// The run of a ladder as built: the hanging column at rest, the
+    /// motor's or the scene's drive (the hanging start is the column).
+    fn built_scenario(
+        &self,
+        scene: &crate::scene::Scene,
+        params: Params,
+        built: crate::model::built::AsBuilt,
+        c: &Conversion,
+    ) -> Result<Scenario> {
+        let drive = match c.drive_time {
+            Some(t_d) => Drive::single_flip(params.alpha, t_d)?,
+            None => scene.drive.drive(params.alpha)?,
+        };
+        let t_end = c.t_end.unwrap_or(scene.run.t_end);
+        let terms = self.terms(c).validated()?;
+        Scenario::as_built(params, drive, t_end, terms, built)
     }
 }

@@ -6,7 +6,8 @@ use super::{LEVELS, LEVELS_MOTOR_HZ, MEASURED_KINK_CM_S, MEASURED_RATIO};
 use crate::error::{Error, Result};
 use crate::render::charts::{self, Axis, ChartSpec, Marker, Series};
 use crate::render::compose::{self, Layout, Panel};
-use crate::render::{Picture, Theme, style};
+use crate::render::palette::Role;
+use crate::render::{Picture, Theme};
 use crate::scene::Scene;
 use crate::scenes::data::RunData;
 
@@ -87,6 +88,7 @@ pub(super) fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<
         )));
     }
     let speed = level_chart(
+        theme,
         Axis::new("c_{kink} (cm/s)"),
         (
             MEASURED_KINK_CM_S,
@@ -96,6 +98,7 @@ pub(super) fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<
         |r| r.kink_cm_s,
     );
     let ratio = level_chart(
+        theme,
         Axis::new("c_{antikink} / c_{kink}"),
         (MEASURED_RATIO, format!("measured {MEASURED_RATIO}")),
         &results,
@@ -155,6 +158,7 @@ pub fn level_names(results: &[LevelResult]) -> Vec<String> {
 /// level without a wave has no point: its name says "no wave"), beside
 /// the `measured` value (a dashed line across the rows).
 fn level_chart(
+    theme: &Theme,
     x: Axis,
     measured: (f64, String),
     results: &[LevelResult],
@@ -170,7 +174,7 @@ fn level_chart(
         Series::line(
             measured.1,
             vec![(measured.0, 0.5), (measured.0, n + 0.5)],
-            style::series_color(0),
+            theme.color(Role::Measurement),
         )
         .dashed(),
     );
@@ -181,8 +185,13 @@ fn level_chart(
         .collect();
     if !points.is_empty() {
         spec = spec.series(
-            Series::scatter("model", points, style::series_color(1), Marker::Circle)
-                .with_width(2.0),
+            Series::scatter(
+                "model",
+                points,
+                theme.color(Role::Series(1)),
+                Marker::Circle,
+            )
+            .with_width(2.0),
         );
     }
     spec

@@ -4,8 +4,9 @@
 use super::runs::{Done, run_all, variant};
 use super::{PIN_FRICTION, PIN_FRICTION_RESOLUTION, chart_picture};
 use crate::error::Result;
-use crate::render::charts::{Axis, ChartSpec, Marker, Series};
-use crate::render::{Picture, Theme, style};
+use crate::render::charts::{Axis, ChartSpec, Series};
+use crate::render::palette::Role;
+use crate::render::{Picture, Theme};
 use crate::scene::{Scene, describe};
 use crate::scenes::data::RunData;
 
@@ -79,10 +80,11 @@ pub(super) fn linkage_friction(theme: &Theme, scene: &Scene) -> Result<(Picture,
         Axis::new("pin friction μ_{p}"),
         Axis::new("blocks flipped (front)").range(0.0, n + 0.5),
     );
-    for (j, (word, marker)) in [("kink", Marker::Circle), ("antikink", Marker::Ring)]
+    for (j, (word, role)) in [("kink", Role::Kink), ("antikink", Role::Antikink)]
         .into_iter()
         .enumerate()
     {
+        let marker = theme.marker(role, j == 1);
         let pts: Vec<(f64, f64)> = rows
             .iter()
             .map(|(mu, k, a)| (*mu, if j == 0 { *k } else { *a } as f64))
@@ -92,7 +94,7 @@ pub(super) fn linkage_friction(theme: &Theme, scene: &Scene) -> Result<(Picture,
             "{word} (α = {sign}{}°)",
             describe::num(scene.model.alpha.abs())
         );
-        let color = style::series_color(j + 1);
+        let color = theme.color(role);
         let width = if j == 0 { 3.0 } else { 1.5 };
         let line = Series::line("", steps(&pts), color).with_width(width);
         spec = spec.series(if j == 0 { line } else { line.dashed() });

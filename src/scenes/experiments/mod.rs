@@ -24,7 +24,7 @@ pub use decided::{
 };
 pub use levels::{LevelResult, STIFF_TOLERANCE, level_names, levels};
 pub use linkage::{Front, fronts, refined_fronts, steps};
-pub use positions::MOTOR_MARKERS;
+pub use positions::motor_marker;
 
 use super::data::{ApparatusNumbers, BulkFit, RunData};
 use crate::error::Result;

@@ -7,12 +7,16 @@ use super::runs::{Done, run_all, variant};
 use super::{MEASURED_KINK_CM_S, MOTORS_HZ, chart_picture, speed_text};
 use crate::error::Result;
 use crate::render::charts::{Axis, ChartSpec, Marker, Series};
-use crate::render::{Picture, Theme, style};
+use crate::render::palette::Role;
+use crate::render::{Picture, Theme};
 use crate::scene::Scene;
 use crate::scenes::data::{BulkFit, RunData};
 
-/// The marker of each motor speed's points (kink and antikink alike).
-pub const MOTOR_MARKERS: [Marker; 3] = [Marker::Circle, Marker::Square, Marker::Triangle];
+/// The marker of the `k`-th motor speed's points: the palette's `k`-th
+/// shape of a series, filled for the kink, open for the antikink.
+pub fn motor_marker(theme: &Theme, k: usize, antikink: bool) -> Marker {
+    theme.palette.series_marker(k, antikink)
+}
 
 /// Figure 1: the position (n − 1) b of each flipped block (cm) against
 /// t_n − t_1, the time since block 1 flipped (s), kink and antikink at
@@ -41,17 +45,23 @@ pub(super) fn tank_positions(theme: &Theme, scene: &Scene) -> Result<(Picture, V
         Series::line(
             format!("measured kink: {MEASURED_KINK_CM_S:.1} cm/s"),
             vec![(0.0, 0.0), (bottom / MEASURED_KINK_CM_S, bottom)],
-            style::series_color(0),
+            theme.color(Role::Measurement),
         )
         .dashed()
         .with_width(1.0),
     );
     for (k, d) in done.iter().enumerate() {
         let (motor, kink) = (k / 2, k % 2 == 0);
-        let color = style::series_color(if kink { 1 } else { 2 });
+        let color = theme.color(if kink { Role::Kink } else { Role::Antikink });
         let label = format!("{}: {}", variants[k].label, speed_text(d.bulk_cm_s));
         spec = spec.series(
-            Series::scatter(label, since_block_1(d), color, MOTOR_MARKERS[motor]).with_width(1.5),
+            Series::scatter(
+                label,
+                since_block_1(d),
+                color,
+                motor_marker(theme, motor, !kink),
+            )
+            .with_width(1.5),
         );
         if let Some(fit) = d.data.apparatus.as_ref().and_then(|a| a.bulk) {
             let line = Series::line("", fit_line(&fit, d.pitch_cm), color).with_width(1.0);

@@ -244,8 +244,6 @@ fn potential_insets(theme: &Theme, input: &FigureInput, which: &[usize]) -> Resu
     grid(theme, &panels, columns)
 }
 
-/// Number of dispersion samples for lines and for dots.
-
 /// Fig. S5: ω±(q)/ω₀ against qb for each α of the scene, at its b/s,
 /// one panel per α: eq:dispersion as printed (dashed), ×√2 (solid, errata
 /// item 9) and the model's eigenvalues (dots).
@@ -629,6 +627,92 @@ mod tests {
             for taken in [Palette.color(Role::SpringA), Palette.color(Role::SpringB)] {
                 let d = crate::render::theme::delta_e(c, taken);
                 assert!(d > 20.0, "{name} is {d:.1} ΔE from {taken:?}");
+            }
+        }
+    }
+
+    /// The value of attribute `name` in the SVG element `e`.
+    fn attr<'a>(e: &'a str, name: &str) -> Option<&'a str> {
+        let i = e.find(&format!(" {name}=\""))? + name.len() + 3;
+        e[i..].split('"').next()
+    }
+
+    /// The winding panels' legends cover no data: no point of a drawn loop
+    /// (det C and det C/(e^{iqb} − 1)) within the legend's frame (panel
+    /// (a)'s legend, fixed at the upper left, lay on the det C circle).
+    #[test]
+    fn winding_legends_cover_no_data() {
+        use crate::render::{Item, Style, StyleName};
+        for style in [Style::default(), Style::named(StyleName::Paper)] {
+            let theme = Theme::of(&style);
+            for alpha in [60.0, -60.0] {
+                let p = crate::model::Params::defaults()
+                    .with_n(10)
+                    .with_b(1.3)
+                    .with_alpha_deg(alpha)
+                    .with_gamma(0.02)
+                    .with_gravity(2e-4)
+                    .with_inertia(0.25)
+                    .validated()
+                    .unwrap();
+                let (picture, _) = winding_panel(&theme, &p).unwrap();
+                let Some(Item::Chart { chart, .. }) = picture
+                    .items()
+                    .iter()
+                    .find(|i| matches!(i, Item::Chart { .. }))
+                else {
+                    panic!("no chart");
+                };
+                let svg = &chart.svg;
+                // The legend's frame: the rect drawn in the legend's
+                // translucent white; without one the legend is outside
+                // the plot, its entries beside or under it.
+                let frame = svg
+                    .split("<rect")
+                    .skip(1)
+                    .find(|e| e.contains("opacity=\"0.9"))
+                    .map(|e| {
+                        let v = |n| attr(e, n).and_then(|v| v.parse::<f32>().ok()).unwrap();
+                        (v("x"), v("y"), v("x") + v("width"), v("y") + v("height"))
+                    });
+                let Some(frame) = frame else {
+                    let (px, py) = (chart.plot_x.unwrap(), chart.plot_y.unwrap());
+                    for e in svg.split("<text").skip(1) {
+                        let body = e.split('>').nth(1).unwrap_or("");
+                        if body.starts_with("origin") || body.starts_with("det C") {
+                            let v = |n| attr(e, n).and_then(|v| v.parse::<f32>().ok()).unwrap();
+                            let inside = v("x") > px.0 as f32
+                                && v("x") < px.1 as f32
+                                && v("y") > py.0 as f32
+                                && v("y") < py.1 as f32;
+                            assert!(!inside, "{alpha}° at {style:?}: a legend entry in the plot");
+                        }
+                    }
+                    continue;
+                };
+                let loops = [
+                    Palette.color(Role::Series(1)),
+                    Palette.color(Role::Series(2)),
+                    Palette.color(Role::Ground),
+                ]
+                .map(|c| crate::render::style::hex(c).to_uppercase());
+                let mut points = 0;
+                for e in svg.split("<polyline").skip(1) {
+                    let stroke = attr(e, "stroke").unwrap_or("").to_uppercase();
+                    if !loops.contains(&stroke) {
+                        continue;
+                    }
+                    for xy in attr(e, "points").unwrap_or("").split_whitespace() {
+                        let mut it = xy.split(',').map(|v| v.parse::<f32>().unwrap());
+                        let (x, y) = (it.next().unwrap(), it.next().unwrap());
+                        points += 1;
+                        assert!(
+                            !(x >= frame.0 && x <= frame.2 && y >= frame.1 && y <= frame.3),
+                            "{alpha}° at {style:?}: a loop point ({x}, {y}) under the legend {frame:?}"
+                        );
+                    }
+                }
+                assert!(points > 100, "{points} loop points read");
             }
         }
     }

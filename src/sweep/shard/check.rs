@@ -4,7 +4,6 @@
 //! rule (docs/cluster.md, "Shard files are checked, not trusted").
 
 use super::{MAX_SHARDS, Shard, ShardFile};
-use crate::error::{Error, Result};
 use crate::sim::waves::Fate;
 use crate::sweep::outcome::{self, Outcome};
 use crate::sweep::{Plan, Record, RunResult};
@@ -13,19 +12,6 @@ use crate::sweep::{Plan, Record, RunResult};
 /// version has another fingerprint too; this says which).
 pub(super) const PROGRAM: &str = "ladder";
 pub(super) const VERSION: &str = env!("CARGO_PKG_VERSION");
-
-/// One chunk of a sweep run elsewhere (a Python executor's result: a
-/// shard file's bytes, `front::executor`), checked against the plan the
-/// caller made, not against the plan the chunk names: a chunk of another
-/// sweep (an executor's cache of an earlier one) or one edited in transit
-/// is bad input naming the chunk (`name`) and the field. Returns the file.
-pub fn check_chunk(plan: &Plan, name: &str, bytes: &[u8]) -> Result<ShardFile> {
-    let bad = |m: String| Error::bad_input(format!("{name}: {m}"));
-    let file: ShardFile =
-        serde_json::from_slice(bytes).map_err(|e| bad(format!("not a ladder shard file ({e})")))?;
-    file.validate(plan).map_err(bad)?;
-    Ok(file)
-}
 
 impl ShardFile {
     /// Checks this file against the sweep `plan` it claims to belong to:

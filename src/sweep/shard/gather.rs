@@ -13,37 +13,9 @@ use std::path::{Path, PathBuf};
 /// without shards, shards of two sweeps, two shards that disagree on a
 /// run, and a sweep with a shard missing or unfinished (naming it).
 pub fn gather(dir: &Path, max_runs: usize) -> Result<(Plan, Vec<Record>)> {
-    gather_checked(dir, max_runs, None)
-}
-
-/// [`gather`] for a caller that made the sweep's plan itself (a Python
-/// executor's chunks, `front::executor`): every shard file must be of
-/// `expected` (its fingerprint), else bad input naming the file; the plan
-/// returned is the shards', the same as `expected`.
-pub fn gather_for(dir: &Path, expected: &Plan, max_runs: usize) -> Result<(Plan, Vec<Record>)> {
-    gather_checked(dir, max_runs, Some(expected))
-}
-
-fn gather_checked(
-    dir: &Path,
-    max_runs: usize,
-    expected: Option<&Plan>,
-) -> Result<(Plan, Vec<Record>)> {
     let sdir = shards_dir(dir);
     let read = read_shards(dir, &sdir)?;
     let bad = |path: &Path, m: &str| Error::bad_input(format!("{}: {m}", path.display()));
-    if let Some(plan) = expected
-        && let Some((path, f)) = read.iter().find(|(_, f)| f.fingerprint != plan.fingerprint)
-    {
-        return Err(bad(
-            path,
-            &format!(
-                "fingerprint: a chunk of another sweep (fingerprint {}, sweep {}; this sweep's is \
-                 {}): an executor's cached or foreign result",
-                f.fingerprint, f.scene.name, plan.fingerprint
-            ),
-        ));
-    }
     let (first_path, first) = &read[0];
     if let Some((path, other)) = read
         .iter()

@@ -20,9 +20,9 @@ mod gather;
 mod resume;
 mod write;
 
-pub use check::{check_chunk, check_record};
+pub use check::check_record;
 pub use file::{MAX_SHARD_BYTES, ShardFile, read_bounded};
-pub use gather::{gather, gather_for};
+pub use gather::gather;
 pub use resume::{Earlier, earlier};
 pub use write::{check_estimate, write_records, write_records_within};
 

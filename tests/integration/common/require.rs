@@ -81,6 +81,43 @@ pub fn cpu_lacks(test: &str, feature: &str, what: &str) {
     );
 }
 
+/// Whether the program `name` starts (on PATH and executable: `name arg`
+/// runs, whatever its exit status); if not, [`require`] with the hint to
+/// install `package` (what `.ci/run` installs). For example
+/// `tool(test, "pdffonts", "-v", "poppler-utils")`.
+pub fn tool(test: &str, name: &str, arg: &str, package: &str) -> bool {
+    let present = std::process::Command::new(name)
+        .arg(arg)
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .status()
+        .is_ok();
+    require(
+        test,
+        present,
+        &format!("{name} is not installed"),
+        &format!("apt-get install {package}; .ci/run installs it"),
+    )
+}
+
+/// Whether `python3` on PATH imports numpy; if not, [`require`] with the
+/// hint to install it (`.ci/run` does).
+pub fn numpy(test: &str) -> bool {
+    let present = std::process::Command::new("python3")
+        .args(["-c", "import numpy"])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .status()
+        .is_ok_and(|s| s.success());
+    require(
+        test,
+        present,
+        "python3 with numpy is not installed",
+        "apt-get install python3-numpy, or pip install numpy; .ci/run installs it",
+    )
+}
+
 /// Whether `program` runs with `arg` and prints `marker` on stdout.
 pub fn runs(program: &str, arg: &str, marker: &str) -> bool {
     std::process::Command::new(program)

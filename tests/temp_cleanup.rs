@@ -1,17 +1,22 @@
 //! The work of the SIGINT/SIGTERM handler (`output::temp`), without the
 //! signal: every live temporary file is removed, and none can be created
-//! or renamed into place afterwards. In a test binary of its own, since it
-//! leaves this process "terminating". (`tests/integration/reliability.rs` sends the
-//! real signals to the binary.)
+//! or renamed into place afterwards. In a test binary of its own: it
+//! leaves this process "terminating" (every later temporary file of the
+//! process refused), and it counts every live temporary file of the
+//! process, which in the integration binary would include other tests'.
+//! (`tests/integration/reliability.rs` sends the real signals to the
+//! binary.)
 
-use crate::common;
+#[allow(dead_code)] // the helpers this test does not use
+#[path = "integration/common/tempdir.rs"]
+mod tempdir;
 
 use jacobs_ladder::output::temp::{TempFile, remove_all_live};
 use std::io::Write;
 
 #[test]
 fn the_handler_removes_every_live_temporary_file_and_stops_new_ones() {
-    let dir = common::tempdir::TempDir::new("live");
+    let dir = tempdir::TempDir::new("live");
     let targets: Vec<_> = ["a.png", "b.gif", "c.csv"]
         .iter()
         .map(|n| dir.join(n))

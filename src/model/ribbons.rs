@@ -1,0 +1,575 @@
+//! Ribbons that wrap round blocks with thickness (docs/experiments.md,
+//! "The toy as built"; the supplement's "2-1" connection): the links of a
+//! Jacob's ladder as built, in place of the paper's springs.
+//!
+//! A ribbon joins block n (upper) and block n + 1 (lower). On each it is
+//! glued at an anchor, a point of the outline (`outline`): edge k at a
+//! fraction f along it. From the anchor it may lie along the outline and
+//! wrap round corners, then crosses a straight free span to the other
+//! block, wraps round its corners and ends at its anchor there. Its
+//! length is
+//!
+//! L = (wrapped length on n) + |E − D| + (wrapped length on n + 1),
+//!
+//! D and E the points where the free span leaves the two outlines: the
+//! span is their common tangent. The ribbon leaves an anchor on a face
+//! straight away when the span points out of the face (e · n ≥ 0), an
+//! anchor at a corner when the span points out of either edge there, and
+//! it leaves a corner it has wrapped when the span does not point back
+//! along the edge it came by (e · d_in ≥ 0); else it wraps on. The two
+//! ways round from an anchor give two candidate paths; the ribbon takes
+//! the shorter (where the other block is behind the anchor, a real
+//! ribbon keeps the way round it came by: the two agree until the other
+//! block crosses the line where both ways are equally long).
+//!
+//! The tangent points are corners or anchors, fixed in their blocks, so
+//! L is a function of the two poses whose derivative is that of |E − D|
+//! with D and E held in their blocks: by the envelope theorem the tension
+//! T = κ max(0, L − ℓ) acts along the free span at its two tangent
+//! points, on n at D along e = (E − D)/|E − D| and on n + 1 at E along
+//! −e. Where the wrap changes, the span lies along the edge it leaves, so
+//! L is C¹ there. Energy ½ κ max(0, L − ℓ)² (tension only, as docs/model.md's
+//! tape); the rest length ℓ is the ribbon's length in the hanging column
+//! of the apparatus (every block at θ = 90°, centres b apart): glued taut.
+
+use super::ladder::Ladder;
+use super::outline::{Outline, Pose, add_point_force, point_velocity};
+use super::params::M;
+
+/// A ribbon's glue point on a block: edge k (0..4) at fraction f ∈ [0, 1)
+/// from corner k towards corner k + 1 (`outline`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Anchor {
+    pub edge: usize,
+    pub along: f64,
+}
+
+/// One ribbon of every junction: its anchor on the upper and the lower
+/// block (in each block's own frame) and its rest length ℓ (in s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ribbon {
+    pub upper: Anchor,
+    pub lower: Anchor,
+    pub rest: f64,
+}
+
+/// The ribbons of a ladder as built: two per junction, the same in every
+/// junction's frames (the frames alternate, so the junctions alternate
+/// as a Jacob's ladder's do), of stiffness κ (in k).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ribbons {
+    pub outline: Outline,
+    pub ribbons: [Ribbon; 2],
+    pub stiffness: f64,
+    /// The ribbon's dashpot c (in √(k m)): T = κ (L − ℓ) + c L̇ while
+    /// taut, never below 0. An inextensible string jerked taut takes
+    /// the jerk without rebound (e = 0, Routh, *Dynamics of a System of
+    /// Rigid Bodies*, 1905, §§ on impulsive tensions); the stiff ribbon
+    /// does the same with c = 2 √(κ m), critical for one block on it.
+    pub damping: f64,
+    /// Each ribbon's ways round, made once ([`Ribbons::new`]).
+    ways: [Ways; 2],
+}
+
+/// A ribbon at a state: where its span leaves each block (frame points),
+/// its direction and length, its tension.
+#[derive(Debug, Clone, Copy)]
+pub struct Span {
+    /// Frame points of D (on the upper block) and E (on the lower one).
+    pub d: [f64; 2],
+    pub e: [f64; 2],
+    /// Unit vector from D to E (lab) and |E − D|.
+    pub dir: [f64; 2],
+    pub free: f64,
+    /// Total length L and tension T = κ max(0, L − ℓ).
+    pub length: f64,
+    pub tension: f64,
+    /// Wrapped lengths on the upper and the lower block.
+    pub wrapped: [f64; 2],
+}
+
+/// Where a ribbon may leave a block: a frame point, the length wrapped to
+/// reach it, and the test on the span's direction e (in this block's
+/// frame, pointing away from it) that lets it leave there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Candidate {
+    point: [f64; 2],
+    arc: f64,
+    /// Leaves where e · a ≥ 0 or (at a corner anchor) e · b ≥ 0.
+    a: [f64; 2],
+    b: Option<[f64; 2]>,
+}
+
+impl Candidate {
+    /// Whether the span leaves here towards `target` (this block's frame).
+    #[inline]
+    fn leaves(&self, target: [f64; 2]) -> bool {
+        let e = [target[0] - self.point[0], target[1] - self.point[1]];
+        e[0] * self.a[0] + e[1] * self.a[1] >= 0.0
+            || self.b.is_some_and(|b| e[0] * b[0] + e[1] * b[1] >= 0.0)
+    }
+}
+
+/// One way round (σ = ±1) from an anchor: the anchor itself, then the
+/// four corners in turn (fixed in the block: made once).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Way {
+    c: [Candidate; 5],
+}
+
+impl Way {
+    fn new(o: &Outline, anchor: Anchor, sigma: i32) -> Self {
+        let k = anchor.edge % 4;
+        let f = anchor.along;
+        let at_corner = f == 0.0;
+        let first = Candidate {
+            point: o.on_edge(k, f),
+            arc: 0.0,
+            a: o.normal(k),
+            b: at_corner.then(|| o.normal(k + 3)),
+        };
+        let mut c = [first; 5];
+        let (mut arc, mut m) = if sigma > 0 {
+            ((1.0 - f) * o.edge_length(k), k + 1)
+        } else if at_corner {
+            // The anchor is corner k: the next one back is k − 1.
+            (o.edge_length(k + 3), k + 3)
+        } else {
+            (f * o.edge_length(k), k)
+        };
+        for slot in c.iter_mut().skip(1) {
+            // Arriving at corner m along the edge from the previous corner.
+            let prev = if sigma > 0 { m + 3 } else { m + 1 };
+            let (p, q) = (o.corner(m), o.corner(prev));
+            let len = ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt();
+            *slot = Candidate {
+                point: p,
+                arc,
+                a: [(p[0] - q[0]) / len, (p[1] - q[1]) / len],
+                b: None,
+            };
+            let next_edge = if sigma > 0 { m % 4 } else { (m + 3) % 4 };
+            arc += o.edge_length(next_edge);
+            m = if sigma > 0 { m + 1 } else { m + 3 };
+        }
+        Self { c }
+    }
+
+    /// The first candidate that leaves towards `target` (the last if none).
+    #[inline]
+    fn first_leaving(&self, target: [f64; 2]) -> usize {
+        self.c
+            .iter()
+            .position(|c| c.leaves(target))
+            .unwrap_or(self.c.len() - 1)
+    }
+}
+
+/// The lower block's frame seen from the upper one's: x_U = m x_L + o
+/// (m orthogonal, so x_L = mᵀ (x_U − o)).
+#[derive(Debug, Clone, Copy)]
+struct Relative {
+    m: [[f64; 2]; 2],
+    o: [f64; 2],
+}
+
+impl Relative {
+    #[inline]
+    fn new(u: &Pose, l: &Pose) -> Self {
+        let dot = |a: [f64; 2], b: [f64; 2]| a[0] * b[0] + a[1] * b[1];
+        let d = [l.centre[0] - u.centre[0], l.centre[1] - u.centre[1]];
+        Self {
+            m: [
+                [dot(l.t, u.t), dot(l.nu, u.t)],
+                [dot(l.t, u.nu), dot(l.nu, u.nu)],
+            ],
+            o: [dot(d, u.t), dot(d, u.nu)],
+        }
+    }
+    #[inline]
+    fn to_upper(&self, p: [f64; 2]) -> [f64; 2] {
+        [
+            self.m[0][0] * p[0] + self.m[0][1] * p[1] + self.o[0],
+            self.m[1][0] * p[0] + self.m[1][1] * p[1] + self.o[1],
+        ]
+    }
+    #[inline]
+    fn to_lower(&self, p: [f64; 2]) -> [f64; 2] {
+        let d = [p[0] - self.o[0], p[1] - self.o[1]];
+        [
+            self.m[0][0] * d[0] + self.m[1][0] * d[1],
+            self.m[0][1] * d[0] + self.m[1][1] * d[1],
+        ]
+    }
+}
+
+/// A ribbon's four ways round (two from each anchor), made once.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ways {
+    upper: [Way; 2],
+    lower: [Way; 2],
+}
+
+impl Ribbon {
+    /// The ribbon's ways round on a block of outline `o`.
+    pub fn ways(&self, o: &Outline) -> Ways {
+        Ways {
+            upper: [Way::new(o, self.upper, 1), Way::new(o, self.upper, -1)],
+            lower: [Way::new(o, self.lower, 1), Way::new(o, self.lower, -1)],
+        }
+    }
+
+    /// The taut ribbon between `upper` and `lower` (poses) with outline
+    /// `o`: the shorter of the ways round (module doc).
+    pub fn span(&self, o: &Outline, upper: &Pose, lower: &Pose, stiffness: f64) -> Span {
+        self.span_with(&self.ways(o), upper, lower, stiffness)
+    }
+
+    /// [`Ribbon::span`] with the ways round made beforehand.
+    #[inline]
+    pub fn span_with(&self, ways: &Ways, upper: &Pose, lower: &Pose, stiffness: f64) -> Span {
+        let rel = Relative::new(upper, lower);
+        let mut best = (f64::INFINITY, 0, 0, 0, 0);
+        for (a, wu) in ways.upper.iter().enumerate() {
+            for (b, wl) in ways.lower.iter().enumerate() {
+                let (ju, jl) = common_tangent(wu, wl, &rel);
+                let (cu, cl) = (wu.c[ju], wl.c[jl]);
+                let e = rel.to_upper(cl.point);
+                let free = ((e[0] - cu.point[0]).powi(2) + (e[1] - cu.point[1]).powi(2)).sqrt();
+                let length = cu.arc + free + cl.arc;
+                if length < best.0 {
+                    best = (length, a, ju, b, jl);
+                }
+            }
+        }
+        let (length, a, ju, b, jl) = best;
+        let (cu, cl) = (ways.upper[a].c[ju], ways.lower[b].c[jl]);
+        let (d, e) = (upper.point(cu.point), lower.point(cl.point));
+        let v = [e[0] - d[0], e[1] - d[1]];
+        let free = (v[0] * v[0] + v[1] * v[1]).sqrt();
+        let dir = if free > 0.0 {
+            [v[0] / free, v[1] / free]
+        } else {
+            [0.0, 0.0]
+        };
+        Span {
+            d: cu.point,
+            e: cl.point,
+            dir,
+            free,
+            length,
+            tension: (stiffness * (length - self.rest)).max(0.0),
+            wrapped: [cu.arc, cl.arc],
+        }
+    }
+}
+
+/// The common tangent of one way round on each block: alternately the
+/// first candidate on each that leaves towards the other's point, until
+/// neither changes.
+#[inline]
+fn common_tangent(wu: &Way, wl: &Way, rel: &Relative) -> (usize, usize) {
+    let (mut ju, mut jl) = (0, 0);
+    for _ in 0..8 {
+        let nu = wu.first_leaving(rel.to_upper(wl.c[jl].point));
+        let nl = wl.first_leaving(rel.to_lower(wu.c[nu].point));
+        let done = nu == ju && nl == jl;
+        (ju, jl) = (nu, nl);
+        if done {
+            break;
+        }
+    }
+    (ju, jl)
+}
+
+impl Ribbons {
+    /// The ribbons with their ways round made.
+    pub fn new(outline: Outline, ribbons: [Ribbon; 2], stiffness: f64) -> Self {
+        Self {
+            outline,
+            ways: ribbons.map(|r| r.ways(&outline)),
+            ribbons,
+            stiffness,
+            damping: 2.0 * (stiffness * M).sqrt(),
+        }
+    }
+
+    /// These ribbons without their dashpot (forces of the positions only).
+    pub fn undamped(self) -> Self {
+        Self {
+            damping: 0.0,
+            ..self
+        }
+    }
+
+    /// The dashpot's tension c L̇ of a taut ribbon (`span` at poses
+    /// `pu`, `pl` of blocks i, i + 1), clamped so the total stays ≥ 0.
+    #[inline]
+    fn dashpot(&self, i: usize, pu: &Pose, pl: &Pose, s: &Span, v: &[f64]) -> (f64, f64) {
+        if s.tension == 0.0 {
+            return (0.0, 0.0);
+        }
+        let vd = point_velocity(pu, i, s.d, v);
+        let ve = point_velocity(pl, i + 1, s.e, v);
+        let rate = s.dir[0] * (ve[0] - vd[0]) + s.dir[1] * (ve[1] - vd[1]);
+        let extra = (self.damping * rate).max(-s.tension);
+        (extra, rate)
+    }
+
+    /// Adds the ribbons' dashpot forces at (q, v) to `out` (forces).
+    pub fn add_damping(&self, ladder: &Ladder, q: &[f64], v: &[f64], out: &mut [f64]) {
+        if self.damping == 0.0 {
+            return;
+        }
+        self.for_each_span(ladder.n(), q, |i, pu, pl, s| {
+            let (extra, _) = self.dashpot(i, pu, pl, s, v);
+            if extra == 0.0 {
+                return;
+            }
+            let f = [extra * s.dir[0], extra * s.dir[1]];
+            add_point_force(out, pu, i, s.d, f);
+            add_point_force(out, pl, i + 1, s.e, [-f[0], -f[1]]);
+        });
+    }
+
+    /// Power the dashpots dissipate at (q, v), Σ −extra · L̇ ≥ 0.
+    pub fn dissipation(&self, ladder: &Ladder, q: &[f64], v: &[f64]) -> f64 {
+        let mut d = 0.0;
+        if self.damping == 0.0 {
+            return d;
+        }
+        self.for_each_span(ladder.n(), q, |i, pu, pl, s| {
+            let (extra, rate) = self.dashpot(i, pu, pl, s, v);
+            d += extra * rate;
+        });
+        d
+    }
+
+    /// Every ribbon at `q`: junction after junction, ribbon 0 then 1, with
+    /// the two poses.
+    #[inline]
+    pub fn for_each_span(
+        &self,
+        n: usize,
+        q: &[f64],
+        mut f: impl FnMut(usize, &Pose, &Pose, &Span),
+    ) {
+        if n < 2 {
+            return;
+        }
+        let mut pu = Pose::of(q, 0);
+        for i in 0..n - 1 {
+            let pl = Pose::of(q, i + 1);
+            for (r, w) in self.ribbons.iter().zip(&self.ways) {
+                f(i, &pu, &pl, &r.span_with(w, &pu, &pl, self.stiffness));
+            }
+            pu = pl;
+        }
+    }
+
+    /// Every ribbon at `q`: (junction, span).
+    pub fn spans(&self, n: usize, q: &[f64]) -> Vec<(usize, Span)> {
+        let mut out = Vec::new();
+        self.for_each_span(n, q, |i, _, _, s| out.push((i, *s)));
+        out
+    }
+
+    /// Elastic energy Σ ½ κ max(0, L − ℓ)².
+    pub fn elastic_energy(&self, ladder: &Ladder, q: &[f64]) -> f64 {
+        let mut e = 0.0;
+        self.for_each_span(ladder.n(), q, |_, _, _, s| {
+            e += 0.5 * s.tension * s.tension / self.stiffness;
+        });
+        e
+    }
+
+    /// ∂E/∂q of the ribbons' energy and gravity (−m G per X_n) into
+    /// `grad`: T e at D on the upper block, −T e at E on the lower one,
+    /// with the sign of a gradient (the force is −grad).
+    pub fn gradient(&self, ladder: &Ladder, q: &[f64], grad: &mut [f64]) {
+        let g = M * ladder.params.gravity;
+        for (k, x) in grad.iter_mut().enumerate().take(3 * ladder.n()) {
+            *x = if k % 3 == 0 { -g } else { 0.0 };
+        }
+        self.for_each_span(ladder.n(), q, |i, pu, pl, s| {
+            if s.tension == 0.0 {
+                return;
+            }
+            let f = [s.tension * s.dir[0], s.tension * s.dir[1]];
+            // The force on the upper block is +T e at D: its gradient −T e.
+            add_point_force(grad, pu, i, s.d, [-f[0], -f[1]]);
+            add_point_force(grad, pl, i + 1, s.e, f);
+        });
+    }
+
+    /// The ribbons' rest lengths in the hanging column: every block at
+    /// θ = 90°, centres `b` apart (in s), each ribbon glued taut.
+    pub fn glued_in_column(outline: Outline, anchors: [(Anchor, Anchor); 2], b: f64) -> Self {
+        let half_pi = std::f64::consts::FRAC_PI_2;
+        let q = [0.0, 0.0, half_pi, b, 0.0, half_pi];
+        let (pu, pl) = (Pose::of(&q, 0), Pose::of(&q, 1));
+        let ribbons = anchors.map(|(upper, lower)| {
+            let r = Ribbon {
+                upper,
+                lower,
+                rest: 0.0,
+            };
+            Ribbon {
+                rest: r.span(&outline, &pu, &pl, 1.0).length,
+                ..r
+            }
+        });
+        Self::new(outline, ribbons, 1.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Params;
+
+    /// The tank's arrangement: each ribbon glued at one end of a face of
+    /// both blocks (ribbon 0 at the A end of face w = +h, ribbon 1 at the
+    /// B end of face w = −h), b = 1.5 s, d = 0.06 s.
+    pub(crate) fn tank_ribbons(b: f64) -> Ribbons {
+        let o = Outline::new(0.06);
+        let a = Anchor {
+            edge: 3,
+            along: 0.0,
+        };
+        let bb = Anchor {
+            edge: 1,
+            along: 0.0,
+        };
+        Ribbons::glued_in_column(o, [(a, a), (bb, bb)], b)
+    }
+
+    fn ladder(n: usize, b: f64, r: Ribbons) -> Ladder {
+        let p = Params::defaults()
+            .with_n(n)
+            .with_b(b)
+            .with_alpha_deg(90.0)
+            .with_gamma(0.0)
+            .with_gravity(2e-4)
+            .with_inertia((1.0 + 0.06f64.powi(2)) / 12.0)
+            .validated()
+            .unwrap();
+        Ladder::new(p).with_built(crate::model::built::AsBuilt {
+            ribbons: r,
+            contact: None,
+        })
+    }
+
+    fn fd_check(l: &Ladder, r: &Ribbons, q: &[f64]) -> f64 {
+        let mut grad = vec![0.0; q.len()];
+        r.gradient(l, q, &mut grad);
+        let energy = |q: &[f64]| {
+            let x: f64 = q.iter().step_by(3).sum();
+            r.elastic_energy(l, q) - l.params.gravity * x
+        };
+        let h = 1e-7;
+        let mut worst = 0.0_f64;
+        for k in 0..q.len() {
+            let (mut qp, mut qm) = (q.to_vec(), q.to_vec());
+            qp[k] += h;
+            qm[k] -= h;
+            let fd = (energy(&qp) - energy(&qm)) / (2.0 * h);
+            worst = worst.max((fd - grad[k]).abs());
+        }
+        worst
+    }
+
+    #[test]
+    fn rest_lengths_are_the_column_lengths() {
+        let r = tank_ribbons(1.5);
+        let span = (0.5f64.powi(2) + 0.06f64.powi(2)).sqrt();
+        for rb in r.ribbons {
+            assert!((rb.rest - (1.0 + span)).abs() < 1e-14, "{}", rb.rest);
+        }
+    }
+
+    #[test]
+    fn ribbon_forces_are_the_energy_gradient() {
+        // Stretched states round the column, bent every way: the spans
+        // leave from anchors, corners and faces.
+        let b = 1.5;
+        let r0 = tank_ribbons(b);
+        let r = Ribbons::new(r0.outline, r0.ribbons, 7.0);
+        let l = ladder(4, b, r);
+        let mut worst = 0.0_f64;
+        for seed in 0..200 {
+            let mut q = l.ground_state();
+            let s = seed as f64;
+            for (k, x) in q.iter_mut().enumerate() {
+                let amp = if k % 3 == 2 { 1.2 } else { 0.25 };
+                *x += amp * ((k as f64) * 1.7 + s * 0.37).sin();
+            }
+            worst = worst.max(fd_check(&l, &r, &q));
+        }
+        assert!(worst < 1e-6, "{worst}");
+    }
+
+    #[test]
+    fn length_is_continuous_and_smooth_across_a_wrap() {
+        // Turn the lower block through the angle where ribbon 0 starts to
+        // wrap a corner: L and dL/dθ are continuous there.
+        let b = 1.5;
+        let r = tank_ribbons(b);
+        let o = r.outline;
+        let mut q = [0.0, 0.0, 1.0, b, 0.0, 1.0];
+        let len = |q: &[f64; 6]| r.ribbons[0].span(&o, &Pose::of(q, 0), &Pose::of(q, 1), 1.0);
+        let mut wraps = 0;
+        let mut prev = len(&q);
+        let dth = 1e-4;
+        for _ in 0..60_000 {
+            q[5] += dth;
+            let s = len(&q);
+            let jump = (s.length - prev.length).abs();
+            assert!(jump < 2e-4, "{jump}");
+            if (s.wrapped[0] - prev.wrapped[0]).abs() > 1e-12
+                || (s.wrapped[1] - prev.wrapped[1]).abs() > 1e-12
+            {
+                wraps += 1;
+            }
+            prev = s;
+        }
+        assert!(wraps >= 2, "{wraps}");
+    }
+}
+
+#[cfg(test)]
+mod dashpot_tests {
+    use super::tests::tank_ribbons;
+    use super::*;
+    use crate::model::Params;
+
+    #[test]
+    fn the_dashpot_dissipates_what_its_forces_take() {
+        let b = 1.5;
+        let r = tank_ribbons(b);
+        let p = Params::defaults()
+            .with_n(3)
+            .with_b(b)
+            .with_alpha_deg(90.0)
+            .with_gamma(0.0)
+            .with_gravity(2e-4)
+            .with_inertia(0.1)
+            .validated()
+            .unwrap();
+        let l = Ladder::new(p);
+        let mut q = l.ground_state();
+        q[3] += 0.01;
+        q[6] += 0.013;
+        q[5] += 0.05;
+        for s in [1.0, -1.0, 0.2] {
+            let v: Vec<f64> = (0..q.len())
+                .map(|k| s * 0.01 * ((k as f64) * 0.7).sin())
+                .collect();
+            let mut f = vec![0.0; q.len()];
+            r.add_damping(&l, &q, &v, &mut f);
+            let power: f64 = f.iter().zip(&v).map(|(a, b)| a * b).sum();
+            let d = r.dissipation(&l, &q, &v);
+            assert!(d >= 0.0 && (power + d).abs() < 1e-14, "{power} {d}");
+        }
+    }
+}

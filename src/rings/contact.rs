@@ -1,0 +1,315 @@
+//! Contact between two rings, tube against tube. Two wires touch where
+//! the distance between their centre circles has a local minimum below
+//! 2r. The distance from a point p to a circle (radius R, centre c,
+//! normal n) is closed form, √((ρ − R)² + h²) with ρ and h p's radial and
+//! axial coordinates in the circle's frame; the minima over the angle
+//! along the first circle are found by sampling it at [`SAMPLES`] angles
+//! and refining each sampled minimum by successive parabolas. The force
+//! at a contact of overlap δ = 2r − d is Hertz's, k δ^{3/2}, with
+//! Hunt–Crossley damping (1 + χ δ̇), and regularised Coulomb friction
+//! μ F_n against the sliding velocity (docs/rings.md cites the
+//! coefficients). Every operation commutes with the mirror x → −x (the
+//! sample angles are symmetric under θ → π − θ, the refinement works in
+//! an offset from the sample), so a mirrored chain feels mirrored forces
+//! bit for bit.
+
+use super::math::{self, M3, V3};
+
+/// Sample angles along a ring's centre circle.
+pub const SAMPLES: usize = 24;
+/// Parabola refinements of each sampled minimum.
+const REFINEMENTS: usize = 4;
+/// Contacts kept per pair of rings (the deepest).
+pub const MAX_CONTACTS: usize = 2;
+
+/// The sample angles θ_j = (j + ½) 2π/M as (cos, sin), built from the
+/// first quadrant so that the table is exactly symmetric under θ → −θ and
+/// θ → π − θ.
+pub fn sample_table() -> [(f64, f64); SAMPLES] {
+    let quarter = SAMPLES / 4;
+    let mut t = [(0.0, 0.0); SAMPLES];
+    for j in 0..quarter {
+        let a = (j as f64 + 0.5) * std::f64::consts::TAU / SAMPLES as f64;
+        let (c, s) = (a.cos(), a.sin());
+        t[j] = (c, s);
+        t[2 * quarter - 1 - j] = (-c, s);
+        t[2 * quarter + j] = (-c, -s);
+        t[SAMPLES - 1 - j] = (c, -s);
+    }
+    t
+}
+
+/// One ring's pose for contact: centre, rotation (body → world), radius.
+#[derive(Clone, Copy, Debug)]
+pub struct Circle {
+    pub c: V3,
+    pub rot: M3,
+    pub radius: f64,
+}
+
+impl Circle {
+    /// The world point at (cos θ, sin θ) on the centre circle.
+    pub fn point(&self, cs: (f64, f64)) -> V3 {
+        let b = [self.radius * cs.0, self.radius * cs.1, 0.0];
+        math::add(self.c, math::mul_mv(&self.rot, b))
+    }
+
+    /// The point of this circle nearest to `p` and the distance to it
+    /// (`None` on the axis, where every point is as near).
+    pub fn nearest(&self, p: V3) -> Option<(V3, f64)> {
+        let local = math::mul_mtv(&self.rot, math::sub(p, self.c));
+        let rho = (local[0] * local[0] + local[1] * local[1]).sqrt();
+        if rho <= 0.0 {
+            return None;
+        }
+        let k = self.radius / rho;
+        let on = [k * local[0], k * local[1], 0.0];
+        let q = math::add(self.c, math::mul_mv(&self.rot, on));
+        let d = ((rho - self.radius).powi(2) + local[2] * local[2]).sqrt();
+        Some((q, d))
+    }
+
+    /// Distance from `p` to the circle.
+    fn distance(&self, p: V3) -> f64 {
+        self.distance2(p).sqrt()
+    }
+
+    /// Squared distance from `p` to the circle.
+    fn distance2(&self, p: V3) -> f64 {
+        let local = math::mul_mtv(&self.rot, math::sub(p, self.c));
+        let rho = (local[0] * local[0] + local[1] * local[1]).sqrt();
+        (rho - self.radius).powi(2) + local[2] * local[2]
+    }
+}
+
+/// A touching point: on circle a (`p`), nearest on circle b (`q`), the
+/// distance between them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Touch {
+    pub p: V3,
+    pub q: V3,
+    pub d: f64,
+}
+
+/// The local minima of the distance between circles `a` and `b` below
+/// `reach` (2r), the deepest first, at most [`MAX_CONTACTS`], appended to
+/// `out` (no allocation: this runs for every near pair at every step).
+pub fn touches_into(
+    a: &Circle,
+    b: &Circle,
+    reach: f64,
+    table: &[(f64, f64); SAMPLES],
+    out: &mut impl FnMut(Touch),
+) {
+    // Squared distances: their minima are the distance's. Every third
+    // sample first (a set the mirror keeps): if all are farther than 2r
+    // plus what the distance may fall between them, R·π/8, no contact.
+    let mut d2 = [0.0; SAMPLES];
+    let far = reach + a.radius * std::f64::consts::PI / 8.0;
+    let mut near = false;
+    for j in (1..SAMPLES).step_by(3) {
+        d2[j] = b.distance2(a.point(table[j]));
+        near |= d2[j] < far * far;
+    }
+    if !near {
+        return;
+    }
+    for j in (0..SAMPLES).filter(|j| j % 3 != 1) {
+        d2[j] = b.distance2(a.point(table[j]));
+    }
+    // Between samples the distance falls at most R·π/M below a sample.
+    let slack = a.radius * std::f64::consts::PI / SAMPLES as f64;
+    let gate = (reach + slack) * (reach + slack);
+    let mut found = [None::<Touch>; MAX_CONTACTS + 1];
+    for j in 0..SAMPLES {
+        let (prev, next) = (d2[(j + SAMPLES - 1) % SAMPLES], d2[(j + 1) % SAMPLES]);
+        if d2[j] > prev || d2[j] > next || d2[j] >= gate {
+            continue;
+        }
+        let Some(t) = refine(a, b, table[j]) else {
+            continue;
+        };
+        // Two samples on one plateau refine to one contact: keep the deeper.
+        if t.d >= reach {
+            continue;
+        }
+        if let Some(k) = found
+            .iter()
+            .position(|f| f.is_some_and(|f| math::norm(math::sub(f.p, t.p)) <= slack))
+        {
+            if t.d < found[k].map_or(f64::INFINITY, |f| f.d) {
+                found[k] = Some(t);
+            }
+            continue;
+        }
+        // Insert by depth, dropping the shallowest past the capacity.
+        let mut item = Some(t);
+        for slot in found.iter_mut() {
+            match (*slot, item) {
+                (None, _) => {
+                    *slot = item;
+                    break;
+                }
+                (Some(f), Some(i)) if i.d < f.d => {
+                    *slot = Some(i);
+                    item = Some(f);
+                }
+                _ => {}
+            }
+        }
+    }
+    for t in found.iter().take(MAX_CONTACTS).flatten() {
+        out(*t);
+    }
+}
+
+/// [`touches_into`] as a vector.
+pub fn touches(a: &Circle, b: &Circle, reach: f64, table: &[(f64, f64); SAMPLES]) -> Vec<Touch> {
+    let mut v = Vec::new();
+    touches_into(a, b, reach, table, &mut |t| v.push(t));
+    v
+}
+
+/// The minimum near the sample at `cs`: successive parabolas through the
+/// distance at offsets −h, 0, +h, h shrinking fourfold.
+fn refine(a: &Circle, b: &Circle, cs: (f64, f64)) -> Option<Touch> {
+    let at = |t: f64| {
+        let (ct, st) = math::cos_sin(t);
+        a.point((cs.0 * ct - cs.1 * st, cs.1 * ct + cs.0 * st))
+    };
+    let f = |t: f64| b.distance(at(t));
+    let mut t = 0.0;
+    let mut h = 0.5 * std::f64::consts::TAU / SAMPLES as f64;
+    let mut f0 = f(t);
+    for _ in 0..REFINEMENTS {
+        let (fm, fp) = (f(t - h), f(t + h));
+        let curv = (fm + fp) - 2.0 * f0;
+        let step = if curv > 0.0 {
+            (h * (fm - fp) / (2.0 * curv)).clamp(-h, h)
+        } else if fm < fp {
+            -h
+        } else if fp < fm {
+            h
+        } else {
+            0.0
+        };
+        let f_new = f(t + step);
+        if f_new <= f0 {
+            t += step;
+            f0 = f_new;
+        }
+        h *= 0.25;
+    }
+    let p = at(t);
+    let (q, d) = b.nearest(p)?;
+    Some(Touch { p, q, d })
+}
+
+/// Contact coefficients.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Law {
+    /// Hertz stiffness k, N/m^{3/2}.
+    pub k: f64,
+    /// Hunt–Crossley damping χ, s/m.
+    pub chi: f64,
+    /// Coulomb friction coefficient μ.
+    pub mu: f64,
+    /// Regularisation speed of friction, m/s.
+    pub slip: f64,
+    /// Contact reach: 2r, m.
+    pub reach: f64,
+}
+
+impl Law {
+    /// The force on ring a at a touch (on b the opposite), given the
+    /// velocity of a's material point relative to b's there: normal
+    /// k δ^{3/2}(1 + χ δ̇) ≥ 0 along q → p, and friction against the
+    /// sliding velocity, μ F_n v_t / √(|v_t|² + v_ε²).
+    pub fn force(&self, touch: &Touch, v_rel: V3) -> V3 {
+        let delta = self.reach - touch.d;
+        if delta <= 0.0 || touch.d <= 0.0 {
+            return [0.0; 3];
+        }
+        let n = math::scale(math::sub(touch.p, touch.q), 1.0 / touch.d);
+        let vn = math::dot(v_rel, n);
+        let f_n = (self.k * delta * delta.sqrt() * (1.0 - self.chi * vn)).max(0.0);
+        let v_t = math::axpy(v_rel, -vn, n);
+        let slide = (math::dot(v_t, v_t) + self.slip * self.slip).sqrt();
+        math::axpy(math::scale(n, f_n), -self.mu * f_n / slide, v_t)
+    }
+
+    /// Elastic energy stored at a touch, J: (2/5) k δ^{5/2}.
+    pub fn energy(&self, touch: &Touch) -> f64 {
+        let delta = (self.reach - touch.d).max(0.0);
+        0.4 * self.k * delta * delta * delta.sqrt()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rings::math::Quat;
+
+    fn ring(c: V3, q: Quat) -> Circle {
+        Circle {
+            c,
+            rot: q.matrix(),
+            radius: 0.0125,
+        }
+    }
+
+    /// The refined minimum against a brute-force scan of 200 000 angles.
+    #[test]
+    fn minima_match_a_fine_scan() {
+        let a = ring(
+            [0.0, 0.0, 0.0],
+            Quat::axis_angle([0.0, 1.0, 0.0], 1.5707963),
+        );
+        let b = ring(
+            [0.0004, 0.0011, -0.0112],
+            Quat::axis_angle([0.3, 0.1, 0.95].map(|c: f64| c / 1.0044898), 1.1),
+        );
+        let table = sample_table();
+        let found = touches(&a, &b, 0.05, &table);
+        let mut best = f64::INFINITY;
+        for k in 0..200_000 {
+            let t = k as f64 / 200_000.0 * std::f64::consts::TAU;
+            best = best.min(b.distance(a.point((t.cos(), t.sin()))));
+        }
+        assert!(!found.is_empty());
+        assert!((found[0].d - best).abs() < 1e-9, "{} vs {best}", found[0].d);
+    }
+
+    #[test]
+    fn the_table_is_mirror_symmetric() {
+        let t = sample_table();
+        for j in 0..SAMPLES {
+            let m = t[(SAMPLES + SAMPLES / 2 - 1 - j) % SAMPLES];
+            assert_eq!((-t[j].0, t[j].1), m);
+            let a = (j as f64 + 0.5) * std::f64::consts::TAU / SAMPLES as f64;
+            assert!((t[j].0 - a.cos()).abs() < 1e-15 && (t[j].1 - a.sin()).abs() < 1e-15);
+        }
+    }
+
+    /// The force is Hertz's: its work over a small approach equals the
+    /// change of the stored energy (no damping, no friction).
+    #[test]
+    fn normal_force_is_the_gradient_of_the_energy() {
+        let law = Law {
+            k: 1e7,
+            chi: 0.0,
+            mu: 0.0,
+            slip: 0.01,
+            reach: 0.002,
+        };
+        let touch = |d: f64| Touch {
+            p: [0.0, 0.0, d],
+            q: [0.0; 3],
+            d,
+        };
+        let (d, h) = (0.0019, 1e-9);
+        let f = law.force(&touch(d), [0.0; 3])[2];
+        let de = (law.energy(&touch(d - h)) - law.energy(&touch(d + h))) / (2.0 * h);
+        assert!((f - de).abs() < 1e-6 * f.abs(), "{f} vs {de}");
+    }
+}

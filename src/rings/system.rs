@@ -1,0 +1,324 @@
+//! The ring chain in motion: bodies, forces (gravity, contact, tapes) and
+//! the step. The step is velocity Verlet (kick, drift, kick) with the
+//! exact rotation of a symmetric top in the drift ([`Body::drift`]); the
+//! forces are evaluated once per step, at the new positions and the
+//! half-step velocities. The held ring follows the hand ([`super::hand`]).
+//! Pairs are visited in index order and forces summed in that order, so
+//! a run is deterministic and the mirrored chain its exact mirror image.
+
+use super::body::{Body, Inertia};
+use super::chain::{G, RingChain};
+use super::contact::{self, Circle, Law, SAMPLES, Touch};
+use super::guard;
+use super::hand::Hand;
+use super::math::{self, M3, V3};
+use crate::error::{Error, Result};
+
+/// A tape's joint: material points `a` on ring i and `b` on ring j (body
+/// frames) held together by a stiff spring with critical damping.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pin {
+    pub i: usize,
+    pub j: usize,
+    pub a: V3,
+    pub b: V3,
+}
+
+/// Counters of a run.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Pairs of rings checked by the linking guard (pair checks).
+    pub guard_checks: u64,
+    /// Largest overlap of two tubes, as a fraction of r.
+    pub max_overlap: f64,
+    /// Pairs of rings tested for contact (near enough to touch), over all
+    /// steps.
+    pub pair_evaluations: u64,
+    /// Steps taken.
+    pub steps: u64,
+}
+
+/// The chain and its state.
+#[derive(Clone, Debug)]
+pub struct System {
+    pub chain: RingChain,
+    pub inertia: Inertia,
+    pub law: Law,
+    /// Linked pairs (i < j), sorted.
+    pub links: Vec<[usize; 2]>,
+    linked: Vec<bool>,
+    pub pins: Vec<Pin>,
+    /// Spring constant (N/m) and damping (N s/m) of a pin.
+    pub pin_k: f64,
+    pub pin_c: f64,
+    pub bodies: Vec<Body>,
+    pub hand: Hand,
+    pub t: f64,
+    pub dt: f64,
+    table: [(f64, f64); SAMPLES],
+    force: Vec<V3>,
+    torque: Vec<V3>,
+    pub stats: Stats,
+}
+
+/// The fraction of r past which an overlap fails the run.
+pub const MAX_OVERLAP: f64 = 0.5;
+
+impl System {
+    /// A system from its parts (see [`super::build`]).
+    pub fn new(chain: RingChain, bodies: Vec<Body>, hand: Hand, law: Law, dt: f64) -> System {
+        let n = chain.n;
+        let links = chain.linked_pairs();
+        let mut linked = vec![false; n * n];
+        for &[a, b] in &links {
+            linked[a * n + b] = true;
+        }
+        let (i_d, i_a) = chain.inertia();
+        let inertia = Inertia {
+            m: chain.mass(),
+            i_d,
+            i_a,
+        };
+        System {
+            chain,
+            inertia,
+            law,
+            links,
+            linked,
+            pins: Vec::new(),
+            pin_k: 0.0,
+            pin_c: 0.0,
+            bodies,
+            hand,
+            t: 0.0,
+            dt,
+            table: contact::sample_table(),
+            force: vec![[0.0; 3]; n],
+            torque: vec![[0.0; 3]; n],
+            stats: Stats::default(),
+        }
+    }
+
+    pub fn n(&self) -> usize {
+        self.bodies.len()
+    }
+
+    /// Whether the topology links rings a < b.
+    pub fn is_linked(&self, a: usize, b: usize) -> bool {
+        self.linked[a.min(b) * self.n() + a.max(b)]
+    }
+
+    /// Ring k's centre circle.
+    pub fn circle(&self, k: usize, rot: &M3) -> Circle {
+        Circle {
+            c: self.bodies[k].x,
+            rot: *rot,
+            radius: self.chain.major_radius,
+        }
+    }
+
+    /// Whether rings i and j are near enough to touch.
+    fn near(&self, i: usize, j: usize) -> bool {
+        let reach = 2.0 * (self.chain.major_radius + self.chain.tube_radius);
+        let d = math::sub(self.bodies[i].x, self.bodies[j].x);
+        math::dot(d, d) < reach * reach
+    }
+
+    /// Angular velocity of each ring (the held one's from the hand).
+    pub fn omegas(&self, rots: &[M3]) -> Vec<V3> {
+        (0..self.n())
+            .map(|k| {
+                if k == self.chain.held {
+                    self.hand.omega(self.t)
+                } else {
+                    self.bodies[k].omega(&rots[k], &self.inertia)
+                }
+            })
+            .collect()
+    }
+
+    /// Every touch of every near pair, in pair order.
+    pub fn touches(&self, rots: &[M3]) -> Vec<(usize, usize, Touch)> {
+        self.touches_counted(rots).0
+    }
+
+    /// [`System::touches`] and the number of near pairs tested.
+    fn touches_counted(&self, rots: &[M3]) -> (Vec<(usize, usize, Touch)>, u64) {
+        let mut out = Vec::new();
+        let mut pairs = 0;
+        for i in 0..self.n() {
+            for j in i + 1..self.n() {
+                if !self.near(i, j) {
+                    continue;
+                }
+                pairs += 1;
+                let (a, b) = (self.circle(i, &rots[i]), self.circle(j, &rots[j]));
+                contact::touches_into(&a, &b, self.law.reach, &self.table, &mut |t| {
+                    out.push((i, j, t))
+                });
+            }
+        }
+        (out, pairs)
+    }
+
+    /// Forces and torques at the current state, into `self.force`/`torque`.
+    fn evaluate(&mut self) {
+        let rots: Vec<M3> = self.bodies.iter().map(|b| b.q.matrix()).collect();
+        let omega = self.omegas(&rots);
+        let weight = [0.0, 0.0, -self.inertia.m * G];
+        self.force.iter_mut().for_each(|f| *f = weight);
+        self.torque.iter_mut().for_each(|t| *t = [0.0; 3]);
+        let (touches, pairs) = self.touches_counted(&rots);
+        self.stats.pair_evaluations += pairs;
+        for (i, j, touch) in touches {
+            let c = math::scale(math::add(touch.p, touch.q), 0.5);
+            let v_rel = math::sub(
+                self.bodies[i].velocity_at(omega[i], c),
+                self.bodies[j].velocity_at(omega[j], c),
+            );
+            let f = self.law.force(&touch, v_rel);
+            self.apply(i, c, f);
+            self.apply(j, c, math::scale(f, -1.0));
+            let overlap = (self.law.reach - touch.d) / self.chain.tube_radius;
+            self.stats.max_overlap = self.stats.max_overlap.max(overlap);
+        }
+        for k in 0..self.pins.len() {
+            let pin = self.pins[k];
+            let (pa, pb) = self.pin_points(&pin, &rots);
+            let dv = math::sub(
+                self.bodies[pin.i].velocity_at(omega[pin.i], pa),
+                self.bodies[pin.j].velocity_at(omega[pin.j], pb),
+            );
+            let stretch = math::sub(pa, pb);
+            let f = math::axpy(math::scale(stretch, -self.pin_k), -self.pin_c, dv);
+            self.apply(pin.i, pa, f);
+            self.apply(pin.j, pb, math::scale(f, -1.0));
+        }
+    }
+
+    /// World positions of a pin's two material points.
+    pub fn pin_points(&self, pin: &Pin, rots: &[M3]) -> (V3, V3) {
+        let pa = math::add(self.bodies[pin.i].x, math::mul_mv(&rots[pin.i], pin.a));
+        let pb = math::add(self.bodies[pin.j].x, math::mul_mv(&rots[pin.j], pin.b));
+        (pa, pb)
+    }
+
+    fn apply(&mut self, k: usize, at: V3, f: V3) {
+        self.force[k] = math::add(self.force[k], f);
+        let arm = math::sub(at, self.bodies[k].x);
+        self.torque[k] = math::add(self.torque[k], math::cross(arm, f));
+    }
+
+    /// Half a kick: v += h F/m, L += h τ (the held ring excepted).
+    fn kick(&mut self, h: f64) {
+        let m = self.inertia.m;
+        for k in 0..self.n() {
+            if k == self.chain.held {
+                continue;
+            }
+            let b = &mut self.bodies[k];
+            b.v = math::axpy(b.v, h / m, self.force[k]);
+            b.l = math::axpy(b.l, h, self.torque[k]);
+        }
+    }
+
+    /// Prepares the first step (forces at the start).
+    pub fn start(&mut self) {
+        self.place_held();
+        self.evaluate();
+    }
+
+    fn place_held(&mut self) {
+        let k = self.chain.held;
+        self.bodies[k] = self.hand.body(self.t);
+    }
+
+    /// One step of dt; fails on an overlap past [`MAX_OVERLAP`] or a
+    /// non-finite state.
+    pub fn step(&mut self) -> Result<()> {
+        let dt = self.dt;
+        self.kick(0.5 * dt);
+        for k in 0..self.n() {
+            if k != self.chain.held {
+                let inertia = self.inertia;
+                self.bodies[k].drift(dt, &inertia);
+            }
+        }
+        self.t += dt;
+        self.place_held();
+        self.evaluate();
+        self.kick(0.5 * dt);
+        self.stats.steps += 1;
+        if self.stats.max_overlap > MAX_OVERLAP {
+            return Err(Error::failed(format!(
+                "the ring chain failed at t = {:.4} s: two tubes overlapped by {:.0} % of r (the \
+                 contact no longer resembles steel); hint: a smaller `overlap` (stiffer contact) \
+                 or a smaller dt",
+                self.t,
+                100.0 * self.stats.max_overlap
+            )));
+        }
+        if !self
+            .bodies
+            .iter()
+            .all(|b| b.x.iter().chain(&b.v).all(|c| c.is_finite()))
+        {
+            return Err(Error::failed(format!(
+                "the ring chain diverged at t = {:.4} s (dt = {:.3e} s); hint: a smaller dt",
+                self.t, self.dt
+            )));
+        }
+        Ok(())
+    }
+
+    /// The linking guard: every linked pair still linked, every other
+    /// near pair still apart; the first change fails the run.
+    pub fn check_links(&mut self) -> Result<()> {
+        let rots: Vec<M3> = self.bodies.iter().map(|b| b.q.matrix()).collect();
+        for i in 0..self.n() {
+            for j in i + 1..self.n() {
+                let listed = self.is_linked(i, j);
+                if !listed && !self.near(i, j) {
+                    continue;
+                }
+                self.stats.guard_checks += 1;
+                let now = guard::linked(&self.circle(i, &rots[i]), &self.circle(j, &rots[j]));
+                if now != listed {
+                    return Err(Error::failed(format!(
+                        "the linking guard failed at t = {:.4} s: rings {i} and {j} {} (a ring \
+                         passed through another's tube, so the chain is no longer the one \
+                         asked); hint: a smaller dt or a stiffer contact (smaller `overlap`)",
+                        self.t,
+                        if listed {
+                            "came apart"
+                        } else {
+                            "became linked"
+                        }
+                    )));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Total energy, J: kinetic and potential of the free rings, elastic
+    /// energy of contacts and tapes (the held ring's is the hand's).
+    pub fn energy(&self) -> f64 {
+        let rots: Vec<M3> = self.bodies.iter().map(|b| b.q.matrix()).collect();
+        let mut e = 0.0;
+        for (k, b) in self.bodies.iter().enumerate() {
+            if k != self.chain.held {
+                e += b.kinetic(&rots[k], &self.inertia) + self.inertia.m * G * b.x[2];
+            }
+        }
+        for (_, _, touch) in self.touches(&rots) {
+            e += self.law.energy(&touch);
+        }
+        for pin in &self.pins {
+            let (pa, pb) = self.pin_points(pin, &rots);
+            let s = math::sub(pa, pb);
+            e += 0.5 * self.pin_k * math::dot(s, s);
+        }
+        e
+    }
+}

@@ -1,0 +1,223 @@
+//! The toy as built (docs/experiments.md, "The toy as built"): blocks
+//! with thickness held by ribbons that wrap round their ends, in the water
+//! tank. Each test checks physics: the wave runs and every plate ends
+//! turned over; the stiff ribbons are shown stiff (k and 2k); the energy
+//! budget closes; a mirrored apparatus moves as the mirror image; the
+//! arrangement that breaks the kink–antikink symmetry is named.
+
+use jacobs_ladder::model::ladder::itheta;
+use jacobs_ladder::model::media;
+use jacobs_ladder::scene::file::parse;
+use jacobs_ladder::sim::speed::wave_speed;
+use jacobs_ladder::sim::{self, Drive, IntegratorConfig, IntegratorKind, Protocol};
+
+/// The tank of docs/experiments.md with ribbons and `extra` keys.
+fn tank(extra: &str, alpha: f64, motor: f64, duration: f64, n: usize) -> String {
+    format!(
+        "[model]\nalpha = {alpha}\nn = {n}\n[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\n\
+         density = 1.2\nmedium = \"water\"\nmedium_density = 1.0\nbuoyancy = true\n\
+         ribbons = true\nmotor = {motor}\nduration = {duration}\n{extra}\n[output]\nkind = \"data\"\n"
+    )
+}
+
+fn rk4(dt: f64) -> IntegratorConfig {
+    IntegratorConfig::fixed(IntegratorKind::Rk4, dt)
+}
+
+/// Arrival times (s) and the whole-chain speed (cm/s) of a tank run.
+fn run(text: &str, dt: f64) -> (Vec<Option<f64>>, Option<f64>, Vec<f64>) {
+    let scene = parse(text, "t", "t").unwrap();
+    let c = scene
+        .apparatus
+        .as_ref()
+        .unwrap()
+        .conversion
+        .clone()
+        .unwrap();
+    let sc = scene.scenario().unwrap();
+    let traj = sim::simulate(&sc, &[], &rk4(dt)).unwrap();
+    let speed = wave_speed(&traj.arrival_times).map(|v| v * c.cm_per_s);
+    let seconds = traj
+        .arrival_times
+        .iter()
+        .map(|t| t.map(|t| t * c.tau_s))
+        .collect();
+    let n = sc.ladder.n();
+    let last = traj.final_state.q.clone();
+    let angles = (0..n).map(|i| last[itheta(i)].to_degrees()).collect();
+    (seconds, speed, angles)
+}
+
+#[test]
+fn the_tank_with_ribbons_turns_every_plate_over_in_turn() {
+    // Kink at 0.2 Hz: every plate flips, one after the other down the
+    // chain, and ends turned over (θ near −90°: the column upside down).
+    let text = tank("added_mass = true\ndrag = true\n", 86.0, 0.2, 20.0, 11);
+    let (t, c, angles) = run(&text, 0.125);
+    println!("arrivals (s) {t:?}\nspeed {c:?} cm/s\nfinal θ {angles:?}");
+    let t: Vec<f64> = t.iter().map(|t| t.expect("every plate flips")).collect();
+    for w in t[..10].windows(2) {
+        assert!(w[1] > w[0], "in turn: {t:?}");
+    }
+    for a in &angles[..10] {
+        assert!((a + 90.0).abs() < 10.0, "{angles:?}");
+    }
+    let c = c.unwrap();
+    assert!(c > 3.0 && c < 15.0, "{c}");
+}
+
+#[test]
+fn stiff_ribbons_k_and_2k_agree() {
+    // "Stiff" ribbons (κ = k, G = 2e-4): doubling k moves the whole-chain
+    // speed by less than 3 %.
+    let keys = "added_mass = true\ndrag = true\n";
+    let (_, c1, _) = run(&tank(keys, 86.0, 0.4, 14.0, 11), 0.125);
+    let (_, c2, _) = run(
+        &tank(
+            &format!("{keys}stiff_gravity = 1e-4\n"),
+            86.0,
+            0.4,
+            14.0,
+            11,
+        ),
+        0.125,
+    );
+    let (c1, c2) = (c1.unwrap(), c2.unwrap());
+    println!("k: {c1} cm/s, 2k: {c2} cm/s");
+    assert!((c1 / c2 - 1.0).abs() < 3e-2, "{c1} {c2}");
+}
+
+#[test]
+fn the_ribbon_tank_converges_in_its_step() {
+    // RK4 at 0.125 τ against 0.0625 τ: every arrival within 0.02 s.
+    let text = tank("added_mass = true\ndrag = true\n", 86.0, 0.4, 14.0, 11);
+    let (a, _, _) = run(&text, 0.125);
+    let (b, _, _) = run(&text, 0.0625);
+    for (x, y) in a.iter().zip(&b) {
+        let (x, y) = (x.unwrap(), y.unwrap());
+        assert!((x - y).abs() < 0.02, "{a:?} {b:?}");
+    }
+}
+
+#[test]
+fn the_energy_budget_of_the_ribbon_tank_closes() {
+    // Without drag: the energy of the free blocks (kinetic with added
+    // mass, ribbons, contact overlaps, gravity) changes by the work done
+    // on block 1 less what the ribbons' dashpots and the contacts
+    // dissipated. Work on block 1: θ̇₁ (∂U/∂θ₁ − Q₁), Q₁ the dashpots'
+    // and contacts' torque on it.
+    let text = tank(
+        "added_mass = true\ncontact = \"acrylic\"\n",
+        86.0,
+        0.4,
+        8.0,
+        6,
+    );
+    let scene = parse(&text, "t", "t").unwrap();
+    let sc = scene.scenario().unwrap();
+    let (ladder, built) = (sc.ladder, sc.ladder.built.unwrap());
+    let t_d = sc.protocol.drive().unwrap().end();
+    let h = 0.25;
+    let steps = |span: f64| 2 * (span / h / 2.0).ceil() as usize;
+    let (n1, n2) = (steps(t_d), steps(sc.t_end - t_d));
+    let (h1, h2) = (t_d / n1 as f64, (sc.t_end - t_d) / n2 as f64);
+    let mut times: Vec<f64> = (0..=n1).map(|k| k as f64 * h1).collect();
+    times.extend((1..=n2).map(|k| t_d + k as f64 * h2));
+    // Contact (k_c = 1000 k) needs RK4 well inside ω dt < 2.8: 1/64 τ.
+    let traj = sim::simulate(&sc, &times, &rk4(h1.min(h2) / 16.0)).unwrap();
+    let terms = ladder.terms;
+    let energy = |q: &[f64], v: &[f64]| {
+        media::kinetic_energy(&ladder, &terms, q, v, true)
+            + media::potential_energy(&ladder, &terms, q)
+    };
+    let dof = 3 * ladder.n();
+    let (mut drive, mut lost) = (Vec::new(), Vec::new());
+    for (q, v) in traj.states.iter().zip(&traj.velocities) {
+        let mut grad = vec![0.0; dof];
+        terms.links.gradient(&ladder, q, &mut grad);
+        let mut nc = vec![0.0; dof];
+        built.ribbons.add_damping(&ladder, q, v, &mut nc);
+        if let Some(c) = built.contact {
+            c.add_forces(&ladder, &built.ribbons.outline, q, v, &mut nc);
+        }
+        drive.push(v[itheta(0)] * (grad[itheta(0)] - nc[itheta(0)]));
+        lost.push(built.dissipation(&ladder, q, v));
+    }
+    let simpson = |y: &[f64], h: f64| {
+        let n = y.len() - 1;
+        let inner: f64 = (1..n)
+            .map(|k| if k % 2 == 1 { 4.0 * y[k] } else { 2.0 * y[k] })
+            .sum();
+        (y[0] + y[n] + inner) * h / 3.0
+    };
+    let work = |y: &[f64]| simpson(&y[..=n1], h1) + simpson(&y[n1..], h2);
+    let (w, d) = (work(&drive), work(&lost));
+    let e0 = energy(&traj.states[0], &traj.velocities[0]);
+    let e1 = energy(traj.states.last().unwrap(), traj.velocities.last().unwrap());
+    let residual = (e1 - e0) - (w - d);
+    println!(
+        "ΔE {:.6e}, work on block 1 {w:.6e}, dissipated {d:.6e}, residual {residual:.3e}",
+        e1 - e0
+    );
+    assert!(d > 0.01 * w, "{d} {w}");
+    assert!(residual.abs() < 1e-3 * w, "{residual:e} of {w:e}");
+}
+
+#[test]
+fn a_mirrored_apparatus_moves_as_the_mirror_image() {
+    // y → −y maps a block at θ to π − θ (t keeps its x part, ν turns
+    // over) and each ribbon to the other face (`ribbon_mirror`); block 1
+    // then turns the other way round, π/2 → 3π/2. Every arrival agrees.
+    let text = tank("added_mass = true\ndrag = true\n", 86.0, 0.4, 10.0, 6);
+    let scene = parse(&text, "t", "t").unwrap();
+    let sc = scene.scenario().unwrap();
+    let mirrored = parse(
+        &tank(
+            "added_mass = true\ndrag = true\nribbon_mirror = true\n",
+            86.0,
+            0.4,
+            10.0,
+            6,
+        ),
+        "t",
+        "t",
+    )
+    .unwrap()
+    .scenario()
+    .unwrap();
+    let mut sm = sc.clone();
+    sm.ladder = mirrored.ladder;
+    let t_d = sc.protocol.drive().unwrap().end();
+    let half_pi = std::f64::consts::FRAC_PI_2;
+    sm.protocol = Protocol::Driven(Drive::new(vec![(0.0, half_pi), (t_d, 3.0 * half_pi)]).unwrap());
+    let a = sim::simulate(&sc, &[], &rk4(0.125)).unwrap();
+    let b = sim::simulate(&sm, &[], &rk4(0.125)).unwrap();
+    println!("{:?}\n{:?}", a.arrival_times, b.arrival_times);
+    for (x, y) in a.arrival_times.iter().zip(&b.arrival_times) {
+        let (x, y) = (x.unwrap(), y.unwrap());
+        assert!((x - y).abs() < 1e-6 * x, "{x} {y}");
+    }
+    let (qa, qb) = (&a.final_state.q, &b.final_state.q);
+    for i in 0..sc.ladder.n() {
+        assert!((qa[3 * i] - qb[3 * i]).abs() < 1e-6);
+        assert!((qa[3 * i + 1] + qb[3 * i + 1]).abs() < 1e-6);
+    }
+}
+
+#[test]
+fn the_ribbons_that_break_the_kink_antikink_symmetry_are_named() {
+    // The map between kink and antikink (every block turned over, y
+    // mirrored) takes a ribbon glued at x on a face to 1 − x on the same
+    // face: glued at the ends (0 on one face, 1 on the other) both
+    // ribbons break it; glued at mid-face none does.
+    let names = |extra: &str| {
+        let scene = parse(&tank(extra, 86.0, 0.2, 1.0, 4), "t", "t").unwrap();
+        scene.apparatus.unwrap().symmetry_breakers()
+    };
+    let ends = names("");
+    println!("{ends:?}");
+    assert_eq!(ends.len(), 2, "{ends:?}");
+    assert!(ends[0].contains("ribbon 1") && ends[1].contains("ribbon 2"));
+    assert!(names("ribbon_anchors = [0.5, 0.5]\n").is_empty());
+    assert_eq!(names("ribbon_anchors = [0.5, 0.0]\n").len(), 1);
+}

@@ -1,0 +1,366 @@
+//! The double ring chain (paper Fig. 4b, SI Movie 12; docs/rings.md):
+//! the mirror chain, tapes, energy, the linking guard, determinism, bad
+//! input. Each claim is decided from the state of the simulation.
+
+use crate::common::tempdir::TempDir;
+use jacobs_ladder::rings::math::{self, Quat};
+use jacobs_ladder::rings::{self, RingChain, build};
+use std::process::Command;
+
+const BIN: &str = env!("CARGO_BIN_EXE_ladder");
+
+/// A short chain turned early: cheap, and every test's claim in it.
+fn small() -> RingChain {
+    RingChain {
+        n: 12,
+        t_end: 0.8,
+        turn: rings::Turn {
+            start: 0.1,
+            ..Default::default()
+        },
+        ..Default::default()
+    }
+}
+
+/// The mirror image of the chain is its exact mirror image at every
+/// sample (x → −x, q → P q P), and every flip's azimuth is negated: the
+/// opposite helicity.
+#[test]
+fn the_mirror_chain_is_the_mirror_image_bit_for_bit() {
+    let chain = small();
+    let times = rings::run::even_times(chain.t_end, 17);
+    let a = rings::run(&chain, &times).unwrap();
+    let b = rings::run(
+        &RingChain {
+            mirror: true,
+            ..chain.clone()
+        },
+        &times,
+    )
+    .unwrap();
+    assert_eq!(a.samples.len(), b.samples.len());
+    for (sa, sb) in a.samples.iter().zip(&b.samples) {
+        for (ra, rb) in sa.rings.iter().zip(&sb.rings) {
+            assert_eq!(math::mirror(ra.x), rb.x, "t = {}", sa.t);
+            let q = Quat {
+                w: ra.q[0],
+                x: ra.q[1],
+                y: ra.q[2],
+                z: ra.q[3],
+            }
+            .mirrored();
+            assert_eq!(q.as_array(), rb.q, "t = {}", sa.t);
+        }
+        assert_eq!(sa.energy, sb.energy);
+    }
+    assert!(!a.flips.is_empty(), "the turned top ring flips at least");
+    assert_eq!(a.flips.len(), b.flips.len());
+    for (fa, fb) in a.flips.iter().zip(&b.flips) {
+        assert_eq!((fa.ring, fa.t), (fb.ring, fb.t));
+        let back = rings::observe::angle_step(fa.phi, -fb.phi);
+        assert!(
+            back.abs() < 1e-9,
+            "φ {} against the mirror's {}",
+            fa.phi,
+            fb.phi
+        );
+    }
+    for (wa, wb) in a.waves.iter().zip(&b.waves) {
+        assert_eq!(wa.step, -wb.step, "opposite helicity");
+    }
+}
+
+/// Without a drive the energy never grows beyond the integrator's error
+/// (contact and friction only dissipate); with e = 1 and μ = 0 it is
+/// kept to that error.
+#[test]
+fn energy_never_grows_without_a_drive() {
+    let still = rings::Turn {
+        angle: 0.0,
+        ..Default::default()
+    };
+    let chain = RingChain {
+        n: 10,
+        t_end: 0.4,
+        turn: still,
+        ..Default::default()
+    };
+    let times = rings::run::even_times(chain.t_end, 81);
+    let run = rings::run(&chain, &times).unwrap();
+    let e: Vec<f64> = run.samples.iter().map(|s| s.energy).collect();
+    let scale = chain.mass() * rings::chain::G * chain.major_radius * chain.n as f64;
+    for w in e.windows(2) {
+        assert!(
+            w[1] <= w[0] + 1e-4 * scale,
+            "energy grew: {} → {}",
+            w[0],
+            w[1]
+        );
+    }
+    assert!(
+        e[e.len() - 1] < e[0] - 1e-3 * scale,
+        "contact and friction dissipate"
+    );
+    let elastic = RingChain {
+        restitution: 1.0,
+        friction: 0.0,
+        ..chain
+    };
+    let run = rings::run(&elastic, &times).unwrap();
+    let e0 = run.samples[0].energy;
+    for s in &run.samples {
+        assert!(
+            (s.energy - e0).abs() < 2e-3 * scale,
+            "t = {}: {} vs {e0}",
+            s.t,
+            s.energy
+        );
+    }
+}
+
+/// A ring moved through another (a tunnelling forced by hand) fails the
+/// guard with a clear error; a step far too large fails the run (exit 1).
+#[test]
+fn a_tunnelled_ring_is_caught() {
+    let mut sys = build::build(&small()).unwrap();
+    sys.check_links().unwrap();
+    sys.bodies[5].x[0] += 0.05;
+    let e = sys.check_links().unwrap_err();
+    assert!(e.is_failed_run());
+    assert!(e.to_string().contains("linking guard failed"), "{e}");
+    assert!(
+        e.to_string().contains("rings 3 and 5") || e.to_string().contains("and 5 came apart"),
+        "{e}"
+    );
+    let huge = RingChain {
+        dt: 2e-3,
+        ..small()
+    };
+    let e = rings::run(&huge, &[]).unwrap_err();
+    assert!(e.is_failed_run(), "{e}");
+}
+
+/// The guard ran over the whole run, and no tube overlapped past 30 %
+/// of r (the static overlap is 5 %; impacts go deeper).
+#[test]
+fn the_guard_runs_and_overlaps_stay_small() {
+    let chain = small();
+    let run = rings::run(&chain, &[]).unwrap();
+    let pairs = chain.linked_pairs().len() as u64;
+    assert!(run.stats.guard_checks >= pairs * (run.stats.steps / chain.guard_every as u64));
+    assert!(
+        run.stats.max_overlap < 0.3,
+        "overlap {} r",
+        run.stats.max_overlap
+    );
+}
+
+/// The step converges: halving it changes every ring's position by less
+/// than 0.5 mm over the settling (0.1 s), and halving it again changes it
+/// at least twice less, then and after the turn (0.3 s). Flip times are no
+/// test of it: after the turn the chain's impacts make it chaotic (a flip
+/// moves to another ring between dt and dt/2; docs/rings.md).
+#[test]
+fn halving_the_step_converges() {
+    let chain = RingChain {
+        t_end: 0.3,
+        ..small()
+    };
+    let times = [0.1, 0.3];
+    let base = rings::run(&chain, &times).unwrap();
+    let runs: Vec<rings::RingRun> = [0.5, 0.25]
+        .iter()
+        .map(|f| {
+            rings::run(
+                &RingChain {
+                    dt: f * base.dt,
+                    ..chain.clone()
+                },
+                &times,
+            )
+            .unwrap()
+        })
+        .collect();
+    let diff = |a: &rings::RingRun, b: &rings::RingRun, k: usize| {
+        let pairs = a.samples[k].rings.iter().zip(&b.samples[k].rings);
+        pairs
+            .map(|(x, y)| math::norm(math::sub(x.x, y.x)))
+            .fold(0.0, f64::max)
+    };
+    assert!(
+        diff(&base, &runs[0], 0) < 5e-4,
+        "{}",
+        diff(&base, &runs[0], 0)
+    );
+    for k in 0..times.len() {
+        let (d1, d2) = (diff(&base, &runs[0], k), diff(&runs[0], &runs[1], k));
+        assert!(d2 < 0.5 * d1, "t = {}: {d1} then {d2}", times[k]);
+    }
+}
+
+fn ladder(dir: &TempDir, args: &[&str], threads: &str) -> std::process::Output {
+    Command::new(BIN)
+        .args(args)
+        .arg("--out")
+        .arg(dir.path())
+        .env("RAYON_NUM_THREADS", threads)
+        .output()
+        .unwrap()
+}
+
+const SMALL_MOVIE: &str = "name = \"chain\"\n[rings]\nn = 10\nt_end = 0.5\nturn = { start = 0.1 }\n\
+                           tapes = [[1, 3], [3, 5]]\n[output]\nkind = \"movie\"\n";
+
+/// The same scene gives the same bytes twice, on one thread and on two,
+/// and its data file records the guard's count and the waves.
+#[test]
+fn the_same_scene_gives_the_same_bytes_on_one_and_two_threads() {
+    let dir = TempDir::new("rings-determinism");
+    let scene = dir.file("chain.toml", SMALL_MOVIE);
+    let args = [
+        "render",
+        scene.as_str(),
+        "--frames",
+        "12",
+        "--format",
+        "gif,png",
+    ];
+    let mut outs = Vec::new();
+    for (k, threads) in ["1", "2", "2"].iter().enumerate() {
+        let sub = TempDir::new(&format!("rings-determinism-{k}"));
+        let out = ladder(&sub, &args, threads);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let gif = std::fs::read(sub.join("movie-chain.gif")).unwrap();
+        let png = std::fs::read(sub.join("movie-chain-kymograph.png")).unwrap();
+        let json: serde_json::Value =
+            serde_json::from_slice(&std::fs::read(sub.join("movie-chain.json")).unwrap()).unwrap();
+        assert!(json["rings"]["guard_checks"].as_u64().unwrap() > 0);
+        outs.push((gif, png, json["rings"].clone()));
+    }
+    assert!(
+        outs[0] == outs[1] && outs[1] == outs[2],
+        "bytes differ between runs"
+    );
+}
+
+/// Bad input in a ring scene: one line on stderr, exit 2.
+#[test]
+fn bad_rings_are_refused_with_one_line() {
+    let cases = [
+        (
+            "r = R",
+            "[rings]\nmajor_radius = 0.002\ntube_radius = 0.001\n",
+            "tube radius",
+        ),
+        ("negative mass", "[rings]\ndensity = -1.0\n", "density"),
+        (
+            "unknown ring",
+            "[rings]\ntapes = [[1, 99]]\n",
+            "tape between rings 1 and 99",
+        ),
+        (
+            "unlinked",
+            "[rings]\nn = 4\nlinks = [[0, 1], [2, 3]]\n",
+            "ring 2",
+        ),
+        (
+            "not realised",
+            "[rings]\nn = 4\nlinks = [[0, 1], [1, 2], [0, 3]]\n",
+            "links",
+        ),
+        (
+            "untouched tape",
+            "[rings]\ntapes = [[0, 9]]\n",
+            "do not touch",
+        ),
+        (
+            "wrong output",
+            "[rings]\n[output]\nkind = \"energy\"\n",
+            "ring chain makes",
+        ),
+    ];
+    let dir = TempDir::new("rings-bad");
+    for (what, body, needle) in cases {
+        let text = if body.contains("[output]") {
+            body.to_string()
+        } else {
+            format!("{body}[output]\nkind = \"movie\"\n")
+        };
+        let path = dir.file("bad.toml", &text);
+        let out = ladder(&dir, &["render", &path, "--check"], "1");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{what}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{what}: {err}");
+        assert!(err.contains(needle), "{what}: {err}");
+    }
+}
+
+/// The default chain, its partner (odd) strand taped or not, over 1.5 s.
+fn chain_30(taped: bool) -> RingChain {
+    let tapes = if taped {
+        (1..28).step_by(2).map(|k| [k, k + 2]).collect()
+    } else {
+        Vec::new()
+    };
+    RingChain {
+        t_end: 1.5,
+        tapes,
+        ..Default::default()
+    }
+}
+
+/// Rings flipping in sequence with a constant φ step, on the even strand.
+fn clarity(run: &rings::RingRun) -> usize {
+    run.waves
+        .iter()
+        .filter(|w| w.strand == 0)
+        .map(|w| w.rings.len())
+        .max()
+        .unwrap_or(0)
+}
+
+/// What the turned top ring sends down runs down only: the rings that
+/// flip first flip in order of depth, top first.
+#[test]
+fn the_disturbance_runs_down_only() {
+    let run = rings::run(&chain_30(false), &[]).unwrap();
+    let mut first: Vec<(usize, f64)> = Vec::new();
+    for f in &run.flips {
+        if !first.iter().any(|(k, _)| *k == f.ring) {
+            first.push((f.ring, f.t));
+        }
+    }
+    assert!(first.len() >= 2, "flips: {first:?}");
+    first.sort_by_key(|(k, _)| *k);
+    for w in first.windows(2) {
+        assert!(
+            w[0].1 < w[1].1,
+            "ring {} flips after ring {} below it: {first:?}",
+            w[0].0,
+            w[1].0
+        );
+    }
+}
+
+/// The paper: the wave is clearest when the partner strand is taped. The
+/// model does not show it (docs/rings.md, "What the simulation shows"):
+/// neither chain makes a helical wave by the stated criterion. The test
+/// states the paper's claim and fails on the model; run it with
+/// `--ignored` to see the numbers.
+#[test]
+#[ignore = "the model does not show the paper's claim: docs/rings.md"]
+fn the_taped_chain_makes_the_clearer_wave() {
+    let taped = rings::run(&chain_30(true), &[]).unwrap();
+    let free = rings::run(&chain_30(false), &[]).unwrap();
+    let (a, b) = (clarity(&taped), clarity(&free));
+    assert!(
+        a >= 3 && a > b,
+        "clarity taped {a}, untaped {b}; flips {} and {}",
+        taped.flips.len(),
+        free.flips.len()
+    );
+}
