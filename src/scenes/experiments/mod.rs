@@ -157,7 +157,13 @@ fn lower_half(arrivals: &[Option<f64>]) -> Option<Vec<(f64, f64)>> {
     if times.windows(2).any(|w| w[1] <= w[0]) {
         return None;
     }
-    Some(times.iter().enumerate().map(|(i, t)| (i as f64, *t)).collect())
+    Some(
+        times
+            .iter()
+            .enumerate()
+            .map(|(i, t)| (i as f64, *t))
+            .collect(),
+    )
 }
 
 /// The fitted line of [`bulk_speed`] in seconds and centimetres:
