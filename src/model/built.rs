@@ -5,9 +5,11 @@
 //! model has none, and nothing of the paper's force loop reads it.
 //!
 //! [`Ladder::built`]: super::Ladder::built
+//!
+//! It sits below the ladder: its functions take the number of blocks and
+//! their inertia ([`Blocks`]), not the ladder.
 
-use super::contact::Contact;
-use super::ladder::Ladder;
+use super::contact::{Blocks, Contact};
 use super::ribbons::Ribbons;
 
 /// Ribbons and, where the blocks may touch, contact.
@@ -19,18 +21,18 @@ pub struct AsBuilt {
 
 impl AsBuilt {
     /// Elastic energy of the ribbons and of the contacts' overlaps.
-    pub fn elastic_energy(&self, ladder: &Ladder, q: &[f64]) -> f64 {
+    pub fn elastic_energy(&self, blocks: Blocks, q: &[f64]) -> f64 {
         let o = &self.ribbons.outline;
-        self.ribbons.elastic_energy(ladder, q)
-            + self.contact.map_or(0.0, |c| c.elastic_energy(ladder, o, q))
+        self.ribbons.elastic_energy(blocks.n, q)
+            + self.contact.map_or(0.0, |c| c.elastic_energy(blocks, o, q))
     }
 
     /// Power dissipated by the ribbons' dashpots and the contacts at (q, v).
-    pub fn dissipation(&self, ladder: &Ladder, q: &[f64], v: &[f64]) -> f64 {
-        self.ribbons.dissipation(ladder, q, v)
+    pub fn dissipation(&self, blocks: Blocks, q: &[f64], v: &[f64]) -> f64 {
+        self.ribbons.dissipation(blocks.n, q, v)
             + self
                 .contact
-                .map_or(0.0, |c| c.dissipation(ladder, &self.ribbons.outline, q, v))
+                .map_or(0.0, |c| c.dissipation(blocks, &self.ribbons.outline, q, v))
     }
 
     /// Whether its forces depend on the velocities (a dashpot, contact).

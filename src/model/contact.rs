@@ -21,9 +21,16 @@
 //! (F_n − k_c δ) δ̇ ≥ 0 (c δ̇² while the dashpot pushes, −k_c δ δ̇ > 0
 //! where it would pull) plus μ F_n tanh(v_t/v_ε) v_t ≥ 0.
 
-use super::ladder::Ladder;
 use super::outline::{Outline, Pose, add_point_force, point_velocity};
 use super::params::{M, R};
+
+/// The chain's blocks as contact sees them: how many, and each one's
+/// moment of inertia I (mass m = 1).
+#[derive(Debug, Clone, Copy)]
+pub struct Blocks {
+    pub n: usize,
+    pub inertia: f64,
+}
 
 /// The most two blocks may overlap, as a fraction of their thickness: a
 /// run that goes deeper stops with an error (`sim::divergence`).
@@ -65,22 +72,22 @@ impl Contact {
     }
 
     /// Every corner in contact at (q, v).
-    pub fn touches(&self, ladder: &Ladder, o: &Outline, q: &[f64], v: &[f64]) -> Vec<Touch> {
+    pub fn touches(&self, blocks: Blocks, o: &Outline, q: &[f64], v: &[f64]) -> Vec<Touch> {
         let mut out = Vec::new();
-        self.for_each_touch(ladder, o, q, v, |t| out.push(t));
+        self.for_each_touch(blocks, o, q, v, |t| out.push(t));
         out
     }
 
     /// Calls `f` for every corner in contact at (q, v).
     pub fn for_each_touch(
         &self,
-        ladder: &Ladder,
+        blocks: Blocks,
         o: &Outline,
         q: &[f64],
         v: &[f64],
         mut f: impl FnMut(Touch),
     ) {
-        let n = ladder.n();
+        let n = blocks.n;
         let reach = 2.0 * o.radius();
         for i in 0..n {
             let pi = Pose::of(q, i);
@@ -93,7 +100,7 @@ impl Contact {
                 }
                 for (a, pa, b, pb) in [(i, &pi, j, &pj), (j, &pj, i, &pi)] {
                     for k in 0..4 {
-                        if let Some(t) = self.touch(ladder, o, (a, pa), (b, pb), k, v) {
+                        if let Some(t) = self.touch(blocks, o, (a, pa), (b, pb), k, v) {
                             f(t);
                         }
                     }
@@ -105,7 +112,7 @@ impl Contact {
     /// Corner k of block a against block b, if inside it.
     fn touch(
         &self,
-        ladder: &Ladder,
+        blocks: Blocks,
         o: &Outline,
         (a, pa): (usize, &Pose),
         (b, pb): (usize, &Pose),
@@ -131,7 +138,7 @@ impl Contact {
         let tangent = [-normal[1], normal[0]];
         let slip = rel[0] * tangent[0] + rel[1] * tangent[1];
         let m_eff = 1.0
-            / (self.inverse_mass(ladder, pa, x, normal) + self.inverse_mass(ladder, pb, x, normal));
+            / (self.inverse_mass(blocks, pa, x, normal) + self.inverse_mass(blocks, pb, x, normal));
         let c = 2.0 * self.damping_ratio() * (self.stiffness * m_eff).sqrt();
         let normal_force = (self.stiffness * depth + c * approach).max(0.0);
         let friction_force = -self.friction * normal_force * (slip / self.slip_speed).tanh();
@@ -149,24 +156,24 @@ impl Contact {
     }
 
     /// 1/m + (ρ × n)²/I of a block at lab point x along n.
-    fn inverse_mass(&self, ladder: &Ladder, p: &Pose, x: [f64; 2], n: [f64; 2]) -> f64 {
+    fn inverse_mass(&self, blocks: Blocks, p: &Pose, x: [f64; 2], n: [f64; 2]) -> f64 {
         let rho = [x[0] - p.centre[0], x[1] - p.centre[1]];
         let cross = rho[0] * n[1] - rho[1] * n[0];
-        1.0 / M + cross * cross / ladder.params.inertia
+        1.0 / M + cross * cross / blocks.inertia
     }
 
     /// Adds the contact forces at (q, v) to the generalised forces `out`
     /// (forces, not a gradient); returns the deepest overlap (in s).
     pub fn add_forces(
         &self,
-        ladder: &Ladder,
+        blocks: Blocks,
         o: &Outline,
         q: &[f64],
         v: &[f64],
         out: &mut [f64],
     ) -> f64 {
         let mut deepest = 0.0_f64;
-        self.for_each_touch(ladder, o, q, v, |t| {
+        self.for_each_touch(blocks, o, q, v, |t| {
             deepest = deepest.max(t.depth);
             let tangent = [-t.normal[1], t.normal[0]];
             let f = [
@@ -181,10 +188,10 @@ impl Contact {
     }
 
     /// Elastic energy Σ ½ k_c δ² of the overlaps at q.
-    pub fn elastic_energy(&self, ladder: &Ladder, o: &Outline, q: &[f64]) -> f64 {
+    pub fn elastic_energy(&self, blocks: Blocks, o: &Outline, q: &[f64]) -> f64 {
         let v = vec![0.0; q.len()];
         let mut e = 0.0;
-        self.for_each_touch(ladder, o, q, &v, |t| {
+        self.for_each_touch(blocks, o, q, &v, |t| {
             e += 0.5 * self.stiffness * t.depth * t.depth
         });
         e
@@ -192,9 +199,9 @@ impl Contact {
 
     /// Power dissipated (≥ 0) by the contacts at (q, v): the dashpot's and
     /// the friction's.
-    pub fn dissipation(&self, ladder: &Ladder, o: &Outline, q: &[f64], v: &[f64]) -> f64 {
+    pub fn dissipation(&self, blocks: Blocks, o: &Outline, q: &[f64], v: &[f64]) -> f64 {
         let mut d = 0.0;
-        self.for_each_touch(ladder, o, q, v, |t| {
+        self.for_each_touch(blocks, o, q, v, |t| {
             d += (t.normal_force - self.stiffness * t.depth) * t.approach
                 - t.friction_force * t.slip;
         });
@@ -205,18 +212,12 @@ impl Contact {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::Params;
 
-    fn setup() -> (Ladder, Outline, Contact, Vec<f64>) {
-        let p = Params::defaults()
-            .with_n(3)
-            .with_b(1.0)
-            .with_alpha_deg(90.0)
-            .with_gamma(0.0)
-            .with_gravity(2e-4)
-            .with_inertia((1.0 + 0.1f64.powi(2)) / 12.0)
-            .validated()
-            .unwrap();
+    fn setup() -> (Blocks, Outline, Contact, Vec<f64>) {
+        let p = Blocks {
+            n: 3,
+            inertia: (1.0 + 0.1f64.powi(2)) / 12.0,
+        };
         let o = Outline::new(0.1);
         let c = Contact {
             stiffness: 1000.0,
@@ -227,22 +228,22 @@ mod tests {
         // Block 2 lying on block 1's face, tilted, a corner 0.004 s deep;
         // block 3 far away.
         let q = vec![0.0, 0.0, 0.0, 0.096, 0.3, 0.01, 3.0, 3.0, 0.0];
-        (Ladder::new(p), o, c, q)
+        (p, o, c, q)
     }
 
     #[test]
     fn contact_forces_at_rest_are_minus_the_overlap_energy_gradient() {
         let (l, o, c, q) = setup();
         let v = vec![0.0; q.len()];
-        assert!(!c.touches(&l, &o, &q, &v).is_empty());
+        assert!(!c.touches(l, &o, &q, &v).is_empty());
         let mut f = vec![0.0; q.len()];
-        c.add_forces(&l, &o, &q, &v, &mut f);
+        c.add_forces(l, &o, &q, &v, &mut f);
         let h = 1e-7;
         for k in 0..q.len() {
             let (mut qp, mut qm) = (q.clone(), q.clone());
             qp[k] += h;
             qm[k] -= h;
-            let fd = (c.elastic_energy(&l, &o, &qp) - c.elastic_energy(&l, &o, &qm)) / (2.0 * h);
+            let fd = (c.elastic_energy(l, &o, &qp) - c.elastic_energy(l, &o, &qm)) / (2.0 * h);
             assert!((fd + f[k]).abs() < 1e-5, "{k}: {fd} {}", f[k]);
         }
     }
@@ -257,15 +258,14 @@ mod tests {
                 .map(|k| s * 0.01 * ((k as f64) * 1.3).cos())
                 .collect();
             let mut f = vec![0.0; q.len()];
-            c.add_forces(&l, &o, &q, &v, &mut f);
+            c.add_forces(l, &o, &q, &v, &mut f);
             let power: f64 = f.iter().zip(&v).map(|(a, b)| a * b).sum();
             let h = 1e-7;
             let shift =
                 |sg: f64| -> Vec<f64> { q.iter().zip(&v).map(|(x, w)| x + sg * h * w).collect() };
-            let de = (c.elastic_energy(&l, &o, &shift(1.0))
-                - c.elastic_energy(&l, &o, &shift(-1.0)))
+            let de = (c.elastic_energy(l, &o, &shift(1.0)) - c.elastic_energy(l, &o, &shift(-1.0)))
                 / (2.0 * h);
-            let d = c.dissipation(&l, &o, &q, &v);
+            let d = c.dissipation(l, &o, &q, &v);
             assert!(d >= 0.0);
             assert!((power + de + d).abs() < 1e-8, "{power} {de} {d}");
         }
@@ -280,16 +280,11 @@ mod tests {
         // (e = 0.5 for one corner alone gives e' = 0.37) if the dashpot
         // could pull; clamped at 0 it lets go early and rebounds faster:
         // measured 0.45, between e' and e' + 0.1.
-        let p = Params::defaults()
-            .with_n(2)
-            .with_b(1.0)
-            .with_alpha_deg(90.0)
-            .with_gamma(0.0)
-            .with_gravity(0.0)
-            .with_inertia((1.0 + 0.1f64.powi(2)) / 12.0)
-            .validated()
-            .unwrap();
-        let l = Ladder::new(p);
+        let l = Blocks {
+            n: 2,
+            inertia: (1.0 + 0.1f64.powi(2)) / 12.0,
+        };
+        let p = l;
         let o = Outline::new(0.1);
         let c = Contact {
             stiffness: 1000.0,
@@ -303,7 +298,7 @@ mod tests {
         let dt = 1e-4;
         let acc = |q: &[f64], v: &[f64]| {
             let mut f = vec![0.0; 6];
-            c.add_forces(&l, &o, q, v, &mut f);
+            c.add_forces(l, &o, q, v, &mut f);
             let im = |k: usize| if k % 3 == 2 { 1.0 / p.inertia } else { 1.0 };
             (0..6).map(|k| f[k] * im(k)).collect::<Vec<_>>()
         };

@@ -79,6 +79,14 @@ impl Ladder {
         }
     }
 
+    /// The blocks as the toy as built sees them (`contact::Blocks`).
+    pub fn blocks(&self) -> super::contact::Blocks {
+        super::contact::Blocks {
+            n: self.n(),
+            inertia: self.params.inertia,
+        }
+    }
+
     /// Whether this is the paper's model: no term and not as built.
     pub fn is_paper_model(&self) -> bool {
         self.terms.is_paper() && self.built.is_none()

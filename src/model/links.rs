@@ -87,7 +87,7 @@ impl Links {
     /// Elastic energy Σ ½ κ (L − ℓ)², the slack tension-only links left out.
     pub fn elastic_energy(&self, ladder: &Ladder, q: &[f64]) -> f64 {
         if let Some(b) = &ladder.built {
-            return b.elastic_energy(ladder, q);
+            return b.elastic_energy(ladder.blocks(), q);
         }
         self.states(ladder, q)
             .map(|s| 0.5 * s.tension * s.tension / self.stiffness)
@@ -100,7 +100,9 @@ impl Links {
     /// A ladder as built (`built`) has ribbons in place of the links.
     pub fn gradient(&self, ladder: &Ladder, q: &[f64], grad: &mut [f64]) {
         if let Some(b) = &ladder.built {
-            return b.ribbons.gradient(ladder, q, grad);
+            return b
+                .ribbons
+                .gradient(ladder.n(), ladder.params.gravity, q, grad);
         }
         let g = M * ladder.params.gravity;
         for (k, x) in grad.iter_mut().enumerate().take(3 * ladder.n()) {

@@ -11,8 +11,27 @@
 //! even n (t × ν = −(−1)ⁿ), so the same corner of every block alternates
 //! side in the lab, as the ladder's zig-zag does.
 
-use super::ladder::{frame, itheta, ix, iy};
 use super::params::R;
+
+// The ladder's layout and frame (docs/model.md), as `model::ladder` has
+// them: this file sits below the ladder, which carries the toy as built.
+const fn ix(i: usize) -> usize {
+    3 * i
+}
+const fn iy(i: usize) -> usize {
+    3 * i + 1
+}
+const fn itheta(i: usize) -> usize {
+    3 * i + 2
+}
+
+/// t_n = (sin θ, (−1)ⁿ cos θ) and ν_n = ∂t_n/∂θ of block `i` (n = i + 1).
+#[inline]
+fn frame(i: usize, theta: f64) -> ([f64; 2], [f64; 2]) {
+    let (s, c) = theta.sin_cos();
+    let p = if i.is_multiple_of(2) { -1.0 } else { 1.0 };
+    ([s, p * c], [c, -p * s])
+}
 
 /// The block's outline: half length r = s/2 and half thickness h = d/2.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -32,7 +32,6 @@
 //! tape); the rest length ℓ is the ribbon's length in the hanging column
 //! of the apparatus (every block at θ = 90°, centres b apart): glued taut.
 
-use super::ladder::Ladder;
 use super::outline::{Outline, Pose, add_point_force, point_velocity};
 use super::params::M;
 
@@ -317,11 +316,11 @@ impl Ribbons {
     }
 
     /// Adds the ribbons' dashpot forces at (q, v) to `out` (forces).
-    pub fn add_damping(&self, ladder: &Ladder, q: &[f64], v: &[f64], out: &mut [f64]) {
+    pub fn add_damping(&self, n: usize, q: &[f64], v: &[f64], out: &mut [f64]) {
         if self.damping == 0.0 {
             return;
         }
-        self.for_each_span(ladder.n(), q, |i, pu, pl, s| {
+        self.for_each_span(n, q, |i, pu, pl, s| {
             let (extra, _) = self.dashpot(i, pu, pl, s, v);
             if extra == 0.0 {
                 return;
@@ -333,12 +332,12 @@ impl Ribbons {
     }
 
     /// Power the dashpots dissipate at (q, v), Σ −extra · L̇ ≥ 0.
-    pub fn dissipation(&self, ladder: &Ladder, q: &[f64], v: &[f64]) -> f64 {
+    pub fn dissipation(&self, n: usize, q: &[f64], v: &[f64]) -> f64 {
         let mut d = 0.0;
         if self.damping == 0.0 {
             return d;
         }
-        self.for_each_span(ladder.n(), q, |i, pu, pl, s| {
+        self.for_each_span(n, q, |i, pu, pl, s| {
             let (extra, rate) = self.dashpot(i, pu, pl, s, v);
             d += extra * rate;
         });
@@ -375,9 +374,9 @@ impl Ribbons {
     }
 
     /// Elastic energy Σ ½ κ max(0, L − ℓ)².
-    pub fn elastic_energy(&self, ladder: &Ladder, q: &[f64]) -> f64 {
+    pub fn elastic_energy(&self, n: usize, q: &[f64]) -> f64 {
         let mut e = 0.0;
-        self.for_each_span(ladder.n(), q, |_, _, _, s| {
+        self.for_each_span(n, q, |_, _, _, s| {
             e += 0.5 * s.tension * s.tension / self.stiffness;
         });
         e
@@ -386,12 +385,12 @@ impl Ribbons {
     /// ∂E/∂q of the ribbons' energy and gravity (−m G per X_n) into
     /// `grad`: T e at D on the upper block, −T e at E on the lower one,
     /// with the sign of a gradient (the force is −grad).
-    pub fn gradient(&self, ladder: &Ladder, q: &[f64], grad: &mut [f64]) {
-        let g = M * ladder.params.gravity;
-        for (k, x) in grad.iter_mut().enumerate().take(3 * ladder.n()) {
+    pub fn gradient(&self, n: usize, gravity: f64, q: &[f64], grad: &mut [f64]) {
+        let g = M * gravity;
+        for (k, x) in grad.iter_mut().enumerate().take(3 * n) {
             *x = if k % 3 == 0 { -g } else { 0.0 };
         }
-        self.for_each_span(ladder.n(), q, |i, pu, pl, s| {
+        self.for_each_span(n, q, |i, pu, pl, s| {
             if s.tension == 0.0 {
                 return;
             }
@@ -426,7 +425,6 @@ impl Ribbons {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::Params;
 
     /// The tank's arrangement: each ribbon glued at one end of a face of
     /// both blocks (ribbon 0 at the A end of face w = +h, ribbon 1 at the
@@ -444,28 +442,22 @@ mod tests {
         Ribbons::glued_in_column(o, [(a, a), (bb, bb)], b)
     }
 
-    fn ladder(n: usize, b: f64, r: Ribbons) -> Ladder {
-        let p = Params::defaults()
-            .with_n(n)
-            .with_b(b)
-            .with_alpha_deg(90.0)
-            .with_gamma(0.0)
-            .with_gravity(2e-4)
-            .with_inertia((1.0 + 0.06f64.powi(2)) / 12.0)
-            .validated()
-            .unwrap();
-        Ladder::new(p).with_built(crate::model::built::AsBuilt {
-            ribbons: r,
-            contact: None,
-        })
+    /// The hanging column of `n` blocks at pitch `b`.
+    pub(crate) fn column(n: usize, b: f64) -> Vec<f64> {
+        (0..n)
+            .flat_map(|i| [i as f64 * b, 0.0, std::f64::consts::FRAC_PI_2])
+            .collect()
     }
 
-    fn fd_check(l: &Ladder, r: &Ribbons, q: &[f64]) -> f64 {
+    const G: f64 = 2e-4;
+
+    fn fd_check(r: &Ribbons, q: &[f64]) -> f64 {
+        let n = q.len() / 3;
         let mut grad = vec![0.0; q.len()];
-        r.gradient(l, q, &mut grad);
+        r.gradient(n, G, q, &mut grad);
         let energy = |q: &[f64]| {
             let x: f64 = q.iter().step_by(3).sum();
-            r.elastic_energy(l, q) - l.params.gravity * x
+            r.elastic_energy(n, q) - G * x
         };
         let h = 1e-7;
         let mut worst = 0.0_f64;
@@ -495,16 +487,15 @@ mod tests {
         let b = 1.5;
         let r0 = tank_ribbons(b);
         let r = Ribbons::new(r0.outline, r0.ribbons, 7.0);
-        let l = ladder(4, b, r);
         let mut worst = 0.0_f64;
         for seed in 0..200 {
-            let mut q = l.ground_state();
+            let mut q = column(4, b);
             let s = seed as f64;
             for (k, x) in q.iter_mut().enumerate() {
                 let amp = if k % 3 == 2 { 1.2 } else { 0.25 };
                 *x += amp * ((k as f64) * 1.7 + s * 0.37).sin();
             }
-            worst = worst.max(fd_check(&l, &r, &q));
+            worst = worst.max(fd_check(&r, &q));
         }
         assert!(worst < 1e-6, "{worst}");
     }
@@ -539,25 +530,13 @@ mod tests {
 
 #[cfg(test)]
 mod dashpot_tests {
-    use super::tests::tank_ribbons;
-    use super::*;
-    use crate::model::Params;
+    use super::tests::{column, tank_ribbons};
 
     #[test]
     fn the_dashpot_dissipates_what_its_forces_take() {
         let b = 1.5;
         let r = tank_ribbons(b);
-        let p = Params::defaults()
-            .with_n(3)
-            .with_b(b)
-            .with_alpha_deg(90.0)
-            .with_gamma(0.0)
-            .with_gravity(2e-4)
-            .with_inertia(0.1)
-            .validated()
-            .unwrap();
-        let l = Ladder::new(p);
-        let mut q = l.ground_state();
+        let mut q = column(3, b);
         q[3] += 0.01;
         q[6] += 0.013;
         q[5] += 0.05;
@@ -566,9 +545,9 @@ mod dashpot_tests {
                 .map(|k| s * 0.01 * ((k as f64) * 0.7).sin())
                 .collect();
             let mut f = vec![0.0; q.len()];
-            r.add_damping(&l, &q, &v, &mut f);
+            r.add_damping(3, &q, &v, &mut f);
             let power: f64 = f.iter().zip(&v).map(|(a, b)| a * b).sum();
-            let d = r.dissipation(&l, &q, &v);
+            let d = r.dissipation(3, &q, &v);
             assert!(d >= 0.0 && (power + d).abs() < 1e-14, "{power} {d}");
         }
     }

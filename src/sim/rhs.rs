@@ -184,13 +184,13 @@ impl<'a> Rhs<'a> {
             friction.add_forces(ladder, &t.links, q, v, &mut self.force);
         }
         if let Some(b) = ladder.built {
-            b.ribbons.add_damping(ladder, q, v, &mut self.force);
+            b.ribbons.add_damping(ladder.n(), q, v, &mut self.force);
         }
         if let Some(b) = ladder.built
             && let Some(c) = b.contact
         {
             let o = b.ribbons.outline;
-            let deepest = c.add_forces(ladder, &o, q, v, &mut self.force);
+            let deepest = c.add_forces(ladder.blocks(), &o, q, v, &mut self.force);
             self.deepest_overlap = self.deepest_overlap.max(deepest);
         }
         let j = ladder.params.inertia + t.added_inertia;

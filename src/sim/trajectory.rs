@@ -150,6 +150,8 @@ impl Trajectory {
 /// over every block.
 pub fn dissipated_power(ladder: &Ladder, q: &[f64], v: &[f64]) -> f64 {
     let (linear, drag, friction) = media::dissipation(ladder, &ladder.terms, q, v, 0);
-    let contact = ladder.built.map_or(0.0, |b| b.dissipation(ladder, q, v));
+    let contact = ladder
+        .built
+        .map_or(0.0, |b| b.dissipation(ladder.blocks(), q, v));
     linear + drag + friction + contact
 }

@@ -136,12 +136,12 @@ fn the_energy_budget_of_the_ribbon_tank_closes() {
         let mut grad = vec![0.0; dof];
         terms.links.gradient(&ladder, q, &mut grad);
         let mut nc = vec![0.0; dof];
-        built.ribbons.add_damping(&ladder, q, v, &mut nc);
+        built.ribbons.add_damping(ladder.n(), q, v, &mut nc);
         if let Some(c) = built.contact {
-            c.add_forces(&ladder, &built.ribbons.outline, q, v, &mut nc);
+            c.add_forces(ladder.blocks(), &built.ribbons.outline, q, v, &mut nc);
         }
         drive.push(v[itheta(0)] * (grad[itheta(0)] - nc[itheta(0)]));
-        lost.push(built.dissipation(&ladder, q, v));
+        lost.push(built.dissipation(ladder.blocks(), q, v));
     }
     let simpson = |y: &[f64], h: f64| {
         let n = y.len() - 1;
