@@ -263,7 +263,7 @@ mod tests {
     fn minima_match_a_fine_scan() {
         let a = ring(
             [0.0, 0.0, 0.0],
-            Quat::axis_angle([0.0, 1.0, 0.0], 1.5707963),
+            Quat::axis_angle([0.0, 1.0, 0.0], std::f64::consts::FRAC_PI_2),
         );
         let b = ring(
             [0.0004, 0.0011, -0.0112],

@@ -109,6 +109,7 @@ impl Quat {
     }
 
     /// `self ⊗ o`: first `o`, then `self`.
+    #[allow(clippy::should_implement_trait)] // a product of rotations, spelled as the formula
     pub fn mul(self, o: Quat) -> Quat {
         Quat {
             w: self.w * o.w - self.x * o.x - self.y * o.y - self.z * o.z,

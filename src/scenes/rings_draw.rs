@@ -189,7 +189,7 @@ pub fn kymograph_picture(theme: &Theme, chain: &RingChain, run: &RingRun, title:
     let plot_w = width - left - right;
     let plot_h = (plot_w * 0.9).min(460.0);
     let cell_w = plot_w / cols.len() as f32;
-    let rows = run.samples.len().min(KYMOGRAPH_ROWS).max(1);
+    let rows = run.samples.len().clamp(1, KYMOGRAPH_ROWS);
     let cell_h = plot_h / rows as f32;
     let mut p = Picture::new(theme, width, (top + plot_h + bottom).ceil()).titled(title);
     if theme.titles && !title.is_empty() {
