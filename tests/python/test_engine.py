@@ -50,11 +50,8 @@ def test_simulate_equals_the_cli_json_bit_for_bit(ladder_json, tmp_path, flags, 
     run = jl.simulate(**keywords, sample_every=10)
     assert same_bits(run.arrival_times, nan_list(cli["arrival_times"]))
     assert same_bits(run.final_theta_deg, cli["final_theta_deg"])
-    assert run.integrator["name"] == cli["integrator"]
-    assert run.integrator["dt"] == cli["dt"]
-    assert run.integrator["steps"] == cli["steps"]
-    assert run.integrator["force_evals"] == cli["force_evals"]
-    assert run.integrator.get("arrival_error") == cli["arrival_error"]
+    # One shape for a run: the CLI's integrator report is the record's.
+    assert run.integrator == cli["integrator"]
     # The CSV's samples (θ in degrees, 6 decimals) are the arrays' samples.
     rows = np.loadtxt(csv, delimiter=",", skiprows=1)
     assert same_bits(run.t, rows[:, 0])
