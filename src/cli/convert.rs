@@ -242,8 +242,6 @@ pub fn sweep_scene(args: &SweepArgs) -> Result<Scene> {
     checked(scene)
 }
 
-pub use super::custom::{Origin, figure_scene, movie_scene};
-
 #[cfg(test)]
 mod tests {
     use super::*;

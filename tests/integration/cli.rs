@@ -145,7 +145,7 @@ fn csv_has_theta_at_the_sample_times_and_is_reproducible() {
 #[test]
 fn render_commands_reject_bad_input_with_one_line() {
     assert_bad_input(&["figure", "9z"], "unknown figure '9z'");
-    assert_bad_input(&["movie", "1"], "movie 1 of the paper is a recording");
+    assert_bad_input(&["movie", "2"], "movie 2 of the paper is a recording");
     assert_bad_input(&["movie", "4", "--frames", "0"], "--frames");
     assert_bad_input(&["movie", "4", "--frames", "-3"], "--frames");
     assert_bad_input(&["movie", "4", "--frames", "100000000"], "--frames");

@@ -3,7 +3,6 @@
 
 use crate::catalog::{self, Entry};
 use crate::cli::commands::Call;
-use crate::cli::convert;
 use crate::cli::hints::{Words, with_divergence_hint};
 use crate::cli::progress::progress_bar;
 use crate::cli::*;
@@ -58,8 +57,8 @@ pub(crate) fn scene_entry(words: &[String]) -> Result<&'static Entry> {
 pub(crate) fn movie_scenes(args: &MovieArgs) -> Result<Vec<Scene>> {
     let flags = args.model.any() || args.drive.any() || args.run.any();
     let custom = flags || args.name.is_some() || args.camera.is_some();
-    let make = |origin: convert::Origin<'_>| {
-        convert::movie_scene(
+    let make = |origin: crate::cli::custom::Origin<'_>| {
+        crate::cli::custom::movie_scene(
             origin,
             args.name.as_deref(),
             args.camera,
@@ -89,8 +88,8 @@ pub(crate) fn movie_scenes(args: &MovieArgs) -> Result<Vec<Scene>> {
 pub(crate) fn figure_scenes(args: &FigureArgs) -> Result<Vec<Scene>> {
     let flags = args.model.any() || args.drive.any() || args.run.any();
     let custom = flags || args.name.is_some() || args.view.is_some() || args.times.is_some();
-    let make = |origin: convert::Origin<'_>| {
-        convert::figure_scene(
+    let make = |origin: crate::cli::custom::Origin<'_>| {
+        crate::cli::custom::figure_scene(
             origin,
             args.name.as_deref(),
             args.view,
