@@ -266,7 +266,9 @@ where
     let mut builder = ChartBuilder::on(&area);
     // A shared x axis is labelled by the panel below: room for its
     // numbers only.
-    let x_area = if spec.x.shared {
+    let x_area = if spec.x.numbered {
+        theme.numbered_x_area
+    } else if spec.x.shared {
         theme.shared_x_area
     } else {
         theme.x_label_area
@@ -333,9 +335,16 @@ where
 {
     let (xscale, yscale) = (spec.x.scale, spec.y.scale);
     let shared = spec.x.shared;
-    // A shared axis keeps its numbers (every stacked panel can be read);
-    // only its label is left to the panel below.
-    let xf = move |v: &f64| tick_label(*v, xscale);
+    // A shared axis keeps its numbers when asked (every stacked sweep
+    // panel can be read); its label is left to the panel below.
+    let bare = shared && !spec.x.numbered;
+    let xf = move |v: &f64| {
+        if bare {
+            String::new()
+        } else {
+            tick_label(*v, xscale)
+        }
+    };
     let yf = move |v: &f64| tick_label(*v, yscale);
     // As many x labels as fit side by side with a gap (at most 7) at a
     // print style.

@@ -21,6 +21,9 @@ pub struct Axis {
     /// Shared with a panel stacked below, which labels it: this panel
     /// draws its ticks without numbers or label.
     pub shared: bool,
+    /// A shared axis that keeps its numbers (only its label is the panel
+    /// below's): stacked sweep panels, each of whose axes can be read.
+    pub numbered: bool,
 }
 
 impl Axis {
@@ -48,6 +51,14 @@ impl Axis {
     /// shared by stacked panels is labelled once).
     pub fn shared(mut self) -> Axis {
         self.shared = true;
+        self
+    }
+
+    /// Shared with the panel stacked below, which labels it, keeping its
+    /// own numbers.
+    pub fn shared_numbered(mut self) -> Axis {
+        self.shared = true;
+        self.numbered = true;
         self
     }
 }
