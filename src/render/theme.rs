@@ -100,10 +100,12 @@ pub struct Theme {
     /// axis label under them.
     pub x_label_area: u32,
     /// Height of the x label area of a panel whose x axis is shared with
-    /// the panel below: its ticks and their numbers (1.3 tick sizes and
-    /// 6 px), so that every stacked panel's axis can be read; the axis
-    /// label is the bottom panel's.
+    /// the panel below (4 px: its ticks only, the labels are below).
     pub shared_x_area: u32,
+    /// Height of the x label area of a stacked panel whose shared x axis
+    /// keeps its numbers ([`crate::render::Axis::shared_numbered`]: the
+    /// sweeps' panels): 1.3 tick sizes and 6 px.
+    pub numbered_x_area: u32,
     /// Pixels a y tick mark and its gap take beside the tick labels (10).
     pub tick_gap: f32,
     /// The rotated y axis label's line, in ems of [`Theme::label`] (1.3).
@@ -233,7 +235,8 @@ impl Theme {
             },
             y_label_area: 64,
             x_label_area: 50,
-            shared_x_area: (1.3 * tick + 6.0).ceil() as u32,
+            shared_x_area: 4,
+            numbered_x_area: (1.3 * tick + 6.0).ceil() as u32,
             tick_gap: 10.0,
             axis_label_line_em: 1.3,
             axis_label_gap: 6.0,

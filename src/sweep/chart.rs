@@ -212,7 +212,7 @@ fn front_panel(theme: &Theme, a: &OneAxis<'_>, records: &[Record], title: &str) 
         .max()
         .unwrap_or(a.plan.scene.model.n);
     let mut front = ChartSpec::new(
-        a.x_axis().shared(),
+        a.x_axis().shared_numbered(),
         Axis::new("front (last block)").range(-0.3, n_max as f64 + 0.6),
     )
     .title(title);
@@ -278,7 +278,7 @@ fn speed_panel(theme: &Theme, a: &OneAxis<'_>, records: &[Record], shared: bool)
         Axis::new("speed (10⁻³ blocks/τ)")
     };
     let x = if shared {
-        a.x_axis().shared()
+        a.x_axis().shared_numbered()
     } else {
         a.x_axis()
     };
@@ -405,7 +405,7 @@ fn theory_panel(
             series = series.dashed();
         }
         let x = if shared {
-            xa.clone().shared()
+            xa.clone().shared_numbered()
         } else {
             xa.clone()
         };

@@ -42,7 +42,7 @@ pub(super) fn least_for(theme: &Theme, label: &str) -> u32 {
 /// Pixels a panel whose x axis is shared (labelled below) does not need:
 /// the axis label's line under its numbers.
 fn shared_saves(theme: &Theme) -> u32 {
-    theme.x_label_area.saturating_sub(theme.shared_x_area)
+    theme.x_label_area.saturating_sub(theme.numbered_x_area)
 }
 
 /// Heights of stacked panels that want `wanted` pixels each: as asked at

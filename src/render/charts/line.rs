@@ -270,7 +270,9 @@ where
     let mut builder = ChartBuilder::on(&area);
     // A shared x axis is labelled by the panel below: room for its
     // numbers only.
-    let x_area = if spec.x.shared {
+    let x_area = if spec.x.numbered {
+        theme.numbered_x_area
+    } else if spec.x.shared {
         theme.shared_x_area
     } else {
         theme.x_label_area
@@ -337,10 +339,17 @@ where
 {
     let xscale = spec.x.scale;
     let shared = spec.x.shared;
-    // A shared axis keeps its numbers (every stacked panel can be read);
-    // only its label is left to the panel below.
+    // A shared axis keeps its numbers when asked (every stacked sweep
+    // panel can be read); its label is left to the panel below.
+    let bare = shared && !spec.x.numbered;
     let (x_axis, y_axis) = (spec.x.clone(), spec.y.clone());
-    let xf = move |v: &f64| x_axis.tick_text(*v);
+    let xf = move |v: &f64| {
+        if bare {
+            String::new()
+        } else {
+            x_axis.tick_text(*v)
+        }
+    };
     let yf = move |v: &f64| y_axis.tick_text(*v);
     // As many x labels as fit side by side with a gap (at most 7) at a
     // print style.

@@ -24,6 +24,9 @@ pub struct Axis {
     /// Names of the categories at 1, 2, … (a chart of levels, one per
     /// row): the ticks are these names, not numbers.
     pub names: Vec<String>,
+    /// A shared axis that keeps its numbers (only its label is the panel
+    /// below's): stacked sweep panels, each of whose axes can be read.
+    pub numbered: bool,
 }
 
 impl Axis {
@@ -72,6 +75,14 @@ impl Axis {
     /// shared by stacked panels is labelled once).
     pub fn shared(mut self) -> Axis {
         self.shared = true;
+        self
+    }
+
+    /// Shared with the panel stacked below, which labels it, keeping its
+    /// own numbers.
+    pub fn shared_numbered(mut self) -> Axis {
+        self.shared = true;
+        self.numbered = true;
         self
     }
 }
