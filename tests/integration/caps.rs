@@ -247,7 +247,7 @@ fn the_stiff_links_second_run_is_checked_before_the_first() {
         "--dt",
         "0.125",
         "--max-block-steps",
-        "800000",
+        "300000",
     ];
     let out = crate::common::ladder_cli(&args);
     let err = String::from_utf8_lossy(&out.stderr);
