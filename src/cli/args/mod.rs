@@ -614,4 +614,7 @@ pub struct BenchArgs {
     /// Window of a built-in movie's study, in tau [default: the movie's]
     #[arg(long, value_name = "T")]
     pub t_end: Option<f64>,
+    /// The caps on the study's runs, all its runs together
+    #[command(flatten)]
+    pub limits: SimLimitArgs,
 }
