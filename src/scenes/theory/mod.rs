@@ -8,6 +8,7 @@
 
 mod configurations;
 mod drawn;
+mod layout;
 mod pen;
 mod plots;
 mod schematic;
