@@ -186,14 +186,14 @@ impl Relative {
         }
     }
     #[inline]
-    fn to_upper(&self, p: [f64; 2]) -> [f64; 2] {
+    fn to_upper(self, p: [f64; 2]) -> [f64; 2] {
         [
             self.m[0][0] * p[0] + self.m[0][1] * p[1] + self.o[0],
             self.m[1][0] * p[0] + self.m[1][1] * p[1] + self.o[1],
         ]
     }
     #[inline]
-    fn to_lower(&self, p: [f64; 2]) -> [f64; 2] {
+    fn to_lower(self, p: [f64; 2]) -> [f64; 2] {
         let d = [p[0] - self.o[0], p[1] - self.o[1]];
         [
             self.m[0][0] * d[0] + self.m[1][0] * d[1],

@@ -366,6 +366,12 @@ fn driven_wave_met_at(r: &Record) -> Option<usize> {
     }
 }
 
+/// A theory panel's width, its pinned x range and its plots' x edges.
+type PanelSpan = (u32, Option<(f64, f64)>, Option<(i32, i32)>);
+
+/// One axis of the phase diagram: the plan's axis index and its values.
+type GridAxis<'a> = (usize, &'a [f64]);
+
 /// ω₊(0) and ΔU against α (or |α|, `fold`), one panel each, `width`
 /// wide; `range` pins the axis and `plot_x` the plots' edges (the stack's
 /// shared x extent).
@@ -373,7 +379,7 @@ fn theory_panel(
     theme: &Theme,
     plan: &Plan,
     (x_label, fold): (&str, bool),
-    (width, range, plot_x): (u32, Option<(f64, f64)>, Option<(i32, i32)>),
+    (width, range, plot_x): PanelSpan,
     (gap_h, barrier_h): (u32, u32),
 ) -> Result<Vec<(Chart, u32)>> {
     let pts = theory_points(plan);
@@ -437,7 +443,7 @@ fn phase_cells(
     theme: &Theme,
     plan: &Plan,
     records: &[Record],
-    (x, y): ((usize, &[f64]), (usize, &[f64])),
+    (x, y): (GridAxis<'_>, GridAxis<'_>),
 ) -> (Vec<Cell>, Option<ShadeBar>) {
     let speeds: Vec<f64> = records
         .iter()

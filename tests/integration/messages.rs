@@ -402,6 +402,13 @@ fn apparatus_with(dir: &std::path::Path, edits: &[(&str, &str)]) -> String {
     path.to_str().unwrap().to_string()
 }
 
+/// An apparatus case: the keys edited, the key blamed, what the message says.
+type Case = (
+    &'static [(&'static str, &'static str)],
+    &'static str,
+    &'static [&'static str],
+);
+
 /// Every apparatus value that passes its own check but not what it gives
 /// in the model's units is named by file:line:col and the key the user
 /// wrote, with advice that fits (before: "the added mass must be a finite
@@ -413,7 +420,7 @@ fn apparatus_with(dir: &std::path::Path, edits: &[(&str, &str)]) -> String {
 #[test]
 fn apparatus_values_that_break_the_conversion_name_their_key() {
     let dir = temp_dir("apparatus-keys");
-    let cases: [(&[(&str, &str)], &str, &[&str]); 8] = [
+    let cases: [Case; 8] = [
         (
             &[("thickness", "5e-324")],
             "apparatus.thickness",
@@ -438,9 +445,9 @@ fn apparatus_values_that_break_the_conversion_name_their_key() {
     for (edits, key, needles) in cases {
         let file = apparatus_with(&dir, edits);
         let err = bad_input(&["render", &file, "--check"], needles);
-        let located = format!("hostile.toml:");
+        let located = "hostile.toml:";
         assert!(
-            err.contains(&located) && err.contains(&format!(": {key}: ")),
+            err.contains(located) && err.contains(&format!(": {key}: ")),
             "{edits:?}: {err}"
         );
         assert!(!err.contains("dt = "), "{edits:?}: advice about dt: {err}");

@@ -192,9 +192,9 @@ fn halving_the_step_converges() {
         "{}",
         diff(&base, &runs[0], 0)
     );
-    for k in 0..times.len() {
+    for (k, t) in times.iter().enumerate() {
         let (d1, d2) = (diff(&base, &runs[0], k), diff(&runs[0], &runs[1], k));
-        assert!(d2 < 0.5 * d1, "t = {}: {d1} then {d2}", times[k]);
+        assert!(d2 < 0.5 * d1, "t = {t}: {d1} then {d2}");
     }
 }
 

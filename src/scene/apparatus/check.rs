@@ -244,7 +244,8 @@ impl Apparatus {
         if !self.gravity_ok() {
             // Blamed for the side it misses: G = 0 (an underflow) on what
             // makes it positive, G > 1 on what brings it under 1.
-            let zero = !(self.model_gravity() > 0.0);
+            let g0 = self.model_gravity();
+            let zero = g0.is_nan() || g0 <= 0.0;
             let key = self.blame(&FORCE_KEYS, "stiffness", |a| {
                 let g = a.model_gravity();
                 if zero { g > 0.0 } else { g <= 1.0 }
