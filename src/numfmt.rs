@@ -19,8 +19,16 @@ pub fn plain(x: f64) -> String {
 /// typographic minus sign.
 pub fn typeset(x: f64) -> String {
     let s = if x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e6) {
-        let e = format!("{x:e}");
-        e.replace("e-", "e−")
+        // Twelve significant digits: 1.9999999999999998e-4, a converted
+        // value's rounding noise, reads 2e−4.
+        let e = format!("{x:.11e}");
+        let (mantissa, exponent) = e.split_once('e').unwrap_or((&e, "0"));
+        let mantissa = if mantissa.contains('.') {
+            mantissa.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            mantissa
+        };
+        format!("{mantissa}e{exponent}").replace("e-", "e−")
     } else {
         let r = (x * 1e9).round() / 1e9;
         format!("{r}")
@@ -47,5 +55,7 @@ mod tests {
         assert_eq!(typeset(2e-4), "2e−4");
         assert_eq!(typeset(0.1 + 0.2), "0.3");
         assert_eq!(typeset(1.5e6), "1.5e6");
+        assert_eq!(typeset(1.9999999999999998e-4), "2e−4");
+        assert_eq!(typeset(-1.234e-7), "−1.234e−7");
     }
 }

@@ -47,44 +47,131 @@ pub fn fitted<T>(
         }
         Err(_) => return first,
     };
-    let at = |k: u32| {
-        let pt = Some(hundredths_pt(k));
-        match side {
-            PageSide::Width => Style {
-                width_pt: pt,
-                ..style
-            },
-            PageSide::Height => Style {
-                height_pt: pt,
-                ..style
-            },
+    // The smallest size of the side that overflows; when no size of it
+    // holds the figure (a wider page makes it taller than the height
+    // asked), the smallest of the other side at the size asked.
+    let found = match smallest(&style, side, need, &draw)? {
+        Some(k) => Some((side, k)),
+        None => {
+            let other = match side {
+                PageSide::Width => PageSide::Height,
+                PageSide::Height => PageSide::Width,
+            };
+            let from = asked(&style, other) + HUNDREDTH_PT;
+            smallest(&style, other, from, &draw)?.map(|k| (other, k))
         }
     };
+    let Some((side, hi)) = found else {
+        // The user's two sizes together hold it at no size of either
+        // alone: the style's own page, where it holds the figure.
+        if user_side(&style).is_some() && own_page_fits(&style, &draw)? {
+            return Err(both_sizes_refused(
+                &style,
+                first.as_ref().ok().map(|f| &f.0),
+            ));
+        }
+        // Crowded at every size (or never drawn): what was drawn, or the
+        // refusal of the page's own overflow.
+        return match first {
+            Ok((picture, extra)) => match picture.misfit(&style) {
+                Some((side, need)) => Err(picture.refusal(&style, side, need)),
+                None => Ok((picture, extra)),
+            },
+            Err(e) => Err(e),
+        };
+    };
+    let picture = match first {
+        Ok((p, _)) => p,
+        Err(_) => draw(&Theme::of(&at(&style, side, hi)))?.0,
+    };
+    Err(picture.refusal(&style, side, hundredths_pt(hi)))
+}
+
+/// Whether `draw` fits the page of `style`'s named style (its own width
+/// and height, the user's left out).
+fn own_page_fits<T>(style: &Style, draw: &impl Fn(&Theme) -> Result<(Picture, T)>) -> Result<bool> {
+    let named = Style::named(style.name);
+    let own = Style {
+        width_pt: named.width_pt,
+        height_pt: named.height_pt,
+        ..*style
+    };
+    match draw(&Theme::of(&own)) {
+        Ok((p, _)) => match misfit(&p, &own) {
+            None => Ok(true),
+            Some((over, _)) => Ok(packed(&own, over, draw)?.is_some()),
+        },
+        Err(Error::BadInput(_)) => Ok(false),
+        Err(e) => Err(e),
+    }
+}
+
+/// The refusal of a page whose width and height, as the user set them,
+/// hold the figure at no larger size of either alone, where the style's
+/// own page does.
+fn both_sizes_refused(style: &Style, picture: Option<&Picture>) -> Error {
+    let inches = |pt: Option<f32>| {
+        pt.map_or("its own".to_string(), |pt| {
+            format!("{:.2}in", (pt / 72.0 * 100.0).round() / 100.0)
+        })
+    };
+    let what = picture
+        .and_then(|p| p.title())
+        .filter(|t| !t.is_empty())
+        .map_or("the figure".to_string(), |t| format!("\"{t}\""));
+    Error::bad_input(format!(
+        "--width {} with --height {}: no larger width or height alone holds {what} at {} pt \
+         text (it would print its text smaller); --style {}'s own page holds it: give \
+         neither --width nor --height",
+        inches(style.width_pt),
+        inches(style.height_pt),
+        style.font_pt,
+        style.name.name()
+    ))
+}
+
+/// `style` with `side` set to `k` hundredths of an inch.
+fn at(style: &Style, side: PageSide, k: u32) -> Style {
+    let pt = Some(hundredths_pt(k));
+    match side {
+        PageSide::Width => Style {
+            width_pt: pt,
+            ..*style
+        },
+        PageSide::Height => Style {
+            height_pt: pt,
+            ..*style
+        },
+    }
+}
+
+/// The smallest size of `side`, in hundredths of an inch above the size
+/// asked, at which `draw` fits (found by doubling from `need`, pt, then
+/// bisection: that size fits and a hundredth less does not); `None` when
+/// none up to [`LARGEST`] does.
+fn smallest<T>(
+    style: &Style,
+    side: PageSide,
+    need: f32,
+    draw: &impl Fn(&Theme) -> Result<(Picture, T)>,
+) -> Result<Option<u32>> {
     let fits = |k: u32| -> Result<bool> {
-        let s = at(k);
+        let s = at(style, side, k);
         match draw(&Theme::of(&s)) {
             Ok((p, _)) => match misfit(&p, &s) {
                 None => Ok(true),
-                Some((over, _)) => Ok(packed(&s, over, &draw)?.is_some()),
+                Some((over, _)) => Ok(packed(&s, over, draw)?.is_some()),
             },
             Err(Error::BadInput(_)) => Ok(false),
             Err(e) => Err(e),
         }
     };
     // `lo` does not fit (it is the size asked, or below); `hi` does.
-    let mut lo = (asked(&style, side) / HUNDREDTH_PT).floor() as u32;
+    let mut lo = (asked(style, side) / HUNDREDTH_PT).floor() as u32;
     let mut hi = ((need / HUNDREDTH_PT).round() as u32).max(lo + 1);
     while !fits(hi)? {
         if hi >= LARGEST {
-            // Crowded at every size (or never drawn): what was drawn, or
-            // the refusal of the page's own overflow.
-            return match first {
-                Ok((picture, extra)) => match picture.misfit(&style) {
-                    Some((side, need)) => Err(picture.refusal(&style, side, need)),
-                    None => Ok((picture, extra)),
-                },
-                Err(e) => Err(e),
-            };
+            return Ok(None);
         }
         lo = hi;
         hi = (hi * 2).min(LARGEST);
@@ -97,12 +184,7 @@ pub fn fitted<T>(
             lo = mid;
         }
     }
-    let smallest = hundredths_pt(hi);
-    let picture = match first {
-        Ok((p, _)) => p,
-        Err(_) => draw(&Theme::of(&at(hi)))?.0,
-    };
-    Err(picture.refusal(&style, side, smallest))
+    Ok(Some(hi))
 }
 
 /// `k` hundredths of an inch in points, exactly as `--width` reads the
@@ -110,7 +192,9 @@ pub fn fitted<T>(
 /// the size the user will ask, not at one an ulp apart.
 fn hundredths_pt(k: u32) -> f32 {
     let typed = format!("{}.{:02}", k / 100, k % 100);
-    typed.parse::<f32>().map_or(k as f32 * HUNDREDTH_PT, |v| v * PT_PER_IN)
+    typed
+        .parse::<f32>()
+        .map_or(k as f32 * HUNDREDTH_PT, |v| v * PT_PER_IN)
 }
 
 /// Fractions of the page a figure that overflows it is laid out for

@@ -173,7 +173,11 @@ mod tests {
         m.model.alpha = 70.0;
         m.model.n = 20;
         m.model.gravity = 0.0;
-        assert_eq!(derived_name(&m, &base), "a70-n20-grav0");
+        // The window this change gives by itself is not named; the base's
+        // window kept on it is the user's request.
+        let followed = m.clone().window_following(&base);
+        assert_eq!(derived_name(&followed, &base), "a70-n20-grav0");
+        assert!(derived_name(&m, &base).starts_with("a70-n20-grav0-to"));
         assert_eq!(derived_name(&base, &base), "paper");
     }
 }

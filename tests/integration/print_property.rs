@@ -787,6 +787,11 @@ fn draw_following_refusal(
         failures.push(format!("{:?}: refused at its own size: {msg}", d.args));
     }
     let Some((flag, value)) = named_size(&msg) else {
+        // Both sizes set and neither alone can grow to hold it: the
+        // style's own page must then hold it.
+        if msg.contains("give neither --width nor --height") {
+            return own_page(d, dir, failures, &msg);
+        }
         failures.push(format!("{:?}: refused without a size: {msg}", d.args));
         return None;
     };
@@ -834,6 +839,29 @@ fn draw_following_refusal(
         Ok(p) => Some(p),
         Err((_, msg)) => {
             failures.push(format!("{:?}: the size named fails too: {msg}", d.args));
+            None
+        }
+    }
+}
+
+/// `d` drawn without the user's `--width` and `--height` (which the
+/// refusal `msg` told to drop): it must be drawn.
+fn own_page(d: &mut Draw, dir: &Path, failures: &mut Vec<String>, msg: &str) -> Option<PathBuf> {
+    let mut args = Vec::new();
+    let mut it = d.args.iter();
+    while let Some(a) = it.next() {
+        if a == "--width" || a == "--height" {
+            it.next();
+        } else {
+            args.push(a.clone());
+        }
+    }
+    d.args = args;
+    d.height_pt = None;
+    match run(&d.args, dir) {
+        Ok(p) => Some(p),
+        Err((_, again)) => {
+            failures.push(format!("{:?}: after \"{msg}\" fails too: {again}", d.args));
             None
         }
     }

@@ -15,6 +15,17 @@ pub(super) fn chart(theme: &Theme, spec: &ChartSpec, w: u32, h: u32) -> Result<P
     chart_taller(theme, spec, (w, h), 0)
 }
 
+/// A chart of a theory figure `(w, h)` pixels on the page as it is (no
+/// [`fit`]), growing for a legend under its plot as [`chart`] does.
+pub(super) fn chart_sized(theme: &Theme, spec: &ChartSpec, (w, h): (u32, u32)) -> Result<Picture> {
+    let share = if narrow(theme) { 0.5 } else { 1.0 };
+    let most = theme
+        .style
+        .fit_box()
+        .map_or(u32::MAX, |(_, bh)| (share * bh) as u32);
+    Ok(line_chart_growing(theme, spec, w, h, most)?.into())
+}
+
 /// [`chart`], `extra` pixels taller than it fits by default.
 pub(super) fn chart_taller(
     theme: &Theme,

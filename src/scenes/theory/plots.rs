@@ -5,8 +5,8 @@
 
 use super::drawn::{self, LOOP_SAMPLES};
 use super::layout::{
-    FIGURE_WIDTH, chart, chart_taller, columns, fit, grown, narrow, page_width, pairs, stack,
-    titled_panel,
+    FIGURE_WIDTH, chart, chart_sized, chart_taller, columns, fit, grown, narrow, page_width, pairs,
+    stack, titled_panel,
 };
 use super::pen;
 use super::{FigureInput, configuration, frame, grid, signed_deg};
@@ -41,17 +41,33 @@ pub fn gravity_potential(theme: &Theme, input: &FigureInput) -> Result<Picture> 
         Palette.color(Role::Ink),
         Marker::Circle,
     ));
-    let plot = chart(theme, &spec, 620, 560)?;
     let which: Vec<usize> = [1, 3]
         .into_iter()
         .filter(|&i| i < input.a_over_b.len())
         .collect();
-    let insets = potential_insets(theme, input, &which)?;
-    let body = grid(
-        theme,
-        &[Panel::new(plot), Panel::new(insets)],
-        columns(theme, 2),
-    )?;
+    // The insets beside the chart keep their size while the chart scales
+    // with the page: on a print page side by side, the chart gives up
+    // what they take. They go under it where they are a row of four.
+    // On a page too short for it (a slide at 20 pt) the chart is drawn
+    // flatter until the figure keeps the page.
+    let under = insets_in_a_row(theme);
+    let body_at = |flat: f32| -> Result<Picture> {
+        let insets = potential_insets(theme, input, &which, flat)?;
+        let plot = if theme.is_print() && !under {
+            let (w, h) = fit(theme, (620, 560));
+            let room = page_width(theme, FIGURE_WIDTH)
+                .saturating_sub(2 * (size::MARGIN + size::GAP) + insets.pixel_size().0 + 8);
+            let h = ((h as f32 * flat) as u32).max(60);
+            chart_sized(theme, &spec, (w.min(room).max(60), h))?
+        } else {
+            chart(theme, &spec, 620, 560)?
+        };
+        grid(
+            theme,
+            &[Panel::new(plot), Panel::new(insets)],
+            if under { 1 } else { 2 },
+        )
+    };
     // (At `paper` the insets are one row of four under the chart.)
     let notes = format!(
         "Linkage limit, b/s = {b}: U(θ) = −mg√(2(a² + b²) − 4s²cos²θ − (a² − b²)²/(4s²cos²θ)), \
@@ -59,13 +75,27 @@ pub fn gravity_potential(theme: &Theme, input: &FigureInput) -> Result<Picture> 
          at U_{{min}} = −2mgb. Right: the ladder (4 blocks) at θ = −α and θ = +α for two of the \
          curves; the two orientations are degenerate."
     );
-    frame(
-        theme,
-        &input.title,
-        &body,
-        &notes,
-        page_width(theme, FIGURE_WIDTH),
-    )
+    let framed = |flat: f32| -> Result<Picture> {
+        let body = body_at(flat)?;
+        frame(
+            theme,
+            &input.title,
+            &body,
+            &notes,
+            page_width(theme, FIGURE_WIDTH),
+        )
+    };
+    let first = framed(1.0)?;
+    if !theme.is_print() || under || first.misfit(&theme.style).is_none() {
+        return Ok(first);
+    }
+    for flat in [0.85, 0.7, 0.6, 0.5, 0.4] {
+        let flatter = framed(flat)?;
+        if flatter.misfit(&theme.style).is_none() {
+            return Ok(flatter);
+        }
+    }
+    Ok(first)
 }
 
 /// The U(θ) curves' colours, with their names for the inset labels: none
@@ -90,16 +120,32 @@ fn color_name(i: usize) -> &'static str {
 
 /// Ground states of 4 blocks at θ = ∓α for the curves `which`, one row per
 /// curve.
-fn potential_insets(theme: &Theme, input: &FigureInput, which: &[usize]) -> Result<Picture> {
+/// Whether Fig. 2c's insets are one row of four under the chart (a page
+/// whose body is under 600 design pixels wide), not two columns beside it.
+fn insets_in_a_row(theme: &Theme) -> bool {
+    super::body_room(theme).is_some_and(|r| r < 600.0)
+}
+
+/// Fig. 2c's insets; beside the chart, their cells `flat` times their
+/// size (a short page).
+fn potential_insets(
+    theme: &Theme,
+    input: &FigureInput,
+    which: &[usize],
+    flat: f32,
+) -> Result<Picture> {
     let b = input.model.b;
     let mut panels = Vec::new();
     // On a narrow page one row of four small ladders under the chart.
-    let (cell, columns, short) = match super::body_room(theme).filter(|r| *r < 600.0) {
+    let (cell, columns, short) = match super::body_room(theme).filter(|_| insets_in_a_row(theme)) {
         Some(room) => {
             let w = ((room - 3.0 * size::GAP as f32) / 4.0).floor() as u32;
             ((w, w * 3 / 2), 4, true)
         }
-        None => ((120, 230), 2, false),
+        None => {
+            let f = |v: f32| (v * flat).round() as u32;
+            ((f(120.0), f(230.0)), 2, false)
+        }
     };
     for &i in which {
         let r = input.a_over_b[i];
@@ -152,8 +198,8 @@ pub fn dispersion(theme: &Theme, input: &FigureInput) -> Result<Picture> {
                  eigenvalues of the model's constrained periodic chain (kinetic metric diag(m, I), \
                  as in the paper) lie on the corrected curves. ω₊(0) = 4ω₀(s/a)|sin 2α| > 0 is the gap \
                  of the rotational branch; ω₋ is acoustic.";
-    let draw = |extra: u32| -> Result<Picture> {
-        let (w, h) = (size.0, size.1 + extra);
+    let draw_at = |h: u32| -> Result<Picture> {
+        let w = size.0;
         let mut panels = Vec::new();
         for (k, (l, d)) in lines.iter().zip(&dots).enumerate() {
             let title = format!("α = {}°", short_number(l.alpha_deg));
@@ -184,12 +230,24 @@ pub fn dispersion(theme: &Theme, input: &FigureInput) -> Result<Picture> {
         )
     };
     // Plots no taller than wide.
-    grown(
+    let drawn = grown(
         theme,
         count.div_ceil(cols) as u32,
         size.0.saturating_sub(size.1),
-        draw,
-    )
+        |extra| draw_at(size.1 + extra),
+    )?;
+    // A page too short for two rows of them (a slide at 20 pt): plots
+    // flatter, each row shorter, until the figure keeps the page.
+    if drawn.misfit(&theme.style).is_none() {
+        return Ok(drawn);
+    }
+    for f in [0.85, 0.7, 0.6, 0.5] {
+        let flatter = draw_at(((size.1 as f32 * f) as u32).max(60))?;
+        if flatter.misfit(&theme.style).is_none() {
+            return Ok(flatter);
+        }
+    }
+    Ok(drawn)
 }
 
 fn dispersion_panel(
