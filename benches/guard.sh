@@ -19,7 +19,12 @@
 #   movie4  `ladder movie 4`: 200 frames, GIF and kymograph
 #   tank    the water-tank scene (`ladder scene water-tank`) as a data
 #           scene: its runs and data file, no pictures
-#   all     `ladder all`: every figure and movie and the gallery
+#   all     `ladder all`: every figure and movie and the gallery (the
+#           builds' catalogues may differ: a build with more entries does
+#           more work)
+#   common  the entries both catalogues have (`ladder list`), each build
+#           rendering its own scene files of them (`ladder scene`) in one
+#           `ladder render`: the same outputs as `all`, without the gallery
 #
 # Building COMMIT takes one release build (several minutes on 2 cores);
 # the current build is `cargo build --release` of this work tree. Nothing
@@ -73,6 +78,26 @@ cp "$base_bin" "$tmp/ladder-then"
 python3 - "$tmp" "$runs" "$only" <<'PY'
 import os, statistics, subprocess, sys, time
 tmp, runs, only = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+now, then = f"{tmp}/ladder-now", f"{tmp}/ladder-then"
+
+def catalogue(binary):
+    """The (kind, id) of every built-in entry of `binary`."""
+    listed = subprocess.run([binary, "list"], capture_output=True, text=True, check=True)
+    return {tuple(line.split()[:2]) for line in listed.stdout.splitlines() if line.strip()}
+
+def scene_files(binary, entries, folder):
+    """`binary`'s own scene file of each entry, in `folder`."""
+    os.makedirs(folder, exist_ok=True)
+    files = []
+    for kind, name in sorted(entries):
+        path = os.path.join(folder, f"{kind}-{name}.toml")
+        with open(path, "w") as f:
+            subprocess.run([binary, "scene", kind, name], stdout=f, check=True)
+        files.append(path)
+    return files
+
+common = catalogue(now) & catalogue(then)
+files = {now: scene_files(now, common, f"{tmp}/scenes-now"), then: scene_files(then, common, f"{tmp}/scenes-then")}
 cases = [
     ("paper", "the paper's run (ladder simulate)", ["simulate", "--json"]),
     ("chain", "long chain, N = 1000, 400 tau", ["simulate", "--n", "1000", "--t-end", "400", "--json"]),
@@ -80,19 +105,22 @@ cases = [
     ("movie4", "movie 4 (200 frames)", ["movie", "4", "--out", "OUT"]),
     ("tank", "water-tank run (data scene)", ["render", f"{tmp}/tank.toml", "--out", "OUT"]),
     ("all", "ladder all", ["all", "--out", "OUT"]),
+    ("common", f"the {len(common)} entries both builds have", ["render", "SCENES", "--out", "OUT"]),
 ]
 if only:
     wanted = only.split(",")
     unknown = [w for w in wanted if w not in {c[0] for c in cases}]
     if unknown:
-        sys.exit(f"guard.sh: no case {', '.join(unknown)} (paper, chain, sweep, movie4, tank, all)")
+        sys.exit(f"guard.sh: no case {', '.join(unknown)} (paper, chain, sweep, movie4, tank, all, common)")
     cases = [c for c in cases if c[0] in wanted]
 
 def once(binary, args):
     """Wall and CPU seconds of one whole process; its output dropped."""
     out = os.path.join(tmp, "out")
     subprocess.run(["rm", "-rf", out], check=True)
-    argv = [binary] + [out if a == "OUT" else a for a in args]
+    argv = [binary]
+    for a in args:
+        argv += files[binary] if a == "SCENES" else [out if a == "OUT" else a]
     t0 = time.perf_counter()
     p = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     err = p.stderr.read()
@@ -103,7 +131,6 @@ def once(binary, args):
         sys.exit(f"guard.sh: {' '.join(argv)} failed ({p.returncode}): {err.decode()[-400:]}")
     return wall, usage.ru_utime + usage.ru_stime
 
-now, then = f"{tmp}/ladder-now", f"{tmp}/ladder-then"
 print(f"{'case':<36} {'now wall':>9} {'then wall':>9} {'ratio':>6} {'now cpu':>8} {'then cpu':>8} {'ratio':>6}  spread of wall ratios")
 for key, what, args in cases:
     once(now, args), once(then, args)  # warm-up: caches, page cache
