@@ -5,6 +5,7 @@
 //! the figure needs: it is found by drawing the figure again.
 
 use super::charts::{ChartSpec, line_chart_growing};
+use super::page_style::PT_PER_IN;
 use super::{PageSide, Picture, Style, Theme};
 use crate::error::{Error, Result};
 
@@ -47,7 +48,7 @@ pub fn fitted<T>(
         Err(_) => return first,
     };
     let at = |k: u32| {
-        let pt = Some(k as f32 * HUNDREDTH_PT);
+        let pt = Some(hundredths_pt(k));
         match side {
             PageSide::Width => Style {
                 width_pt: pt,
@@ -96,12 +97,20 @@ pub fn fitted<T>(
             lo = mid;
         }
     }
-    let smallest = hi as f32 * HUNDREDTH_PT;
+    let smallest = hundredths_pt(hi);
     let picture = match first {
         Ok((p, _)) => p,
         Err(_) => draw(&Theme::of(&at(hi)))?.0,
     };
     Err(picture.refusal(&style, side, smallest))
+}
+
+/// `k` hundredths of an inch in points, exactly as `--width` reads the
+/// size a refusal names ("6.36in"): a layout on a knife edge is searched at
+/// the size the user will ask, not at one an ulp apart.
+fn hundredths_pt(k: u32) -> f32 {
+    let typed = format!("{}.{:02}", k / 100, k % 100);
+    typed.parse::<f32>().map_or(k as f32 * HUNDREDTH_PT, |v| v * PT_PER_IN)
 }
 
 /// Fractions of the page a figure that overflows it is laid out for

@@ -50,9 +50,7 @@ fn drive_parts(scene: &Scene, base: &Scene) -> Vec<String> {
         parts.push(format!("flips{}", s.join("_")));
     }
     let base_td = bd.first().map(|f| f.duration);
-    if d.iter().any(|f| Some(f.duration) != base_td)
-        && let Some(f) = d.first()
-    {
+    if let Some(f) = d.iter().find(|f| Some(f.duration) != base_td) {
         parts.push(format!(
             "{}{}",
             Param::DriveTime.spec().tag,

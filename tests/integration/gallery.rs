@@ -398,7 +398,7 @@ fn every_image_and_video_loads_in_a_real_browser() {
     let dir = render_all("browser", Some(formats));
     let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
     let videos = html.matches("<video ").count();
-    assert_eq!(videos, if cfg!(feature = "mp4") { 11 } else { 0 });
+    assert_eq!(videos, if cfg!(feature = "mp4") { 12 } else { 0 });
     let expected = html.matches("<img ").count() + videos;
     assert!(expected >= 22, "one picture per scene at least");
     for f in ["figure-3.svg", "figure-3.pdf"] {

@@ -44,7 +44,7 @@ fn an_unknown_id_suggests_the_closest() {
     );
     bad_input(&["figure", "edge"], &["did you mean edge-mode?"]);
     bad_input(&["figure", "windng"], &["did you mean winding?"]);
-    bad_input(&["figure", "4"], &["did you mean 4a or movie 4?"]);
+    bad_input(&["figure", "4"], &["did you mean 4a, 4b or movie 4?"]);
     bad_input(&["movie", "13"], &["did you mean 3, 10 or 11?"]);
     let far = bad_input(
         &["movie", "zzz"],

@@ -65,6 +65,15 @@ fn every_catalogue_entry_renders_with_its_data() {
                 assert!(r["outcome"].is_string(), "{}", entry.id);
                 assert!(r["arrival_times"].as_array().unwrap().len() >= 4);
             }
+        } else if entry.scene.rings.is_some() {
+            // A ring chain's data file: its run in `rings` (docs/rings.md),
+            // every linked pair held by the guard, the energy sampled.
+            let r = &v["rings"];
+            assert!(r["steps"].as_u64().is_some_and(|s| s > 0), "{}", entry.id);
+            assert!(r["guard_checks"].as_u64().is_some_and(|c| c > 0));
+            assert!(!r["links"].as_array().unwrap().is_empty(), "{}", entry.id);
+            assert!(r["energy"].as_array().unwrap().len() > 2, "{}", entry.id);
+            assert!(r["flips"].is_array() && r["waves"].is_array());
         } else if entry.scene.fidelity() == scene::Fidelity::Simulation {
             let runs = v["runs"].as_array().unwrap();
             assert!(!runs.is_empty(), "{}", entry.id);
