@@ -108,9 +108,7 @@ impl Timings {
             let name = format!("{} {}", t.kind.name(), t.name);
             s += &format!(
                 "{name:<width$}  {:>8.2}  {:>5}  {:>12}\n",
-                t.wall_s,
-                t.runs,
-                t.block_steps
+                t.wall_s, t.runs, t.block_steps
             );
         }
         let runs: u64 = rows.iter().map(|t| t.runs).sum();
@@ -119,10 +117,7 @@ impl Timings {
             .map_or("not measured".into(), |c| format!("{c:.2} s"));
         s += &format!(
             "{:<width$}  {:>8.2}  {:>5}  {:>12}\n",
-            "whole render",
-            self.wall_s,
-            self.runs,
-            self.block_steps
+            "whole render", self.wall_s, self.runs, self.block_steps
         );
         s += &format!(
             "CPU (user + system, every thread, whole process): {cpu}; runs outside any \

@@ -110,7 +110,9 @@ pub fn fitted<T>(
 /// the size the user will ask, not at one an ulp apart.
 fn hundredths_pt(k: u32) -> f32 {
     let typed = format!("{}.{:02}", k / 100, k % 100);
-    typed.parse::<f32>().map_or(k as f32 * HUNDREDTH_PT, |v| v * PT_PER_IN)
+    typed
+        .parse::<f32>()
+        .map_or(k as f32 * HUNDREDTH_PT, |v| v * PT_PER_IN)
 }
 
 /// Fractions of the page a figure that overflows it is laid out for

@@ -52,7 +52,10 @@ fn verified_runs(run: &serde_json::Value, n: u64) -> Row {
         block_steps += s * n;
         runs += 1;
     }
-    assert_eq!(evals, total, "the halvings account for every force evaluation");
+    assert_eq!(
+        evals, total,
+        "the halvings account for every force evaluation"
+    );
     (runs, block_steps)
 }
 
