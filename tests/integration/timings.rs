@@ -47,7 +47,7 @@ fn verified_runs(run: &serde_json::Value, n: u64) -> Row {
     let (mut runs, mut evals, mut block_steps) = (0, 0, 0);
     while evals < total {
         let s = steps >> runs;
-        assert!(s > 0 && steps % (1 << runs) == 0, "{integrator}");
+        assert!(s > 0 && steps.is_multiple_of(1 << runs), "{integrator}");
         evals += s + 1;
         block_steps += s * n;
         runs += 1;
