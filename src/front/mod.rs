@@ -8,3 +8,4 @@ pub mod executor;
 pub mod options;
 pub mod render;
 pub mod sweep;
+pub mod timings;

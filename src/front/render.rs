@@ -5,9 +5,11 @@
 //! last.
 
 use crate::error::{Error, Result};
+use crate::front::timings::{self, Timing, Timings};
 use crate::output;
 use crate::scene::{self, Kind, Scene};
 use crate::scenes::{self, MovieOptions, Outputs};
+use crate::sim::tally;
 use std::path::{Path, PathBuf};
 
 /// What a front end is told while a folder is rendered.
@@ -51,7 +53,22 @@ pub fn into_folder(
     index: bool,
     progress: &Progress<'_>,
 ) -> Result<Vec<String>> {
+    into_folder_timed(scenes, out, movie, outputs, index, progress).map(|(files, _)| files)
+}
+
+/// [`into_folder`], and where its time went: each output's wall time and
+/// the runs and block-steps it simulated, the process's CPU time
+/// (`front::timings` says exactly what is measured).
+pub fn into_folder_timed(
+    scenes: &[Scene],
+    out: &Path,
+    movie: &MovieOptions,
+    outputs: &Outputs,
+    index: bool,
+    progress: &Progress<'_>,
+) -> Result<(Vec<String>, Timings)> {
     use rayon::prelude::*;
+    let start = timings::Start::now();
     // The gallery shows a PNG of every figure: one is made if none is asked.
     let outputs = &Outputs {
         preview: index,
@@ -75,32 +92,11 @@ pub fn into_folder(
         scenes::check(s, movie, outputs).map_err(|e| (progress.hint)(e, s))?;
     }
     warn_replaced(scenes, out)?;
-    let written: Vec<Vec<String>> = scenes
+    let written: Vec<(Vec<String>, Timing)> = scenes
         .par_iter()
-        .map(|s| {
-            // Each file streamed into its temporary file as it is drawn;
-            // the scene's files are put in place together once all are
-            // complete, its data file first (`output::group`).
-            let mut files: Vec<String> = Vec::new();
-            let mut group = output::group::Group::new();
-            let rendered =
-                scenes::render_to(s, movie, outputs, progress.frame, &mut |name, fill| {
-                    (progress.file)();
-                    group.write_with(&out.join(name), |f| {
-                        fill(f)?;
-                        (progress.file)();
-                        Ok(())
-                    })?;
-                    files.push(name.to_string());
-                    Ok(())
-                });
-            rendered
-                .and_then(|()| group.commit())
-                .map_err(|e| (progress.hint)(e, s))?;
-            (progress.scene)(s);
-            Ok(files)
-        })
+        .map(|s| timed(s, || render_scene(s, out, movie, outputs, progress)))
         .collect::<Result<_>>()?;
+    let (written, timed): (Vec<Vec<String>>, Vec<Timing>) = written.into_iter().unzip();
     let mut files: Vec<String> = written.iter().flatten().cloned().collect();
     if index {
         let items: Vec<crate::gallery::Item<'_>> = scenes
@@ -115,6 +111,52 @@ pub fn into_folder(
         output::write_atomic(&out.join("index.html"), page.as_bytes())?;
         files.push("index.html".into());
     }
+    Ok((files, start.finish(timed)))
+}
+
+/// `render` of `scene` timed: its wall time, and the runs it simulated
+/// counted on whichever thread they ran (`sim::tally`).
+fn timed<T>(scene: &Scene, render: impl FnOnce() -> Result<T>) -> Result<(T, Timing)> {
+    let tally = std::sync::Arc::new(tally::Tally::default());
+    let at = std::time::Instant::now();
+    let done = tally::within(Some(tally.clone()), render)?;
+    let timing = Timing {
+        kind: scene.kind(),
+        name: scene.name.clone(),
+        wall_s: at.elapsed().as_secs_f64(),
+        runs: tally.runs(),
+        block_steps: tally.block_steps(),
+    };
+    Ok((done, timing))
+}
+
+/// Renders one scene into `out`: each file streamed into its temporary
+/// file as it is drawn; the scene's files put in place together once all
+/// are complete, its data file first (`output::group`). Returns their
+/// names.
+fn render_scene(
+    s: &Scene,
+    out: &Path,
+    movie: &MovieOptions,
+    outputs: &Outputs,
+    progress: &Progress<'_>,
+) -> Result<Vec<String>> {
+    let mut files: Vec<String> = Vec::new();
+    let mut group = output::group::Group::new();
+    let rendered = scenes::render_to(s, movie, outputs, progress.frame, &mut |name, fill| {
+        (progress.file)();
+        group.write_with(&out.join(name), |f| {
+            fill(f)?;
+            (progress.file)();
+            Ok(())
+        })?;
+        files.push(name.to_string());
+        Ok(())
+    });
+    rendered
+        .and_then(|()| group.commit())
+        .map_err(|e| (progress.hint)(e, s))?;
+    (progress.scene)(s);
     Ok(files)
 }
 

@@ -73,6 +73,8 @@ pub fn run(chain: &RingChain, times: &[f64]) -> Result<RingRun> {
         take(&sys, &mut samples, &mut next);
     }
     let waves = observe::waves(&tracker.flips, sys.n(), chain.held, chain.turn.start);
+    // One run of `steps` steps of every ring (`ladder all --timings`).
+    crate::sim::tally::record(steps, sys.n());
     Ok(RingRun {
         samples,
         flips: tracker.flips,

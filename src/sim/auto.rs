@@ -66,9 +66,18 @@ pub fn simulate_verified(
     let mut dt = budget.dt;
     let mut total = 0;
     // The first pair of runs is independent: both cores take one each.
+    let tally = super::tally::current();
     let (first_coarse, first_fine) = rayon::join(
-        || simulate(scenario, &[], &scheme(scenario, dt)),
-        || simulate(scenario, sample_times, &scheme(scenario, 0.5 * dt)),
+        || {
+            super::tally::within(tally.clone(), || {
+                simulate(scenario, &[], &scheme(scenario, dt))
+            })
+        },
+        || {
+            super::tally::within(tally.clone(), || {
+                simulate(scenario, sample_times, &scheme(scenario, 0.5 * dt))
+            })
+        },
     );
     // Of the coarser run only its arrival times are compared: its samples
     // (none for the first, which records none) are dropped at once, so a

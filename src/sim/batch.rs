@@ -71,9 +71,10 @@ pub fn simulate_many(
             isa
         }
         _ => {
+            let tally = super::tally::current();
             return scenarios
                 .par_iter()
-                .map(|sc| one(sc, config, stepping))
+                .map(|sc| super::tally::within(tally.clone(), || one(sc, config, stepping)))
                 .collect();
         }
     };
@@ -84,12 +85,18 @@ pub fn simulate_many(
     }
     let mut results: Vec<Option<Result<Trajectory>>> = scenarios.iter().map(|_| None).collect();
     let threads = rayon::current_num_threads();
+    let tally = super::tally::current();
     for queue in groups.values() {
         if stepping == Stepping::Fastest && queue.len() < SMALL_GROUP_PER_THREAD * threads {
             // Too few runs to fill the lanes: one by one on every core.
             let done: Vec<_> = queue
                 .par_iter()
-                .map(|&i| (i, one(&scenarios[i], &config, stepping)))
+                .map(|&i| {
+                    let run = super::tally::within(tally.clone(), || {
+                        one(&scenarios[i], &config, stepping)
+                    });
+                    (i, run)
+                })
                 .collect();
             for (i, result) in done {
                 results[i] = Some(result);
@@ -106,8 +113,10 @@ pub fn simulate_many(
             queue,
             next: &next,
         };
-        let done: Vec<Vec<(usize, Result<Trajectory>)>> =
-            (0..workers).into_par_iter().map(|_| job.work()).collect();
+        let done: Vec<Vec<(usize, Result<Trajectory>)>> = (0..workers)
+            .into_par_iter()
+            .map(|_| super::tally::within(tally.clone(), || job.work()))
+            .collect();
         for (i, result) in done.into_iter().flatten() {
             results[i] = Some(result);
         }
@@ -514,7 +523,7 @@ impl<'s> Run<'s> {
         let evals = self.steps + self.rhs.force_evals.min(self.steps);
         let at_rest = proved_at_rest(self.rhs.ladder, self.rhs.protocol(), self.t, &st);
         let waves = self.tracker.finish(&st.q, at_rest);
-        let mut traj = Trajectory::unsampled(
+        let mut traj = Trajectory::finished(
             st,
             self.t,
             std::mem::take(&mut self.arrivals.arrival),

@@ -18,6 +18,7 @@ mod simd;
 pub mod speed;
 pub mod step_bounds;
 pub mod stepping;
+pub mod tally;
 pub mod trajectory;
 pub mod waves;
 pub mod window;
@@ -509,7 +510,7 @@ pub fn run_streaming(
     }
     let at_rest = proved_at_rest(ladder, &scenario.protocol, t, &st);
     let waves = tracker.finish(&st.q, at_rest);
-    let mut traj = Trajectory::unsampled(st, t, arrivals.arrival, steps, rhs.force_evals);
+    let mut traj = Trajectory::finished(st, t, arrivals.arrival, steps, rhs.force_evals);
     traj.waves = waves;
     Ok(traj)
 }

@@ -63,7 +63,22 @@ impl Trajectory {
 }
 
 impl Trajectory {
-    /// A trajectory without samples.
+    /// The result of a finished run of `steps` steps, without samples,
+    /// counted once in the run tally ([`super::tally`], `--timings`):
+    /// every run loop (the portable one and each lane of the batch
+    /// kernels) ends here exactly once.
+    pub(super) fn finished(
+        final_state: State,
+        t_final: f64,
+        arrival_times: Vec<Option<f64>>,
+        steps: u64,
+        force_evals: u64,
+    ) -> Self {
+        super::tally::record(steps, arrival_times.len());
+        Self::unsampled(final_state, t_final, arrival_times, steps, force_evals)
+    }
+
+    /// A trajectory without samples (not counted as a run).
     pub(super) fn unsampled(
         final_state: State,
         t_final: f64,

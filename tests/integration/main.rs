@@ -66,5 +66,6 @@ mod sweep;
 mod sweep_caps;
 mod theory;
 mod theory_data;
+mod timings;
 mod waves;
 mod write_failures;

@@ -559,6 +559,14 @@ pub struct AllArgs {
     pub pixel_limits: PixelLimitArgs,
     #[command(flatten)]
     pub theory_limits: TheoryLimitArgs,
+    /// After the render, print on standard output where the time went: each
+    /// figure's and movie's wall time (they render in parallel, so these
+    /// overlap), the runs it simulated and their block-steps (steps × blocks),
+    /// slowest first, then the whole render's wall time and the process's CPU
+    /// time (user + system, every thread). The files written are the same
+    /// with or without it (docs/performance.md)
+    #[arg(long)]
+    pub timings: bool,
 }
 
 #[derive(Args, Debug)]

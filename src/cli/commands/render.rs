@@ -155,6 +155,20 @@ pub(crate) fn render_into(
     words: Words,
     index: bool,
 ) -> Result<()> {
+    render_into_timed(scenes, out, movie, outputs, words, index, false)
+}
+
+/// [`render_into`], and with `timings` the table of where the time went
+/// ([`front::timings`]) on standard output after the summary.
+pub(crate) fn render_into_timed(
+    scenes: &[Scene],
+    out: &OutArgs,
+    movie: &MovieOptions,
+    outputs: &Outputs,
+    words: Words,
+    index: bool,
+    timings: bool,
+) -> Result<()> {
     let (out, verbose) = (out.out.as_path(), out.verbose);
     let start = Instant::now();
     // One movie: a bar over its frames; several scenes: over the scenes.
@@ -179,9 +193,9 @@ pub(crate) fn render_into(
         file: &|| {},
         hint: &|e, s| with_divergence_hint(e, s, words),
     };
-    let files = front::render::into_folder(scenes, out, movie, outputs, index, &progress);
+    let files = front::render::into_folder_timed(scenes, out, movie, outputs, index, &progress);
     bar.finish_and_clear();
-    let files = files?;
+    let (files, table) = files?;
     if verbose {
         let list: String = files
             .iter()
@@ -194,7 +208,11 @@ pub(crate) fn render_into(
         front::render::summary(scenes, &files, index),
         out.display(),
         start.elapsed().as_secs_f64()
-    ))
+    ))?;
+    if timings {
+        output::print(&table.table())?;
+    }
+    Ok(())
 }
 
 /// `ladder figure`: a built-in figure, all of them, or a filmstrip (or
@@ -266,7 +284,15 @@ pub(crate) fn all(args: &AllArgs, call: &Call<'_>) -> Result<()> {
             .map(|e| e.scene.clone())
             .collect(),
     );
-    render_into(&scenes, &args.out, &opts, &outputs, Words::Flags, true)
+    render_into_timed(
+        &scenes,
+        &args.out,
+        &opts,
+        &outputs,
+        Words::Flags,
+        true,
+        args.timings,
+    )
 }
 
 /// The movie options and the outputs of `render` and `all`.

@@ -61,44 +61,47 @@ pub(super) struct Done {
 /// until it has decided ([`Decided`]); each run's data says where it
 /// ended (`t_end`).
 pub(super) fn run_all(variants: &[Variant]) -> Result<Vec<Done>> {
+    let tally = crate::sim::tally::current();
     variants
         .par_iter()
-        .map(|v| {
-            let a = v.scene.apparatus.as_ref().ok_or_else(|| unconverted(v))?;
-            let c = a.conversion.as_ref().ok_or_else(|| unconverted(v))?;
-            let drive_end = v.scene.scenario()?.protocol.drive_end();
-            let block_rate = block_rate(c.gravity, c.inertia, c.added_inertia);
-            let decided = Decided::new(drive_end, c.tau_s, c.friction_rate, block_rate);
-            let stop = |view: &StopView| decided.decided(view);
-            let options = RunOptions::default().limits(v.scene.limits).stop(&stop);
-            let r = run::simulate_with(&v.scene, &[], &options)?;
-            let arrivals = &r.trajectory.arrival_times;
-            // A run with pin friction whose held rule cannot decide says so
-            // in its data (its label), having run to its duration.
-            let label = match decided.verdict() {
-                Err(why) if a.pin_friction > 0.0 => format!("{} ({why})", v.label),
-                _ => v.label.clone(),
-            };
-            let mut data = RunData::new(&label, &v.scene, &r);
-            data.ended_at(r.trajectory.t_final);
-            let arrivals_s: Vec<Option<f64>> =
-                arrivals.iter().map(|t| t.map(|t| t * c.tau_s)).collect();
-            let numbers = apparatus_numbers(&arrivals_s, c.tau_s, a.b);
-            let bulk_cm_s = numbers.bulk.map(|f| f.speed_cm_s);
-            debug_assert_eq!(
-                bulk_cm_s.is_some(),
-                bulk_speed(arrivals).is_some(),
-                "the bulk fit in s and cm is the bulk speed's"
-            );
-            data.apparatus = Some(numbers);
-            Ok(Done {
-                arrivals_s,
-                bulk_cm_s,
-                pitch_cm: a.b,
-                data,
-            })
-        })
+        .map(|v| crate::sim::tally::within(tally.clone(), || run_one(v)))
         .collect()
+}
+
+/// One variant run until it has decided ([`Decided`]).
+fn run_one(v: &Variant) -> Result<Done> {
+    let a = v.scene.apparatus.as_ref().ok_or_else(|| unconverted(v))?;
+    let c = a.conversion.as_ref().ok_or_else(|| unconverted(v))?;
+    let drive_end = v.scene.scenario()?.protocol.drive_end();
+    let block_rate = block_rate(c.gravity, c.inertia, c.added_inertia);
+    let decided = Decided::new(drive_end, c.tau_s, c.friction_rate, block_rate);
+    let stop = |view: &StopView| decided.decided(view);
+    let options = RunOptions::default().limits(v.scene.limits).stop(&stop);
+    let r = run::simulate_with(&v.scene, &[], &options)?;
+    let arrivals = &r.trajectory.arrival_times;
+    // A run with pin friction whose held rule cannot decide says so
+    // in its data (its label), having run to its duration.
+    let label = match decided.verdict() {
+        Err(why) if a.pin_friction > 0.0 => format!("{} ({why})", v.label),
+        _ => v.label.clone(),
+    };
+    let mut data = RunData::new(&label, &v.scene, &r);
+    data.ended_at(r.trajectory.t_final);
+    let arrivals_s: Vec<Option<f64>> = arrivals.iter().map(|t| t.map(|t| t * c.tau_s)).collect();
+    let numbers = apparatus_numbers(&arrivals_s, c.tau_s, a.b);
+    let bulk_cm_s = numbers.bulk.map(|f| f.speed_cm_s);
+    debug_assert_eq!(
+        bulk_cm_s.is_some(),
+        bulk_speed(arrivals).is_some(),
+        "the bulk fit in s and cm is the bulk speed's"
+    );
+    data.apparatus = Some(numbers);
+    Ok(Done {
+        arrivals_s,
+        bulk_cm_s,
+        pitch_cm: a.b,
+        data,
+    })
 }
 
 /// The error of a variant without its converted apparatus (never made by

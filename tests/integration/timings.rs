@@ -1,0 +1,105 @@
+//! `ladder all --timings`: the table lists every built-in figure and movie
+//! once, and the runs and block-steps it gives an output are the runs that
+//! output made, decided from the output's own data file (never from a
+//! clock: the times are not checked).
+
+use crate::common::tempdir::TempDir;
+use jacobs_ladder::catalog;
+use jacobs_ladder::scene::Fidelity;
+use std::collections::BTreeMap;
+use std::process::Command;
+
+/// One row of the table: runs and block-steps.
+type Row = (u64, u64);
+
+/// The rows of the table, by "kind name", and the whole render's row.
+fn parse(table: &str) -> (BTreeMap<String, Row>, Row) {
+    let mut rows = BTreeMap::new();
+    let mut whole = None;
+    for line in table.lines().skip(1) {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        if words.len() < 5 || words[words.len() - 3].parse::<f64>().is_err() {
+            continue;
+        }
+        let n = words.len();
+        let row = (words[n - 2].parse().unwrap(), words[n - 1].parse().unwrap());
+        let name = words[..n - 3].join(" ");
+        if name == "whole render" {
+            whole = Some(row);
+        } else {
+            assert!(rows.insert(name, row).is_none(), "a row twice:\n{table}");
+        }
+    }
+    (rows, whole.expect("the whole render's row"))
+}
+
+/// What an automatic-step (velocity Verlet) run of `data` simulated: the
+/// kept run's `steps` at the step dt, and before it the coarser runs at
+/// 2 dt, 4 dt, ... that the step was halved from (docs/model.md). Verlet
+/// evaluates the forces once a step and once at the start, so the data's
+/// `total_force_evals` = Σ (steps + 1) over the runs decides how many
+/// there were. Returns (runs, block-steps).
+fn verified_runs(run: &serde_json::Value, n: u64) -> Row {
+    let integrator = &run["integrator"];
+    assert_eq!(integrator["name"], "verlet", "{integrator}");
+    let steps = integrator["steps"].as_u64().unwrap();
+    let total = integrator["total_force_evals"].as_u64().unwrap();
+    let (mut runs, mut evals, mut block_steps) = (0, 0, 0);
+    while evals < total {
+        let s = steps >> runs;
+        assert!(s > 0 && steps.is_multiple_of(1 << runs), "{integrator}");
+        evals += s + 1;
+        block_steps += s * n;
+        runs += 1;
+    }
+    assert_eq!(
+        evals, total,
+        "the halvings account for every force evaluation"
+    );
+    (runs, block_steps)
+}
+
+#[test]
+fn the_table_lists_every_output_and_the_runs_each_made() {
+    let dir = TempDir::new("timings");
+    let out = Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(["all", "--timings", "--frames", "20", "--size", "320x240"])
+        .arg("--out")
+        .arg(dir.path())
+        .output()
+        .expect("the ladder binary runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let table = String::from_utf8(out.stdout).unwrap();
+    let (rows, whole) = parse(&table);
+
+    // Every entry of the catalogue once, nothing else; a simulated one
+    // made runs, a drawing, formula or linear theory none.
+    let entries = catalog::catalogue().unwrap();
+    assert_eq!(rows.len(), entries.len(), "{table}");
+    for e in entries {
+        let name = format!("{} {}", e.kind().name(), e.scene.name);
+        let (runs, block_steps) = rows[&name];
+        let simulated = e.scene.fidelity() == Fidelity::Simulation;
+        assert_eq!(runs > 0, simulated, "{name}:\n{table}");
+        assert_eq!(block_steps > 0, simulated, "{name}:\n{table}");
+    }
+    // Every run of the render is some output's, counted once: also those
+    // spread over the cores in rayon's tasks.
+    let runs: u64 = rows.values().map(|r| r.0).sum();
+    let block_steps: u64 = rows.values().map(|r| r.1).sum();
+    assert_eq!(whole, (runs, block_steps), "{table}");
+    assert!(table.contains("runs outside any output: 0"), "{table}");
+
+    // Fig. 1c is one automatic-step run of N blocks: its row is that run's
+    // halvings, read from its data file.
+    let data: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(dir.join("figure-1c.json")).unwrap()).unwrap();
+    let [run] = data["runs"].as_array().unwrap().as_slice() else {
+        panic!("Fig. 1c has one run")
+    };
+    let n = run["model"]["n"].as_u64().unwrap();
+    let expected = verified_runs(run, n);
+    assert!(expected.0 >= 2, "a verified run is at least a pair");
+    assert_eq!(rows["figure 1c"], expected, "{table}");
+}
