@@ -3,11 +3,9 @@
 //! output made, decided from the output's own data file (never from a
 //! clock: the times are not checked).
 
-use crate::common::tempdir::TempDir;
 use jacobs_ladder::catalog;
 use jacobs_ladder::scene::Fidelity;
 use std::collections::BTreeMap;
-use std::process::Command;
 
 /// One row of the table: runs and block-steps.
 type Row = (u64, u64);
@@ -61,17 +59,8 @@ fn verified_runs(run: &serde_json::Value, n: u64) -> Row {
 
 #[test]
 fn the_table_lists_every_output_and_the_runs_each_made() {
-    let dir = TempDir::new("timings");
-    let out = Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args(["all", "--timings", "--frames", "20", "--size", "320x240"])
-        .arg("--out")
-        .arg(dir.path())
-        .output()
-        .expect("the ladder binary runs");
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(0), "{stderr}");
-    let table = String::from_utf8(out.stdout).unwrap();
-    let (rows, whole) = parse(&table);
+    let (dir, table) = crate::common::catalogue_render();
+    let (rows, whole) = parse(table);
 
     // Every entry of the catalogue once, nothing else; a simulated one
     // made runs, a drawing, formula or linear theory none.
