@@ -81,10 +81,18 @@ pub fn draw_frame(
     let ink = theme.color(Role::Ink);
     tubes::draw_tubes(canvas, theme, view, &tubes_of(theme, chain, s));
     if theme.titles && !title.is_empty() {
+        // As every movie's title: smaller where it would not fit the frame.
+        let full = crate::render::style::text_width(theme.font(), title, theme.title);
+        let room = 0.96 * size.0;
+        let title_size = if full > room {
+            theme.title * room / full
+        } else {
+            theme.title
+        };
         canvas.text(
             title,
             (0.5 * size.0, 6.0),
-            theme.title,
+            title_size,
             ink,
             (HAlign::Center, VAlign::Top),
         );
@@ -277,7 +285,8 @@ fn axes(
     }
     p.text(
         "t (s)",
-        (left - 3.0 * theme.tick, top - 0.2 * theme.label),
+        // Above the first time's number (centred on the plot's top edge).
+        (left - 3.0 * theme.tick, top - 0.5 * theme.tick - 3.0),
         theme.label,
         ink,
         (HAlign::Left, VAlign::Baseline),
