@@ -19,23 +19,8 @@ use std::time::{Duration, Instant};
 /// the default formats or in `formats`.
 fn render_all(tag: &str, formats: Option<&str>) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("ladder-gallery-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_ladder"));
-    cmd.args(["all", "--frames", "20", "--size", "320x240"]);
-    if let Some(f) = formats {
-        cmd.args(["--format", f]);
-    }
-    let out = cmd
-        .arg("--out")
-        .arg(&dir)
-        .output()
-        .expect("the ladder binary runs");
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let extra: Vec<&str> = formats.map_or(vec![], |f| vec!["--format", f]);
+    crate::common::render_catalogue(&dir, &extra);
     dir
 }
 

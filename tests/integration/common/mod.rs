@@ -26,33 +26,39 @@ pub fn ladder_cli(args: &[&str]) -> std::process::Output {
         .expect("the ladder binary runs")
 }
 
-/// `ladder all --timings --frames 20 --size 320x240` in the default
-/// formats, made once for every test that reads the whole catalogue's
-/// default render (the gallery's links, the timings table): its folder
-/// and the table it printed. The ring chain alone makes a render of the
-/// catalogue cost half a minute; tests that need other formats render
-/// their own. Readers must not change the folder.
+/// `ladder all --frames 20 --size 320x240` and `extra` flags into `dir`
+/// (emptied first), small and fast; its standard output. Fails the test
+/// unless it exits 0.
+pub fn render_catalogue(dir: &std::path::Path, extra: &[&str]) -> String {
+    let _ = std::fs::remove_dir_all(dir);
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(["all", "--frames", "20", "--size", "320x240"])
+        .args(extra)
+        .arg("--out")
+        .arg(dir)
+        .output()
+        .expect("the ladder binary runs");
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("the output is UTF-8")
+}
+
+/// [`render_catalogue`] with `--timings` in the default formats, made
+/// once for every test that reads the whole catalogue's default render
+/// (the gallery's links, the timings table): its folder and the table it
+/// printed. The ring chain alone makes a render of the catalogue cost
+/// half a minute; tests that need other formats render their own.
+/// Readers must not change the folder.
 pub fn catalogue_render() -> &'static (std::path::PathBuf, String) {
     static RENDER: std::sync::OnceLock<(std::path::PathBuf, String)> = std::sync::OnceLock::new();
     RENDER.get_or_init(|| {
         // Under target/tmp: replaced by the next run, never left in /tmp.
         let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("catalogue-render");
-        let _ = std::fs::remove_dir_all(&dir);
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
-            .args(["all", "--timings", "--frames", "20", "--size", "320x240"])
-            .arg("--out")
-            .arg(&dir)
-            .output()
-            .expect("the ladder binary runs");
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        (
-            dir,
-            String::from_utf8(out.stdout).expect("the table is UTF-8"),
-        )
+        let table = render_catalogue(&dir, &["--timings"]);
+        (dir, table)
     })
 }
