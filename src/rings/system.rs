@@ -146,6 +146,10 @@ impl System {
     fn touches_counted(&self, rots: &[M3]) -> (Vec<(usize, usize, Touch)>, u64) {
         let mut out = Vec::new();
         let mut pairs = 0;
+        // Each ring's sample points once (the same arithmetic as per pair).
+        let points: Vec<[V3; SAMPLES]> = (0..self.n())
+            .map(|i| contact::sample_points(&self.circle(i, &rots[i]), &self.table))
+            .collect();
         for i in 0..self.n() {
             for j in i + 1..self.n() {
                 if !self.near(i, j) {
@@ -153,7 +157,8 @@ impl System {
                 }
                 pairs += 1;
                 let (a, b) = (self.circle(i, &rots[i]), self.circle(j, &rots[j]));
-                contact::touches_into(&a, &b, self.law.reach, &self.table, &mut |t| {
+                let reach = self.law.reach;
+                contact::touches_at(&a, &points[i], &b, reach, &self.table, &mut |t| {
                     out.push((i, j, t))
                 });
             }

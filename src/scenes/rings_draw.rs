@@ -187,7 +187,8 @@ pub fn kymograph_picture(theme: &Theme, chain: &RingChain, run: &RingRun, title:
     } else {
         0.0
     } + 1.5 * theme.label;
-    let (left, bottom, right) = (3.5 * theme.tick, 3.2 * theme.label, 2.0 * theme.tick);
+    let key = key_width(theme);
+    let (left, bottom, right) = (3.5 * theme.tick, 3.2 * theme.label, 2.0 * theme.tick + key);
     let cols: Vec<Option<usize>> = (0..chain.n)
         .filter(|k| k % 2 == 0)
         .map(Some)
@@ -237,7 +238,65 @@ pub fn kymograph_picture(theme: &Theme, chain: &RingChain, run: &RingRun, title:
         );
     }
     axes(&mut p, theme, (left, top, plot_w, plot_h), &cols, t_end);
+    azimuth_key(
+        &mut p,
+        theme,
+        (width - right + 2.0 * theme.tick, top),
+        plot_h,
+    );
     p.fit_page()
+}
+
+/// Width of the azimuth key: the bar, a gap and its widest number.
+fn key_width(theme: &Theme) -> f32 {
+    let number = crate::render::style::text_width(theme.font(), "−180°", theme.tick);
+    0.8 * theme.label + 0.4 * theme.tick + number
+}
+
+/// The colour key of the kymograph: the azimuth wheel as a bar, −180° at
+/// the top to 180° at the bottom (the cells' colour where the ring stands
+/// upright; paler as it lies flat), numbered every 90°.
+fn azimuth_key(p: &mut Picture, theme: &Theme, (x, top): (f32, f32), h: f32) {
+    let ink = theme.color(Role::Ink);
+    let bar = 0.8 * theme.label;
+    let steps = 180;
+    for k in 0..steps {
+        let az = -180.0 + 360.0 * (k as f64 + 0.5) / steps as f64;
+        let y = top + h * k as f32 / steps as f32;
+        let color = azimuth_color(theme, az);
+        p.rect(x, y, bar, h / steps as f32 + 0.3, color);
+    }
+    let pen = crate::render::canvas::Pen::new(1.0, ink);
+    p.polyline(
+        &[
+            (x, top),
+            (x + bar, top),
+            (x + bar, top + h),
+            (x, top + h),
+            (x, top),
+        ],
+        &pen,
+    );
+    for k in 0..=4 {
+        let y = top + h * k as f32 / 4.0;
+        let degrees = -180 + 90 * k;
+        let number = format!("{}°", degrees).replace('-', "−");
+        p.line((x + bar, y), (x + bar + 0.2 * theme.tick, y), &pen);
+        p.text(
+            &number,
+            (x + bar + 0.4 * theme.tick, y),
+            theme.tick,
+            ink,
+            (HAlign::Left, VAlign::Middle),
+        );
+    }
+    p.text(
+        "φ",
+        (x + 0.5 * bar, top - 0.5 * theme.tick - 3.0),
+        theme.label,
+        ink,
+        (HAlign::Center, VAlign::Baseline),
+    );
 }
 
 fn body_of(s: &Sample, k: usize) -> crate::rings::body::Body {
@@ -291,7 +350,7 @@ fn axes(
         ink,
         (HAlign::Left, VAlign::Baseline),
     );
-    let words = "ring: even strand | odd strand; colour: azimuth of the normal";
+    let words = "ring: even strand | odd strand; colour: azimuth φ of the normal";
     p.text(
         words,
         (left + 0.5 * w, top + h + 1.3 * theme.label),
