@@ -100,9 +100,6 @@ fn the_ribbon_tank_converges_in_its_step() {
 }
 
 #[test]
-#[ignore = "open: without drag, with contact, the run's divergence watch stops it at t = 1360 τ \
-            whatever the step (1/16, 1/64, 1/256 τ): the free blocks' energy rises after the drive \
-            (docs/experiments.md)"]
 fn the_energy_budget_of_the_ribbon_tank_closes() {
     // Without drag: the energy of the free blocks (kinetic with added
     // mass, ribbons, contact overlaps, gravity) changes by the work done
