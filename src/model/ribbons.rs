@@ -22,6 +22,15 @@
 //! ribbon keeps the way round it came by: the two agree until the other
 //! block crosses the line where both ways are equally long).
 //!
+//! Penalty contact lets a corner of one block press into the other (by at
+//! most a tenth of the thickness, `contact::MAX_OVERLAP`). Where such a
+//! corner is the span's end, the tests above would send the ribbon round
+//! the far corners (L jumping by a block's length); the ribbon leaves
+//! instead from the candidate whose next edge is the one nearest to the
+//! point pressed in, so L stays continuous as the point crosses that edge
+//! (its residual jump, across a corner's bisector inside the block, is a
+//! few times the overlap).
+//!
 //! The tangent points are corners or anchors, fixed in their blocks, so
 //! L is a function of the two poses whose derivative is that of |E − D|
 //! with D and E held in their blocks: by the envelope theorem the tension
@@ -33,7 +42,7 @@
 //! of the apparatus (every block at θ = 90°, centres b apart): glued taut.
 
 use super::outline::{Outline, Pose, add_point_force, point_velocity};
-use super::params::M;
+use super::params::{M, R};
 
 /// A ribbon's glue point on a block: edge k (0..4) at fraction f ∈ [0, 1)
 /// from corner k towards corner k + 1 (`outline`).
@@ -97,16 +106,37 @@ struct Candidate {
     /// Leaves where e · a ≥ 0 or (at a corner anchor) e · b ≥ 0.
     a: [f64; 2],
     b: Option<[f64; 2]>,
+    /// The edge the ribbon would wrap along next (whose outward normal is
+    /// a) and, at a corner anchor, the other edge there (normal b).
+    next: usize,
+    other: Option<usize>,
 }
 
 impl Candidate {
-    /// Whether the span leaves here towards `target` (this block's frame).
+    /// Whether the span leaves here towards `target` (this block's frame),
+    /// `inside` the edge nearest to the target where the target lies inside
+    /// this block (the other block's corner pressed into it, as penalty
+    /// contact allows: module doc).
     #[inline]
-    fn leaves(&self, target: [f64; 2]) -> bool {
+    fn leaves(&self, target: [f64; 2], inside: Option<usize>) -> bool {
         let e = [target[0] - self.point[0], target[1] - self.point[1]];
         e[0] * self.a[0] + e[1] * self.a[1] >= 0.0
             || self.b.is_some_and(|b| e[0] * b[0] + e[1] * b[1] >= 0.0)
+            || inside.is_some_and(|k| k == self.next || Some(k) == self.other)
     }
+}
+
+/// The edge of the outline (half thickness `h`) nearest to `target`
+/// (frame), where the target lies inside the block; `None` outside.
+#[inline]
+fn nearest_edge_inside(h: f64, target: [f64; 2]) -> Option<usize> {
+    let [u, w] = target;
+    if u.abs() >= R || w.abs() >= h {
+        return None;
+    }
+    // Depth to each edge: w = −h, u = r, w = h, u = −r (edges 0..3).
+    let depths = [h + w, R - u, h - w, R + u];
+    (0..4).min_by(|&i, &j| depths[i].total_cmp(&depths[j]))
 }
 
 /// One way round (σ = ±1) from an anchor: the anchor itself, then the
@@ -114,6 +144,8 @@ impl Candidate {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Way {
     c: [Candidate; 5],
+    /// The block's half thickness h.
+    h: f64,
 }
 
 impl Way {
@@ -126,6 +158,8 @@ impl Way {
             arc: 0.0,
             a: o.normal(k),
             b: at_corner.then(|| o.normal(k + 3)),
+            next: k,
+            other: at_corner.then_some((k + 3) % 4),
         };
         let mut c = [first; 5];
         let (mut arc, mut m) = if sigma > 0 {
@@ -141,25 +175,31 @@ impl Way {
             let prev = if sigma > 0 { m + 3 } else { m + 1 };
             let (p, q) = (o.corner(m), o.corner(prev));
             let len = ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt();
+            let next_edge = if sigma > 0 { m % 4 } else { (m + 3) % 4 };
             *slot = Candidate {
                 point: p,
                 arc,
                 a: [(p[0] - q[0]) / len, (p[1] - q[1]) / len],
                 b: None,
+                next: next_edge,
+                other: None,
             };
-            let next_edge = if sigma > 0 { m % 4 } else { (m + 3) % 4 };
             arc += o.edge_length(next_edge);
             m = if sigma > 0 { m + 1 } else { m + 3 };
         }
-        Self { c }
+        Self {
+            c,
+            h: o.half_thickness,
+        }
     }
 
     /// The first candidate that leaves towards `target` (the last if none).
     #[inline]
     fn first_leaving(&self, target: [f64; 2]) -> usize {
+        let inside = nearest_edge_inside(self.h, target);
         self.c
             .iter()
-            .position(|c| c.leaves(target))
+            .position(|c| c.leaves(target, inside))
             .unwrap_or(self.c.len() - 1)
     }
 }
@@ -228,20 +268,24 @@ impl Ribbon {
     #[inline]
     pub fn span_with(&self, ways: &Ways, upper: &Pose, lower: &Pose, stiffness: f64) -> Span {
         let rel = Relative::new(upper, lower);
+        // The shortest way round with a common tangent; where none has
+        // one (never seen), the shortest of the last guesses.
         let mut best = (f64::INFINITY, 0, 0, 0, 0);
+        let mut guess = best;
         for (a, wu) in ways.upper.iter().enumerate() {
             for (b, wl) in ways.lower.iter().enumerate() {
-                let (ju, jl) = common_tangent(wu, wl, &rel);
+                let ((ju, jl), found) = common_tangent(wu, wl, &rel);
                 let (cu, cl) = (wu.c[ju], wl.c[jl]);
                 let e = rel.to_upper(cl.point);
                 let free = ((e[0] - cu.point[0]).powi(2) + (e[1] - cu.point[1]).powi(2)).sqrt();
                 let length = cu.arc + free + cl.arc;
-                if length < best.0 {
-                    best = (length, a, ju, b, jl);
+                let slot = if found { &mut best } else { &mut guess };
+                if length < slot.0 {
+                    *slot = (length, a, ju, b, jl);
                 }
             }
         }
-        let (length, a, ju, b, jl) = best;
+        let (length, a, ju, b, jl) = if best.0.is_finite() { best } else { guess };
         let (cu, cl) = (ways.upper[a].c[ju], ways.lower[b].c[jl]);
         let (d, e) = (upper.point(cu.point), lower.point(cl.point));
         let v = [e[0] - d[0], e[1] - d[1]];
@@ -265,20 +309,22 @@ impl Ribbon {
 
 /// The common tangent of one way round on each block: alternately the
 /// first candidate on each that leaves towards the other's point, until
-/// neither changes.
+/// neither changes; with whether it got there. A way round whose guesses
+/// cycle has no common tangent (its last guess may be a straight line
+/// through a block, shorter than every real path: it is not a length).
 #[inline]
-fn common_tangent(wu: &Way, wl: &Way, rel: &Relative) -> (usize, usize) {
+fn common_tangent(wu: &Way, wl: &Way, rel: &Relative) -> ((usize, usize), bool) {
     let (mut ju, mut jl) = (0, 0);
-    for _ in 0..8 {
+    for _ in 0..10 {
         let nu = wu.first_leaving(rel.to_upper(wl.c[jl].point));
         let nl = wl.first_leaving(rel.to_lower(wu.c[nu].point));
         let done = nu == ju && nl == jl;
         (ju, jl) = (nu, nl);
         if done {
-            break;
+            return ((ju, jl), true);
         }
     }
-    (ju, jl)
+    ((ju, jl), false)
 }
 
 impl Ribbons {
@@ -498,6 +544,93 @@ mod tests {
             worst = worst.max(fd_check(&r, &q));
         }
         assert!(worst < 1e-6, "{worst}");
+    }
+
+    #[test]
+    fn length_is_continuous_as_a_tangent_corner_presses_into_a_face() {
+        // Blocks 5 and 6 of the tank (N = 6, no drag, acrylic contact) at
+        // t = 1358.27 τ and one step of 1/64 τ later: block 6's corner c₀,
+        // where ribbon 1 of the junction leaves it, presses 2 × 10⁻⁴ s into
+        // block 5's face. Along the straight line between the two states
+        // every ribbon's length moves smoothly (it jumped by 1.86 s,
+        // wrapping round block 6's far corner, and the run blew up).
+        let r = tank_ribbons(1.5);
+        let a = [
+            5.704449060238231,
+            0.22454942304076636,
+            -0.5635583219699326,
+            6.3733152989139,
+            0.292882447332627,
+            1.9856713809202948,
+        ];
+        let b = [
+            5.704476945566484,
+            0.22439477393278087,
+            -0.5636087585931063,
+            6.373221236972732,
+            0.2929825419158283,
+            1.9855205229077277,
+        ];
+        // Blocks 5 and 6 are i = 4 and 5: the frames alternate with i.
+        let at = |f: f64| -> Vec<f64> {
+            let mut q = column(6, 1.5);
+            for k in 0..6 {
+                q[12 + k] = a[k] + f * (b[k] - a[k]);
+            }
+            q
+        };
+        let lengths = |q: &[f64]| -> Vec<f64> {
+            r.spans(6, q)
+                .iter()
+                .filter(|(i, _)| *i == 4)
+                .map(|(_, s)| s.length)
+                .collect()
+        };
+        let mut prev = lengths(&at(0.0));
+        for k in 1..=1000 {
+            let now = lengths(&at(k as f64 / 1000.0));
+            for (x, y) in prev.iter().zip(&now) {
+                assert!((x - y).abs() < 1e-5, "step {k}: {prev:?} → {now:?}");
+            }
+            prev = now;
+        }
+    }
+
+    #[test]
+    fn a_way_round_without_a_common_tangent_is_not_a_length() {
+        // Blocks 5 and 6 of the same run at t = 1545.42 τ, block 6 turned
+        // almost a whole turn against block 5: ribbon 2's guesses from
+        // both anchors the short way round cycle, the last one a straight
+        // line through block 5 (L = 1.4904, slack). The ribbon goes round
+        // block 5's end (L = 1.5329, taut), and one step later it still
+        // does (1.5331): no jump.
+        let r = tank_ribbons(1.5);
+        let at = |x: [f64; 6]| {
+            let mut q = column(6, 1.5);
+            q[12..].copy_from_slice(&x);
+            let (pu, pl) = (Pose::of(&q, 4), Pose::of(&q, 5));
+            r.ribbons[1].span(&r.outline, &pu, &pl, 1.0).length
+        };
+        let a = at([
+            5.963776926481827,
+            0.33629435937989105,
+            -1.7625071541315127,
+            7.19438507489635,
+            0.023248483702688425,
+            4.167842036814793,
+        ]);
+        let b = at([
+            5.96375992051696,
+            0.33629276935537483,
+            -1.7625904402324684,
+            7.194630855387772,
+            0.02336361785484375,
+            4.167917488467224,
+        ]);
+        assert!(
+            (a - 1.53295).abs() < 1e-4 && (a - b).abs() < 1e-3,
+            "{a} {b}"
+        );
     }
 
     #[test]

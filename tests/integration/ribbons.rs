@@ -100,9 +100,9 @@ fn the_ribbon_tank_converges_in_its_step() {
 }
 
 #[test]
-#[ignore = "open: without drag, with contact, the run's divergence watch stops it at t = 1360 τ \
-            whatever the step (1/16, 1/64, 1/256 τ): the free blocks' energy rises after the drive \
-            (docs/experiments.md)"]
+#[ignore = "open: the run now reaches its end (the ribbon-length jumps that blew it up at 1358 τ are \
+            fixed), but the budget misses by 6.9e-5 of a work of 1.1e-3 (tolerance 1e-3 of it); \
+            not yet told apart: the powers are sampled every 0.25 τ, contact pulses last ~0.1 τ"]
 fn the_energy_budget_of_the_ribbon_tank_closes() {
     // Without drag: the energy of the free blocks (kinetic with added
     // mass, ribbons, contact overlaps, gravity) changes by the work done
