@@ -337,7 +337,9 @@ fn one_parameter(theme: &Theme, plan: &Plan, records: &[Record], title: &str) ->
         };
         least_for(theme, labels[k]) + legend
     };
-    stacked(theme, &wanted, &least, &|slots: &[Slot]| {
+    // One column: two would put the front's legend and the speed
+    // panel's rotated label where they do not fit (not yet laid out).
+    stacked(theme, &wanted, &least, false, &|slots: &[Slot]| {
         let mut panels = vec![
             drawn(theme, &front, &slots[0])?,
             drawn(theme, &speed, &slots[1])?,
@@ -584,7 +586,7 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
         && xs
             .windows(2)
             .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
-    stacked(theme, &wanted, &least, &|slots: &[Slot]| {
+    stacked(theme, &wanted, &least, true, &|slots: &[Slot]| {
         let first = slots[0];
         let cells = CellChart {
             plot_x: first.plot_x.filter(|_| even),

@@ -119,18 +119,20 @@ pub(super) type Make<'a> = dyn Fn(&[Slot]) -> Result<Vec<(Chart, u32)>> + 'a;
 /// again with the plots' edges given, the rightmost left edge and the
 /// leftmost right edge of them all, so that one x value is at one place
 /// down the stack. On a wide page too short for the stack (a slide at its
-/// 20 pt text) the first panel goes left and the others are stacked
-/// right of it ([`two_columns`]).
+/// 20 pt text) and where the caller allows it (`columns`), the first
+/// panel goes left and the others are stacked right of it
+/// ([`two_columns`]).
 pub(super) fn stacked(
     theme: &Theme,
     wanted: &[u32],
     least: &dyn Fn(usize, u32) -> u32,
+    columns: bool,
     make: &Make<'_>,
 ) -> Result<Chart> {
     let full = width(theme);
     let least_full: Vec<u32> = (0..wanted.len()).map(|k| least(k, full)).collect();
     let h = fitted_heights(theme, wanted, &least_full);
-    if let Some(chart) = two_columns(theme, wanted, least, h.iter().sum(), make)? {
+    if columns && let Some(chart) = two_columns(theme, wanted, least, h.iter().sum(), make)? {
         return Ok(chart);
     }
     let indent = label_indent(theme, wanted.len());
@@ -179,7 +181,10 @@ fn two_columns(
     };
     let budget = page_h.floor();
     let n = wanted.len();
-    if n < 2 || stack_height as f32 <= budget || page_w < WIDE_PAGE * page_h {
+    // One column that the page holds (to its slack: the picture is not
+    // refused) stays one column.
+    let holds = stack_height as f32 <= page_h * crate::render::picture::PRINT_SLACK;
+    if n < 2 || holds || page_w < WIDE_PAGE * page_h {
         return Ok(None);
     }
     let indent = label_indent(theme, n);
