@@ -104,6 +104,53 @@ pub fn cell_chart(theme: &Theme, c: &CellChart, width: u32, height: u32) -> Resu
     Ok(chart)
 }
 
+/// The least height, pixels, at which `c` drawn `width` wide keeps all
+/// it draws inside the chart: its title's lines, the x axis and a line of
+/// tick text per row of cells, and its legend (beside the cells: the
+/// swatches, the shade bar and its end labels; under them: its rows and
+/// the bar).
+pub fn least_height(theme: &Theme, c: &CellChart, width: u32) -> u32 {
+    let title = c
+        .title
+        .as_deref()
+        .filter(|_| theme.titles)
+        .map_or(0.0, |t| {
+            let fitted = super::charts::fit_title(theme, t, width);
+            // plotters' `titled`: each line's height and 5 px above and below.
+            fitted.lines.len() as f32 * (1.3 * fitted.size + 10.0)
+        });
+    let cells = 2.0 * CELLS_MARGIN + X_AREA as f32 + c.ys.len() as f32 * 1.2 * theme.tick;
+    let body = if legend_beside(theme, c, width) {
+        cells.max(legend_column_height(theme, c))
+    } else {
+        cells + legend_below_height(theme, c, width) as f32
+    };
+    (title + body).ceil() as u32
+}
+
+/// The cells' margin and x axis area, pixels.
+const CELLS_MARGIN: f32 = 14.0;
+const X_AREA: u32 = 50;
+
+/// Height, pixels, of the legend beside the cells ([`draw_legend`]): its
+/// rows, and the shade bar's label, the bar and half its end label.
+fn legend_column_height(theme: &Theme, c: &CellChart) -> f32 {
+    let rows = (LEGEND_TOP + LEGEND_ROW * c.legend.len() as i32) as f32;
+    let bar = c.shade.as_ref().map_or(0.0, |_| {
+        (BAR_LABEL_GAP + BAR_LABEL_LINE + BAR_HEIGHT) as f32 + 0.5 * theme.tick + 2.0
+    });
+    rows + bar
+}
+
+/// The legend beside the cells, pixels: its first row's top, a row's
+/// height, the gap above the shade bar's label, the label's line and the
+/// bar's height.
+const LEGEND_TOP: i32 = 30;
+const LEGEND_ROW: i32 = 26;
+const BAR_LABEL_GAP: i32 = 14;
+const BAR_LABEL_LINE: i32 = 32;
+const BAR_HEIGHT: i32 = 140;
+
 /// Whether the legend goes beside the cells (else under them): when the
 /// cells keep half the chart's width that way.
 fn legend_beside(theme: &Theme, c: &CellChart, width: u32) -> bool {
@@ -144,9 +191,9 @@ fn draw_cells(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<(i32, i32
     let x_room = ((plot_w / (widest_x + 12.0)).floor() as usize).clamp(2, 10);
     let mut builder = ChartBuilder::on(area);
     builder
-        .margin(14)
+        .margin(CELLS_MARGIN as u32)
         .margin_right(6)
-        .x_label_area_size(50)
+        .x_label_area_size(X_AREA)
         .y_label_area_size(y_area);
     if let Some((left, right)) = c.plot_x {
         let width = area.dim_in_pixel().0 as i32;
@@ -285,7 +332,7 @@ fn draw_legend(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
     let text = font(theme, theme.tick)
         .into_font()
         .color(&rgb(Palette.color(Role::Ink)));
-    let mut y = 30;
+    let mut y = LEGEND_TOP;
     for (label, color, marker) in &c.legend {
         area.draw(&Rectangle::new(
             [(8, y), (26, y + 18)],
@@ -295,16 +342,16 @@ fn draw_legend(theme: &Theme, area: &Area<'_>, c: &CellChart) -> Result<()> {
         swatch_mark(theme, area, (17, y + 9), *color, *marker)?;
         area.draw(&Text::new(label.clone(), (32, y + 2), text.clone()))
             .map_err(plot_error)?;
-        y += 26;
+        y += LEGEND_ROW;
     }
     if let Some(bar) = &c.shade {
-        y += 14;
+        y += BAR_LABEL_GAP;
         area.draw(&Text::new(bar.label.clone(), (8, y), text.clone()))
             .map_err(plot_error)?;
         // The label's line, then half a tick label above the bar's top.
-        y += 32;
+        y += BAR_LABEL_LINE;
         let steps = 32;
-        let (h, w) = (140, 18);
+        let (h, w) = (BAR_HEIGHT, 18);
         for i in 0..steps {
             let f = i as f64 / (steps - 1) as f64;
             let y0 = y + h - (i + 1) * h / steps;

@@ -311,7 +311,7 @@ pub enum PageSide {
 
 /// Rounding of whole design pixels is no shrinking: a picture may be this
 /// much larger than its page (a pixel in 200).
-const PRINT_SLACK: f32 = 1.005;
+pub(crate) const PRINT_SLACK: f32 = 1.005;
 
 fn draw_items(items: &[Item], canvas: &mut impl Canvas) {
     for item in items {

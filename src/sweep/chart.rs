@@ -12,12 +12,12 @@
 //! the panels are stacked into one SVG and rasterised.
 
 use super::outcome::Outcome;
-use super::stack::{LEAST_PANEL, least_for, stacked, width};
+use super::stack::{LEAST_PANEL, Slot, least_for, stacked};
 use super::{Plan, Record};
 use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::render::Theme;
-use crate::render::cells::{Cell, CellChart, ShadeBar, cell_chart};
+use crate::render::cells::{self, Cell, CellChart, ShadeBar, cell_chart};
 use crate::render::charts::{Axis, Chart, ChartSpec, Marker, Series, line_chart};
 use crate::render::palette::{OutcomeRole, Role};
 use crate::render::style;
@@ -322,37 +322,54 @@ fn one_parameter(theme: &Theme, plan: &Plan, records: &[Record], title: &str) ->
     } else {
         vec![FRONT_HEIGHT, 260]
     };
-    let mut least: Vec<u32> = [front.y.label.as_str(), speed.y.label.as_str()]
-        .into_iter()
-        .chain(["gap ω₊(0) τ", "ΔU / mgs"])
-        .map(|l| least_for(theme, l))
-        .collect();
+    let labels = [
+        front.y.label.as_str(),
+        speed.y.label.as_str(),
+        "gap ω₊(0) τ",
+        "ΔU / mgs",
+    ];
     // The front panel's legend may go under its plot: room for its rows.
-    least[0] += if width(theme) < 400 {
-        2 * FRONT_LEGEND_ROOM
-    } else {
-        FRONT_LEGEND_ROOM
-    };
-    stacked(theme, &wanted, &least, |h, w, plot_x| {
-        let at = |spec: &ChartSpec| ChartSpec {
-            plot_x,
-            ..spec.clone()
+    let least = |k: usize, w: u32| {
+        let legend = match k {
+            0 if w < 400 => 2 * FRONT_LEGEND_ROOM,
+            0 => FRONT_LEGEND_ROOM,
+            _ => 0,
         };
+        least_for(theme, labels[k]) + legend
+    };
+    // One column: two would put the front's legend and the speed
+    // panel's rotated label where they do not fit (not yet laid out).
+    stacked(theme, &wanted, &least, false, &|slots: &[Slot]| {
         let mut panels = vec![
-            (line_chart(theme, &at(&front), w, h[0])?, h[0]),
-            (line_chart(theme, &at(&speed), w, h[1])?, h[1]),
+            drawn(theme, &front, &slots[0])?,
+            drawn(theme, &speed, &slots[1])?,
         ];
         if theory {
+            let (gap, barrier) = (slots[2], slots[3]);
             panels.extend(theory_panel(
                 theme,
                 plan,
                 (a.x_label, a.fold),
-                (w, Some(a.x_range), plot_x),
-                (h[2], h[3]),
+                (gap.w, Some(a.x_range), gap.plot_x),
+                (gap.h, barrier.h),
             )?);
         }
         Ok(panels)
     })
+}
+
+/// `spec` drawn at `slot`: its plot's edges given, its x axis labelled
+/// where it is the last of its column (the panels above share it).
+fn drawn(theme: &Theme, spec: &ChartSpec, slot: &Slot) -> Result<(Chart, u32)> {
+    let mut spec = ChartSpec {
+        plot_x: slot.plot_x,
+        ..spec.clone()
+    };
+    if slot.last {
+        spec.x.shared = false;
+        spec.x.numbered = false;
+    }
+    Ok((line_chart(theme, &spec, slot.w, slot.h)?, slot.h))
 }
 
 /// The block where the wave the drive launched (the first wave from block
@@ -554,35 +571,47 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
     } else {
         vec![480]
     };
-    // The phase diagram keeps room for its colour bar's three ticks.
-    let least = [
-        least_for(theme, py.label()).max(2 * LEAST_PANEL),
-        least_for(theme, "gap ω₊(0) τ"),
-        least_for(theme, "ΔU / mgs"),
-    ];
+    // The phase diagram keeps room for its colour bar's three ticks, and
+    // for all its legend at the width it is drawn.
+    let least = |k: usize, w: u32| match k {
+        0 => least_for(theme, py.label())
+            .max(2 * LEAST_PANEL)
+            .max(cells::least_height(theme, &chart, w)),
+        1 => least_for(theme, "gap ω₊(0) τ"),
+        _ => least_for(theme, "ΔU / mgs"),
+    };
     // Evenly spaced α: the theory panels' axis runs over the cells' span
     // (cells sit at their index, so uneven values have no common axis).
     let even = xs.len() > 1
         && xs
             .windows(2)
             .all(|w| (w[1] - w[0] - (xs[1] - xs[0])).abs() < 1e-9 * (1.0 + xs[1].abs()));
-    stacked(theme, &wanted, &least, |h, w, plot_x| {
-        let plot_x = plot_x.filter(|_| even);
+    stacked(theme, &wanted, &least, true, &|slots: &[Slot]| {
+        let first = slots[0];
         let cells = CellChart {
-            plot_x,
+            plot_x: first.plot_x.filter(|_| even),
             ..chart.clone()
         };
-        let mut panels = vec![(cell_chart(theme, &cells, w, h[0])?, h[0])];
+        let mut panels = vec![(cell_chart(theme, &cells, first.w, first.h)?, first.h)];
         if theory {
+            let (gap, barrier) = (slots[1], slots[2]);
+            // Under the cells the panels take the cells' width (the
+            // legend's column is beside the cells); in a column of their
+            // own, all of it.
             let range = if even {
                 let h = 0.5 * (xs[1] - xs[0]);
-                let w = crate::render::cells::cells_width(theme, &chart, w);
-                (w, Some((xs[0] - h, xs[xs.len() - 1] + h)), plot_x)
+                let w = if gap.column == first.column {
+                    cells::cells_width(theme, &chart, gap.w)
+                } else {
+                    gap.w
+                };
+                let span = (xs[0] - h, xs[xs.len() - 1] + h);
+                (w, Some(span), gap.plot_x.filter(|_| even))
             } else {
-                (w, None, None)
+                (gap.w, None, None)
             };
             let label = (px.label(), false);
-            panels.extend(theory_panel(theme, plan, label, range, (h[1], h[2]))?);
+            panels.extend(theory_panel(theme, plan, label, range, (gap.h, barrier.h))?);
         }
         if !even {
             panels.iter_mut().for_each(|(c, _)| c.plot_x = None);

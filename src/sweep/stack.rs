@@ -95,29 +95,156 @@ fn fitted_heights(theme: &Theme, wanted: &[u32], least: &[u32]) -> Vec<u32> {
     at(f)
 }
 
+/// One panel's place in a stack: its height and width, pixels, the x
+/// edges of its plot (shared with the panels of its column; `None`: its
+/// own), its column (0 at the left) and whether it is the last of its
+/// column, which labels the x axis the panels above it share.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Slot {
+    pub h: u32,
+    pub w: u32,
+    pub plot_x: Option<(i32, i32)>,
+    pub column: usize,
+    pub last: bool,
+}
+
+/// What a stack's caller draws: each panel at its [`Slot`].
+pub(super) type Make<'a> = dyn Fn(&[Slot]) -> Result<Vec<(Chart, u32)>> + 'a;
+
 /// Panels of heights fitted to the page ([`fitted_heights`]), drawn by
-/// `make` at those heights and at the width it is given, and stacked
-/// ([`stack`]). Stacked panels share one x extent: when their plot areas
-/// span differently across (a legend right of one plot, wider tick labels
-/// left of another), they are drawn again with the plots' edges given,
-/// the rightmost left edge and the leftmost right edge of them all
-/// (`make`'s third argument), so that one x value is at one place down
-/// the stack.
+/// `make` at their [`Slot`]s, and stacked ([`stack`]); `least(k, w)` is
+/// the least height of panel `k` drawn `w` wide. Stacked panels share one
+/// x extent: when their plot areas span differently across (a legend
+/// right of one plot, wider tick labels left of another), they are drawn
+/// again with the plots' edges given, the rightmost left edge and the
+/// leftmost right edge of them all, so that one x value is at one place
+/// down the stack. On a wide page too short for the stack (a slide at its
+/// 20 pt text) and where the caller allows it (`columns`), the first
+/// panel goes left and the others are stacked right of it
+/// ([`two_columns`]).
 pub(super) fn stacked(
     theme: &Theme,
     wanted: &[u32],
-    least: &[u32],
-    make: impl Fn(&[u32], u32, Option<(i32, i32)>) -> Result<Vec<(Chart, u32)>>,
+    least: &dyn Fn(usize, u32) -> u32,
+    columns: bool,
+    make: &Make<'_>,
 ) -> Result<Chart> {
-    let h = fitted_heights(theme, wanted, least);
+    let full = width(theme);
+    let least_full: Vec<u32> = (0..wanted.len()).map(|k| least(k, full)).collect();
+    let h = fitted_heights(theme, wanted, &least_full);
+    if columns && let Some(chart) = two_columns(theme, wanted, least, h.iter().sum(), make)? {
+        return Ok(chart);
+    }
     let indent = label_indent(theme, wanted.len());
-    let w = width(theme) - indent;
-    let mut panels = make(&h, w, None)?;
+    let w = full - indent;
+    let last = h.len().saturating_sub(1);
+    let slots = |plot_x| -> Vec<Slot> {
+        h.iter()
+            .enumerate()
+            .map(|(k, &h)| Slot {
+                h,
+                w,
+                plot_x,
+                column: 0,
+                last: k == last,
+            })
+            .collect()
+    };
+    let mut panels = make(&slots(None))?;
     if let Some(extent) = shared_extent(&panels) {
-        panels = make(&h, w, Some(extent))?;
+        panels = make(&slots(Some(extent)))?;
     }
     stack(theme, &panels, indent)
 }
+
+/// The share of the page's width the first panel takes when the panels
+/// go in two columns.
+const LEFT_SHARE: f32 = 0.6;
+
+/// Two columns of panels, on a page ([`crate::render::Style::fit_box`]) at least
+/// [`WIDE_PAGE`] times as wide as tall whose budget one column of
+/// `stack_height` pixels overruns: the first panel at the left, as tall
+/// as the page, the others stacked at the right, sharing one x extent
+/// among them; each column's last panel labels its x axis. `None` where
+/// one column fits, the page is not wide, or two columns would be no
+/// shorter than one (then one column is refused naming the height that
+/// holds it, and the height it names holds it).
+fn two_columns(
+    theme: &Theme,
+    wanted: &[u32],
+    least: &dyn Fn(usize, u32) -> u32,
+    stack_height: u32,
+    make: &Make<'_>,
+) -> Result<Option<Chart>> {
+    let Some((page_w, page_h)) = theme.style.fit_box() else {
+        return Ok(None);
+    };
+    let budget = page_h.floor();
+    let n = wanted.len();
+    // One column that the page holds (to its slack: the picture is not
+    // refused) stays one column.
+    let holds = stack_height as f32 <= page_h * crate::render::picture::PRINT_SLACK;
+    if n < 2 || holds || page_w < WIDE_PAGE * page_h {
+        return Ok(None);
+    }
+    let indent = label_indent(theme, n);
+    let full = width(theme);
+    let left = (LEFT_SHARE * full as f32).round() as u32;
+    let columns = [(0, left), (left, full - left)];
+    let h0 = fitted_heights(theme, &[wanted[0].max(budget as u32)], &[least(0, left)]);
+    let least_right: Vec<u32> = (1..n).map(|k| least(k, full - left)).collect();
+    let mut h1 = fitted_heights(theme, &wanted[1..], &least_right);
+    let tallest = h0[0].max(h1.iter().sum());
+    if tallest as f32 > budget && tallest >= stack_height {
+        return Ok(None);
+    }
+    // The right column as tall as the left, its panels grown alike.
+    let right: u32 = h1.iter().sum();
+    if right < h0[0] {
+        let grow = h0[0] as f32 / right as f32;
+        h1.iter_mut()
+            .for_each(|h| *h = (*h as f32 * grow).floor() as u32);
+        let short = h0[0] - h1.iter().sum::<u32>();
+        if let Some(last) = h1.last_mut() {
+            *last += short;
+        }
+    }
+    let slot = |k: usize, h: u32, plot_x| {
+        let column = usize::from(k > 0);
+        Slot {
+            h,
+            w: columns[column].1 - indent,
+            plot_x,
+            column,
+            last: k == 0 || k == n - 1,
+        }
+    };
+    let heights: Vec<u32> = h0.iter().chain(&h1).copied().collect();
+    let slots = |right: Option<(i32, i32)>| -> Vec<Slot> {
+        let at = |k: usize| if k == 0 { None } else { right };
+        (0..n).map(|k| slot(k, heights[k], at(k))).collect()
+    };
+    let mut panels = make(&slots(None))?;
+    if let Some(extent) = shared_extent(&panels[1..]) {
+        panels = make(&slots(Some(extent)))?;
+    }
+    let mut placed = Vec::with_capacity(n);
+    let mut y = 0;
+    for (k, (chart, h)) in panels.iter().enumerate() {
+        let x = columns[usize::from(k > 0)].0;
+        if k == 1 {
+            y = 0;
+        }
+        placed.push((chart, (x, y)));
+        y += h;
+    }
+    let height = h0[0].max(h1.iter().sum());
+    compose(theme, &placed, indent, (full, height)).map(Some)
+}
+
+/// A page at least this many times as wide as tall takes a stack too
+/// tall for it in two columns ([`two_columns`]): a slide (16:9).
+const WIDE_PAGE: f32 = 1.5;
 
 /// The one x extent of stacked panels whose plots span differently across
 /// (the rightmost left edge, the leftmost right edge), or `None` when they
@@ -168,28 +295,41 @@ fn label_indent(theme: &Theme, n: usize) -> u32 {
 /// (drawn after the panels, over their blank left margin).
 pub(super) fn stack(theme: &Theme, panels: &[(Chart, u32)], indent: u32) -> Result<Chart> {
     let height: u32 = panels.iter().map(|(_, h)| *h).sum();
-    let width = width(theme);
+    let mut placed = Vec::with_capacity(panels.len());
+    let mut y = 0;
+    for (chart, h) in panels {
+        placed.push((chart, (0, y)));
+        y += h;
+    }
+    compose(theme, &placed, indent, (width(theme), height))
+}
+
+/// Panels, each at its (x, y), its chart `indent` pixels right of that,
+/// in one SVG `size` pixels (nested `<svg>` elements), rasterised at its
+/// own size; when [`labelled`], each panel's label at its top left.
+fn compose(
+    theme: &Theme,
+    placed: &[(&Chart, (u32, u32))],
+    indent: u32,
+    (width, height): (u32, u32),
+) -> Result<Chart> {
     let mut svg = format!(
         "<svg width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\" \
          xmlns=\"http://www.w3.org/2000/svg\">\n<rect x=\"0\" y=\"0\" width=\"{width}\" \
          height=\"{height}\" fill=\"#ffffff\"/>\n"
     );
-    let mut y = 0;
-    let mut tops = Vec::new();
-    for (chart, h) in panels {
+    for (chart, (x, y)) in placed {
         let inner = strip_prolog(&chart.svg);
-        let placed = inner.replacen("<svg ", &format!("<svg x=\"{indent}\" y=\"{y}\" "), 1);
-        svg.push_str(&placed);
+        let at = format!("<svg x=\"{}\" y=\"{y}\" ", x + indent);
+        svg.push_str(&inner.replacen("<svg ", &at, 1));
         svg.push('\n');
-        tops.push(y);
-        y += h;
     }
-    if labelled(theme, panels.len()) {
+    if labelled(theme, placed.len()) {
         let ascent = style::ascent(theme.font(), theme.panel_label);
-        for (k, top) in tops.into_iter().enumerate() {
+        for (k, (_, (x, top))) in placed.iter().enumerate() {
             svg.push_str(&format!(
-                "<text x=\"0\" y=\"{}\" font-family=\"{}\" font-size=\"{}\" fill=\"{}\">{}</text>\n",
-                top as f32 + ascent,
+                "<text x=\"{x}\" y=\"{}\" font-family=\"{}\" font-size=\"{}\" fill=\"{}\">{}</text>\n",
+                *top as f32 + ascent,
                 style::family_of(theme.font()),
                 theme.panel_label,
                 style::hex(Palette.color(Role::Ink)),

@@ -66,15 +66,7 @@ fn catalogue_pictures() -> &'static [(String, StyleName, Picture)] {
 /// do. The test fails when another figure breaks a rule, and when one of
 /// these no longer does (then take it off the list). Empty: every figure
 /// keeps every rule at every style.
-const NOT_YET: &[(&str, &str)] = &[
-    // At a slide's 20 pt: the phase sweep's shade-bar ends print on one
-    // another (and `ladder figure phase --style slide` is refused, 9.15 in
-    // needed); tank-levels' panel (b) puts its axis label 5 pt off the
-    // page's right edge. Open defects (CHANGELOG), listed so that a fix
-    // shows here.
-    ("phase", "slide"),
-    ("tank-levels", "slide"),
-];
+const NOT_YET: &[(&str, &str)] = &[];
 
 /// Every catalogue figure at every style: each text box inside the page,
 /// no two overlapping, none under 6 pt at a print style, and no page taller

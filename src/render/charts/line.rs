@@ -283,6 +283,9 @@ where
         .margin_bottom(theme.chart_margin_y as u32)
         .x_label_area_size(x_area)
         .y_label_area_size(y_area);
+    if let Some(right) = x_label_right_margin(theme, spec, width, y_area) {
+        builder.margin_right(right);
+    }
     if let Some((left, right)) = spec.plot_x {
         let m = theme.chart_margin as i32;
         builder
@@ -331,6 +334,28 @@ where
         legend: pass.legend,
     })
 }
+
+/// The right margin, pixels, that keeps the x axis' label (centred under
+/// the plot) inside a chart `width` wide whose y label area is `y_area`,
+/// where the usual margin does not: a label wider than the plot and its
+/// margin (long row names at the left push a narrow plot right) would
+/// otherwise end past the chart's edge. `None`: the usual margin holds it
+/// (or the plot's edges are given, or the axis is labelled elsewhere).
+fn x_label_right_margin(theme: &Theme, spec: &ChartSpec, width: u32, y_area: u32) -> Option<u32> {
+    if spec.plot_x.is_some() || spec.x.shared || spec.x.label.is_empty() {
+        return None;
+    }
+    let label = style::text_width(theme.font(), &spec.x.label, size::LABEL);
+    let m = theme.chart_margin;
+    // The label's right end, (left + right) / 2 + label / 2, at most the
+    // chart's width less the margin's air: the plot's left edge is
+    // m + y_area, its right edge width − r.
+    let r = (m + y_area as f32 + label + 2.0 * LABEL_AIR - width as f32).ceil();
+    (r > m).then_some(r as u32)
+}
+
+/// Air, pixels, kept between an x axis label and the chart's edge.
+const LABEL_AIR: f32 = 2.0;
 
 fn draw_mesh<X, Y>(theme: &Theme, chart: &mut Ctx<'_, '_, X, Y>, spec: &ChartSpec) -> Result<()>
 where
