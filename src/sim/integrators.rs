@@ -511,6 +511,9 @@ struct RungeKutta {
     /// Error estimate of the last step (q then v), when the tableau has one.
     err_q: Vec<f64>,
     err_v: Vec<f64>,
+    /// Σ w_j k_j of [`RungeKutta::combine`], per coordinate (scratch).
+    dq: Vec<f64>,
+    dv: Vec<f64>,
     /// Time at which stage 0 equals the derivative of the current state (FSAL).
     fsal_at: Option<f64>,
 }
@@ -526,6 +529,8 @@ impl RungeKutta {
             v: vec![0.0; dof],
             err_q: vec![0.0; dof],
             err_v: vec![0.0; dof],
+            dq: vec![0.0; dof],
+            dv: vec![0.0; dof],
             fsal_at: None,
         }
     }
@@ -569,16 +574,27 @@ impl RungeKutta {
         }
     }
 
-    /// (self.q, self.v) = st + h Σ w_j k_j.
+    /// (self.q, self.v) = st + h Σ w_j k_j, the sum over j in order from
+    /// 0 for every coordinate (stage by stage over whole vectors, so that
+    /// the loops vectorise; the same operations as coordinate by coordinate).
     fn combine(&mut self, st: &State, h: f64, w: &[f64]) {
-        for k in 0..self.q.len() {
-            let (mut dq, mut dv) = (0.0, 0.0);
-            for (j, wj) in w.iter().enumerate() {
-                dq += wj * self.kq[j][k];
-                dv += wj * self.kv[j][k];
+        self.dq.fill(0.0);
+        self.dv.fill(0.0);
+        for (j, &wj) in w.iter().enumerate() {
+            for (d, k) in self.dq.iter_mut().zip(&self.kq[j]) {
+                *d += wj * k;
             }
-            self.q[k] = st.q[k] + h * dq;
-            self.v[k] = st.v[k] + h * dv;
+            for (d, k) in self.dv.iter_mut().zip(&self.kv[j]) {
+                *d += wj * k;
+            }
+        }
+        let q = self.q.iter_mut().zip(&st.q).zip(&self.dq);
+        for ((y, y0), d) in q {
+            *y = y0 + h * d;
+        }
+        let v = self.v.iter_mut().zip(&st.v).zip(&self.dv);
+        for ((y, y0), d) in v {
+            *y = y0 + h * d;
         }
     }
 

@@ -6,7 +6,7 @@
 
 use super::protocol::{Drive, Protocol};
 use crate::model::Ladder;
-use crate::model::ladder::{ForceScratch, itheta, ix, iy};
+use crate::model::ladder::{ForceScratch, Frames, ix, iy};
 use crate::model::media::{self, Terms};
 use crate::model::params::{M, R};
 
@@ -45,6 +45,9 @@ pub struct Rhs<'a> {
     /// scratch for their generalised forces.
     terms: Terms,
     force: Vec<f64>,
+    /// The blocks' frames (t, ν) at the q of the last evaluation that
+    /// needed them: one sine and cosine per block for every term.
+    frames: Frames,
     /// The deepest overlap of two blocks in contact seen so far, in s
     /// (`model::contact`; 0 without contact).
     pub deepest_overlap: f64,
@@ -74,7 +77,8 @@ impl<'a> Rhs<'a> {
             scratch: ForceScratch::new(p.n),
             force_evals: 0,
             terms: ladder.terms,
-            force: Vec::new(),
+            force: vec![0.0; dof],
+            frames: Frames::new(p.n, q0),
             deepest_overlap: 0.0,
         }
     }
@@ -145,13 +149,26 @@ impl<'a> Rhs<'a> {
     #[inline]
     pub fn gradient(&mut self, q: &[f64]) -> (&[f64], &[f64]) {
         self.force_evals += 1;
-        if self.terms.links.is_paper() && self.ladder.built.is_none() {
-            self.ladder
-                .gradient_with(q, &mut self.grad, &mut self.scratch);
-        } else {
-            self.terms.links.gradient(self.ladder, q, &mut self.grad);
-        }
+        self.links_gradient(q, false);
         (&self.grad, &self.inv_mass)
+    }
+
+    /// ∂E/∂q of the links (or ribbons) and gravity into `grad`; `framed`:
+    /// `frames` already hold the blocks' frames at `q`.
+    #[inline]
+    fn links_gradient(&mut self, q: &[f64], framed: bool) {
+        let ladder = self.ladder;
+        if self.terms.links.is_paper() && ladder.built.is_none() {
+            ladder.gradient_with(q, &mut self.grad, &mut self.scratch);
+        } else if ladder.built.is_some() {
+            self.terms.links.gradient(ladder, q, &mut self.grad);
+        } else {
+            if !framed {
+                self.frames.at(ladder.n(), q);
+            }
+            let links = self.terms.links;
+            links.gradient_framed(ladder, &self.frames, q, &mut self.grad);
+        }
     }
 
     /// Full acceleration including damping, −M⁻¹(∂E/∂q + Γ v).
@@ -171,8 +188,10 @@ impl<'a> Rhs<'a> {
     /// damping, pin friction, drag) through Lagrange's equations of each
     /// free block, with its velocity terms and M⁻¹ in closed form.
     fn acceleration_with_terms(&mut self, q: &[f64], v: &[f64], acc: &mut [f64]) {
-        self.gradient(q);
         let ladder = self.ladder;
+        self.frames.at(ladder.n(), q);
+        self.force_evals += 1;
+        self.links_gradient(q, true);
         let t = self.terms;
         let gamma = ladder.params.gamma;
         self.force.resize(self.grad.len(), 0.0);
@@ -181,7 +200,7 @@ impl<'a> Rhs<'a> {
             *f = -g - rate * v[k];
         }
         if let Some(friction) = t.friction {
-            friction.add_forces(ladder, &t.links, q, v, &mut self.force);
+            friction.add_forces(ladder, &t.links, &self.frames, (q, v), &mut self.force);
         }
         if let Some(b) = ladder.built {
             b.ribbons.add_damping(ladder.n(), q, v, &mut self.force);
@@ -202,13 +221,14 @@ impl<'a> Rhs<'a> {
             }
             let vi = [v[k], v[k + 1], v[k + 2]];
             let mut qi = [self.force[k], self.force[k + 1], self.force[k + 2]];
+            let frame = self.frames.get(i);
             if t.drag != 0.0 {
-                let d = media::drag_force(t.drag, i, q[itheta(i)], vi);
+                let d = media::drag_force_framed(t.drag, frame.1, vi);
                 for (a, b) in qi.iter_mut().zip(d) {
                     *a += b;
                 }
             }
-            let a = media::block_acceleration(t.added_mass, j, i, q[itheta(i)], vi, qi);
+            let a = media::block_acceleration_framed(t.added_mass, j, frame, vi, qi);
             acc[k..k + 3].copy_from_slice(&a);
         }
     }
