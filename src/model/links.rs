@@ -329,6 +329,22 @@ mod tests {
     }
 
     #[test]
+    fn smooth_sign_is_the_librarys_tanh_bit_for_bit() {
+        let mut x = 1e-6f64;
+        while x < 1e4 {
+            for y in [x, -x, 22.0 * (1.0 + x * 1e-7), 19.0 + x.fract() * 6.0] {
+                assert_eq!(smooth_sign(y).to_bits(), y.tanh().to_bits(), "{y}");
+                assert_eq!(smooth_sign(-y).to_bits(), (-y).tanh().to_bits(), "{y}");
+            }
+            x *= 1.001;
+        }
+        for y in [0.0, -0.0, f64::INFINITY, f64::NEG_INFINITY, 22.0, -22.0] {
+            assert_eq!(smooth_sign(y).to_bits(), y.tanh().to_bits(), "{y}");
+        }
+        assert!(smooth_sign(f64::NAN).is_nan());
+    }
+
+    #[test]
     fn friction_dissipates_and_its_power_is_its_forces_power() {
         let (ladder, q) = bent(69.0);
         let links = Links {
