@@ -338,14 +338,18 @@ impl FixedStep {
             rhs.conservative(&st.q, &mut self.acc);
         }
         let half = 0.5 * h;
-        for k in 0..st.q.len() {
-            st.v[k] += half * (self.acc[k] - rhs.damping_rate[k] * st.v[k]);
-            st.q[k] += h * st.v[k];
+        // Iterators over the slices, not indices: the compiler then sees
+        // that the arrays do not overlap and vectorises both loops.
+        let coords = st.q.iter_mut().zip(st.v.iter_mut());
+        for ((q, v), (a, c)) in coords.zip(self.acc.iter().zip(&rhs.damping_rate)) {
+            *v += half * (a - c * *v);
+            *q += h * *v;
         }
         rhs.constrain(t + h, &mut st.q, &mut st.v);
         rhs.conservative(&st.q, &mut self.acc);
-        for k in 0..st.q.len() {
-            st.v[k] = (st.v[k] + half * self.acc[k]) / (1.0 + half * rhs.damping_rate[k]);
+        let kicks = self.acc.iter().zip(&rhs.damping_rate);
+        for (v, (a, c)) in st.v.iter_mut().zip(kicks) {
+            *v = (*v + half * a) / (1.0 + half * c);
         }
         self.cached_at = Some(t + h);
     }

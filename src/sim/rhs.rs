@@ -149,18 +149,23 @@ impl<'a> Rhs<'a> {
     #[inline]
     pub fn gradient(&mut self, q: &[f64]) -> (&[f64], &[f64]) {
         self.force_evals += 1;
-        self.links_gradient(q, false);
+        if self.terms.links.is_paper() && self.ladder.built.is_none() {
+            self.ladder
+                .gradient_with(q, &mut self.grad, &mut self.scratch);
+        } else {
+            self.terms_gradient(q, false);
+        }
         (&self.grad, &self.inv_mass)
     }
 
-    /// ∂E/∂q of the links (or ribbons) and gravity into `grad`; `framed`:
-    /// `frames` already hold the blocks' frames at `q`.
-    #[inline]
-    fn links_gradient(&mut self, q: &[f64], framed: bool) {
+    /// ∂E/∂q of the links beyond the paper's springs (or the ribbons) and
+    /// gravity into `grad`; `framed`: `frames` already hold the blocks'
+    /// frames at `q`. Kept out of line, so that the paper's path above
+    /// stays small enough to inline into the integrators' loops.
+    #[inline(never)]
+    fn terms_gradient(&mut self, q: &[f64], framed: bool) {
         let ladder = self.ladder;
-        if self.terms.links.is_paper() && ladder.built.is_none() {
-            ladder.gradient_with(q, &mut self.grad, &mut self.scratch);
-        } else if ladder.built.is_some() {
+        if ladder.built.is_some() {
             self.terms.links.gradient(ladder, q, &mut self.grad);
         } else {
             if !framed {
@@ -191,7 +196,11 @@ impl<'a> Rhs<'a> {
         let ladder = self.ladder;
         self.frames.at(ladder.n(), q);
         self.force_evals += 1;
-        self.links_gradient(q, true);
+        if self.terms.links.is_paper() && ladder.built.is_none() {
+            ladder.gradient_with(q, &mut self.grad, &mut self.scratch);
+        } else {
+            self.terms_gradient(q, true);
+        }
         let t = self.terms;
         let gamma = ladder.params.gamma;
         self.force.resize(self.grad.len(), 0.0);
