@@ -89,34 +89,49 @@ pub fn value(obj: &Bound<'_, PyAny>, key: &str, depth: usize) -> PyResult<Value>
         return Ok(Value::String(obj.extract()?));
     }
     if let Ok(d) = obj.cast::<PyDict>() {
-        let mut map = Map::new();
-        for (k, v) in d.iter() {
-            let name: String = k.extract().map_err(|_| {
-                PyTypeError::new_err(format!(
-                    "{key}: a table's keys must be strings, got a {}",
-                    type_name(&k)
-                ))
-            })?;
-            let path = format!("{key}.{name}");
-            map.insert(name, value(&v, &path, depth + 1)?);
-        }
-        return Ok(Value::Object(map));
+        return table(d, key, depth);
     }
     if obj.is_instance_of::<PyList>() || obj.is_instance_of::<PyTuple>() {
-        let len = obj.len()?;
-        if len > MAX_ITEMS {
-            return Err(bad(
-                key,
-                format!("{len} values, past the {MAX_ITEMS} a list may hold"),
-            ));
-        }
-        let mut items = Vec::with_capacity(len);
-        for (i, item) in obj.try_iter()?.enumerate() {
-            items.push(value(&item?, &format!("{key}.{i}"), depth + 1)?);
-        }
-        return Ok(Value::Array(items));
+        return list(obj, key, depth);
     }
-    // numpy arrays and scalars (their plain values), sets and paths.
+    foreign(obj, key, depth)
+}
+
+/// A dict as a JSON object: string keys, each value at `key.name`.
+fn table(d: &Bound<'_, PyDict>, key: &str, depth: usize) -> PyResult<Value> {
+    let mut map = Map::new();
+    for (k, v) in d.iter() {
+        let name: String = k.extract().map_err(|_| {
+            PyTypeError::new_err(format!(
+                "{key}: a table's keys must be strings, got a {}",
+                type_name(&k)
+            ))
+        })?;
+        let path = format!("{key}.{name}");
+        map.insert(name, value(&v, &path, depth + 1)?);
+    }
+    Ok(Value::Object(map))
+}
+
+/// A list or tuple as a JSON array of at most `MAX_ITEMS` values.
+fn list(obj: &Bound<'_, PyAny>, key: &str, depth: usize) -> PyResult<Value> {
+    let len = obj.len()?;
+    if len > MAX_ITEMS {
+        return Err(bad(
+            key,
+            format!("{len} values, past the {MAX_ITEMS} a list may hold"),
+        ));
+    }
+    let mut items = Vec::with_capacity(len);
+    for (i, item) in obj.try_iter()?.enumerate() {
+        items.push(value(&item?, &format!("{key}.{i}"), depth + 1)?);
+    }
+    Ok(Value::Array(items))
+}
+
+/// numpy arrays and scalars (their plain values) and paths; anything else
+/// is refused with its kind.
+fn foreign(obj: &Bound<'_, PyAny>, key: &str, depth: usize) -> PyResult<Value> {
     let py = obj.py();
     let numpy = py.import("sys")?.getattr("modules")?.get_item("numpy").ok();
     if let Some(np) = numpy {

@@ -121,119 +121,126 @@ fn wp_panel(
     )
     .title(title);
     spec.legend = Legend::Outside;
-    let at = |evals: f64, wall: f64| match cost {
+    let mut marks = Marks::default();
+    for sweep in &scene.integrators {
+        spec = spec.series(integrator_series(sweep, cost));
+        if sweep.refused.is_none() {
+            marks.collect(sweep, scene.t_end, cheapest, cost, yr.1 / 2.0);
+        }
+    }
+    for series in marks.into_series(cheapest) {
+        spec = spec.series(series);
+    }
+    Ok(spec)
+}
+
+/// A run's position on the x axis of `cost`.
+fn at(cost: Cost, evals: f64, wall: f64) -> f64 {
+    match cost {
         Cost::Evals => evals,
         Cost::Wall => wall,
-    };
-    let diverged_y = yr.1 / 2.0;
-    let mut paper = Vec::new();
-    let mut best = Vec::new();
-    let mut diverged = Vec::new();
-    let mut inaccurate = Vec::new();
-    for sweep in &scene.integrators {
+    }
+}
+
+/// The series of one integrator: its error line against `cost`, or, for a
+/// refused integrator, a legend line with the reason and nothing to plot.
+fn integrator_series(sweep: &Sweep, cost: Cost) -> Series {
+    let color = color_of(&sweep.name);
+    if let Some(reason) = &sweep.refused {
+        return Series::scatter(
+            format!("{} refused: {}", pretty(&sweep.name), refusal_terms(reason)),
+            Vec::new(),
+            color,
+            Marker::Plus,
+        )
+        .with_width(3.0);
+    }
+    let pts: Vec<(f64, f64)> = sweep
+        .points
+        .iter()
+        .filter(|p| !p.diverged)
+        .filter_map(|p| {
+            let e = p.theta_error?;
+            Some((at(cost, p.force_evals as f64, p.wall_seconds), e))
+        })
+        .collect();
+    let order = sweep
+        .measured_order
+        .map_or(String::new(), |o| format!(", slope {o:.1}"));
+    Series::line(format!("{}{order}", pretty(&sweep.name)), pts, color).with_marker(Marker::Circle)
+}
+
+/// The runs a panel marks over the integrators' lines: the paper's
+/// setting, the cheapest accurate run, the inaccurate runs and the diverged
+/// ones (drawn at `diverged_y`, at the cost they would have had).
+#[derive(Default)]
+struct Marks {
+    paper: Vec<(f64, f64)>,
+    best: Vec<(f64, f64)>,
+    inaccurate: Vec<(f64, f64)>,
+    diverged: Vec<(f64, f64, Rgb, String)>,
+}
+
+impl Marks {
+    /// Adds the marks of `sweep`'s runs.
+    fn collect(
+        &mut self,
+        sweep: &Sweep,
+        t_end: f64,
+        cheapest: Option<(&str, f64)>,
+        cost: Cost,
+        diverged_y: f64,
+    ) {
         let color = color_of(&sweep.name);
-        if let Some(reason) = &sweep.refused {
-            // Nothing to plot: a legend line with the reason.
-            spec = spec.series(
-                Series::scatter(
-                    format!("{} refused: {}", pretty(&sweep.name), refusal_terms(reason)),
-                    Vec::new(),
-                    color,
-                    Marker::Plus,
-                )
-                .with_width(3.0),
-            );
-            continue;
-        }
-        let pts: Vec<(f64, f64)> = sweep
-            .points
-            .iter()
-            .filter(|p| !p.diverged)
-            .filter_map(|p| {
-                let e = p.theta_error?;
-                Some((at(p.force_evals as f64, p.wall_seconds), e))
-            })
-            .collect();
-        let order = sweep
-            .measured_order
-            .map_or(String::new(), |o| format!(", slope {o:.1}"));
-        spec = spec.series(
-            Series::line(format!("{}{order}", pretty(&sweep.name)), pts, color)
-                .with_marker(Marker::Circle),
-        );
         for p in &sweep.points {
             let step = p.dt.or(p.rtol).unwrap_or(f64::NAN);
             if p.diverged {
                 if let Some(dt) = p.dt {
-                    let (e, w) = nominal_cost(sweep, dt, scene.t_end);
-                    diverged.push((
-                        at(e, w),
-                        diverged_y,
-                        color,
-                        format!("{}, dt = {dt}", pretty(&sweep.name)),
-                    ));
+                    let (e, w) = nominal_cost(sweep, dt, t_end);
+                    let what = format!("{}, dt = {dt}", pretty(&sweep.name));
+                    self.diverged
+                        .push((at(cost, e, w), diverged_y, color, what));
                 }
                 continue;
             }
             let Some(err) = p.theta_error else { continue };
-            let x = at(p.force_evals as f64, p.wall_seconds);
+            let x = at(cost, p.force_evals as f64, p.wall_seconds);
             if p.status == Status::Inaccurate {
-                inaccurate.push((x, err));
+                self.inaccurate.push((x, err));
             }
             if sweep.name == PAPER_KIND && p.dt == Some(PAPER_DT) {
-                paper.push((x, err));
+                self.paper.push((x, err));
             }
             if cheapest == Some((sweep.name.as_str(), step)) {
-                best.push((x, err));
+                self.best.push((x, err));
             }
         }
     }
-    if !paper.is_empty() {
-        spec = spec.series(
-            Series::scatter(
-                "paper's setting: symplectic Euler, dt = 0.01",
-                paper,
-                Palette.color(Role::Ink),
-                Marker::Square,
-            )
-            .with_width(3.0),
-        );
+
+    /// The marks as series, in the legend's order.
+    fn into_series(self, cheapest: Option<(&str, f64)>) -> Vec<Series> {
+        let ink = Palette.color(Role::Ink);
+        let mut out = Vec::new();
+        if !self.paper.is_empty() {
+            let label = "paper's setting: symplectic Euler, dt = 0.01";
+            out.push(Series::scatter(label, self.paper, ink, Marker::Square).with_width(3.0));
+        }
+        if !self.best.is_empty() {
+            let (name, step) = cheapest.unwrap_or_default();
+            let label = format!("cheapest within 1 τ: {}, dt = {step}", pretty(name));
+            out.push(Series::scatter(label, self.best, ink, Marker::Triangle).with_width(3.0));
+        }
+        if !self.inaccurate.is_empty() {
+            let label = format!("inaccurate (θ error > {INACCURATE_THETA} rad or a flip differs)");
+            let marks = Series::scatter(label, self.inaccurate, ink, Marker::Ring);
+            out.push(marks.with_width(2.0));
+        }
+        for (x, y, color, what) in self.diverged {
+            let label = format!("diverged: {what}");
+            out.push(Series::scatter(label, vec![(x, y)], color, Marker::Cross).with_width(3.0));
+        }
+        out
     }
-    if !best.is_empty() {
-        let (name, step) = cheapest.unwrap_or_default();
-        spec = spec.series(
-            Series::scatter(
-                format!("cheapest within 1 τ: {}, dt = {step}", pretty(name)),
-                best,
-                Palette.color(Role::Ink),
-                Marker::Triangle,
-            )
-            .with_width(3.0),
-        );
-    }
-    if !inaccurate.is_empty() {
-        spec = spec.series(
-            Series::scatter(
-                format!("inaccurate (θ error > {INACCURATE_THETA} rad or a flip differs)"),
-                inaccurate,
-                Palette.color(Role::Ink),
-                Marker::Ring,
-            )
-            .with_width(2.0),
-        );
-    }
-    for (x, y, color, what) in diverged {
-        spec = spec.series(
-            Series::scatter(
-                format!("diverged: {what}"),
-                vec![(x, y)],
-                color,
-                Marker::Cross,
-            )
-            .with_width(3.0),
-        );
-    }
-    Ok(spec)
 }
 
 /// The bench report's charts are drawn at the screen style.

@@ -141,9 +141,10 @@ fn ftyp() -> Vec<u8> {
     b.0
 }
 
+/// The movie's index: `moov` with one video track, its sample tables
+/// pointing at the frames stored from `chunk_offset`.
 fn moov(t: &Mp4Track, chunk_offset: usize) -> Result<Vec<u8>> {
     let frames = t.sizes.len() as u64;
-    let timescale = t.timescale();
     let media_duration = u32::try_from(frames * FRAME_TICKS as u64)
         .map_err(|_| Error::failed("the MP4 is too long for its clock"))?;
     let movie_duration = (frames as f64 * MOVIE_TIMESCALE as f64 / t.fps).round() as u32;
@@ -155,7 +156,26 @@ fn moov(t: &Mp4Track, chunk_offset: usize) -> Result<Vec<u8>> {
     );
     let mut b = Boxes(Vec::new());
     let moov = b.begin(b"moov");
+    mvhd(&mut b, movie_duration);
+    let trak = b.begin(b"trak");
+    tkhd(&mut b, t, movie_duration);
+    let mdia = b.begin(b"mdia");
+    mdhd_hdlr(&mut b, t.timescale(), media_duration);
+    let minf = b.begin(b"minf");
+    vmhd_dinf(&mut b);
+    let stbl = b.begin(b"stbl");
+    stsd(&mut b, t, w, h);
+    sample_tables(&mut b, t, offset);
+    b.end(stbl);
+    b.end(minf);
+    b.end(mdia);
+    b.end(trak);
+    b.end(moov);
+    Ok(b.0)
+}
 
+/// The movie header: timescale, duration, unity matrix, next track ID.
+fn mvhd(b: &mut Boxes, movie_duration: u32) {
     let mvhd = b.begin_full(b"mvhd", 0, 0);
     b.u32(0); // creation time: none, so the bytes are reproducible
     b.u32(0); // modification time
@@ -168,8 +188,10 @@ fn moov(t: &Mp4Track, chunk_offset: usize) -> Result<Vec<u8>> {
     b.zeros(24); // pre_defined
     b.u32(2); // next track ID
     b.end(mvhd);
+}
 
-    let trak = b.begin(b"trak");
+/// The track header: track 1, enabled, its duration and size.
+fn tkhd(b: &mut Boxes, t: &Mp4Track, movie_duration: u32) {
     let tkhd = b.begin_full(b"tkhd", 0, 0x3); // enabled, in movie
     b.u32(0);
     b.u32(0);
@@ -185,8 +207,10 @@ fn moov(t: &Mp4Track, chunk_offset: usize) -> Result<Vec<u8>> {
     b.u32(t.width << 16);
     b.u32(t.height << 16);
     b.end(tkhd);
+}
 
-    let mdia = b.begin(b"mdia");
+/// The media header (timescale, duration, language) and the video handler.
+fn mdhd_hdlr(b: &mut Boxes, timescale: u32, media_duration: u32) {
     let mdhd = b.begin_full(b"mdhd", 0, 0);
     b.u32(0);
     b.u32(0);
@@ -201,8 +225,10 @@ fn moov(t: &Mp4Track, chunk_offset: usize) -> Result<Vec<u8>> {
     b.zeros(12);
     b.bytes(b"VideoHandler\0");
     b.end(hdlr);
+}
 
-    let minf = b.begin(b"minf");
+/// The video media header and a data reference to this file.
+fn vmhd_dinf(b: &mut Boxes) {
     let vmhd = b.begin_full(b"vmhd", 0, 1);
     b.zeros(8); // graphics mode, opcolor
     b.end(vmhd);
@@ -213,12 +239,15 @@ fn moov(t: &Mp4Track, chunk_offset: usize) -> Result<Vec<u8>> {
     b.end(url);
     b.end(dref);
     b.end(dinf);
+}
 
-    let stbl = b.begin(b"stbl");
-    stsd(&mut b, t, w, h);
+/// The sample tables: one duration for every frame, the key frames, one
+/// chunk holding every sample, each sample's size, the chunk's offset.
+fn sample_tables(b: &mut Boxes, t: &Mp4Track, offset: u32) {
+    let frames = t.sizes.len() as u32;
     let stts = b.begin_full(b"stts", 0, 0);
     b.u32(1);
-    b.u32(frames as u32);
+    b.u32(frames);
     b.u32(FRAME_TICKS);
     b.end(stts);
     let stss = b.begin_full(b"stss", 0, 0);
@@ -230,12 +259,12 @@ fn moov(t: &Mp4Track, chunk_offset: usize) -> Result<Vec<u8>> {
     let stsc = b.begin_full(b"stsc", 0, 0);
     b.u32(1);
     b.u32(1); // first chunk
-    b.u32(frames as u32); // samples per chunk: all
+    b.u32(frames); // samples per chunk: all
     b.u32(1); // sample description
     b.end(stsc);
     let stsz = b.begin_full(b"stsz", 0, 0);
     b.u32(0); // sizes differ
-    b.u32(frames as u32);
+    b.u32(frames);
     for s in &t.sizes {
         b.u32(*s);
     }
@@ -244,13 +273,6 @@ fn moov(t: &Mp4Track, chunk_offset: usize) -> Result<Vec<u8>> {
     b.u32(1);
     b.u32(offset);
     b.end(stco);
-    b.end(stbl);
-
-    b.end(minf);
-    b.end(mdia);
-    b.end(trak);
-    b.end(moov);
-    Ok(b.0)
 }
 
 /// The sample description: an `avc1` entry with its `avcC` configuration.

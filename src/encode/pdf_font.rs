@@ -86,94 +86,135 @@ impl Fonts {
         };
         let mut out = Vec::new();
         for face in &self.faces {
-            let (type0, cid, descriptor, file, cmap) =
-                (alloc(), alloc(), alloc(), alloc(), alloc());
-            let subset =
-                subsetter::subset(&face.data, face.index, &face.remapper).map_err(|e| {
-                    Error::failed(format!("the font {} could not be subset: {e:?}", face.name))
-                })?;
-            let font = FontRef::try_from_slice_and_index(&face.data, face.index)
-                .map_err(|_| Error::failed(format!("the font {} cannot be read", face.name)))?;
-            let base = format!("{}+{}", face.tag(), face.name);
-            let base = Name(base.as_bytes());
-            let per_mille = |v: f32| v / face.upem * 1000.0;
-            let info = SystemInfo {
-                registry: Str(b"Adobe"),
-                ordering: Str(b"Identity"),
-                supplement: 0,
+            let ids = FaceRefs {
+                type0: alloc(),
+                cid: alloc(),
+                descriptor: alloc(),
+                file: alloc(),
+                cmap: alloc(),
             };
-
-            pdf.type0_font(type0)
-                .base_font(base)
-                .encoding_predefined(Name(b"Identity-H"))
-                .descendant_font(cid)
-                .to_unicode(cmap);
-
-            let count = face.remapper.num_gids();
-            let widths: Vec<f32> = (0..count)
-                .map(|new| {
-                    let old = face.glyphs.get(&new).map_or(0, |g| g.0);
-                    per_mille(font.h_advance_unscaled(GlyphId(old)))
-                })
-                .collect();
-            let mut c = pdf.cid_font(cid);
-            c.subtype(CidFontType::Type2)
-                .base_font(base)
-                .system_info(info)
-                .font_descriptor(descriptor)
-                .cid_to_gid_map_predefined(Name(b"Identity"));
-            c.widths().consecutive(0, widths);
-            c.finish();
-
-            let mut bbox = Rect::new(
-                0.0,
-                per_mille(font.descent_unscaled()),
-                1000.0,
-                per_mille(font.ascent_unscaled()),
-            );
-            for (old, _) in face.glyphs.values() {
-                if let Some(o) = font.outline(GlyphId(*old)) {
-                    bbox.x1 = bbox.x1.min(per_mille(o.bounds.min.x));
-                    bbox.y1 = bbox.y1.min(per_mille(o.bounds.min.y));
-                    bbox.x2 = bbox.x2.max(per_mille(o.bounds.max.x));
-                    bbox.y2 = bbox.y2.max(per_mille(o.bounds.max.y));
-                }
-            }
-            let mut flags = FontFlags::NON_SYMBOLIC;
-            if face.name.contains("Serif") {
-                flags |= FontFlags::SERIF;
-            }
-            let cap = font
-                .outline(font.glyph_id('H'))
-                .map_or(700.0, |o| per_mille(o.bounds.max.y));
-            pdf.font_descriptor(descriptor)
-                .name(base)
-                .flags(flags)
-                .bbox(bbox)
-                .italic_angle(0.0)
-                .ascent(per_mille(font.ascent_unscaled()))
-                .descent(per_mille(font.descent_unscaled()))
-                .cap_height(cap)
-                .stem_v(80.0)
-                .font_file2(file);
-
-            let packed = miniz_oxide::deflate::compress_to_vec_zlib(&subset, 6);
-            pdf.stream(file, &packed)
-                .filter(Filter::FlateDecode)
-                .pair(Name(b"Length1"), subset.len() as i32);
-
-            let mut map = UnicodeCmap::new(Name(b"Custom"), info);
-            for (new, (_, text)) in &face.glyphs {
-                if !text.is_empty() {
-                    map.pair_with_multiple(*new, text.chars());
-                }
-            }
-            pdf.cmap(cmap, &map.finish())
-                .system_info(info)
-                .name(Name(b"Custom"));
-            out.push(type0);
+            face.write(pdf, &ids)?;
+            out.push(ids.type0);
         }
         Ok(out)
+    }
+}
+
+/// The five objects of one embedded face.
+struct FaceRefs {
+    type0: Ref,
+    cid: Ref,
+    descriptor: Ref,
+    file: Ref,
+    cmap: Ref,
+}
+
+/// The character collection of every face: Adobe-Identity-0.
+fn system_info() -> SystemInfo<'static> {
+    SystemInfo {
+        registry: Str(b"Adobe"),
+        ordering: Str(b"Identity"),
+        supplement: 0,
+    }
+}
+
+impl Face {
+    /// Writes this face's objects: the Type 0 font, its CID font, the font
+    /// descriptor, the subset font file and the ToUnicode map.
+    fn write(&self, pdf: &mut Pdf, ids: &FaceRefs) -> Result<()> {
+        let subset = subsetter::subset(&self.data, self.index, &self.remapper).map_err(|e| {
+            Error::failed(format!("the font {} could not be subset: {e:?}", self.name))
+        })?;
+        let font = FontRef::try_from_slice_and_index(&self.data, self.index)
+            .map_err(|_| Error::failed(format!("the font {} cannot be read", self.name)))?;
+        let base = format!("{}+{}", self.tag(), self.name);
+        let base = Name(base.as_bytes());
+        pdf.type0_font(ids.type0)
+            .base_font(base)
+            .encoding_predefined(Name(b"Identity-H"))
+            .descendant_font(ids.cid)
+            .to_unicode(ids.cmap);
+        self.write_cid_font(pdf, &font, ids, base);
+        self.write_descriptor(pdf, &font, ids, base);
+        let packed = miniz_oxide::deflate::compress_to_vec_zlib(&subset, 6);
+        pdf.stream(ids.file, &packed)
+            .filter(Filter::FlateDecode)
+            .pair(Name(b"Length1"), subset.len() as i32);
+        self.write_cmap(pdf, ids.cmap);
+        Ok(())
+    }
+
+    /// A length in font units as thousandths of the em.
+    fn per_mille(&self, v: f32) -> f32 {
+        v / self.upem * 1000.0
+    }
+
+    /// The CID font with every subset glyph's advance width.
+    fn write_cid_font(&self, pdf: &mut Pdf, font: &FontRef, ids: &FaceRefs, base: Name) {
+        let count = self.remapper.num_gids();
+        let widths: Vec<f32> = (0..count)
+            .map(|new| {
+                let old = self.glyphs.get(&new).map_or(0, |g| g.0);
+                self.per_mille(font.h_advance_unscaled(GlyphId(old)))
+            })
+            .collect();
+        let mut c = pdf.cid_font(ids.cid);
+        c.subtype(CidFontType::Type2)
+            .base_font(base)
+            .system_info(system_info())
+            .font_descriptor(ids.descriptor)
+            .cid_to_gid_map_predefined(Name(b"Identity"));
+        c.widths().consecutive(0, widths);
+        c.finish();
+    }
+
+    /// The font descriptor: the bounding box of the glyphs used, ascent,
+    /// descent, cap height and flags.
+    fn write_descriptor(&self, pdf: &mut Pdf, font: &FontRef, ids: &FaceRefs, base: Name) {
+        let mut bbox = Rect::new(
+            0.0,
+            self.per_mille(font.descent_unscaled()),
+            1000.0,
+            self.per_mille(font.ascent_unscaled()),
+        );
+        for (old, _) in self.glyphs.values() {
+            if let Some(o) = font.outline(GlyphId(*old)) {
+                bbox.x1 = bbox.x1.min(self.per_mille(o.bounds.min.x));
+                bbox.y1 = bbox.y1.min(self.per_mille(o.bounds.min.y));
+                bbox.x2 = bbox.x2.max(self.per_mille(o.bounds.max.x));
+                bbox.y2 = bbox.y2.max(self.per_mille(o.bounds.max.y));
+            }
+        }
+        let mut flags = FontFlags::NON_SYMBOLIC;
+        if self.name.contains("Serif") {
+            flags |= FontFlags::SERIF;
+        }
+        let cap = font
+            .outline(font.glyph_id('H'))
+            .map_or(700.0, |o| self.per_mille(o.bounds.max.y));
+        pdf.font_descriptor(ids.descriptor)
+            .name(base)
+            .flags(flags)
+            .bbox(bbox)
+            .italic_angle(0.0)
+            .ascent(self.per_mille(font.ascent_unscaled()))
+            .descent(self.per_mille(font.descent_unscaled()))
+            .cap_height(cap)
+            .stem_v(80.0)
+            .font_file2(ids.file);
+    }
+
+    /// The ToUnicode map: each subset glyph's text.
+    fn write_cmap(&self, pdf: &mut Pdf, cmap: Ref) {
+        let mut map = UnicodeCmap::new(Name(b"Custom"), system_info());
+        for (new, (_, text)) in &self.glyphs {
+            if !text.is_empty() {
+                map.pair_with_multiple(*new, text.chars());
+            }
+        }
+        pdf.cmap(cmap, &map.finish())
+            .system_info(system_info())
+            .name(Name(b"Custom"));
     }
 }
 

@@ -12,22 +12,7 @@ impl Scene {
     /// `drive.flips.1.start`, ...).
     pub fn check(&self) -> std::result::Result<(), (String, String)> {
         let bad = |key: &str, msg: String| Err((key.to_string(), msg));
-        if self.name.is_empty()
-            || self.name.len() > 64
-            || !self
-                .name
-                .chars()
-                .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c))
-            || self.name.starts_with('.')
-        {
-            return bad(
-                "name",
-                format!(
-                    "must be 1 to 64 letters, digits, '-', '_' or '.' (not first), got '{}'",
-                    self.name.escape_debug()
-                ),
-            );
-        }
+        check_name(&self.name)?;
         for (key, text, lines) in [
             ("label", &self.label, false),
             ("title", &self.title, false),
@@ -57,6 +42,14 @@ impl Scene {
         if let Err((k, msg)) = self.drive.check() {
             return Err((format!("drive.flips.{k}"), msg));
         }
+        self.check_run()?;
+        self.check_output()
+    }
+
+    /// The `run` table: the window, the step or tolerance, and which
+    /// integrator they apply to.
+    fn check_run(&self) -> std::result::Result<(), (String, String)> {
+        let bad = |key: &str, msg: String| Err((key.to_string(), msg));
         let r = &self.run;
         if !((r.t_end.is_finite() || r.t_end == AUTO_T_END) && r.t_end > 0.0) {
             return bad(
@@ -92,7 +85,7 @@ impl Scene {
                 format!("must be a time in [1e-6, 1000] τ, got {}", r.tolerance),
             );
         }
-        self.check_output()
+        Ok(())
     }
 
     /// A ring chain that builds (docs/rings.md) and an output it makes.
@@ -325,6 +318,12 @@ fn check_theory(t: &TheorySpec, b: f64) -> std::result::Result<(), (String, Stri
             ),
         ));
     }
+    check_theory_values(t, b)
+}
+
+/// The values of a theory figure's lists: angles, length ratios (each
+/// with a ground state at `b`) and modes.
+fn check_theory_values(t: &TheorySpec, b: f64) -> std::result::Result<(), (String, String)> {
     if let Some(a) = t
         .alphas
         .iter()
@@ -373,6 +372,23 @@ fn check_theory(t: &TheorySpec, b: f64) -> std::result::Result<(), (String, Stri
             format!(
                 "modes need m in 1..=1000 and |epsilon| <= 1, got m = {}, epsilon = {}",
                 m.m, m.epsilon
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// A scene's name: 1 to 64 letters, digits, '-', '_' or '.', not first.
+fn check_name(name: &str) -> std::result::Result<(), (String, String)> {
+    let allowed = name
+        .chars()
+        .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c));
+    if name.is_empty() || name.len() > 64 || !allowed || name.starts_with('.') {
+        return Err((
+            "name".to_string(),
+            format!(
+                "must be 1 to 64 letters, digits, '-', '_' or '.' (not first), got '{}'",
+                name.escape_debug()
             ),
         ));
     }

@@ -56,7 +56,7 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
     let runs = scene.runs();
     let labels = panel_labels(scene);
     let n_max = runs.iter().map(|(s, _)| s.model.n).max().unwrap_or(10);
-    let mut spec = ChartSpec::new(
+    let spec = ChartSpec::new(
         Axis::new("block n").range(0.5, n_max as f64 + 0.5),
         Axis::new("arrival time tₙ / τ"),
     )
@@ -69,51 +69,63 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
     let mut data = Vec::with_capacity(runs.len());
     for ((s, _), label) in runs.iter().zip(&labels) {
         let run = run::simulate(s, &[])?;
-        let traj = &run.trajectory;
-        let alpha = s.model.alpha;
-        // Each wave of the run; a run without a waves record is one wave.
-        let kind_of = |w: &sim::waves::Wave| w.kind == sim::waves::WaveKind::Kink;
-        let mut waves: Vec<DrawnWave<'_>> = traj
-            .waves
-            .waves
-            .iter()
-            .map(|w| (kind_of(w), w.launched_at, w.arrival_times.clone(), Some(w)))
-            .collect();
-        if waves.is_empty() {
-            waves.push((alpha > 0.0, 0.0, traj.arrival_times.clone(), None));
-        }
-        let several = waves.len() > 1;
-        for (kink, launched, arrivals, wave) in waves {
-            let pts: Vec<(f64, f64)> = arrivals
-                .iter()
-                .enumerate()
-                .filter_map(|(i, t)| t.map(|t| (i as f64 + 1.0, t)))
-                .collect();
-            if pts.is_empty() {
-                continue;
-            }
-            let speed = fitted_speed(&arrivals)
-                .map_or_else(|| without_speed(wave), |v| format!("{v:.1} blocks/1000τ"));
-            let word = if kink { "kink" } else { "antikink" };
-            let launched = describe::num(launched.round());
-            let name = match (several, label.is_empty()) {
-                (false, true) => wave_name(alpha),
-                (false, false) => label.clone(),
-                (true, true) => format!(
-                    "{word} from t/τ = {launched} (α = {}°)",
-                    describe::num(alpha)
-                ),
-                (true, false) => format!("{label}, {word} from t/τ = {launched}"),
-            };
-            drawn.push(Arrivals {
-                label: format!("{name}: {speed}"),
-                kink,
-                marks: pts,
-                line: fitted_line(&arrivals),
-            });
-        }
+        drawn.extend(run_waves(&run.trajectory, s.model.alpha, label));
         data.push(RunData::new(label, s, &run));
     }
+    Ok((with_dodged_waves(spec, drawn), data))
+}
+
+/// The waves of one run as drawn, each with its legend: the panel's
+/// `label` and, when the run has several waves, the wave's kind and launch.
+fn run_waves(traj: &sim::Trajectory, alpha: f64, label: &str) -> Vec<Arrivals> {
+    // Each wave of the run; a run without a waves record is one wave.
+    let kind_of = |w: &sim::waves::Wave| w.kind == sim::waves::WaveKind::Kink;
+    let mut waves: Vec<DrawnWave<'_>> = traj
+        .waves
+        .waves
+        .iter()
+        .map(|w| (kind_of(w), w.launched_at, w.arrival_times.clone(), Some(w)))
+        .collect();
+    if waves.is_empty() {
+        waves.push((alpha > 0.0, 0.0, traj.arrival_times.clone(), None));
+    }
+    let several = waves.len() > 1;
+    let mut drawn = Vec::new();
+    for (kink, launched, arrivals, wave) in waves {
+        let pts: Vec<(f64, f64)> = arrivals
+            .iter()
+            .enumerate()
+            .filter_map(|(i, t)| t.map(|t| (i as f64 + 1.0, t)))
+            .collect();
+        if pts.is_empty() {
+            continue;
+        }
+        let speed = fitted_speed(&arrivals)
+            .map_or_else(|| without_speed(wave), |v| format!("{v:.1} blocks/1000τ"));
+        let word = if kink { "kink" } else { "antikink" };
+        let launched = describe::num(launched.round());
+        let name = match (several, label.is_empty()) {
+            (false, true) => wave_name(alpha),
+            (false, false) => label.to_string(),
+            (true, true) => format!(
+                "{word} from t/τ = {launched} (α = {}°)",
+                describe::num(alpha)
+            ),
+            (true, false) => format!("{label}, {word} from t/τ = {launched}"),
+        };
+        drawn.push(Arrivals {
+            label: format!("{name}: {speed}"),
+            kink,
+            marks: pts,
+            line: fitted_line(&arrivals),
+        });
+    }
+    drawn
+}
+
+/// `spec` with every wave of `drawn`: its marks and fitted line set off
+/// across by [`DODGE`] from the wave before.
+fn with_dodged_waves(mut spec: ChartSpec, drawn: Vec<Arrivals>) -> ChartSpec {
     let count = drawn.len();
     let (mut kinks, mut antikinks) = (0, 0);
     for (k, wave) in drawn.into_iter().enumerate() {
@@ -139,7 +151,7 @@ pub fn arrivals_chart(scene: &Scene) -> Result<(ChartSpec, Vec<RunData>)> {
             spec = spec.series(if wave.kink { fit } else { fit.dashed() });
         }
     }
-    Ok((spec, data))
+    spec
 }
 
 /// What the legend says of a wave with no fitted speed, from its fate

@@ -2,6 +2,7 @@
 //! ID`): the refusals' wording and the stability chart of one scene.
 
 use super::*;
+use crate::bench::StabilityRow;
 use crate::render::palette::{Palette, Role};
 
 /// The terms a refusal names (`sim::check_terms`' message: "integrator X
@@ -34,13 +35,10 @@ pub fn refusal_terms(reason: &str) -> String {
 /// with the terms it cannot take.
 pub(super) fn scene_stability_chart(report: &StabilityReport) -> Result<Pixmap> {
     let rows = &report.integrators;
-    // Explicit Euler's and dopri5's damped bounds are 0 without linear
-    // damping (the tank has none): drawn at the left edge.
-    let bound = |r: &crate::bench::StabilityRow| (r.predicted_dt > 1e-4).then_some(r.predicted_dt);
     let all = rows
         .iter()
         .filter(|r| r.refused.is_none() && r.failed.is_none())
-        .flat_map(|r| [Some(r.critical_dt), bound(r)])
+        .flat_map(|r| [Some(r.critical_dt), linear_bound(r)])
         .flatten();
     let (lo, hi) = decades(log_range(all, 1.5).unwrap_or((1e-3, 1.0)));
     let name = report.scene.as_deref().unwrap_or("scene");
@@ -62,37 +60,7 @@ pub(super) fn scene_stability_chart(report: &StabilityReport) -> Result<Pixmap> 
         .dashed(),
     );
     for r in rows {
-        let color = color_of(&r.name);
-        let label = match (&r.refused, &r.failed) {
-            (Some(reason), _) => format!(
-                "{} refused: {}",
-                stability_label(&r.name),
-                refusal_terms(reason)
-            ),
-            (None, Some(_)) => format!("{}: no stable step found", stability_label(&r.name)),
-            (None, None) => match bound(r) {
-                Some(p) => format!(
-                    "{}: {:.3} τ ({:.2} × predicted)",
-                    stability_label(&r.name),
-                    r.critical_dt,
-                    r.critical_dt / p
-                ),
-                None => format!(
-                    "{}: {:.3} τ (linear bound 0 without damping; at the left edge)",
-                    stability_label(&r.name),
-                    r.critical_dt
-                ),
-            },
-        };
-        let (marker, pts) = if r.refused.is_some() {
-            (Marker::Plus, Vec::new())
-        } else if r.failed.is_some() {
-            (Marker::Cross, Vec::new())
-        } else {
-            let x = bound(r).unwrap_or(lo);
-            (stability_marker(&r.name).0, vec![(x, r.critical_dt)])
-        };
-        spec = spec.series(Series::scatter(label, pts, color, marker).with_width(3.0));
+        spec = spec.series(row_series(r, lo));
     }
     let t = screen();
     let chart = line_chart(&t, &spec, 520 + legend_width(&spec), STABILITY.1)?.pixmap;
@@ -113,4 +81,47 @@ pub(super) fn scene_stability_chart(report: &StabilityReport) -> Result<Pixmap> 
         report.omega_max
     );
     with_caption(&chart, &caption)
+}
+
+/// A scheme's linear bound on dt, or `None` where it is 0 (explicit Euler
+/// and dopri5 without linear damping, as in the tank): drawn at the left
+/// edge.
+fn linear_bound(r: &StabilityRow) -> Option<f64> {
+    (r.predicted_dt > 1e-4).then_some(r.predicted_dt)
+}
+
+/// One scheme of the stability chart: its observed critical dt at its
+/// bound (or at `lo`), or a legend line saying it was refused or failed.
+fn row_series(r: &StabilityRow, lo: f64) -> Series {
+    let color = color_of(&r.name);
+    let label = match (&r.refused, &r.failed) {
+        (Some(reason), _) => format!(
+            "{} refused: {}",
+            stability_label(&r.name),
+            refusal_terms(reason)
+        ),
+        (None, Some(_)) => format!("{}: no stable step found", stability_label(&r.name)),
+        (None, None) => match linear_bound(r) {
+            Some(p) => format!(
+                "{}: {:.3} τ ({:.2} × predicted)",
+                stability_label(&r.name),
+                r.critical_dt,
+                r.critical_dt / p
+            ),
+            None => format!(
+                "{}: {:.3} τ (linear bound 0 without damping; at the left edge)",
+                stability_label(&r.name),
+                r.critical_dt
+            ),
+        },
+    };
+    let (marker, pts) = if r.refused.is_some() {
+        (Marker::Plus, Vec::new())
+    } else if r.failed.is_some() {
+        (Marker::Cross, Vec::new())
+    } else {
+        let x = linear_bound(r).unwrap_or(lo);
+        (stability_marker(&r.name).0, vec![(x, r.critical_dt)])
+    };
+    Series::scatter(label, pts, color, marker).with_width(3.0)
 }
