@@ -331,15 +331,13 @@ impl FixedStep {
         }
     }
 
-    /// Velocity Verlet with the damping split symmetrically: explicit in the
-    /// first half kick, implicit in the second (second order overall).
+    /// Velocity Verlet, damping explicit in the first half kick, implicit in the second (order 2).
     fn verlet(&mut self, rhs: &mut Rhs, st: &mut State, t: f64, h: f64) {
         if self.cached_at != Some(t) {
             rhs.conservative(&st.q, &mut self.acc);
         }
         let half = 0.5 * h;
-        // Iterators over the slices, not indices: the compiler then sees
-        // that the arrays do not overlap and vectorises both loops.
+        // Slice iterators, not indices: the loops vectorise.
         let coords = st.q.iter_mut().zip(st.v.iter_mut());
         for ((q, v), (a, c)) in coords.zip(self.acc.iter().zip(&rhs.damping_rate)) {
             *v += half * (a - c * *v);
@@ -503,8 +501,7 @@ pub const DOPRI5: Tableau = Tableau {
     ]),
 };
 
-/// Explicit Runge–Kutta stepper on y = (q, v), y' = (v, a(q, v)), with
-/// block 1 constrained at every stage time.
+/// Explicit Runge–Kutta on y = (q, v), y' = (v, a(q, v)); block 1 constrained at each stage.
 struct RungeKutta {
     tableau: &'static Tableau,
     /// Stage derivatives: kq[i] = q-rate, kv[i] = v-rate.
@@ -515,7 +512,7 @@ struct RungeKutta {
     /// Error estimate of the last step (q then v), when the tableau has one.
     err_q: Vec<f64>,
     err_v: Vec<f64>,
-    /// Σ w_j k_j of [`RungeKutta::combine`], per coordinate (scratch).
+    /// Σ w_j k_j of [`RungeKutta::combine`] (scratch): q then v.
     dq: Vec<f64>,
     dv: Vec<f64>,
     /// Time at which stage 0 equals the derivative of the current state (FSAL).
@@ -578,9 +575,7 @@ impl RungeKutta {
         }
     }
 
-    /// (self.q, self.v) = st + h Σ w_j k_j, the sum over j in order from
-    /// 0 for every coordinate (stage by stage over whole vectors, so that
-    /// the loops vectorise; the same operations as coordinate by coordinate).
+    /// (self.q, self.v) = st + h Σ w_j k_j, summed in order of j (vectorised).
     fn combine(&mut self, st: &State, h: f64, w: &[f64]) {
         self.dq.fill(0.0);
         self.dv.fill(0.0);
@@ -632,13 +627,11 @@ pub struct Dopri5 {
     pub rejected: u64,
 }
 
-/// Largest step dopri5 takes, in τ: keeps the Hermite interpolation of
-/// arrival times accurate between steps.
+/// Largest step dopri5 takes, in τ (keeps the arrival times' interpolation accurate).
 pub const DOPRI5_MAX_STEP: f64 = 5.0;
 
-/// Absolute part of dopri5's error scale, relative to rtol: velocities in
-/// the scenes are of order 1e-3 s/τ, so an absolute tolerance equal to rtol
-/// would leave them uncontrolled.
+/// Absolute part of dopri5's error scale, relative to rtol: velocities are of
+/// order 1e-3 s/τ, which an absolute tolerance equal to rtol would not control.
 pub const ATOL_SCALE: f64 = 1e-3;
 
 impl Dopri5 {
