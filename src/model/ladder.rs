@@ -32,6 +32,43 @@ pub fn frame(i: usize, theta: f64) -> ([f64; 2], [f64; 2]) {
     ([s, p * c], [c, -p * s])
 }
 
+/// The frames (t_n, ν_n) of every block at one q, each block's sine and
+/// cosine computed once: [`frame`]'s values bit for bit, for the force
+/// loops of the terms (`links`, `media`), which need a block's frame for
+/// each of its links and pins. Owns its buffers: [`Frames::at`] allocates
+/// only when the number of blocks grows.
+#[derive(Debug, Clone, Default)]
+pub struct Frames {
+    sin: Vec<f64>,
+    cos: Vec<f64>,
+}
+
+impl Frames {
+    /// The frames of the first `n` blocks at `q`.
+    pub fn at(&mut self, n: usize, q: &[f64]) {
+        self.sin.resize(n, 0.0);
+        self.cos.resize(n, 0.0);
+        for (i, (s, c)) in self.sin.iter_mut().zip(&mut self.cos).enumerate() {
+            (*s, *c) = q[itheta(i)].sin_cos();
+        }
+    }
+
+    /// The frames of the first `n` blocks at `q`, in new buffers.
+    pub fn new(n: usize, q: &[f64]) -> Self {
+        let mut f = Self::default();
+        f.at(n, q);
+        f
+    }
+
+    /// (t, ν) of block `i`: `frame(i, θ_i)`.
+    #[inline(always)]
+    pub fn get(&self, i: usize) -> ([f64; 2], [f64; 2]) {
+        let (s, c) = (self.sin[i], self.cos[i]);
+        let p = parity(i);
+        ([s, p * c], [c, -p * s])
+    }
+}
+
 /// Orientation t_n = (sin θ_n, (−1)^n cos θ_n) of block `i` at angle `theta`.
 pub fn orientation(i: usize, theta: f64) -> [f64; 2] {
     let (s, c) = super::trig::sin_cos(theta);

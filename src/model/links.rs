@@ -19,7 +19,7 @@
 //! +F n̂, with n̂ = ẑ × d/L and F = (τ₁ + τ₂)/L. The friction's power is
 //! then Σ τ (Ω − φ̇) = −Σ μ_p r_p |T| tanh(ω/ω_ε) ω ≤ 0.
 
-use super::ladder::{Ladder, frame, itheta, ix, iy, parity};
+use super::ladder::{Frames, Ladder, frame, itheta, ix, iy, parity};
 use super::params::{M, R};
 pub use super::terms::{Links, PinFriction};
 
@@ -65,23 +65,38 @@ impl Links {
             [-1.0, 1.0].map(move |sign| {
                 let (t0, _) = frame(i, q[itheta(i)]);
                 let (t1, _) = frame(i + 1, q[itheta(i + 1)]);
-                let dx = (q[ix(i + 1)] + sign * R * t1[0]) - (q[ix(i)] + sign * R * t0[0]);
-                let dy = (q[iy(i + 1)] + sign * R * t1[1]) - (q[iy(i)] + sign * R * t0[1]);
-                let length = (dx * dx + dy * dy).sqrt();
-                let rest = if sign < 0.0 {
-                    ladder.a
-                } else {
-                    ladder.params.b
-                };
-                LinkState {
-                    upper: i,
-                    sign,
-                    d: [dx, dy],
-                    length,
-                    tension: links.tension(length, rest),
-                }
+                links.state(ladder, q, i, sign, [t0, t1])
             })
         })
+    }
+
+    /// The link of sign `sign` (−1: A, +1: B) below block `i`, the blocks'
+    /// directions t_i and t_{i+1} given.
+    #[inline(always)]
+    fn state(
+        &self,
+        ladder: &Ladder,
+        q: &[f64],
+        i: usize,
+        sign: f64,
+        t: [[f64; 2]; 2],
+    ) -> LinkState {
+        let [t0, t1] = t;
+        let dx = (q[ix(i + 1)] + sign * R * t1[0]) - (q[ix(i)] + sign * R * t0[0]);
+        let dy = (q[iy(i + 1)] + sign * R * t1[1]) - (q[iy(i)] + sign * R * t0[1]);
+        let length = (dx * dx + dy * dy).sqrt();
+        let rest = if sign < 0.0 {
+            ladder.a
+        } else {
+            ladder.params.b
+        };
+        LinkState {
+            upper: i,
+            sign,
+            d: [dx, dy],
+            length,
+            tension: self.tension(length, rest),
+        }
     }
 
     /// Elastic energy Σ ½ κ (L − ℓ)², the slack tension-only links left out.
@@ -104,26 +119,36 @@ impl Links {
                 .ribbons
                 .gradient(ladder.n(), ladder.params.gravity, q, grad);
         }
+        self.gradient_framed(ladder, &Frames::new(ladder.n(), q), q, grad);
+    }
+
+    /// [`Links::gradient`] of a ladder without ribbons, the blocks' frames
+    /// at `q` given (the same numbers, bit for bit).
+    pub fn gradient_framed(&self, ladder: &Ladder, frames: &Frames, q: &[f64], grad: &mut [f64]) {
         let g = M * ladder.params.gravity;
         for (k, x) in grad.iter_mut().enumerate().take(3 * ladder.n()) {
             *x = if k % 3 == 0 { -g } else { 0.0 };
         }
-        for s in self.states(ladder, q) {
-            if s.tension == 0.0 {
-                continue;
+        for i in 0..ladder.n() - 1 {
+            let ((t0, nu0), (t1, nu1)) = (frames.get(i), frames.get(i + 1));
+            for sign in [-1.0, 1.0] {
+                let s = self.state(ladder, q, i, sign, [t0, t1]);
+                if s.tension == 0.0 {
+                    continue;
+                }
+                let f = [s.tension * s.d[0] / s.length, s.tension * s.d[1] / s.length];
+                add_node_force(grad, nu1, i + 1, sign, [f[0], f[1]]);
+                add_node_force(grad, nu0, i, sign, [-f[0], -f[1]]);
             }
-            let f = [s.tension * s.d[0] / s.length, s.tension * s.d[1] / s.length];
-            add_node_force(grad, q, s.upper + 1, s.sign, [f[0], f[1]]);
-            add_node_force(grad, q, s.upper, s.sign, [-f[0], -f[1]]);
         }
     }
 }
 
 /// Adds the generalised force of a force `f` at the ±-node of block `i`
-/// (sign −1: A, +1: B) to `out`: f on (X, Y), f·(±r ν) on θ.
-#[inline]
-fn add_node_force(out: &mut [f64], q: &[f64], i: usize, sign: f64, f: [f64; 2]) {
-    let (_, nu) = frame(i, q[itheta(i)]);
+/// (sign −1: A, +1: B; `nu` its normal ν) to `out`: f on (X, Y),
+/// f·(±r ν) on θ.
+#[inline(always)]
+fn add_node_force(out: &mut [f64], nu: [f64; 2], i: usize, sign: f64, f: [f64; 2]) {
     out[ix(i)] += f[0];
     out[iy(i)] += f[1];
     out[itheta(i)] += sign * R * (f[0] * nu[0] + f[1] * nu[1]);
@@ -137,11 +162,25 @@ struct Pin {
     torque: f64,
 }
 
+/// Coulomb's law smoothed, tanh(x): `f64::tanh`, bit for bit, with the
+/// library call left out where it returns ±1 (|x| ≥ 22, where
+/// 1 − tanh|x| < 2⁻⁶³ rounds to 1 in any faithful tanh).
+#[inline(always)]
+pub fn smooth_sign(x: f64) -> f64 {
+    if x.abs() >= 22.0 {
+        1.0f64.copysign(x)
+    } else {
+        x.tanh()
+    }
+}
+
 impl PinFriction {
-    /// The two pins of link `s`: (upper, lower).
-    fn pins(&self, s: &LinkState, q: &[f64], v: &[f64]) -> (Pin, Pin) {
+    /// The two pins of link `s`: (upper, lower), `nu` the normals ν of
+    /// its upper and lower block.
+    #[inline(always)]
+    fn pins(&self, s: &LinkState, nu: [[f64; 2]; 2], v: &[f64]) -> (Pin, Pin) {
         let node_velocity = |i: usize| {
-            let (_, nu) = frame(i, q[itheta(i)]);
+            let nu = nu[i - s.upper];
             let w = v[itheta(i)];
             [
                 v[ix(i)] + s.sign * R * w * nu[0],
@@ -156,34 +195,48 @@ impl PinFriction {
             let omega = -parity(i) * v[itheta(i)] - phi_dot;
             Pin {
                 omega,
-                torque: -limit * (omega / self.omega_eps).tanh(),
+                torque: -limit * smooth_sign(omega / self.omega_eps),
             }
         };
         (pin(s.upper), pin(s.upper + 1))
     }
 
     /// Adds the friction's generalised forces at (q, v) to `out`: the
-    /// torques on the blocks and the link's balancing forces.
+    /// torques on the blocks and the link's balancing forces; `frames`
+    /// the blocks' frames at `q` (`Frames::at`).
     pub fn add_forces(
         &self,
         ladder: &Ladder,
         links: &Links,
-        q: &[f64],
-        v: &[f64],
+        frames: &Frames,
+        (q, v): (&[f64], &[f64]),
         out: &mut [f64],
     ) {
-        for s in links.states(ladder, q) {
-            if s.tension == 0.0 || self.mu_rp == 0.0 {
-                continue;
-            }
-            let (p0, p1) = self.pins(&s, q, v);
-            out[itheta(s.upper)] += -parity(s.upper) * p0.torque;
-            out[itheta(s.upper + 1)] += -parity(s.upper + 1) * p1.torque;
-            let f = (p0.torque + p1.torque) / s.length;
-            let n = [-s.d[1] / s.length, s.d[0] / s.length];
-            add_node_force(out, q, s.upper + 1, s.sign, [-f * n[0], -f * n[1]]);
-            add_node_force(out, q, s.upper, s.sign, [f * n[0], f * n[1]]);
+        if self.mu_rp == 0.0 {
+            return;
         }
+        for i in 0..ladder.n() - 1 {
+            let ((t0, nu0), (t1, nu1)) = (frames.get(i), frames.get(i + 1));
+            for sign in [-1.0, 1.0] {
+                let s = links.state(ladder, q, i, sign, [t0, t1]);
+                if s.tension == 0.0 {
+                    continue;
+                }
+                let (p0, p1) = self.pins(&s, [nu0, nu1], v);
+                out[itheta(i)] += -parity(i) * p0.torque;
+                out[itheta(i + 1)] += -parity(i + 1) * p1.torque;
+                let f = (p0.torque + p1.torque) / s.length;
+                let n = [-s.d[1] / s.length, s.d[0] / s.length];
+                add_node_force(out, nu1, i + 1, sign, [-f * n[0], -f * n[1]]);
+                add_node_force(out, nu0, i, sign, [f * n[0], f * n[1]]);
+            }
+        }
+    }
+
+    /// The pins of link `s` at (q, v), the blocks' frames from `q`.
+    fn pins_at(&self, s: &LinkState, q: &[f64], v: &[f64]) -> (Pin, Pin) {
+        let nu = |i: usize| frame(i, q[itheta(i)]).1;
+        self.pins(s, [nu(s.upper), nu(s.upper + 1)], v)
     }
 
     /// The fastest pin, max |Ω − φ̇| over the pins of the links under
@@ -195,7 +248,7 @@ impl PinFriction {
             .states(ladder, q)
             .filter(|s| s.tension != 0.0)
             .map(|s| {
-                let (p0, p1) = self.pins(&s, q, v);
+                let (p0, p1) = self.pins_at(&s, q, v);
                 p0.omega.abs().max(p1.omega.abs())
             })
             .fold(0.0, f64::max)
@@ -207,7 +260,7 @@ impl PinFriction {
             .states(ladder, q)
             .filter(|s| s.tension != 0.0)
             .map(|s| {
-                let (p0, p1) = self.pins(&s, q, v);
+                let (p0, p1) = self.pins_at(&s, q, v);
                 -(p0.torque * p0.omega + p1.torque * p1.omega)
             })
             .sum()
@@ -276,6 +329,22 @@ mod tests {
     }
 
     #[test]
+    fn smooth_sign_is_the_librarys_tanh_bit_for_bit() {
+        let mut x = 1e-6f64;
+        while x < 1e4 {
+            for y in [x, -x, 22.0 * (1.0 + x * 1e-7), 19.0 + x.fract() * 6.0] {
+                assert_eq!(smooth_sign(y).to_bits(), y.tanh().to_bits(), "{y}");
+                assert_eq!(smooth_sign(-y).to_bits(), (-y).tanh().to_bits(), "{y}");
+            }
+            x *= 1.001;
+        }
+        for y in [0.0, -0.0, f64::INFINITY, f64::NEG_INFINITY, 22.0, -22.0] {
+            assert_eq!(smooth_sign(y).to_bits(), y.tanh().to_bits(), "{y}");
+        }
+        assert!(smooth_sign(f64::NAN).is_nan());
+    }
+
+    #[test]
     fn friction_dissipates_and_its_power_is_its_forces_power() {
         let (ladder, q) = bent(69.0);
         let links = Links {
@@ -290,7 +359,8 @@ mod tests {
             .map(|k| 0.02 * ((k as f64) * 0.9).cos())
             .collect();
         let mut out = vec![0.0; q.len()];
-        f.add_forces(&ladder, &links, &q, &v, &mut out);
+        let frames = Frames::new(ladder.n(), &q);
+        f.add_forces(&ladder, &links, &frames, (&q, &v), &mut out);
         let power: f64 = out.iter().zip(&v).map(|(a, b)| a * b).sum();
         let d = f.dissipation(&ladder, &links, &q, &v);
         assert!(d > 0.0);

@@ -82,7 +82,12 @@ pub fn drag_dissipation_integral(u0: f64, w: f64, r: f64) -> f64 {
 /// `c` at angle `theta` moving with (Ẋ, Ẏ, θ̇) = `v`.
 #[inline]
 pub fn drag_force(c: f64, i: usize, theta: f64, v: [f64; 3]) -> [f64; 3] {
-    let (_, nu) = frame(i, theta);
+    drag_force_framed(c, frame(i, theta).1, v)
+}
+
+/// [`drag_force`] with the block's normal ν given.
+#[inline(always)]
+pub fn drag_force_framed(c: f64, nu: [f64; 2], v: [f64; 3]) -> [f64; 3] {
     let u0 = v[0] * nu[0] + v[1] * nu[1];
     let (f, t) = drag_integrals(u0, v[2], R);
     [-c * f * nu[0], -c * f * nu[1], -c * t]
@@ -101,7 +106,18 @@ pub fn block_acceleration(
     v: [f64; 3],
     q: [f64; 3],
 ) -> [f64; 3] {
-    let (t, nu) = frame(i, theta);
+    block_acceleration_framed(ma, j, frame(i, theta), v, q)
+}
+
+/// [`block_acceleration`] with the block's frame (t, ν) given.
+#[inline(always)]
+pub fn block_acceleration_framed(
+    ma: f64,
+    j: f64,
+    (t, nu): ([f64; 2], [f64; 2]),
+    v: [f64; 3],
+    q: [f64; 3],
+) -> [f64; 3] {
     let vn = v[0] * nu[0] + v[1] * nu[1];
     let vt = v[0] * t[0] + v[1] * t[1];
     let w = v[2];

@@ -331,21 +331,23 @@ impl FixedStep {
         }
     }
 
-    /// Velocity Verlet with the damping split symmetrically: explicit in the
-    /// first half kick, implicit in the second (second order overall).
+    /// Velocity Verlet, damping explicit in the first half kick, implicit in the second (order 2).
     fn verlet(&mut self, rhs: &mut Rhs, st: &mut State, t: f64, h: f64) {
         if self.cached_at != Some(t) {
             rhs.conservative(&st.q, &mut self.acc);
         }
         let half = 0.5 * h;
-        for k in 0..st.q.len() {
-            st.v[k] += half * (self.acc[k] - rhs.damping_rate[k] * st.v[k]);
-            st.q[k] += h * st.v[k];
+        // Slice iterators, not indices: the loops vectorise.
+        let coords = st.q.iter_mut().zip(st.v.iter_mut());
+        for ((q, v), (a, c)) in coords.zip(self.acc.iter().zip(&rhs.damping_rate)) {
+            *v += half * (a - c * *v);
+            *q += h * *v;
         }
         rhs.constrain(t + h, &mut st.q, &mut st.v);
         rhs.conservative(&st.q, &mut self.acc);
-        for k in 0..st.q.len() {
-            st.v[k] = (st.v[k] + half * self.acc[k]) / (1.0 + half * rhs.damping_rate[k]);
+        let kicks = self.acc.iter().zip(&rhs.damping_rate);
+        for (v, (a, c)) in st.v.iter_mut().zip(kicks) {
+            *v = (*v + half * a) / (1.0 + half * c);
         }
         self.cached_at = Some(t + h);
     }
@@ -499,8 +501,7 @@ pub const DOPRI5: Tableau = Tableau {
     ]),
 };
 
-/// Explicit Runge–Kutta stepper on y = (q, v), y' = (v, a(q, v)), with
-/// block 1 constrained at every stage time.
+/// Explicit Runge–Kutta on y = (q, v), y' = (v, a(q, v)); block 1 constrained at each stage.
 struct RungeKutta {
     tableau: &'static Tableau,
     /// Stage derivatives: kq[i] = q-rate, kv[i] = v-rate.
@@ -511,6 +512,9 @@ struct RungeKutta {
     /// Error estimate of the last step (q then v), when the tableau has one.
     err_q: Vec<f64>,
     err_v: Vec<f64>,
+    /// Σ w_j k_j of [`RungeKutta::combine`] (scratch): q then v.
+    dq: Vec<f64>,
+    dv: Vec<f64>,
     /// Time at which stage 0 equals the derivative of the current state (FSAL).
     fsal_at: Option<f64>,
 }
@@ -526,6 +530,8 @@ impl RungeKutta {
             v: vec![0.0; dof],
             err_q: vec![0.0; dof],
             err_v: vec![0.0; dof],
+            dq: vec![0.0; dof],
+            dv: vec![0.0; dof],
             fsal_at: None,
         }
     }
@@ -569,16 +575,25 @@ impl RungeKutta {
         }
     }
 
-    /// (self.q, self.v) = st + h Σ w_j k_j.
+    /// (self.q, self.v) = st + h Σ w_j k_j, summed in order of j (vectorised).
     fn combine(&mut self, st: &State, h: f64, w: &[f64]) {
-        for k in 0..self.q.len() {
-            let (mut dq, mut dv) = (0.0, 0.0);
-            for (j, wj) in w.iter().enumerate() {
-                dq += wj * self.kq[j][k];
-                dv += wj * self.kv[j][k];
+        self.dq.fill(0.0);
+        self.dv.fill(0.0);
+        for (j, &wj) in w.iter().enumerate() {
+            for (d, k) in self.dq.iter_mut().zip(&self.kq[j]) {
+                *d += wj * k;
             }
-            self.q[k] = st.q[k] + h * dq;
-            self.v[k] = st.v[k] + h * dv;
+            for (d, k) in self.dv.iter_mut().zip(&self.kv[j]) {
+                *d += wj * k;
+            }
+        }
+        let q = self.q.iter_mut().zip(&st.q).zip(&self.dq);
+        for ((y, y0), d) in q {
+            *y = y0 + h * d;
+        }
+        let v = self.v.iter_mut().zip(&st.v).zip(&self.dv);
+        for ((y, y0), d) in v {
+            *y = y0 + h * d;
         }
     }
 
@@ -612,13 +627,11 @@ pub struct Dopri5 {
     pub rejected: u64,
 }
 
-/// Largest step dopri5 takes, in τ: keeps the Hermite interpolation of
-/// arrival times accurate between steps.
+/// Largest step dopri5 takes, in τ (keeps the arrival times' interpolation accurate).
 pub const DOPRI5_MAX_STEP: f64 = 5.0;
 
-/// Absolute part of dopri5's error scale, relative to rtol: velocities in
-/// the scenes are of order 1e-3 s/τ, so an absolute tolerance equal to rtol
-/// would leave them uncontrolled.
+/// Absolute part of dopri5's error scale, relative to rtol: velocities are of
+/// order 1e-3 s/τ, which an absolute tolerance equal to rtol would not control.
 pub const ATOL_SCALE: f64 = 1e-3;
 
 impl Dopri5 {

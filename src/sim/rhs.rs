@@ -6,7 +6,7 @@
 
 use super::protocol::{Drive, Protocol};
 use crate::model::Ladder;
-use crate::model::ladder::{ForceScratch, itheta, ix, iy};
+use crate::model::ladder::{ForceScratch, Frames, ix, iy};
 use crate::model::media::{self, Terms};
 use crate::model::params::{M, R};
 
@@ -45,6 +45,9 @@ pub struct Rhs<'a> {
     /// scratch for their generalised forces.
     terms: Terms,
     force: Vec<f64>,
+    /// The blocks' frames (t, ν) at the q of the last evaluation that
+    /// needed them: one sine and cosine per block for every term.
+    frames: Frames,
     /// The deepest overlap of two blocks in contact seen so far, in s
     /// (`model::contact`; 0 without contact).
     pub deepest_overlap: f64,
@@ -74,7 +77,8 @@ impl<'a> Rhs<'a> {
             scratch: ForceScratch::new(p.n),
             force_evals: 0,
             terms: ladder.terms,
-            force: Vec::new(),
+            force: vec![0.0; dof],
+            frames: Frames::new(p.n, q0),
             deepest_overlap: 0.0,
         }
     }
@@ -149,9 +153,27 @@ impl<'a> Rhs<'a> {
             self.ladder
                 .gradient_with(q, &mut self.grad, &mut self.scratch);
         } else {
-            self.terms.links.gradient(self.ladder, q, &mut self.grad);
+            self.terms_gradient(q, false);
         }
         (&self.grad, &self.inv_mass)
+    }
+
+    /// ∂E/∂q of the links beyond the paper's springs (or the ribbons) and
+    /// gravity into `grad`; `framed`: `frames` already hold the blocks'
+    /// frames at `q`. Kept out of line, so that the paper's path above
+    /// stays small enough to inline into the integrators' loops.
+    #[inline(never)]
+    fn terms_gradient(&mut self, q: &[f64], framed: bool) {
+        let ladder = self.ladder;
+        if ladder.built.is_some() {
+            self.terms.links.gradient(ladder, q, &mut self.grad);
+        } else {
+            if !framed {
+                self.frames.at(ladder.n(), q);
+            }
+            let links = self.terms.links;
+            links.gradient_framed(ladder, &self.frames, q, &mut self.grad);
+        }
     }
 
     /// Full acceleration including damping, −M⁻¹(∂E/∂q + Γ v).
@@ -171,8 +193,14 @@ impl<'a> Rhs<'a> {
     /// damping, pin friction, drag) through Lagrange's equations of each
     /// free block, with its velocity terms and M⁻¹ in closed form.
     fn acceleration_with_terms(&mut self, q: &[f64], v: &[f64], acc: &mut [f64]) {
-        self.gradient(q);
         let ladder = self.ladder;
+        self.frames.at(ladder.n(), q);
+        self.force_evals += 1;
+        if self.terms.links.is_paper() && ladder.built.is_none() {
+            ladder.gradient_with(q, &mut self.grad, &mut self.scratch);
+        } else {
+            self.terms_gradient(q, true);
+        }
         let t = self.terms;
         let gamma = ladder.params.gamma;
         self.force.resize(self.grad.len(), 0.0);
@@ -181,7 +209,7 @@ impl<'a> Rhs<'a> {
             *f = -g - rate * v[k];
         }
         if let Some(friction) = t.friction {
-            friction.add_forces(ladder, &t.links, q, v, &mut self.force);
+            friction.add_forces(ladder, &t.links, &self.frames, (q, v), &mut self.force);
         }
         if let Some(b) = ladder.built {
             b.ribbons.add_damping(ladder.n(), q, v, &mut self.force);
@@ -202,13 +230,14 @@ impl<'a> Rhs<'a> {
             }
             let vi = [v[k], v[k + 1], v[k + 2]];
             let mut qi = [self.force[k], self.force[k + 1], self.force[k + 2]];
+            let frame = self.frames.get(i);
             if t.drag != 0.0 {
-                let d = media::drag_force(t.drag, i, q[itheta(i)], vi);
+                let d = media::drag_force_framed(t.drag, frame.1, vi);
                 for (a, b) in qi.iter_mut().zip(d) {
                     *a += b;
                 }
             }
-            let a = media::block_acceleration(t.added_mass, j, i, q[itheta(i)], vi, qi);
+            let a = media::block_acceleration_framed(t.added_mass, j, frame, vi, qi);
             acc[k..k + 3].copy_from_slice(&a);
         }
     }
@@ -221,5 +250,148 @@ impl<'a> Rhs<'a> {
         }
         media::kinetic_energy(self.ladder, &self.terms, &s.q, &s.v, false)
             + media::potential_energy(self.ladder, &self.terms, &s.q)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Params;
+    use crate::model::ladder::{frame, itheta, parity};
+    use crate::model::terms::{Links, PinFriction};
+
+    /// Adds f at the ±-node of block `i`, its normal from `frame`.
+    fn node_force(out: &mut [f64], q: &[f64], i: usize, sign: f64, f: [f64; 2]) {
+        let (_, nu) = frame(i, q[itheta(i)]);
+        out[ix(i)] += f[0];
+        out[iy(i)] += f[1];
+        out[itheta(i)] += sign * R * (f[0] * nu[0] + f[1] * nu[1]);
+    }
+
+    /// Pin friction as it was computed before `Frames`: link by link, every
+    /// frame from `frame(i, θ_i)` where it is used, `f64::tanh`.
+    fn friction_reference(ladder: &Ladder, f: &PinFriction, q: &[f64], v: &[f64], out: &mut [f64]) {
+        for s in ladder.terms.links.states(ladder, q) {
+            if s.tension == 0.0 || f.mu_rp == 0.0 {
+                continue;
+            }
+            let node_velocity = |i: usize| {
+                let (_, nu) = frame(i, q[itheta(i)]);
+                let w = v[itheta(i)];
+                [
+                    v[ix(i)] + s.sign * R * w * nu[0],
+                    v[iy(i)] + s.sign * R * w * nu[1],
+                ]
+            };
+            let (u0, u1) = (node_velocity(s.upper), node_velocity(s.upper + 1));
+            let dd = [u1[0] - u0[0], u1[1] - u0[1]];
+            let phi_dot = (s.d[0] * dd[1] - s.d[1] * dd[0]) / (s.length * s.length);
+            let limit = f.mu_rp * s.tension.abs();
+            let torque = |i: usize| {
+                let omega = -parity(i) * v[itheta(i)] - phi_dot;
+                -limit * (omega / f.omega_eps).tanh()
+            };
+            let (p0, p1) = (torque(s.upper), torque(s.upper + 1));
+            out[itheta(s.upper)] += -parity(s.upper) * p0;
+            out[itheta(s.upper + 1)] += -parity(s.upper + 1) * p1;
+            let g = (p0 + p1) / s.length;
+            let n = [-s.d[1] / s.length, s.d[0] / s.length];
+            node_force(out, q, s.upper + 1, s.sign, [-g * n[0], -g * n[1]]);
+            node_force(out, q, s.upper, s.sign, [g * n[0], g * n[1]]);
+        }
+    }
+
+    /// The accelerations with the terms as computed before `Frames`.
+    fn reference(ladder: &Ladder, q: &[f64], v: &[f64]) -> Vec<f64> {
+        let t = ladder.terms;
+        let mut grad = vec![0.0; q.len()];
+        if t.links.is_paper() {
+            ladder.gradient(q, &mut grad);
+        } else {
+            let g = M * ladder.params.gravity;
+            for (k, x) in grad.iter_mut().enumerate() {
+                *x = if k % 3 == 0 { -g } else { 0.0 };
+            }
+            for s in t.links.states(ladder, q).filter(|s| s.tension != 0.0) {
+                let f = [s.tension * s.d[0] / s.length, s.tension * s.d[1] / s.length];
+                node_force(&mut grad, q, s.upper + 1, s.sign, f);
+                node_force(&mut grad, q, s.upper, s.sign, [-f[0], -f[1]]);
+            }
+        }
+        let gamma = ladder.params.gamma;
+        let mut force: Vec<f64> = (0..q.len())
+            .map(|k| -grad[k] - if k % 3 == 2 { gamma * R * R } else { gamma } * v[k])
+            .collect();
+        if let Some(f) = t.friction {
+            friction_reference(ladder, &f, q, v, &mut force);
+        }
+        let j = ladder.params.inertia + t.added_inertia;
+        let mut acc = vec![0.0; q.len()];
+        for i in 0..ladder.n() {
+            let k = 3 * i;
+            let vi = [v[k], v[k + 1], v[k + 2]];
+            let mut qi = [force[k], force[k + 1], force[k + 2]];
+            let d = media::drag_force(t.drag, i, q[itheta(i)], vi);
+            for (a, b) in qi.iter_mut().zip(d) {
+                *a += b;
+            }
+            let a = media::block_acceleration(t.added_mass, j, i, q[itheta(i)], vi, qi);
+            acc[k..k + 3].copy_from_slice(&a);
+        }
+        acc
+    }
+
+    /// The accelerations from each block's frame computed once are the
+    /// ones computed frame by frame where used, bit for bit: stiff and
+    /// tension-only links (some slack), the paper's springs, pin friction
+    /// with pins both below and beyond |ω/ω_ε| = 22 (`smooth_sign`), added
+    /// mass, drag; every block free.
+    #[test]
+    fn terms_from_frames_are_the_frame_by_frame_terms_bit_for_bit() {
+        let links = [
+            Links::default(),
+            Links {
+                stiffness: 30.0,
+                tension_only: true,
+            },
+        ];
+        for (case, links) in links.into_iter().enumerate() {
+            let terms = Terms {
+                added_mass: 6.3,
+                added_inertia: 0.2,
+                drag: 8.1,
+                links,
+                friction: Some(PinFriction {
+                    mu_rp: 0.05,
+                    omega_eps: 0.01,
+                }),
+            };
+            let mut params = Params::paper(69.0).unwrap();
+            params.gamma = 0.003;
+            let ladder = Ladder::new(params).with_terms(terms);
+            let mut q = ladder.ground_state();
+            for (k, x) in q.iter_mut().enumerate() {
+                *x += 0.04 * ((k as f64) * 1.7).sin();
+            }
+            let v: Vec<f64> = (0..q.len())
+                .map(|k| 0.3 * ((k as f64) * 1.3).sin() * 0.5f64.powi(k as i32 % 7))
+                .collect();
+            let protocol = Protocol::Free;
+            let mut rhs = Rhs::new(&ladder, &protocol, &q);
+            let mut acc = vec![0.0; q.len()];
+            rhs.acceleration(&q, &v, &mut acc);
+            let want = reference(&ladder, &q, &v);
+            for (k, (a, b)) in acc.iter().zip(&want).enumerate() {
+                assert_eq!(
+                    a.to_bits(),
+                    b.to_bits(),
+                    "case {case}, coordinate {k}: {a} {b}"
+                );
+            }
+            // A second evaluation at another state reuses the buffers.
+            let q2: Vec<f64> = q.iter().map(|x| x * 1.01).collect();
+            rhs.acceleration(&q2, &v, &mut acc);
+            assert_eq!(acc, reference(&ladder, &q2, &v), "case {case}");
+        }
     }
 }
