@@ -17,6 +17,7 @@ mod batch;
 mod bench;
 mod bench_tank;
 mod caps;
+mod cost_model;
 mod captions;
 mod cli;
 mod cluster_recipe;
