@@ -5,8 +5,8 @@ use super::{BenchScene, config_at, default_steps};
 use crate::error::Result;
 use crate::limits::{Limits, Resource, count};
 use crate::sim::cost::about;
-use crate::sim::{IntegratorKind, Stepping};
 use crate::sim::integrators::DOPRI5_MAX_STEP;
+use crate::sim::{IntegratorKind, Stepping};
 
 /// Steps × N of one run of `scene` at sweep value `x` of `kind`: t_end/dt
 /// steps at a fixed step, the fewest an adaptive dopri5 can take (t_end /

@@ -226,9 +226,14 @@ mod tests {
         });
         let linkage = paper.with_terms(terms);
         assert!(w(&linkage, IntegratorKind::Rk4) > w(&tank, IntegratorKind::Rk4));
-        assert!(Path::of(&linkage, IntegratorKind::Rk4, Stepping::Portable)
-            .describe()
-            .contains("pin friction"));
-        assert_eq!(about(1e10), format!("about {:.0} min", 1e10 * REFERENCE_NS * 1e-9 / 60.0));
+        assert!(
+            Path::of(&linkage, IntegratorKind::Rk4, Stepping::Portable)
+                .describe()
+                .contains("pin friction")
+        );
+        assert_eq!(
+            about(1e10),
+            format!("about {:.0} min", 1e10 * REFERENCE_NS * 1e-9 / 60.0)
+        );
     }
 }

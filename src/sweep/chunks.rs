@@ -108,4 +108,3 @@ fn counted(plan: &Plan, records: &[Record]) -> Result<(u64, u64)> {
         .map_err(|e| Error::failed(format!("cannot encode the sweep's data file: {e}")))?;
     Ok((json, crate::sweep::results::csv(plan, records).len() as u64))
 }
-
