@@ -17,6 +17,7 @@ pub mod charts;
 pub mod cost;
 pub mod kernels;
 pub mod report;
+pub mod weights;
 pub use charts::{stability_caption, stability_chart, work_precision_chart};
 pub use cost::{check_stability_cost, check_work_precision_cost};
 pub use kernels::{KernelReport, kernels, kernels_table};

@@ -4,12 +4,14 @@
 use super::{BenchScene, config_at, default_steps};
 use crate::error::Result;
 use crate::limits::{Limits, Resource, count};
-use crate::sim::IntegratorKind;
+use crate::sim::cost::about;
 use crate::sim::integrators::DOPRI5_MAX_STEP;
+use crate::sim::{IntegratorKind, Stepping};
 
 /// Steps × N of one run of `scene` at sweep value `x` of `kind`: t_end/dt
 /// steps at a fixed step, the fewest an adaptive dopri5 can take (t_end /
-/// its largest step) otherwise.
+/// its largest step) otherwise; weighed by the run's force path, in
+/// block-steps of the paper's model by Verlet (`sim::cost`).
 fn run_cost(scene: &BenchScene, kind: IntegratorKind, x: f64) -> f64 {
     let config = config_at(kind, x);
     let step = if config.rtol.is_some() {
@@ -17,7 +19,12 @@ fn run_cost(scene: &BenchScene, kind: IntegratorKind, x: f64) -> f64 {
     } else {
         config.dt
     };
-    (scene.t_end / step).ceil() * scene.params.n as f64
+    (scene.t_end / step).ceil() * scene.params.n as f64 * weight(scene, kind)
+}
+
+/// The weight of a block-step of `scene` by `kind` (`sim::cost`).
+fn weight(scene: &BenchScene, kind: IntegratorKind) -> f64 {
+    crate::sim::cost::weight(&scene.scenario.ladder, kind, Stepping::Fastest)
 }
 
 /// Refuses, before any run, a work-precision study whose runs together
@@ -40,10 +47,12 @@ pub fn check_work_precision_cost(
     let window = scenes.first().map_or(0.0, |s| s.t_end);
     limits.check(Resource::BlockSteps, total, || {
         format!(
-            "the work-precision study's runs together: {} steps × N over a window of {} τ \
-             (its smallest step, explicit Euler at 0.0005 τ, alone is {} a run)",
+            "the work-precision study's runs together: {} steps × N over a window of {} τ, \
+             weighed by each run's force path (block-steps of the paper's model by Verlet), {} \
+             of computing (its smallest step, explicit Euler at 0.0005 τ, alone is {} a run)",
             count(total),
             crate::error::num(window),
+            about(total),
             count(scenes.first().map_or(0.0, |s| run_cost(
                 s,
                 IntegratorKind::ExplicitEuler,
@@ -70,14 +79,20 @@ pub fn check_stability_cost(scene: &BenchScene, limits: &Limits) -> Result<()> {
         .map(|&kind| {
             let guess =
                 super::predicted_dt(kind, omega_max, c).clamp(0.02 / omega_max, 10.0 / omega_max);
-            BISECTION_RUNS * (2.0 * scene.t_end / guess).ceil() * scene.params.n as f64
+            BISECTION_RUNS
+                * (2.0 * scene.t_end / guess).ceil()
+                * scene.params.n as f64
+                * weight(scene, kind)
         })
         .sum();
     limits.check(Resource::BlockSteps, total, || {
         format!(
-            "the stability study's bisections, about {} steps × N over a window of {} τ",
+            "the stability study's bisections, about {} steps × N over a window of {} τ, \
+             weighed by each scheme's force path (block-steps of the paper's model by Verlet), \
+             {} of computing",
             count(total),
-            crate::error::num(scene.t_end)
+            crate::error::num(scene.t_end),
+            about(total)
         )
     })?;
     Ok(())

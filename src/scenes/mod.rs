@@ -4,6 +4,7 @@
 //! figures and the movies.
 
 pub mod arrivals;
+pub mod cost;
 pub mod data;
 pub mod dynamic;
 pub mod energy;
@@ -259,7 +260,8 @@ pub fn style_of(scene: &Scene, outputs: &Outputs) -> Result<crate::render::Style
 /// Every check [`render_with`] makes before its work, without the work:
 /// the style, the list a theory figure draws and its cost
 /// (`theory::check_cost`), a movie's frames × pixels, and the cost of
-/// each simulation (`run::check_cost`: `auto`'s halvings included).
+/// each simulation (`run::check_cost`: `auto`'s halvings included) and of
+/// a figure's simulations together (`cost::check_runs`).
 /// `render --check` runs it; rendering runs it for every scene first.
 pub fn check(scene: &Scene, movie: &MovieOptions, outputs: &Outputs) -> Result<()> {
     style_of(scene, outputs)?;
@@ -278,12 +280,11 @@ pub fn check(scene: &Scene, movie: &MovieOptions, outputs: &Outputs) -> Result<(
             scene
                 .limits
                 .check_movie(movie.frames, movie.width, movie.height)?;
-            run::check_cost(scene, movie.frames)
+            run::check_cost(scene, movie.frames).map(drop)
         }
-        _ => scene
-            .runs()
-            .iter()
-            .try_for_each(|(s, samples)| run::check_cost(s, samples.len())),
+        // Its runs one by one and together (an experiment figure's every
+        // variant): `cost::check_runs`.
+        _ => cost::check_runs(scene, &cost::planned_runs(scene, movie.frames)?).map(drop),
     }
 }
 

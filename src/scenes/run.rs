@@ -72,14 +72,17 @@ fn short(x: f64) -> String {
 
 /// Refuses, before any work, a run of `scene` with `samples` sample
 /// times past the scene's caps (`Scene::limits`): its integrator's
-/// steps × N and samples × N, and for `auto` every halving it may make
-/// (`sim::auto::worst_case`).
+/// steps × N (weighed by its force path, `sim::cost`) and samples × N,
+/// and for `auto` every halving it may make (`sim::auto::worst_case`).
+/// Returns the least the run will spend, in block-steps of the paper's
+/// model (`auto`: its first pair), for a check of several runs together
+/// (`scenes::cost`).
 ///
 /// With `t_end = "auto"` the window is not known before its own run
 /// (`sim::window`), so that run is what is checked here: one run to the
 /// automatic window's cap at the integrator's first step. The runs drawn
 /// after it are checked again, with the window found, before they start.
-pub fn check_cost(scene: &Scene, samples: usize) -> Result<()> {
+pub fn check_cost(scene: &Scene, samples: usize) -> Result<f64> {
     let limits = scene.limits;
     if scene.run.t_end == crate::scene::AUTO_T_END {
         let mut capped = scene.clone();
@@ -89,20 +92,16 @@ pub fn check_cost(scene: &Scene, samples: usize) -> Result<()> {
             Some(config) => config,
             None => crate::scene::run::auto_config(&scenario)?,
         };
-        sim::check_cost(&scenario, 0, &config, &limits)?;
-        return Ok(());
+        return Ok(sim::check_cost(&scenario, 0, &config, &limits)?.equivalent);
     }
     let scenario = scene.scenario()?;
     match scene.run.fixed_config()? {
-        Some(config) => {
-            sim::check_cost(&scenario, samples, &config, &limits)?;
-        }
+        Some(config) => Ok(sim::check_cost(&scenario, samples, &config, &limits)?.equivalent),
         None => {
             let omega_max = crate::scene::run::omega_max(&scenario)?;
-            sim::auto::worst_case(&scenario, samples, omega_max, &limits)?;
+            Ok(sim::auto::worst_case(&scenario, samples, omega_max, &limits)?.first_pair)
         }
     }
-    Ok(())
 }
 
 /// Runs a single-run scene, recording the state at `samples`, with the

@@ -219,10 +219,14 @@ pub struct Budget {
     pub pairs: u32,
     /// Steps and steps × N of every run within the budget.
     pub total: Cost,
-    /// Steps × N with one pair more (`None`: every halving fits).
+    /// Steps × N (weighed by the path, `cost::weight`) with one pair more
+    /// (`None`: every halving fits).
     pub next_block_steps: Option<f64>,
     /// The first step, τ.
     pub dt: f64,
+    /// Steps × N of the first pair alone, weighed (`cost::weight`): the
+    /// least `auto` spends.
+    pub first_pair: f64,
 }
 
 /// The [`Budget`] of `auto` for `scenario` with `samples` sample times.
@@ -242,18 +246,26 @@ pub fn worst_case(
     let second = check_cost(scenario, samples, &scheme(scenario, 0.5 * dt), limits)?;
     total.steps += second.steps;
     total.block_steps += second.block_steps;
+    total.equivalent += second.equivalent;
     limits
-        .check(Resource::BlockSteps, total.block_steps, || {
+        .check(Resource::BlockSteps, total.equivalent, || {
+            let path = super::cost::Path::of(
+                &scenario.ladder,
+                scheme(scenario, dt).kind,
+                super::Stepping::Fastest,
+            );
             format!(
                 "the auto integrator's first two runs, at dt = {} and {}, to t_end = {}, times \
-                 N = {}; or name an integrator and step",
+                 N = {}{}; or name an integrator and step",
                 num(dt),
                 num(0.5 * dt),
                 num(scenario.t_end),
-                scenario.ladder.n()
+                scenario.ladder.n(),
+                super::cost::weighed(&path, total.equivalent)
             )
         })
         .map_err(Error::Limit)?;
+    let first_pair = total.equivalent;
     let mut pairs = 1;
     let mut next_block_steps = None;
     for k in 2..=MAX_HALVINGS {
@@ -264,13 +276,14 @@ pub fn worst_case(
             Err(Error::BadInput(_)) => break,
             Err(e) => return Err(e),
         };
-        let with = total.block_steps + c.block_steps;
+        let with = total.equivalent + c.equivalent;
         if with > limits.cap(Resource::BlockSteps) {
             next_block_steps = Some(with);
             break;
         }
         total.steps += c.steps;
-        total.block_steps = with;
+        total.block_steps += c.block_steps;
+        total.equivalent = with;
         pairs += 1;
     }
     Ok(Budget {
@@ -278,6 +291,7 @@ pub fn worst_case(
         total,
         next_block_steps,
         dt,
+        first_pair,
     })
 }
 

@@ -4,6 +4,7 @@
 pub mod auto;
 pub mod batch;
 pub mod chain;
+pub mod cost;
 mod divergence;
 pub mod fused;
 pub mod integrators;
@@ -250,6 +251,11 @@ pub struct Cost {
     pub block_steps: f64,
     /// Samples × N.
     pub block_samples: f64,
+    /// What one block-step of this run's force path costs in block-steps
+    /// of the paper's model by Verlet (`cost::weight`).
+    pub weight: f64,
+    /// Steps × N × weight: what the cap on steps × N counts.
+    pub equivalent: f64,
 }
 
 /// The cost of running `scenario` with `samples` sample times (after
@@ -262,6 +268,18 @@ pub fn check_cost(
     samples: usize,
     config: &IntegratorConfig,
     limits: &Limits,
+) -> Result<Cost> {
+    check_cost_stepped(scenario, samples, config, limits, Stepping::Fastest)
+}
+
+/// [`check_cost`] of a run stepped as `stepping` says (its force path's
+/// weight, `cost::Path`).
+pub fn check_cost_stepped(
+    scenario: &Scenario,
+    samples: usize,
+    config: &IntegratorConfig,
+    limits: &Limits,
+    stepping: Stepping,
 ) -> Result<Cost> {
     use crate::limits::{MAX_STEPS_PER_ULP_SPAN, count};
     let config = config.validated()?;
@@ -277,10 +295,14 @@ pub fn check_cost(
         config.dt
     };
     let steps = (t_end / step).ceil() + intervals;
+    let path = cost::Path::of(&scenario.ladder, config.kind, stepping);
+    let weight = path.weight();
     let cost = Cost {
         steps,
         block_steps: steps * n as f64,
         block_samples: samples as f64 * n as f64,
+        weight,
+        equivalent: steps * n as f64 * weight,
     };
     if !adaptive && t_end / config.dt > MAX_STEPS_PER_ULP_SPAN {
         return Err(Error::bad_input(format!(
@@ -291,13 +313,14 @@ pub fn check_cost(
             num(t_end / MAX_STEPS_PER_ULP_SPAN)
         )));
     }
-    limits.check(Resource::BlockSteps, cost.block_steps, || {
+    limits.check(Resource::BlockSteps, cost.equivalent, || {
         let least = if adaptive { "at least " } else { "" };
         format!(
-            "{least}{} steps of dt = {} up to t_end = {}, times N = {n}",
+            "{least}{} steps of dt = {} up to t_end = {}, times N = {n}{}",
             count(steps),
             num(step),
             num(t_end),
+            cost::weighed(&path, cost.equivalent)
         )
     })?;
     Ok(cost)
@@ -410,14 +433,15 @@ pub fn run_streaming(
     };
     let samples = sorted_samples(sample_times, scenario.t_end)?;
     let limits = &options.limits;
-    check_cost(scenario, samples.len(), &config, limits)?;
+    let cost = check_cost_stepped(scenario, samples.len(), &config, limits, stepping)?;
     // One step per call where every wave's sign changes are timed step by
     // step (several flips) or the dissipated power is integrated.
     let every_step = options.dissipation
         || options
             .every_step
             .unwrap_or_else(|| scenario.protocol.drive().is_some_and(|d| d.flips() > 1));
-    let max_steps = limits.block_steps / scenario.ladder.n() as f64;
+    // The cap in this path's own steps (`cost::weight`).
+    let max_steps = limits.block_steps / (scenario.ladder.n() as f64 * cost.weight);
     let stops = stop_times(&samples, &scenario.protocol, scenario.t_end);
     let ladder = &scenario.ladder;
     let mut rhs = Rhs::new(ladder, &scenario.protocol, &scenario.initial.q);
@@ -483,14 +507,18 @@ pub fn run_streaming(
                 if steps as f64 > max_steps {
                     return Err(Error::Limit(crate::limits::LimitExceeded {
                         resource: Resource::BlockSteps,
-                        value: steps as f64 * ladder.n() as f64,
+                        value: steps as f64 * ladder.n() as f64 * cost.weight,
                         cap: limits.block_steps,
                         detail: format!(
-                            "{} steps by t = {} of t_end = {} × N = {}, and counting",
+                            "{} steps by t = {} of t_end = {} × N = {}{}, and counting",
                             steps,
                             num(t),
                             num(scenario.t_end),
-                            ladder.n()
+                            ladder.n(),
+                            cost::weighed(
+                                &cost::Path::of(ladder, config.kind, stepping),
+                                steps as f64 * ladder.n() as f64 * cost.weight
+                            )
                         ),
                     }));
                 }

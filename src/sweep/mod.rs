@@ -14,6 +14,7 @@
 //! charts; it knows no command-line flag.
 
 pub mod chart;
+pub mod chunks;
 pub mod columns;
 pub mod json;
 pub mod outcome;
@@ -287,6 +288,9 @@ pub fn render_to(
 ) -> Result<Vec<String>> {
     let plan = checked(scene)?;
     let all: Vec<usize> = (0..plan.len()).collect();
-    let records = plan.run(&all, &|| {})?;
+    // A chunk at a time, its files counted against the cap after each
+    // (`chunks`): the runs may take more bytes than estimated.
+    let mut records = Vec::new();
+    chunks::run_in_chunks_within(&plan, &all, &mut records, &|| {}, &mut |_| Ok(()), Some(""))?;
     write_outputs(&plan, &records, &scene.stem(), output, sink)
 }

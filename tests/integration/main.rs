@@ -20,6 +20,7 @@ mod caps;
 mod captions;
 mod cli;
 mod cluster_recipe;
+mod cost_model;
 mod data_files;
 mod decisions;
 mod docs_and_packaging;

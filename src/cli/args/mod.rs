@@ -599,8 +599,9 @@ fn theory_help(p: Param, range: &str) -> String {
 #[command(allow_negative_numbers = true)]
 pub struct BenchArgs {
     /// work-precision (error against cost), stability (critical time
-    /// steps), or kernels (the paper's run timed with each `simulate
-    /// --kernel`; prints only, writes no file)
+    /// steps), kernels (the paper's run timed with each `simulate
+    /// --kernel`; prints only, writes no file), or cost (each force
+    /// path's ns per block-step, the caps' cost model; prints only)
     #[arg(value_name = "STUDY")]
     pub study: String,
     /// Output folder for the chart and its CSV
@@ -609,8 +610,8 @@ pub struct BenchArgs {
     /// Print one JSON object instead of a table
     #[arg(long)]
     pub json: bool,
-    /// Repeats per work-precision point, or rounds of bench kernels (the
-    /// median wall time is kept)
+    /// Repeats per work-precision point, or rounds of bench kernels and
+    /// bench cost (the median wall time is kept)
     #[arg(long, default_value_t = 3)]
     pub repeats: usize,
     /// The scene of work-precision and stability: paper (the paper's kink

@@ -33,9 +33,10 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<()> {
             args.out.join(format!("{}.png", args.study)),
         ])?,
         "kernels" => return bench_kernels(args),
+        "cost" => return bench_cost(args),
         other => {
             return Err(Error::bad_input(format!(
-                "unknown study '{other}'; choose work-precision, stability or kernels"
+                "unknown study '{other}'; choose work-precision, stability, kernels or cost"
             )));
         }
     }
@@ -63,6 +64,19 @@ pub(crate) fn bench_kernels(args: &BenchArgs) -> Result<()> {
         output::print(&format!("{}\n", to_json(&report)?))
     } else {
         output::print(&crate::bench::kernels_table(&report))
+    }
+}
+
+/// `bench cost`: the cost model's numbers measured (`bench::weights`);
+/// prints only.
+pub(crate) fn bench_cost(args: &BenchArgs) -> Result<()> {
+    let bar = progress_bar(args.repeats as u64 * 11, "cost");
+    let report = crate::bench::weights::cost(args.repeats, &ticker(&bar))?;
+    bar.finish_and_clear();
+    if args.json {
+        output::print(&format!("{}\n", to_json(&report)?))
+    } else {
+        output::print(&crate::bench::weights::cost_table(&report))
     }
 }
 

@@ -262,13 +262,17 @@ pub(crate) fn render(args: &RenderArgs, call: &Call<'_>) -> Result<()> {
         crate::scenes::check(s, &opts, &outputs).map_err(|e| in_file(file, e))?;
     }
     for (file, s) in args.files.iter().zip(&scenes) {
+        // Every run it may make (an experiment figure's variants).
+        let runs = crate::scenes::cost::planned_runs(s, opts.frames)
+            .map_err(|e| in_file(file, e))?
+            .len();
         output::print(&format!(
             "{}: {} {} ({} run{}): {}\n",
             file.display(),
             s.kind().name(),
             s.name,
-            s.runs().len(),
-            if s.runs().len() == 1 { "" } else { "s" },
+            runs,
+            if runs == 1 { "" } else { "s" },
             scene::describe::parameters(s)
         ))?;
     }

@@ -41,8 +41,9 @@ pub(crate) fn simulate(args: &SimulateArgs, call: &Call<'_>) -> Result<()> {
     let command_line = call.command_line;
     let scene = call.capped_one(simulate_scene(args)?);
     let samples = csv_samples(args, &scene)?;
-    // The "stiff" links' second run, before the first (`scenes::stiff`).
-    scenes::stiff::check_cost(&scene, 0)?;
+    // The run with its "stiff" links' second run, one cost, before the
+    // first (`scenes::cost`).
+    scenes::cost::check_with_stiff(&scene, samples.len())?;
     let stepping = args.kernel.stepping()?;
     let sidecar = args.csv.as_deref().map(csv_sidecar);
     let targets: Vec<(std::path::PathBuf, String)> = [

@@ -1,7 +1,7 @@
 //! The tank's levels figure: c_kink and c_antikink / c_kink for each level
 //! of model, beside the measured 6.0 cm/s and 1.75.
 
-use super::runs::{run_all, variant};
+use super::runs::{Variant, run_all, variant};
 use super::{LEVELS, LEVELS_MOTOR_HZ, MEASURED_KINK_CM_S, MEASURED_RATIO};
 use crate::error::{Error, Result};
 use crate::render::charts::{self, Axis, ChartSpec, Marker, Series};
@@ -41,6 +41,22 @@ pub use crate::scenes::stiff::STIFF_TOLERANCE;
 /// Every level of [`LEVELS`] run on `scene`'s apparatus at
 /// [`LEVELS_MOTOR_HZ`]: kink, antikink, and kink at 2k.
 pub fn levels(scene: &Scene) -> Result<(Vec<LevelResult>, Vec<RunData>)> {
+    let done = run_all(&variants(scene)?)?;
+    let results = LEVELS
+        .iter()
+        .enumerate()
+        .map(|(k, (name, _))| LevelResult {
+            name,
+            kink_cm_s: done[3 * k].bulk_cm_s,
+            antikink_cm_s: done[3 * k + 1].bulk_cm_s,
+            kink_2k_cm_s: done[3 * k + 2].bulk_cm_s,
+        })
+        .collect();
+    Ok((results, done.into_iter().map(|d| d.data).collect()))
+}
+
+/// The figure's runs: kink, antikink and kink at 2k for every level.
+pub(super) fn variants(scene: &Scene) -> Result<Vec<Variant>> {
     let mut variants = Vec::new();
     for (name, level) in LEVELS {
         for (sign, word, stiffer) in [
@@ -55,18 +71,7 @@ pub fn levels(scene: &Scene) -> Result<(Vec<LevelResult>, Vec<RunData>)> {
             })?);
         }
     }
-    let done = run_all(&variants)?;
-    let results = LEVELS
-        .iter()
-        .enumerate()
-        .map(|(k, (name, _))| LevelResult {
-            name,
-            kink_cm_s: done[3 * k].bulk_cm_s,
-            antikink_cm_s: done[3 * k + 1].bulk_cm_s,
-            kink_2k_cm_s: done[3 * k + 2].bulk_cm_s,
-        })
-        .collect();
-    Ok((results, done.into_iter().map(|d| d.data).collect()))
+    Ok(variants)
 }
 
 /// Figure 2: c_kink (cm/s) and c_antikink / c_kink for each level of

@@ -1,7 +1,7 @@
 //! The printed linkage's figure: how far the kink and the antikink get
 //! against the pin friction μ_p.
 
-use super::runs::{Done, run_all, variant};
+use super::runs::{Done, Variant, run_all, variant};
 use super::{PIN_FRICTION, PIN_FRICTION_RESOLUTION, chart_picture};
 use crate::error::Result;
 use crate::render::charts::{Axis, ChartSpec, Series};
@@ -16,6 +16,18 @@ pub type Front = (f64, usize, usize);
 /// How far the kink and the antikink get (blocks flipped) at each pin
 /// friction of `mu` on `scene`'s linkage: (μ_p, kink, antikink).
 pub fn fronts(scene: &Scene, mu: &[f64]) -> Result<(Vec<Front>, Vec<RunData>)> {
+    let done = run_all(&variants(scene, mu)?)?;
+    let flipped = |d: &Done| d.arrivals_s.iter().flatten().count();
+    let rows = mu
+        .iter()
+        .enumerate()
+        .map(|(i, m)| (*m, flipped(&done[2 * i]), flipped(&done[2 * i + 1])))
+        .collect();
+    Ok((rows, done.into_iter().map(|d| d.data).collect()))
+}
+
+/// The runs of [`fronts`] at `mu`: kink and antikink at each μ_p.
+pub(super) fn variants(scene: &Scene, mu: &[f64]) -> Result<Vec<Variant>> {
     let mut variants = Vec::new();
     for &m in mu {
         for (sign, word) in [(1.0, "kink"), (-1.0, "antikink")] {
@@ -24,14 +36,18 @@ pub fn fronts(scene: &Scene, mu: &[f64]) -> Result<(Vec<Front>, Vec<RunData>)> {
             })?);
         }
     }
-    let done = run_all(&variants)?;
-    let flipped = |d: &Done| d.arrivals_s.iter().flatten().count();
-    let rows = mu
-        .iter()
-        .enumerate()
-        .map(|(i, m)| (*m, flipped(&done[2 * i]), flipped(&done[2 * i + 1])))
-        .collect();
-    Ok((rows, done.into_iter().map(|d| d.data).collect()))
+    Ok(variants)
+}
+
+/// The most μ_p [`refined_fronts`] can run: every multiple of
+/// [`PIN_FRICTION_RESOLUTION`] over the range of [`PIN_FRICTION`] (its
+/// halvings land on them), for the check of the figure's runs before any.
+pub fn most_pin_frictions() -> Vec<f64> {
+    let (lo, hi) = (PIN_FRICTION[0], PIN_FRICTION[PIN_FRICTION.len() - 1]);
+    let steps = ((hi - lo) / PIN_FRICTION_RESOLUTION).round() as usize;
+    (0..=steps)
+        .map(|i| lo + i as f64 * PIN_FRICTION_RESOLUTION)
+        .collect()
 }
 
 /// The fronts at [`PIN_FRICTION`], then at the middle of every interval

@@ -23,7 +23,7 @@ pub use decided::{
     block_rate, decidable,
 };
 pub use levels::{LevelResult, STIFF_TOLERANCE, level_names, levels};
-pub use linkage::{Front, fronts, refined_fronts, steps};
+pub use linkage::{Front, fronts, most_pin_frictions, refined_fronts, steps};
 pub use positions::motor_marker;
 
 use super::data::{ApparatusNumbers, BulkFit, RunData};
@@ -134,6 +134,20 @@ pub fn experiment_figure(
         ExperimentFigure::LinkageFriction => linkage::linkage_friction(theme, scene)?,
     };
     Ok((picture.titled(describe::title(scene)), data))
+}
+
+/// Every run the figure `which` of `scene` may make, as data scenes, for
+/// the check of its runs together before the first (`scenes::cost`): the
+/// linkage's figure at the most μ_p its refinement can reach
+/// ([`most_pin_frictions`]); each runs at most to its window (a run that
+/// has decided ends sooner).
+pub fn planned_runs(scene: &Scene, which: ExperimentFigure) -> Result<Vec<Scene>> {
+    let variants = match which {
+        ExperimentFigure::TankPositions => positions::variants(scene)?,
+        ExperimentFigure::TankLevels => levels::variants(scene)?,
+        ExperimentFigure::LinkageFriction => linkage::variants(scene, &most_pin_frictions())?,
+    };
+    Ok(variants.into_iter().map(|v| v.scene).collect())
 }
 
 /// The steady wave's speed (blocks per τ) in the lower half of the chain,

@@ -3,7 +3,7 @@
 //! motor speeds, with each run's fitted bulk line and the measured kink
 //! speed as a line of its own.
 
-use super::runs::{Done, run_all, variant};
+use super::runs::{Done, Variant, run_all, variant};
 use super::{MEASURED_KINK_CM_S, MOTORS_HZ, chart_picture, speed_text};
 use crate::error::Result;
 use crate::render::charts::{Axis, ChartSpec, Marker, Series};
@@ -18,12 +18,8 @@ pub fn motor_marker(theme: &Theme, k: usize, antikink: bool) -> Marker {
     theme.palette.series_marker(k, antikink)
 }
 
-/// Figure 1: the position (n − 1) b of each flipped block (cm) against
-/// t_n − t_1, the time since block 1 flipped (s), kink and antikink at
-/// each motor speed; each run's bulk line (fitted over the lower half of
-/// the chain) through its points, and the measured 6.0 cm/s as a line
-/// from block 1's flip (the supplement's apparatus panel).
-pub(super) fn tank_positions(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+/// The figure's runs: kink and antikink at each motor speed.
+pub(super) fn variants(scene: &Scene) -> Result<Vec<Variant>> {
     let mut variants = Vec::new();
     for f in MOTORS_HZ {
         for (sign, word) in [(1.0, "kink"), (-1.0, "antikink")] {
@@ -32,6 +28,16 @@ pub(super) fn tank_positions(theme: &Theme, scene: &Scene) -> Result<(Picture, V
             })?);
         }
     }
+    Ok(variants)
+}
+
+/// Figure 1: the position (n − 1) b of each flipped block (cm) against
+/// t_n − t_1, the time since block 1 flipped (s), kink and antikink at
+/// each motor speed; each run's bulk line (fitted over the lower half of
+/// the chain) through its points, and the measured 6.0 cm/s as a line
+/// from block 1's flip (the supplement's apparatus panel).
+pub(super) fn tank_positions(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
+    let variants = variants(scene)?;
     let done = run_all(&variants)?;
     let bottom = done
         .iter()

@@ -1,0 +1,174 @@
+//! `bench cost`: the cost model's numbers (`sim::cost`) measured on this
+//! machine. Each force path is timed on the portable path (the fused
+//! kernel where it steps the paper's model), at N = 1000 and at each
+//! apparatus's own N, in interleaved rounds (a shared machine's slow and
+//! fast phases fall on every path alike); the median of the rounds, in ns
+//! per block-step, is printed beside the model's number and weight. The
+//! table in `sim::cost` is copied from this output.
+
+use super::median;
+use crate::error::Result;
+use crate::scene::Scene;
+use crate::sim::cost::{Path, REFERENCE_NS};
+use crate::sim::{self, IntegratorConfig, IntegratorKind, Scenario, Stepping};
+use serde::{Deserialize, Serialize};
+use std::time::Instant;
+
+/// Block-steps of one timed run of each path (a fraction of a second on
+/// the slowest).
+const BLOCK_STEPS: f64 = 1e6;
+
+/// The ribbons' scene (assets/scenes/movie-water-tank-ribbons.toml).
+const RIBBONS: &str = "water-tank-ribbons";
+
+/// One path's measurement.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct PathCost {
+    /// The path, as messages name it (`cost::Path::describe`).
+    pub path: String,
+    /// The scene it was timed on.
+    pub scene: String,
+    pub n: usize,
+    pub steps: u64,
+    /// Median over the rounds, ns per block-step.
+    pub measured_ns: f64,
+    /// The model's ns per block-step (`cost::Path::ns_per_block_step`).
+    pub model_ns: f64,
+    /// The model's weight (block-steps of the paper's model by Verlet).
+    pub weight: f64,
+}
+
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct CostReport {
+    pub rounds: usize,
+    pub paths: Vec<PathCost>,
+}
+
+/// A workload: a scenario stepped by `config` as `stepping` says.
+struct Workload {
+    scene: String,
+    scenario: Scenario,
+    config: IntegratorConfig,
+    stepping: Stepping,
+}
+
+/// `scene` (a catalogue movie's id, or None for the paper's model) at
+/// `n` blocks, run by `kind` at `dt` for about [`BLOCK_STEPS`].
+fn workload(
+    id: Option<&str>,
+    n: Option<usize>,
+    kind: IntegratorKind,
+    dt: f64,
+    stepping: Stepping,
+) -> Result<Workload> {
+    let mut scene = match id {
+        // The toy as built (ribbons, contact): a scene file, not yet in
+        // the catalogue.
+        Some(RIBBONS) => crate::scene::file::parse(
+            include_str!("../../assets/scenes/movie-water-tank-ribbons.toml"),
+            "movie-water-tank-ribbons.toml",
+            RIBBONS,
+        )?,
+        Some(id) => crate::catalog::find(crate::scene::Kind::Movie, id)?
+            .scene
+            .clone(),
+        None => Scene::default(),
+    };
+    if let Some(n) = n {
+        scene.model.n = n;
+    }
+    if let Some(a) = scene.apparatus.as_mut() {
+        a.conversion = None;
+    }
+    let scene = scene.with_conversion();
+    let mut scenario = scene.scenario()?;
+    let n = scenario.ladder.n() as f64;
+    scenario.t_end = (BLOCK_STEPS / n).ceil() * dt;
+    Ok(Workload {
+        scene: format!("{} N = {}", id.unwrap_or("paper"), n),
+        scenario,
+        config: IntegratorConfig::fixed(kind, dt),
+        stepping,
+    })
+}
+
+/// The workloads: the paper's model by every scheme (and symplectic
+/// Euler on its kernel), then each apparatus by RK4 at 0.125 τ (the
+/// experiments' scheme) at its own N and at N = 1000.
+fn workloads() -> Result<Vec<Workload>> {
+    use IntegratorKind::*;
+    let mut w = Vec::new();
+    for kind in IntegratorKind::ALL {
+        w.push(workload(None, Some(1000), kind, 0.01, Stepping::Portable)?);
+    }
+    w.push(workload(
+        None,
+        Some(1000),
+        SymplecticEuler,
+        0.01,
+        Stepping::Fastest,
+    )?);
+    for id in ["water-tank", "linkage-69", RIBBONS] {
+        // The ribbons' contact grows with N: N = 200 shows it.
+        let big = if id == RIBBONS { 200 } else { 1000 };
+        for n in [None, Some(big)] {
+            w.push(workload(Some(id), n, Rk4, 0.125, Stepping::Portable)?);
+        }
+    }
+    Ok(w)
+}
+
+/// Times every workload `rounds` times, interleaved; `tick` after each run.
+pub fn cost(rounds: usize, tick: &(dyn Fn(&str) + Sync)) -> Result<CostReport> {
+    let work = workloads()?;
+    let mut times = vec![Vec::new(); work.len()];
+    let mut steps = vec![0u64; work.len()];
+    for _ in 0..rounds {
+        for (k, w) in work.iter().enumerate() {
+            let options = sim::RunOptions::default()
+                .stepping(w.stepping)
+                .limits(crate::limits::Limits::none());
+            let start = Instant::now();
+            let t = sim::run(&w.scenario, &[], &w.config, &options)?;
+            times[k].push(start.elapsed().as_secs_f64());
+            steps[k] = t.steps;
+            tick(&w.scene);
+        }
+    }
+    let paths = work
+        .iter()
+        .zip(times)
+        .zip(steps)
+        .map(|((w, t), steps)| {
+            let n = w.scenario.ladder.n();
+            let path = Path::of(&w.scenario.ladder, w.config.kind, w.stepping);
+            PathCost {
+                path: path.describe(),
+                scene: w.scene.clone(),
+                n,
+                steps,
+                measured_ns: median(t) * 1e9 / (steps as f64 * n as f64),
+                model_ns: path.ns_per_block_step(),
+                weight: path.weight(),
+            }
+        })
+        .collect();
+    Ok(CostReport { rounds, paths })
+}
+
+/// The report as a Markdown table (docs/limits.md).
+pub fn cost_table(report: &CostReport) -> String {
+    let mut s = format!(
+        "median of {} rounds; the unit of the cap is the paper's model by Verlet, {} ns in \
+         the model\n\n| path | run | measured ns per block-step | model ns | weight |\n\
+         |---|---|---|---|---|\n",
+        report.rounds, REFERENCE_NS
+    );
+    for p in &report.paths {
+        s += &format!(
+            "| {} | {}, {} steps | {:.1} | {:.1} | {:.2} |\n",
+            p.path, p.scene, p.steps, p.measured_ns, p.model_ns, p.weight
+        );
+    }
+    s
+}
