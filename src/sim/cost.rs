@@ -212,12 +212,14 @@ mod tests {
 
     #[test]
     fn the_paper_by_verlet_is_the_unit_and_terms_cost_more() {
-        let paper = Ladder::new(Params::default());
+        let paper = Ladder::new(Params::paper(60.0).unwrap());
         let w = |l: &Ladder, k| weight(l, k, Stepping::Portable);
         assert_eq!(w(&paper, IntegratorKind::Verlet), 1.0);
         assert!(w(&paper, IntegratorKind::Rk4) > 3.0);
-        let mut terms = crate::model::terms::Terms::default();
-        terms.drag = 0.1;
+        let mut terms = crate::model::terms::Terms {
+            drag: 0.1,
+            ..Default::default()
+        };
         let tank = paper.with_terms(terms);
         assert!(w(&tank, IntegratorKind::Rk4) > w(&paper, IntegratorKind::Rk4));
         terms.friction = Some(crate::model::terms::PinFriction {
