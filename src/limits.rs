@@ -55,11 +55,12 @@ pub const MAX_STEPS_PER_ULP_SPAN: f64 = 1.0 / (1000.0 * f64::EPSILON);
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct Limits {
-    /// Steps × N of one simulation (block-steps). Default 1e10: a few
-    /// minutes (26 ns per block-step at N = 1000, 42 ns at N = 100,000;
-    /// docs/limits.md). The paper's run
-    /// is 4 × 10^6; N = 1000 for 2 × 10^5 steps is 2 × 10^8; N = 100,000
-    /// for 5000 steps is 5 × 10^8.
+    /// Steps × N of one simulation, in block-steps of the paper's model
+    /// stepped by velocity Verlet: a run on another force path counts its
+    /// steps × N times that path's weight (`sim::cost`, docs/limits.md).
+    /// Default 1e10: about 9 minutes of the unit (54 ns per block-step).
+    /// The paper's run is 4 × 10^6; N = 1000 for 2 × 10^5 steps is
+    /// 2 × 10^8; N = 100,000 for 5000 steps is 5 × 10^8.
     pub block_steps: f64,
     /// Samples × N of one trajectory (block-samples): each keeps 6 numbers
     /// per block (48 bytes) in memory, about 12 bytes in a CSV. Default

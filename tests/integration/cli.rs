@@ -256,7 +256,7 @@ fn theory_reports_the_spec_fields_and_rejects_bad_angles() {
     assert_bad_input(&["theory", "--n", "100000"], "400");
     assert_bad_input(
         &["bench", "speed"],
-        "choose work-precision, stability or kernels",
+        "choose work-precision, stability, kernels or cost",
     );
 }
 
