@@ -18,8 +18,12 @@ import pytest
 
 CHILD = textwrap.dedent(
     """
-    import os, sys, time
+    import os, signal, sys, time
     import jacobs_ladder as jl
+    # Ctrl-C raises KeyboardInterrupt even where the parent started this
+    # process with SIGINT ignored (a background job of a shell without job
+    # control passes that on, and Python then installs no handler).
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     out, what = sys.argv[1], sys.argv[2]
     print("ready", flush=True)
     try:

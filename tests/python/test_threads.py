@@ -3,6 +3,7 @@
 
 import _thread
 import os
+import signal
 import threading
 import time
 
@@ -131,12 +132,19 @@ def test_ctrl_c_stops_a_long_run_within_a_second():
         sent.append(time.perf_counter())
         _thread.interrupt_main()
 
+    # `interrupt_main` does nothing where SIGINT is ignored (a background
+    # job of a shell without job control inherits that): Ctrl-C's handler
+    # is installed for the test, and the one found put back after.
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     timer = threading.Thread(target=interrupt)
     timer.start()
-    with pytest.raises(KeyboardInterrupt):
-        jl.simulate(integrator="symplectic-euler", t_end=1e6, sample_every=1e5)
-    raised = time.perf_counter()
-    timer.join()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            jl.simulate(integrator="symplectic-euler", t_end=1e6, sample_every=1e5)
+        raised = time.perf_counter()
+    finally:
+        timer.join()
+        signal.signal(signal.SIGINT, previous)
     assert sent, "the interrupt was never sent"
     latency = raised - sent[0]
     assert latency < 1.0, f"stopped {latency:.2f} s after the signal"
