@@ -118,6 +118,7 @@ impl Scenario {
 /// Stiffer or tension-only links are forces of the positions: every
 /// scheme takes them.
 pub fn check_terms(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
+    check_contact_step(ladder, config)?;
     let t = &ladder.terms;
     if !ladder.velocity_dependent()
         || !matches!(
@@ -149,6 +150,27 @@ pub fn check_terms(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
         config.kind.name(),
         what.join(", ")
     )))
+}
+
+/// A fixed RK4 step longer than the contact's stable step
+/// (`model::contact::Contact::rk4_step_bound`) is refused before the run:
+/// every landing corner would ring up until the blocks pass through one
+/// another (docs/experiments.md, "The toy in air").
+fn check_contact_step(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
+    let Some(b) = ladder.built else { return Ok(()) };
+    let Some(c) = b.contact else { return Ok(()) };
+    let bound = c.rk4_step_bound(ladder.blocks(), &b.ribbons.outline);
+    if config.kind == IntegratorKind::Rk4 && config.dt > bound {
+        return Err(Error::bad_input(format!(
+            "dt = {} is longer than the contact's stable step for rk4, 2√2/ω_c = {bound:.4} τ \
+             (ω_c = √(k_c/m_eff) = {:.1} per τ at k_c = {}): a corner landing on a face would \
+             ring up until the blocks pass through each other; use dt <= {bound:.4} or auto",
+            num(config.dt),
+            c.frequency(ladder.blocks(), &b.ribbons.outline),
+            num(c.stiffness),
+        )));
+    }
+    Ok(())
 }
 
 /// `simulate` needs 0 < |α| < 90° (README.md).
