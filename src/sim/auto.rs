@@ -119,6 +119,9 @@ pub fn simulate_verified(
     ))
 }
 
+/// One run of a scenario at the given sample times and integrator.
+type RunFn<'a> = dyn Fn(&Scenario, &[f64], &IntegratorConfig) -> Result<Trajectory> + Sync + 'a;
+
 /// The first pair of runs (at `dt`, unsampled, and at dt/2, sampled), on
 /// both cores: they are independent. Of the coarser run only its arrival
 /// times are kept (`None` when it failed); the finer is returned whole.
@@ -126,7 +129,7 @@ fn first_pair(
     scenario: &Scenario,
     sample_times: &[f64],
     dt: f64,
-    simulate: &(dyn Fn(&Scenario, &[f64], &IntegratorConfig) -> Result<Trajectory> + Sync),
+    simulate: &RunFn<'_>,
 ) -> Result<(Option<Coarse>, Result<Trajectory>)> {
     let tally = super::tally::current();
     let (first_coarse, first_fine) = rayon::join(
