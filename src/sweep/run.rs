@@ -202,7 +202,7 @@ fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<De
     let mut groups: Vec<Vec<usize>> = groups.into_values().collect();
     groups.sort_by_key(|m| std::cmp::Reverse(points[jobs[m[0]].point].scenario.ladder.n()));
     let tally = sim::tally::current();
-    let done: Vec<Result<Vec<(usize, std::result::Result<Decided, String>)>>> = groups
+    let done: Vec<Result<Vec<GroupRun>>> = groups
         .par_iter()
         .with_max_len(1)
         .map(|members| sim::tally::within(tally.clone(), || round_group(points, jobs, members)))
@@ -220,13 +220,12 @@ fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<De
         .collect())
 }
 
+/// A job of a group (its index into a round's jobs) and how it ended.
+type GroupRun = (usize, std::result::Result<Decided, String>);
+
 /// The jobs `members` of one group of [`round`] (one configuration and
 /// rule) through the batch kernel, with their indices into `jobs`.
-fn round_group(
-    points: &[Prepared],
-    jobs: &[Job],
-    members: &[usize],
-) -> Result<Vec<(usize, std::result::Result<Decided, String>)>> {
+fn round_group(points: &[Prepared], jobs: &[Job], members: &[usize]) -> Result<Vec<GroupRun>> {
     let first = &jobs[members[0]];
     let rule = points[first.point].rule;
     let scenarios: Vec<Scenario> = members
