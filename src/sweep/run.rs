@@ -196,38 +196,65 @@ fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<De
     for (k, job) in jobs.iter().enumerate() {
         groups.entry(key(job)).or_default().push(k);
     }
+    // The groups side by side on every core (a group of one run, as each
+    // N of a chain-length sweep is, would otherwise hold one core), the
+    // longest chains first.
+    let mut groups: Vec<Vec<usize>> = groups.into_values().collect();
+    groups.sort_by_key(|m| std::cmp::Reverse(points[jobs[m[0]].point].scenario.ladder.n()));
+    let tally = sim::tally::current();
+    let done: Vec<Result<Vec<GroupRun>>> = groups
+        .par_iter()
+        .with_max_len(1)
+        .map(|members| sim::tally::within(tally.clone(), || round_group(points, jobs, members)))
+        .collect();
     let mut out: Vec<Option<std::result::Result<Decided, String>>> =
         jobs.iter().map(|_| None).collect();
-    for members in groups.values() {
-        let first = &jobs[members[0]];
-        let rule = points[first.point].rule;
-        let scenarios: Vec<Scenario> = members
-            .iter()
-            .map(|&k| points[jobs[k].point].scenario.clone())
-            .collect();
-        // The rest proof only once the arrivals alone do not decide (it
-        // returns at once while the ladder moves).
-        let stop = |v: &sim::StopView| {
-            rule.decide(v.arrivals, v.t, false).is_some()
-                || (v.t >= rule.drive_end && rule.at_rest(v.ladder, v.q, v.v))
-        };
-        let options = sim::RunOptions::default()
-            .limits(points[first.point].limits)
-            .stop(&stop);
-        let runs = sim::batch::simulate_many(&scenarios, &first.config, &options);
-        for (&k, run) in members.iter().zip(runs) {
-            out[k] = Some(match run {
-                Ok(traj) => Ok(decided(&rule, &points[jobs[k].point].scenario, traj)),
-                Err(Error::Failed(msg)) => Err(msg),
-                Err(Error::Diverged(d)) => Err(d.facts()),
-                Err(e) => return Err(e),
-            });
+    for group in done {
+        for (k, run) in group? {
+            out[k] = Some(run);
         }
     }
     Ok(out
         .into_iter()
         .map(|r| r.expect("every job belongs to one group"))
         .collect())
+}
+
+/// A job of a group (its index into a round's jobs) and how it ended.
+type GroupRun = (usize, std::result::Result<Decided, String>);
+
+/// The jobs `members` of one group of [`round`] (one configuration and
+/// rule) through the batch kernel, with their indices into `jobs`.
+fn round_group(points: &[Prepared], jobs: &[Job], members: &[usize]) -> Result<Vec<GroupRun>> {
+    let first = &jobs[members[0]];
+    let rule = points[first.point].rule;
+    let scenarios: Vec<Scenario> = members
+        .iter()
+        .map(|&k| points[jobs[k].point].scenario.clone())
+        .collect();
+    // The rest proof only once the arrivals alone do not decide (it
+    // returns at once while the ladder moves).
+    let stop = |v: &sim::StopView| {
+        rule.decide(v.arrivals, v.t, false).is_some()
+            || (v.t >= rule.drive_end && rule.at_rest(v.ladder, v.q, v.v))
+    };
+    let options = sim::RunOptions::default()
+        .limits(points[first.point].limits)
+        .stop(&stop);
+    let runs = sim::batch::simulate_many(&scenarios, &first.config, &options);
+    let mut out = Vec::with_capacity(members.len());
+    for (&k, run) in members.iter().zip(runs) {
+        out.push((
+            k,
+            match run {
+                Ok(traj) => Ok(decided(&rule, &points[jobs[k].point].scenario, traj)),
+                Err(Error::Failed(msg)) => Err(msg),
+                Err(Error::Diverged(d)) => Err(d.facts()),
+                Err(e) => return Err(e),
+            },
+        ));
+    }
+    Ok(out)
 }
 
 /// The decision a run stopped on: propagation from its arrival times,
