@@ -74,6 +74,23 @@ impl Circle {
         self.distance2(p).sqrt()
     }
 
+    /// [`Circle::distance2`] of each point, in a loop over arrays of
+    /// coordinates that the compiler turns into vector instructions (no
+    /// fused multiply-add: every lane rounds as the scalar formula does).
+    fn distances2(&self, points: &[V3; SAMPLES]) -> [f64; SAMPLES] {
+        let [dx, dy, dz] = [0, 1, 2].map(|k| points.map(|p| p[k] - self.c[k]));
+        let m = &self.rot;
+        let mut d2 = [0.0; SAMPLES];
+        for j in 0..SAMPLES {
+            let lx = m[0][0] * dx[j] + m[1][0] * dy[j] + m[2][0] * dz[j];
+            let ly = m[0][1] * dx[j] + m[1][1] * dy[j] + m[2][1] * dz[j];
+            let lz = m[0][2] * dx[j] + m[1][2] * dy[j] + m[2][2] * dz[j];
+            let rho = (lx * lx + ly * ly).sqrt();
+            d2[j] = (rho - self.radius) * (rho - self.radius) + lz * lz;
+        }
+        d2
+    }
+
     /// Squared distance from `p` to the circle.
     fn distance2(&self, p: V3) -> f64 {
         let local = math::mul_mtv(&self.rot, math::sub(p, self.c));
@@ -122,18 +139,13 @@ pub fn touches_at(
     // Squared distances: their minima are the distance's. Every third
     // sample first (a set the mirror keeps): if all are farther than 2r
     // plus what the distance may fall between them, R·π/8, no contact.
-    let mut d2 = [0.0; SAMPLES];
+    // All samples at once (lane by lane, the same arithmetic as one by
+    // one: the values are the same bits; only a far pair pays for the
+    // samples it did not need).
+    let d2 = b.distances2(points);
     let far = reach + a.radius * std::f64::consts::PI / 8.0;
-    let mut near = false;
-    for j in (1..SAMPLES).step_by(3) {
-        d2[j] = b.distance2(points[j]);
-        near |= d2[j] < far * far;
-    }
-    if !near {
+    if !(1..SAMPLES).step_by(3).any(|j| d2[j] < far * far) {
         return;
-    }
-    for j in (0..SAMPLES).filter(|j| j % 3 != 1) {
-        d2[j] = b.distance2(points[j]);
     }
     // Between samples the distance falls at most R·π/M below a sample.
     let slack = a.radius * std::f64::consts::PI / SAMPLES as f64;
@@ -202,9 +214,15 @@ fn first_offsets() -> &'static [(f64, f64); 2] {
 /// round `round` (0-based): the later steps are clamped to their h,
 /// H0/4^(round+1) and smaller.
 fn still_to_move(round: usize) -> f64 {
-    (round + 1..REFINEMENTS)
-        .map(|k| H0 / 4f64.powi(k as i32))
-        .sum()
+    let mut sum = 0.0;
+    let mut h = H0;
+    for k in 1..REFINEMENTS {
+        h *= 0.25;
+        if k > round {
+            sum += h;
+        }
+    }
+    sum
 }
 
 /// A margin for rounding in the early exit of [`refine`], m: a computed
@@ -240,6 +258,7 @@ fn refine(
     let mut h = H0;
     // at(0) is a.point(cs) exactly (cos 0 = 1, sin 0 = 0; cs has no zero).
     let (mut p0, mut f0) = (p_start, f_start);
+    let to_move = [0, 1, 2, 3].map(|round| a.radius * still_to_move(round));
     for round in 0..REFINEMENTS {
         let (pm, pp) = if round == 0 {
             let first = first_offsets();
@@ -274,7 +293,7 @@ fn refine(
             (p0, f0) = (p_new, f_new);
         }
         h *= 0.25;
-        if f0 - a.radius * still_to_move(round) - ROUNDING >= reach {
+        if f0 - to_move[round] - ROUNDING >= reach {
             return None;
         }
     }
@@ -414,8 +433,10 @@ mod tests {
                 Quat::axis_angle(axis, 3.2 * uniform()),
             );
             let points = sample_points(&a, &table);
+            let d2 = b.distances2(&points);
             for j in 0..SAMPLES {
                 assert_eq!(points[j], a.point(table[j]));
+                assert_eq!(d2[j].to_bits(), b.distance2(points[j]).to_bits());
                 let f_start = b.distance2(points[j]).sqrt();
                 let reach = [0.002, 0.006][j % 2];
                 let new = refine(&a, &b, (table[j], points[j]), f_start, reach);
