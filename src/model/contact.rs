@@ -55,6 +55,9 @@ pub struct Contact {
 pub struct Touch {
     pub a: usize,
     pub b: usize,
+    /// Which corner of a (`outline`), and the edge of b it is nearest to.
+    pub corner: usize,
+    pub edge: usize,
     pub point: [f64; 2],
     pub depth: f64,
     pub normal: [f64; 2],
@@ -161,6 +164,8 @@ impl Contact {
         Some(Touch {
             a,
             b,
+            corner: k,
+            edge,
             point: x,
             depth,
             normal,
@@ -169,6 +174,31 @@ impl Contact {
             normal_force,
             friction_force,
         })
+    }
+
+    /// Corner `k` of block `a` against edge `edge` of block `b` at (q, v):
+    /// its signed distance outside that edge's line (negative once past
+    /// it) and its approach speed towards it, −v_rel · n, as [`Touch`]
+    /// measures them. The impacts (`sim::impacts`) look back with it.
+    pub fn corner_gap(
+        o: &Outline,
+        (a, k): (usize, usize),
+        (b, edge): (usize, usize),
+        q: &[f64],
+        v: &[f64],
+    ) -> (f64, f64) {
+        let (pa, pb) = (Pose::of(q, a), Pose::of(q, b));
+        let x = pa.point(o.corner(k));
+        let l = pb.local(x);
+        let nf = o.normal(edge);
+        // The edge's line lies at R along u (ends) or h along w (faces).
+        let extent = if edge % 2 == 1 { R } else { o.half_thickness };
+        let gap = l[0] * nf[0] + l[1] * nf[1] - extent;
+        let n = pb.vector(nf);
+        let va = point_velocity(&pa, a, o.corner(k), v);
+        let vb = point_velocity(&pb, b, l, v);
+        let approach = -((va[0] - vb[0]) * n[0] + (va[1] - vb[1]) * n[1]);
+        (gap, approach)
     }
 
     /// 1/m + (ρ × n)²/I of a block at lab point x along n.

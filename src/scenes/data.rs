@@ -127,6 +127,11 @@ pub struct RunData {
     pub final_theta_deg: Vec<f64>,
     /// Every wave of the run and block N's fate (docs/sweeps.md).
     pub waves: sim::waves::Waves,
+    /// Every impact between two blocks, in time order (`sim::impacts`,
+    /// docs/formats.md "Impacts"): for blocks that may touch (the toy as
+    /// built with contact); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub impacts: Option<Vec<sim::impacts::Impact>>,
     /// Times in seconds and speeds in cm/s, where an apparatus gives the
     /// units (docs/experiments.md); absent in the model's units alone.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -374,7 +379,9 @@ impl RunData {
             blocks_flipped: crate::sweep::outcome::blocks_flipped(&traj.arrival_times),
             final_theta_deg: traj.final_theta_deg(),
             waves: traj.waves.clone(),
-            units: Units::of(scene, &traj.arrival_times, speed),
+            impacts: traj.impacts.clone(),
+            units: Units::of(scene, &traj.arrival_times, speed)
+                .map(|u| u.with_impacts(scene, traj.impacts.as_deref())),
             frames: Frames(Arc::new(rows)),
             kymograph: None,
             energies: None,
@@ -401,6 +408,12 @@ pub struct Units {
     pub arrival_times_s: Vec<Option<f64>>,
     /// The wave speed c, cm/s.
     pub speed_cm_s: Option<f64>,
+    /// Each impact's time (s) and normal speed (cm/s), in the order of
+    /// the run's `impacts`; absent where the blocks cannot touch.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub impact_times_s: Option<Vec<f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub impact_speeds_cm_s: Option<Vec<f64>>,
 }
 
 impl Units {
@@ -417,7 +430,25 @@ impl Units {
                 .map(|t| t.map(|t| t * c.tau_s))
                 .collect(),
             speed_cm_s: speed.map(|v| v * c.cm_per_s),
+            impact_times_s: None,
+            impact_speeds_cm_s: None,
         })
+    }
+
+    /// These units with the run's `impacts` in seconds and cm/s (a speed
+    /// of one s per τ is s/τ = `cm_per_s` / b in cm/s).
+    fn with_impacts(self, scene: &Scene, impacts: Option<&[sim::impacts::Impact]>) -> Self {
+        let (Some(imp), Some(c)) = (
+            impacts,
+            scene.apparatus.as_ref().and_then(|a| a.conversion.as_ref()),
+        ) else {
+            return self;
+        };
+        Self {
+            impact_times_s: Some(imp.iter().map(|i| i.t * c.tau_s).collect()),
+            impact_speeds_cm_s: Some(imp.iter().map(|i| i.speed * c.cm_per_s / c.b).collect()),
+            ..self
+        }
     }
 }
 

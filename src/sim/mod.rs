@@ -7,6 +7,7 @@ pub mod chain;
 pub mod cost;
 mod divergence;
 pub mod fused;
+pub mod impacts;
 pub mod integrators;
 #[cfg(target_arch = "x86_64")]
 mod lanes;
@@ -468,6 +469,8 @@ pub fn run_streaming(
     let check_every = check_every(&config);
     let mut arrivals = ArrivalDetector::new(0.0, &st.q, &st.v);
     let mut tracker = WaveTracker::new(0.0, &st.q, &st.v);
+    // Blocks that may touch: every step is watched for impacts.
+    let mut impacts = impacts::ImpactWatch::new(ladder, 0.0, &st.q, &st.v);
     let mut steps = 0;
     let mut t = 0.0;
     let mut next_sample = 0;
@@ -486,7 +489,7 @@ pub fn run_streaming(
     emit_due(&samples, &mut next_sample, t, &st, dissipated.total, sink)?;
     'run: for &stop_at in &stops {
         while t < stop_at {
-            let budget = if every_step {
+            let budget = if every_step || impacts.is_some() {
                 1
             } else {
                 check_every - steps % check_every
@@ -497,6 +500,9 @@ pub fn run_streaming(
                 return Err(stalled(t, &config));
             }
             dissipated.step(&st, t_new - t);
+            if let Some(w) = impacts.as_mut() {
+                w.observe(t_new, &st.q, &st.v);
+            }
             t = t_new;
             steps += taken;
             if every_step {
@@ -530,6 +536,7 @@ pub fn run_streaming(
     let waves = tracker.finish(&st.q, at_rest);
     let mut traj = Trajectory::finished(st, t, arrivals.arrival, steps, rhs.force_evals);
     traj.waves = waves;
+    traj.impacts = impacts.map(|w| w.impacts);
     Ok(traj)
 }
 

@@ -30,6 +30,9 @@ pub struct Trajectory {
     /// Every domain wall of the run as a wave, and block N's fate
     /// (`waves`, docs/sweeps.md).
     pub waves: Waves,
+    /// Every impact between two blocks (`impacts`), in time order, for a
+    /// ladder whose blocks may touch; `None` for any other.
+    pub impacts: Option<Vec<super::impacts::Impact>>,
     /// State at the end of the run: at t_end, or at `t_final` where a stop
     /// rule ended it earlier (`RunOptions::stop`).
     pub final_state: State,
@@ -94,6 +97,7 @@ impl Trajectory {
             dissipated: Vec::new(),
             arrival_times,
             waves: Waves::default(),
+            impacts: None,
             final_state,
             t_final,
             steps,

@@ -5,8 +5,11 @@
 //! check, `sim::divergence`), each block's polarisation sin θ_n.
 
 use jacobs_ladder::model::ladder::itheta;
+use jacobs_ladder::model::outline::Pose;
+use jacobs_ladder::model::ribbons::Ribbons;
 use jacobs_ladder::scene::file::parse;
-use jacobs_ladder::sim::{self, IntegratorConfig, IntegratorKind, Trajectory};
+use jacobs_ladder::sim::{self, Drive, IntegratorConfig, IntegratorKind, Protocol, State};
+use jacobs_ladder::sim::{Scenario, Trajectory};
 
 const TOY: &str = include_str!("../../assets/scenes/toy.toml");
 
@@ -60,6 +63,142 @@ fn the_toy_runs_to_its_end_with_no_two_blocks_overlapping() {
         "the blocks must touch for this to test contact"
     );
     assert!(deepest < 0.1 * o.thickness());
+    // Its impacts, decided at every step: blocks clatter on one another
+    // (the first between blocks 1 and 2, once the hand has turned block 1),
+    // in time order, each between two blocks, at a speed ≥ 0.
+    let impacts = traj
+        .impacts
+        .as_ref()
+        .expect("a toy with contact has impacts");
+    println!("{} impacts, first {:?}", impacts.len(), impacts.first());
+    assert!(impacts.len() >= 6, "{impacts:?}");
+    assert_eq!(impacts[0].blocks, [1, 2]);
+    for w in impacts.windows(2) {
+        assert!(w[1].t >= w[0].t, "in time order: {w:?}");
+    }
+    for i in impacts {
+        let [a, b] = i.blocks;
+        assert!(
+            a < b && b <= 6 && i.t > 0.0 && i.t <= sc.t_end && i.speed >= 0.0,
+            "{i:?}"
+        );
+    }
+}
+
+/// Two pine blocks of the toy without ribbons (κ = 0): block 1 held at
+/// rest at θ = 0 (lying across gravity, its face w = −h up at x = −h),
+/// block 2 above it at (x, y, θ) with velocities `v`, free; run to
+/// `t_end` by RK4 at the toy's step.
+fn drop(q2: [f64; 3], v2: [f64; 3], t_end: f64) -> (Scenario, Trajectory) {
+    let text = TOY.replace("n = 6", "n = 2");
+    let mut sc = parse(&text, "toy", "toy").unwrap().scenario().unwrap();
+    let mut built = sc.ladder.built.unwrap();
+    built.ribbons = Ribbons::new(built.ribbons.outline, built.ribbons.ribbons, 0.0);
+    sc.ladder.built = Some(built);
+    sc.protocol = Protocol::Driven(Drive::hold(0.0));
+    sc.initial = State {
+        q: vec![0.0, 0.0, 0.0, q2[0], q2[1], q2[2]],
+        v: vec![0.0, 0.0, 0.0, v2[0], v2[1], v2[2]],
+    };
+    sc.t_end = t_end;
+    let traj = sim::simulate(
+        &sc,
+        &[],
+        &IntegratorConfig::fixed(IntegratorKind::Rk4, 0.02),
+    )
+    .unwrap();
+    (sc, traj)
+}
+
+#[test]
+fn a_block_dropped_flat_hits_once_at_the_free_fall_time_and_speed() {
+    // Block 2 flat (θ = 0), its face 0.05 s above block 1's, shifted
+    // 0.2 s sideways: it falls freely, G t²/2 = 0.05, and lands at
+    // t* = √(0.1/G) with speed G t*. The rebound (e = 0.5) flies for
+    // about e · 2 t* ≈ t*: a window of 1.5 t* holds exactly one impact.
+    let gap = 0.05;
+    let (sc, _) = drop([0.0; 3], [0.0; 3], 0.0);
+    let (g, h) = (
+        sc.ladder.params.gravity,
+        sc.ladder.built.unwrap().ribbons.outline.half_thickness,
+    );
+    let t_star = (2.0 * gap / g).sqrt();
+    let (_, traj) = drop([-2.0 * h - gap, 0.2, 0.0], [0.0; 3], 1.5 * t_star);
+    let impacts = traj.impacts.unwrap();
+    println!("t* = {t_star}, v* = {}: {impacts:?}", g * t_star);
+    assert_eq!(impacts.len(), 1, "{impacts:?}");
+    let i = impacts[0];
+    assert_eq!(i.blocks, [1, 2]);
+    // Time to ½ G dt²/v (the look-back is linear), speed to G dt.
+    assert!((i.t - t_star).abs() < 1e-4, "{} {t_star}", i.t);
+    assert!(
+        (i.speed - g * t_star).abs() < 1.01 * g * 0.02,
+        "{}",
+        i.speed
+    );
+}
+
+#[test]
+fn a_spinning_block_hits_where_and_as_fast_as_its_free_flight_says() {
+    // Block 2 tilted by 0.1 rad and turning at ω = 2e-3 per τ as it
+    // falls: a corner lands first. Its free flight, X = X₀ + G t²/2,
+    // θ = θ₀ + ω t, puts each corner at x_k(t) (`Pose`); the first time
+    // one reaches block 1's face x = −h (by bisection of the flight, not
+    // of the run) and its speed there, Ẋ + ω ∂x_k/∂θ, are the impact's.
+    let (q0, om) = ([-0.35, -0.2, 0.1], 2e-3);
+    let (sc, _) = drop([0.0; 3], [0.0; 3], 0.0);
+    let g = sc.ladder.params.gravity;
+    let o = sc.ladder.built.unwrap().ribbons.outline;
+    let h = o.half_thickness;
+    let flight = |t: f64| {
+        [
+            0.0,
+            0.0,
+            0.0,
+            q0[0] + 0.5 * g * t * t,
+            q0[1],
+            q0[2] + om * t,
+        ]
+    };
+    // The lowest corner's distance above block 1's face (> 0 before).
+    let lowest = |t: f64| -> (f64, usize) {
+        let p = Pose::of(&flight(t), 1);
+        (0..4)
+            .map(|k| (-h - p.point(o.corner(k))[0], k))
+            .fold((f64::INFINITY, 0), |m, d| if d.0 < m.0 { d } else { m })
+    };
+    let (mut lo, mut hi) = (0.0, 0.0);
+    while lowest(hi).0 > 0.0 {
+        (lo, hi) = (hi, hi + 0.5);
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if lowest(mid).0 > 0.0 {
+            lo = mid
+        } else {
+            hi = mid
+        }
+    }
+    let (t_star, k) = (hi, lowest(hi).1);
+    let p = Pose::of(&flight(t_star), 1);
+    let (c, turning) = (o.corner(k), p.turning(o.corner(k)));
+    let y_hit = p.point(c)[1];
+    assert!(
+        y_hit.abs() < 0.45,
+        "the corner lands on block 1's face: {y_hit}"
+    );
+    let v_star = g * t_star + om * turning[0];
+    let (_, traj) = drop(q0, [0.0, 0.0, om], t_star + 2.0);
+    let impacts = traj.impacts.unwrap();
+    println!("t* = {t_star}, v* = {v_star}, corner {k}: {impacts:?}");
+    assert_eq!(impacts.len(), 1, "{impacts:?}");
+    assert_eq!(impacts[0].blocks, [1, 2]);
+    assert!((impacts[0].t - t_star).abs() < 1e-4, "{}", impacts[0].t);
+    assert!(
+        (impacts[0].speed - v_star).abs() < 2e-3 * v_star,
+        "{}",
+        impacts[0].speed
+    );
 }
 
 #[test]
