@@ -114,8 +114,8 @@ pub fn into_folder_timed(
     Ok((files, start.finish(timed)))
 }
 
-/// `render` of `scene` timed: its wall time, and the runs it simulated
-/// counted on whichever thread they ran (`sim::tally`).
+/// `render` of `scene` timed: its wall time, and the CPU time and runs
+/// of its tasks counted on whichever thread they ran (`sim::tally`).
 fn timed<T>(scene: &Scene, render: impl FnOnce() -> Result<T>) -> Result<(T, Timing)> {
     let tally = std::sync::Arc::new(tally::Tally::default());
     let at = std::time::Instant::now();
@@ -124,6 +124,7 @@ fn timed<T>(scene: &Scene, render: impl FnOnce() -> Result<T>) -> Result<(T, Tim
         kind: scene.kind(),
         name: scene.name.clone(),
         wall_s: at.elapsed().as_secs_f64(),
+        cpu_s: tally.cpu_s(),
         runs: tally.runs(),
         block_steps: tally.block_steps(),
     };

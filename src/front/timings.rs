@@ -11,9 +11,13 @@
 //! - an output's runs and block-steps (steps × blocks, summed over its
 //!   runs) are counted by the simulation as each run finishes
 //!   (`sim::tally`), whichever thread ran it;
-//! - CPU time is the process's (user + system, every thread) over the
-//!   whole render, from `/proc/self/stat`: per output it is not
-//!   measurable under rayon, whose threads share outputs.
+//! - an output's CPU time is the time threads spent on its tasks: its
+//!   own rendering and the runs it spread over the cores, each thread's
+//!   clock charged to the output whose tally was set on it
+//!   (`sim::tally`); an encoder's or rasteriser's own parallel loops are
+//!   in no output's CPU time, only in the process's;
+//! - the process's CPU time (user + system, every thread) over the whole
+//!   render is read from `/proc/self/stat`.
 
 use crate::scene::Kind;
 use crate::sim::tally;
@@ -26,6 +30,8 @@ pub struct Timing {
     pub name: String,
     /// Seconds from its start to its files in place.
     pub wall_s: f64,
+    /// CPU seconds its tasks took on every thread (module doc).
+    pub cpu_s: f64,
     pub runs: u64,
     pub block_steps: u64,
 }
@@ -106,28 +112,32 @@ impl Timings {
             .max()
             .unwrap_or(24);
         let mut s = format!(
-            "{:<width$}  {:>8}  {:>5}  {:>12}\n",
-            "output", "wall (s)", "runs", "block-steps"
+            "{:<width$}  {:>8}  {:>7}  {:>5}  {:>12}\n",
+            "output", "wall (s)", "CPU (s)", "runs", "block-steps"
         );
         for t in &rows {
             let name = format!("{} {}", t.kind.name(), t.name);
             s += &format!(
-                "{name:<width$}  {:>8.2}  {:>5}  {:>12}\n",
-                t.wall_s, t.runs, t.block_steps
+                "{name:<width$}  {:>8.2}  {:>7.2}  {:>5}  {:>12}\n",
+                t.wall_s, t.cpu_s, t.runs, t.block_steps
             );
         }
         let runs: u64 = rows.iter().map(|t| t.runs).sum();
-        let cpu = self
-            .cpu_s
-            .map_or("not measured".into(), |c| format!("{c:.2} s"));
+        let outputs_cpu: f64 = rows.iter().map(|t| t.cpu_s).sum();
+        let cpu = self.cpu_s.map_or("-".into(), |c| format!("{c:.2}"));
         s += &format!(
-            "{:<width$}  {:>8.2}  {:>5}  {:>12}\n",
-            "whole render", self.wall_s, self.runs, self.block_steps
+            "{:<width$}  {:>8.2}  {:>7}  {:>5}  {:>12}\n",
+            "whole render", self.wall_s, cpu, self.runs, self.block_steps
         );
+        let outside = self.cpu_s.map_or("not measured".into(), |c| {
+            format!("{:.2} s", c - outputs_cpu)
+        });
         s += &format!(
-            "CPU (user + system, every thread, whole process): {cpu}; runs outside any \
-             output: {}\nwall: an output's start to its files in place (outputs overlap, \
-             rendered in parallel); block-steps: steps x blocks of its runs\n",
+            "CPU of the whole render: user + system, every thread, the whole process; CPU \
+             outside the outputs' own tasks (encoders' parallel loops, start-up): {outside}; \
+             runs outside any output: {}\nwall: an output's start to its files in place \
+             (outputs overlap, rendered in parallel); CPU: its tasks' time on every thread; \
+             block-steps: steps x blocks of its runs\n",
             self.runs.saturating_sub(runs),
         );
         s
@@ -154,13 +164,14 @@ mod tests {
             kind: Kind::Figure,
             name: name.into(),
             wall_s,
+            cpu_s: 2.0 * wall_s,
             runs,
             block_steps: 100 * runs,
         };
         let timings = Timings {
             outputs: vec![t("3", 0.5, 2), t("tank-levels", 4.0, 15)],
             wall_s: 4.2,
-            cpu_s: Some(7.9),
+            cpu_s: Some(9.9),
             runs: 18,
             block_steps: 1800,
         };
@@ -169,8 +180,9 @@ mod tests {
         assert!(lines[1].starts_with("figure tank-levels"), "{table}");
         assert!(lines[2].starts_with("figure 3"), "{table}");
         assert!(lines[3].starts_with("whole render"), "{table}");
+        assert!(lines[3].contains(" 9.90 "), "{table}");
         assert!(
-            table.contains("7.90 s; runs outside any output: 1"),
+            table.contains("start-up): 0.90 s; runs outside any output: 1"),
             "{table}"
         );
     }

@@ -71,6 +71,22 @@ impl Contact {
         -l / (std::f64::consts::PI.powi(2) + l * l).sqrt()
     }
 
+    /// The highest frequency of the contact's penalty spring,
+    /// ω_c = √(k_c / m_eff,min): the lightest pair is a corner at the
+    /// circumradius ρ of both blocks pushed square to ρ, 1/m_eff =
+    /// 2 (1/m + ρ²/I). A corner landing on a face rings at this frequency
+    /// while it touches; an explicit scheme must step inside its bound.
+    pub fn frequency(&self, blocks: Blocks, o: &Outline) -> f64 {
+        let rho = o.radius();
+        (self.stiffness * 2.0 * (1.0 / M + rho * rho / blocks.inertia)).sqrt()
+    }
+
+    /// The longest stable RK4 step for the contact's spring, 2√2/ω_c (its
+    /// bound on the imaginary axis, `sim::step_bounds`).
+    pub fn rk4_step_bound(&self, blocks: Blocks, o: &Outline) -> f64 {
+        2.0 * std::f64::consts::SQRT_2 / self.frequency(blocks, o)
+    }
+
     /// Every corner in contact at (q, v).
     pub fn touches(&self, blocks: Blocks, o: &Outline, q: &[f64], v: &[f64]) -> Vec<Touch> {
         let mut out = Vec::new();

@@ -142,7 +142,15 @@ mod t_end_value {
 /// ([`auto_config`]) and of its stability bound, for a scene and for a
 /// sweep's point alike.
 pub fn omega_max(scenario: &crate::sim::Scenario) -> Result<f64> {
-    crate::theory::dispersion::omega_max_clamped(&scenario.ladder.params)
+    let springs = crate::theory::dispersion::omega_max_clamped(&scenario.ladder.params)?;
+    // Blocks in contact ring at the contact's frequency while they touch
+    // (`model::contact::Contact::frequency`).
+    let l = &scenario.ladder;
+    let contact = l.built.and_then(|b| {
+        b.contact
+            .map(|c| c.frequency(l.blocks(), &b.ribbons.outline))
+    });
+    Ok(springs.max(contact.unwrap_or(0.0)))
 }
 
 /// `auto`'s first configuration for `scenario` (`IntegratorConfig::auto`

@@ -64,32 +64,8 @@ pub fn simulate_verified(
     // for it inside the loop would pass for a diverged one.
     super::ensure_memory(sample_times.len(), scenario.ladder.n())?;
     let mut dt = budget.dt;
-    let mut total = 0;
-    // The first pair of runs is independent: both cores take one each.
-    let tally = super::tally::current();
-    let (first_coarse, first_fine) = rayon::join(
-        || {
-            super::tally::within(tally.clone(), || {
-                simulate(scenario, &[], &scheme(scenario, dt))
-            })
-        },
-        || {
-            super::tally::within(tally.clone(), || {
-                simulate(scenario, sample_times, &scheme(scenario, 0.5 * dt))
-            })
-        },
-    );
-    // Of the coarser run only its arrival times are compared: its samples
-    // (none for the first, which records none) are dropped at once, so a
-    // halving never holds two sampled trajectories.
-    let mut coarse = match first_coarse {
-        Ok(t) => Some(Coarse::of(t)),
-        Err(e) if e.is_failed_run() => None,
-        Err(e) => return Err(e),
-    };
-    if let Some(c) = &coarse {
-        total += c.force_evals;
-    }
+    let (mut coarse, first_fine) = first_pair(scenario, sample_times, dt, &simulate)?;
+    let mut total = coarse.as_ref().map_or(0, |c| c.force_evals);
     let mut first_fine = Some(first_fine);
     let mut last_difference = f64::INFINITY;
     // Halvings in a row whose difference did not shrink ([`diverging`]).
@@ -134,14 +110,67 @@ pub fn simulate_verified(
         coarse = Some(Coarse::of(fine));
         dt *= 0.5;
     }
+    Err(not_verified(
+        &budget,
+        limits,
+        last_difference,
+        dt,
+        tolerance,
+    ))
+}
+
+/// One run of a scenario at the given sample times and integrator.
+type RunFn<'a> = dyn Fn(&Scenario, &[f64], &IntegratorConfig) -> Result<Trajectory> + Sync + 'a;
+
+/// The first pair of runs (at `dt`, unsampled, and at dt/2, sampled), on
+/// both cores: they are independent. Of the coarser run only its arrival
+/// times are kept (`None` when it failed); the finer is returned whole.
+fn first_pair(
+    scenario: &Scenario,
+    sample_times: &[f64],
+    dt: f64,
+    simulate: &RunFn<'_>,
+) -> Result<(Option<Coarse>, Result<Trajectory>)> {
+    let tally = super::tally::current();
+    let (first_coarse, first_fine) = rayon::join(
+        || {
+            super::tally::within(tally.clone(), || {
+                simulate(scenario, &[], &scheme(scenario, dt))
+            })
+        },
+        || {
+            super::tally::within(tally.clone(), || {
+                simulate(scenario, sample_times, &scheme(scenario, 0.5 * dt))
+            })
+        },
+    );
+    // Its samples (none: it records none) are dropped at once, so a
+    // halving never holds two sampled trajectories.
+    let coarse = match first_coarse {
+        Ok(t) => Some(Coarse::of(t)),
+        Err(e) if e.is_failed_run() => None,
+        Err(e) => return Err(e),
+    };
+    Ok((coarse, first_fine))
+}
+
+/// Why `auto` ended without a verified run after spending `budget`:
+/// the cap's error when one more halving would pass it (raising the cap
+/// is the remedy), else a failed run.
+fn not_verified(
+    budget: &Budget,
+    limits: &Limits,
+    last_difference: f64,
+    dt: f64,
+    tolerance: f64,
+) -> Error {
     let what = if last_difference.is_finite() {
         format!("arrival times still differ by {last_difference:.3} τ")
     } else {
         "the runs still disagree on which blocks flip".to_string()
     };
     if let Some(next) = budget.next_block_steps {
-        // A finer step would pass the cap: raising it is the remedy.
-        return Err(Error::Limit(crate::limits::LimitExceeded {
+        return Error::Limit(crate::limits::LimitExceeded {
             resource: Resource::BlockSteps,
             value: next,
             cap: limits.cap(Resource::BlockSteps),
@@ -151,13 +180,13 @@ pub fn simulate_verified(
                  an integrator and step",
                 num(dt)
             ),
-        }));
+        });
     }
-    Err(Error::failed(format!(
+    Error::failed(format!(
         "the auto integrator could not verify this run within {tolerance} τ: at dt = {} τ {what}; \
          hint: raise the tolerance, or name an integrator and step",
         num(dt)
-    )))
+    ))
 }
 
 /// Halvings in a row whose arrival-time difference did not at least halve

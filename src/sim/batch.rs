@@ -48,84 +48,132 @@ pub fn simulate_many(
     config: &IntegratorConfig,
     options: &RunOptions,
 ) -> Vec<Result<Trajectory>> {
-    let (stepping, stop) = (options.stepping, options.stop);
-    let one = |sc: &Scenario, config: &IntegratorConfig, stepping: Stepping| {
-        // As the batch kernel: the wave tracker fed at the checks.
-        super::run(
-            sc,
-            &[],
-            config,
-            &options.stepping(stepping).every_step(false),
-        )
+    let many = Many {
+        scenarios,
+        config,
+        options,
+        tally: super::tally::current(),
     };
-    let valid = config.validated();
-    // The batch kernels compute the paper's forces only (`model::media`).
-    let paper = scenarios.iter().all(|sc| sc.ladder.is_paper_model());
-    let isa = match (&valid, batch_isa(stepping).filter(|_| paper)) {
-        (Ok(c), Some(isa))
-            if matches!(
-                c.kind,
-                IntegratorKind::SymplecticEuler | IntegratorKind::Verlet
-            ) =>
-        {
-            isa
-        }
-        _ => {
-            let tally = super::tally::current();
-            return scenarios
-                .par_iter()
-                .map(|sc| super::tally::within(tally.clone(), || one(sc, config, stepping)))
-                .collect();
-        }
+    let Some(isa) = many.batch_isa(config) else {
+        let all: Vec<usize> = (0..scenarios.len()).collect();
+        return many.in_order(many.one_by_one(&all, config, options.stepping));
     };
     let config = *config;
     let mut groups: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
     for (i, sc) in scenarios.iter().enumerate() {
         groups.entry(sc.ladder.n()).or_default().push(i);
     }
-    let mut results: Vec<Option<Result<Trajectory>>> = scenarios.iter().map(|_| None).collect();
     let threads = rayon::current_num_threads();
-    let tally = super::tally::current();
-    for queue in groups.values() {
-        if stepping == Stepping::Fastest && queue.len() < SMALL_GROUP_PER_THREAD * threads {
-            // Too few runs to fill the lanes: one by one on every core.
-            let done: Vec<_> = queue
-                .par_iter()
-                .map(|&i| {
-                    let run = super::tally::within(tally.clone(), || {
-                        one(&scenarios[i], &config, stepping)
-                    });
-                    (i, run)
-                })
-                .collect();
-            for (i, result) in done {
-                results[i] = Some(result);
-            }
-            continue;
-        }
+    let (small, full): (Vec<_>, Vec<_>) = groups.into_values().partition(|queue| {
+        options.stepping == Stepping::Fastest && queue.len() < SMALL_GROUP_PER_THREAD * threads
+    });
+    // Too few runs of one N to fill the lanes: one by one on every core,
+    // the small groups of every N in one queue, the longest chains first.
+    let mut alone: Vec<usize> = small.into_iter().flatten().collect();
+    alone.sort_by_key(|&i| std::cmp::Reverse(scenarios[i].ladder.n()));
+    let mut done = many.one_by_one(&alone, &config, options.stepping);
+    for queue in &full {
+        done.extend(many.in_lanes(isa, &config, queue));
+    }
+    many.in_order(done)
+}
+
+/// The runs of one call of [`simulate_many`] and what every part shares.
+struct Many<'a> {
+    scenarios: &'a [Scenario],
+    config: &'a IntegratorConfig,
+    options: &'a RunOptions<'a>,
+    tally: Option<std::sync::Arc<super::tally::Tally>>,
+}
+
+impl Many<'_> {
+    /// The batch kernel's instruction set for these runs and `config`, if
+    /// they can take it: the paper's forces only (`model::media`),
+    /// symplectic Euler or Verlet, a CPU with the instruction set.
+    fn batch_isa(&self, config: &IntegratorConfig) -> Option<Isa> {
+        let paper = self.scenarios.iter().all(|sc| sc.ladder.is_paper_model());
+        let kind = config.validated().ok()?.kind;
+        let euler_or_verlet = matches!(
+            kind,
+            IntegratorKind::SymplecticEuler | IntegratorKind::Verlet
+        );
+        batch_isa(self.options.stepping).filter(|_| paper && euler_or_verlet)
+    }
+
+    /// One run on its own ([`super::run`] without samples; as the batch
+    /// kernel, the wave tracker fed at the checks).
+    fn one(
+        &self,
+        sc: &Scenario,
+        config: &IntegratorConfig,
+        stepping: Stepping,
+    ) -> Result<Trajectory> {
+        let options = self.options.stepping(stepping).every_step(false);
+        super::tally::within(self.tally.clone(), || super::run(sc, &[], config, &options))
+    }
+
+    /// The runs `indices` one by one, every core taking the next of the
+    /// list as it finishes one (in the list's order).
+    fn one_by_one(
+        &self,
+        indices: &[usize],
+        config: &IntegratorConfig,
+        stepping: Stepping,
+    ) -> Vec<(usize, Result<Trajectory>)> {
         let next = AtomicUsize::new(0);
-        let workers = threads.clamp(1, queue.len());
+        let workers = rayon::current_num_threads().clamp(1, indices.len().max(1));
+        let done: Vec<Vec<(usize, Result<Trajectory>)>> = (0..workers)
+            .into_par_iter()
+            .map(|_| {
+                let mut out = Vec::new();
+                while let Some(&i) = indices.get(next.fetch_add(1, Ordering::Relaxed)) {
+                    out.push((i, self.one(&self.scenarios[i], config, stepping)));
+                }
+                out
+            })
+            .collect();
+        done.into_iter().flatten().collect()
+    }
+
+    /// The runs `queue` (all of one N) in the lanes of the batch kernel,
+    /// one vector of lanes per core.
+    fn in_lanes(
+        &self,
+        isa: Isa,
+        config: &IntegratorConfig,
+        queue: &[usize],
+    ) -> Vec<(usize, Result<Trajectory>)> {
+        let next = AtomicUsize::new(0);
+        let workers = rayon::current_num_threads().clamp(1, queue.len());
         let job = Job {
             isa,
-            config,
-            stop,
-            scenarios,
+            config: *config,
+            stop: self.options.stop,
+            scenarios: self.scenarios,
             queue,
             next: &next,
         };
         let done: Vec<Vec<(usize, Result<Trajectory>)>> = (0..workers)
             .into_par_iter()
-            .map(|_| super::tally::within(tally.clone(), || job.work()))
+            .map(|_| super::tally::within(self.tally.clone(), || job.work()))
             .collect();
-        for (i, result) in done.into_iter().flatten() {
+        done.into_iter().flatten().collect()
+    }
+
+    /// The results in the order of the scenarios; a run without one (none
+    /// is left out) runs on the portable path.
+    fn in_order(&self, done: Vec<(usize, Result<Trajectory>)>) -> Vec<Result<Trajectory>> {
+        let mut results: Vec<Option<Result<Trajectory>>> =
+            self.scenarios.iter().map(|_| None).collect();
+        for (i, result) in done {
             results[i] = Some(result);
         }
+        results
+            .into_iter()
+            .zip(self.scenarios)
+            .map(|(r, sc)| r.unwrap_or_else(|| self.one(sc, self.config, Stepping::Portable)))
+            .collect()
     }
-    results
-        .into_iter()
-        .zip(scenarios)
-        .map(|(r, sc)| r.unwrap_or_else(|| one(sc, &config, Stepping::Portable)))
-        .collect()
 }
 
 /// With `Stepping::Fastest`, groups of fewer runs of one N than this many

@@ -118,6 +118,7 @@ impl Scenario {
 /// Stiffer or tension-only links are forces of the positions: every
 /// scheme takes them.
 pub fn check_terms(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
+    check_contact_step(ladder, config)?;
     let t = &ladder.terms;
     if !ladder.velocity_dependent()
         || !matches!(
@@ -149,6 +150,27 @@ pub fn check_terms(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
         config.kind.name(),
         what.join(", ")
     )))
+}
+
+/// A fixed RK4 step longer than the contact's stable step
+/// (`model::contact::Contact::rk4_step_bound`) is refused before the run:
+/// every landing corner would ring up until the blocks pass through one
+/// another (docs/experiments.md, "The toy in air").
+fn check_contact_step(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
+    let Some(b) = ladder.built else { return Ok(()) };
+    let Some(c) = b.contact else { return Ok(()) };
+    let bound = c.rk4_step_bound(ladder.blocks(), &b.ribbons.outline);
+    if config.kind == IntegratorKind::Rk4 && config.dt > bound {
+        return Err(Error::bad_input(format!(
+            "dt = {} is longer than the contact's stable step for rk4, 2√2/ω_c = {bound:.4} τ \
+             (ω_c = √(k_c/m_eff) = {:.1} per τ at k_c = {}): a corner landing on a face would \
+             ring up until the blocks pass through each other; use dt <= {bound:.4} or auto",
+            num(config.dt),
+            c.frequency(ladder.blocks(), &b.ribbons.outline),
+            num(c.stiffness),
+        )));
+    }
+    Ok(())
 }
 
 /// `simulate` needs 0 < |α| < 90° (README.md).
@@ -415,6 +437,11 @@ pub fn run(
 /// passes (memory stays proportional to N, however many samples: the
 /// returned trajectory holds none) and ends at t_end or where
 /// `options.stop` says. An error from `sink` ends the run with that error.
+///
+/// Over 80 lines on purpose: one loop over the stop times with its checks
+/// inline (divergence, progress, cap, stop rule), the hot path, where a
+/// split would pass the integrator, the state, the detectors and the watch
+/// from call to call; its prelude and its errors are functions.
 pub fn run_streaming(
     scenario: &Scenario,
     sample_times: &[f64],
@@ -424,22 +451,11 @@ pub fn run_streaming(
 ) -> Result<Trajectory> {
     let config = config.validated()?;
     check_terms(&scenario.ladder, &config)?;
-    // The fused and chain kernels compute the paper's forces only: a
-    // ladder with any term of docs/experiments.md takes the portable path.
-    let stepping = if scenario.ladder.is_paper_model() {
-        options.stepping
-    } else {
-        Stepping::Portable
-    };
+    let stepping = stepping_for(scenario, options);
     let samples = sorted_samples(sample_times, scenario.t_end)?;
     let limits = &options.limits;
     let cost = check_cost_stepped(scenario, samples.len(), &config, limits, stepping)?;
-    // One step per call where every wave's sign changes are timed step by
-    // step (several flips) or the dissipated power is integrated.
-    let every_step = options.dissipation
-        || options
-            .every_step
-            .unwrap_or_else(|| scenario.protocol.drive().is_some_and(|d| d.flips() > 1));
+    let every_step = steps_one_by_one(scenario, options);
     // The cap in this path's own steps (`cost::weight`).
     let max_steps = limits.block_steps / (scenario.ladder.n() as f64 * cost.weight);
     let stops = stop_times(&samples, &scenario.protocol, scenario.t_end);
@@ -455,10 +471,7 @@ pub fn run_streaming(
     let mut steps = 0;
     let mut t = 0.0;
     let mut next_sample = 0;
-    // The energy dissipated so far, and the power at the last step's end.
-    let power = |st: &State| trajectory::dissipated_power(ladder, &st.q, &st.v);
-    let mut dissipated = options.dissipation.then_some(0.0);
-    let mut last_power = if options.dissipation { power(&st) } else { 0.0 };
+    let mut dissipated = Dissipated::new(ladder, options.dissipation, &st);
     // The stop rule, asked at every check and at every stop time.
     let stop_here = |t, st: &State, arrivals: &ArrivalDetector, waves: &WaveTracker| {
         (options.stop)(&StopView {
@@ -470,7 +483,7 @@ pub fn run_streaming(
             waves,
         })
     };
-    emit_due(&samples, &mut next_sample, t, &st, dissipated, sink)?;
+    emit_due(&samples, &mut next_sample, t, &st, dissipated.total, sink)?;
     'run: for &stop_at in &stops {
         while t < stop_at {
             let budget = if every_step {
@@ -481,18 +494,9 @@ pub fn run_streaming(
             let (t_new, taken) =
                 integrator.advance_many(&mut rhs, &mut st, (t, stop_at), budget, &mut arrivals)?;
             if taken > 0 && t_new <= t {
-                return Err(Error::failed(format!(
-                    "time stopped advancing at t = {} τ ({}): the step is below the rounding of t",
-                    num(t),
-                    config.describe_step()
-                )));
+                return Err(stalled(t, &config));
             }
-            if let Some(d) = dissipated.as_mut() {
-                // The trapezoidal rule over the step just taken.
-                let p = power(&st);
-                *d += 0.5 * (last_power + p) * (t_new - t);
-                last_power = p;
-            }
+            dissipated.step(&st, t_new - t);
             t = t_new;
             steps += taken;
             if every_step {
@@ -505,22 +509,8 @@ pub fn run_streaming(
                 watch.check(&rhs, &st, t)?;
                 (options.progress)(t);
                 if steps as f64 > max_steps {
-                    return Err(Error::Limit(crate::limits::LimitExceeded {
-                        resource: Resource::BlockSteps,
-                        value: steps as f64 * ladder.n() as f64 * cost.weight,
-                        cap: limits.block_steps,
-                        detail: format!(
-                            "{} steps by t = {} of t_end = {} × N = {}{}, and counting",
-                            steps,
-                            num(t),
-                            num(scenario.t_end),
-                            ladder.n(),
-                            cost::weighed(
-                                &cost::Path::of(ladder, config.kind, stepping),
-                                steps as f64 * ladder.n() as f64 * cost.weight
-                            )
-                        ),
-                    }));
+                    let path = cost::Path::of(ladder, config.kind, stepping);
+                    return Err(over_cap(scenario, &path, cost.weight, steps, t, limits));
                 }
                 if stop_here(t, &st, &arrivals, &tracker) {
                     break 'run;
@@ -531,7 +521,7 @@ pub fn run_streaming(
             tracker.observe(t, &st.q, &st.v, &arrivals.arrival);
         }
         watch.check(&rhs, &st, t)?;
-        emit_due(&samples, &mut next_sample, t, &st, dissipated, sink)?;
+        emit_due(&samples, &mut next_sample, t, &st, dissipated.total, sink)?;
         if stop_here(t, &st, &arrivals, &tracker) {
             break;
         }
@@ -541,6 +531,96 @@ pub fn run_streaming(
     let mut traj = Trajectory::finished(st, t, arrivals.arrival, steps, rhs.force_evals);
     traj.waves = waves;
     Ok(traj)
+}
+
+/// The energy dissipated so far (`None` when not asked for): the
+/// trapezoidal rule over each step of the dissipated power at its ends.
+struct Dissipated<'a> {
+    ladder: &'a Ladder,
+    total: Option<f64>,
+    /// The power at the last step's end.
+    last_power: f64,
+}
+
+impl<'a> Dissipated<'a> {
+    fn new(ladder: &'a Ladder, on: bool, st: &State) -> Self {
+        let last_power = if on { Self::power(ladder, st) } else { 0.0 };
+        Self {
+            ladder,
+            total: on.then_some(0.0),
+            last_power,
+        }
+    }
+
+    fn power(ladder: &Ladder, st: &State) -> f64 {
+        trajectory::dissipated_power(ladder, &st.q, &st.v)
+    }
+
+    /// Adds the step of length `dt` just taken, which ended at `st`.
+    fn step(&mut self, st: &State, dt: f64) {
+        if let Some(d) = self.total.as_mut() {
+            let p = Self::power(self.ladder, st);
+            *d += 0.5 * (self.last_power + p) * dt;
+            self.last_power = p;
+        }
+    }
+}
+
+/// The path a run takes: the fused and chain kernels compute the paper's
+/// forces only, so a ladder with any term of docs/experiments.md takes the
+/// portable path whatever `options` ask.
+fn stepping_for(scenario: &Scenario, options: &RunOptions) -> Stepping {
+    if scenario.ladder.is_paper_model() {
+        options.stepping
+    } else {
+        Stepping::Portable
+    }
+}
+
+/// Whether the run loop goes one step per call: where every wave's sign
+/// changes are timed step by step (a drive of several flips) or the
+/// dissipated power is integrated.
+fn steps_one_by_one(scenario: &Scenario, options: &RunOptions) -> bool {
+    options.dissipation
+        || options
+            .every_step
+            .unwrap_or_else(|| scenario.protocol.drive().is_some_and(|d| d.flips() > 1))
+}
+
+/// The error of a run whose time no longer advances at `t`.
+fn stalled(t: f64, config: &IntegratorConfig) -> Error {
+    Error::failed(format!(
+        "time stopped advancing at t = {} τ ({}): the step is below the rounding of t",
+        num(t),
+        config.describe_step()
+    ))
+}
+
+/// The cap's error of a run that has taken `steps` steps of `weight`
+/// (`cost::weight`) on `path` by `t`, past the cap on block-steps.
+fn over_cap(
+    scenario: &Scenario,
+    path: &cost::Path,
+    weight: f64,
+    steps: u64,
+    t: f64,
+    limits: &Limits,
+) -> Error {
+    let n = scenario.ladder.n();
+    let value = steps as f64 * n as f64 * weight;
+    Error::Limit(crate::limits::LimitExceeded {
+        resource: Resource::BlockSteps,
+        value,
+        cap: limits.block_steps,
+        detail: format!(
+            "{} steps by t = {} of t_end = {} × N = {}{}, and counting",
+            steps,
+            num(t),
+            num(scenario.t_end),
+            n,
+            cost::weighed(path, value)
+        ),
+    })
 }
 
 /// Hands `sink` the state for every sample time not after `t` not yet

@@ -196,38 +196,65 @@ fn round(points: &[Prepared], jobs: &[Job]) -> Result<Vec<std::result::Result<De
     for (k, job) in jobs.iter().enumerate() {
         groups.entry(key(job)).or_default().push(k);
     }
+    // The groups side by side on every core (a group of one run, as each
+    // N of a chain-length sweep is, would otherwise hold one core), the
+    // longest chains first.
+    let mut groups: Vec<Vec<usize>> = groups.into_values().collect();
+    groups.sort_by_key(|m| std::cmp::Reverse(points[jobs[m[0]].point].scenario.ladder.n()));
+    let tally = sim::tally::current();
+    let done: Vec<Result<Vec<GroupRun>>> = groups
+        .par_iter()
+        .with_max_len(1)
+        .map(|members| sim::tally::within(tally.clone(), || round_group(points, jobs, members)))
+        .collect();
     let mut out: Vec<Option<std::result::Result<Decided, String>>> =
         jobs.iter().map(|_| None).collect();
-    for members in groups.values() {
-        let first = &jobs[members[0]];
-        let rule = points[first.point].rule;
-        let scenarios: Vec<Scenario> = members
-            .iter()
-            .map(|&k| points[jobs[k].point].scenario.clone())
-            .collect();
-        // The rest proof only once the arrivals alone do not decide (it
-        // returns at once while the ladder moves).
-        let stop = |v: &sim::StopView| {
-            rule.decide(v.arrivals, v.t, false).is_some()
-                || (v.t >= rule.drive_end && rule.at_rest(v.ladder, v.q, v.v))
-        };
-        let options = sim::RunOptions::default()
-            .limits(points[first.point].limits)
-            .stop(&stop);
-        let runs = sim::batch::simulate_many(&scenarios, &first.config, &options);
-        for (&k, run) in members.iter().zip(runs) {
-            out[k] = Some(match run {
-                Ok(traj) => Ok(decided(&rule, &points[jobs[k].point].scenario, traj)),
-                Err(Error::Failed(msg)) => Err(msg),
-                Err(Error::Diverged(d)) => Err(d.facts()),
-                Err(e) => return Err(e),
-            });
+    for group in done {
+        for (k, run) in group? {
+            out[k] = Some(run);
         }
     }
     Ok(out
         .into_iter()
         .map(|r| r.expect("every job belongs to one group"))
         .collect())
+}
+
+/// A job of a group (its index into a round's jobs) and how it ended.
+type GroupRun = (usize, std::result::Result<Decided, String>);
+
+/// The jobs `members` of one group of [`round`] (one configuration and
+/// rule) through the batch kernel, with their indices into `jobs`.
+fn round_group(points: &[Prepared], jobs: &[Job], members: &[usize]) -> Result<Vec<GroupRun>> {
+    let first = &jobs[members[0]];
+    let rule = points[first.point].rule;
+    let scenarios: Vec<Scenario> = members
+        .iter()
+        .map(|&k| points[jobs[k].point].scenario.clone())
+        .collect();
+    // The rest proof only once the arrivals alone do not decide (it
+    // returns at once while the ladder moves).
+    let stop = |v: &sim::StopView| {
+        rule.decide(v.arrivals, v.t, false).is_some()
+            || (v.t >= rule.drive_end && rule.at_rest(v.ladder, v.q, v.v))
+    };
+    let options = sim::RunOptions::default()
+        .limits(points[first.point].limits)
+        .stop(&stop);
+    let runs = sim::batch::simulate_many(&scenarios, &first.config, &options);
+    let mut out = Vec::with_capacity(members.len());
+    for (&k, run) in members.iter().zip(runs) {
+        out.push((
+            k,
+            match run {
+                Ok(traj) => Ok(decided(&rule, &points[jobs[k].point].scenario, traj)),
+                Err(Error::Failed(msg)) => Err(msg),
+                Err(Error::Diverged(d)) => Err(d.facts()),
+                Err(e) => return Err(e),
+            },
+        ));
+    }
+    Ok(out)
 }
 
 /// The decision a run stopped on: propagation from its arrival times,
@@ -324,11 +351,27 @@ fn diverged_blank(n: usize) -> RunResult {
     }
 }
 
+/// Each point's result so far (`None`: not yet decided) and, for an
+/// `auto` point, its verification's state.
+type Progress = (Vec<Option<RunResult>>, Vec<Option<AutoState>>);
+
 /// [`run_points`] for the points that started.
 fn run_prepared(points: Vec<Prepared>) -> Result<Vec<RunResult>> {
+    let (mut results, mut auto) = first_round(&points)?;
+    // Rounds 1..: each unverified point's run at half its step.
+    while halving_round(&points, &mut results, &mut auto)? {}
+    finish_unverified(&points, &mut results, auto);
+    Ok(results
+        .into_iter()
+        .map(|r| r.expect("every point has a result"))
+        .collect())
+}
+
+/// Round 0: every point's first integration. A fixed-step point is then
+/// decided; an `auto` point holds its coarse run for the next round.
+fn first_round(points: &[Prepared]) -> Result<Progress> {
     let mut results: Vec<Option<RunResult>> = points.iter().map(|_| None).collect();
     let mut auto: Vec<Option<AutoState>> = points.iter().map(|_| None).collect();
-    // Round 0: every point's first integration.
     let jobs: Vec<Job> = points
         .iter()
         .enumerate()
@@ -340,7 +383,7 @@ fn run_prepared(points: Vec<Prepared>) -> Result<Vec<RunResult>> {
             },
         })
         .collect();
-    for (job, attempt) in jobs.iter().zip(round(&points, &jobs)?) {
+    for (job, attempt) in jobs.iter().zip(round(points, &jobs)?) {
         let p = &points[job.point];
         match p.method {
             Method::Fixed(config) => {
@@ -369,59 +412,88 @@ fn run_prepared(points: Vec<Prepared>) -> Result<Vec<RunResult>> {
             }
         }
     }
-    // Rounds 1..: each unverified point's run at half its step.
-    loop {
-        let jobs: Vec<Job> = auto
-            .iter()
-            .enumerate()
-            .filter_map(|(point, a)| {
-                let a = a.as_ref()?;
-                (results[point].is_none() && a.halvings < MAX_HALVINGS).then(|| Job {
-                    point,
-                    config: verlet(0.5 * a.dt),
-                })
+    Ok((results, auto))
+}
+
+/// One round of `auto`: each point not yet verified (and with halvings
+/// left) runs at half its step; a point whose two runs agree is decided.
+/// Whether any point ran.
+fn halving_round(
+    points: &[Prepared],
+    results: &mut [Option<RunResult>],
+    auto: &mut [Option<AutoState>],
+) -> Result<bool> {
+    let jobs: Vec<Job> = auto
+        .iter()
+        .enumerate()
+        .filter_map(|(point, a)| {
+            let a = a.as_ref()?;
+            (results[point].is_none() && a.halvings < MAX_HALVINGS).then(|| Job {
+                point,
+                config: verlet(0.5 * a.dt),
             })
-            .collect();
-        if jobs.is_empty() {
-            break;
-        }
-        for (job, attempt) in jobs.iter().zip(round(&points, &jobs)?) {
-            let state = auto[job.point].as_mut().expect("an auto point");
-            state.halvings += 1;
-            let fine = match attempt {
-                Ok(f) => f,
-                Err(m) => {
-                    state.last_error = m;
-                    state.dt *= 0.5;
-                    state.coarse = None;
-                    continue;
-                }
-            };
-            state.total += fine.force_evals;
-            if let Some(coarse) = &state.coarse {
-                let upto = coarse.decision.t_decided.min(fine.decision.t_decided);
-                let difference = sim::auto::arrival_difference(
-                    &coarse.arrival_times,
-                    &fine.arrival_times,
-                    upto,
-                    state.tolerance,
-                );
-                if coarse.decision.outcome == fine.decision.outcome && difference <= state.tolerance
-                {
-                    results[job.point] = Some(from_decided(
-                        &fine,
-                        &job.config,
-                        Some(difference / 3.0),
-                        state.total,
-                    ));
-                    continue;
+        })
+        .collect();
+    if jobs.is_empty() {
+        return Ok(false);
+    }
+    for (job, attempt) in jobs.iter().zip(round(points, &jobs)?) {
+        let state = auto[job.point].as_mut().expect("an auto point");
+        state.halvings += 1;
+        match attempt {
+            Ok(fine) => {
+                if let Some(r) = compare_halves(state, fine, &job.config) {
+                    results[job.point] = Some(r);
                 }
             }
-            state.coarse = Some(fine);
-            state.dt *= 0.5;
+            Err(m) => {
+                state.last_error = m;
+                state.dt *= 0.5;
+                state.coarse = None;
+            }
         }
     }
-    // The points `auto` could not verify, as `verified` ends.
+    Ok(true)
+}
+
+/// `fine` (the run at half the step of `state`'s coarse run) against the
+/// coarse run: the verified record when they agree (same outcome,
+/// arrivals within the tolerance), else `None` with `fine` kept as the
+/// next round's coarse run.
+fn compare_halves(
+    state: &mut AutoState,
+    fine: Decided,
+    config: &IntegratorConfig,
+) -> Option<RunResult> {
+    state.total += fine.force_evals;
+    if let Some(coarse) = &state.coarse {
+        let upto = coarse.decision.t_decided.min(fine.decision.t_decided);
+        let difference = sim::auto::arrival_difference(
+            &coarse.arrival_times,
+            &fine.arrival_times,
+            upto,
+            state.tolerance,
+        );
+        if coarse.decision.outcome == fine.decision.outcome && difference <= state.tolerance {
+            return Some(from_decided(
+                &fine,
+                config,
+                Some(difference / 3.0),
+                state.total,
+            ));
+        }
+    }
+    state.coarse = Some(fine);
+    state.dt *= 0.5;
+    None
+}
+
+/// The points `auto` could not verify, recorded as `verified` ends them.
+fn finish_unverified(
+    points: &[Prepared],
+    results: &mut [Option<RunResult>],
+    auto: Vec<Option<AutoState>>,
+) {
     for (point, state) in auto.into_iter().enumerate() {
         let Some(state) = state else { continue };
         if results[point].is_some() {
@@ -442,10 +514,6 @@ fn run_prepared(points: Vec<Prepared>) -> Result<Vec<RunResult>> {
             ),
         });
     }
-    Ok(results
-        .into_iter()
-        .map(|r| r.expect("every point has a result"))
-        .collect())
 }
 
 /// The record of a decided run.

@@ -1,7 +1,8 @@
 //! What a newcomer meets outside the program: the inertia's unit
 //! in parameter lines, docs/model.md's value of a, no tracked Python
 //! caches, a release profile without full debug info, and `src/lib.rs`'s
-//! floors those `scripts/check-layers` enforces. (Names,
+//! floors those `scripts/check-layers` enforces, and the wheel built on
+//! the tests' build of the library (the same features). (Names,
 //! messages, completions, man page, gallery and MP4 PSNR: tests/integration/names.rs,
 //! tests/integration/messages.rs, tests/integration/cli.rs, tests/integration/gallery.rs, tests/integration/mp4_quality.rs.)
 
@@ -114,4 +115,51 @@ fn the_floors_lib_rs_lists_are_the_ones_check_layers_enforces() {
         listed, enforced,
         "src/lib.rs's floors against scripts/check-layers's"
     );
+}
+
+/// Each package's features as `cargo tree` resolves them for `manifest`
+/// with the edge kinds `edges`: "name version" → "f1,f2".
+fn resolved_features(
+    manifest: &str,
+    edges: &str,
+) -> Option<std::collections::BTreeMap<String, String>> {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let out = std::process::Command::new(cargo)
+        .args(["tree", "--manifest-path", manifest, "-e", edges])
+        .args(["-f", "{p}|{f}", "--prefix", "none", "--no-dedupe"])
+        .output()
+        .ok()
+        .filter(|o| o.status.success())?;
+    let text = String::from_utf8(out.stdout).ok()?;
+    let row = |l: &str| {
+        let (p, f) = l.split_once('|')?;
+        let p = p.split(" (").next()?.trim().to_string();
+        Some((p, f.trim().to_string()))
+    };
+    Some(text.lines().filter_map(row).collect())
+}
+
+/// The Python binding's crate (python/, its own workspace) and the main
+/// crate's tests resolve every shared dependency with the same features,
+/// so that the wheel `scripts/test` builds into the same target/ reuses
+/// the tests' build of the library (the pins in both Cargo.toml files)
+/// instead of compiling it and its dependencies again.
+#[test]
+fn the_wheel_shares_the_tests_build_of_the_library() {
+    let main = resolved_features(&format!("{ROOT}/Cargo.toml"), "normal,build,dev");
+    let python = resolved_features(&format!("{ROOT}/python/Cargo.toml"), "normal,build");
+    let (Some(main), Some(python)) = (main, python) else {
+        let test = "the_wheel_shares_the_tests_build_of_the_library";
+        let what = "`cargo tree` could not resolve both workspaces";
+        let hint = "it needs the crates.io index or the crates in the cargo cache";
+        crate::common::require::require(test, false, what, hint);
+        return;
+    };
+    let differ: Vec<String> = main
+        .iter()
+        .filter_map(|(p, f)| python.get(p).filter(|g| *g != f).map(|g| (p, f, g)))
+        .map(|(p, f, g)| format!("{p}: tests [{f}], wheel [{g}]"))
+        .collect();
+    assert!(python.contains_key("jacobs-ladder v0.1.0"), "{python:?}");
+    assert!(differ.is_empty(), "features differ: {differ:#?}");
 }

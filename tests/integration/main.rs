@@ -68,5 +68,6 @@ mod sweep_caps;
 mod theory;
 mod theory_data;
 mod timings;
+mod toy;
 mod waves;
 mod write_failures;

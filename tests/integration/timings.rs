@@ -10,22 +10,27 @@ use std::collections::BTreeMap;
 /// One row of the table: runs and block-steps.
 type Row = (u64, u64);
 
-/// The rows of the table, by "kind name", and the whole render's row.
-fn parse(table: &str) -> (BTreeMap<String, Row>, Row) {
+/// The rows of the table (output, wall, CPU, runs, block-steps), by "kind
+/// name", with their CPU seconds; and the whole render's row and CPU.
+fn parse(table: &str) -> (BTreeMap<String, (Row, f64)>, (Row, f64)) {
     let mut rows = BTreeMap::new();
     let mut whole = None;
     for line in table.lines().skip(1) {
         let words: Vec<&str> = line.split_whitespace().collect();
-        if words.len() < 5 || words[words.len() - 3].parse::<f64>().is_err() {
+        let n = words.len();
+        if n < 6 || words[n - 4].parse::<f64>().is_err() {
             continue;
         }
-        let n = words.len();
         let row = (words[n - 2].parse().unwrap(), words[n - 1].parse().unwrap());
-        let name = words[..n - 3].join(" ");
+        let cpu: f64 = words[n - 3].parse().unwrap();
+        let name = words[..n - 4].join(" ");
         if name == "whole render" {
-            whole = Some(row);
+            whole = Some((row, cpu));
         } else {
-            assert!(rows.insert(name, row).is_none(), "a row twice:\n{table}");
+            assert!(
+                rows.insert(name, (row, cpu)).is_none(),
+                "a row twice:\n{table}"
+            );
         }
     }
     (rows, whole.expect("the whole render's row"))
@@ -68,17 +73,24 @@ fn the_table_lists_every_output_and_the_runs_each_made() {
     assert_eq!(rows.len(), entries.len(), "{table}");
     for e in entries {
         let name = format!("{} {}", e.kind().name(), e.scene.name);
-        let (runs, block_steps) = rows[&name];
+        let ((runs, block_steps), _) = rows[&name];
         let simulated = e.scene.fidelity() == Fidelity::Simulation;
         assert_eq!(runs > 0, simulated, "{name}:\n{table}");
         assert_eq!(block_steps > 0, simulated, "{name}:\n{table}");
     }
     // Every run of the render is some output's, counted once: also those
     // spread over the cores in rayon's tasks.
-    let runs: u64 = rows.values().map(|r| r.0).sum();
-    let block_steps: u64 = rows.values().map(|r| r.1).sum();
-    assert_eq!(whole, (runs, block_steps), "{table}");
+    let runs: u64 = rows.values().map(|r| r.0.0).sum();
+    let block_steps: u64 = rows.values().map(|r| r.0.1).sum();
+    assert_eq!(whole.0, (runs, block_steps), "{table}");
     assert!(table.contains("runs outside any output: 0"), "{table}");
+    // The outputs' CPU times are parts of the process's (each thread's
+    // time charged to one output at a time): they add up to no more than
+    // it, within the process clock's tick of 10 ms a thread.
+    let cpu: f64 = rows.values().map(|r| r.1).sum();
+    assert!(cpu <= whole.1 + 0.05, "outputs' CPU {cpu} s:\n{table}");
+    let simulated = |name: &str| rows[name].1 > 0.0;
+    assert!(simulated("movie 4") && simulated("figure phase"), "{table}");
 
     // Fig. 1c is one automatic-step run of N blocks: its row is that run's
     // halvings, read from its data file.
@@ -90,5 +102,5 @@ fn the_table_lists_every_output_and_the_runs_each_made() {
     let n = run["model"]["n"].as_u64().unwrap();
     let expected = verified_runs(run, n);
     assert!(expected.0 >= 2, "a verified run is at least a pair");
-    assert_eq!(rows["figure 1c"], expected, "{table}");
+    assert_eq!(rows["figure 1c"].0, expected, "{table}");
 }

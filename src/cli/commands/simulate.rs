@@ -45,19 +45,7 @@ pub(crate) fn simulate(args: &SimulateArgs, call: &Call<'_>) -> Result<()> {
     // first (`scenes::cost`).
     scenes::cost::check_with_stiff(&scene, samples.len())?;
     let stepping = args.kernel.stepping()?;
-    let sidecar = args.csv.as_deref().map(csv_sidecar);
-    let targets: Vec<(std::path::PathBuf, String)> = [
-        (&args.csv, "--csv"),
-        (&sidecar, "--csv's JSON sidecar"),
-        (&args.npz, "--npz"),
-    ]
-    .into_iter()
-    .filter_map(|(p, flag)| Some((p.clone()?, flag.to_string())))
-    .collect();
-    output::check_distinct(&targets, "give each its own file")?;
-    for (path, _) in &targets {
-        output::check_writable(path)?;
-    }
+    let sidecar = check_targets(args)?;
     let start = Instant::now();
     let bar = time_bar(scene.run.t_end);
     let progress = |t: f64| bar.set_position(bar.position().max(t as u64));
@@ -103,22 +91,45 @@ pub(crate) fn simulate(args: &SimulateArgs, call: &Call<'_>) -> Result<()> {
         stiff_links,
     };
     if let Some(path) = &sidecar {
-        // The CSV's provenance (docs/formats.md): the report without its
-        // wall time, so that the file is the same on every run.
-        let mut value = serde_json::to_value(&report)
-            .map_err(|e| Error::failed(format!("cannot encode the CSV's sidecar: {e}")))?;
-        if let Some(m) = value.as_object_mut() {
-            m.remove("wall_seconds");
-        }
-        output::write_atomic_with(path, |f| {
-            scenes::data::write_json(&mut std::io::BufWriter::new(f), &value)
-        })?;
+        write_sidecar(path, &report)?;
     }
     if args.json {
         output::print(&format!("{}\n", to_json(&report)?))
     } else {
         output::print(&simulate_table(&report, &params))
     }
+}
+
+/// The files `simulate` writes (--csv, its JSON sidecar, --npz), checked
+/// distinct and writable before the run; the sidecar's path.
+fn check_targets(args: &SimulateArgs) -> Result<Option<std::path::PathBuf>> {
+    let sidecar = args.csv.as_deref().map(csv_sidecar);
+    let targets: Vec<(std::path::PathBuf, String)> = [
+        (&args.csv, "--csv"),
+        (&sidecar, "--csv's JSON sidecar"),
+        (&args.npz, "--npz"),
+    ]
+    .into_iter()
+    .filter_map(|(p, flag)| Some((p.clone()?, flag.to_string())))
+    .collect();
+    output::check_distinct(&targets, "give each its own file")?;
+    for (path, _) in &targets {
+        output::check_writable(path)?;
+    }
+    Ok(sidecar)
+}
+
+/// The CSV's provenance (docs/formats.md): the report without its wall
+/// time, so that the file is the same on every run.
+fn write_sidecar(path: &std::path::Path, report: &SimulateReport<'_>) -> Result<()> {
+    let mut value = serde_json::to_value(report)
+        .map_err(|e| Error::failed(format!("cannot encode the CSV's sidecar: {e}")))?;
+    if let Some(m) = value.as_object_mut() {
+        m.remove("wall_seconds");
+    }
+    output::write_atomic_with(path, |f| {
+        scenes::data::write_json(&mut std::io::BufWriter::new(f), &value)
+    })
 }
 
 /// The scene of `ladder simulate`: a data scene with `simulate`'s run
