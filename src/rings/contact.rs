@@ -156,9 +156,6 @@ pub fn touches_at(
         if d2[j] > prev || d2[j] > next || d2[j] >= gate {
             continue;
         }
-        if no_contact_between(d2[j], prev.min(next), 2.0 * slack, reach) {
-            continue;
-        }
         let Some(t) = refine(a, b, (table[j], points[j]), d2[j].sqrt(), reach) else {
             continue;
         };
@@ -194,17 +191,6 @@ pub fn touches_at(
     for t in found.iter().take(MAX_CONTACTS).flatten() {
         out(*t);
     }
-}
-
-/// Whether no point within one sample spacing Δ (arc RΔ = `arc`) of a
-/// sample at squared distance `d2` can come within `reach`, given the
-/// nearer neighbour's squared distance `d2_side` (≥ `d2`): the distance
-/// is 1-Lipschitz in space and a point moves at most RΔ between samples,
-/// so between a sample at d and one at d' it stays above (d + d' − RΔ)/2.
-/// [`refine`] moves its point less than Δ from the sample, so a minimum
-/// this rules out would refine to no contact: skipping it changes no bit.
-fn no_contact_between(d2: f64, d2_side: f64, arc: f64, reach: f64) -> bool {
-    0.5 * (d2.sqrt() + d2_side.sqrt() - arc) - ROUNDING >= reach
 }
 
 /// [`touches_into`] as a vector.
