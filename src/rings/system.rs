@@ -241,8 +241,7 @@ impl System {
     /// With `release`, at `turn.start` the hand takes ring held + 1 where
     /// it is (stopped) and lets the held ring go.
     fn pass_hand(&mut self) {
-        if self.chain.release && self.held == self.chain.held && self.t >= self.chain.turn.start
-        {
+        if self.chain.release && self.held == self.chain.held && self.t >= self.chain.turn.start {
             let k = self.held + 1;
             let b = self.bodies[k];
             self.hand.grip = Some(Body {
