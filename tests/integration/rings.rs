@@ -264,6 +264,9 @@ fn the_same_scene_gives_the_same_bytes_on_one_and_two_threads() {
         let json: serde_json::Value =
             serde_json::from_slice(&std::fs::read(sub.join("movie-chain.json")).unwrap()).unwrap();
         assert!(json["rings"]["guard_checks"].as_u64().unwrap() > 0);
+        // An untitled ring scene is titled from its chain, not as a ladder.
+        let title = json["title"].as_str().unwrap();
+        assert!(title.starts_with("a ring chain: 10 rings"), "{title}");
         outs.push((gif, png, json["rings"].clone()));
     }
     assert!(
