@@ -701,3 +701,48 @@ fn the_whole_catalogue_renders_at_the_print_styles() {
         assert!(dir.join("movie-5-kymograph.pdf").is_file(), "{style}");
     }
 }
+
+/// A one-parameter sweep at `slide` is drawn at the slide's own size,
+/// never refused there (docs/formats.md "Two columns on a slide"): the
+/// pinning and chain-length sweeps and a plain sweep over α were refused
+/// naming 11.01 in and 11.71 in of height, one column of four panels at
+/// 20 pt being taller than the 7.5 in page. The front goes left, the
+/// other panels are stacked right of it.
+#[test]
+fn one_parameter_sweeps_at_slide_are_drawn_at_the_slides_size() {
+    let dir = tempdir("slide-sweeps");
+    let runs: [&[&str]; 3] = [
+        &["figure", "pinning", "--style", "slide", "--format", "pdf"],
+        &[
+            "figure",
+            "chain-length",
+            "--style",
+            "slide",
+            "--format",
+            "pdf",
+        ],
+        &[
+            "sweep",
+            "--alpha=48:68:10",
+            "--n",
+            "9",
+            "--style",
+            "slide",
+            "--format",
+            "pdf",
+        ],
+    ];
+    for args in runs {
+        let out = Command::new(env!("CARGO_BIN_EXE_ladder"))
+            .args(args)
+            .arg("--out")
+            .arg(&dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+}

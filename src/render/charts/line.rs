@@ -4,7 +4,7 @@
 use super::glyph::Glyph;
 use super::legend::{
     auto_legend, below_grid, draw_below_legend, draw_legend, draw_outside_legend, has_labels,
-    legend_box,
+    legend_box, outside_too_wide,
 };
 use super::ranges::{Range2, data_range, equalize, runs};
 use super::title::{fit_title, titled};
@@ -121,9 +121,7 @@ fn layout(
         // A column right of the plot that would take more than a third of
         // the chart goes under the plot instead, in columns: the plot keeps
         // its width, the text its size.
-        if pass.legend == Legend::Outside
-            && legend_box(theme, spec).0 as u32 + theme.legend_gap_min > width / 3
-        {
+        if pass.legend == Legend::Outside && outside_too_wide(theme, spec, width) {
             pass.legend = Legend::Below;
         }
         if pass.legend == Legend::Outside && spec.equal_aspect {
