@@ -165,7 +165,7 @@ fn figures_asked_without_png_still_show_a_png_preview() {
     let dir = &crate::common::catalogue_render().0;
     assert!(!crate::common::CATALOGUE_FORMATS.contains("png"));
     let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
-    let written = check_links(&dir, &html);
+    let written = check_links(dir, &html);
     assert!(!written.contains("figure-3.png"), "a PNG nobody asked for");
     let cards = cards(&html);
     assert!(cards.len() >= 22, "{} cards", cards.len());
