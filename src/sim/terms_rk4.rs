@@ -23,7 +23,8 @@
 //! with the library's frames ([`TermsRk4::with_library_frames`]) the
 //! trajectory is the portable path's bit for bit (`tests` below).
 
-use super::integrators::{Plan, RK4};
+use super::stepping::Plan;
+use super::tableau::RK4;
 use super::observables::ArrivalDetector;
 use super::rhs::{Rhs, State};
 use super::stepping::Stepping;

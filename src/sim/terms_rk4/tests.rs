@@ -4,7 +4,7 @@ use super::*;
 use crate::model::Ladder;
 use crate::model::Params;
 use crate::model::terms::Terms;
-use crate::sim::integrators::{IntegratorConfig, IntegratorKind};
+use crate::sim::{IntegratorConfig, IntegratorKind};
 use crate::sim::protocol::{Drive, Protocol};
 
 /// The water tank's ladder (N = 11, α = 86°, b = 1.5, added mass, added
