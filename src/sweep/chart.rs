@@ -545,12 +545,8 @@ fn phase_chart(
     title: &str,
 ) -> (CellChart, Param, Param) {
     let varied = plan.varied();
-    // α across when it is one of the two.
-    let (ix, iy) = if varied[1].1 == Param::Alpha {
-        (1, 0)
-    } else {
-        (0, 1)
-    };
+    let alpha_second = varied[1].1 == Param::Alpha;
+    let (ix, iy) = if alpha_second { (1, 0) } else { (0, 1) };
     let (kx, px, xs) = varied[ix];
     let (ky, py, ys) = varied[iy];
     let sorted = |v: &[f64]| {
