@@ -1057,7 +1057,11 @@ fn ribbons_from_the_command_line_hang_the_column() {
             String::from_utf8_lossy(&out.stderr)
         );
         let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-        assert_eq!(v["model"]["alpha"].as_f64(), Some(column), "--alpha {alpha}");
+        assert_eq!(
+            v["model"]["alpha"].as_f64(),
+            Some(column),
+            "--alpha {alpha}"
+        );
     }
     // The user's own α is still checked.
     let out = ladder_cli(&[

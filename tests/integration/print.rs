@@ -895,7 +895,7 @@ fn figure_4a_marks_kinks_and_antikinks_in_figure_3s_colours() {
         .skip(1)
         .filter_map(|t| {
             let fill = t.split("fill=\"").nth(1)?[..7].to_lowercase();
-            let word = t.split('>').nth(1)?.trim().to_string();
+            let word = t.split('>').nth(1)?.split('<').next()?.trim().to_string();
             Some((word, fill))
         })
         .filter(|(w, _)| w == "kink" || w == "antikink")
