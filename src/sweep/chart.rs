@@ -536,14 +536,17 @@ fn cell_marker(theme: &Theme, o: Outcome) -> Marker {
     }
 }
 
-fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
+/// The phase diagram's cells (α across when it is one of the two
+/// parameters varied), with the parameters across and up.
+fn phase_chart(
+    theme: &Theme,
+    plan: &Plan,
+    records: &[Record],
+    title: &str,
+) -> (CellChart, Param, Param) {
     let varied = plan.varied();
-    // α across when it is one of the two.
-    let (ix, iy) = if varied[1].1 == Param::Alpha {
-        (1, 0)
-    } else {
-        (0, 1)
-    };
+    let alpha_second = varied[1].1 == Param::Alpha;
+    let (ix, iy) = if alpha_second { (1, 0) } else { (0, 1) };
     let (kx, px, xs) = varied[ix];
     let (ky, py, ys) = varied[iy];
     let sorted = |v: &[f64]| {
@@ -562,7 +565,7 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
         title: Some(title.to_string()),
         x_label: px.label().into(),
         y_label: py.label().into(),
-        xs: xs.clone(),
+        xs,
         ys,
         cells,
         legend: present
@@ -575,6 +578,12 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
         shade,
         plot_x: None,
     };
+    (chart, px, py)
+}
+
+fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
+    let (chart, px, py) = phase_chart(theme, plan, records, title);
+    let xs = &chart.xs;
     let theory = px == Param::Alpha && plan.spec.charts.theory;
     let wanted: Vec<u32> = if theory {
         vec![480, THEORY_PANEL_HEIGHT, THEORY_PANEL_HEIGHT]
