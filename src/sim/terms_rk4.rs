@@ -23,11 +23,11 @@
 //! with the library's frames ([`TermsRk4::with_library_frames`]) the
 //! trajectory is the portable path's bit for bit (`tests` below).
 
-use super::stepping::Plan;
-use super::tableau::RK4;
 use super::observables::ArrivalDetector;
 use super::rhs::{Rhs, State};
+use super::stepping::Plan;
 use super::stepping::Stepping;
+use super::tableau::RK4;
 use crate::model::params::{M, R};
 
 /// The state, stage values and stage rates of one run, one array per

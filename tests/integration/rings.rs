@@ -431,3 +431,34 @@ fn the_trajectory_is_the_same_bit_for_bit() {
         fingerprint(&run)
     );
 }
+
+/// A ring filmstrip on a slide (wide and short) draws its strips as tall
+/// as the page leaves, with its text at the slide's size, where it was
+/// refused ("--height 7.50in: too short", figure 4b at `--style slide`,
+/// so `ladder all --style slide` stopped there).
+#[test]
+fn a_ring_filmstrip_fits_a_slide() {
+    let dir = TempDir::new("rings-slide");
+    let scene = dir.file(
+        "strip.toml",
+        "name = \"strip\"\n[rings]\nn = 6\nt_end = 0.05\nturn = { start = 0.01 }\n\
+         [output]\nkind = \"filmstrip\"\ntimes = [0.0, 0.02, 0.05]\n",
+    );
+    let out = ladder(
+        &dir,
+        &[
+            "render",
+            scene.as_str(),
+            "--style",
+            "slide",
+            "--format",
+            "png",
+        ],
+        "2",
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

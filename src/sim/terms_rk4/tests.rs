@@ -4,8 +4,8 @@ use super::*;
 use crate::model::Ladder;
 use crate::model::Params;
 use crate::model::terms::Terms;
-use crate::sim::{IntegratorConfig, IntegratorKind};
 use crate::sim::protocol::{Drive, Protocol};
+use crate::sim::{IntegratorConfig, IntegratorKind};
 
 /// The water tank's ladder (N = 11, α = 86°, b = 1.5, added mass, added
 /// inertia, drag: `ladder scene water-tank`), with linear damping `gamma`
@@ -150,10 +150,7 @@ fn shared_frames_stay_within_the_stated_bound() {
         worst > 0.0 || worst_v > 0.0,
         "the shared frames should differ in the last bits somewhere"
     );
-    assert!(
-        worst < 1e-9 && worst_v < 1e-9,
-        "q {worst:e}, v {worst_v:e}"
-    );
+    assert!(worst < 1e-9 && worst_v < 1e-9, "q {worst:e}, v {worst_v:e}");
 }
 
 /// One force evaluation with the shared frames against the portable
