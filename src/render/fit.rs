@@ -50,16 +50,26 @@ pub fn fitted<T>(
     // The smallest size of the side that overflows; when no size of it
     // holds the figure (a wider page makes it taller than the height
     // asked), the smallest of the other side at the size asked.
-    let found = match smallest(&style, side, need, &draw)? {
-        Some(k) => Some((side, k)),
-        None => {
-            let other = match side {
-                PageSide::Width => PageSide::Height,
-                PageSide::Height => PageSide::Width,
-            };
-            let from = asked(&style, other) + HUNDREDTH_PT;
-            smallest(&style, other, from, &draw)?.map(|k| (other, k))
-        }
+    // The one side the user set is searched first where the other
+    // overflows (`--height` given: the smallest height at the style's
+    // width, before a wider page than the style's).
+    let mine = match only_user_side(&style).filter(|&u| u != side) {
+        Some(u) => smallest(&style, u, asked(&style, u) + HUNDREDTH_PT, &draw)?.map(|k| (u, k)),
+        None => None,
+    };
+    let found = match mine {
+        Some(found) => Some(found),
+        None => match smallest(&style, side, need, &draw)? {
+            Some(k) => Some((side, k)),
+            None => {
+                let other = match side {
+                    PageSide::Width => PageSide::Height,
+                    PageSide::Height => PageSide::Width,
+                };
+                let from = asked(&style, other) + HUNDREDTH_PT;
+                smallest(&style, other, from, &draw)?.map(|k| (other, k))
+            }
+        },
     };
     let Some((side, hi)) = found else {
         // The user's two sizes together hold it at no size of either
@@ -281,6 +291,19 @@ fn user_side(style: &Style) -> Option<PageSide> {
         Some(PageSide::Width)
     } else {
         None
+    }
+}
+
+/// The side of the page the user set where they set only one.
+fn only_user_side(style: &Style) -> Option<PageSide> {
+    let named = Style::named(style.name);
+    match (
+        style.height_pt != named.height_pt,
+        style.width_pt != named.width_pt,
+    ) {
+        (true, false) => Some(PageSide::Height),
+        (false, true) => Some(PageSide::Width),
+        _ => None,
     }
 }
 

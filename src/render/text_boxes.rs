@@ -94,6 +94,34 @@ impl Picture {
         any(self.items())
     }
 
+    /// The plot of every chart of the picture (where its data is drawn,
+    /// inside the axes) as left, top, right, bottom in the picture's design
+    /// pixels, in drawing order.
+    pub fn plot_boxes(&self) -> Vec<[f32; 4]> {
+        fn walk(items: &[Item], ts: Transform, out: &mut Vec<[f32; 4]>) {
+            for i in items {
+                match i {
+                    Item::Chart { chart, at } => {
+                        if let (Some(x), Some(y)) = (chart.plot_x, chart.plot_y) {
+                            let ts = ts.pre_translate(at.0, at.1);
+                            let mut p = [
+                                Point::from_xy(x.0 as f32, y.0 as f32),
+                                Point::from_xy(x.1 as f32, y.1 as f32),
+                            ];
+                            ts.map_points(&mut p);
+                            out.push([p[0].x, p[0].y, p[1].x, p[1].y]);
+                        }
+                    }
+                    Item::Group { transform, items } => walk(items, ts.pre_concat(*transform), out),
+                    _ => {}
+                }
+            }
+        }
+        let mut out = Vec::new();
+        walk(self.items(), Transform::identity(), &mut out);
+        out
+    }
+
     /// What breaks the layout rules at `style`, one line each (empty: none).
     /// Text is measured in the picture's font, as it was laid out.
     pub fn layout_problems(&self, style: &Style) -> Vec<String> {

@@ -80,11 +80,16 @@ pub fn build(chain: &RingChain) -> Result<System> {
         })
         .collect();
     let held = bodies[chain.held];
+    let mut turn = chain.turn;
+    if chain.release {
+        turn.angle = 0.0;
+    }
     let hand = Hand {
         x: held.x,
         q0: held.q,
-        turn: chain.turn,
+        turn,
         mirror: chain.mirror,
+        grip: None,
     };
     let bodies = if chain.mirror {
         bodies.iter().map(Body::mirrored).collect()

@@ -47,6 +47,12 @@ pub struct RingChain {
     /// How the hand turns the held ring. Default: half a turn about the
     /// horizontal axis at azimuth 90°, from 0.3 s over 0.2 s.
     pub turn: Turn,
+    /// Whether the hand, instead of turning the held ring, lets it go at
+    /// `turn.start` and holds the other strand's top ring (ring held + 1)
+    /// where it is then (the paper's "releasing the top ring", and its
+    /// "retrieving a top ring of one of two strands"; docs/rings.md).
+    /// Default false.
+    pub release: bool,
     /// Whether the chain is built as the mirror image (x → −x) of the
     /// default one. Default false.
     pub mirror: bool,
@@ -112,6 +118,7 @@ impl Default for RingChain {
             tape: TapeKind::Weld,
             held: 0,
             turn: Turn::default(),
+            release: false,
             mirror: false,
             t_end: 3.0,
             dt: 0.0,
@@ -254,6 +261,14 @@ impl RingChain {
             )));
         }
         let links = self.linked_pairs();
+        if self.release && !links.contains(&[self.held, self.held + 1]) {
+            return Err(Error::bad_input(format!(
+                "rings: release = true passes the chain from ring {} to ring {}, which must be \
+                 a ring linked with it",
+                self.held,
+                self.held + 1
+            )));
+        }
         for (what, list) in [("link", &links), ("tape", &self.tapes)] {
             for &[a, b] in list.iter() {
                 if a >= self.n || b >= self.n || a == b {

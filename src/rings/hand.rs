@@ -18,6 +18,9 @@ pub struct Hand {
     pub q0: Quat,
     pub turn: Turn,
     pub mirror: bool,
+    /// The pose the hand holds once it has taken the other strand's top
+    /// ring (`release`), in the world frame as it was gripped.
+    pub grip: Option<Body>,
 }
 
 impl Hand {
@@ -44,6 +47,9 @@ impl Hand {
 
     /// The held ring's state at `t`.
     pub fn body(&self, t: f64) -> Body {
+        if let Some(b) = self.grip {
+            return b;
+        }
         let q = Quat::axis_angle(self.axis(), self.angle(t).0).mul(self.q0);
         let b = Body {
             x: self.x,
@@ -56,6 +62,9 @@ impl Hand {
 
     /// The held ring's angular velocity at `t`.
     pub fn omega(&self, t: f64) -> V3 {
+        if self.grip.is_some() {
+            return [0.0; 3];
+        }
         let w = math::scale(self.axis(), self.angle(t).1);
         if self.mirror {
             math::mirror_axial(w)

@@ -53,6 +53,9 @@ pub struct System {
     pub pin_c: f64,
     pub bodies: Vec<Body>,
     pub hand: Hand,
+    /// The ring the hand holds now (`chain.held`, then held + 1 once a
+    /// `release` has passed the chain).
+    pub held: usize,
     pub t: f64,
     pub dt: f64,
     table: [(f64, f64); SAMPLES],
@@ -68,6 +71,7 @@ impl System {
     /// A system from its parts (see [`super::build`]).
     pub fn new(chain: RingChain, bodies: Vec<Body>, hand: Hand, law: Law, dt: f64) -> System {
         let n = chain.n;
+        let chain_held = chain.held;
         let links = chain.linked_pairs();
         let mut linked = vec![false; n * n];
         for &[a, b] in &links {
@@ -90,6 +94,7 @@ impl System {
             pin_c: 0.0,
             bodies,
             hand,
+            held: chain_held,
             t: 0.0,
             dt,
             table: contact::sample_table(),
@@ -128,7 +133,7 @@ impl System {
     pub fn omegas(&self, rots: &[M3]) -> Vec<V3> {
         (0..self.n())
             .map(|k| {
-                if k == self.chain.held {
+                if k == self.held {
                     self.hand.omega(self.t)
                 } else {
                     self.bodies[k].omega(&rots[k], &self.inertia)
@@ -218,7 +223,7 @@ impl System {
     fn kick(&mut self, h: f64) {
         let m = self.inertia.m;
         for k in 0..self.n() {
-            if k == self.chain.held {
+            if k == self.held {
                 continue;
             }
             let b = &mut self.bodies[k];
@@ -233,8 +238,23 @@ impl System {
         self.evaluate();
     }
 
+    /// With `release`, at `turn.start` the hand takes ring held + 1 where
+    /// it is (stopped) and lets the held ring go.
+    fn pass_hand(&mut self) {
+        if self.chain.release && self.held == self.chain.held && self.t >= self.chain.turn.start {
+            let k = self.held + 1;
+            let b = self.bodies[k];
+            self.hand.grip = Some(Body {
+                v: [0.0; 3],
+                l: [0.0; 3],
+                ..b
+            });
+            self.held = k;
+        }
+    }
+
     fn place_held(&mut self) {
-        let k = self.chain.held;
+        let k = self.held;
         self.bodies[k] = self.hand.body(self.t);
     }
 
@@ -244,12 +264,13 @@ impl System {
         let dt = self.dt;
         self.kick(0.5 * dt);
         for k in 0..self.n() {
-            if k != self.chain.held {
+            if k != self.held {
                 let inertia = self.inertia;
                 self.bodies[k].drift(dt, &inertia);
             }
         }
         self.t += dt;
+        self.pass_hand();
         self.place_held();
         self.evaluate();
         self.kick(0.5 * dt);
@@ -312,7 +333,7 @@ impl System {
         let rots: Vec<M3> = self.bodies.iter().map(|b| b.q.matrix()).collect();
         let mut e = 0.0;
         for (k, b) in self.bodies.iter().enumerate() {
-            if k != self.chain.held {
+            if k != self.held {
                 e += b.kinetic(&rots[k], &self.inertia) + self.inertia.m * G * b.x[2];
             }
         }

@@ -9,7 +9,7 @@ pub use super::options::{MAX_FRAMES, MAX_SIDE, MIN_SIDE};
 use super::run::{self, SceneRun};
 use super::walls::wall_marks;
 pub use super::walls::{Wall, walls};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::model::Ladder;
 use crate::render::compose::{
     self, ChainMark, FilmstripOptions, Frame, Layout, Panel, StripGeometry,
@@ -100,8 +100,17 @@ impl Strip {
             .collect()
     }
 
-    fn picture(&self, theme: &Theme, data: &RunData) -> Result<Picture> {
-        compose::filmstrip_picture(theme, &self.ladder, &Self::frames(data), &self.opts)
+    /// The strip drawn with `theme`, fitted to the box `fit` (pixels).
+    fn picture(&self, theme: &Theme, data: &RunData, fit: Option<(u32, u32)>) -> Result<Picture> {
+        let frames = Self::frames(data);
+        if fit == self.opts.fit {
+            return compose::filmstrip_picture(theme, &self.ladder, &frames, &self.opts);
+        }
+        let opts = FilmstripOptions {
+            fit,
+            ..self.opts.clone()
+        };
+        compose::filmstrip_picture(theme, &self.ladder, &frames, &opts)
     }
 }
 
@@ -247,68 +256,35 @@ fn strips_layout(theme: &Theme, scene: &Scene, panels: &[Panel]) -> Layout {
 
 /// A filmstrip figure (figures 1c, 3 and 4a): one strip per panel, two
 /// strips a row, with the scene's title; snapshots of `frame` pixels
-/// (default [`strip_frame`]), drawn with `theme`.
+/// (default [`strip_frame`]), drawn with `theme`. A page too small for
+/// the style's text is refused as [`crate::render::fitted`] says, naming
+/// the smallest width or height that holds the figure: the strips are
+/// composed again for each size tried (their snapshots re-fitted), and
+/// the runs are not repeated.
 pub fn filmstrip_figure(
     theme: &Theme,
     scene: &Scene,
     frame: Option<(u32, u32)>,
 ) -> Result<(Picture, Vec<RunData>)> {
-    let mut strips = strips(theme, scene, frame)?;
-    let picture = compose_strips(theme, scene, &strips)?.titled(describe::title(scene));
-    let style = theme.style;
-    if let (Err(e), Some(asked)) = (picture.check_print_scale(&style), style.height_pt) {
-        // Too short a page for the style's text: refused, naming the
-        // smallest height that holds the strips (found by bisection of the
-        // layout; the runs are not repeated).
-        let fits = |strips: &mut Vec<(Strip, RunData)>, h: f32| -> Result<bool> {
-            let tall = crate::render::Style {
-                height_pt: Some(h),
-                ..style
-            };
-            let theme = Theme::of(&tall);
-            let fit = strip_fit(&theme, strips.len());
-            for (s, _) in strips.iter_mut() {
-                s.opts.fit = fit;
-            }
-            let p = compose_strips(&theme, scene, strips)?;
-            Ok(p.check_print_scale(&tall).is_ok())
-        };
-        // Bisection over whole hundredths of an inch, the unit the message
-        // names: the size named fits, and one hundredth less does not.
-        let pt = |hundredths: u32| hundredths as f32 * 0.72;
-        let (mut lo, mut hi) = ((asked / 0.72).floor() as u32, 2778u32);
-        if !fits(&mut strips, pt(hi))? {
-            return Err(e);
-        }
-        while hi - lo > 1 {
-            let mid = (lo + hi) / 2;
-            if fits(&mut strips, pt(mid))? {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
-        return Err(Error::bad_input(format!(
-            "--height {:.2}in: too short for \"{}\" at {} pt text (it would print its text \
-             smaller); the smallest height that holds it is --height {:.2}in",
-            asked / 72.0,
-            crate::render::style::plain_text(&describe::title(scene)),
-            style.font_pt,
-            hi as f32 / 100.0
-        )));
-    }
+    let strips = strips(theme, scene, frame)?;
+    let (picture, ()) =
+        crate::render::fitted(theme, |t| Ok((compose_strips(t, scene, &strips)?, ())))?;
     let data = strips.into_iter().map(|(_, d)| d).collect();
     Ok((picture, data))
 }
 
-/// The strips drawn and composed into one figure on the style's page.
+/// The strips drawn and composed into one figure on the style's page,
+/// each fitted to its share of that page ([`strip_fit`]), titled.
 fn compose_strips(theme: &Theme, scene: &Scene, strips: &[(Strip, RunData)]) -> Result<Picture> {
+    let fit = strip_fit(theme, strips.len());
     let panels = strips
         .iter()
-        .map(|(s, d)| Ok(Panel::new(s.picture(theme, d)?)))
+        .map(|(s, d)| Ok(Panel::new(s.picture(theme, d, fit)?)))
         .collect::<Result<Vec<_>>>()?;
     let layout = strips_layout(theme, scene, &panels);
-    Ok(compose::compose_picture(&panels, &layout)?.fit_page())
+    Ok(compose::compose_picture(&panels, &layout)?
+        .fit_page()
+        .titled(describe::title(scene)))
 }
 
 /// For a test of the filmstrips: where [`filmstrip_figure`] draws every
@@ -321,7 +297,7 @@ pub fn filmstrip_geometry(
     let strips = strips(theme, scene, frame)?;
     let panels = strips
         .iter()
-        .map(|(s, d)| Ok(Panel::new(s.picture(theme, d)?)))
+        .map(|(s, d)| Ok(Panel::new(s.picture(theme, d, s.opts.fit)?)))
         .collect::<Result<Vec<_>>>()?;
     let layout = strips_layout(theme, scene, &panels);
     let (size, origins) = compose::panel_origins(&panels, &layout)?;

@@ -107,6 +107,19 @@ fn strip_times(scene: &Scene, chain: &RingChain) -> Vec<f64> {
     }
 }
 
+/// A ring scene's title: its own, or one made from the chain (the
+/// ladder's generated title, "kink, α = 60°", is no chain's).
+fn ring_title(scene: &Scene, chain: &RingChain) -> String {
+    if scene.title.is_some() {
+        return describe::title(scene);
+    }
+    let body = format!("a ring chain: {}", chain.parameters());
+    match &scene.label {
+        Some(l) => format!("{l}: {body}"),
+        None => body,
+    }
+}
+
 /// The files of a ring scene, handed to `sink` in [`file_names_for`] order.
 pub fn render_to(
     theme: &Theme,
@@ -118,7 +131,7 @@ pub fn render_to(
 ) -> Result<()> {
     check(scene, movie)?;
     let chain = chain_of(scene)?;
-    let title = describe::title(scene);
+    let title = ring_title(scene, chain);
     let formats = outputs.encoded_figures()?;
     let (bytes, run) = match scene.output {
         OutputSpec::Movie { .. } => {
@@ -232,7 +245,7 @@ fn movie_bytes(
 /// A picture of a ring scene (for callers that draw figures themselves).
 pub fn figure_picture(theme: &Theme, scene: &Scene) -> Result<Picture> {
     let chain = chain_of(scene)?;
-    let title = describe::title(scene);
+    let title = ring_title(scene, chain);
     match scene.output {
         OutputSpec::Filmstrip { .. } => Ok(draw::strip_picture(
             theme,

@@ -127,8 +127,16 @@ pub fn strip_picture(theme: &Theme, chain: &RingChain, run: &RingRun, title: &st
     } else {
         0.0
     };
-    let tall = (panel * 4.5).clamp(4.0 * theme.label, 520.0);
     let label = 1.6 * theme.label;
+    // The strips no taller than the page leaves (a slide is wide and
+    // short): the rings are drawn smaller rather than the figure refused.
+    let page = theme
+        .style
+        .fit_box()
+        .map_or(f32::INFINITY, |(w, h)| h.floor() * width / w - top - label);
+    let tall = (panel * 4.5)
+        .clamp(4.0 * theme.label, 520.0)
+        .min(page.max(4.0 * theme.label));
     let height = top + tall + label;
     let mut p = Picture::new(theme, width, height.ceil()).titled(title);
     if theme.titles && !title.is_empty() {

@@ -11,6 +11,9 @@ use super::fused::{Batch, FusedEuler, Stepping};
 use super::observables::ArrivalDetector;
 use super::rhs::{Rhs, State};
 pub use super::stepping::ImplicitDamping;
+pub(super) use super::stepping::Plan;
+pub use super::tableau::{DOPRI5, RK4, Tableau};
+use super::terms_rk4::TermsRk4;
 use crate::error::{Error, Result};
 use std::fmt;
 use std::str::FromStr;
@@ -175,6 +178,7 @@ impl IntegratorConfig {
             IntegratorKind::Dopri5 => Box::new(Dopri5::new(dof, self.dt, self.rtol)),
             kind => {
                 let mut stepper = FixedStep::new(kind, dof, self.dt);
+                stepper.stepping = stepping;
                 if kind == IntegratorKind::SymplecticEuler {
                     stepper.fused = FusedEuler::new(dof / 3, stepping);
                     stepper.chain = ChainEuler::new(dof / 3, stepping);
@@ -221,50 +225,6 @@ fn subdivide(t: f64, t_stop: f64, dt: f64) -> (f64, bool) {
     (span / n, n <= 1.0)
 }
 
-/// The subdivision of the current interval [t, t_stop]: equal steps `h`,
-/// `left` of them still to take. Computed once per interval.
-#[derive(Debug, Clone, Copy, Default)]
-pub(super) struct Plan {
-    t_stop: f64,
-    h: f64,
-    left: u64,
-}
-
-impl Plan {
-    /// Next step towards `t_stop` from `t`: (h, is the last step).
-    fn next(&mut self, t: f64, t_stop: f64, dt: f64) -> (f64, bool) {
-        let (h, _, last) = self.take(t, t_stop, dt, 1);
-        (h, last)
-    }
-
-    /// Steps left in the current interval (0 before the first).
-    pub(super) fn left(&self) -> u64 {
-        self.left
-    }
-
-    /// Returns `count` steps taken by [`Plan::take`] but not made.
-    pub(super) fn give_back(&mut self, count: u64) {
-        self.left += count;
-    }
-
-    /// Up to `max` (≥ 1) steps towards `t_stop` from `t`: (h, how many,
-    /// whether the last of them ends the interval).
-    pub(super) fn take(&mut self, t: f64, t_stop: f64, dt: f64, max: u64) -> (f64, u64, bool) {
-        if self.left == 0 || self.t_stop != t_stop {
-            let span = t_stop - t;
-            let n = (span / dt - 1e-6).ceil().max(1.0);
-            *self = Self {
-                t_stop,
-                h: span / n,
-                left: n as u64,
-            };
-        }
-        let count = self.left.min(max);
-        self.left -= count;
-        (self.h, count, self.left == 0)
-    }
-}
-
 /// Explicit Euler, symplectic Euler and velocity Verlet (one force evaluation
 /// per step each), and classical RK4 (four).
 pub struct FixedStep {
@@ -281,6 +241,10 @@ pub struct FixedStep {
     /// (longer ladders), where available.
     fused: Option<FusedEuler>,
     chain: Option<ChainEuler>,
+    /// RK4 fused with a fluid's terms (`sim::terms_rk4`): `None` until
+    /// the first `advance_many` looks at the ladder, then whether it applies.
+    terms_rk4: Option<Option<Box<TermsRk4>>>,
+    stepping: Stepping,
 }
 
 impl FixedStep {
@@ -296,6 +260,8 @@ impl FixedStep {
             plan: Plan::default(),
             fused: None,
             chain: None,
+            terms_rk4: None,
+            stepping: Stepping::Portable,
         }
     }
 
@@ -386,6 +352,16 @@ impl Integrator for FixedStep {
         max_steps: u64,
         arrivals: &mut ArrivalDetector,
     ) -> Result<(f64, u64)> {
+        if self.kind == IntegratorKind::Rk4 {
+            let stepping = self.stepping;
+            let fast = self
+                .terms_rk4
+                .get_or_insert_with(|| TermsRk4::new(rhs, stepping).map(Box::new));
+            if let Some(fast) = fast {
+                let plan = (&mut self.plan, self.dt);
+                return Ok(fast.advance_many(rhs, st, plan, (t, t_stop), max_steps, arrivals));
+            }
+        }
         if self.fused.is_none() && self.chain.is_none() {
             return default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals);
         }
@@ -432,74 +408,6 @@ fn default_advance_many<I: Integrator + ?Sized>(
     }
     Ok((t, taken))
 }
-
-/// An explicit Runge–Kutta tableau (lower-triangular `a`, weights `b`,
-/// optional embedded weights `b_hat` for error control).
-pub struct Tableau {
-    pub c: &'static [f64],
-    pub a: &'static [&'static [f64]],
-    pub b: &'static [f64],
-    pub b_hat: Option<&'static [f64]>,
-}
-
-/// Classical fourth-order Runge–Kutta.
-pub const RK4: Tableau = Tableau {
-    c: &[0.0, 0.5, 0.5, 1.0],
-    a: &[&[], &[0.5], &[0.0, 0.5], &[0.0, 0.0, 1.0]],
-    b: &[1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0],
-    b_hat: None,
-};
-
-/// Dormand–Prince 5(4) (Hairer, Nørsett & Wanner, Table II.5.2): fifth-order
-/// solution, fourth-order embedded estimate, first-same-as-last.
-pub const DOPRI5: Tableau = Tableau {
-    c: &[0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0],
-    a: &[
-        &[],
-        &[1.0 / 5.0],
-        &[3.0 / 40.0, 9.0 / 40.0],
-        &[44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0],
-        &[
-            19372.0 / 6561.0,
-            -25360.0 / 2187.0,
-            64448.0 / 6561.0,
-            -212.0 / 729.0,
-        ],
-        &[
-            9017.0 / 3168.0,
-            -355.0 / 33.0,
-            46732.0 / 5247.0,
-            49.0 / 176.0,
-            -5103.0 / 18656.0,
-        ],
-        &[
-            35.0 / 384.0,
-            0.0,
-            500.0 / 1113.0,
-            125.0 / 192.0,
-            -2187.0 / 6784.0,
-            11.0 / 84.0,
-        ],
-    ],
-    b: &[
-        35.0 / 384.0,
-        0.0,
-        500.0 / 1113.0,
-        125.0 / 192.0,
-        -2187.0 / 6784.0,
-        11.0 / 84.0,
-        0.0,
-    ],
-    b_hat: Some(&[
-        5179.0 / 57600.0,
-        0.0,
-        7571.0 / 16695.0,
-        393.0 / 640.0,
-        -92097.0 / 339200.0,
-        187.0 / 2100.0,
-        1.0 / 40.0,
-    ]),
-};
 
 /// Explicit Runge–Kutta on y = (q, v), y' = (v, a(q, v)); block 1 constrained at each stage.
 struct RungeKutta {

@@ -20,7 +20,9 @@ mod simd;
 pub mod speed;
 pub mod step_bounds;
 pub mod stepping;
+mod tableau;
 pub mod tally;
+pub mod terms_rk4;
 pub mod trajectory;
 pub mod waves;
 pub mod window;
@@ -464,7 +466,9 @@ pub fn run_streaming(
     let mut rhs = Rhs::new(ladder, &scenario.protocol, &scenario.initial.q);
     let mut st = scenario.initial.clone();
     rhs.constrain(0.0, &mut st.q, &mut st.v);
-    let mut integrator = config.build(rhs.dof(), stepping);
+    // A fluid's terms take RK4's fused path (`terms_rk4`) where it applies.
+    let kernels = scenario.ladder.velocity_dependent();
+    let mut integrator = config.build(rhs.dof(), if kernels { options.stepping } else { stepping });
     let mut watch = DivergenceWatch::new(ladder, &scenario.protocol, &config);
     let check_every = check_every(&config);
     let mut arrivals = ArrivalDetector::new(0.0, &st.q, &st.v);

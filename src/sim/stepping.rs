@@ -137,3 +137,47 @@ impl ImplicitDamping {
         ((2..n).all(|i| block(i) == Some(free)) && first_ok).then_some(free)
     }
 }
+
+/// The subdivision of the current interval [t, t_stop]: equal steps `h`,
+/// `left` of them still to take. Computed once per interval.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Plan {
+    t_stop: f64,
+    h: f64,
+    left: u64,
+}
+
+impl Plan {
+    /// Next step towards `t_stop` from `t`: (h, is the last step).
+    pub(crate) fn next(&mut self, t: f64, t_stop: f64, dt: f64) -> (f64, bool) {
+        let (h, _, last) = self.take(t, t_stop, dt, 1);
+        (h, last)
+    }
+
+    /// Steps left in the current interval (0 before the first).
+    pub(crate) fn left(&self) -> u64 {
+        self.left
+    }
+
+    /// Returns `count` steps taken by [`Plan::take`] but not made.
+    pub(crate) fn give_back(&mut self, count: u64) {
+        self.left += count;
+    }
+
+    /// Up to `max` (≥ 1) steps towards `t_stop` from `t`: (h, how many,
+    /// whether the last of them ends the interval).
+    pub(crate) fn take(&mut self, t: f64, t_stop: f64, dt: f64, max: u64) -> (f64, u64, bool) {
+        if self.left == 0 || self.t_stop != t_stop {
+            let span = t_stop - t;
+            let n = (span / dt - 1e-6).ceil().max(1.0);
+            *self = Self {
+                t_stop,
+                h: span / n,
+                left: n as u64,
+            };
+        }
+        let count = self.left.min(max);
+        self.left -= count;
+        (self.h, count, self.left == 0)
+    }
+}

@@ -18,7 +18,7 @@ use crate::encode::Rgb;
 use crate::error::{Error, Result};
 use crate::render::Theme;
 use crate::render::cells::{self, Cell, CellChart, ShadeBar, cell_chart};
-use crate::render::charts::{Axis, Chart, ChartSpec, Marker, Series, line_chart};
+use crate::render::charts::{Axis, Chart, ChartSpec, Marker, Series, legend_band, line_chart};
 use crate::render::palette::{OutcomeRole, Role};
 use crate::render::style;
 use crate::scene::describe;
@@ -328,18 +328,21 @@ fn one_parameter(theme: &Theme, plan: &Plan, records: &[Record], title: &str) ->
         "gap ω₊(0) τ",
         "ΔU / mgs",
     ];
-    // The front panel's legend may go under its plot: room for its rows.
+    // The front panel's legend may go under its plot, and the speed
+    // panel's where it is narrow (a slide's right column): room for
+    // their rows, so that the plot keeps the length of its rotated label.
     let least = |k: usize, w: u32| {
         let legend = match k {
             0 if w < 400 => 2 * FRONT_LEGEND_ROOM,
             0 => FRONT_LEGEND_ROOM,
+            1 => legend_band(theme, &speed, w),
             _ => 0,
         };
         least_for(theme, labels[k]) + legend
     };
-    // One column: two would put the front's legend and the speed
-    // panel's rotated label where they do not fit (not yet laid out).
-    stacked(theme, &wanted, &least, false, &|slots: &[Slot]| {
+    // On a page too short for one column (a slide at its 20 pt text) the
+    // front goes left, the others stacked right of it (stack::two_columns).
+    stacked(theme, &wanted, &least, true, &|slots: &[Slot]| {
         let mut panels = vec![
             drawn(theme, &front, &slots[0])?,
             drawn(theme, &speed, &slots[1])?,
@@ -351,7 +354,7 @@ fn one_parameter(theme: &Theme, plan: &Plan, records: &[Record], title: &str) ->
                 plan,
                 (a.x_label, a.fold),
                 (gap.w, Some(a.x_range), gap.plot_x),
-                (gap.h, barrier.h),
+                (gap, barrier),
             )?);
         }
         Ok(panels)
@@ -367,6 +370,8 @@ fn drawn(theme: &Theme, spec: &ChartSpec, slot: &Slot) -> Result<(Chart, u32)> {
     };
     if slot.last {
         spec.x.shared = false;
+        spec.x.numbered = false;
+    } else if !slot.numbers {
         spec.x.numbered = false;
     }
     Ok((line_chart(theme, &spec, slot.w, slot.h)?, slot.h))
@@ -390,14 +395,16 @@ type PanelSpan = (u32, Option<(f64, f64)>, Option<(i32, i32)>);
 type GridAxis<'a> = (usize, &'a [f64]);
 
 /// ω₊(0) and ΔU against α (or |α|, `fold`), one panel each, `width`
-/// wide; `range` pins the axis and `plot_x` the plots' edges (the stack's
-/// shared x extent).
+/// wide, at the heights of their slots (the gap's x axis shared with the
+/// barrier's below it, numbered where its slot keeps numbers); `range`
+/// pins the axis and `plot_x` the plots' edges (the stack's shared x
+/// extent).
 fn theory_panel(
     theme: &Theme,
     plan: &Plan,
     (x_label, fold): (&str, bool),
     (width, range, plot_x): PanelSpan,
-    (gap_h, barrier_h): (u32, u32),
+    (gap, barrier): (Slot, Slot),
 ) -> Result<Vec<(Chart, u32)>> {
     let pts = theory_points(plan);
     let x = |a: f64| if fold { a.abs() } else { a };
@@ -428,7 +435,10 @@ fn theory_panel(
             series = series.dashed();
         }
         let x = if shared {
-            xa.clone().shared_numbered()
+            Axis {
+                numbered: gap.numbers,
+                ..xa.clone().shared_numbered()
+            }
         } else {
             xa.clone()
         };
@@ -444,9 +454,9 @@ fn theory_panel(
             curve(&|p| p.gap_omega_plus_q0),
             false,
             true,
-            gap_h,
+            gap.h,
         )?,
-        panel("ΔU / mgs", curve(&|p| p.barrier), true, false, barrier_h)?,
+        panel("ΔU / mgs", curve(&|p| p.barrier), true, false, barrier.h)?,
     ])
 }
 
@@ -526,14 +536,17 @@ fn cell_marker(theme: &Theme, o: Outcome) -> Marker {
     }
 }
 
-fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
+/// The phase diagram's cells (α across when it is one of the two
+/// parameters varied), with the parameters across and up.
+fn phase_chart(
+    theme: &Theme,
+    plan: &Plan,
+    records: &[Record],
+    title: &str,
+) -> (CellChart, Param, Param) {
     let varied = plan.varied();
-    // α across when it is one of the two.
-    let (ix, iy) = if varied[1].1 == Param::Alpha {
-        (1, 0)
-    } else {
-        (0, 1)
-    };
+    let alpha_second = varied[1].1 == Param::Alpha;
+    let (ix, iy) = if alpha_second { (1, 0) } else { (0, 1) };
     let (kx, px, xs) = varied[ix];
     let (ky, py, ys) = varied[iy];
     let sorted = |v: &[f64]| {
@@ -552,7 +565,7 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
         title: Some(title.to_string()),
         x_label: px.label().into(),
         y_label: py.label().into(),
-        xs: xs.clone(),
+        xs,
         ys,
         cells,
         legend: present
@@ -565,6 +578,12 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
         shade,
         plot_x: None,
     };
+    (chart, px, py)
+}
+
+fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<Chart> {
+    let (chart, px, py) = phase_chart(theme, plan, records, title);
+    let xs = &chart.xs;
     let theory = px == Param::Alpha && plan.spec.charts.theory;
     let wanted: Vec<u32> = if theory {
         vec![480, THEORY_PANEL_HEIGHT, THEORY_PANEL_HEIGHT]
@@ -611,7 +630,7 @@ fn phase(theme: &Theme, plan: &Plan, records: &[Record], title: &str) -> Result<
                 (gap.w, None, None)
             };
             let label = (px.label(), false);
-            panels.extend(theory_panel(theme, plan, label, range, (gap.h, barrier.h))?);
+            panels.extend(theory_panel(theme, plan, label, range, (gap, barrier))?);
         }
         if !even {
             panels.iter_mut().for_each(|(c, _)| c.plot_x = None);

@@ -21,14 +21,18 @@ pub(super) fn width(theme: &Theme) -> u32 {
 /// The least height of a stacked panel, pixels (a chart's smallest).
 pub(super) const LEAST_PANEL: u32 = 110;
 
-/// The least height of a panel whose y axis says `label`: room for the
-/// rotated label along the plot, and at least [`LEAST_PANEL`] (less at a
-/// print style).
+/// The least height of a panel whose y axis says `label` and whose
+/// shared x axis is numbered: room for the rotated label, centred on the
+/// plot, inside the panel, and at least [`LEAST_PANEL`] (less at a print
+/// style).
 pub(super) fn least_for(theme: &Theme, label: &str) -> u32 {
-    // The rotated label's length, within the chart's own margins above
-    // and below the plot, and a few pixels of air.
-    let along =
-        style::text_width(theme.font(), label, theme.label) + 2.0 * theme.chart_margin_y + 4.0;
+    // The label is centred on the plot, which the chart's equal margins
+    // above and below and the x axis' numbers under it leave: its top is
+    // (height − numbers − label) / 2 below the panel's top, its bottom
+    // above the panel's foot. A few pixels of air at its ends.
+    let along = style::text_width(theme.font(), label, theme.label)
+        + theme.numbered_x_area as f32
+        + 2.0 * LABEL_AIR;
     // At a print style six lines of tick text (90 px at `paper`): a plot
     // of two or three ticks, so that a stack of four keeps the budget.
     let least = if theme.is_print() {
@@ -38,6 +42,9 @@ pub(super) fn least_for(theme: &Theme, label: &str) -> u32 {
     };
     (along.ceil() as u32).max(least)
 }
+
+/// Pixels kept between a rotated y label's ends and its panel's edges.
+const LABEL_AIR: f32 = 0.0;
 
 /// Pixels a panel whose x axis is shared (labelled below) does not need:
 /// the axis label's line under its numbers.
@@ -50,13 +57,18 @@ fn shared_saves(theme: &Theme) -> u32 {
 /// stack keeps the page budget ([`crate::render::Theme::max_height_pt`]),
 /// none below its `least`.
 fn fitted_heights(theme: &Theme, wanted: &[u32], least: &[u32]) -> Vec<u32> {
+    fitted_saving(theme, wanted, least, shared_saves(theme))
+}
+
+/// [`fitted_heights`] of panels that each give up `saves` pixels of the
+/// last one's x label area (the panels above it share its axis).
+fn fitted_saving(theme: &Theme, wanted: &[u32], least: &[u32], saves: u32) -> Vec<u32> {
     // The page's height in the design pixels composed figures are laid
-    // out in (a slide's twice its own, Style::fit_box).
+    // out in (Style::fit_box).
     let Some((_, page)) = theme.style.fit_box() else {
         return wanted.to_vec();
     };
     let budget = page.floor();
-    let saves = shared_saves(theme);
     // Panels above the last share its axis and give up their label area.
     let last = wanted.len().saturating_sub(1);
     let wanted: Vec<u32> = wanted
@@ -97,8 +109,10 @@ fn fitted_heights(theme: &Theme, wanted: &[u32], least: &[u32]) -> Vec<u32> {
 
 /// One panel's place in a stack: its height and width, pixels, the x
 /// edges of its plot (shared with the panels of its column; `None`: its
-/// own), its column (0 at the left) and whether it is the last of its
-/// column, which labels the x axis the panels above it share.
+/// own), its column (0 at the left), whether it is the last of its
+/// column, which labels the x axis the panels above it share, and
+/// whether a shared x axis keeps its numbers (else its ticks only: the
+/// right column of [`two_columns`] where numbers would not fit).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct Slot {
     pub h: u32,
@@ -106,6 +120,7 @@ pub(super) struct Slot {
     pub plot_x: Option<(i32, i32)>,
     pub column: usize,
     pub last: bool,
+    pub numbers: bool,
 }
 
 /// What a stack's caller draws: each panel at its [`Slot`].
@@ -147,6 +162,7 @@ pub(super) fn stacked(
                 plot_x,
                 column: 0,
                 last: k == last,
+                numbers: true,
             })
             .collect()
     };
@@ -165,10 +181,12 @@ const LEFT_SHARE: f32 = 0.6;
 /// [`WIDE_PAGE`] times as wide as tall whose budget one column of
 /// `stack_height` pixels overruns: the first panel at the left, as tall
 /// as the page, the others stacked at the right, sharing one x extent
-/// among them; each column's last panel labels its x axis. `None` where
-/// one column fits, the page is not wide, or two columns would be no
-/// shorter than one (then one column is refused naming the height that
-/// holds it, and the height it names holds it).
+/// among them; each column's last panel labels its x axis, and the
+/// panels above it in the right column keep their numbers where the
+/// column then fits the page, else their ticks only ([`right_column`]).
+/// `None` where one column fits, the page is not wide, or two columns
+/// would be no shorter than one (then one column is refused naming the
+/// height that holds it, and the height it names holds it).
 fn two_columns(
     theme: &Theme,
     wanted: &[u32],
@@ -193,7 +211,7 @@ fn two_columns(
     let columns = [(0, left), (left, full - left)];
     let h0 = fitted_heights(theme, &[wanted[0].max(budget as u32)], &[least(0, left)]);
     let least_right: Vec<u32> = (1..n).map(|k| least(k, full - left)).collect();
-    let mut h1 = fitted_heights(theme, &wanted[1..], &least_right);
+    let (mut h1, numbers) = right_column(theme, &wanted[1..], &least_right);
     let tallest = h0[0].max(h1.iter().sum());
     if tallest as f32 > budget && tallest >= stack_height {
         return Ok(None);
@@ -217,6 +235,7 @@ fn two_columns(
             plot_x,
             column,
             last: k == 0 || k == n - 1,
+            numbers: k == 0 || numbers,
         }
     };
     let heights: Vec<u32> = h0.iter().chain(&h1).copied().collect();
@@ -240,6 +259,30 @@ fn two_columns(
     }
     let height = h0[0].max(h1.iter().sum());
     compose(theme, &placed, indent, (full, height)).map(Some)
+}
+
+/// The heights of the right column's panels, which want `wanted` pixels
+/// and need `least` each with their shared x axes numbered, and whether
+/// those axes keep their numbers: they do where the column then fits the
+/// page; else the panels above the last draw their ticks only (the last
+/// panel's numbers read for them all, one x extent down the column),
+/// each giving up the numbers' line.
+fn right_column(theme: &Theme, wanted: &[u32], least: &[u32]) -> (Vec<u32>, bool) {
+    let numbered = fitted_heights(theme, wanted, least);
+    let budget = theme
+        .style
+        .fit_box()
+        .map_or(f32::INFINITY, |(_, h)| h.floor());
+    if numbered.iter().sum::<u32>() as f32 <= budget {
+        return (numbered, true);
+    }
+    // The numbers' line each panel above the last gives up; the last
+    // keeps its axis' label area whole (`fitted_saving` adds back what
+    // the panels above it save).
+    let line = theme.numbered_x_area.saturating_sub(theme.shared_x_area);
+    let bare: Vec<u32> = least.iter().map(|l| l.saturating_sub(line)).collect();
+    let saves = theme.x_label_area.saturating_sub(theme.shared_x_area);
+    (fitted_saving(theme, wanted, &bare, saves), false)
 }
 
 /// A page at least this many times as wide as tall takes a stack too

@@ -1018,3 +1018,59 @@ fn stiff_links_are_shown_stiff_beside_the_run() {
     assert!(!err.contains("stiff"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Ribbons from the command line: `--apparatus` with `ribbons = true`
+/// hangs the plates in a column (α = ±90°, the conversion's value), which
+/// the run takes and reports; the check of `--alpha`'s range (0 < |α| <
+/// 90) applies to what the user typed, not to the column's 90°.
+#[test]
+fn ribbons_from_the_command_line_hang_the_column() {
+    use crate::common::ladder_cli;
+    let dir = std::env::temp_dir().join(format!("ladder-ribbons-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("ribbons.toml");
+    std::fs::write(
+        &file,
+        "[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\ndensity = 1.2\nmedium = \"water\"\n\
+         medium_density = 1.0\nbuoyancy = true\nribbons = true\nribbon_anchors = [0.0, 1.0]\n\
+         contact = \"acrylic\"\nmotor = 0.2\nduration = 0.05\n",
+    )
+    .unwrap();
+    for (alpha, column) in [("86", 90.0), ("-86", -90.0)] {
+        let out = ladder_cli(&[
+            "simulate",
+            "--alpha",
+            alpha,
+            "--n",
+            "4",
+            "--integrator",
+            "rk4",
+            "--dt",
+            "0.03125",
+            "--apparatus",
+            file.to_str().unwrap(),
+            "--json",
+        ]);
+        assert!(
+            out.status.success(),
+            "--alpha {alpha}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(
+            v["model"]["alpha"].as_f64(),
+            Some(column),
+            "--alpha {alpha}"
+        );
+    }
+    // The user's own α is still checked.
+    let out = ladder_cli(&[
+        "simulate",
+        "--alpha",
+        "90",
+        "--apparatus",
+        file.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -7,6 +7,10 @@
 //! `target/tmp/gallery/` to look at. Without chromium it fails under CI
 //! and is reported as skipped elsewhere (`common::require`; `.ci/run`
 //! installs chromium).
+//!
+//! All three read one render of the catalogue (`common::catalogue_render`,
+//! every format but PNG, shared with the timings test): a render costs
+//! half a minute of CPU, whatever its formats.
 
 use crate::common;
 
@@ -15,12 +19,18 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-/// Renders the whole catalogue, small and fast, into a fresh folder, in
-/// the default formats or in `formats`.
-fn render_all(tag: &str, formats: Option<&str>) -> PathBuf {
+/// A copy of the catalogue's shared render (`common::catalogue_render`,
+/// every format but PNG) in a fresh folder of its own, for a test that
+/// adds pages to it.
+fn copy_of_render(tag: &str) -> PathBuf {
+    let from = &crate::common::catalogue_render().0;
     let dir = std::env::temp_dir().join(format!("ladder-gallery-{tag}-{}", std::process::id()));
-    let extra: Vec<&str> = formats.map_or(vec![], |f| vec!["--format", f]);
-    crate::common::render_catalogue(&dir, &extra);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    for e in std::fs::read_dir(from).unwrap() {
+        let e = e.unwrap();
+        std::fs::copy(e.path(), dir.join(e.file_name())).unwrap();
+    }
     dir
 }
 
@@ -149,16 +159,13 @@ fn every_link_and_picture_of_the_page_is_a_file_the_run_wrote() {
 
 #[test]
 fn figures_asked_without_png_still_show_a_png_preview() {
-    // `ladder all --format pdf,mp4`: every figure card shows a
-    // PNG preview, the PDF is linked, and no full PNG is written.
-    let formats = if cfg!(feature = "mp4") {
-        "pdf,mp4"
-    } else {
-        "pdf,gif"
-    };
-    let dir = render_all("preview", Some(formats));
+    // `ladder all` in every format but PNG (the shared render, with
+    // `--format svg,pdf,gif,mp4`): every figure card shows a PNG
+    // preview, the PDF is linked, and no full PNG is written.
+    let dir = &crate::common::catalogue_render().0;
+    assert!(!crate::common::CATALOGUE_FORMATS.contains("png"));
     let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
-    let written = check_links(&dir, &html);
+    let written = check_links(dir, &html);
     assert!(!written.contains("figure-3.png"), "a PNG nobody asked for");
     let cards = cards(&html);
     assert!(cards.len() >= 22, "{} cards", cards.len());
@@ -183,7 +190,6 @@ fn figures_asked_without_png_still_show_a_png_preview() {
     // A movie's kymograph is a figure too: PDF, and its PNG preview.
     assert!(written.contains("movie-4-kymograph.pdf"), "{written:?}");
     assert!(html.contains("<img src=\"movie-4-kymograph-preview.png\""));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// The browser: `LADDER_CHROMIUM`, else the first of chromium,
@@ -373,14 +379,10 @@ fn every_image_and_video_loads_in_a_real_browser() {
         return;
     }
     let browser = browser.expect("checked above");
-    // Every format, so that the page shows MP4 videos (with the GIF as
-    // poster) and links SVG and PDF files.
-    let formats = if cfg!(feature = "mp4") {
-        "png,svg,pdf,gif,mp4"
-    } else {
-        "png,svg,pdf,gif"
-    };
-    let dir = render_all("browser", Some(formats));
+    // The shared render in every format but PNG, so that the page shows
+    // MP4 videos (with the GIF as poster) and the figures' PNG previews,
+    // and links SVG and PDF files; copied, as the check adds pages.
+    let dir = copy_of_render("browser");
     let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
     let videos = html.matches("<video ").count();
     assert_eq!(videos, if cfg!(feature = "mp4") { 12 } else { 0 });
@@ -402,7 +404,11 @@ fn every_image_and_video_loads_in_a_real_browser() {
     // The check can fail: a page with a missing and a corrupt picture.
     std::fs::write(dir.join("corrupt.png"), b"not a png").unwrap();
     let bad = html.replacen("<img src=\"", "<img src=\"missing.png\" data-x=\"", 1);
-    let bad = bad.replacen("<img src=\"figure-2b.png\"", "<img src=\"corrupt.png\"", 1);
+    let bad = bad.replacen(
+        "<img src=\"figure-2b-preview.png\"",
+        "<img src=\"corrupt.png\"",
+        1,
+    );
     let bad = bad.replacen(
         "<video src=\"movie-3.mp4\"",
         "<video src=\"missing.mp4\"",

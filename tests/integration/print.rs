@@ -701,3 +701,252 @@ fn the_whole_catalogue_renders_at_the_print_styles() {
         assert!(dir.join("movie-5-kymograph.pdf").is_file(), "{style}");
     }
 }
+
+/// A one-parameter sweep at `slide` is drawn at the slide's own size,
+/// never refused there (docs/formats.md "Two columns on a slide"): the
+/// pinning and chain-length sweeps and a plain sweep over α were refused
+/// naming 11.01 in and 11.71 in of height, one column of four panels at
+/// 20 pt being taller than the 7.5 in page. The front goes left, the
+/// other panels are stacked right of it.
+#[test]
+fn one_parameter_sweeps_at_slide_are_drawn_at_the_slides_size() {
+    let dir = tempdir("slide-sweeps");
+    let runs: [&[&str]; 3] = [
+        &["figure", "pinning", "--style", "slide", "--format", "pdf"],
+        &[
+            "figure",
+            "chain-length",
+            "--style",
+            "slide",
+            "--format",
+            "pdf",
+        ],
+        &[
+            "sweep",
+            "--alpha=48:68:10",
+            "--n",
+            "9",
+            "--style",
+            "slide",
+            "--format",
+            "pdf",
+        ],
+    ];
+    for args in runs {
+        let out = Command::new(env!("CARGO_BIN_EXE_ladder"))
+            .args(args)
+            .arg("--out")
+            .arg(&dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+}
+
+/// `ladder ARGS` with `--out dir`: the refusal's message on exit 2,
+/// `None` when drawn (any other exit fails the test).
+fn refusal(dir: &Path, args: &[String]) -> Option<String> {
+    let out = Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(args)
+        .args(["--out", dir.to_str().unwrap(), "--format", "svg"])
+        .output()
+        .unwrap();
+    match out.status.code() {
+        Some(0) => None,
+        Some(2) => Some(String::from_utf8_lossy(&out.stderr).trim().to_string()),
+        c => panic!(
+            "ladder {args:?}: exit {c:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        ),
+    }
+}
+
+/// A filmstrip (figures 1c, 3 and 4a) on a page too narrow or too short
+/// for its text is refused naming a size of the side that overflows: at
+/// that size it is drawn, and a hundredth of an inch less is refused
+/// (filmstrips once named the width of the layout drawn at the width
+/// asked: `figure 3 --style slide --width 4in` named 13.64 in where 8 in
+/// drew, and a width of 23.18 in drew where 23.19 in was named).
+#[test]
+fn a_filmstrips_refusal_names_a_size_that_draws() {
+    let dir = tempdir("filmstrip-refusal");
+    let cases: [(&str, &str, &[&str]); 6] = [
+        ("1c", "--width", &["--width", "2in"]),
+        ("3", "--width", &["--width", "4in"]),
+        ("4a", "--width", &["--width", "2in"]),
+        ("3", "--height", &["--height", "1in"]),
+        ("4a", "--height", &["--height", "1in"]),
+        (
+            "3",
+            "--height",
+            &["--width", "23.18in", "--height", "2.96in"],
+        ),
+    ];
+    for (id, side, sizes) in cases {
+        let mut args: Vec<String> = ["figure", id, "--style", "slide"]
+            .iter()
+            .chain(sizes)
+            .map(|s| s.to_string())
+            .collect();
+        let msg = refusal(&dir, &args).unwrap_or_else(|| panic!("{args:?} was drawn"));
+        let named = msg
+            .rsplit(&format!("{side} "))
+            .next()
+            .and_then(|v| v.strip_suffix("in"))
+            .and_then(|v| v.parse::<f64>().ok())
+            .unwrap_or_else(|| panic!("{args:?}: no {side} named: {msg}"));
+        let at = match args.iter().position(|a| a == side) {
+            Some(i) => i + 1,
+            None => {
+                args.extend([side.to_string(), String::new()]);
+                args.len() - 1
+            }
+        };
+        args[at] = format!("{named:.2}in");
+        assert_eq!(refusal(&dir, &args), None, "{args:?}: the size named");
+        args[at] = format!("{:.2}in", named - 0.01);
+        assert!(
+            refusal(&dir, &args).is_some(),
+            "{args:?}: a hundredth below the size named is drawn"
+        );
+    }
+}
+
+/// Fig. S3 on a narrow column (`--style paper --width 3.18in`, where its
+/// legend goes under the chart on two lines): the chart grows by its
+/// legend's band, so that its plot keeps at least 40 % of the figure's
+/// height (it was 32 %, the rotated axis label then taller than the plot
+/// and over the panel's label), and neither it nor the default column
+/// is crowded.
+#[test]
+fn s3s_plot_keeps_its_share_of_a_narrow_column() {
+    let scene = catalog::find(Kind::Figure, "S3").unwrap().scene.clone();
+    for width_in in [3.18f32, 3.375] {
+        let style = Style {
+            width_pt: Some(width_in * 72.0),
+            ..Style::named(StyleName::Paper)
+        };
+        let pic = scenes::figure_picture(&Theme::of(&style), &scene)
+            .unwrap()
+            .0;
+        let plots = pic.plot_boxes();
+        assert_eq!(plots.len(), 1, "{width_in} in: {plots:?}");
+        let [_, top, _, bottom] = plots[0];
+        let share = (bottom - top) / pic.height();
+        assert!(
+            share >= 0.4,
+            "{width_in} in: the plot is {:.0} % of the figure's height",
+            100.0 * share
+        );
+        assert_eq!(pic.crowded(), None, "{width_in} in");
+    }
+}
+
+/// WCAG 2 contrast of `#rrggbb` on white.
+fn contrast_on_white(hex: &str) -> f64 {
+    let lin = |i: usize| {
+        let c = u8::from_str_radix(&hex[1 + 2 * i..3 + 2 * i], 16).unwrap() as f64 / 255.0;
+        if c <= 0.03928 {
+            c / 12.92
+        } else {
+            ((c + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    let l = 0.2126 * lin(0) + 0.7152 * lin(1) + 0.0722 * lin(2);
+    1.05 / (l + 0.05)
+}
+
+/// The fills of an SVG's shapes that are not grey (ink, grid, white):
+/// the colours of its roles.
+fn chromatic_fills(svg: &str) -> std::collections::BTreeSet<String> {
+    svg.split("<")
+        .filter(|e| !e.starts_with("text"))
+        .filter_map(|e| e.split("fill=\"#").nth(1))
+        .map(|f| format!("#{}", &f[..6]).to_lowercase())
+        .filter(|c| !(c[1..3] == c[3..5] && c[3..5] == c[5..7]))
+        .collect()
+}
+
+/// One colour per role across the simulated figures (the theme's
+/// palette roles): figure 4a marks its kinks and antikinks with the
+/// vermillion and blue of figure 3's (it once drew them orange and
+/// purple), read from the SVG files drawn; 4a's "kink" and "antikink"
+/// words are at least 4.5:1 on white (the orange "kink" was 2.25:1).
+#[test]
+fn figure_4a_marks_kinks_and_antikinks_in_figure_3s_colours() {
+    let dir = tempdir("roles");
+    ladder(&dir, &["figure", "3", "--format", "svg"]);
+    ladder(&dir, &["figure", "4a", "--format", "svg"]);
+    let read = |id: &str| std::fs::read_to_string(dir.join(format!("figure-{id}.svg"))).unwrap();
+    let (three, four) = (read("3"), read("4a"));
+    let roles: std::collections::BTreeSet<String> = ["#d55e00", "#0072b2"]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    assert_eq!(chromatic_fills(&three), roles, "figure 3's role colours");
+    assert_eq!(chromatic_fills(&four), roles, "figure 4a's role colours");
+    // The words beside 4a's chains, and their colours.
+    let words: Vec<(String, String)> = four
+        .split("<text")
+        .skip(1)
+        .filter_map(|t| {
+            let fill = t.split("fill=\"").nth(1)?[..7].to_lowercase();
+            let word = t.split('>').nth(1)?.split('<').next()?.trim().to_string();
+            Some((word, fill))
+        })
+        .filter(|(w, _)| w == "kink" || w == "antikink")
+        .collect();
+    for want in ["kink", "antikink"] {
+        assert!(words.iter().any(|(w, _)| w == want), "no \"{want}\" in 4a");
+    }
+    for (word, fill) in &words {
+        let c = contrast_on_white(fill);
+        assert!(c >= 4.5, "4a's \"{word}\" in {fill}: contrast {c:.2}:1");
+        // Its hue is its role's: red over blue for a kink, blue over red
+        // for an antikink.
+        let (r, b) = (
+            u8::from_str_radix(&fill[1..3], 16).unwrap(),
+            u8::from_str_radix(&fill[5..7], 16).unwrap(),
+        );
+        assert_eq!(word == "kink", r > b, "4a's \"{word}\" in {fill}");
+    }
+}
+
+/// The tank's levels side by side on a slide: panel (b) numbers the rows
+/// that (a) names, and the two plots are equally wide and each at least a
+/// fifth of the figure (with the level names on both, (b)'s plot was 5 %
+/// of it and (a)'s 7 %).
+#[test]
+fn tank_levels_plots_share_a_slide() {
+    let scene = catalog::find(Kind::Figure, "tank-levels")
+        .unwrap()
+        .scene
+        .clone();
+    let style = Style::named(StyleName::Slide);
+    let pic = scenes::figure_picture(&Theme::of(&style), &scene)
+        .unwrap()
+        .0;
+    let plots = pic.plot_boxes();
+    assert_eq!(plots.len(), 2, "{plots:?}");
+    let w: Vec<f32> = plots.iter().map(|p| p[2] - p[0]).collect();
+    assert!((w[0] - w[1]).abs() <= 0.03 * w[0], "plot widths {w:?}");
+    for x in &w {
+        assert!(*x >= 0.2 * pic.width(), "plot {x} of {}", pic.width());
+    }
+    assert!(pic.crowded().is_none());
+    let texts: Vec<String> = pic.text_boxes().into_iter().map(|b| b.text).collect();
+    for k in 1..=5 {
+        let n = texts
+            .iter()
+            .filter(|t| t.starts_with(&format!("{k}")))
+            .count();
+        assert!(
+            n >= 2,
+            "level {k} named in (a) and numbered in (b): {texts:?}"
+        );
+    }
+}

@@ -27,7 +27,20 @@ fn small() -> RingChain {
 /// opposite helicity.
 #[test]
 fn the_mirror_chain_is_the_mirror_image_bit_for_bit() {
-    let chain = small();
+    mirror_images(small());
+}
+
+/// The same with the hand that releases the top ring and holds the other
+/// strand's (`release`): the grip is taken where the ring is, mirrored.
+#[test]
+fn the_released_mirror_chain_is_the_mirror_image_bit_for_bit() {
+    mirror_images(RingChain {
+        release: true,
+        ..small()
+    });
+}
+
+fn mirror_images(chain: RingChain) {
     let times = rings::run::even_times(chain.t_end, 17);
     let a = rings::run(&chain, &times).unwrap();
     let b = rings::run(
@@ -53,7 +66,19 @@ fn the_mirror_chain_is_the_mirror_image_bit_for_bit() {
         }
         assert_eq!(sa.energy, sb.energy);
     }
-    assert!(!a.flips.is_empty(), "the turned top ring flips at least");
+    let (first, last) = (&a.samples[0], &a.samples[a.samples.len() - 1]);
+    let moved = first.rings.iter().zip(&last.rings);
+    let moved = moved
+        .map(|(p, q)| math::norm(math::sub(p.x, q.x)))
+        .fold(0.0, f64::max);
+    assert!(
+        moved > 1e-3,
+        "the chain moved ({moved} m): a comparison of motion"
+    );
+    assert!(
+        chain.release || !a.flips.is_empty(),
+        "the turned top ring flips at least"
+    );
     assert_eq!(a.flips.len(), b.flips.len());
     for (fa, fb) in a.flips.iter().zip(&b.flips) {
         assert_eq!((fa.ring, fa.t), (fb.ring, fb.t));
@@ -239,6 +264,9 @@ fn the_same_scene_gives_the_same_bytes_on_one_and_two_threads() {
         let json: serde_json::Value =
             serde_json::from_slice(&std::fs::read(sub.join("movie-chain.json")).unwrap()).unwrap();
         assert!(json["rings"]["guard_checks"].as_u64().unwrap() > 0);
+        // An untitled ring scene is titled from its chain, not as a ladder.
+        let title = json["title"].as_str().unwrap();
+        assert!(title.starts_with("a ring chain: 10 rings"), "{title}");
         outs.push((gif, png, json["rings"].clone()));
     }
     assert!(
@@ -401,5 +429,36 @@ fn the_trajectory_is_the_same_bit_for_bit() {
         0x6f09_2e07_46ec_4a52,
         "{:#x}",
         fingerprint(&run)
+    );
+}
+
+/// A ring filmstrip on a slide (wide and short) draws its strips as tall
+/// as the page leaves, with its text at the slide's size, where it was
+/// refused ("--height 7.50in: too short", figure 4b at `--style slide`,
+/// so `ladder all --style slide` stopped there).
+#[test]
+fn a_ring_filmstrip_fits_a_slide() {
+    let dir = TempDir::new("rings-slide");
+    let scene = dir.file(
+        "strip.toml",
+        "name = \"strip\"\n[rings]\nn = 6\nt_end = 0.05\nturn = { start = 0.01 }\n\
+         [output]\nkind = \"filmstrip\"\ntimes = [0.0, 0.02, 0.05]\n",
+    );
+    let out = ladder(
+        &dir,
+        &[
+            "render",
+            scene.as_str(),
+            "--style",
+            "slide",
+            "--format",
+            "png",
+        ],
+        "2",
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
     );
 }

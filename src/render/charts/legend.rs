@@ -97,6 +97,35 @@ pub(super) fn below_grid(
     (cols, rows, col_w, row, (rows as i32 * row + 6) as u32)
 }
 
+/// Whether a legend column right of the plot of a chart `width` wide
+/// would take more than a third of it: `Legend::Auto` then puts the
+/// legend under the plot instead, in columns (the plot keeps its width,
+/// the text its size).
+pub(super) fn outside_too_wide(theme: &Theme, spec: &ChartSpec, width: u32) -> bool {
+    legend_box(theme, spec).0 as u32 + theme.legend_gap_min > width / 3
+}
+
+/// The band, pixels, that `spec`'s legend may take under the plot of a
+/// chart `width` wide: [`below_grid`]'s when it is put there, or may be
+/// (`Legend::Auto` where a column right of the plot is too wide: it goes
+/// under the plot unless a place inside is free of data); 0 when it goes
+/// inside or right of the plot, or there is none. A stack of panels keeps
+/// this room in a panel's least height, so that its plot, and the rotated
+/// y label centred on it, keep theirs.
+pub fn legend_band(theme: &Theme, spec: &ChartSpec, width: u32) -> u32 {
+    let below = match spec.legend {
+        _ if !has_labels(spec) => false,
+        Legend::Below => true,
+        Legend::Auto => outside_too_wide(theme, spec, width),
+        _ => false,
+    };
+    if below {
+        below_grid(theme, spec, width).4
+    } else {
+        0
+    }
+}
+
 /// A legend under the plot: [`below_grid`]'s columns, filled row by row,
 /// the band's top at pixel `y` of a chart `width` wide.
 pub(super) fn draw_below_legend(

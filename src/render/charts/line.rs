@@ -4,7 +4,7 @@
 use super::glyph::Glyph;
 use super::legend::{
     auto_legend, below_grid, draw_below_legend, draw_legend, draw_outside_legend, has_labels,
-    legend_box,
+    legend_box, outside_too_wide,
 };
 use super::ranges::{Range2, data_range, equalize, runs};
 use super::title::{fit_title, titled};
@@ -121,9 +121,7 @@ fn layout(
         // A column right of the plot that would take more than a third of
         // the chart goes under the plot instead, in columns: the plot keeps
         // its width, the text its size.
-        if pass.legend == Legend::Outside
-            && legend_box(theme, spec).0 as u32 + theme.legend_gap_min > width / 3
-        {
+        if pass.legend == Legend::Outside && outside_too_wide(theme, spec, width) {
             pass.legend = Legend::Below;
         }
         if pass.legend == Legend::Outside && spec.equal_aspect {
@@ -240,58 +238,9 @@ where
 {
     let below =
         (pass.legend == Legend::Below).then(|| below_grid(theme, spec, root.dim_in_pixel().0).4);
-    let area = if spec.plot_x.is_some() {
-        // The plot's edges are given: the legend goes right of them.
-        root.margin(0, below.unwrap_or(0), 0, 0)
-    } else if pass.legend == Legend::Outside {
-        root.margin(
-            0,
-            0,
-            0,
-            legend_box(theme, spec).0 as u32 + theme.legend_gap_min,
-        )
-    } else if let Some(band) = below {
-        root.margin(0, band, 0, 0)
-    } else {
-        root.clone()
-    };
-    // A title that fits on one line is the chart's caption; a longer one is
-    // wrapped and shrunk to the chart's width (`fit_title`), never cut.
-    let width = area.dim_in_pixel().0;
-    let one_line = spec.title.as_deref().is_none_or(|t| {
-        fit_title(theme, t, width).lines.len() == 1
-            && fit_title(theme, t, width).size == size::TITLE
-    });
-    let area = if one_line {
-        area
-    } else {
-        titled(theme, area, spec.title.as_deref(), width)?
-    };
+    let (area, width, one_line) = plot_region(theme, root, spec, pass, below)?;
     let mut builder = ChartBuilder::on(&area);
-    // A shared x axis is labelled by the panel below: room for its
-    // numbers only.
-    let x_area = if spec.x.numbered {
-        theme.numbered_x_area
-    } else if spec.x.shared {
-        theme.shared_x_area
-    } else {
-        theme.x_label_area
-    };
-    builder
-        .margin(theme.chart_margin as u32)
-        .margin_top(theme.chart_margin_y as u32)
-        .margin_bottom(theme.chart_margin_y as u32)
-        .x_label_area_size(x_area)
-        .y_label_area_size(y_area);
-    if let Some(right) = x_label_right_margin(theme, spec, width, y_area) {
-        builder.margin_right(right);
-    }
-    if let Some((left, right)) = spec.plot_x {
-        let m = theme.chart_margin as i32;
-        builder
-            .y_label_area_size((left - m).max(0) as u32)
-            .margin_right((width as i32 - right).max(0) as u32);
-    }
+    set_margins(theme, &mut builder, spec, width, y_area);
     if let Some(t) = spec.title.as_ref().filter(|_| one_line) {
         builder.caption(
             t,
@@ -333,6 +282,82 @@ where
         plot,
         legend: pass.legend,
     })
+}
+
+/// The part of `root` the chart's axes and title take: without the
+/// legend's room (beside or `below`, pixels), and under a title too long
+/// for one line (wrapped and shrunk to the chart's width by `fit_title`,
+/// never cut); with its width, pixels, and whether the title (if any) is
+/// on one line, when it is the chart's caption.
+fn plot_region<'a>(
+    theme: &Theme,
+    root: &Area<'a>,
+    spec: &ChartSpec,
+    pass: Pass,
+    below: Option<u32>,
+) -> Result<(Area<'a>, u32, bool)> {
+    let area = if spec.plot_x.is_some() {
+        // The plot's edges are given: the legend goes right of them.
+        root.margin(0, below.unwrap_or(0), 0, 0)
+    } else if pass.legend == Legend::Outside {
+        root.margin(
+            0,
+            0,
+            0,
+            legend_box(theme, spec).0 as u32 + theme.legend_gap_min,
+        )
+    } else if let Some(band) = below {
+        root.margin(0, band, 0, 0)
+    } else {
+        root.clone()
+    };
+    let width = area.dim_in_pixel().0;
+    let one_line = spec.title.as_deref().is_none_or(|t| {
+        fit_title(theme, t, width).lines.len() == 1
+            && fit_title(theme, t, width).size == size::TITLE
+    });
+    if one_line {
+        Ok((area, width, true))
+    } else {
+        let area = titled(theme, area, spec.title.as_deref(), width)?;
+        Ok((area, width, false))
+    }
+}
+
+/// The chart's margins and the room of its axes' labels (`y_area` at the
+/// left), on a region `width` pixels wide; a chart whose plot's edges are
+/// given (`spec.plot_x`) puts them there.
+fn set_margins<DB: DrawingBackend>(
+    theme: &Theme,
+    builder: &mut ChartBuilder<'_, '_, DB>,
+    spec: &ChartSpec,
+    width: u32,
+    y_area: u32,
+) {
+    // A shared x axis is labelled by the panel below: room for its
+    // numbers only.
+    let x_area = if spec.x.numbered {
+        theme.numbered_x_area
+    } else if spec.x.shared {
+        theme.shared_x_area
+    } else {
+        theme.x_label_area
+    };
+    builder
+        .margin(theme.chart_margin as u32)
+        .margin_top(theme.chart_margin_y as u32)
+        .margin_bottom(theme.chart_margin_y as u32)
+        .x_label_area_size(x_area)
+        .y_label_area_size(y_area);
+    if let Some(right) = x_label_right_margin(theme, spec, width, y_area) {
+        builder.margin_right(right);
+    }
+    if let Some((left, right)) = spec.plot_x {
+        let m = theme.chart_margin as i32;
+        builder
+            .y_label_area_size((left - m).max(0) as u32)
+            .margin_right((width as i32 - right).max(0) as u32);
+    }
 }
 
 /// The right margin, pixels, that keeps the x axis' label (centred under

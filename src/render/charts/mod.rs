@@ -20,6 +20,7 @@ mod title;
 
 pub(super) use glyph::Glyph;
 pub use kymograph::{Kymograph, kymograph, polarisation_rows};
+pub use legend::legend_band;
 pub use line::{line_chart, line_chart_growing};
 pub use rasterize::{Chart, rasterize_svg, rasterize_tree};
 pub use spec::{Axis, ChartSpec, Legend, LineStyle, Marker, Scale, Series};

@@ -9,7 +9,9 @@ use crate::render::palette::{Palette, Role};
 use crate::render::style::{self, size};
 use plotters::prelude::*;
 
-/// Space kept free left and right of a title, in pixels.
+/// Space kept free left and right of a title, in pixels, at least: a
+/// chart keeps its whole [`Theme::chart_margin`] free at its left (a
+/// stack's panel labels sit there, `sweep::stack::label_indent`).
 const SIDE: f32 = 8.0;
 
 /// The smallest font size tried before a title is shrunk to fit as it is.
@@ -44,7 +46,7 @@ impl FittedTitle {
 /// then is split into two lines and shrunk until the wider one fits.
 pub fn fit_title(theme: &Theme, title: &str, width: u32) -> FittedTitle {
     let font = theme.font();
-    let room = (width as f32 - 2.0 * SIDE).max(1.0);
+    let room = (width as f32 - 2.0 * SIDE.max(theme.chart_margin)).max(1.0);
     let fits = |t: &FittedTitle| t.width() <= room;
     let one = FittedTitle {
         lines: vec![title.to_string()],
@@ -67,7 +69,7 @@ pub fn fit_title(theme: &Theme, title: &str, width: u32) -> FittedTitle {
             font,
         };
         if t.lines.len() <= 2 && fits(&t) {
-            return t;
+            return balanced(t, title, room);
         }
         size -= 0.5;
     }
@@ -80,6 +82,29 @@ pub fn fit_title(theme: &Theme, title: &str, width: u32) -> FittedTitle {
         return wrapped;
     }
     shrunk_to(title, font, room)
+}
+
+/// `t` (a title on more than one line) wrapped again at the narrowest
+/// room that keeps its number of lines, so that no line is a widow of a
+/// word or two: found by bisection on the room, to a pixel.
+fn balanced(t: FittedTitle, title: &str, room: f32) -> FittedTitle {
+    if t.lines.len() < 2 {
+        return t;
+    }
+    let lines = |r: f32| style::wrap_text(t.font, title, r, t.size);
+    let (mut lo, mut hi) = (0.5 * room / t.lines.len() as f32, room);
+    while hi - lo > 1.0 {
+        let mid = 0.5 * (lo + hi);
+        if lines(mid).len() <= t.lines.len() {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    FittedTitle {
+        lines: lines(hi),
+        ..t
+    }
 }
 
 /// Two lines at [`MIN_SIZE`], as balanced as the words allow, shrunk until
@@ -165,5 +190,20 @@ mod tests {
             assert!(t.lines.len() <= 2, "{width}: {t:?}");
             assert_eq!(t.lines.join(" "), title, "{width}");
         }
+    }
+
+    /// A title on two lines keeps the chart's left margin free (a stack's
+    /// panel labels sit there) and puts no word or two alone on its last
+    /// line: the water-tank kymograph's title left "θₙ" alone.
+    #[test]
+    fn a_wrapped_title_keeps_the_margin_and_balances_its_lines() {
+        let theme = Theme::of(&Default::default());
+        let title = "Water tank: a kink, motor at 0.2 Hz, the closest level of model: sin θₙ";
+        let t = fit_title(&theme, title, 640);
+        assert_eq!(t.lines.len(), 2, "{t:?}");
+        assert!(t.width() <= 640.0 - 2.0 * theme.chart_margin, "{t:?}");
+        let w = |l: &str| style::text_width(t.font, l, t.size);
+        assert!(w(&t.lines[1]) >= 0.5 * w(&t.lines[0]), "{t:?}");
+        assert_eq!(t.lines.join(" "), title);
     }
 }

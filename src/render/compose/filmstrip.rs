@@ -278,6 +278,23 @@ impl StripPlan {
         if block_pixels(whole.columns[0].region, &probe) >= min {
             return Ok(whole.fitted(frames, opts));
         }
+        Self::folded(theme, ladder, frames, opts, h, min)
+    }
+
+    /// The plan of a ladder too long to show with blocks of `min` pixels
+    /// in one snapshot `h` pixels tall: folded into columns side by side
+    /// ([`Fold::readable`]), room for the marks beside them, and the
+    /// snapshots wrapped into rows of at most [`MAX_FOLDED_ROW`] (or the
+    /// fit box's width).
+    fn folded(
+        theme: &Theme,
+        ladder: &Ladder,
+        frames: &[Frame<'_>],
+        opts: &FilmstripOptions,
+        h: u32,
+        min: f32,
+    ) -> Result<StripPlan> {
+        let states: Vec<&[f64]> = frames.iter().map(|f| f.q).collect();
         // Room for the marks beside every column, on their sides.
         let room = |side: HAlign| {
             opts.marks

@@ -92,50 +92,85 @@ pub(super) fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<
             100.0 * STIFF_TOLERANCE
         )));
     }
-    let speed = level_chart(
-        theme,
-        Axis::new("c_{kink} (cm/s)"),
-        (
-            MEASURED_KINK_CM_S,
-            format!("measured {MEASURED_KINK_CM_S:.1} cm/s"),
-        ),
-        &results,
-        |r| r.kink_cm_s,
-    );
-    let ratio = level_chart(
-        theme,
-        Axis::new("c_{antikink} / c_{kink}"),
-        (MEASURED_RATIO, format!("measured {MEASURED_RATIO}")),
-        &results,
-        LevelResult::ratio,
-    );
+    let names = level_names(&results);
+    let speed = |names: &[String]| {
+        level_chart(
+            theme,
+            Axis::new("c_{kink} (cm/s)"),
+            Axis::new("").names(names.iter().rev().cloned().collect()),
+            (
+                MEASURED_KINK_CM_S,
+                format!("measured {MEASURED_KINK_CM_S:.1} cm/s"),
+            ),
+            &results,
+            |r| r.kink_cm_s,
+        )
+    };
+    let ratio = |y: Axis| {
+        level_chart(
+            theme,
+            Axis::new("c_{antikink} / c_{kink}"),
+            y,
+            (MEASURED_RATIO, format!("measured {MEASURED_RATIO}")),
+            &results,
+            LevelResult::ratio,
+        )
+    };
     // Side by side on a wide print page (paper-wide, slide), where two
     // charts stacked would be taller than the page allows; stacked on a
     // column (paper) and at screen.
     let w_frame = theme.style.frame(LEVEL_CHART);
-    let w = w_frame.0;
-    let side_by_side = theme.is_print() && w >= WIDE_PAGE_PX;
-    let size = if side_by_side {
-        let half = w.saturating_sub(theme.gap as u32) / 2;
-        (half, (half as f32 * SIDE_BY_SIDE_ASPECT) as u32)
+    let side_by_side = theme.is_print() && w_frame.0 >= WIDE_PAGE_PX;
+    let panels = if side_by_side {
+        // Panel (b) beside (a) shares its rows: it numbers them, and the
+        // width the names would take goes to its plot.
+        let numbers = level_numbers(&results);
+        let y = Axis::new("level").names(numbers.into_iter().rev().collect());
+        side_by_side_charts(theme, w_frame.0, &speed(&names), &ratio(y))?
     } else {
-        w_frame
+        let y = Axis::new("").names(names.iter().rev().cloned().collect());
+        let chart = |spec: &ChartSpec| -> Result<Picture> {
+            Ok(Picture::from(charts::line_chart(
+                theme, spec, w_frame.0, w_frame.1,
+            )?))
+        };
+        [chart(&speed(&names))?, chart(&ratio(y))?]
     };
-    let chart = |spec: &ChartSpec| -> Result<Picture> {
-        Ok(Picture::from(charts::line_chart(
-            theme, spec, size.0, size.1,
-        )?))
-    };
-    let panels = [
-        Panel::new(chart(&speed)?).label("(a)"),
-        Panel::new(chart(&ratio)?).label("(b)"),
-    ];
+    let [a, b] = panels;
+    let panels = [Panel::new(a).label("(a)"), Panel::new(b).label("(b)")];
     let mut layout = Layout::columns(theme, if side_by_side { 2 } else { 1 });
     if theme.is_print() {
         layout.margin = 0;
     }
     let picture = compose::compose_picture(&panels, &layout)?.fit_page();
     Ok((picture, data))
+}
+
+/// The two charts side by side on a page `w` pixels wide, as tall as
+/// [`SIDE_BY_SIDE_ASPECT`] of half of it: the page's width shared so that
+/// their plots are equally wide (each drawn at half first, then again
+/// with the difference of their plots moved from one to the other).
+fn side_by_side_charts(
+    theme: &Theme,
+    w: u32,
+    a: &ChartSpec,
+    b: &ChartSpec,
+) -> Result<[Picture; 2]> {
+    let half = w.saturating_sub(theme.gap as u32) / 2;
+    let h = (half as f32 * SIDE_BY_SIDE_ASPECT) as u32;
+    let plot_w = |spec: &ChartSpec| -> Result<i32> {
+        let c = charts::line_chart(theme, spec, half, h)?;
+        Ok(c.plot_x.map_or(0, |(l, r)| r - l))
+    };
+    let d = (plot_w(b)? - plot_w(a)?) / 2;
+    let (wa, wb) = (
+        half.saturating_add_signed(d),
+        half.saturating_add_signed(-d),
+    );
+    Ok([
+        Picture::from(charts::line_chart(theme, a, wa, h)?),
+        Picture::from(charts::line_chart(theme, b, wb, h)?),
+    ])
 }
 
 /// The natural size of one chart of the levels' figure (design pixels).
@@ -158,13 +193,29 @@ pub fn level_names(results: &[LevelResult]) -> Vec<String> {
         .collect()
 }
 
+/// The number of each level, the first word of its name ("1" of "1 paper:
+/// linear damping γ"): the rows of a panel beside the one that names them.
+pub fn level_numbers(results: &[LevelResult]) -> Vec<String> {
+    results
+        .iter()
+        .map(|r| {
+            r.name
+                .split_whitespace()
+                .next()
+                .unwrap_or(r.name)
+                .to_string()
+        })
+        .collect()
+}
+
 /// One panel of the levels' figure: one row per level (the first at the
-/// top, named on the axis), `value` of each level where it has one (a
-/// level without a wave has no point: its name says "no wave"), beside
-/// the `measured` value (a dashed line across the rows).
+/// top, named on the `y` axis, the last name first), `value` of each level
+/// where it has one (a level without a wave has no point: its name says
+/// "no wave"), beside the `measured` value (a dashed line across the rows).
 fn level_chart(
     theme: &Theme,
     x: Axis,
+    y: Axis,
     measured: (f64, String),
     results: &[LevelResult],
     value: impl Fn(&LevelResult) -> Option<f64>,
@@ -172,9 +223,7 @@ fn level_chart(
     let n = results.len() as f64;
     let top = results.iter().filter_map(&value).fold(measured.0, f64::max);
     let row = |k: usize| n - k as f64;
-    let mut names = level_names(results);
-    names.reverse();
-    let mut spec = ChartSpec::new(x.range(0.0, 1.15 * top), Axis::new("").names(names));
+    let mut spec = ChartSpec::new(x.range(0.0, 1.15 * top), y);
     spec = spec.series(
         Series::line(
             measured.1,

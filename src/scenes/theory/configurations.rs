@@ -6,7 +6,7 @@ use super::{FigureInput, configuration, frame, grid, pen, signed_deg};
 use crate::error::Result;
 use crate::model::Ladder;
 use crate::model::ladder::nodes;
-use crate::render::charts::line_chart;
+use crate::render::charts::{line_chart, line_chart_growing};
 use crate::render::compose::Panel;
 use crate::render::palette::{Palette, Role};
 use crate::render::snapshot::{Region, Snapshot, pixel_of};
@@ -113,7 +113,11 @@ pub fn gapless(theme: &Theme, input: &FigureInput) -> Result<Picture> {
         )
     };
     let snap = configuration(theme, &ladder, &q, None, size)?;
-    let chart = gapless_potential(theme, a, b, chart_size)?;
+    // A legend that goes under a narrow chart (on two lines on a narrower
+    // page) makes the chart taller by its band, so that the plot keeps
+    // the height it was given.
+    let most = narrow.then(|| theme.style.fit_box().map_or(u32::MAX, |(_, h)| h as u32));
+    let chart = gapless_potential(theme, a, b, chart_size, most)?;
     let panels = vec![
         Panel::new(snap)
             .label("(a)")
@@ -132,8 +136,15 @@ pub fn gapless(theme: &Theme, input: &FigureInput) -> Result<Picture> {
     frame(theme, &input.title, &body, &notes, 760)
 }
 
-/// U(θ) for the gapless lengths with the minimum marked.
-fn gapless_potential(theme: &Theme, a: f64, b: f64, (w, h): (u32, u32)) -> Result<Picture> {
+/// U(θ) for the gapless lengths with the minimum marked, `w` × `h`
+/// pixels, or taller by the legend's band (up to `most`) when given.
+fn gapless_potential(
+    theme: &Theme,
+    a: f64,
+    b: f64,
+    (w, h): (u32, u32),
+    most: Option<u32>,
+) -> Result<Picture> {
     let points: Vec<(f64, f64)> = (0..=720)
         .filter_map(|k| {
             let th = -89.75 + 179.5 * k as f64 / 720.0;
@@ -156,7 +167,11 @@ fn gapless_potential(theme: &Theme, a: f64, b: f64, (w, h): (u32, u32)) -> Resul
         Marker::Circle,
     ));
     spec.legend = Legend::Auto;
-    Ok(line_chart(theme, &spec, w, h)?.into())
+    Ok(match most {
+        Some(most) => line_chart_growing(theme, &spec, w, h, most)?,
+        None => line_chart(theme, &spec, w, h)?,
+    }
+    .into())
 }
 
 /// A residual that is zero to rounding as "< 10⁻¹²", otherwise 2 decimals.

@@ -47,18 +47,29 @@ pub fn render_catalogue(dir: &std::path::Path, extra: &[&str]) -> String {
     String::from_utf8(out.stdout).expect("the output is UTF-8")
 }
 
-/// [`render_catalogue`] with `--timings` in the default formats, made
-/// once for every test that reads the whole catalogue's default render
-/// (the gallery's links, the timings table): its folder and the table it
-/// printed. The ring chain alone makes a render of the catalogue cost
-/// half a minute; tests that need other formats render their own.
-/// Readers must not change the folder.
+/// The figure and movie formats of [`catalogue_render`]: every format
+/// but PNG (figures then get a PNG preview, which the page shows), so
+/// that one render serves the gallery's page checks (links, previews, a
+/// real browser loading every image and video) and the timings table.
+pub const CATALOGUE_FORMATS: &str = if cfg!(feature = "mp4") {
+    "svg,pdf,gif,mp4"
+} else {
+    "svg,pdf,gif"
+};
+
+/// [`render_catalogue`] with `--timings` in [`CATALOGUE_FORMATS`], made
+/// once for every test that reads the whole catalogue's render (the
+/// gallery's links, previews and browser check, the timings table): its
+/// folder and the table it printed. The ring chain alone makes a render
+/// of the catalogue cost half a minute of CPU; tests that need other
+/// styles render their own. Readers must not change the folder (copy it,
+/// as the browser check does, to add pages).
 pub fn catalogue_render() -> &'static (std::path::PathBuf, String) {
     static RENDER: std::sync::OnceLock<(std::path::PathBuf, String)> = std::sync::OnceLock::new();
     RENDER.get_or_init(|| {
         // Under target/tmp: replaced by the next run, never left in /tmp.
         let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("catalogue-render");
-        let table = render_catalogue(&dir, &["--timings"]);
+        let table = render_catalogue(&dir, &["--timings", "--format", CATALOGUE_FORMATS]);
         (dir, table)
     })
 }

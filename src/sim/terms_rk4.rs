@@ -1,0 +1,485 @@
+//! Classical RK4 fused with the force loop of a ladder in a fluid
+//! (docs/experiments.md: buoyancy, added mass, strip drag, the paper's
+//! springs as stiff two-way links, block 1 turned by the motor): the
+//! water tank's path.
+//!
+//! The portable path (`sim::rhs::Rhs::acceleration` under
+//! `integrators::RungeKutta`) evaluates each stage through the integrator
+//! interface: the springs' gradient into memory (block after block), the
+//! frames (t, ν) of every block again with the C library's `sincos`, then
+//! the drag and Lagrange's equations with added mass block by block, and
+//! RK4's sums over whole vectors. Here the state is held as structure of
+//! arrays (X, Y, θ and their rates, one array each, padded to whole
+//! 256-bit registers), each stage's accelerations are one pass of
+//! vectorised loops (sine and cosine, springs, generalised forces, drag in
+//! closed form, the 2×2 mass matrix's closed-form inverse and the Munk
+//! moment), and no step allocates.
+//!
+//! Every operation is the portable path's in the same order, with one
+//! exception: the blocks' frames take the sine and cosine the springs
+//! already computed (`model::trig`, fdlibm's kernels) instead of the C
+//! library's. The two differ by at most 4 × 10⁻¹⁶ (`model::trig`'s test),
+//! so one force evaluation differs from the portable one by a few ulps;
+//! with the library's frames ([`TermsRk4::with_library_frames`]) the
+//! trajectory is the portable path's bit for bit (`tests` below).
+
+use super::observables::ArrivalDetector;
+use super::rhs::{Rhs, State};
+use super::stepping::Plan;
+use super::stepping::Stepping;
+use super::tableau::RK4;
+use crate::model::params::{M, R};
+
+/// The state, stage values and stage rates of one run, one array per
+/// coordinate: [X, Y, θ] then [Ẋ, Ẏ, θ̇].
+type Soa = [Vec<f64>; 3];
+
+/// The fused RK4 stepper of one ladder with the terms of a fluid.
+pub struct TermsRk4 {
+    c: Coeffs,
+    /// (−1)ⁿ per block (padding included).
+    parity: Vec<f64>,
+    /// The state at the start of the step and the stage's (q, v).
+    q0: Soa,
+    v0: Soa,
+    q: Soa,
+    v: Soa,
+    /// Stage rates: kq[i] = v, kv[i] = a(q, v) of stage i.
+    kq: [Soa; 4],
+    kv: [Soa; 4],
+    s: Scratch,
+    library_frames: bool,
+}
+
+/// The run's coefficients, each computed as the portable path computes it.
+#[derive(Debug, Clone, Copy)]
+struct Coeffs {
+    n: usize,
+    /// Blocks and spring pairs rounded up to whole registers of four.
+    np: usize,
+    mp: usize,
+    g: f64,
+    a_rest: f64,
+    b_rest: f64,
+    gamma: f64,
+    /// γ r², the θ coordinate's damping coefficient.
+    gamma_theta: f64,
+    ma: f64,
+    /// I + I_a.
+    j: f64,
+    /// m_a / (m + m_a): Sherman–Morrison's factor.
+    k_am: f64,
+    drag: f64,
+    driven: bool,
+}
+
+/// The force loop's scratch: sines and cosines, the springs' pair forces
+/// and torques, the gradient, the frames.
+struct Scratch {
+    sin: Vec<f64>,
+    cos: Vec<f64>,
+    fsin: Vec<f64>,
+    fcos: Vec<f64>,
+    fx: Vec<f64>,
+    fy: Vec<f64>,
+    tl: Vec<f64>,
+    tu: Vec<f64>,
+    grad: Soa,
+}
+
+const fn padded(n: usize) -> usize {
+    n.div_ceil(4) * 4
+}
+
+impl TermsRk4 {
+    /// The stepper for `rhs`'s ladder, if this path takes it: the paper's
+    /// springs (stiff two-way links), velocity-dependent terms of a fluid
+    /// (added mass, drag), no pin friction, not the toy as built, N ≥ 2,
+    /// and a CPU with AVX2 that `stepping` lets a kernel use.
+    pub fn new(rhs: &Rhs, stepping: Stepping) -> Option<Self> {
+        let ladder = rhs.ladder;
+        let t = rhs.terms();
+        let eligible = ladder.built.is_none()
+            && t.links.is_paper()
+            && t.friction.is_none()
+            && ladder.velocity_dependent()
+            && ladder.n() >= 2
+            && stepping.isa().is_some();
+        eligible.then(|| Self::build(rhs))
+    }
+
+    /// As [`TermsRk4::new`], the frames from the C library's sine and
+    /// cosine: the portable path's arithmetic throughout (for tests).
+    pub fn with_library_frames(rhs: &Rhs, stepping: Stepping) -> Option<Self> {
+        Self::new(rhs, stepping).map(|s| Self {
+            library_frames: true,
+            ..s
+        })
+    }
+
+    fn build(rhs: &Rhs) -> Self {
+        let ladder = rhs.ladder;
+        let p = &ladder.params;
+        let t = rhs.terms();
+        let n = p.n;
+        let (np, mp) = (padded(n), padded(n - 1));
+        let len = np + 4;
+        let z = || vec![0.0; len];
+        let soa = || [z(), z(), z()];
+        // Padding blocks sit far apart at θ = 0 (as `ForceScratch`).
+        let mut q0 = soa();
+        for (i, x) in q0[0].iter_mut().enumerate() {
+            *x = 10.0 * i as f64;
+        }
+        let c = Coeffs {
+            n,
+            np,
+            mp,
+            g: M * p.gravity,
+            a_rest: ladder.a,
+            b_rest: p.b,
+            gamma: p.gamma,
+            gamma_theta: p.gamma * R * R,
+            ma: t.added_mass,
+            j: p.inertia + t.added_inertia,
+            k_am: t.added_mass / (M + t.added_mass),
+            drag: t.drag,
+            driven: rhs.drive().is_some(),
+        };
+        Self {
+            c,
+            parity: (0..len).map(crate::model::ladder::parity).collect(),
+            q: q0.clone(),
+            q0,
+            v0: soa(),
+            v: soa(),
+            kq: [soa(), soa(), soa(), soa()],
+            kv: [soa(), soa(), soa(), soa()],
+            s: Scratch {
+                sin: z(),
+                cos: z(),
+                fsin: z(),
+                fcos: z(),
+                fx: z(),
+                fy: z(),
+                tl: z(),
+                tu: z(),
+                grad: soa(),
+            },
+            library_frames: false,
+        }
+    }
+
+    /// Up to `max_steps` RK4 steps towards `t_stop` (the steps of `plan`
+    /// at `dt`, as `FixedStep::advance` takes them), block 1 constrained
+    /// at every stage and after every step, `arrivals` fed after each
+    /// step. Returns the time reached and the steps taken.
+    pub(super) fn advance_many(
+        &mut self,
+        rhs: &mut Rhs,
+        st: &mut State,
+        (plan, dt): (&mut Plan, f64),
+        (t, t_stop): (f64, f64),
+        max_steps: u64,
+        arrivals: &mut ArrivalDetector,
+    ) -> (f64, u64) {
+        self.load(st);
+        let (mut t, mut taken) = (t, 0);
+        while taken < max_steps && t < t_stop {
+            let (h, last) = plan.next(t, t_stop, dt);
+            let t_new = if last { t_stop } else { t + h };
+            // SAFETY: `new` checked that the CPU supports AVX2.
+            unsafe { self.step_avx2(rhs, t, h, t_new) };
+            t = t_new;
+            for i in 0..self.c.n {
+                st.q[3 * i + 2] = self.q0[2][i];
+                st.v[3 * i + 2] = self.v0[2][i];
+            }
+            arrivals.observe(t, &st.q, &st.v);
+            taken += 1;
+        }
+        rhs.count_evals(4 * taken);
+        self.store(st);
+        (t, taken)
+    }
+
+    /// The state of `st` into the arrays.
+    fn load(&mut self, st: &State) {
+        for i in 0..self.c.n {
+            for k in 0..3 {
+                self.q0[k][i] = st.q[3 * i + k];
+                self.v0[k][i] = st.v[3 * i + k];
+            }
+        }
+    }
+
+    /// The arrays' state into `st`.
+    fn store(&self, st: &mut State) {
+        for i in 0..self.c.n {
+            for k in 0..3 {
+                st.q[3 * i + k] = self.q0[k][i];
+                st.v[3 * i + k] = self.v0[k][i];
+            }
+        }
+    }
+
+    #[cfg_attr(target_arch = "x86_64", target_feature(enable = "avx2"))]
+    unsafe fn step_avx2(&mut self, rhs: &Rhs, t: f64, h: f64, t_new: f64) {
+        self.step(rhs, t, h, t_new);
+    }
+
+    /// One RK4 step from (q0, v0) at `t`: `RungeKutta::step` of the
+    /// portable path, its sums in the same order.
+    #[inline(always)]
+    fn step(&mut self, rhs: &Rhs, t: f64, h: f64, t_new: f64) {
+        // Stage 0 at the state itself (constrained at `t` already: the
+        // same values again).
+        constrain(rhs, t, &mut self.q0, &mut self.v0);
+        let np = self.c.np;
+        for k in 0..3 {
+            copy(&mut self.kq[0][k], &self.v0[k], np);
+        }
+        self.evaluate(0, true);
+        for i in 1..4 {
+            self.combine(h, RK4.a[i]);
+            self.stage(rhs, i, t + RK4.c[i] * h);
+        }
+        self.combine(h, RK4.b);
+        std::mem::swap(&mut self.q0, &mut self.q);
+        std::mem::swap(&mut self.v0, &mut self.v);
+        constrain(rhs, t_new, &mut self.q0, &mut self.v0);
+    }
+
+    /// (q, v) = (q0, v0) + h Σ w_j k_j, the sum from 0.0 in order of j.
+    #[inline(always)]
+    fn combine(&mut self, h: f64, w: &[f64]) {
+        let np = self.c.np;
+        for k in 0..3 {
+            for (y, y0, ks) in [
+                (&mut self.q[k], &self.q0[k], &self.kq),
+                (&mut self.v[k], &self.v0[k], &self.kv),
+            ] {
+                let (y, y0) = (&mut y[..np], &y0[..np]);
+                let k0 = &ks[0][k][..np];
+                match *w {
+                    [w0] => {
+                        for l in 0..np {
+                            y[l] = y0[l] + h * (0.0 + w0 * k0[l]);
+                        }
+                    }
+                    [w0, w1] => {
+                        let k1 = &ks[1][k][..np];
+                        for l in 0..np {
+                            y[l] = y0[l] + h * ((0.0 + w0 * k0[l]) + w1 * k1[l]);
+                        }
+                    }
+                    [w0, w1, w2] => {
+                        let (k1, k2) = (&ks[1][k][..np], &ks[2][k][..np]);
+                        for l in 0..np {
+                            let d = ((0.0 + w0 * k0[l]) + w1 * k1[l]) + w2 * k2[l];
+                            y[l] = y0[l] + h * d;
+                        }
+                    }
+                    _ => {
+                        let (k1, k2, k3) = (&ks[1][k][..np], &ks[2][k][..np], &ks[3][k][..np]);
+                        for l in 0..np {
+                            let d = (((0.0 + w[0] * k0[l]) + w[1] * k1[l]) + w[2] * k2[l])
+                                + w[3] * k3[l];
+                            y[l] = y0[l] + h * d;
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// Stage `i` at (q, v), block 1 constrained at `ts`.
+    #[inline(always)]
+    fn stage(&mut self, rhs: &Rhs, i: usize, ts: f64) {
+        constrain(rhs, ts, &mut self.q, &mut self.v);
+        // kq[i] = v: the stage's v moves into kq[i] (the next combine
+        // writes every lane of v again).
+        std::mem::swap(&mut self.kq[i], &mut self.v);
+        self.evaluate(i, false);
+    }
+
+    /// kv[i] = a(q, v) of stage `i`: (q0, kq[0]) for stage 0 (`start`),
+    /// (q, kq[i]) for the others.
+    #[inline(always)]
+    fn evaluate(&mut self, i: usize, start: bool) {
+        let q = if start { &self.q0 } else { &self.q };
+        let [ax, ay, aw] = &mut self.kv[i];
+        acceleration(
+            &self.c,
+            &self.parity,
+            (q, &self.kq[i]),
+            [ax, ay, aw],
+            &mut self.s,
+            self.library_frames,
+        );
+    }
+}
+
+/// `dst[..np] = src[..np]` by a loop the compiler keeps in registers.
+#[inline(always)]
+fn copy(dst: &mut [f64], src: &[f64], np: usize) {
+    for (d, s) in dst[..np].chunks_exact_mut(4).zip(src[..np].chunks_exact(4)) {
+        d.copy_from_slice(s);
+    }
+}
+
+/// Block 1's prescribed position and velocity at `ts`, if driven.
+#[inline(always)]
+fn constrain(rhs: &Rhs, ts: f64, q: &mut Soa, v: &mut Soa) {
+    if let Some((qp, vp)) = rhs.prescribed(ts) {
+        for k in 0..3 {
+            q[k][0] = qp[k];
+            v[k][0] = vp[k];
+        }
+    }
+}
+
+/// The accelerations at (q, v): `Rhs::acceleration_with_terms` over
+/// whole arrays (`model::media`: Lagrange's equations with added mass,
+/// M⁻¹ in closed form, the Munk moment, strip drag in closed form).
+#[inline(always)]
+fn acceleration(
+    c: &Coeffs,
+    parity: &[f64],
+    (q, v): (&Soa, &Soa),
+    out: [&mut Vec<f64>; 3],
+    s: &mut Scratch,
+    library_frames: bool,
+) {
+    springs(c, parity, q, s);
+    let np = c.np;
+    if library_frames {
+        for i in 0..np {
+            (s.fsin[i], s.fcos[i]) = q[2][i].sin_cos();
+        }
+    }
+    let (fsin, fcos) = if library_frames {
+        (&s.fsin[..np], &s.fcos[..np])
+    } else {
+        (&s.sin[..np], &s.cos[..np])
+    };
+    let [ax, ay, aw] = out;
+    let [gx, gy, gt] = &s.grad;
+    let g = [&gx[..np], &gy[..np], &gt[..np]];
+    let frames = (fsin, fcos, &parity[..np]);
+    let v = [&v[0][..np], &v[1][..np], &v[2][..np]];
+    let a = [&mut ax[..np], &mut ay[..np], &mut aw[..np]];
+    if c.drag != 0.0 {
+        block_accelerations::<true>(c, g, frames, v, a);
+    } else {
+        block_accelerations::<false>(c, g, frames, v, a);
+    }
+    let first = usize::from(c.driven);
+    for a in [ax, ay, aw] {
+        a[..first].fill(0.0);
+        a[c.n..np].fill(0.0);
+    }
+}
+
+/// Each block's generalised forces, drag (`DRAG`) and accelerations
+/// (`Rhs::acceleration_with_terms`, `media::block_acceleration_framed`),
+/// from the gradient `g`, the frames (sine, cosine, parity) and `v`.
+#[inline(always)]
+fn block_accelerations<const DRAG: bool>(
+    c: &Coeffs,
+    g: [&[f64]; 3],
+    (fsin, fcos, parity): (&[f64], &[f64], &[f64]),
+    v: [&[f64]; 3],
+    a: [&mut [f64]; 3],
+) {
+    let [ax, ay, aw] = a;
+    for i in 0..c.np {
+        let (vx, vy, w) = (v[0][i], v[1][i], v[2][i]);
+        let mut fx = -g[0][i] - c.gamma * vx;
+        let mut fy = -g[1][i] - c.gamma * vy;
+        let mut ft = -g[2][i] - c.gamma_theta * w;
+        let (sn, cs, p) = (fsin[i], fcos[i], parity[i]);
+        let (t, nu) = ([sn, p * cs], [cs, -p * sn]);
+        if DRAG {
+            let u0 = vx * nu[0] + vy * nu[1];
+            let (f, tq) = drag_integrals(u0, w);
+            fx += -c.drag * f * nu[0];
+            fy += -c.drag * f * nu[1];
+            ft += -c.drag * tq;
+        }
+        let vn = vx * nu[0] + vy * nu[1];
+        let vt = vx * t[0] + vy * t[1];
+        let fx = fx + c.ma * w * (vt * nu[0] + vn * t[0]);
+        let fy = fy + c.ma * w * (vt * nu[1] + vn * t[1]);
+        let fn_ = fx * nu[0] + fy * nu[1];
+        ax[i] = (fx - c.k_am * fn_ * nu[0]) / M;
+        ay[i] = (fy - c.k_am * fn_ * nu[1]) / M;
+        aw[i] = (ft - c.ma * vn * vt) / c.j;
+    }
+}
+
+/// `media::drag_integrals(u0, w, r)` at r = R without a branch: both
+/// closed forms computed as there, the one that applies kept.
+#[inline(always)]
+fn drag_integrals(u0: f64, w: f64) -> (f64, f64) {
+    let r = R;
+    let sign = u0.signum();
+    let force_a = sign * (2.0 * r * u0 * u0 + (2.0 / 3.0) * r * r * r * w * w);
+    let torque_a = sign * (4.0 / 3.0) * r * r * r * u0 * w;
+    let g = |u: f64| u * u * u.abs() / 3.0;
+    let h = |u: f64| u * u * u * u.abs() / 4.0;
+    let (up, um) = (u0 + w * r, u0 - w * r);
+    let dg = g(up) - g(um);
+    let (force_b, torque_b) = (dg / w, (h(up) - h(um) - u0 * dg) / (w * w));
+    if (w * r).abs() <= u0.abs() {
+        (force_a, torque_a)
+    } else {
+        (force_b, torque_b)
+    }
+}
+
+/// The paper's springs' gradient into `s.grad`: `Ladder::gradient_with`'s
+/// loop (`model::ladder`), the same operations in the same order, on
+/// arrays instead of the interleaved layout.
+#[inline(always)]
+fn springs(c: &Coeffs, parity: &[f64], q: &Soa, s: &mut Scratch) {
+    let (np, mp, n) = (c.np, c.mp, c.n);
+    let m = n - 1;
+    crate::model::trig::sin_cos_slice(&q[2][..np], &mut s.sin[..np], &mut s.cos[..np]);
+    let (x, y, sn, cs, p) = (
+        &q[0][..=mp],
+        &q[1][..=mp],
+        &s.sin[..=mp],
+        &s.cos[..=mp],
+        &parity[..=mp],
+    );
+    let (fx, fy) = (&mut s.fx[..mp], &mut s.fy[..mp]);
+    let (tl, tu) = (&mut s.tl[..mp], &mut s.tu[..mp]);
+    for j in 0..mp {
+        let (tx0, ty0, tx1, ty1) = (sn[j], p[j] * cs[j], sn[j + 1], p[j + 1] * cs[j + 1]);
+        let (ex, ey) = (x[j + 1] - x[j], y[j + 1] - y[j]);
+        let (ux, uy) = (R * (tx1 - tx0), R * (ty1 - ty0));
+        let (ax, ay, bx, by) = (ex - ux, ey - uy, ex + ux, ey + uy);
+        let ka = 1.0 - c.a_rest / (ax * ax + ay * ay).sqrt();
+        let kb = 1.0 - c.b_rest / (bx * bx + by * by).sqrt();
+        let (fax, fay, fbx, fby) = (ka * ax, ka * ay, kb * bx, kb * by);
+        fx[j] = fax + fbx;
+        fy[j] = fay + fby;
+        let (dx, dy) = (R * (fbx - fax), R * (fby - fay));
+        tu[j] = dx * cs[j + 1] - dy * p[j + 1] * sn[j + 1];
+        tl[j] = -(dx * cs[j] - dy * p[j] * sn[j]);
+    }
+    let g = c.g;
+    let [gx, gy, gt] = &mut s.grad;
+    // Block i + 1 feels pair i from above and pair i + 1 from below.
+    for i in 0..m - 1 {
+        gx[i + 1] = -g + fx[i] - fx[i + 1];
+        gy[i + 1] = fy[i] - fy[i + 1];
+        gt[i + 1] = tu[i] + tl[i + 1];
+    }
+    (gx[0], gy[0], gt[0]) = (-g - fx[0], -fy[0], tl[0]);
+    (gx[m], gy[m], gt[m]) = (-g + fx[m - 1], fy[m - 1], tu[m - 1]);
+}
+
+#[cfg(test)]
+mod tests;
