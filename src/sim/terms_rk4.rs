@@ -377,13 +377,22 @@ fn acceleration(
     // then take the same ones, and the run is the portable one bit for bit.
     let friction = rhs.terms().friction;
     let library_frames = library_frames || friction.is_some();
-    if library_frames {
+    if let Some(f) = friction {
+        pin_friction(c, rhs, &f, q, &v[..], s);
+        // The friction's frames hold the library's sine and cosine:
+        // t = (sin θ, ±cos θ), ν = (cos θ, ∓sin θ).
+        for i in 0..np {
+            (s.fsin[i], s.fcos[i]) = if i < c.n {
+                let (t, nu) = s.frames.get(i);
+                (t[0], nu[0])
+            } else {
+                q[2][i].sin_cos()
+            };
+        }
+    } else if library_frames {
         for i in 0..np {
             (s.fsin[i], s.fcos[i]) = q[2][i].sin_cos();
         }
-    }
-    if let Some(f) = friction {
-        pin_friction(c, rhs, &f, q, &v[..], s);
     }
     let (fsin, fcos) = if library_frames {
         (&s.fsin[..np], &s.fcos[..np])
