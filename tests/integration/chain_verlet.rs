@@ -74,12 +74,24 @@ fn chain_verlet_matches_the_portable_path_bit_for_bit() {
         let params = Params::paper(alpha).unwrap().with(n, 1.3, alpha).unwrap();
         let scenario = Scenario::single_flip(params, 100.0, 300.0).unwrap();
         let samples: Vec<f64> = (0..=30).map(|k| 10.0 * k as f64 + 0.07).collect();
-        assert_same(&kernels, &scenario, &samples, dt, &format!("N = {n}, α = {alpha}"));
+        assert_same(
+            &kernels,
+            &scenario,
+            &samples,
+            dt,
+            &format!("N = {n}, α = {alpha}"),
+        );
     }
     let params = Params::paper(60.0).unwrap().with(50, 1.3, 60.0).unwrap();
     let drive = Drive::two_flips(params.alpha, 50.0, 120.0).unwrap();
     let two = Scenario::with_drive(params, drive, 300.0).unwrap();
-    assert_same(&kernels, &two, &[33.3, 120.0, 299.99], 0.25, "N = 50, two flips");
+    assert_same(
+        &kernels,
+        &two,
+        &[33.3, 120.0, 299.99],
+        0.25,
+        "N = 50, two flips",
+    );
     let mut rng = Lcg(9);
     let mut free = Scenario::single_flip(params, 100.0, 50.0).unwrap();
     free.protocol = Protocol::Free;
