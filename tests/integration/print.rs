@@ -964,7 +964,6 @@ fn a_filmstrip_that_draws_at_one_width_draws_at_every_wider_one() {
     let dir = tempdir("filmstrip-wider");
     for (id, style, widest) in [
         ("1c", "slide", 14.0),
-        ("4a", "slide", 14.0),
         ("3", "slide", 14.0),
         ("1c", "paper", 7.5),
     ] {
