@@ -29,7 +29,11 @@ fn main() {
         }
     }
     if tapes {
-        chain.tapes = (1..chain.n).step_by(2).filter(|k| k + 2 < chain.n).map(|k| [k, k + 2]).collect();
+        chain.tapes = (1..chain.n)
+            .step_by(2)
+            .filter(|k| k + 2 < chain.n)
+            .map(|k| [k, k + 2])
+            .collect();
     }
     let t0 = std::time::Instant::now();
     let (mut sys, done) = match settle::leaning(&chain, lean, squeeze) {
@@ -39,19 +43,44 @@ fn main() {
             return;
         }
     };
-    println!("settled in {:.3} s ({} steps), speed {:.2e}, cpu {:.1} s", done.time, done.steps, done.speed, t0.elapsed().as_secs_f64());
+    println!(
+        "settled in {:.3} s ({} steps), speed {:.2e}, cpu {:.1} s",
+        done.time,
+        done.steps,
+        done.speed,
+        t0.elapsed().as_secs_f64()
+    );
     let show = |sys: &rings::system::System, label: &str| {
         let n = rings::run::normals(&sys.bodies);
         let nz: Vec<String> = n.iter().map(|n| format!("{:+.2}", n[2])).collect();
-        let az: Vec<String> = n.iter().map(|n| format!("{:.0}", n[1].atan2(n[0]).to_degrees())).collect();
-        let z: Vec<String> = sys.bodies.iter().map(|b| format!("{:.1}", b.x[2] * 1e3)).collect();
-        println!("{label} t {:.2} E {:.6}\n  nz {}\n  az {}\n  z(mm) {}", sys.t, sys.energy(), nz.join(" "), az.join(" "), z.join(" "));
+        let az: Vec<String> = n
+            .iter()
+            .map(|n| format!("{:.0}", n[1].atan2(n[0]).to_degrees()))
+            .collect();
+        let z: Vec<String> = sys
+            .bodies
+            .iter()
+            .map(|b| format!("{:.1}", b.x[2] * 1e3))
+            .collect();
+        println!(
+            "{label} t {:.2} E {:.6}\n  nz {}\n  az {}\n  z(mm) {}",
+            sys.t,
+            sys.energy(),
+            nz.join(" "),
+            az.join(" "),
+            z.join(" ")
+        );
     };
     show(&sys, "rest");
     if std::env::var("DBG").is_ok() {
         let rots: Vec<_> = sys.bodies.iter().map(|b| b.q.matrix()).collect();
-        for p in &sys.pins { let (a, b) = sys.pin_points(p, &rots); println!("pin {} {} a {:?} b {:?}", p.i, p.j, a, b); }
-        for (i, j, t) in sys.touches(&rots) { println!("touch {i} {j} d/r {:.3}", t.d / chain.tube_radius); }
+        for p in &sys.pins {
+            let (a, b) = sys.pin_points(p, &rots);
+            println!("pin {} {} a {:?} b {:?}", p.i, p.j, a, b);
+        }
+        for (i, j, t) in sys.touches(&rots) {
+            println!("touch {i} {j} d/r {:.3}", t.d / chain.tube_radius);
+        }
     }
     let mut tracker = FlipTracker::new(sys.n());
     tracker.observe(sys.t, &rings::run::normals(&sys.bodies));
@@ -63,11 +92,11 @@ fn main() {
             break;
         }
         tracker.observe(sys.t, &rings::run::normals(&sys.bodies));
-        if k % 20 == 0 {
-            if let Err(e) = sys.check_links() {
-                println!("failed: {e}");
-                break;
-            }
+        if k.is_multiple_of(20)
+            && let Err(e) = sys.check_links()
+        {
+            println!("failed: {e}");
+            break;
         }
         if k % every == 0 {
             show(&sys, "at");
@@ -77,7 +106,14 @@ fn main() {
         println!("flip ring {} t {:.3} phi {:.0}", f.ring, f.t, f.phi);
     }
     for w in observe::waves(&tracker.flips, sys.n(), chain.held, chain.turn.start) {
-        println!("wave strand {} rings {:?} step {:.1} speed {:.1} pitch {:.1}", w.strand, w.rings, w.step, w.speed, w.pitch);
+        println!(
+            "wave strand {} rings {:?} step {:.1} speed {:.1} pitch {:.1}",
+            w.strand, w.rings, w.step, w.speed, w.pitch
+        );
     }
-    println!("max overlap {:.3} r, cpu {:.1} s", sys.stats.max_overlap, t0.elapsed().as_secs_f64());
+    println!(
+        "max overlap {:.3} r, cpu {:.1} s",
+        sys.stats.max_overlap,
+        t0.elapsed().as_secs_f64()
+    );
 }

@@ -291,7 +291,10 @@ mod tests {
         assert_eq!(flips.len(), 6, "{flips:?}");
         for (k, f) in flips.iter().enumerate() {
             assert!((f.t - 0.1 * (k + 1) as f64).abs() < 1e-3, "{f:?}");
-            assert!(angle_step(30.0 + 40.0 * k as f64, f.phi).abs() < 1e-6, "{f:?}");
+            assert!(
+                angle_step(30.0 + 40.0 * k as f64, f.phi).abs() < 1e-6,
+                "{f:?}"
+            );
         }
         let w = waves(&flips, 12, 0, 0.0);
         assert_eq!(w.len(), 1);

@@ -42,8 +42,7 @@ pub struct Settled {
 pub fn leaning_guess(chain: &RingChain, lean: f64, squeeze: f64) -> Vec<Body> {
     build::as_built(chain)
         .into_iter()
-        .enumerate()
-        .map(|(_, b)| {
+        .map(|b| {
             let rot = b.q.matrix();
             // The horizontal diameter in the ring's plane: the body x or y
             // axis, whichever is horizontal (the built ring's body x is
@@ -85,7 +84,7 @@ pub fn settle(sys: &mut System) -> Result<Settled> {
                 b.l = math::scale(b.l, keep);
             }
         }
-        if steps % every != 0 {
+        if !steps.is_multiple_of(every) {
             continue;
         }
         sys.check_links()?;
