@@ -74,19 +74,20 @@ impl Circle {
         self.distance2(p).sqrt()
     }
 
-    /// [`Circle::distance2`] of each point, in a loop over arrays of
-    /// coordinates that the compiler turns into vector instructions (no
-    /// fused multiply-add: every lane rounds as the scalar formula does).
+    /// [`Circle::distance2`] of each point, in a loop over the points that
+    /// the compiler turns into vector instructions (no fused multiply-add:
+    /// every lane rounds as the scalar formula does). The points are read
+    /// in place (no copies of them into arrays of coordinates first).
     fn distances2(&self, points: &[V3; SAMPLES]) -> [f64; SAMPLES] {
-        let [dx, dy, dz] = [0, 1, 2].map(|k| points.map(|p| p[k] - self.c[k]));
         let m = &self.rot;
         let mut d2 = [0.0; SAMPLES];
-        for j in 0..SAMPLES {
-            let lx = m[0][0] * dx[j] + m[1][0] * dy[j] + m[2][0] * dz[j];
-            let ly = m[0][1] * dx[j] + m[1][1] * dy[j] + m[2][1] * dz[j];
-            let lz = m[0][2] * dx[j] + m[1][2] * dy[j] + m[2][2] * dz[j];
+        for (d, p) in d2.iter_mut().zip(points) {
+            let (dx, dy, dz) = (p[0] - self.c[0], p[1] - self.c[1], p[2] - self.c[2]);
+            let lx = m[0][0] * dx + m[1][0] * dy + m[2][0] * dz;
+            let ly = m[0][1] * dx + m[1][1] * dy + m[2][1] * dz;
+            let lz = m[0][2] * dx + m[1][2] * dy + m[2][2] * dz;
             let rho = (lx * lx + ly * ly).sqrt();
-            d2[j] = (rho - self.radius) * (rho - self.radius) + lz * lz;
+            *d = (rho - self.radius) * (rho - self.radius) + lz * lz;
         }
         d2
     }
@@ -124,7 +125,17 @@ pub fn touches_into(
 /// The points of circle `a` at the sample angles (computed once per ring
 /// and step, whichever pairs it is in).
 pub fn sample_points(a: &Circle, table: &[(f64, f64); SAMPLES]) -> [V3; SAMPLES] {
-    table.map(|cs| a.point(cs))
+    let mut out = [[0.0; 3]; SAMPLES];
+    sample_points_into(a, table, &mut out);
+    out
+}
+
+/// [`sample_points`] written into `out` (the step keeps one buffer per
+/// ring instead of building and moving arrays).
+pub fn sample_points_into(a: &Circle, table: &[(f64, f64); SAMPLES], out: &mut [V3; SAMPLES]) {
+    for (p, &cs) in out.iter_mut().zip(table) {
+        *p = a.point(cs);
+    }
 }
 
 /// [`touches_into`] with `a`'s [`sample_points`] given.
@@ -225,6 +236,12 @@ fn still_to_move(round: usize) -> f64 {
     sum
 }
 
+/// [`still_to_move`] of every round, computed once (the same values).
+fn still_to_move_all() -> [f64; REFINEMENTS] {
+    static ALL: std::sync::OnceLock<[f64; REFINEMENTS]> = std::sync::OnceLock::new();
+    *ALL.get_or_init(|| std::array::from_fn(still_to_move))
+}
+
 /// A margin for rounding in the early exit of [`refine`], m: a computed
 /// point and distance are off by ~1e-18 m at these sizes.
 const ROUNDING: f64 = 1e-9;
@@ -258,7 +275,7 @@ fn refine(
     let mut h = H0;
     // at(0) is a.point(cs) exactly (cos 0 = 1, sin 0 = 0; cs has no zero).
     let (mut p0, mut f0) = (p_start, f_start);
-    let to_move = [0, 1, 2, 3].map(|round| a.radius * still_to_move(round));
+    let to_move = still_to_move_all().map(|angle| a.radius * angle);
     for round in 0..REFINEMENTS {
         let (pm, pp) = if round == 0 {
             let first = first_offsets();

@@ -61,7 +61,20 @@ pub struct System {
     table: [(f64, f64); SAMPLES],
     force: Vec<V3>,
     torque: Vec<V3>,
+    /// Buffers the step reuses (no allocation per step): each ring's
+    /// rotation, angular velocity and sample points, and the touches.
+    scratch: Scratch,
     pub stats: Stats,
+}
+
+/// What [`System::evaluate`] fills anew at every step, kept between steps
+/// so that a step allocates nothing.
+#[derive(Clone, Debug, Default)]
+struct Scratch {
+    rots: Vec<M3>,
+    omega: Vec<V3>,
+    points: Vec<[V3; SAMPLES]>,
+    touches: Vec<(usize, usize, Touch)>,
 }
 
 /// The fraction of r past which an overlap fails the run.
@@ -100,6 +113,7 @@ impl System {
             table: contact::sample_table(),
             force: vec![[0.0; 3]; n],
             torque: vec![[0.0; 3]; n],
+            scratch: Scratch::default(),
             stats: Stats::default(),
         }
     }
@@ -131,56 +145,78 @@ impl System {
 
     /// Angular velocity of each ring (the held one's from the hand).
     pub fn omegas(&self, rots: &[M3]) -> Vec<V3> {
-        (0..self.n())
-            .map(|k| {
-                if k == self.held {
-                    self.hand.omega(self.t)
-                } else {
-                    self.bodies[k].omega(&rots[k], &self.inertia)
-                }
-            })
-            .collect()
+        let mut out = Vec::new();
+        self.omegas_into(rots, &mut out);
+        out
+    }
+
+    /// [`System::omegas`] into `out`.
+    fn omegas_into(&self, rots: &[M3], out: &mut Vec<V3>) {
+        out.clear();
+        out.extend((0..self.n()).map(|k| {
+            if k == self.held {
+                self.hand.omega(self.t)
+            } else {
+                self.bodies[k].omega(&rots[k], &self.inertia)
+            }
+        }));
     }
 
     /// Every touch of every near pair, in pair order.
     pub fn touches(&self, rots: &[M3]) -> Vec<(usize, usize, Touch)> {
-        self.touches_counted(rots).0
+        let (mut out, mut points) = (Vec::new(), Vec::new());
+        self.touches_into(rots, &mut points, &mut out);
+        out
     }
 
-    /// [`System::touches`] and the number of near pairs tested.
-    fn touches_counted(&self, rots: &[M3]) -> (Vec<(usize, usize, Touch)>, u64) {
-        let mut out = Vec::new();
+    /// Every touch of every near pair, in pair order, into `out` (cleared
+    /// first), with each ring's sample points in `points`; returns the
+    /// number of near pairs tested.
+    fn touches_into(
+        &self,
+        rots: &[M3],
+        points: &mut Vec<[V3; SAMPLES]>,
+        out: &mut Vec<(usize, usize, Touch)>,
+    ) -> u64 {
+        out.clear();
         let mut pairs = 0;
         // Each ring's sample points once (the same arithmetic as per pair).
-        let points: Vec<[V3; SAMPLES]> = (0..self.n())
-            .map(|i| contact::sample_points(&self.circle(i, &rots[i]), &self.table))
-            .collect();
+        points.resize(self.n(), [[0.0; 3]; SAMPLES]);
+        for (i, p) in points.iter_mut().enumerate() {
+            contact::sample_points_into(&self.circle(i, &rots[i]), &self.table, p);
+        }
+        let reach = self.law.reach;
         for i in 0..self.n() {
+            let a = self.circle(i, &rots[i]);
             for j in i + 1..self.n() {
                 if !self.near(i, j) {
                     continue;
                 }
                 pairs += 1;
-                let (a, b) = (self.circle(i, &rots[i]), self.circle(j, &rots[j]));
-                let reach = self.law.reach;
+                let b = self.circle(j, &rots[j]);
                 contact::touches_at(&a, &points[i], &b, reach, &self.table, &mut |t| {
                     out.push((i, j, t))
                 });
             }
         }
-        (out, pairs)
+        pairs
     }
 
     /// Forces and torques at the current state, into `self.force`/`torque`.
     fn evaluate(&mut self) {
-        let rots: Vec<M3> = self.bodies.iter().map(|b| b.q.matrix()).collect();
-        let omega = self.omegas(&rots);
+        let mut scratch = std::mem::take(&mut self.scratch);
+        scratch.rots.clear();
+        scratch
+            .rots
+            .extend(self.bodies.iter().map(|b| b.q.matrix()));
+        self.omegas_into(&scratch.rots, &mut scratch.omega);
+        let (rots, omega) = (&scratch.rots, &scratch.omega);
         let weight = [0.0, 0.0, -self.inertia.m * G];
         self.force.iter_mut().for_each(|f| *f = weight);
         self.torque.iter_mut().for_each(|t| *t = [0.0; 3]);
-        let (touches, pairs) = self.touches_counted(&rots);
+        let pairs = self.touches_into(rots, &mut scratch.points, &mut scratch.touches);
         self.stats.pair_evaluations += pairs;
-        for (i, j, touch) in touches {
+        for &(i, j, touch) in &scratch.touches {
             let c = math::scale(math::add(touch.p, touch.q), 0.5);
             let v_rel = math::sub(
                 self.bodies[i].velocity_at(omega[i], c),
@@ -194,7 +230,7 @@ impl System {
         }
         for k in 0..self.pins.len() {
             let pin = self.pins[k];
-            let (pa, pb) = self.pin_points(&pin, &rots);
+            let (pa, pb) = self.pin_points(&pin, rots);
             let dv = math::sub(
                 self.bodies[pin.i].velocity_at(omega[pin.i], pa),
                 self.bodies[pin.j].velocity_at(omega[pin.j], pb),
@@ -204,6 +240,7 @@ impl System {
             self.apply(pin.i, pa, f);
             self.apply(pin.j, pb, math::scale(f, -1.0));
         }
+        self.scratch = scratch;
     }
 
     /// World positions of a pin's two material points.

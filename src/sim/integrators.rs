@@ -6,7 +6,7 @@
 //! exactly on `t_stop` when the rest of the interval fits in one step; the
 //! run loop puts every sample time and every drive corner into `t_stop`.
 
-use super::chain::ChainEuler;
+use super::chain::{ChainEuler, ChainVerlet};
 use super::fused::{Batch, FusedEuler, Stepping};
 use super::observables::ArrivalDetector;
 use super::rhs::{Rhs, State};
@@ -183,6 +183,9 @@ impl IntegratorConfig {
                     stepper.fused = FusedEuler::new(dof / 3, stepping);
                     stepper.chain = ChainEuler::new(dof / 3, stepping);
                 }
+                if kind == IntegratorKind::Verlet {
+                    stepper.chain_verlet = ChainVerlet::new(dof / 3, stepping);
+                }
                 Box::new(stepper)
             }
         }
@@ -241,6 +244,8 @@ pub struct FixedStep {
     /// (longer ladders), where available.
     fused: Option<FusedEuler>,
     chain: Option<ChainEuler>,
+    /// Velocity Verlet's chain stepper (longer ladders), where available.
+    chain_verlet: Option<ChainVerlet>,
     /// RK4 fused with a fluid's terms (`sim::terms_rk4`): `None` until
     /// the first `advance_many` looks at the ladder, then whether it applies.
     terms_rk4: Option<Option<Box<TermsRk4>>>,
@@ -260,6 +265,7 @@ impl FixedStep {
             plan: Plan::default(),
             fused: None,
             chain: None,
+            chain_verlet: None,
             terms_rk4: None,
             stepping: Stepping::Portable,
         }
@@ -317,6 +323,43 @@ impl FixedStep {
         }
         self.cached_at = Some(t + h);
     }
+
+    /// Up to `max_steps` of velocity Verlet's steps in the chain stepper
+    /// (`chain_verlet` is set), the same numbers as [`FixedStep::verlet`]
+    /// step by step; the portable steps where its factors do not apply.
+    fn verlet_chain(
+        &mut self,
+        rhs: &mut Rhs,
+        st: &mut State,
+        (t, t_stop): (f64, f64),
+        max_steps: u64,
+        arrivals: &mut ArrivalDetector,
+    ) -> Result<(f64, u64)> {
+        if max_steps == 0 || t >= t_stop {
+            return Ok((t, 0));
+        }
+        let (h, count, lands) = self.plan.take(t, t_stop, self.dt, max_steps);
+        let (Some(chain), Some(factors)) =
+            (self.chain_verlet.as_mut(), ChainVerlet::factors(rhs, h))
+        else {
+            self.plan.give_back(count);
+            self.chain_verlet = None;
+            return default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals);
+        };
+        if self.cached_at != Some(t) {
+            rhs.conservative(&st.q, &mut self.acc);
+        }
+        let batch = Batch {
+            t,
+            h,
+            count,
+            t_stop,
+            lands,
+        };
+        let t_new = chain.run(rhs, st, &mut self.acc, &batch, factors, arrivals);
+        self.cached_at = Some(t_new);
+        Ok((t_new, count))
+    }
 }
 
 impl Integrator for FixedStep {
@@ -361,6 +404,9 @@ impl Integrator for FixedStep {
                 let plan = (&mut self.plan, self.dt);
                 return Ok(fast.advance_many(rhs, st, plan, (t, t_stop), max_steps, arrivals));
             }
+        }
+        if self.chain_verlet.is_some() {
+            return self.verlet_chain(rhs, st, (t, t_stop), max_steps, arrivals);
         }
         if self.fused.is_none() && self.chain.is_none() {
             return default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals);

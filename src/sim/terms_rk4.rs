@@ -15,10 +15,16 @@
 //! closed form, the 2×2 mass matrix's closed-form inverse and the Munk
 //! moment), and no step allocates.
 //!
+//! Pin friction (the printed linkage) is added to the generalised forces
+//! as the portable path adds it (`PinFriction::add_forces`, in the
+//! portable layout), with the frames from the C library's sine and cosine;
+//! with friction the drag and added mass take the same frames, so that
+//! run is the portable one bit for bit.
+//!
 //! Every operation is the portable path's in the same order, with one
-//! exception: the blocks' frames take the sine and cosine the springs
-//! already computed (`model::trig`, fdlibm's kernels) instead of the C
-//! library's. The two differ by at most 4 × 10⁻¹⁶ (`model::trig`'s test),
+//! exception (without pin friction): the blocks' frames take the sine and
+//! cosine the springs already computed (`model::trig`, fdlibm's kernels)
+//! instead of the C library's. The two differ by at most 4 × 10⁻¹⁶ (`model::trig`'s test),
 //! so one force evaluation differs from the portable one by a few ulps;
 //! with the library's frames ([`TermsRk4::with_library_frames`]) the
 //! trajectory is the portable path's bit for bit (`tests` below).
@@ -28,6 +34,7 @@ use super::rhs::{Rhs, State};
 use super::stepping::Plan;
 use super::stepping::Stepping;
 use super::tableau::RK4;
+use crate::model::ladder::Frames;
 use crate::model::params::{M, R};
 
 /// The state, stage values and stage rates of one run, one array per
@@ -85,6 +92,14 @@ struct Scratch {
     tl: Vec<f64>,
     tu: Vec<f64>,
     grad: Soa,
+    /// Pin friction's buffers: the stage's (q, v) and generalised forces
+    /// in the portable layout (X, Y, θ block after block), the frames
+    /// from the C library's sine and cosine, and the forces as arrays.
+    q: Vec<f64>,
+    v: Vec<f64>,
+    force: Vec<f64>,
+    frames: Frames,
+    forces: Soa,
 }
 
 const fn padded(n: usize) -> usize {
@@ -94,14 +109,13 @@ const fn padded(n: usize) -> usize {
 impl TermsRk4 {
     /// The stepper for `rhs`'s ladder, if this path takes it: the paper's
     /// springs (stiff two-way links), velocity-dependent terms of a fluid
-    /// (added mass, drag), no pin friction, not the toy as built, N ≥ 2,
+    /// (added mass, drag), pin friction or none, not the toy as built, N ≥ 2,
     /// and a CPU with AVX2 that `stepping` lets a kernel use.
     pub fn new(rhs: &Rhs, stepping: Stepping) -> Option<Self> {
         let ladder = rhs.ladder;
         let t = rhs.terms();
         let eligible = ladder.built.is_none()
             && t.links.is_paper()
-            && t.friction.is_none()
             && ladder.velocity_dependent()
             && ladder.n() >= 2
             && stepping.isa().is_some();
@@ -165,6 +179,11 @@ impl TermsRk4 {
                 tl: z(),
                 tu: z(),
                 grad: soa(),
+                q: vec![0.0; 3 * n],
+                v: vec![0.0; 3 * n],
+                force: vec![0.0; 3 * n],
+                frames: Frames::default(),
+                forces: soa(),
             },
             library_frames: false,
         }
@@ -239,7 +258,7 @@ impl TermsRk4 {
         for k in 0..3 {
             copy(&mut self.kq[0][k], &self.v0[k], np);
         }
-        self.evaluate(0, true);
+        self.evaluate(rhs, 0, true);
         for i in 1..4 {
             self.combine(h, RK4.a[i]);
             self.stage(rhs, i, t + RK4.c[i] * h);
@@ -300,17 +319,17 @@ impl TermsRk4 {
         // kq[i] = v: the stage's v moves into kq[i] (the next combine
         // writes every lane of v again).
         std::mem::swap(&mut self.kq[i], &mut self.v);
-        self.evaluate(i, false);
+        self.evaluate(rhs, i, false);
     }
 
     /// kv[i] = a(q, v) of stage `i`: (q0, kq[0]) for stage 0 (`start`),
     /// (q, kq[i]) for the others.
     #[inline(always)]
-    fn evaluate(&mut self, i: usize, start: bool) {
+    fn evaluate(&mut self, rhs: &Rhs, i: usize, start: bool) {
         let q = if start { &self.q0 } else { &self.q };
         let [ax, ay, aw] = &mut self.kv[i];
         acceleration(
-            &self.c,
+            (&self.c, rhs),
             &self.parity,
             (q, &self.kq[i]),
             [ax, ay, aw],
@@ -344,7 +363,7 @@ fn constrain(rhs: &Rhs, ts: f64, q: &mut Soa, v: &mut Soa) {
 /// M⁻¹ in closed form, the Munk moment, strip drag in closed form).
 #[inline(always)]
 fn acceleration(
-    c: &Coeffs,
+    (c, rhs): (&Coeffs, &Rhs),
     parity: &[f64],
     (q, v): (&Soa, &Soa),
     out: [&mut Vec<f64>; 3],
@@ -353,7 +372,24 @@ fn acceleration(
 ) {
     springs(c, parity, q, s);
     let np = c.np;
-    if library_frames {
+    // Pin friction takes its frames from the C library's sine and cosine
+    // (`Frames::at`, as the portable path); the drag and the added mass
+    // then take the same ones, and the run is the portable one bit for bit.
+    let friction = rhs.terms().friction;
+    let library_frames = library_frames || friction.is_some();
+    if let Some(f) = friction {
+        pin_friction(c, rhs, &f, q, &v[..], s);
+        // The friction's frames hold the library's sine and cosine:
+        // t = (sin θ, ±cos θ), ν = (cos θ, ∓sin θ).
+        for i in 0..np {
+            (s.fsin[i], s.fcos[i]) = if i < c.n {
+                let (t, nu) = s.frames.get(i);
+                (t[0], nu[0])
+            } else {
+                q[2][i].sin_cos()
+            };
+        }
+    } else if library_frames {
         for i in 0..np {
             (s.fsin[i], s.fcos[i]) = q[2][i].sin_cos();
         }
@@ -369,10 +405,18 @@ fn acceleration(
     let frames = (fsin, fcos, &parity[..np]);
     let v = [&v[0][..np], &v[1][..np], &v[2][..np]];
     let a = [&mut ax[..np], &mut ay[..np], &mut aw[..np]];
-    if c.drag != 0.0 {
-        block_accelerations::<true>(c, g, frames, v, a);
+    if friction.is_some() {
+        let [fx, fy, ft] = &s.forces;
+        let forces = [&fx[..np], &fy[..np], &ft[..np]];
+        if c.drag != 0.0 {
+            block_accelerations::<true, true>(c, forces, frames, v, a);
+        } else {
+            block_accelerations::<false, true>(c, forces, frames, v, a);
+        }
+    } else if c.drag != 0.0 {
+        block_accelerations::<true, false>(c, g, frames, v, a);
     } else {
-        block_accelerations::<false>(c, g, frames, v, a);
+        block_accelerations::<false, false>(c, g, frames, v, a);
     }
     let first = usize::from(c.driven);
     for a in [ax, ay, aw] {
@@ -381,11 +425,45 @@ fn acceleration(
     }
 }
 
+/// The generalised forces with pin friction into `s.forces`, as
+/// `Rhs::acceleration_with_terms` computes them: −∂E/∂q − γ v block after
+/// block, then `PinFriction::add_forces` (its frames from the C library's
+/// sine and cosine, as there), in the portable layout.
+#[inline(never)]
+fn pin_friction(
+    c: &Coeffs,
+    rhs: &Rhs,
+    friction: &crate::model::links::PinFriction,
+    q: &Soa,
+    v: &[Vec<f64>],
+    s: &mut Scratch,
+) {
+    let n = c.n;
+    let g = &s.grad;
+    let rates = [c.gamma, c.gamma, c.gamma_theta];
+    for i in 0..n {
+        for k in 0..3 {
+            s.q[3 * i + k] = q[k][i];
+            s.v[3 * i + k] = v[k][i];
+            s.force[3 * i + k] = -g[k][i] - rates[k] * v[k][i];
+        }
+    }
+    s.frames.at(n, &s.q);
+    let links = &rhs.terms().links;
+    friction.add_forces(rhs.ladder, links, &s.frames, (&s.q, &s.v), &mut s.force);
+    for i in 0..n {
+        for k in 0..3 {
+            s.forces[k][i] = s.force[3 * i + k];
+        }
+    }
+}
+
 /// Each block's generalised forces, drag (`DRAG`) and accelerations
 /// (`Rhs::acceleration_with_terms`, `media::block_acceleration_framed`),
-/// from the gradient `g`, the frames (sine, cosine, parity) and `v`.
+/// from the gradient `g` (or, `FORCES`, the generalised forces before
+/// drag), the frames (sine, cosine, parity) and `v`.
 #[inline(always)]
-fn block_accelerations<const DRAG: bool>(
+fn block_accelerations<const DRAG: bool, const FORCES: bool>(
     c: &Coeffs,
     g: [&[f64]; 3],
     (fsin, fcos, parity): (&[f64], &[f64], &[f64]),
@@ -395,9 +473,15 @@ fn block_accelerations<const DRAG: bool>(
     let [ax, ay, aw] = a;
     for i in 0..c.np {
         let (vx, vy, w) = (v[0][i], v[1][i], v[2][i]);
-        let mut fx = -g[0][i] - c.gamma * vx;
-        let mut fy = -g[1][i] - c.gamma * vy;
-        let mut ft = -g[2][i] - c.gamma_theta * w;
+        let (mut fx, mut fy, mut ft) = if FORCES {
+            (g[0][i], g[1][i], g[2][i])
+        } else {
+            (
+                -g[0][i] - c.gamma * vx,
+                -g[1][i] - c.gamma * vy,
+                -g[2][i] - c.gamma_theta * w,
+            )
+        };
         let (sn, cs, p) = (fsin[i], fcos[i], parity[i]);
         let (t, nu) = ([sn, p * cs], [cs, -p * sn]);
         if DRAG {

@@ -139,7 +139,8 @@ fn resolved_features(
     Some(text.lines().filter_map(row).collect())
 }
 
-/// The Python binding's crate (python/, its own workspace) and the main
+/// The Python binding's crate (python/, a member of the root's workspace,
+/// so one Cargo.lock and one library unit serve both) and the main
 /// crate's tests resolve every shared dependency with the same features,
 /// so that the wheel `scripts/test` builds into the same target/ reuses
 /// the tests' build of the library (the pins in both Cargo.toml files)

@@ -18,6 +18,7 @@ mod bench;
 mod bench_tank;
 mod caps;
 mod captions;
+mod chain_verlet;
 mod cli;
 mod cluster_recipe;
 mod cost_model;

@@ -20,6 +20,9 @@ use super::super::lanes::{Blocks, StepConsts, pin};
 use super::super::simd::{F64x4, F64x8, Pack, Simd, half_sin_cos};
 use crate::sim::Isa;
 
+mod verlet;
+pub use verlet::{VerletParams, run as run_verlet};
+
 /// Lanes of a vector for `isa`.
 pub fn lanes(isa: Isa) -> usize {
     match isa {
@@ -46,6 +49,13 @@ pub struct ChainState {
     /// Arrival candidate windows; (−∞, +∞) where nothing is pending.
     pub window_lo: Vec<f64>,
     pub window_hi: Vec<f64>,
+    /// Velocity Verlet's accelerations at the current positions, and the
+    /// angles and rates a step started from (`verlet`).
+    pub ax: Vec<f64>,
+    pub ay: Vec<f64>,
+    pub atheta: Vec<f64>,
+    pub theta0: Vec<f64>,
+    pub vtheta0: Vec<f64>,
 }
 
 impl ChainState {
@@ -59,7 +69,12 @@ impl ChainState {
             theta: zeros.clone(),
             vx: zeros.clone(),
             vy: zeros.clone(),
-            vtheta: zeros,
+            vtheta: zeros.clone(),
+            ax: zeros.clone(),
+            ay: zeros.clone(),
+            atheta: zeros.clone(),
+            theta0: zeros.clone(),
+            vtheta0: zeros,
             window_lo: vec![f64::NEG_INFINITY; len],
             window_hi: vec![f64::INFINITY; len],
         }
@@ -91,6 +106,9 @@ pub trait Stepper {
     /// The time after step `k` (0-based) from `t`, and block 1's angle and
     /// rate there (read only if driven).
     fn after(&mut self, k: u64, t: f64) -> (f64, f64, f64);
+    /// The time t + h, and block 1's angle and rate there (velocity
+    /// Verlet's forces are evaluated there, also on a step that lands).
+    fn after_h(&mut self, t: f64) -> (f64, f64, f64);
     /// The exact arrival test of block `block`.
     fn try_record(&mut self, block: usize, before: (f64, f64, f64), after: (f64, f64, f64))
     -> bool;

@@ -26,6 +26,20 @@ fn tank(gamma: f64, drag: f64) -> Ladder {
     Ladder::new(p).with_terms(terms)
 }
 
+/// The tank's ladder with Coulomb pin friction μ_p r_p = `mu_rp` (the
+/// printed linkage's term: `figure linkage-friction`).
+fn with_friction(gamma: f64, drag: f64, mu_rp: f64) -> Ladder {
+    let l = tank(gamma, drag);
+    let terms = Terms {
+        friction: Some(crate::model::links::PinFriction {
+            mu_rp,
+            omega_eps: 0.01,
+        }),
+        ..l.terms
+    };
+    l.with_terms(terms)
+}
+
 /// Block 1 turned from α to −α over 400 τ (the motor), or free.
 fn protocol(ladder: &Ladder, driven: bool) -> Protocol {
     let a = ladder.params.alpha;
@@ -123,6 +137,39 @@ fn library_frames_give_the_portable_trajectory_bit_for_bit() {
     }
 }
 
+/// Pin friction in the fused path: the portable trajectory bit for bit
+/// (the friction's torques and the links' balancing forces added in the
+/// portable order, its frames and the drag's the C library's; pins both
+/// held (|ω/ω_ε| < 22) and sliding), with or without the library frames
+/// asked for, and not the trajectory without friction.
+#[test]
+fn pin_friction_gives_the_portable_trajectory_bit_for_bit() {
+    if !has_avx2() {
+        return;
+    }
+    for (gamma, drag, driven, mu_rp) in [
+        (0.0, 8.125, true, 0.05),
+        (0.003, 8.125, false, 0.2),
+        (0.01, 0.0, true, 0.02),
+    ] {
+        let ladder = with_friction(gamma, drag, mu_rp);
+        for library in [true, false] {
+            let [(a, arr_a), (b, arr_b)] = both(&ladder, driven, 2000, library);
+            for (k, (x, y)) in a.q.iter().zip(&b.q).chain(a.v.iter().zip(&b.v)).enumerate() {
+                assert_eq!(
+                    x.to_bits(),
+                    y.to_bits(),
+                    "μ r {mu_rp}, γ {gamma}, drag {drag}: coordinate {k}: {x} {y}"
+                );
+            }
+            assert_eq!(arr_a, arr_b);
+            let [(none, _), _] = both(&tank(gamma, drag), driven, 2000, true);
+            let moved = none.q.iter().zip(&a.q).any(|(x, y)| (x - y).abs() > 1e-6);
+            assert!(moved, "μ r {mu_rp}: the friction must change the run");
+        }
+    }
+}
+
 /// The frames from the springs' sine and cosine (`model::trig`, within
 /// 4e-16 of the library's) move one force evaluation by a few ulps, and
 /// the tank's trajectory over 500 τ (the motor's drive and the kink's
@@ -172,7 +219,7 @@ fn one_evaluation_within_ulps_of_the_portable_one() {
         k.load(&st);
         let [ax, ay, aw] = &mut k.kv[0];
         acceleration(
-            &k.c,
+            (&k.c, &rhs),
             &k.parity,
             (&k.q0, &k.v0),
             [ax, ay, aw],
