@@ -61,7 +61,10 @@ pub const FILES: &[(&str, &str)] = &[
         "figure-linkage-friction",
         include_str!("../assets/scenes/figure-linkage-friction.toml"),
     ),
-    ("figure-toy", include_str!("../assets/scenes/figure-toy.toml")),
+    (
+        "figure-toy",
+        include_str!("../assets/scenes/figure-toy.toml"),
+    ),
     ("movie-3", include_str!("../assets/scenes/movie-3.toml")),
     ("movie-4", include_str!("../assets/scenes/movie-4.toml")),
     ("movie-5", include_str!("../assets/scenes/movie-5.toml")),

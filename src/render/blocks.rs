@@ -171,10 +171,7 @@ impl Inks {
             a_end: style::mix(paper, Palette.color(Role::SpringA), 0.55),
             b_end: style::mix(paper, Palette.color(Role::SpringB), 0.55),
             edge: Palette.color(Role::Ink),
-            ribbon: [
-                Palette.color(Role::SpringA),
-                Palette.color(Role::SpringB),
-            ],
+            ribbon: [Palette.color(Role::SpringA), Palette.color(Role::SpringB)],
         }
     }
 }
@@ -220,9 +217,8 @@ fn draw_block(
 ) {
     let pose = Pose::of(q, i);
     let h = o.half_thickness;
-    let quad = |u0: f64, u1: f64| {
-        [[u0, -h], [u1, -h], [u1, h], [u0, h]].map(|p| map.px(pose.point(p)))
-    };
+    let quad =
+        |u0: f64, u1: f64| [[u0, -h], [u1, -h], [u1, h], [u0, h]].map(|p| map.px(pose.point(p)));
     canvas.polygon(&quad(-R, R), inks.fill);
     canvas.polygon(&quad(-R, -0.5 * R), inks.a_end);
     canvas.polygon(&quad(0.5 * R, R), inks.b_end);
@@ -282,7 +278,11 @@ mod tests {
         for ((_, r, path), (d, e, len)) in paths.iter().zip(&spans) {
             let ribbon = &ribbons.ribbons[*r];
             assert!(path.len() >= 2);
-            assert!((length(path) - len).abs() < 1e-9, "{} vs {len}", length(path));
+            assert!(
+                (length(path) - len).abs() < 1e-9,
+                "{} vs {len}",
+                length(path)
+            );
             // D and E are consecutive points of the path.
             let has = |p: [f64; 2]| {
                 path.iter()
@@ -297,7 +297,10 @@ mod tests {
     #[test]
     fn a_wrapped_part_follows_the_outline_either_way_round() {
         let o = Outline::new(0.2);
-        let a = Anchor { edge: 2, along: 0.5 };
+        let a = Anchor {
+            edge: 2,
+            along: 0.5,
+        };
         // +1: to corner 3 (half the face), then corner 0 (the end).
         let p = wrapped_frame_path(&o, a, 0.5 + 0.2, o.corner(0)).unwrap();
         assert_eq!(p, vec![o.on_edge(2, 0.5), o.corner(3), o.corner(0)]);
