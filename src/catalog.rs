@@ -61,6 +61,10 @@ pub const FILES: &[(&str, &str)] = &[
         "figure-linkage-friction",
         include_str!("../assets/scenes/figure-linkage-friction.toml"),
     ),
+    (
+        "figure-toy",
+        include_str!("../assets/scenes/figure-toy.toml"),
+    ),
     ("movie-3", include_str!("../assets/scenes/movie-3.toml")),
     ("movie-4", include_str!("../assets/scenes/movie-4.toml")),
     ("movie-5", include_str!("../assets/scenes/movie-5.toml")),
@@ -79,6 +83,11 @@ pub const FILES: &[(&str, &str)] = &[
         "movie-linkage-69",
         include_str!("../assets/scenes/movie-linkage-69.toml"),
     ),
+    (
+        "movie-water-tank-ribbons",
+        include_str!("../assets/scenes/movie-water-tank-ribbons.toml"),
+    ),
+    ("movie-toy", include_str!("../assets/scenes/movie-toy.toml")),
 ];
 
 /// A catalogue entry: its ID ("3", "S5", "edge-mode") and its scene,

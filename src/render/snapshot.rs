@@ -145,7 +145,7 @@ impl Region {
 
 /// Model-to-pixel map: equal scales, window centred in the region.
 #[derive(Clone, Copy, Debug)]
-struct Mapping {
+pub(crate) struct Mapping {
     scale: f64,
     x_mid: f64,
     y_mid: f64,
@@ -154,7 +154,7 @@ struct Mapping {
 }
 
 impl Mapping {
-    fn new(view: &View, r: Region) -> Mapping {
+    pub(crate) fn new(view: &View, r: Region) -> Mapping {
         let (w, h) = (r.w.max(1.0) as f64, r.h.max(1.0) as f64);
         let scale = (w / View::span(view.y)).min(h / View::span(view.x));
         Mapping {
@@ -167,7 +167,7 @@ impl Mapping {
     }
 
     /// Pixel (horizontal, vertical) of a model point [x, y].
-    fn px(&self, p: [f64; 2]) -> (f32, f32) {
+    pub(crate) fn px(&self, p: [f64; 2]) -> (f32, f32) {
         (
             (self.px_mid + (p[1] - self.y_mid) * self.scale) as f32,
             (self.py_mid + (p[0] - self.x_mid) * self.scale) as f32,
@@ -175,7 +175,7 @@ impl Mapping {
     }
 
     /// A model length in pixels, clamped to [lo, hi].
-    fn len(&self, l: f64, lo: f32, hi: f32) -> f32 {
+    pub(crate) fn len(&self, l: f64, lo: f32, hi: f32) -> f32 {
         ((l * self.scale) as f32).clamp(lo, hi)
     }
 }
@@ -200,6 +200,13 @@ pub struct Snapshot<'a> {
     /// numbered 1, 2, ... at the left edge. Under a moving camera (movie 3)
     /// it scrolls through the frame and shows the camera's motion.
     pub lab_scale: Option<&'a [f64]>,
+    /// The toy as built (`render::blocks`): blocks drawn as rectangles
+    /// and ribbons along their paths; the ladder's, none for the paper's
+    /// model.
+    pub built: Option<crate::model::built::AsBuilt>,
+    /// Pairs of blocks (zero-based) whose impact is marked at the point
+    /// where they touch (`render::blocks`): none by default.
+    pub impacts: &'a [[usize; 2]],
 }
 
 impl<'a> Snapshot<'a> {
@@ -214,6 +221,8 @@ impl<'a> Snapshot<'a> {
             view: None,
             clamp: true,
             lab_scale: None,
+            built: ladder.built,
+            impacts: &[],
         })
     }
 
@@ -331,12 +340,25 @@ pub fn draw_snapshot_on(canvas: &mut impl Canvas, region: Region, snap: &Snapsho
         draw_lab_scale(canvas, &map, inner, xs);
     }
     if let Some(g) = snap.ghost {
-        draw_ladder(canvas, &map, g, &LadderInks::ghost());
+        match &snap.built {
+            Some(b) => super::blocks::draw_built(canvas, &map, g, b, true),
+            None => draw_ladder(canvas, &map, g, &LadderInks::ghost()),
+        }
     }
     if snap.clamp && snap.q.len() >= 3 {
         draw_clamp(canvas, &map, [snap.q[ix(0)], snap.q[iy(0)]]);
     }
-    draw_ladder(canvas, &map, snap.q, &LadderInks::live());
+    match &snap.built {
+        Some(b) => {
+            super::blocks::draw_built(canvas, &map, snap.q, b, false);
+            let o = &b.ribbons.outline;
+            let at: Vec<[f64; 2]> = (snap.impacts.iter())
+                .map(|&[i, j]| super::blocks::contact_point(o, snap.q, i, j))
+                .collect();
+            super::blocks::draw_impacts(canvas, &map, &at);
+        }
+        None => draw_ladder(canvas, &map, snap.q, &LadderInks::live()),
+    }
     if snap.clamp && snap.q.len() >= 3 {
         draw_pivot(canvas, &map, [snap.q[ix(0)], snap.q[iy(0)]]);
     }

@@ -70,5 +70,6 @@ mod theory;
 mod theory_data;
 mod timings;
 mod toy;
+mod toy_pictures;
 mod waves;
 mod write_failures;
