@@ -135,26 +135,26 @@ fn check(a: &Agreement, tolerance: f64) {
 }
 
 #[test]
-#[ignore = "open: does not pass. Block 2 let go from φ = −2 about block 1's corner: the strap \
-            run's least ribbon tension is −7.4e-5 (a ribbon would have to push), and the maximal \
-            model differs by 0.27 at κ, 2κ and 4κ alike (not falling); not yet told apart whether \
-            the tension split or the hinge leaves the taut set"]
+#[ignore = "open: does not pass. Block 2 let go from φ = −1.2: the strap run stays taut (least \
+            tension 8.8e-5) but the maximal model differs by 0.307 at κ, 2κ and 4κ alike: a \
+            difference that does not fall with κ points at a mismatch of the two runs' set-up or \
+            mapping, not yet found"]
 fn a_two_block_hinge_swings_about_its_pivot_as_the_stiff_ribbons_do() {
     // Block 1 held upright, block 2 folded 2 rad up towards block 1's
     // face w = −h and let go: it swings down about block 1's corner c₁.
-    let theta = folded(FRAC_PI_2, &[-2.0]);
+    let theta = folded(FRAC_PI_2, &[-1.2]);
     let a = agreement(&theta, Drive::hold(FRAC_PI_2), 400.0);
     check(&a, 2e-3);
 }
 
 #[test]
-#[ignore = "open: does not pass. Zig-zag start φ = −1.2: least tension −4.1e-5, difference 0.35 at \
-            κ, 2κ and 4κ alike (not falling)"]
+#[ignore = "open: does not pass. Zig-zag start φ = −0.9: least tension −1.7e-5 (not taut), \
+            difference 0.231 at κ, 2κ and 4κ alike"]
 fn a_six_block_toy_folds_as_the_stiff_ribbons_fold_it() {
     // The toy's six blocks folded in a zig-zag (every junction at
     // φ = −1.2 rad, alternately either way in the lab), block 1 turned
     // by the hand's 232 τ turn: every junction rolls on its pivot.
-    let theta = folded(FRAC_PI_2, &[-1.2, -1.2, -1.2, -1.2, -1.2]);
+    let theta = folded(FRAC_PI_2, &[-0.9, -0.9, -0.9, -0.9, -0.9]);
     let drive = Drive::new(vec![(0.0, FRAC_PI_2), (232.0, -FRAC_PI_2)]).unwrap();
     let a = agreement(&theta, drive, 400.0);
     check(&a, 5e-3);
