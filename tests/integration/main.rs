@@ -64,6 +64,7 @@ mod sim;
 mod sources;
 mod state_consistency;
 mod stop_rules;
+mod strap;
 mod sweep;
 mod sweep_caps;
 mod theory;
