@@ -12,7 +12,6 @@
 
 use super::canvas::{Canvas, Pen};
 use super::palette::{Palette, Role};
-use super::snapshot::Mapping;
 use super::style;
 use crate::encode::Rgb;
 use crate::model::built::AsBuilt;
@@ -22,6 +21,15 @@ use crate::model::ribbons::{Anchor, Ribbon, Ribbons, Span};
 
 /// Tolerance on a walked length and on a corner's position, in s.
 const WALK_TOL: f64 = 1e-9;
+
+/// Model-to-pixel map of the picture the blocks are drawn in (the
+/// snapshot's: equal scales, implemented there).
+pub(crate) trait ToPixels {
+    /// Pixel (horizontal, vertical) of a model point [x, y].
+    fn px(&self, p: [f64; 2]) -> (f32, f32);
+    /// A model length in pixels, clamped to [lo, hi].
+    fn len(&self, l: f64, lo: f32, hi: f32) -> f32;
+}
 
 /// The four corners c₀ … c₃ of block `i` (zero-based) at `q`, in the lab.
 pub fn block_corners(o: &Outline, q: &[f64], i: usize) -> [[f64; 2]; 4] {
@@ -181,7 +189,7 @@ impl Inks {
 /// springs are (a cue besides colour in grey print).
 pub(crate) fn draw_built(
     canvas: &mut impl Canvas,
-    map: &Mapping,
+    map: &impl ToPixels,
     q: &[f64],
     built: &AsBuilt,
     ghost: bool,
@@ -208,7 +216,7 @@ pub(crate) fn draw_built(
 /// end (A: u < 0, B: u > 0), outlined.
 fn draw_block(
     canvas: &mut impl Canvas,
-    map: &Mapping,
+    map: &impl ToPixels,
     o: &Outline,
     q: &[f64],
     i: usize,
@@ -228,7 +236,7 @@ fn draw_block(
 }
 
 /// A ring round each of `points` (lab), the mark of an impact.
-pub(crate) fn draw_impacts(canvas: &mut impl Canvas, map: &Mapping, points: &[[f64; 2]]) {
+pub(crate) fn draw_impacts(canvas: &mut impl Canvas, map: &impl ToPixels, points: &[[f64; 2]]) {
     let r = map.len(0.12, 4.0, 14.0);
     let pen = Pen::new((0.22 * r).clamp(1.2, 3.0), Palette.color(Role::Ink));
     for &p in points {

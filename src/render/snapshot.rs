@@ -6,6 +6,7 @@
 //! a pin support. Model x (along gravity) points down the image, model y to
 //! the right, with equal scales.
 
+use super::blocks::ToPixels;
 use super::canvas::{Canvas, Pen, Raster};
 use super::picture::Picture;
 use super::style::{self, HAlign, VAlign, size};
@@ -145,7 +146,7 @@ impl Region {
 
 /// Model-to-pixel map: equal scales, window centred in the region.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Mapping {
+struct Mapping {
     scale: f64,
     x_mid: f64,
     y_mid: f64,
@@ -154,7 +155,7 @@ pub(crate) struct Mapping {
 }
 
 impl Mapping {
-    pub(crate) fn new(view: &View, r: Region) -> Mapping {
+    fn new(view: &View, r: Region) -> Mapping {
         let (w, h) = (r.w.max(1.0) as f64, r.h.max(1.0) as f64);
         let scale = (w / View::span(view.y)).min(h / View::span(view.x));
         Mapping {
@@ -165,9 +166,11 @@ impl Mapping {
             py_mid: r.y as f64 + 0.5 * h,
         }
     }
+}
 
+impl ToPixels for Mapping {
     /// Pixel (horizontal, vertical) of a model point [x, y].
-    pub(crate) fn px(&self, p: [f64; 2]) -> (f32, f32) {
+    fn px(&self, p: [f64; 2]) -> (f32, f32) {
         (
             (self.px_mid + (p[1] - self.y_mid) * self.scale) as f32,
             (self.py_mid + (p[0] - self.x_mid) * self.scale) as f32,
@@ -175,7 +178,7 @@ impl Mapping {
     }
 
     /// A model length in pixels, clamped to [lo, hi].
-    pub(crate) fn len(&self, l: f64, lo: f32, hi: f32) -> f32 {
+    fn len(&self, l: f64, lo: f32, hi: f32) -> f32 {
         ((l * self.scale) as f32).clamp(lo, hi)
     }
 }

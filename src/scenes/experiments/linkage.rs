@@ -106,10 +106,7 @@ pub(super) fn linkage_friction(theme: &Theme, scene: &Scene) -> Result<(Picture,
             .map(|(mu, k, a)| (*mu, if j == 0 { *k } else { *a } as f64))
             .collect();
         let sign = if j == 0 { "+" } else { "−" };
-        let label = format!(
-            "{word} (α = {sign}{:.1}°)",
-            scene.model.alpha.abs()
-        );
+        let label = format!("{word} (α = {sign}{:.1}°)", scene.model.alpha.abs());
         let color = theme.color(role);
         let width = if j == 0 { 3.0 } else { 1.5 };
         let line = Series::line("", steps(&pts), color).with_width(width);
