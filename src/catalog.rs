@@ -7,9 +7,14 @@ use crate::error::{Error, Result};
 use crate::scene::{self, Kind, Scene};
 use std::sync::OnceLock;
 
-/// The built-in scene files, in the paper's order: (file stem, text).
+/// The built-in scene files, in the paper's order: (file stem, text);
+/// the toy as built first, as the paper's Fig. 1a photographs it.
 /// The stem is `figure-ID` or `movie-ID`.
 pub const FILES: &[(&str, &str)] = &[
+    (
+        "figure-toy",
+        include_str!("../assets/scenes/figure-toy.toml"),
+    ),
     ("figure-1c", include_str!("../assets/scenes/figure-1c.toml")),
     ("figure-2b", include_str!("../assets/scenes/figure-2b.toml")),
     ("figure-2c", include_str!("../assets/scenes/figure-2c.toml")),
@@ -60,10 +65,6 @@ pub const FILES: &[(&str, &str)] = &[
     (
         "figure-linkage-friction",
         include_str!("../assets/scenes/figure-linkage-friction.toml"),
-    ),
-    (
-        "figure-toy",
-        include_str!("../assets/scenes/figure-toy.toml"),
     ),
     ("movie-3", include_str!("../assets/scenes/movie-3.toml")),
     ("movie-4", include_str!("../assets/scenes/movie-4.toml")),
