@@ -63,6 +63,11 @@ pub struct RingChain {
     pub dt: f64,
     /// Check every linked pair every this many steps. Default 20.
     pub guard_every: usize,
+    /// The leaning start: the chain built leaning and let settle before
+    /// the run (`leaning = { angle = 30.0, squeeze = 0.7 }`, its keys in
+    /// [`super::start`]). Default none: the chain as built.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub leaning: Option<super::start::Leaning>,
 }
 
 /// What a tape does to the two rings it joins.
@@ -123,6 +128,7 @@ impl Default for RingChain {
             t_end: 3.0,
             dt: 0.0,
             guard_every: 20,
+            leaning: None,
         }
     }
 }
@@ -230,6 +236,9 @@ impl RingChain {
         }
         self.check_turn()?;
         self.check_pairs()?;
+        if let Some(l) = &self.leaning {
+            l.validated()?;
+        }
         Ok(self)
     }
 

@@ -20,6 +20,7 @@ pub mod math;
 pub mod observe;
 pub mod run;
 pub mod settle;
+pub mod start;
 pub mod system;
 
 pub use chain::{RingChain, TapeKind, Turn};

@@ -7,6 +7,7 @@ use super::build;
 use super::chain::RingChain;
 use super::math::{Quat, V3};
 use super::observe::{self, Flip, FlipTracker, Wave};
+use super::settle::{self, Settled};
 use super::system::{Stats, System};
 use crate::error::Result;
 use serde::Serialize;
@@ -46,11 +47,35 @@ pub struct RingRun {
     pub dt: f64,
     /// The system at the end (its constants: law, tapes, links).
     pub system: System,
+    /// How the leaning start settled (`leaning`), or none: the chain as
+    /// built.
+    pub settled: Option<Settled>,
+}
+
+/// The system at t = 0: the chain as built, or settled from its leaning
+/// start (docs/rings.md, "The leaning start").
+pub fn start(chain: &RingChain) -> Result<(System, Option<Settled>)> {
+    match &chain.leaning {
+        None => Ok((build::build(chain)?, None)),
+        Some(l) => {
+            let (sys, done) = settle::leaning(chain, l.angle, l.squeeze)?;
+            Ok((sys, Some(done)))
+        }
+    }
+}
+
+/// Checks that `chain` can start, without settling it: it builds, and a
+/// leaning start's guess realises its topology.
+pub fn check(chain: &RingChain) -> Result<()> {
+    match &chain.leaning {
+        None => build::build(chain).map(drop),
+        Some(l) => settle::guess(chain, l.angle, l.squeeze).map(drop),
+    }
 }
 
 /// Runs `chain` to its `t_end`, sampling at `times` (sorted, s).
 pub fn run(chain: &RingChain, times: &[f64]) -> Result<RingRun> {
-    let mut sys = build::build(chain)?;
+    let (mut sys, settled) = start(chain)?;
     let mut tracker = FlipTracker::new(sys.n());
     let mut samples = Vec::with_capacity(times.len());
     let mut next = 0;
@@ -82,6 +107,7 @@ pub fn run(chain: &RingChain, times: &[f64]) -> Result<RingRun> {
         stats: sys.stats,
         dt: sys.dt,
         system: sys,
+        settled,
     })
 }
 

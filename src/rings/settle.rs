@@ -25,8 +25,8 @@ pub const REST_SPEED: f64 = 1e-2;
 /// The longest settle, s of chain time; a chain not at rest by then fails.
 pub const MAX_TIME: f64 = 4.0;
 
-/// How a settle ended.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// How a settle ended (the data file's `rings.settled`).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Settled {
     /// Chain time it took, s.
     pub time: f64,
@@ -133,11 +133,25 @@ fn most_pins(sys: &System) -> usize {
     count.into_iter().max().unwrap_or(0).max(1)
 }
 
+/// The leaning guess assembled (no tapes, not settled): refuses, with
+/// one line, a guess that does not realise the chain's topology.
+pub fn guess(chain: &RingChain, lean: f64, squeeze: f64) -> Result<System> {
+    chain.validated()?;
+    build::assemble(chain, leaning_guess(chain, lean, squeeze), false).map_err(|e| match e {
+        Error::BadInput(m) => Error::bad_input(format!(
+            "rings: the leaning start (angle {lean}°, squeeze {squeeze}) is not the chain's \
+             topology: {}; hint: a smaller angle with a squeeze near 1 − angle/100 (30° and \
+             0.7 settle, docs/rings.md)",
+            m.strip_prefix("rings: ").unwrap_or(&m)
+        )),
+        e => e,
+    })
+}
+
 /// The chain settled from the leaning guess, its tapes pinned where the
 /// settled rings cross, ready to run from t = 0.
 pub fn leaning(chain: &RingChain, lean: f64, squeeze: f64) -> Result<(System, Settled)> {
-    chain.validated()?;
-    let mut sys = build::assemble(chain, leaning_guess(chain, lean, squeeze), false)?;
+    let mut sys = guess(chain, lean, squeeze)?;
     let done = settle(&mut sys)?;
     let mut bodies = sys.bodies.clone();
     if chain.mirror {

@@ -106,7 +106,7 @@ impl Scene {
                 "a ring chain makes a \"movie\", a \"filmstrip\" or a \"kymograph\"".into(),
             ));
         }
-        crate::rings::build::build(chain).map(drop).map_err(|e| {
+        crate::rings::run::check(chain).map_err(|e| {
             let msg = e.to_string();
             let msg = msg.strip_prefix("rings: ").unwrap_or(&msg).to_string();
             ("rings".to_string(), msg)

@@ -42,6 +42,10 @@ pub struct RingsData<'a> {
     pub waves: &'a [Wave],
     /// (t, total energy) at each sample, s and J.
     pub energy: Vec<[f64; 2]>,
+    /// How the leaning start settled (time, steps, the fastest point's
+    /// speed at rest); absent for the chain as built.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub settled: Option<rings::settle::Settled>,
 }
 
 impl<'a> RingsData<'a> {
@@ -61,6 +65,7 @@ impl<'a> RingsData<'a> {
             flips: &run.flips,
             waves: &run.waves,
             energy: run.samples.iter().map(|s| [s.t, s.energy]).collect(),
+            settled: run.settled,
         }
     }
 }
@@ -85,7 +90,7 @@ pub fn chain_of(scene: &Scene) -> Result<&RingChain> {
 /// realised, its tapes touch), and its output is one a chain makes.
 pub fn check(scene: &Scene, movie: &MovieOptions) -> Result<()> {
     let chain = chain_of(scene)?;
-    rings::build::build(chain)?;
+    rings::run::check(chain)?;
     match scene.output {
         OutputSpec::Movie { .. } => scene
             .limits

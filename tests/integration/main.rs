@@ -55,6 +55,8 @@ mod reliability;
 mod render;
 mod ribbons;
 mod rings;
+mod rings_captions;
+mod rings_settle;
 mod scene_files;
 mod scene_fuzz;
 mod scenes;

@@ -1,0 +1,68 @@
+//! The ring chain's captions against their data files (as
+//! `captions.rs`): figure 4b and movie 12 drawn by the `ladder` binary,
+//! and what their captions say of the run (how many rings, that no ring
+//! flips, that no helical wave forms) decided from the data file's
+//! `rings` record, so a caption that outlives its data fails.
+
+use serde_json::Value;
+
+use crate::common::tempdir::TempDir;
+
+/// `ladder KIND ID` and `extra` flags into a fresh folder: its data file.
+fn data(kind: &str, id: &str, extra: &[&str]) -> Value {
+    let dir = TempDir::new(&format!("rings-captions-{kind}-{id}"));
+    let mut args = vec![kind, id, "--out", dir.to_str().unwrap()];
+    args.extend_from_slice(extra);
+    let out = crate::common::ladder_cli(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(dir.join(format!("{kind}-{id}.json"))).unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
+/// The caption's claims against the data: the number of rings, flips
+/// (none: "no ring flips"), helical waves (none: "no helical wave
+/// forms"), and the linking guard checked pairs and held (the run
+/// finished: a lost link fails it).
+fn check(name: &str, d: &Value) {
+    let caption = d["scene"]["caption"].as_str().unwrap();
+    let rings = &d["rings"];
+    let n = d["scene"]["rings"]["n"].as_u64().unwrap();
+    assert!(
+        caption.contains(&format!("{n} steel key rings")),
+        "{name}: {caption}"
+    );
+    let flips = rings["flips"].as_array().unwrap();
+    let waves = rings["waves"].as_array().unwrap();
+    assert_eq!(
+        flips.is_empty(),
+        caption.contains("no ring flips") || caption.contains("No ring flips"),
+        "{name}: {} flips against \"{caption}\"",
+        flips.len()
+    );
+    assert_eq!(
+        waves.is_empty(),
+        caption.contains("no helical wave forms in this model"),
+        "{name}: {} waves against \"{caption}\"",
+        waves.len()
+    );
+    assert!(rings["guard_checks"].as_u64().unwrap() > 0, "{name}");
+}
+
+#[test]
+fn figure_4b_caption_says_what_its_data_file_does() {
+    check("figure 4b", &data("figure", "4b", &[]));
+}
+
+/// Small frames: the simulation (and so every flip and wave, observed
+/// at every step) is the movie's; only the samples drawn are fewer.
+#[test]
+fn movie_12_caption_says_what_its_data_file_does() {
+    check(
+        "movie 12",
+        &data("movie", "12", &["--frames", "20", "--size", "320x240"]),
+    );
+}
