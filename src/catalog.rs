@@ -7,9 +7,14 @@ use crate::error::{Error, Result};
 use crate::scene::{self, Kind, Scene};
 use std::sync::OnceLock;
 
-/// The built-in scene files, in the paper's order: (file stem, text).
+/// The built-in scene files, in the paper's order: (file stem, text);
+/// the toy as built first, as the paper's Fig. 1a photographs it.
 /// The stem is `figure-ID` or `movie-ID`.
 pub const FILES: &[(&str, &str)] = &[
+    (
+        "figure-toy",
+        include_str!("../assets/scenes/figure-toy.toml"),
+    ),
     ("figure-1c", include_str!("../assets/scenes/figure-1c.toml")),
     ("figure-2b", include_str!("../assets/scenes/figure-2b.toml")),
     ("figure-2c", include_str!("../assets/scenes/figure-2c.toml")),
@@ -79,6 +84,11 @@ pub const FILES: &[(&str, &str)] = &[
         "movie-linkage-69",
         include_str!("../assets/scenes/movie-linkage-69.toml"),
     ),
+    (
+        "movie-water-tank-ribbons",
+        include_str!("../assets/scenes/movie-water-tank-ribbons.toml"),
+    ),
+    ("movie-toy", include_str!("../assets/scenes/movie-toy.toml")),
 ];
 
 /// A catalogue entry: its ID ("3", "S5", "edge-mode") and its scene,

@@ -9,6 +9,7 @@ pub mod media;
 pub mod outline;
 pub mod params;
 pub mod ribbons;
+pub mod strap;
 pub mod table;
 pub mod terms;
 pub mod trig;

@@ -9,6 +9,7 @@
 //! ([`Raster`]). Turn pixels or trees into bytes with [`crate::encode`] and
 //! write them with [`crate::output`].
 
+pub mod blocks;
 pub mod canvas;
 pub mod cells;
 pub mod charts;

@@ -6,6 +6,7 @@
 //! a pin support. Model x (along gravity) points down the image, model y to
 //! the right, with equal scales.
 
+use super::blocks::ToPixels;
 use super::canvas::{Canvas, Pen, Raster};
 use super::picture::Picture;
 use super::style::{self, HAlign, VAlign, size};
@@ -165,7 +166,9 @@ impl Mapping {
             py_mid: r.y as f64 + 0.5 * h,
         }
     }
+}
 
+impl ToPixels for Mapping {
     /// Pixel (horizontal, vertical) of a model point [x, y].
     fn px(&self, p: [f64; 2]) -> (f32, f32) {
         (
@@ -200,6 +203,13 @@ pub struct Snapshot<'a> {
     /// numbered 1, 2, ... at the left edge. Under a moving camera (movie 3)
     /// it scrolls through the frame and shows the camera's motion.
     pub lab_scale: Option<&'a [f64]>,
+    /// The toy as built (`render::blocks`): blocks drawn as rectangles
+    /// and ribbons along their paths; the ladder's, none for the paper's
+    /// model.
+    pub built: Option<crate::model::built::AsBuilt>,
+    /// Pairs of blocks (zero-based) whose impact is marked at the point
+    /// where they touch (`render::blocks`): none by default.
+    pub impacts: &'a [[usize; 2]],
 }
 
 impl<'a> Snapshot<'a> {
@@ -214,6 +224,8 @@ impl<'a> Snapshot<'a> {
             view: None,
             clamp: true,
             lab_scale: None,
+            built: ladder.built,
+            impacts: &[],
         })
     }
 
@@ -331,12 +343,25 @@ pub fn draw_snapshot_on(canvas: &mut impl Canvas, region: Region, snap: &Snapsho
         draw_lab_scale(canvas, &map, inner, xs);
     }
     if let Some(g) = snap.ghost {
-        draw_ladder(canvas, &map, g, &LadderInks::ghost());
+        match &snap.built {
+            Some(b) => super::blocks::draw_built(canvas, &map, g, b, true),
+            None => draw_ladder(canvas, &map, g, &LadderInks::ghost()),
+        }
     }
     if snap.clamp && snap.q.len() >= 3 {
         draw_clamp(canvas, &map, [snap.q[ix(0)], snap.q[iy(0)]]);
     }
-    draw_ladder(canvas, &map, snap.q, &LadderInks::live());
+    match &snap.built {
+        Some(b) => {
+            super::blocks::draw_built(canvas, &map, snap.q, b, false);
+            let o = &b.ribbons.outline;
+            let at: Vec<[f64; 2]> = (snap.impacts.iter())
+                .map(|&[i, j]| super::blocks::contact_point(o, snap.q, i, j))
+                .collect();
+            super::blocks::draw_impacts(canvas, &map, &at);
+        }
+        None => draw_ladder(canvas, &map, snap.q, &LadderInks::live()),
+    }
     if snap.clamp && snap.q.len() >= 3 {
         draw_pivot(canvas, &map, [snap.q[ix(0)], snap.q[iy(0)]]);
     }

@@ -184,45 +184,67 @@ pub struct Theme {
     pub max_height_pt: Option<f32>,
 }
 
-impl Theme {
-    /// The theme of `style`.
-    pub fn of(style: &Style) -> Theme {
+/// The sizes of a style's text, design pixels: every text but titles at
+/// the style's size at a print style (docs/formats.md), the screen's own
+/// sizes there.
+struct TextSizes {
+    print: bool,
+    px_per_pt: f32,
+    /// `paper` or `paper-wide`: no titles inside the figure.
+    journal: bool,
+    title: f32,
+    tick: f32,
+    panel_label: f32,
+    min_text: f32,
+    min_script: f32,
+}
+
+impl TextSizes {
+    fn of(style: &Style) -> TextSizes {
         let print = style.is_print();
         let px_per_pt = style.px_per_pt();
-        let journal = matches!(style.name, StyleName::Paper | StyleName::PaperWide);
-        // At a print style every text but titles at the style's size.
-        let tick = if print { size::LABEL } else { size::TICK };
-        let min_text = if print {
-            style.font_pt * px_per_pt
-        } else {
-            0.0
-        };
+        let pick = |at_print: f32, at_screen: f32| if print { at_print } else { at_screen };
+        TextSizes {
+            print,
+            px_per_pt,
+            journal: matches!(style.name, StyleName::Paper | StyleName::PaperWide),
+            title: pick(size::LABEL, size::TITLE),
+            tick: pick(size::LABEL, size::TICK),
+            panel_label: pick(size::LABEL, size::PANEL_LABEL),
+            min_text: pick(style.font_pt * px_per_pt, 0.0),
+            min_script: pick(MIN_SCRIPT_PT * px_per_pt, 0.0),
+        }
+    }
+}
+
+impl Theme {
+    /// The theme of `style`: the sizes of its text ([`TextSizes`]: what
+    /// the style decides), then every length, gap and band the figures
+    /// derive from them.
+    pub fn of(style: &Style) -> Theme {
+        let TextSizes {
+            print,
+            px_per_pt,
+            journal,
+            title,
+            tick,
+            panel_label,
+            min_text,
+            min_script,
+        } = TextSizes::of(style);
         Theme {
             style: *style,
             palette: Palette,
             titles: !journal,
             px_per_pt,
             // Titles and panel titles at a print style: the text's size.
-            title: if print { size::LABEL } else { size::TITLE },
+            title,
             label: size::LABEL,
             tick,
-            panel_label: if print {
-                size::LABEL
-            } else {
-                size::PANEL_LABEL
-            },
-            panel_label_clear: 0.25
-                * if print {
-                    size::LABEL
-                } else {
-                    size::PANEL_LABEL
-                },
+            panel_label,
+            panel_label_clear: 0.25 * panel_label,
             min_text,
-            min_script: if print {
-                MIN_SCRIPT_PT * px_per_pt
-            } else {
-                0.0
-            },
+            min_script,
             line: 2.0,
             thin: 1.0,
             marker: 4.0,

@@ -69,16 +69,29 @@ pub fn law_and_step(chain: &RingChain) -> (Law, f64) {
 /// tapes pinned, forces evaluated.
 pub fn build(chain: &RingChain) -> Result<System> {
     chain.validated()?;
+    assemble(chain, as_built(chain), true)
+}
+
+/// Each ring's pose in the chain as built (unmirrored, at rest): ring k
+/// at depth k·s below the held ring, its plane vertical, turned k·β.
+pub fn as_built(chain: &RingChain) -> Vec<Body> {
     let (s, beta) = layout(chain);
     let tilt = Quat::axis_angle([0.0, 1.0, 0.0], std::f64::consts::FRAC_PI_2);
-    let bodies: Vec<Body> = (0..chain.n)
+    (0..chain.n)
         .map(|k| Body {
             x: [0.0, 0.0, -s * (k as f64 - chain.held as f64)],
             v: [0.0; 3],
             q: Quat::axis_angle([0.0, 0.0, 1.0], beta * k as f64).mul(tilt),
             l: [0.0; 3],
         })
-        .collect();
+        .collect()
+}
+
+/// The system from the rings' poses (unmirrored): the hand holds the
+/// held ring as posed, the chain is mirrored if asked, checked against
+/// its topology, its tapes pinned (if `tapes`) where their rings cross,
+/// forces evaluated; refused if two tubes overlap past `overlap`.
+pub fn assemble(chain: &RingChain, bodies: Vec<Body>, tapes: bool) -> Result<System> {
     let held = bodies[chain.held];
     let mut turn = chain.turn;
     if chain.release {
@@ -99,7 +112,9 @@ pub fn build(chain: &RingChain) -> Result<System> {
     let (law, dt) = law_and_step(chain);
     let mut sys = System::new(chain.clone(), bodies, hand, law, dt);
     check_topology(&sys)?;
-    pin_tapes(&mut sys)?;
+    if tapes {
+        pin_tapes(&mut sys)?;
+    }
     sys.start();
     if sys.stats.max_overlap > chain.overlap {
         return Err(Error::bad_input(format!(
@@ -141,7 +156,7 @@ fn check_topology(sys: &System) -> Result<()> {
 
 /// Pins each tape at the crossing of its two rings (and, for a weld, at
 /// two more points half a radius away along ring i's normal and radius).
-fn pin_tapes(sys: &mut System) -> Result<()> {
+pub fn pin_tapes(sys: &mut System) -> Result<()> {
     let rots = rotations(sys);
     let chain = sys.chain.clone();
     let table = contact::sample_table();

@@ -20,6 +20,7 @@ pub mod hand;
 pub mod math;
 pub mod observe;
 pub mod run;
+pub mod settle;
 pub mod system;
 pub mod warm;
 

@@ -254,4 +254,65 @@ mod tests {
         assert!((f.t - 50.0).abs() < 1e-9);
         assert!((f.phi - 90.0).abs() < 1e-9, "{f:?}");
     }
+
+    /// Ring k of the odd strand tipped over about the horizontal axis at
+    /// azimuth `phi0 + k·step`, its flip centred at 0.1 (k + 1) s; the
+    /// even rings stand still; mirrored (x → −x) if asked.
+    fn helix(phi0: f64, step: f64, mirror: bool) -> Vec<Flip> {
+        let n = 12;
+        let mut tr = FlipTracker::new(n);
+        for s in 0..=1200 {
+            let t = s as f64 * 1e-3;
+            let normals: Vec<V3> = (0..n)
+                .map(|ring| {
+                    if ring % 2 == 0 {
+                        return [1.0, 0.0, 0.0];
+                    }
+                    let k = (ring / 2) as f64;
+                    let phi = (phi0 + k * step - 90.0).to_radians();
+                    // Tilt from +0.8 to −0.8 rad around 0.1 (k + 1) s.
+                    let a = (8.0 * (t - 0.1 * (k + 1.0)) / 0.05).clamp(-0.8, 0.8);
+                    let m = [a.cos() * phi.cos(), a.cos() * phi.sin(), -a.sin()];
+                    if mirror { [-m[0], m[1], m[2]] } else { m }
+                })
+                .collect();
+            tr.observe(t, &normals);
+        }
+        tr.flips
+    }
+
+    /// The tracker and the wave finder end to end: a helix of flips with a
+    /// 40° step is found with its step, speed and pitch, and its mirror
+    /// image has the opposite step (the opposite helicity); a wobble
+    /// inside the band is no flip.
+    #[test]
+    fn a_helix_of_flips_and_its_mirror_have_opposite_steps() {
+        let flips = helix(30.0, 40.0, false);
+        assert_eq!(flips.len(), 6, "{flips:?}");
+        for (k, f) in flips.iter().enumerate() {
+            assert!((f.t - 0.1 * (k + 1) as f64).abs() < 1e-3, "{f:?}");
+            assert!(
+                angle_step(30.0 + 40.0 * k as f64, f.phi).abs() < 1e-6,
+                "{f:?}"
+            );
+        }
+        let w = waves(&flips, 12, 0, 0.0);
+        assert_eq!(w.len(), 1);
+        assert_eq!(w[0].rings, vec![1, 3, 5, 7, 9, 11]);
+        assert!((w[0].step - 40.0).abs() < 1e-6 && (w[0].speed - 10.0).abs() < 0.05);
+        assert!((w[0].pitch - 9.0).abs() < 1e-6);
+        let m = waves(&helix(30.0, 40.0, true), 12, 0, 0.0);
+        assert_eq!(m.len(), 1);
+        assert!((m[0].step + 40.0).abs() < 1e-6, "{:?}", m[0]);
+        for (a, b) in w[0].phis.iter().zip(&m[0].phis) {
+            assert!(angle_step(-a, *b).abs() < 1e-9, "{a} vs {b}");
+        }
+        // A wobble of n_z within ±0.2 (inside the ±sin 15° band) is no flip.
+        let mut tr = FlipTracker::new(1);
+        for s in 0..1000 {
+            let z = 0.2 * (s as f64 * 0.05).sin();
+            tr.observe(s as f64, &[[(1.0 - z * z).sqrt(), 0.0, z]]);
+        }
+        assert!(tr.flips.is_empty());
+    }
 }

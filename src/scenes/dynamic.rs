@@ -58,7 +58,7 @@ impl Strip {
         fronts: bool,
     ) -> Result<Strip> {
         let run = run::simulate(scene, times)?;
-        let ladder = Ladder::new(scene.model.params()?);
+        let ladder = super::toy::drawn_ladder(scene)?;
         let traj = &run.trajectory;
         let title =
             (!label.is_empty()).then(|| format!("{label}  {}", wave_name(scene.model.alpha)));

@@ -108,6 +108,8 @@ fn kymograph_chart(
     };
     let mut k = Kymograph::new(&traj.times, &values, n);
     k.title = Some(&kymo_title);
+    let marks = super::toy::kymograph_marks(traj.impacts.as_deref());
+    k.marks = &marks;
     charts::kymograph(theme, &k, width, height)
 }
 

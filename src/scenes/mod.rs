@@ -17,6 +17,7 @@ mod rings_draw;
 pub mod run;
 pub mod stiff;
 pub mod theory;
+pub mod toy;
 pub mod walls;
 
 use crate::encode::{Format, Formats, Kind as FormatKind, Mp4Quality};

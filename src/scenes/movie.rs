@@ -101,6 +101,8 @@ struct MoviePlan {
     clock: Option<SecondsClock>,
     /// Whether the ladder is folded into numbered columns.
     folded: bool,
+    /// The toy as built: the impacts each frame marks (`scenes::toy`).
+    impacts: Vec<Vec<[usize; 2]>>,
 }
 
 /// The clock of a movie of an apparatus (a scene with `[apparatus]`):
@@ -155,7 +157,8 @@ impl MoviePlan {
         };
         let times = frame_times(scene.run.t_end, opts.frames);
         let run = run::simulate(scene, &times)?;
-        let ladder = Ladder::new(scene.model.params()?);
+        let ladder = super::toy::drawn_ladder(scene)?;
+        let impacts = super::toy::impacts_by_frame(run.trajectory.impacts.as_deref(), &times);
         let layout = MovieLayout::new(theme, opts.width, opts.height, ladder.n());
         let region = layout.ladder;
         let aspect = layout.ladder_aspect();
@@ -221,6 +224,7 @@ impl MoviePlan {
             lab_scale,
             clock,
             folded,
+            impacts,
         })
     }
 
@@ -296,6 +300,9 @@ impl MoviePlan {
         }
         snap.clamp = c.start == 0;
         snap.lab_scale = self.lab_scale.as_deref();
+        if c.start == 0 && c.len() == self.ladder.n() {
+            snap.impacts = self.impacts.get(k).map_or(&[], |v| v.as_slice());
+        }
         Ok(snap)
     }
 

@@ -20,6 +20,7 @@ mod simd;
 pub mod speed;
 pub mod step_bounds;
 pub mod stepping;
+pub mod strap;
 mod tableau;
 pub mod tally;
 pub mod terms_rk4;

@@ -41,7 +41,7 @@ fn figures() -> &'static [(String, Picture)] {
                 (e.scene.stem(), p)
             })
             .collect();
-        assert_eq!(all.len(), 17, "every figure of the catalogue");
+        assert_eq!(all.len(), 18, "every figure of the catalogue");
         all
     })
 }
@@ -435,7 +435,7 @@ fn movie_texts_and_panels_lie_inside_the_frame_at_every_size() {
             || b.y + b.h <= a.y + EPS
     };
     let movies = catalog::entries(scene::Kind::Movie).unwrap();
-    assert_eq!(movies.len(), 12);
+    assert_eq!(movies.len(), 14);
     // A title longer than any frame is shrunk to fit, not cut.
     let long = "A title much longer than any movie frame could show at the size of \
                 the catalogue's titles, written by a user of `ladder render`";

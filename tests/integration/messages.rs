@@ -77,7 +77,7 @@ fn photographs_and_recordings_are_named_as_such() {
                 what,
                 "this program does not make it",
                 "no photographs or recordings of real toys",
-                "figures 1c, 2b",
+                "figures toy, 1c, 2b",
                 "movies 3, 4",
             ],
         );

@@ -950,3 +950,63 @@ fn tank_levels_plots_share_a_slide() {
         );
     }
 }
+
+/// A filmstrip that draws at one width draws at every wider one, up to
+/// the widest slide (docs/formats.md: a refusal names the smallest size
+/// that works, so every larger one must work too). Figure 1c at `slide`
+/// drew at 4.63–5 in and was refused at 5.5–7.77 in: its plan let a caption
+/// line spill into the gap beside its snapshot ("t/τ = 2000" wider than
+/// the snapshot) where the grid makes the column as wide as the caption,
+/// and it counted "t/τ =" only under the first snapshot, not under the
+/// first of every row.
+#[test]
+fn a_filmstrip_that_draws_at_one_width_draws_at_every_wider_one() {
+    let dir = tempdir("filmstrip-wider");
+    for (id, style, widest) in [
+        ("1c", "slide", 14.0),
+        ("3", "slide", 14.0),
+        ("1c", "paper", 7.5),
+    ] {
+        let base: Vec<String> = ["figure", id, "--style", style].map(String::from).to_vec();
+        let with = |w: f64| {
+            let mut a = base.clone();
+            a.extend(["--width".to_string(), format!("{w:.2}in")]);
+            a
+        };
+        // The smallest width: the one a 1 in page's refusal names.
+        let smallest = match refusal(&dir, &with(1.0)) {
+            None => 1.0,
+            Some(msg) => msg
+                .rsplit("--width ")
+                .next()
+                .and_then(|v| v.strip_suffix("in"))
+                .and_then(|v| v.parse::<f64>().ok())
+                .unwrap_or_else(|| panic!("figure {id} at {style}: no width named: {msg}")),
+        };
+        let mut w = smallest;
+        while w <= widest {
+            if let Some(msg) = refusal(&dir, &with(w)) {
+                panic!(
+                    "figure {id} at {style}: {smallest:.2} in draws, {w:.2} in is refused: {msg}"
+                );
+            }
+            w += 0.25;
+        }
+    }
+}
+
+/// Fig. S5 at `paper`: each bottom panel's qb axis (−π to π) reads at two
+/// ticks or more, −2, 0 and 2 (it was labelled at 0 alone: asked for two
+/// labels, the chart library stepped by 5).
+#[test]
+fn s5s_qb_axis_reads_at_more_than_zero() {
+    let dir = tempdir("s5-qb");
+    let args: Vec<String> = ["figure", "S5", "--style", "paper"]
+        .map(String::from)
+        .to_vec();
+    assert_eq!(refusal(&dir, &args), None);
+    let svg = std::fs::read_to_string(dir.join("figure-S5.svg")).unwrap();
+    // The ω axes run from 0 up: a "−2" is a qb tick, one per bottom panel.
+    let minus_two = svg.lines().filter(|l| l.trim() == "−2").count();
+    assert!(minus_two >= 2, "{minus_two} qb ticks read −2");
+}

@@ -11,9 +11,9 @@
 //! Checked for each figure drawn:
 //! - no glyph under 5 pt; every glyph that is not a sub- or superscript (a
 //!   run at 0.7 of the run beside it) at least the style's text size at a
-//!   journal style (8 pt at `paper`, `paper-wide`), at least 10 pt at a
-//!   slide (composed figures may set their text down to 10 pt there), at
-//!   least 5 pt at `screen`;
+//!   journal style (8 pt at `paper`, `paper-wide`), the slide's 20 pt at
+//!   `slide` (composed figures once set theirs down to 10 pt there), at
+//!   least 11.25 pt at `screen` on a page of the user's;
 //! - no two text runs overlap (by more than 0.5 pt each way);
 //! - every glyph on the page;
 //! - at `paper` and `paper-wide` the page no taller than 4.5 in (324 pt), or

@@ -99,16 +99,12 @@ fn the_ribbon_tank_converges_in_its_step() {
     }
 }
 
-#[test]
-#[ignore = "open: the run now reaches its end (the ribbon-length jumps that blew it up at 1358 τ are \
-            fixed), but the budget misses by 6.9e-5 of a work of 1.1e-3 (tolerance 1e-3 of it); \
-            not yet told apart: the powers are sampled every 0.25 τ, contact pulses last ~0.1 τ"]
-fn the_energy_budget_of_the_ribbon_tank_closes() {
-    // Without drag: the energy of the free blocks (kinetic with added
-    // mass, ribbons, contact overlaps, gravity) changes by the work done
-    // on block 1 less what the ribbons' dashpots and the contacts
-    // dissipated. Work on block 1: θ̇₁ (∂U/∂θ₁ − Q₁), Q₁ the dashpots'
-    // and contacts' torque on it.
+/// The energy budget of the ribbon tank without drag (N = 6, acrylic
+/// contact, 8 s), its powers sampled `per` steps apart (the steps are
+/// 1/16 of 0.25 τ, as near as the drive's end allows): (ΔE, work on
+/// block 1, dissipated). Work on block 1: θ̇₁ (∂U/∂θ₁ − Q₁), Q₁ the
+/// dashpots' and contacts' torque on it.
+fn ribbon_tank_budget(per: usize) -> (f64, f64, f64) {
     let text = tank(
         "added_mass = true\ncontact = \"acrylic\"\n",
         86.0,
@@ -121,13 +117,17 @@ fn the_energy_budget_of_the_ribbon_tank_closes() {
     let (ladder, built) = (sc.ladder, sc.ladder.built.unwrap());
     let t_d = sc.protocol.drive().unwrap().end();
     let h = 0.25;
-    let steps = |span: f64| 2 * (span / h / 2.0).ceil() as usize;
-    let (n1, n2) = (steps(t_d), steps(sc.t_end - t_d));
-    let (h1, h2) = (t_d / n1 as f64, (sc.t_end - t_d) / n2 as f64);
+    // Steps: 16 per 0.25 τ; samples every `per` of them, an even number
+    // of intervals on each side of the drive's end (Simpson).
+    let steps = |span: f64| 32 * (span / h / 2.0).ceil() as usize;
+    let (s1, s2) = (steps(t_d), steps(sc.t_end - t_d));
+    let (dt1, dt2) = (t_d / s1 as f64, (sc.t_end - t_d) / s2 as f64);
+    let (n1, n2) = (s1 / per, s2 / per);
+    let (h1, h2) = (dt1 * per as f64, dt2 * per as f64);
     let mut times: Vec<f64> = (0..=n1).map(|k| k as f64 * h1).collect();
     times.extend((1..=n2).map(|k| t_d + k as f64 * h2));
     // Contact (k_c = 1000 k) needs RK4 well inside ω dt < 2.8: 1/64 τ.
-    let traj = sim::simulate(&sc, &times, &rk4(h1.min(h2) / 16.0)).unwrap();
+    let traj = sim::simulate(&sc, &times, &rk4(dt1.max(dt2) * 1.000_001)).unwrap();
     let terms = ladder.terms;
     let energy = |q: &[f64], v: &[f64]| {
         media::kinetic_energy(&ladder, &terms, q, v, true)
@@ -157,13 +157,29 @@ fn the_energy_budget_of_the_ribbon_tank_closes() {
     let (w, d) = (work(&drive), work(&lost));
     let e0 = energy(&traj.states[0], &traj.velocities[0]);
     let e1 = energy(traj.states.last().unwrap(), traj.velocities.last().unwrap());
-    let residual = (e1 - e0) - (w - d);
-    println!(
-        "ΔE {:.6e}, work on block 1 {w:.6e}, dissipated {d:.6e}, residual {residual:.3e}",
-        e1 - e0
-    );
-    assert!(d > 0.01 * w, "{d} {w}");
-    assert!(residual.abs() < 1e-3 * w, "{residual:e} of {w:e}");
+    (e1 - e0, w, d)
+}
+
+#[test]
+#[ignore = "open: the powers sampled every 16, 4, 2 steps give residuals of 3.3 %, 2.3 %, \
+            -1.6 % of the work (tolerance 0.1 %); the dissipated power varies within a step, so \
+            the budget needs accumulating inside the integrator"]
+fn the_energy_budget_of_the_ribbon_tank_closes() {
+    // Without drag: the energy of the free blocks (kinetic with added
+    // mass, ribbons, contact overlaps, gravity) changes by the work done
+    // on block 1 less what the ribbons' dashpots and the contacts
+    // dissipated; the powers sampled every 16, 4, 2 steps.
+    for per in [16, 4, 2] {
+        let (de, w, d) = ribbon_tank_budget(per);
+        let residual = de - (w - d);
+        println!(
+            "every {per} steps: ΔE {de:.6e}, work {w:.6e}, dissipated {d:.6e}, residual \
+             {residual:.3e} = {:.2e} of the work",
+            residual / w
+        );
+        assert!(d > 0.01 * w, "{d} {w}");
+        assert!(residual.abs() < 1e-3 * w, "{residual:e} of {w:e}");
+    }
 }
 
 #[test]

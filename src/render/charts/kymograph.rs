@@ -25,6 +25,10 @@ pub struct Kymograph<'a> {
     pub value_label: &'a str,
     /// Label of the time axis, e.g. "t/τ".
     pub time_label: &'a str,
+    /// Events marked on the map by a small ring: (position across, in
+    /// blocks, time), e.g. impacts between blocks n and n + 1 at n + ½
+    /// (`scenes::toy`). None by default.
+    pub marks: &'a [(f64, f64)],
 }
 
 impl<'a> Kymograph<'a> {
@@ -37,6 +41,7 @@ impl<'a> Kymograph<'a> {
             title: None,
             value_label: "sin θₙ",
             time_label: "t/τ",
+            marks: &[],
         }
     }
 
@@ -115,6 +120,14 @@ fn draw_heatmap(theme: &Theme, area: &Area<'_>, k: &Kymograph<'_>) -> Result<()>
     chart
         .draw_series(heat_cells(k, rows, t1))
         .map_err(plot_error)?;
+    if !k.marks.is_empty() {
+        let ink = rgb(Palette.color(Role::Ink));
+        let r = (0.35 * size::TICK).max(3.0) as i32;
+        let ring = ShapeStyle::from(&ink).stroke_width(1);
+        chart
+            .draw_series(k.marks.iter().map(|&(x, t)| Circle::new((x, -t), r, ring)))
+            .map_err(plot_error)?;
+    }
     let yf = |v: &f64| short_number(-*v);
     let xf = |v: &f64| {
         if (v - v.round()).abs() < 1e-9 {

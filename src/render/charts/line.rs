@@ -387,7 +387,6 @@ where
     X: Ranged<ValueType = f64> + ValueFormatter<f64>,
     Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
 {
-    let xscale = spec.x.scale;
     let shared = spec.x.shared;
     // A shared axis keeps its numbers when asked (every stacked sweep
     // panel can be read); its label is left to the panel below.
@@ -401,25 +400,7 @@ where
         }
     };
     let yf = move |v: &f64| y_axis.tick_text(*v);
-    // As many x labels as fit side by side with a gap (at most 7) at a
-    // print style.
-    let plot_w = {
-        let (px, _) = chart.plotting_area().get_pixel_range();
-        (px.end - px.start) as f32
-    };
-    let xr = chart.x_range();
-    let widest = end_labels(xr.start, xr.end, xscale)
-        .iter()
-        .map(|t| style::text_width(theme.font(), t, theme.tick))
-        .fold(0.0f32, f32::max);
-    // (Print styles only: the screen keeps its seven, and its goldens.)
-    let x_count = if !spec.x.names.is_empty() {
-        spec.x.names.len()
-    } else if theme.is_print() {
-        ((plot_w / (widest + 14.0)).floor() as usize).clamp(2, 7)
-    } else {
-        7
-    };
+    let x_count = x_label_count(theme, chart, spec);
     // As many y labels as fit one above the other with a line between
     // them, at most 7, at a print style.
     let plot_h = {
@@ -450,6 +431,45 @@ where
         .light_line_style(rgb(Palette.color(Role::Ink)).mix(0.05))
         .draw()
         .map_err(plot_error)
+}
+
+/// How many x labels to ask plotters for: the names of a named axis; at a
+/// print style as many as fit side by side with a gap (at most 7), and
+/// then at least two labelled ticks where two fit (`--style paper` once
+/// labelled S5's qb axis, −π to π, at 0 alone: asked for two, plotters
+/// steps by 5); seven at screen (and its goldens).
+fn x_label_count<X, Y>(theme: &Theme, chart: &Ctx<'_, '_, X, Y>, spec: &ChartSpec) -> usize
+where
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    if !spec.x.names.is_empty() {
+        return spec.x.names.len();
+    }
+    if !theme.is_print() {
+        return 7;
+    }
+    let plot_w = {
+        let (px, _) = chart.plotting_area().get_pixel_range();
+        (px.end - px.start) as f32
+    };
+    let xr = chart.x_range();
+    let width = |t: &str| style::text_width(theme.font(), t, theme.tick);
+    let widest = end_labels(xr.start, xr.end, spec.x.scale)
+        .iter()
+        .map(|t| width(t))
+        .fold(0.0f32, f32::max);
+    let count = ((plot_w / (widest + 14.0)).floor() as usize).clamp(2, 7);
+    let x = chart.as_coord_spec().x_spec();
+    let read = |n: usize| {
+        let at: Vec<f64> = x.key_points(n);
+        let room: f32 = at.iter().map(|v| width(&spec.x.tick_text(*v)) + 14.0).sum();
+        at.len() >= 2 && room <= plot_w
+    };
+    if read(count) {
+        return count;
+    }
+    (count + 1..=7).find(|&n| read(n)).unwrap_or(count)
 }
 
 fn draw_zero_lines<X, Y>(chart: &mut Ctx<'_, '_, X, Y>) -> Result<()>

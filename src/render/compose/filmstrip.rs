@@ -383,23 +383,30 @@ impl StripPlan {
         } else {
             0.0
         };
-        let captions: Vec<String> = frames
-            .iter()
-            .enumerate()
-            .map(|(k, f)| time_caption(k, f.time, true))
-            .collect();
-        let widest = |two: bool| {
-            captions
-                .iter()
-                .flat_map(|c| {
-                    two_lines(c, two)
-                        .lines()
-                        .map(str::to_string)
-                        .collect::<Vec<_>>()
-                })
-                .map(|l| style::text_width(theme.font(), &l, theme.label))
+        // Each row's first caption reads "t/τ = …", the others the time
+        // alone ([`strip_panels`]); a grid's column is as wide as its
+        // snapshot or its widest caption line, whichever is wider.
+        let line_w = |c: &str, two: bool| {
+            two_lines(c, two)
+                .lines()
+                .map(|l| style::text_width(theme.font(), l, theme.label))
                 .fold(0.0f32, f32::max)
         };
+        let widths = |k: usize, two: bool| -> Vec<f32> {
+            frames
+                .iter()
+                .enumerate()
+                .map(|(i, f)| line_w(&time_caption(i % k, f.time, true), two))
+                .collect()
+        };
+        let strip_w = |k: usize, cw: f32, two: bool| -> f32 {
+            let mut col = vec![cw; k];
+            for (i, c) in widths(k, two).into_iter().enumerate() {
+                col[i % k] = col[i % k].max(c.ceil());
+            }
+            col.iter().sum::<f32>() + (k as f32 - 1.0) * gap + 2.0 * m
+        };
+        let widest = |k: usize, two: bool| widths(k, two).into_iter().fold(0.0f32, f32::max);
         // Words beside the chain need the room; a bare triangle does not.
         let marked = opts.marks.iter().flatten().any(|m| !m.label.is_empty());
         let n = frames.len().max(1);
@@ -412,8 +419,11 @@ impl StripPlan {
             if cw < theme.min_snapshot.0 || (marked && cw < MARKED_SHARE * w as f32) {
                 continue;
             }
-            let two = widest(false) > cw + gap - theme.caption_slack;
-            if two && widest(true) > cw + gap - theme.caption_slack {
+            // One line where it fits beside its neighbours and within the
+            // box, two otherwise (or no way of `rows` rows).
+            let spill = |two| widest(k, two) > cw + gap - theme.caption_slack;
+            let two = spill(false) || strip_w(k, cw, false) > box_w as f32;
+            if two && (spill(true) || strip_w(k, cw, true) > box_w as f32) {
                 continue;
             }
             let lines = if two { 2.0 } else { 1.0 };

@@ -7,7 +7,7 @@ use crate::error::Result;
 use crate::render::charts::{Axis, ChartSpec, Series};
 use crate::render::palette::Role;
 use crate::render::{Picture, Theme};
-use crate::scene::{Scene, describe};
+use crate::scene::Scene;
 use crate::scenes::data::RunData;
 
 /// μ_p, and the blocks the kink and the antikink flipped.
@@ -106,10 +106,7 @@ pub(super) fn linkage_friction(theme: &Theme, scene: &Scene) -> Result<(Picture,
             .map(|(mu, k, a)| (*mu, if j == 0 { *k } else { *a } as f64))
             .collect();
         let sign = if j == 0 { "+" } else { "−" };
-        let label = format!(
-            "{word} (α = {sign}{}°)",
-            describe::num(scene.model.alpha.abs())
-        );
+        let label = format!("{word} (α = {sign}{:.1}°)", scene.model.alpha.abs());
         let color = theme.color(role);
         let width = if j == 0 { 3.0 } else { 1.5 };
         let line = Series::line("", steps(&pts), color).with_width(width);

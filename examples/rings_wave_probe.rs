@@ -1,0 +1,119 @@
+//! Probe of the leaning start (docs/rings.md, "The leaning start"):
+//! settles the chain from a leaning guess, then turns or releases the
+//! top ring and prints each ring's n_z at rest, the flips and the waves.
+//! `cargo run --release --example rings_wave_probe -- n=12 t=2 lean=30 squeeze=0.8 tapes release`
+use jacobs_ladder::rings::observe::{self, FlipTracker};
+use jacobs_ladder::rings::{self, RingChain, settle};
+
+fn main() {
+    let mut chain = RingChain::default();
+    let (mut lean, mut squeeze, mut tapes) = (30.0, 0.8, false);
+    for a in std::env::args().skip(1) {
+        let (k, v) = a.split_once('=').unwrap_or((a.as_str(), ""));
+        let num = || v.parse::<f64>().unwrap_or_else(|e| panic!("{a}: {e}"));
+        match k {
+            "n" => chain.n = num() as usize,
+            "t" => chain.t_end = num(),
+            "lean" => lean = num(),
+            "squeeze" => squeeze = num(),
+            "tapes" => tapes = true,
+            "release" => chain.release = true,
+            "mirror" => chain.mirror = true,
+            "angle" => chain.turn.angle = num(),
+            "az" => chain.turn.azimuth = num(),
+            "start" => chain.turn.start = num(),
+            "turn" => chain.turn.duration = num(),
+            "mu" => chain.friction = num(),
+            "e" => chain.restitution = num(),
+            _ => panic!("unknown argument {a}"),
+        }
+    }
+    if tapes {
+        chain.tapes = (1..chain.n)
+            .step_by(2)
+            .filter(|k| k + 2 < chain.n)
+            .map(|k| [k, k + 2])
+            .collect();
+    }
+    let t0 = std::time::Instant::now();
+    let (mut sys, done) = match settle::leaning(&chain, lean, squeeze) {
+        Ok(x) => x,
+        Err(e) => {
+            println!("settle failed: {e}");
+            return;
+        }
+    };
+    println!(
+        "settled in {:.3} s ({} steps), speed {:.2e}, cpu {:.1} s",
+        done.time,
+        done.steps,
+        done.speed,
+        t0.elapsed().as_secs_f64()
+    );
+    let show = |sys: &rings::system::System, label: &str| {
+        let n = rings::run::normals(&sys.bodies);
+        let nz: Vec<String> = n.iter().map(|n| format!("{:+.2}", n[2])).collect();
+        let az: Vec<String> = n
+            .iter()
+            .map(|n| format!("{:.0}", n[1].atan2(n[0]).to_degrees()))
+            .collect();
+        let z: Vec<String> = sys
+            .bodies
+            .iter()
+            .map(|b| format!("{:.1}", b.x[2] * 1e3))
+            .collect();
+        println!(
+            "{label} t {:.2} E {:.6}\n  nz {}\n  az {}\n  z(mm) {}",
+            sys.t,
+            sys.energy(),
+            nz.join(" "),
+            az.join(" "),
+            z.join(" ")
+        );
+    };
+    show(&sys, "rest");
+    if std::env::var("DBG").is_ok() {
+        let rots: Vec<_> = sys.bodies.iter().map(|b| b.q.matrix()).collect();
+        for p in &sys.pins {
+            let (a, b) = sys.pin_points(p, &rots);
+            println!("pin {} {} a {:?} b {:?}", p.i, p.j, a, b);
+        }
+        for (i, j, t) in sys.touches(&rots) {
+            println!("touch {i} {j} d/r {:.3}", t.d / chain.tube_radius);
+        }
+    }
+    let mut tracker = FlipTracker::new(sys.n());
+    tracker.observe(sys.t, &rings::run::normals(&sys.bodies));
+    let steps = (chain.t_end / sys.dt).ceil() as u64;
+    let every = (0.25 / sys.dt).round() as u64;
+    for k in 1..=steps {
+        if let Err(e) = sys.step() {
+            println!("failed: {e}");
+            break;
+        }
+        tracker.observe(sys.t, &rings::run::normals(&sys.bodies));
+        if k.is_multiple_of(20)
+            && let Err(e) = sys.check_links()
+        {
+            println!("failed: {e}");
+            break;
+        }
+        if k % every == 0 {
+            show(&sys, "at");
+        }
+    }
+    for f in &tracker.flips {
+        println!("flip ring {} t {:.3} phi {:.0}", f.ring, f.t, f.phi);
+    }
+    for w in observe::waves(&tracker.flips, sys.n(), chain.held, chain.turn.start) {
+        println!(
+            "wave strand {} rings {:?} step {:.1} speed {:.1} pitch {:.1}",
+            w.strand, w.rings, w.step, w.speed, w.pitch
+        );
+    }
+    println!(
+        "max overlap {:.3} r, cpu {:.1} s",
+        sys.stats.max_overlap,
+        t0.elapsed().as_secs_f64()
+    );
+}
