@@ -1,4 +1,5 @@
-//! The warm-started contact search (docs/rings.md, "Contact"). The full
+//! The warm-started contact search (docs/performance.md, "The ring chain:
+//! where its time goes"). The full
 //! search ([`contact::touches_from`]: 24 sampled distances along ring a,
 //! each sampled minimum refined by four parabolas) stays the reference;
 //! between two full searches of a pair, each local minimum of the
@@ -376,7 +377,6 @@ fn keep(found: &mut [Option<Touch>; TRACKED], t: Touch, slack: f64) {
     }
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -442,7 +442,10 @@ mod tests {
                 let theta = k as f64 / 2000.0 * std::f64::consts::TAU;
                 most = most.max((distance(&a2, &b2, theta) - distance(&a, &b, theta)).abs());
             }
-            assert!(most <= delta * (1.0 + 1e-9) + 1e-15, "trial {trial}: {most} > δ = {delta}");
+            assert!(
+                most <= delta * (1.0 + 1e-9) + 1e-15,
+                "trial {trial}: {most} > δ = {delta}"
+            );
             tight += usize::from(most > 0.2 * delta);
         }
         assert!(tight > 100, "δ is loose: {tight} of 400 within a factor 5");
@@ -529,7 +532,10 @@ mod tests {
             worst / r,
             100.0 * warm_share
         );
-        assert!(compared > 10 * steps, "{compared} contacts over {steps} steps");
+        assert!(
+            compared > 10 * steps,
+            "{compared} contacts over {steps} steps"
+        );
         assert!(warm_share > 0.9, "{warm_share}");
     }
 }

@@ -437,7 +437,7 @@ fn the_full_search_keeps_the_trajectory_bit_for_bit() {
     assert_eq!(end, 0x6f09_2e07_46ec_4a52, "{end:#x}");
 }
 
-/// The same for the warm search, the default (docs/rings.md, "Contact"):
+/// The same for the warm search, the default (docs/performance.md):
 /// its trajectory, recorded when it was written, so that a change of its
 /// arithmetic is one made on purpose.
 #[test]
