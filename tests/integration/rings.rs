@@ -437,13 +437,13 @@ fn the_full_search_keeps_the_trajectory_bit_for_bit() {
     assert_eq!(end, 0x6f09_2e07_46ec_4a52, "{end:#x}");
 }
 
-/// The same for the warm search, the default (docs/performance.md):
+/// The same for the warm search (docs/performance.md):
 /// its trajectory, recorded when it was written, so that a change of its
 /// arithmetic is one made on purpose.
 #[test]
 fn the_warm_search_keeps_its_trajectory_bit_for_bit() {
     let end = fingerprint(&turned_chain(Search::Warm));
-    assert_eq!(end, 0x0, "{end:#x}");
+    assert_eq!(end, 0x2ad5_1f9f_d3a4_5da7, "{end:#x}");
 }
 
 /// A ring filmstrip on a slide (wide and short) draws its strips as tall
@@ -475,4 +475,60 @@ fn a_ring_filmstrip_fits_a_slide() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+}
+
+/// The warm search finds every contact the full search finds, with
+/// its overlap within 1e-9 r, at every step of figure 4b's chain
+/// (30 rings, the odd strand taped) through the hand's turn, 0.5 s;
+/// and it answers most pairs itself (a search that always fell back
+/// would pass the first check vacuously).
+#[test]
+fn the_warm_search_finds_every_contact_of_the_full_search() {
+    let chain = RingChain {
+        tapes: (1..28).step_by(2).map(|k| [k, k + 2]).collect(),
+        t_end: 0.5,
+        ..Default::default()
+    };
+    let mut sys = build::build(&chain).unwrap();
+    sys.search = Search::Warm;
+    let r = chain.tube_radius;
+    let (mut worst, mut compared): (f64, u64) = (0.0, 0);
+    let steps = (chain.t_end / sys.dt).ceil() as u64;
+    for step in 1..=steps {
+        sys.step().unwrap();
+        let rots: Vec<_> = sys.bodies.iter().map(|b| b.q.matrix()).collect();
+        let warm = sys.last_touches();
+        for (i, j, t) in sys.touches(&rots) {
+            // The warm touch of the same pair at the same minimum
+            // (within a sample spacing), or none: overlap 0.
+            let overlap = warm
+                .iter()
+                .filter(|w| (w.0, w.1) == (i, j) && math::norm(math::sub(w.2.p, t.p)) < 1e-3)
+                .map(|w| chain.tube_radius * 2.0 - w.2.d)
+                .fold(0.0, f64::max);
+            let miss = (2.0 * r - t.d - overlap).abs();
+            assert!(
+                miss <= 1e-9 * r,
+                "step {step} (t = {:.5} s), rings {i} and {j}: full search's overlap {:e} r, \
+                 warm search's {:e} r",
+                sys.t,
+                (2.0 * r - t.d) / r,
+                overlap / r
+            );
+            worst = worst.max(miss);
+            compared += 1;
+        }
+    }
+    let warm_share = 1.0 - sys.stats.full_searches as f64 / sys.stats.pair_evaluations as f64;
+    eprintln!(
+        "{steps} steps, {compared} contacts compared, largest difference of overlap {:e} r, \
+         {:.1} % of the pair searches warm",
+        worst / r,
+        100.0 * warm_share
+    );
+    assert!(
+        compared > 10 * steps,
+        "{compared} contacts over {steps} steps"
+    );
+    assert!(warm_share > 0.9, "{warm_share}");
 }
