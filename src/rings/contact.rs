@@ -78,7 +78,7 @@ impl Circle {
     /// the compiler turns into vector instructions (no fused multiply-add:
     /// every lane rounds as the scalar formula does). The points are read
     /// in place (no copies of them into arrays of coordinates first).
-    fn distances2(&self, points: &[V3; SAMPLES]) -> [f64; SAMPLES] {
+    pub fn distances2(&self, points: &[V3; SAMPLES]) -> [f64; SAMPLES] {
         let m = &self.rot;
         let mut d2 = [0.0; SAMPLES];
         for (d, p) in d2.iter_mut().zip(points) {
@@ -147,13 +147,27 @@ pub fn touches_at(
     table: &[(f64, f64); SAMPLES],
     out: &mut impl FnMut(Touch),
 ) {
-    // Squared distances: their minima are the distance's. Every third
-    // sample first (a set the mirror keeps): if all are farther than 2r
-    // plus what the distance may fall between them, R·π/8, no contact.
-    // All samples at once (lane by lane, the same arithmetic as one by
-    // one: the values are the same bits; only a far pair pays for the
-    // samples it did not need).
-    let d2 = b.distances2(points);
+    // Squared distances: their minima are the distance's. All samples at
+    // once (lane by lane, the same arithmetic as one by one: the values
+    // are the same bits; only a far pair pays for the samples it did not
+    // need).
+    touches_from(a, points, &b.distances2(points), b, reach, table, out);
+}
+
+/// [`touches_at`] with the squared distances of `a`'s sample points to
+/// `b` given ([`Circle::distances2`]).
+pub fn touches_from(
+    a: &Circle,
+    points: &[V3; SAMPLES],
+    d2: &[f64; SAMPLES],
+    b: &Circle,
+    reach: f64,
+    table: &[(f64, f64); SAMPLES],
+    out: &mut impl FnMut(Touch),
+) {
+    // Every third sample first (a set the mirror keeps): if all are
+    // farther than 2r plus what the distance may fall between them,
+    // R·π/8, no contact.
     let far = reach + a.radius * std::f64::consts::PI / 8.0;
     if !(1..SAMPLES).step_by(3).any(|j| d2[j] < far * far) {
         return;

@@ -4,7 +4,8 @@
 //! held by tapes. A system of its own beside the ladder's `sim`: rigid
 //! tori in 3D ([`body`]), their topology and the hand as input
 //! ([`chain`], [`hand`]), contact between tubes of our own ([`contact`];
-//! docs/rings.md says why not an engine), the linking guard ([`guard`]),
+//! docs/rings.md says why not an engine, and [`warm`], its search
+//! warm-started from the previous step), the linking guard ([`guard`]),
 //! the step ([`system`]) and the observables ([`observe`]).
 //!
 //! Floors: `rings` knows only `error` below it; `render` draws its
@@ -22,6 +23,7 @@ pub mod run;
 pub mod settle;
 pub mod start;
 pub mod system;
+pub mod warm;
 
 pub use chain::{RingChain, TapeKind, Turn};
 pub use run::{RingRun, Sample, run};

@@ -3,6 +3,10 @@
 //! exact rotation of a symmetric top in the drift ([`Body::drift`]); the
 //! forces are evaluated once per step, at the new positions and the
 //! half-step velocities. The held ring follows the hand ([`super::hand`]).
+//! Contacts come from the full search ([`super::contact`]), or, when
+//! [`System::search`] asks for it, from the warm-started search
+//! ([`super::warm`]), which falls back on the full one wherever it cannot
+//! guarantee to find what the full search would.
 //! Pairs are visited in index order and forces summed in that order, so
 //! a run is deterministic and the mirrored chain its exact mirror image.
 
@@ -12,6 +16,7 @@ use super::contact::{self, Circle, Law, SAMPLES, Touch};
 use super::guard;
 use super::hand::Hand;
 use super::math::{self, M3, V3};
+use super::warm;
 use crate::error::{Error, Result};
 
 /// A tape's joint: material points `a` on ring i and `b` on ring j (body
@@ -36,6 +41,23 @@ pub struct Stats {
     pub pair_evaluations: u64,
     /// Steps taken.
     pub steps: u64,
+    /// Of the pairs tested, those searched in full (the rest warm,
+    /// [`super::warm`]).
+    pub full_searches: u64,
+}
+
+/// Which contact search the step uses.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Search {
+    /// The warm-started search, falling back on the full one where
+    /// needed ([`super::warm`]). Not the default: it changes the
+    /// trajectory's bits, and the test that halving the step converges
+    /// fails with it (docs/performance.md).
+    Warm,
+    /// The full search of every near pair at every step
+    /// ([`contact::touches_at`]: the reference and the default).
+    #[default]
+    Full,
 }
 
 /// The chain and its state.
@@ -58,6 +80,8 @@ pub struct System {
     pub held: usize,
     pub t: f64,
     pub dt: f64,
+    /// The contact search.
+    pub search: Search,
     table: [(f64, f64); SAMPLES],
     force: Vec<V3>,
     torque: Vec<V3>,
@@ -68,13 +92,17 @@ pub struct System {
 }
 
 /// What [`System::evaluate`] fills anew at every step, kept between steps
-/// so that a step allocates nothing.
+/// so that a step allocates nothing, and what the warm search keeps of
+/// each pair (`memos[i]`: (j, memo) for the pairs (i, j) ever near).
 #[derive(Clone, Debug, Default)]
 struct Scratch {
     rots: Vec<M3>,
     omega: Vec<V3>,
     points: Vec<[V3; SAMPLES]>,
+    /// Whether `points[i]` is ring i's at this step.
+    ready: Vec<bool>,
     touches: Vec<(usize, usize, Touch)>,
+    memos: Vec<Vec<(usize, warm::Memo)>>,
 }
 
 /// The fraction of r past which an overlap fails the run.
@@ -110,6 +138,7 @@ impl System {
             held: chain_held,
             t: 0.0,
             dt,
+            search: Search::default(),
             table: contact::sample_table(),
             force: vec![[0.0; 3]; n],
             torque: vec![[0.0; 3]; n],
@@ -202,6 +231,58 @@ impl System {
         pairs
     }
 
+    /// Every touch of every near pair, in pair order, into
+    /// `s.touches`: each pair's warm search from its memo, or its full
+    /// search (and a new memo) where the warm one cannot answer. Returns
+    /// the number of near pairs tested; counts the full searches.
+    fn touches_warm(&mut self, s: &mut Scratch) -> u64 {
+        let Scratch {
+            rots,
+            points,
+            ready,
+            touches,
+            memos,
+            ..
+        } = s;
+        touches.clear();
+        let n = self.n();
+        points.resize(n, [[0.0; 3]; SAMPLES]);
+        ready.clear();
+        ready.resize(n, false);
+        memos.resize_with(n, Vec::new);
+        let (reach, table) = (self.law.reach, &self.table);
+        let (mut pairs, mut full) = (0, 0);
+        for i in 0..n {
+            let a = self.circle(i, &rots[i]);
+            for j in i + 1..n {
+                if !self.near(i, j) {
+                    continue;
+                }
+                pairs += 1;
+                let b = self.circle(j, &rots[j]);
+                let mut push = |t| touches.push((i, j, t));
+                let slot = memos[i].iter().position(|(k, _)| *k == j);
+                if let Some(k) = slot
+                    && warm::warm(&mut memos[i][k].1, &a, &b, reach, table, &mut push)
+                {
+                    continue;
+                }
+                if !ready[i] {
+                    contact::sample_points_into(&a, table, &mut points[i]);
+                    ready[i] = true;
+                }
+                full += 1;
+                let memo = warm::full(&a, &points[i], &b, reach, table, &mut push);
+                match slot {
+                    Some(k) => memos[i][k].1 = memo,
+                    None => memos[i].push((j, memo)),
+                }
+            }
+        }
+        self.stats.full_searches += full;
+        pairs
+    }
+
     /// Forces and torques at the current state, into `self.force`/`torque`.
     fn evaluate(&mut self) {
         let mut scratch = std::mem::take(&mut self.scratch);
@@ -210,12 +291,20 @@ impl System {
             .rots
             .extend(self.bodies.iter().map(|b| b.q.matrix()));
         self.omegas_into(&scratch.rots, &mut scratch.omega);
+        let pairs = match self.search {
+            Search::Full => {
+                let pairs =
+                    self.touches_into(&scratch.rots, &mut scratch.points, &mut scratch.touches);
+                self.stats.full_searches += pairs;
+                pairs
+            }
+            Search::Warm => self.touches_warm(&mut scratch),
+        };
+        self.stats.pair_evaluations += pairs;
         let (rots, omega) = (&scratch.rots, &scratch.omega);
         let weight = [0.0, 0.0, -self.inertia.m * G];
         self.force.iter_mut().for_each(|f| *f = weight);
         self.torque.iter_mut().for_each(|t| *t = [0.0; 3]);
-        let pairs = self.touches_into(rots, &mut scratch.points, &mut scratch.touches);
-        self.stats.pair_evaluations += pairs;
         for &(i, j, touch) in &scratch.touches {
             let c = math::scale(math::add(touch.p, touch.q), 0.5);
             let v_rel = math::sub(
@@ -241,6 +330,12 @@ impl System {
             self.apply(pin.j, pb, math::scale(f, -1.0));
         }
         self.scratch = scratch;
+    }
+
+    /// The touches of the last evaluation of the forces (those the step
+    /// used), in pair order.
+    pub fn last_touches(&self) -> &[(usize, usize, Touch)] {
+        &self.scratch.touches
     }
 
     /// World positions of a pin's two material points.

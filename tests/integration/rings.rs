@@ -4,6 +4,7 @@
 
 use crate::common::tempdir::TempDir;
 use jacobs_ladder::rings::math::{self, Quat};
+use jacobs_ladder::rings::system::Search;
 use jacobs_ladder::rings::{self, RingChain, build};
 use std::process::Command;
 
@@ -393,10 +394,10 @@ fn the_taped_chain_makes_the_clearer_wave() {
     );
 }
 
-/// FNV-1a over the bits of every ring's state at the end of a run.
-fn fingerprint(run: &rings::RingRun) -> u64 {
+/// FNV-1a over the bits of every ring's state.
+fn fingerprint(bodies: &[rings::body::Body]) -> u64 {
     let mut h = 0xcbf2_9ce4_8422_2325_u64;
-    for b in &run.system.bodies {
+    for b in bodies {
         let q = b.q.as_array();
         for c in b.x.iter().chain(&b.v).chain(&q).chain(&b.l) {
             for byte in c.to_bits().to_le_bytes() {
@@ -407,29 +408,42 @@ fn fingerprint(run: &rings::RingRun) -> u64 {
     h
 }
 
-/// The contact search's shortcuts (docs/rings.md, "Cost") change no bit
-/// of the trajectory: movie 12's chain (30 rings, the odd strand taped)
-/// through the hand's turn, 0.6 s, ends in exactly the state it ended in
-/// before them (the fingerprint of every ring's x, v, q and L, recorded
-/// from the program as it was before; a change of any bit of any step
+/// Movie 12's chain (30 rings, the odd strand taped) through the hand's
+/// turn, 0.6 s (13 901 steps), with the contact search given.
+fn turned_chain(search: Search) -> Vec<rings::body::Body> {
+    let chain = RingChain {
+        t_end: 0.6,
+        ..chain_30(true)
+    };
+    let mut sys = build::build(&chain).unwrap();
+    sys.search = search;
+    let steps = (chain.t_end / sys.dt).ceil() as u64;
+    assert_eq!(steps, 13_901);
+    for _ in 0..steps {
+        sys.step().unwrap();
+    }
+    sys.bodies
+}
+
+/// The full search (`Search::Full`, the reference) changes no bit of the
+/// trajectory: the chain ends in exactly the state it ended in before the
+/// warm search was written, and before the full search's own shortcuts
+/// (docs/performance.md; the fingerprint of every ring's x, v, q and L,
+/// recorded from the program as it was; a change of any bit of any step
 /// changes it).
 #[test]
-fn the_trajectory_is_the_same_bit_for_bit() {
-    let run = rings::run(
-        &RingChain {
-            t_end: 0.6,
-            ..chain_30(true)
-        },
-        &[],
-    )
-    .unwrap();
-    assert_eq!(run.stats.steps, 13_901);
-    assert_eq!(
-        fingerprint(&run),
-        0x6f09_2e07_46ec_4a52,
-        "{:#x}",
-        fingerprint(&run)
-    );
+fn the_full_search_keeps_the_trajectory_bit_for_bit() {
+    let end = fingerprint(&turned_chain(Search::Full));
+    assert_eq!(end, 0x6f09_2e07_46ec_4a52, "{end:#x}");
+}
+
+/// The same for the warm search (docs/performance.md):
+/// its trajectory, recorded when it was written, so that a change of its
+/// arithmetic is one made on purpose.
+#[test]
+fn the_warm_search_keeps_its_trajectory_bit_for_bit() {
+    let end = fingerprint(&turned_chain(Search::Warm));
+    assert_eq!(end, 0x6fe4_3605_60ef_07d2, "{end:#x}");
 }
 
 /// A ring filmstrip on a slide (wide and short) draws its strips as tall
@@ -461,4 +475,60 @@ fn a_ring_filmstrip_fits_a_slide() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+}
+
+/// The warm search finds every contact the full search finds, with
+/// its overlap within 1e-9 r, at every step of figure 4b's chain
+/// (30 rings, the odd strand taped) through the hand's turn, 0.5 s;
+/// and it answers most pairs itself (a search that always fell back
+/// would pass the first check vacuously).
+#[test]
+fn the_warm_search_finds_every_contact_of_the_full_search() {
+    let chain = RingChain {
+        tapes: (1..28).step_by(2).map(|k| [k, k + 2]).collect(),
+        t_end: 0.5,
+        ..Default::default()
+    };
+    let mut sys = build::build(&chain).unwrap();
+    sys.search = Search::Warm;
+    let r = chain.tube_radius;
+    let (mut worst, mut compared): (f64, u64) = (0.0, 0);
+    let steps = (chain.t_end / sys.dt).ceil() as u64;
+    for step in 1..=steps {
+        sys.step().unwrap();
+        let rots: Vec<_> = sys.bodies.iter().map(|b| b.q.matrix()).collect();
+        let warm = sys.last_touches();
+        for (i, j, t) in sys.touches(&rots) {
+            // The warm touch of the same pair at the same minimum
+            // (within a sample spacing), or none: overlap 0.
+            let overlap = warm
+                .iter()
+                .filter(|w| (w.0, w.1) == (i, j) && math::norm(math::sub(w.2.p, t.p)) < 1e-3)
+                .map(|w| chain.tube_radius * 2.0 - w.2.d)
+                .fold(0.0, f64::max);
+            let miss = (2.0 * r - t.d - overlap).abs();
+            assert!(
+                miss <= 1e-9 * r,
+                "step {step} (t = {:.5} s), rings {i} and {j}: full search's overlap {:e} r, \
+                 warm search's {:e} r",
+                sys.t,
+                (2.0 * r - t.d) / r,
+                overlap / r
+            );
+            worst = worst.max(miss);
+            compared += 1;
+        }
+    }
+    let warm_share = 1.0 - sys.stats.full_searches as f64 / sys.stats.pair_evaluations as f64;
+    eprintln!(
+        "{steps} steps, {compared} contacts compared, largest difference of overlap {:e} r, \
+         {:.1} % of the pair searches warm",
+        worst / r,
+        100.0 * warm_share
+    );
+    assert!(
+        compared > 10 * steps,
+        "{compared} contacts over {steps} steps"
+    );
+    assert!(warm_share > 0.9, "{warm_share}");
 }
