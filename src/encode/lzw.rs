@@ -36,6 +36,10 @@ struct Table {
     slots: Vec<u32>,
     /// Successors recorded per prefix code (up to [`SHORT`]), or [`FULL`].
     kids: Vec<u8>,
+    /// Per prefix code, the successor last found or recorded, as
+    /// `byte << 16 | code` (or [`EMPTY`]): one load instead of a hash
+    /// probe along a run of one colour.
+    last: Vec<u32>,
 }
 
 impl Table {
@@ -43,12 +47,28 @@ impl Table {
         Self {
             slots: vec![EMPTY; 1 << SLOT_BITS],
             kids: vec![0; MAX_ENTRIES as usize + 1],
+            last: vec![EMPTY; MAX_ENTRIES as usize + 1],
         }
     }
 
     fn reset(&mut self) {
         self.slots.fill(EMPTY);
         self.kids.fill(0);
+        self.last.fill(EMPTY);
+    }
+
+    /// The code of the string `prefix` + `byte`, if recorded: from
+    /// `last` when it is the prefix's last successor, else from the hash
+    /// table (and then remembered in `last`).
+    #[inline(always)]
+    fn lookup(&mut self, prefix: u32, byte: u32) -> Option<u32> {
+        let last = self.last[prefix as usize];
+        if last >> 16 == byte {
+            return Some(last & 0xffff);
+        }
+        let code = self.find(prefix << 8 | byte)?;
+        self.last[prefix as usize] = byte << 16 | code;
+        Some(code)
     }
 
     #[inline(always)]
@@ -95,6 +115,7 @@ impl Table {
             i = (i + 1) & mask;
         }
         self.slots[i] = key << 12 | code;
+        self.last[prefix as usize] = (key & 0xff) << 16 | code;
     }
 }
 
@@ -150,12 +171,11 @@ pub(crate) fn gif_lzw(data: &[u8]) -> Vec<u8> {
     let mut next = clear + 2;
     let mut cur = u32::from(first);
     for &byte in rest {
-        let key = cur << 8 | u32::from(byte);
-        if let Some(code) = table.find(key) {
+        if let Some(code) = table.lookup(cur, u32::from(byte)) {
             cur = code;
             continue;
         }
-        table.append(cur, key, next);
+        table.append(cur, cur << 8 | u32::from(byte), next);
         next += 1;
         bits.put(cur, size);
         if next > 1 << size && size < MAX_CODESIZE {
@@ -191,7 +211,10 @@ fn min_code_size(data: &[u8]) -> u32 {
             }
         }
     }
-    (u32::from(max) + 1).max(4).next_power_of_two().trailing_zeros()
+    (u32::from(max) + 1)
+        .max(4)
+        .next_power_of_two()
+        .trailing_zeros()
 }
 
 #[cfg(test)]
