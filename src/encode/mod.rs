@@ -10,6 +10,7 @@
 mod format;
 mod gif;
 mod isobmff;
+mod lzw;
 mod movie;
 #[cfg(feature = "mp4")]
 mod mp4;
