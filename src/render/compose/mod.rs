@@ -3,6 +3,7 @@
 
 pub mod filmstrip;
 pub mod grid;
+mod marks;
 
 pub use filmstrip::*;
 pub use grid::*;
