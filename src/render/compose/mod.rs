@@ -3,7 +3,6 @@
 
 pub mod filmstrip;
 pub mod grid;
-mod marks;
 
 pub use filmstrip::*;
 pub use grid::*;
