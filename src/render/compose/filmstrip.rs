@@ -67,177 +67,69 @@ pub struct ChainMark {
     pub side: HAlign,
 }
 
-/// Where a mark sits on a snapshot of `snap` drawn into `region`: the
-/// pixel of its point on the chain, and how far the chain reaches from
-/// that point towards the left and towards the right (`side_clear` false:
-/// the farthest node of the two blocks at the mark on either side, as the
-/// paper's figures are drawn; true: the chain's extent on each side, so
-/// that a mark stays beside its own column of a folded ladder).
-struct MarkPlace {
-    x: f32,
-    y: f32,
-    reach: [f32; 2],
-}
-
-impl MarkPlace {
-    fn new(
-        region: Region,
-        ladder: &Ladder,
-        snap: &Snapshot<'_>,
-        mark: &ChainMark,
-        side_clear: bool,
-    ) -> MarkPlace {
-        use crate::model::ladder::{ix, iy, nodes};
-        let n = ladder.n();
-        let q = snap.q;
-        let at = mark.at.clamp(1.0, n as f64);
-        let i = (at.floor() as usize).clamp(1, n) - 1;
-        let j = (i + 1).min(n - 1);
-        let f = at - (i + 1) as f64;
-        let point = [
-            q[ix(i)] + f * (q[ix(j)] - q[ix(i)]),
-            q[iy(i)] + f * (q[iy(j)] - q[iy(i)]),
-        ];
-        let (x, y) = snapshot::pixel_of(region, snap, point);
-        let ends: Vec<f32> = [i, j]
-            .into_iter()
-            .flat_map(|k| {
-                let (a, b) = nodes(q, k);
-                [a, b]
-            })
-            .map(|p| snapshot::pixel_of(region, snap, p).0 - x)
-            .collect();
-        // Clear of the chain: beyond the farthest node of the two blocks.
-        let reach = |dir: f32| {
-            if side_clear {
-                ends.iter().map(|d| dir * d).fold(0.0f32, f32::max)
-            } else {
-                ends.iter().map(|d| d.abs()).fold(0.0f32, f32::max)
-            }
-        };
-        MarkPlace {
-            x,
-            y,
-            reach: [reach(-1.0), reach(1.0)],
-        }
-    }
-
-    /// How far the chain reaches from the mark's point towards `dir`
-    /// (−1 left, +1 right).
-    fn reach(&self, dir: f32) -> f32 {
-        if dir < 0.0 {
-            self.reach[0]
-        } else {
-            self.reach[1]
-        }
-    }
-
-    /// The far end of `mark`'s words (their near end when it has none)
-    /// when drawn towards `dir`.
-    fn far(&self, theme: &Theme, mark: &ChainMark, dir: f32) -> f32 {
-        let label_w = style::text_width(theme.font(), &mark.label, theme.mark_text);
-        let room = theme.mark_clear + theme.mark_arrow + theme.mark_space + label_w;
-        self.x + dir * (self.reach(dir) + room)
-    }
-
-    /// Whether `mark` drawn towards `dir` stays within `0..=width`.
-    fn fits(&self, theme: &Theme, mark: &ChainMark, dir: f32, width: f32) -> bool {
-        (0.0..=width).contains(&self.far(theme, mark, dir))
-    }
-}
-
-/// The direction of `side`: −1 left, +1 right.
-fn direction(side: HAlign) -> f32 {
-    if side == HAlign::Left { -1.0 } else { 1.0 }
-}
-
-/// The other side.
-fn opposite(side: HAlign) -> HAlign {
-    if side == HAlign::Left {
-        HAlign::Right
-    } else {
-        HAlign::Left
-    }
-}
-
-/// Words of two marks closer than this many text sizes apart vertically
-/// may touch (a text's box is 1.17 sizes tall).
-const MARK_WORDS_APART: f32 = 1.25;
-
-/// Whether the words of `a` drawn towards `da` and those of `b` drawn
-/// towards `db` could share a pixel.
-fn words_meet(
-    theme: &Theme,
-    (pa, a, da): (&MarkPlace, &ChainMark, f32),
-    (pb, b, db): (&MarkPlace, &ChainMark, f32),
-) -> bool {
-    let span = |p: &MarkPlace, m: &ChainMark, d: f32| {
-        let far = p.far(theme, m, d);
-        let near = far - d * style::text_width(theme.font(), &m.label, theme.mark_text);
-        (near.min(far), near.max(far))
-    };
-    let ((a0, a1), (b0, b1)) = (span(pa, a, da), span(pb, b, db));
-    (pa.y - pb.y).abs() < MARK_WORDS_APART * theme.mark_text && a0.max(b0) < a1.min(b1)
-}
-
-/// The marks of one snapshot `width` pixels wide, each with where it sits
-/// and the side its words go on: its own side, or the other where its
-/// words would leave the snapshot on its own side and fit on the other
-/// clear of every other mark's words (on either side of theirs). Else its
-/// own side, its words past the snapshot's edge: a fitted strip makes
-/// room so that this does not happen ([`StripPlan::room_for_words`]).
-fn mark_sides<'m>(
-    theme: &Theme,
-    places: Vec<MarkPlace>,
-    marks: &'m [ChainMark],
-    width: f32,
-) -> Vec<(MarkPlace, &'m ChainMark, HAlign)> {
-    let flip = |k: usize| {
-        let (p, m) = (&places[k], &marks[k]);
-        let own = direction(m.side);
-        if p.fits(theme, m, own, width) || !p.fits(theme, m, -own, width) {
-            return false;
-        }
-        let clear = |j: usize| {
-            let (q, n) = (&places[j], &marks[j]);
-            j == k
-                || n.label.is_empty()
-                || [-1.0, 1.0]
-                    .iter()
-                    .all(|&d| !words_meet(theme, (p, m, -own), (q, n, d)))
-        };
-        m.label.is_empty() || (0..marks.len()).all(clear)
-    };
-    let sides: Vec<HAlign> = (0..marks.len())
-        .map(|k| {
-            if flip(k) {
-                opposite(marks[k].side)
-            } else {
-                marks[k].side
-            }
-        })
-        .collect();
-    places
-        .into_iter()
-        .zip(marks)
-        .zip(sides)
-        .map(|((p, m), s)| (p, m, s))
-        .collect()
-}
-
-/// Draws `mark` at `place` on `canvas`, towards `side`: a triangle
-/// pointing at the chain, clear of it as [`MarkPlace`] says, its words
-/// beyond it.
+/// Draws `mark` onto a snapshot of `snap` drawn into `region` of `canvas`:
+/// a triangle pointing at the chain, its label beyond it. The tip clears
+/// the farthest node of the two blocks at the mark from the mark's point
+/// (`side_clear` false: on either side, as the paper's figures are drawn)
+/// or the chain's extent on the mark's side (`side_clear` true: the mark
+/// then stays beside its own column of a folded ladder).
 fn draw_mark(
     theme: &Theme,
     canvas: &mut Picture,
-    place: &MarkPlace,
+    region: Region,
+    ladder: &Ladder,
+    snap: &Snapshot<'_>,
     mark: &ChainMark,
-    side: HAlign,
+    side_clear: bool,
 ) {
-    let (x, y) = (place.x, place.y);
-    let dir = direction(side);
-    let tip = x + dir * (place.reach(dir) + theme.mark_clear);
+    use crate::model::ladder::{ix, iy, nodes};
+    let n = ladder.n();
+    let q = snap.q;
+    let at = mark.at.clamp(1.0, n as f64);
+    let i = (at.floor() as usize).clamp(1, n) - 1;
+    let j = (i + 1).min(n - 1);
+    let f = at - (i + 1) as f64;
+    let point = [
+        q[ix(i)] + f * (q[ix(j)] - q[ix(i)]),
+        q[iy(i)] + f * (q[iy(j)] - q[iy(i)]),
+    ];
+    let (x, y) = snapshot::pixel_of(region, snap, point);
+    let ends: Vec<f32> = [i, j]
+        .into_iter()
+        .flat_map(|k| {
+            let (a, b) = nodes(q, k);
+            [a, b]
+        })
+        .map(|p| snapshot::pixel_of(region, snap, p).0 - x)
+        .collect();
+    // Clear of the chain: beyond the farthest node of the two blocks.
+    let reach = |dir: f32| {
+        if side_clear {
+            ends.iter().map(|d| dir * d).fold(0.0f32, f32::max)
+        } else {
+            ends.iter().map(|d| d.abs()).fold(0.0f32, f32::max)
+        }
+    };
+    // The far end of the label on a side: a mark whose words would leave
+    // the picture on its own side goes to the other side when they fit
+    // there (the last snapshot of a row has no room on its right).
+    let text = theme.mark_text;
+    let label_w = style::text_width(theme.font(), &mark.label, text);
+    let far = |dir: f32| {
+        x + dir * (reach(dir) + theme.mark_clear + theme.mark_arrow + theme.mark_space + label_w)
+    };
+    let fits = |dir: f32| (0.0..=canvas.width()).contains(&far(dir));
+    let mut side = mark.side;
+    let asked = if side == HAlign::Left { -1.0 } else { 1.0 };
+    if !fits(asked) && fits(-asked) {
+        side = if side == HAlign::Left {
+            HAlign::Right
+        } else {
+            HAlign::Left
+        };
+    }
+    let dir = if side == HAlign::Left { -1.0 } else { 1.0 };
+    let tip = x + dir * (reach(dir) + theme.mark_clear);
     let base = tip + dir * theme.mark_arrow;
     let half = theme.mark_half;
     canvas.polygon(
@@ -247,12 +139,17 @@ fn draw_mark(
     if mark.label.is_empty() {
         return;
     }
+    let align = if side == HAlign::Left {
+        HAlign::Right
+    } else {
+        HAlign::Left
+    };
     canvas.text(
         &mark.label,
         (base + dir * theme.mark_space, y),
-        theme.mark_text,
+        text,
         theme.text_color(mark.role),
-        (opposite(side), VAlign::Middle),
+        (align, VAlign::Middle),
     );
 }
 
@@ -534,11 +431,9 @@ impl StripPlan {
             let tall = (box_h as f32 - 2.0 * m - title - (rows as f32 - 1.0) * gap) / rows as f32
                 - caption;
             let ch = (h as f32 * cw / w as f32).min(tall).floor();
-            // Every mark's words on its own side of the chain: the ladder
-            // drawn smaller where the snapshot is too narrow for them.
-            let Some(ch) = self.room_for_words(frames, opts, cw, ch) else {
+            if ch < theme.min_snapshot.1 {
                 continue;
-            };
+            }
             let scale = (cw / w as f32).min(ch / h as f32);
             ways.push((rows, cw as u32, ch as u32, two, scale));
         }
@@ -554,56 +449,6 @@ impl StripPlan {
         plan
     }
 
-    /// The tallest snapshot, `cw` wide and at most `ch` tall (and at least
-    /// the theme's least), on which the words of every mark of every frame
-    /// stay on the snapshot, on the sides [`mark_sides`] chooses, the
-    /// ladder drawn smaller the shorter the snapshot; `None` when none
-    /// does. Words past the snapshot's edge, or a mark whose flip to the
-    /// other side would land its words on another's, crowded the figure
-    /// at some widths and not at narrower ones (4a at `slide` drew at
-    /// 9.1 in and was refused at 9.15–9.25 in: its "antikink" flipped
-    /// onto the "kink" beside it).
-    fn room_for_words(
-        &self,
-        frames: &[Frame<'_>],
-        opts: &FilmstripOptions,
-        cw: f32,
-        ch: f32,
-    ) -> Option<f32> {
-        let c = &self.columns[0];
-        let worded: Vec<(&[f64], &[ChainMark])> = frames
-            .iter()
-            .zip(&opts.marks)
-            .filter(|(_, marks)| marks.iter().any(|m| !m.label.is_empty()))
-            .map(|(f, marks)| (f.q, marks.as_slice()))
-            .collect();
-        let fit = |h: f32| {
-            let region = Region::full(cw as u32, h as u32);
-            worded.iter().all(|(q, marks)| {
-                c.snapshot(q).is_ok_and(|snap| {
-                    let places = marks
-                        .iter()
-                        .map(|m| MarkPlace::new(region, &c.ladder, &snap, m, false))
-                        .collect();
-                    mark_sides(&self.theme, places, marks, cw)
-                        .iter()
-                        .all(|(p, m, side)| {
-                            m.label.is_empty() || p.fits(&self.theme, m, direction(*side), cw)
-                        })
-                })
-            })
-        };
-        let least = self.theme.min_snapshot.1;
-        let mut h = ch;
-        while h >= least {
-            if fit(h) {
-                return Some(h);
-            }
-            h -= 1.0;
-        }
-        None
-    }
-
     /// The snapshot of `frame` with its `marks`.
     fn picture(&self, frame: &Frame<'_>, marks: &[ChainMark]) -> Result<Picture> {
         let (w, h) = self.size;
@@ -612,12 +457,8 @@ impl StripPlan {
             let c = &self.columns[0];
             let snap = c.snapshot(frame.q)?;
             let mut img = snapshot::snapshot_picture(theme, &snap, w, h)?;
-            let places = marks
-                .iter()
-                .map(|m| MarkPlace::new(c.region, &c.ladder, &snap, m, false))
-                .collect();
-            for (place, mark, side) in mark_sides(theme, places, marks, w as f32) {
-                draw_mark(theme, &mut img, &place, mark, side);
+            for mark in marks {
+                draw_mark(theme, &mut img, c.region, &c.ladder, &snap, mark, false);
             }
             return Ok(img);
         };
@@ -630,16 +471,12 @@ impl StripPlan {
             let top = (HAlign::Center, VAlign::Top);
             img.text(&first, at, theme.column_number, number, top);
         }
-        let mut places = Vec::with_capacity(marks.len());
         for mark in marks {
             let (j, at) = folded.locate(mark.at);
             let c = &self.columns[j];
             let local = ChainMark { at, ..mark.clone() };
             let snap = c.snapshot(frame.q)?;
-            places.push(MarkPlace::new(c.region, &c.ladder, &snap, &local, true));
-        }
-        for (place, mark, side) in mark_sides(theme, places, marks, w as f32) {
-            draw_mark(theme, &mut img, &place, mark, side);
+            draw_mark(theme, &mut img, c.region, &c.ladder, &snap, &local, true);
         }
         // A light frame holds each snapshot's columns together.
         let (w, h) = (w as f32, h as f32);
