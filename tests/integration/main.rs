@@ -11,6 +11,7 @@
 mod common;
 
 mod arrivals;
+mod article_revtex;
 mod auto_acceptance;
 mod auto_window;
 mod batch;

@@ -684,20 +684,7 @@ fn folded_movies_number_their_columns() {
 #[test]
 fn the_whole_catalogue_renders_at_the_print_styles() {
     for style in ["paper", "paper-wide"] {
-        let dir = crate::common::tempdir::TempDir::new(&format!("print-all-{style}"));
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
-            .args([
-                "all", "--style", style, "--format", "pdf", "--frames", "20", "--out",
-            ])
-            .arg(dir.path())
-            .output()
-            .expect("the ladder binary runs");
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{style}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        let dir = crate::common::print_render(style);
         assert!(dir.join("movie-5-kymograph.pdf").is_file(), "{style}");
     }
 }

@@ -73,3 +73,35 @@ pub fn catalogue_render() -> &'static (std::path::PathBuf, String) {
         (dir, table)
     })
 }
+
+/// `ladder all --style STYLE --format pdf --frames 20` (STYLE `paper` or
+/// `paper-wide`), made once for every test that reads the catalogue as
+/// printed (that it renders at all, the article that prints it): its
+/// folder, under target/tmp. Readers must not change it.
+pub fn print_render(style: &str) -> &'static std::path::Path {
+    static PAPER: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
+    static WIDE: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
+    let cell = match style {
+        "paper" => &PAPER,
+        "paper-wide" => &WIDE,
+        _ => panic!("print_render: {style} is not a print style"),
+    };
+    cell.get_or_init(|| {
+        let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("print-{style}"));
+        let _ = std::fs::remove_dir_all(&dir);
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+            .args([
+                "all", "--style", style, "--format", "pdf", "--frames", "20", "--out",
+            ])
+            .arg(&dir)
+            .output()
+            .expect("the ladder binary runs");
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{style}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        dir
+    })
+}
