@@ -97,12 +97,17 @@ pub fn into_folder_timed(
     // (`scenes::shared`), each charged to the first output that makes it.
     let tallies: Vec<Arc<tally::Tally>> = scenes.iter().map(|_| Arc::default()).collect();
     let shared = scenes::shared::prepare(scenes, movie, &tallies)?;
-    let written: Vec<(Vec<String>, Timing)> = scenes
-        .par_iter()
-        .zip(&tallies)
-        .map(|(s, t)| timed(s, t, || render_scene(s, out, movie, outputs, progress)))
+    let mut written: Vec<(usize, (Vec<String>, Timing))> = longest_first(scenes)
+        .into_par_iter()
+        .map(|i| {
+            let s = &scenes[i];
+            let render = || render_scene(s, out, movie, outputs, progress);
+            timed(s, &tallies[i], render).map(|w| (i, w))
+        })
         .collect::<Result<_>>()?;
     drop(shared);
+    written.sort_by_key(|w| w.0);
+    let written: Vec<(Vec<String>, Timing)> = written.into_iter().map(|w| w.1).collect();
     let (written, timed): (Vec<Vec<String>>, Vec<Timing>) = written.into_iter().unzip();
     let mut files: Vec<String> = written.iter().flatten().cloned().collect();
     if index {
@@ -119,6 +124,16 @@ pub fn into_folder_timed(
         files.push("index.html".into());
     }
     Ok((files, start.finish(timed)))
+}
+
+/// The order in which the scenes start: a ring chain's first (each of
+/// them several times any other output's work: docs/performance.md), the
+/// others as given. Rayon's first thread takes the first; started last,
+/// the longest output would end the render alone on one core.
+fn longest_first(scenes: &[Scene]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..scenes.len()).collect();
+    order.sort_by_key(|&i| scenes[i].rings.is_none());
+    order
 }
 
 /// `render` of `scene` timed: its wall time, and the CPU time and runs
