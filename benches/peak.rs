@@ -6,8 +6,11 @@
 //!   accumulators (enough to hide the FMA latency on two ports), scalar,
 //!   4 lanes (AVX2) and 8 lanes (AVX-512), in FMAs per cycle and GFLOP/s;
 //! - read bandwidth from each level of the memory (8 KB, 512 KB, 64 MB);
+//! - the latency of an 8-lane division, square root, multiplication and
+//!   addition (dependent chains): what bounds a chain of dependent steps;
 //! - the chain kernel (symplectic Euler, N = 1000, the paper's dt) and the
-//!   batch kernel (a sweep of N = 10 kinks) in ns and cycles per
+//!   batch kernel (a sweep of N = 10 kinks, symplectic Euler at the
+//!   paper's dt and Verlet at the scenes' 0.25) in ns and cycles per
 //!   block-step, on one core.
 //!
 //! `cargo bench --bench peak` prints one table; each number is the median
@@ -145,6 +148,59 @@ mod x86 {
         };
     }
     divider_loop!(div_zmm, "vdivpd");
+
+    /// A chain of `n` × 8 dependent 8-lane `$insn`s (each takes the last
+    /// one's result): the instruction's latency.
+    macro_rules! latency_loop {
+        ($name:ident, $a:literal, $b:literal, $c:literal, $d:literal) => {
+            #[target_feature(enable = "avx512f")]
+            pub unsafe fn $name(n: u64) {
+                unsafe {
+                    asm!(
+                        "vbroadcastsd zmm1, xmm13",
+                        "vbroadcastsd zmm2, xmm14",
+                        "2:",
+                        $a, $b, $c, $d, $a, $b, $c, $d,
+                        "dec {n}",
+                        "jnz 2b",
+                        n = inout(reg) n => _,
+                        in("xmm13") 1.0f64, in("xmm14") 1.0f64,
+                        out("xmm1") _, out("xmm2") _,
+                        options(nomem, nostack),
+                    );
+                }
+            }
+        };
+    }
+    // x ← x / 1 and x ← √x keep 1.0 (no denormals, no early exit).
+    latency_loop!(
+        div_chain,
+        "vdivpd zmm1, zmm1, zmm2",
+        "vdivpd zmm1, zmm1, zmm2",
+        "vdivpd zmm1, zmm1, zmm2",
+        "vdivpd zmm1, zmm1, zmm2"
+    );
+    latency_loop!(
+        sqrt_chain,
+        "vsqrtpd zmm1, zmm1",
+        "vsqrtpd zmm1, zmm1",
+        "vsqrtpd zmm1, zmm1",
+        "vsqrtpd zmm1, zmm1"
+    );
+    latency_loop!(
+        mul_chain,
+        "vmulpd zmm1, zmm1, zmm2",
+        "vmulpd zmm1, zmm1, zmm2",
+        "vmulpd zmm1, zmm1, zmm2",
+        "vmulpd zmm1, zmm1, zmm2"
+    );
+    latency_loop!(
+        add_chain_pd,
+        "vaddpd zmm1, zmm1, zmm2",
+        "vsubpd zmm1, zmm1, zmm2",
+        "vaddpd zmm1, zmm1, zmm2",
+        "vsubpd zmm1, zmm1, zmm2"
+    );
     /// Ten independent 8-lane square roots a step, of `n` steps.
     #[target_feature(enable = "avx512f")]
     pub unsafe fn sqrt_zmm(n: u64) {
@@ -213,6 +269,38 @@ fn divider_cycles(ghz: f64) -> Option<(f64, f64)> {
     Some((cycles(div), cycles(sqrt)))
 }
 
+/// Latency in cycles of an 8-lane division, square root, multiplication
+/// and addition (dependent chains), if this CPU has AVX-512.
+#[cfg(target_arch = "x86_64")]
+fn latencies(ghz: f64) -> Option<[(&'static str, f64); 4]> {
+    if !is_x86_feature_detected!("avx512f") {
+        return None;
+    }
+    let cycles = |n: u64, s: f64| s * ghz * 1e9 / (8.0 * n as f64);
+    let (slow, fast) = (2_000_000u64, 20_000_000u64);
+    // SAFETY: the feature was detected at run time.
+    unsafe {
+        Some([
+            (
+                "vdivpd",
+                cycles(slow, median(|| x86::div_chain(black_box(slow)))),
+            ),
+            (
+                "vsqrtpd",
+                cycles(slow, median(|| x86::sqrt_chain(black_box(slow)))),
+            ),
+            (
+                "vmulpd",
+                cycles(fast, median(|| x86::mul_chain(black_box(fast)))),
+            ),
+            (
+                "vaddpd",
+                cycles(fast, median(|| x86::add_chain_pd(black_box(fast)))),
+            ),
+        ])
+    }
+}
+
 /// Read bandwidth in GB/s from an array of `bytes` (summed in 32
 /// independent lanes, so that the additions' latency does not bound it).
 fn read_bandwidth(bytes: usize) -> f64 {
@@ -250,9 +338,9 @@ fn chain_ns(n: usize) -> f64 {
 }
 
 /// ns per block-step of a 64-run sweep of N = 10 kinks in the batch
-/// kernel, on one core.
-fn batch_ns() -> f64 {
-    let config = IntegratorConfig::paper();
+/// kernel, on one core, by `config`'s scheme and step.
+fn batch_ns(config: &IntegratorConfig) -> f64 {
+    let config = *config;
     let scenarios = sweep_scenarios(64, 10, 100.0).unwrap();
     let alone = RunOptions::default()
         .stepping(Stepping::Fastest)
@@ -294,6 +382,10 @@ fn main() {
                 "divider (AVX-512, 8 lanes): vdivpd {div:.1} cycles, vsqrtpd {sqrt:.1} cycles each"
             );
         }
+        if let Some(l) = latencies(ghz) {
+            let l: Vec<String> = l.iter().map(|(n, c)| format!("{n} {c:.1}")).collect();
+            println!("latency (AVX-512, cycles): {}", l.join(", "));
+        }
         for (name, bytes) in [
             ("L1 (8 KB)", 8 << 10),
             ("L2 (512 KB)", 512 << 10),
@@ -308,10 +400,19 @@ fn main() {
                 ns * ghz
             );
         }
-        let ns = batch_ns();
-        println!(
-            "batch kernel, 64 runs of N = 10, one core: {ns:.2} ns = {:.1} cycles per block-step",
-            ns * ghz
-        );
+        for (name, config) in [
+            ("symplectic Euler, dt = 0.01", IntegratorConfig::paper()),
+            (
+                "Verlet, dt = 0.25",
+                IntegratorConfig::fixed(sim::IntegratorKind::Verlet, 0.25),
+            ),
+        ] {
+            let ns = batch_ns(&config);
+            println!(
+                "batch kernel, 64 runs of N = 10, {name}, one core: {ns:.2} ns = {:.1} cycles \
+                 per block-step",
+                ns * ghz
+            );
+        }
     }
 }

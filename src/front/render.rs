@@ -11,6 +11,7 @@ use crate::scene::{self, Kind, Scene};
 use crate::scenes::{self, MovieOptions, Outputs};
 use crate::sim::tally;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 /// What a front end is told while a folder is rendered.
 pub struct Progress<'a> {
@@ -92,10 +93,21 @@ pub fn into_folder_timed(
         scenes::check(s, movie, outputs).map_err(|e| (progress.hint)(e, s))?;
     }
     warn_replaced(scenes, out)?;
-    let written: Vec<(Vec<String>, Timing)> = scenes
-        .par_iter()
-        .map(|s| timed(s, || render_scene(s, out, movie, outputs, progress)))
+    // The runs two outputs make alike, made once before any output starts
+    // (`scenes::shared`), each charged to the first output that makes it.
+    let tallies: Vec<Arc<tally::Tally>> = scenes.iter().map(|_| Arc::default()).collect();
+    let shared = scenes::shared::prepare(scenes, movie, &tallies)?;
+    let mut written: Vec<(usize, (Vec<String>, Timing))> = longest_first(scenes)
+        .into_par_iter()
+        .map(|i| {
+            let s = &scenes[i];
+            let render = || render_scene(s, out, movie, outputs, progress);
+            timed(s, &tallies[i], render).map(|w| (i, w))
+        })
         .collect::<Result<_>>()?;
+    drop(shared);
+    written.sort_by_key(|w| w.0);
+    let written: Vec<(Vec<String>, Timing)> = written.into_iter().map(|w| w.1).collect();
     let (written, timed): (Vec<Vec<String>>, Vec<Timing>) = written.into_iter().unzip();
     let mut files: Vec<String> = written.iter().flatten().cloned().collect();
     if index {
@@ -114,10 +126,25 @@ pub fn into_folder_timed(
     Ok((files, start.finish(timed)))
 }
 
+/// The order in which the scenes start: a ring chain's first (each of
+/// them several times any other output's work: docs/performance.md), the
+/// others as given. Rayon's first thread takes the first; started last,
+/// the longest output would end the render alone on one core.
+fn longest_first(scenes: &[Scene]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..scenes.len()).collect();
+    order.sort_by_key(|&i| scenes[i].rings.is_none());
+    order
+}
+
 /// `render` of `scene` timed: its wall time, and the CPU time and runs
-/// of its tasks counted on whichever thread they ran (`sim::tally`).
-fn timed<T>(scene: &Scene, render: impl FnOnce() -> Result<T>) -> Result<(T, Timing)> {
-    let tally = std::sync::Arc::new(tally::Tally::default());
+/// of its tasks counted on whichever thread they ran in its `tally`
+/// (`sim::tally`), with the runs made for it before it started
+/// (`scenes::shared`).
+fn timed<T>(
+    scene: &Scene,
+    tally: &Arc<tally::Tally>,
+    render: impl FnOnce() -> Result<T>,
+) -> Result<(T, Timing)> {
     let at = std::time::Instant::now();
     let done = tally::within(Some(tally.clone()), render)?;
     let timing = Timing {
@@ -127,6 +154,7 @@ fn timed<T>(scene: &Scene, render: impl FnOnce() -> Result<T>) -> Result<(T, Tim
         cpu_s: tally.cpu_s(),
         runs: tally.runs(),
         block_steps: tally.block_steps(),
+        reused: tally.reused(),
     };
     Ok((done, timing))
 }

@@ -10,7 +10,9 @@
 //!   output's work, which is then in both wall times;
 //! - an output's runs and block-steps (steps × blocks, summed over its
 //!   runs) are counted by the simulation as each run finishes
-//!   (`sim::tally`), whichever thread ran it;
+//!   (`sim::tally`), whichever thread ran it; a run two outputs make
+//!   alike is made once, before the outputs start, and counted in the
+//!   first's (`scenes::shared`): the others count it as **reused**;
 //! - an output's CPU time is the time threads spent on its tasks: its
 //!   own rendering and the runs it spread over the cores, each thread's
 //!   clock charged to the output whose tally was set on it
@@ -34,6 +36,9 @@ pub struct Timing {
     pub cpu_s: f64,
     pub runs: u64,
     pub block_steps: u64,
+    /// Runs another output made for it (`scenes::shared`), not counted
+    /// in `runs`.
+    pub reused: u64,
 }
 
 /// A whole render's costs.
@@ -112,22 +117,23 @@ impl Timings {
             .max()
             .unwrap_or(24);
         let mut s = format!(
-            "{:<width$}  {:>8}  {:>7}  {:>5}  {:>12}\n",
-            "output", "wall (s)", "CPU (s)", "runs", "block-steps"
+            "{:<width$}  {:>8}  {:>7}  {:>5}  {:>12}  {:>6}\n",
+            "output", "wall (s)", "CPU (s)", "runs", "block-steps", "reused"
         );
         for t in &rows {
             let name = format!("{} {}", t.kind.name(), t.name);
             s += &format!(
-                "{name:<width$}  {:>8.2}  {:>7.2}  {:>5}  {:>12}\n",
-                t.wall_s, t.cpu_s, t.runs, t.block_steps
+                "{name:<width$}  {:>8.2}  {:>7.2}  {:>5}  {:>12}  {:>6}\n",
+                t.wall_s, t.cpu_s, t.runs, t.block_steps, t.reused
             );
         }
         let runs: u64 = rows.iter().map(|t| t.runs).sum();
+        let reused: u64 = rows.iter().map(|t| t.reused).sum();
         let outputs_cpu: f64 = rows.iter().map(|t| t.cpu_s).sum();
         let cpu = self.cpu_s.map_or("-".into(), |c| format!("{c:.2}"));
         s += &format!(
-            "{:<width$}  {:>8.2}  {:>7}  {:>5}  {:>12}\n",
-            "whole render", self.wall_s, cpu, self.runs, self.block_steps
+            "{:<width$}  {:>8.2}  {:>7}  {:>5}  {:>12}  {:>6}\n",
+            "whole render", self.wall_s, cpu, self.runs, self.block_steps, reused
         );
         let outside = self.cpu_s.map_or("not measured".into(), |c| {
             format!("{:.2} s", c - outputs_cpu)
@@ -137,7 +143,9 @@ impl Timings {
              outside the outputs' own tasks (encoders' parallel loops, start-up): {outside}; \
              runs outside any output: {}\nwall: an output's start to its files in place \
              (outputs overlap, rendered in parallel); CPU: its tasks' time on every thread; \
-             block-steps: steps x blocks of its runs\n",
+             block-steps: steps x blocks of its runs; reused: runs another output made for \
+             it, made once for both before the outputs started (not in its runs, wall or \
+             CPU)\n",
             self.runs.saturating_sub(runs),
         );
         s
@@ -167,6 +175,7 @@ mod tests {
             cpu_s: 2.0 * wall_s,
             runs,
             block_steps: 100 * runs,
+            reused: 0,
         };
         let timings = Timings {
             outputs: vec![t("3", 0.5, 2), t("tank-levels", 4.0, 15)],

@@ -105,8 +105,17 @@ pub fn check_cost(scene: &Scene, samples: usize) -> Result<f64> {
 }
 
 /// Runs a single-run scene, recording the state at `samples`, with the
-/// default run options within the scene's caps (`Scene::limits`).
+/// default run options within the scene's caps (`Scene::limits`); where
+/// the render under way has made this very run for another output too,
+/// that run (`scenes::shared`: the same bits).
 pub fn simulate(scene: &Scene, samples: &[f64]) -> Result<SceneRun> {
+    super::reuse::or_run(scene, samples, super::reuse::Stop::ToEnd, || {
+        simulate_unshared(scene, samples)
+    })
+}
+
+/// [`simulate`] made here, never taken from another output's.
+pub fn simulate_unshared(scene: &Scene, samples: &[f64]) -> Result<SceneRun> {
     let options = RunOptions::default().limits(scene.limits);
     simulate_with(scene, samples, &options)
 }

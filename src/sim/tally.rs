@@ -32,6 +32,9 @@ pub struct Tally {
     block_steps: AtomicU64,
     /// CPU time spent with this tally set, ns (module doc).
     cpu_ns: AtomicU64,
+    /// Runs another output made for this one (`scenes::shared`): taken,
+    /// not made, so counted in no total.
+    reused: AtomicU64,
 }
 
 impl Tally {
@@ -50,9 +53,26 @@ impl Tally {
         self.cpu_ns.load(Ordering::Relaxed) as f64 * 1e-9
     }
 
+    /// Runs another output made for this one (`scenes::shared`).
+    pub fn reused(&self) -> u64 {
+        self.reused.load(Ordering::Relaxed)
+    }
+
     fn add(&self, block_steps: u64) {
         self.runs.fetch_add(1, Ordering::Relaxed);
         self.block_steps.fetch_add(block_steps, Ordering::Relaxed);
+    }
+
+    /// Adds what `other` counted (its runs, block-steps, CPU time and
+    /// reused runs) to this tally: work done under a tally of its own,
+    /// then charged to this one.
+    pub fn absorb(&self, other: &Tally) {
+        self.runs.fetch_add(other.runs(), Ordering::Relaxed);
+        self.block_steps
+            .fetch_add(other.block_steps(), Ordering::Relaxed);
+        self.cpu_ns
+            .fetch_add(other.cpu_ns.load(Ordering::Relaxed), Ordering::Relaxed);
+        self.reused.fetch_add(other.reused(), Ordering::Relaxed);
     }
 }
 
@@ -95,6 +115,7 @@ static TOTAL: Tally = Tally {
     runs: AtomicU64::new(0),
     block_steps: AtomicU64::new(0),
     cpu_ns: AtomicU64::new(0),
+    reused: AtomicU64::new(0),
 };
 
 /// The process's total so far.
@@ -128,6 +149,16 @@ pub(crate) fn record(steps: u64, blocks: usize) {
     CURRENT.with(|c| {
         if let Some(t) = c.borrow().as_ref() {
             t.add(block_steps);
+        }
+    });
+}
+
+/// Counts `runs` runs that another output made for the output whose
+/// tally is set on this thread (`scenes::shared`): in its tally only.
+pub fn record_reused(runs: u64) {
+    CURRENT.with(|c| {
+        if let Some(t) = c.borrow().as_ref() {
+            t.reused.fetch_add(runs, Ordering::Relaxed);
         }
     });
 }

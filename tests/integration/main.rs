@@ -63,6 +63,7 @@ mod scene_fuzz;
 mod scenes;
 mod scenes_accuracy;
 mod shard_fuzz;
+mod shared_runs;
 mod sim;
 mod sources;
 mod state_consistency;

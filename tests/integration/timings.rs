@@ -9,26 +9,30 @@ use std::collections::BTreeMap;
 
 /// One row of the table: runs and block-steps.
 type Row = (u64, u64);
+/// An output's row, its CPU seconds and the runs it reused.
+type Output = (Row, f64, u64);
 
-/// The rows of the table (output, wall, CPU, runs, block-steps), by "kind
-/// name", with their CPU seconds; and the whole render's row and CPU.
-fn parse(table: &str) -> (BTreeMap<String, (Row, f64)>, (Row, f64)) {
+/// The rows of the table (output, wall, CPU, runs, block-steps, reused),
+/// by "kind name", with their CPU seconds and reused runs; and the whole
+/// render's row and CPU.
+fn parse(table: &str) -> (BTreeMap<String, Output>, (Row, f64)) {
     let mut rows = BTreeMap::new();
     let mut whole = None;
     for line in table.lines().skip(1) {
         let words: Vec<&str> = line.split_whitespace().collect();
         let n = words.len();
-        if n < 6 || words[n - 4].parse::<f64>().is_err() {
+        if n < 7 || words[n - 5].parse::<f64>().is_err() {
             continue;
         }
-        let row = (words[n - 2].parse().unwrap(), words[n - 1].parse().unwrap());
-        let cpu: f64 = words[n - 3].parse().unwrap();
-        let name = words[..n - 4].join(" ");
+        let row = (words[n - 3].parse().unwrap(), words[n - 2].parse().unwrap());
+        let cpu: f64 = words[n - 4].parse().unwrap();
+        let reused: u64 = words[n - 1].parse().unwrap();
+        let name = words[..n - 5].join(" ");
         if name == "whole render" {
             whole = Some((row, cpu));
         } else {
             assert!(
-                rows.insert(name, (row, cpu)).is_none(),
+                rows.insert(name, (row, cpu, reused)).is_none(),
                 "a row twice:\n{table}"
             );
         }
@@ -68,16 +72,23 @@ fn the_table_lists_every_output_and_the_runs_each_made() {
     let (rows, whole) = parse(table);
 
     // Every entry of the catalogue once, nothing else; a simulated one
-    // made runs, a drawing, formula or linear theory none.
+    // made runs or took another's (`scenes::shared`), a drawing, formula
+    // or linear theory none.
     let entries = catalog::catalogue().unwrap();
     assert_eq!(rows.len(), entries.len(), "{table}");
     for e in entries {
         let name = format!("{} {}", e.kind().name(), e.scene.name);
-        let ((runs, block_steps), _) = rows[&name];
+        let ((runs, block_steps), _, reused) = rows[&name];
         let simulated = e.scene.fidelity() == Fidelity::Simulation;
-        assert_eq!(runs > 0, simulated, "{name}:\n{table}");
-        assert_eq!(block_steps > 0, simulated, "{name}:\n{table}");
+        assert_eq!(runs + reused > 0, simulated, "{name}:\n{table}");
+        assert_eq!(block_steps > 0 || reused > 0, simulated, "{name}:\n{table}");
     }
+    // Movies 3 and 4 are one run (one scene, two cameras): made for
+    // movie 3, taken by movie 4; and the tank's positions at 0.2 Hz are its
+    // level 3, made for the positions, taken by the levels.
+    assert_eq!(rows["movie 4"].0, (0, 0), "{table}");
+    assert_eq!(rows["movie 4"].2, rows["movie 3"].0.0, "{table}");
+    assert_eq!(rows["figure tank-levels"].2, 2, "{table}");
     // Every run of the render is some output's, counted once: also those
     // spread over the cores in rayon's tasks.
     let runs: u64 = rows.values().map(|r| r.0.0).sum();
@@ -90,7 +101,7 @@ fn the_table_lists_every_output_and_the_runs_each_made() {
     let cpu: f64 = rows.values().map(|r| r.1).sum();
     assert!(cpu <= whole.1 + 0.05, "outputs' CPU {cpu} s:\n{table}");
     let simulated = |name: &str| rows[name].1 > 0.0;
-    assert!(simulated("movie 4") && simulated("figure phase"), "{table}");
+    assert!(simulated("movie 3") && simulated("figure phase"), "{table}");
 
     // Fig. 1c is one automatic-step run of N blocks: its row is that run's
     // halvings, read from its data file.

@@ -18,6 +18,8 @@ mod linkage;
 mod positions;
 mod runs;
 
+pub(crate) use runs::decided_run;
+
 pub use decided::{
     DECIDABLE_FRACTION_OF_BLOCK_RATE, HELD_FOR_S, HELD_FRACTION_OF_BLOCK_RATE, HELD_RATE,
     block_rate, decidable,
@@ -146,6 +148,18 @@ pub fn planned_runs(scene: &Scene, which: ExperimentFigure) -> Result<Vec<Scene>
         ExperimentFigure::TankPositions => positions::variants(scene)?,
         ExperimentFigure::TankLevels => levels::variants(scene)?,
         ExperimentFigure::LinkageFriction => linkage::variants(scene, &most_pin_frictions())?,
+    };
+    Ok(variants.into_iter().map(|v| v.scene).collect())
+}
+
+/// The runs the figure `which` of `scene` makes whatever they give, as
+/// data scenes (`scenes::shared` makes those two figures share before
+/// either starts): every variant, but of the linkage's figure only those
+/// at [`PIN_FRICTION`] (its refinement's runs depend on their fronts).
+pub fn certain_runs(scene: &Scene, which: ExperimentFigure) -> Result<Vec<Scene>> {
+    let variants = match which {
+        ExperimentFigure::LinkageFriction => linkage::variants(scene, &PIN_FRICTION)?,
+        _ => return planned_runs(scene, which),
     };
     Ok(variants.into_iter().map(|v| v.scene).collect())
 }

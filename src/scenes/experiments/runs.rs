@@ -9,7 +9,8 @@ use crate::error::{Error, Result};
 use crate::scene::apparatus::Apparatus;
 use crate::scene::{Method, OutputSpec, Scene};
 use crate::scenes::data::RunData;
-use crate::scenes::run;
+use crate::scenes::reuse;
+use crate::scenes::run::{self, SceneRun};
 use crate::sim::IntegratorKind;
 use crate::sim::{RunOptions, StopView};
 use rayon::prelude::*;
@@ -68,16 +69,50 @@ pub(super) fn run_all(variants: &[Variant]) -> Result<Vec<Done>> {
         .collect()
 }
 
-/// One variant run until it has decided ([`Decided`]).
+/// The rule that ends a variant's run ([`Decided`]), from its converted
+/// apparatus.
+fn decided_of(scene: &Scene) -> Result<Decided> {
+    let unconverted = || {
+        Error::failed(format!(
+            "{}: the run has no converted [apparatus]",
+            scene.name
+        ))
+    };
+    let a = scene.apparatus.as_ref().ok_or_else(unconverted)?;
+    let c = a.conversion.as_ref().ok_or_else(unconverted)?;
+    let drive_end = scene.scenario()?.protocol.drive_end();
+    let block_rate = block_rate(c.gravity, c.inertia, c.added_inertia);
+    Ok(Decided::new(
+        drive_end,
+        c.tau_s,
+        c.friction_rate,
+        block_rate,
+    ))
+}
+
+/// A variant's scene run until it has decided ([`Decided`]), made here
+/// (`scenes::shared` makes a run two figures plan with it).
+pub(crate) fn decided_run(scene: &Scene) -> Result<SceneRun> {
+    decided_run_with(scene, &decided_of(scene)?)
+}
+
+/// [`decided_run`] with its rule already made.
+fn decided_run_with(scene: &Scene, decided: &Decided) -> Result<SceneRun> {
+    let stop = |view: &StopView| decided.decided(view);
+    let options = RunOptions::default().limits(scene.limits).stop(&stop);
+    run::simulate_with(scene, &[], &options)
+}
+
+/// One variant run until it has decided ([`Decided`]), or the same run
+/// made for another figure of the render (`scenes::shared`).
 fn run_one(v: &Variant) -> Result<Done> {
     let a = v.scene.apparatus.as_ref().ok_or_else(|| unconverted(v))?;
     let c = a.conversion.as_ref().ok_or_else(|| unconverted(v))?;
-    let drive_end = v.scene.scenario()?.protocol.drive_end();
-    let block_rate = block_rate(c.gravity, c.inertia, c.added_inertia);
-    let decided = Decided::new(drive_end, c.tau_s, c.friction_rate, block_rate);
-    let stop = |view: &StopView| decided.decided(view);
-    let options = RunOptions::default().limits(v.scene.limits).stop(&stop);
-    let r = run::simulate_with(&v.scene, &[], &options)?;
+    // The rule's verdict is fixed when it is made, not by the run.
+    let decided = decided_of(&v.scene)?;
+    let r = reuse::or_run(&v.scene, &[], reuse::Stop::Decided, || {
+        decided_run_with(&v.scene, &decided)
+    })?;
     let arrivals = &r.trajectory.arrival_times;
     // A run with pin friction whose held rule cannot decide says so
     // in its data (its label), having run to its duration.
