@@ -136,9 +136,9 @@ fn halving(levels: usize) {
             );
         }
     }
-    for l in 0..levels {
+    for (l, (full, warm)) in runs[0].iter().zip(&runs[1]).enumerate() {
         let line: Vec<String> = (0..times.len())
-            .map(|k| format!("{:.3e}", diff(&runs[0][l][k], &runs[1][l][k])))
+            .map(|k| format!("{:.3e}", diff(&full[k], &warm[k])))
             .collect();
         println!("full vs warm at dt/{}: {line:?}", 1 << l);
     }
