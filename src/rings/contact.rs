@@ -184,37 +184,46 @@ pub fn touches_from(
         let Some(t) = refine(a, b, (table[j], points[j]), d2[j].sqrt(), reach) else {
             continue;
         };
-        // Two samples on one plateau refine to one contact: keep the deeper.
         if t.d >= reach {
             continue;
         }
-        if let Some(k) = found
-            .iter()
-            .position(|f| f.is_some_and(|f| math::norm(math::sub(f.p, t.p)) <= slack))
-        {
-            if t.d < found[k].map_or(f64::INFINITY, |f| f.d) {
-                found[k] = Some(t);
-            }
-            continue;
-        }
-        // Insert by depth, dropping the shallowest past the capacity.
-        let mut item = Some(t);
-        for slot in found.iter_mut() {
-            match (*slot, item) {
-                (None, _) => {
-                    *slot = item;
-                    break;
-                }
-                (Some(f), Some(i)) if i.d < f.d => {
-                    *slot = Some(i);
-                    item = Some(f);
-                }
-                _ => {}
-            }
-        }
+        insert_by_depth(&mut found, t, slack);
     }
     for t in found.iter().take(MAX_CONTACTS).flatten() {
         out(*t);
+    }
+}
+
+/// Inserts the touch `t` into `found`, kept sorted by depth (the deepest
+/// first; past its capacity the shallowest is dropped). Two samples on one
+/// plateau refine to one contact, and one minimum can be followed from two
+/// samples: if a touch within `slack` of `t` is there already, the deeper
+/// of the two is kept, at its place by depth. The full search
+/// ([`touches_from`]) and the warm one ([`super::warm::warm`]) both keep
+/// their touches with it.
+pub fn insert_by_depth<const N: usize>(found: &mut [Option<Touch>; N], t: Touch, slack: f64) {
+    let near = |f: &Option<Touch>| f.is_some_and(|f| math::norm(math::sub(f.p, t.p)) <= slack);
+    if let Some(k) = found.iter().position(near) {
+        if t.d < found[k].map_or(f64::INFINITY, |f| f.d) {
+            found[k] = None;
+            found[k..].rotate_left(1);
+        } else {
+            return;
+        }
+    }
+    let mut item = Some(t);
+    for slot in found.iter_mut() {
+        match (*slot, item) {
+            (None, _) => {
+                *slot = item;
+                return;
+            }
+            (Some(f), Some(i)) if i.d < f.d => {
+                *slot = Some(i);
+                item = Some(f);
+            }
+            _ => {}
+        }
     }
 }
 

@@ -336,7 +336,7 @@ pub fn warm(
         };
         (m.cs, m.d, m.at) = (cs, d, pose);
         if d < reach {
-            keep(&mut found, Touch { p, q, d }, slack);
+            contact::insert_by_depth(&mut found, Touch { p, q, d }, slack);
         }
     }
     memo.age += 1;
@@ -344,37 +344,6 @@ pub fn warm(
         out(*t);
     }
     true
-}
-
-/// Inserts `t` into `found` (sorted by depth, the deepest first), or, if
-/// a touch within `slack` of it is there (one minimum followed from two
-/// samples), keeps the deeper of the two.
-fn keep(found: &mut [Option<Touch>; TRACKED], t: Touch, slack: f64) {
-    if let Some(k) = found
-        .iter()
-        .position(|f| f.is_some_and(|f| math::norm(math::sub(f.p, t.p)) <= slack))
-    {
-        if t.d < found[k].map_or(f64::INFINITY, |f| f.d) {
-            found[k] = None;
-            found[k..].rotate_left(1);
-        } else {
-            return;
-        }
-    }
-    let mut item = Some(t);
-    for slot in found.iter_mut() {
-        match (*slot, item) {
-            (None, _) => {
-                *slot = item;
-                return;
-            }
-            (Some(f), Some(i)) if i.d < f.d => {
-                *slot = Some(i);
-                item = Some(f);
-            }
-            _ => {}
-        }
-    }
 }
 
 #[cfg(test)]

@@ -25,8 +25,8 @@ fn data(kind: &str, id: &str, extra: &[&str]) -> Value {
 
 /// The caption's claims against the data: the number of rings, flips
 /// (none: "no ring flips"), helical waves (none: "no helical wave
-/// forms"), and the linking guard checked pairs and held (the run
-/// finished: a lost link fails it).
+/// forms"), and the linking guard's pair checks, as many as the caption
+/// quotes (and all held: the run finished, a lost link fails it).
 fn check(name: &str, d: &Value) {
     let caption = d["scene"]["caption"].as_str().unwrap();
     let rings = &d["rings"];
@@ -49,7 +49,28 @@ fn check(name: &str, d: &Value) {
         "{name}: {} waves against \"{caption}\"",
         waves.len()
     );
-    assert!(rings["guard_checks"].as_u64().unwrap() > 0, "{name}");
+    let checks = rings["guard_checks"].as_u64().unwrap();
+    assert!(checks > 0, "{name}");
+    assert_eq!(
+        quoted_checks(caption),
+        Some(checks),
+        "{name}: the data file's {checks} guard checks against \"{caption}\""
+    );
+}
+
+/// The number the caption quotes as the linking guard's pair checks
+/// ("the linking guard checked 236 640 pairs", at any case; digits
+/// grouped by spaces).
+fn quoted_checks(caption: &str) -> Option<u64> {
+    let caption = caption.to_lowercase();
+    let after = caption.split("the linking guard checked ").nth(1)?;
+    let digits: String = after
+        .split(" pairs")
+        .next()?
+        .chars()
+        .filter(|c| *c != ' ')
+        .collect();
+    digits.parse().ok()
 }
 
 #[test]
