@@ -8,6 +8,7 @@
 //! figure. The article is kept under target/tmp/revtex-article/ to be
 //! looked at page by page.
 
+use crate::common::latex::latex_text;
 use crate::common::print_render;
 use crate::common::require::require;
 use std::path::{Path, PathBuf};
@@ -119,18 +120,4 @@ fn caption(pdf: &Path) -> String {
         .as_str()
         .unwrap_or_else(|| panic!("{} has no caption", pdf.display()));
     jacobs_ladder::theory::formulas::expand(caption)
-}
-
-/// `text` as plain LaTeX of about the same length: each character outside
-/// ASCII one letter, LaTeX's special characters escaped.
-fn latex_text(text: &str) -> String {
-    text.trim()
-        .chars()
-        .map(|c| match c {
-            '%' | '&' | '#' | '_' | '$' | '{' | '}' => format!("\\{c}"),
-            '\\' | '^' | '~' => "x".into(),
-            c if c.is_ascii() => c.to_string(),
-            _ => "x".into(),
-        })
-        .collect()
 }

@@ -8,6 +8,7 @@
 //! caption: figure and caption together must fit one column.
 
 use crate::common::ladder_cli;
+use crate::common::latex::latex_text;
 use crate::common::require::require;
 use crate::common::tempdir::TempDir;
 use std::process::Command;
@@ -124,18 +125,4 @@ fn pinning_caption() -> String {
         .caption
         .clone()
         .unwrap_or_default()
-}
-
-/// `text` as plain LaTeX of about the same length: each character outside
-/// ASCII one letter, LaTeX's special characters escaped.
-fn latex_text(text: &str) -> String {
-    text.trim()
-        .chars()
-        .map(|c| match c {
-            '%' | '&' | '#' | '_' | '$' | '{' | '}' => format!("\\{c}"),
-            '\\' | '^' | '~' => "x".into(),
-            c if c.is_ascii() => c.to_string(),
-            _ => "x".into(),
-        })
-        .collect()
 }

@@ -6,6 +6,7 @@ pub mod gif;
 pub mod golden;
 pub mod h264;
 pub mod kernels;
+pub mod latex;
 pub mod lcg;
 pub mod pdf;
 pub mod require;
