@@ -48,12 +48,30 @@ def busy_reason():
     return None
 
 
+def machine_cpu_seconds():
+    """CPU seconds every process of the machine has used since boot (Linux:
+    /proc/stat's busy jiffies), or None where that cannot be read."""
+    try:
+        with open("/proc/stat") as f:
+            fields = f.readline().split()
+    except OSError:
+        return None
+    if not fields or fields[0] != "cpu":
+        return None
+    # user nice system idle iowait irq softirq steal ...: busy is all but idle and iowait.
+    values = [int(v) for v in fields[1:9]]
+    busy = sum(values) - values[3] - values[4]
+    return busy / os.sysconf("SC_CLK_TCK")
+
+
 def test_two_threads_run_two_simulations_at_once():
     """Two simulations in two threads run at the same time: the second call
     starts before the first returns (it could not if the first held the GIL
     for its whole run). On a machine with a core free, the process's CPU
     time also grows clearly faster than the wall clock (best of three tries,
-    a generous bound); on a busy one that half is reported, not skipped."""
+    a generous bound), asked only of tries during which the other programs
+    left a core free (/proc/stat); on a busy machine that half is reported,
+    not skipped."""
     import resource
 
     def cpu():
@@ -61,6 +79,8 @@ def test_two_threads_run_two_simulations_at_once():
         return r.ru_utime + r.ru_stime
 
     def parallel():
+        """(overlap of the two calls, this process's CPU per wall second,
+        the other processes' CPU per wall second or None)."""
         spans = []
 
         def timed():
@@ -69,14 +89,17 @@ def test_two_threads_run_two_simulations_at_once():
             spans.append((begin, time.perf_counter()))
 
         threads = [threading.Thread(target=timed) for _ in range(2)]
-        c, t = cpu(), time.perf_counter()
+        c, t, m = cpu(), time.perf_counter(), machine_cpu_seconds()
         for th in threads:
             th.start()
         for th in threads:
             th.join()
         (a0, a1), (b0, b1) = sorted(spans)
         overlap = (min(a1, b1) - b0) / min(a1 - a0, b1 - b0)
-        return overlap, (cpu() - c) / (time.perf_counter() - t)
+        wall, own = time.perf_counter() - t, cpu() - c
+        m1 = machine_cpu_seconds()
+        others = None if m is None or m1 is None else max(0.0, (m1 - m) - own) / wall
+        return overlap, own / wall, others
 
     jl.simulate(**WORK)  # warm
     results = []
@@ -84,11 +107,20 @@ def test_two_threads_run_two_simulations_at_once():
         results.append(parallel())
         if results[-1][1] > 1.4:
             break
-    assert max(o for o, _ in results) > 0.5, f"the two calls hardly overlapped: {results}"
+    assert max(r[0] for r in results) > 0.5, f"the two calls hardly overlapped: {results}"
+    # The rate is asked only of the tries during which the rest of the
+    # machine left a core free (measured over the try itself from
+    # /proc/stat; elsewhere from the load average before it): another
+    # program's build starting mid-try takes the core the check needs.
     reason = busy_reason()
-    if reason is None:
-        rates = [r for _, r in results]
-        assert max(rates) > 1.4, f"CPU seconds per wall second with two threads: {rates}"
+    quiet = [rate for _, rate, others in results if others is not None and others < 0.3]
+    if any(others is not None for _, _, others in results):
+        if quiet:
+            assert max(quiet) > 1.4, f"CPU seconds per wall second with two threads: {results}"
+        else:
+            print(f"two-core CPU-rate check not made: other programs used a core in every try: {results}")
+    elif reason is None:
+        assert max(r[1] for r in results) > 1.4, f"CPU seconds per wall second with two threads: {results}"
     else:
         print(f"two-core CPU-rate check not made: {reason}")
 
