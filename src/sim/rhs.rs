@@ -269,7 +269,7 @@ mod tests {
     }
 
     /// Pin friction as it was computed before `Frames`: link by link, every
-    /// frame from `frame(i, θ_i)` where it is used, `f64::tanh`.
+    /// frame from `frame(i, θ_i)` where it is used.
     fn friction_reference(ladder: &Ladder, f: &PinFriction, q: &[f64], v: &[f64], out: &mut [f64]) {
         for s in ladder.terms.links.states(ladder, q) {
             if s.tension == 0.0 || f.mu_rp == 0.0 {
@@ -289,7 +289,7 @@ mod tests {
             let limit = f.mu_rp * s.tension.abs();
             let torque = |i: usize| {
                 let omega = -parity(i) * v[itheta(i)] - phi_dot;
-                -limit * (omega / f.omega_eps).tanh()
+                -limit * crate::model::links::smooth_sign(omega / f.omega_eps)
             };
             let (p0, p1) = (torque(s.upper), torque(s.upper + 1));
             out[itheta(s.upper)] += -parity(s.upper) * p0;

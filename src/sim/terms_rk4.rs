@@ -16,25 +16,26 @@
 //! moment), and no step allocates.
 //!
 //! Pin friction (the printed linkage) is added to the generalised forces
-//! as the portable path adds it (`PinFriction::add_forces`, in the
-//! portable layout), with the frames from the C library's sine and cosine;
-//! with friction the drag and added mass take the same frames, so that
-//! run is the portable one bit for bit.
+//! as the portable path adds it (`PinFriction::add_forces`), link by link
+//! and block by block in the same order, over whole arrays
+//! (`terms_rk4::friction`).
 //!
 //! Every operation is the portable path's in the same order, with one
-//! exception (without pin friction): the blocks' frames take the sine and
-//! cosine the springs already computed (`model::trig`, fdlibm's kernels)
-//! instead of the C library's. The two differ by at most 4 × 10⁻¹⁶ (`model::trig`'s test),
+//! exception: the blocks' frames take the sine and cosine the springs
+//! already computed (`model::trig`, fdlibm's kernels) instead of the C
+//! library's. The two differ by at most 4 × 10⁻¹⁶ (`model::trig`'s test),
 //! so one force evaluation differs from the portable one by a few ulps;
 //! with the library's frames ([`TermsRk4::with_library_frames`]) the
-//! trajectory is the portable path's bit for bit (`tests` below).
+//! trajectory is the portable path's bit for bit, with pin friction too
+//! (`tests` below).
+
+mod friction;
 
 use super::observables::ArrivalDetector;
 use super::rhs::{Rhs, State};
 use super::stepping::Plan;
 use super::stepping::Stepping;
 use super::tableau::RK4;
-use crate::model::ladder::Frames;
 use crate::model::params::{M, R};
 
 /// The state, stage values and stage rates of one run, one array per
@@ -56,6 +57,8 @@ pub struct TermsRk4 {
     kv: [Soa; 4],
     s: Scratch,
     library_frames: bool,
+    /// Pin friction's law, if the ladder has friction at its pins.
+    friction: Option<friction::Law>,
 }
 
 /// The run's coefficients, each computed as the portable path computes it.
@@ -92,13 +95,9 @@ struct Scratch {
     tl: Vec<f64>,
     tu: Vec<f64>,
     grad: Soa,
-    /// Pin friction's buffers: the stage's (q, v) and generalised forces
-    /// in the portable layout (X, Y, θ block after block), the frames
-    /// from the C library's sine and cosine, and the forces as arrays.
-    q: Vec<f64>,
-    v: Vec<f64>,
-    force: Vec<f64>,
-    frames: Frames,
+    /// Pin friction's buffers: each sign's links, and the generalised
+    /// forces with the friction.
+    links: [friction::LinkForces; 2],
     forces: Soa,
 }
 
@@ -179,13 +178,18 @@ impl TermsRk4 {
                 tl: z(),
                 tu: z(),
                 grad: soa(),
-                q: vec![0.0; 3 * n],
-                v: vec![0.0; 3 * n],
-                force: vec![0.0; 3 * n],
-                frames: Frames::default(),
+                links: [
+                    friction::LinkForces::new(len),
+                    friction::LinkForces::new(len),
+                ],
                 forces: soa(),
             },
             library_frames: false,
+            friction: t.friction.map(|friction| friction::Law {
+                links: t.links,
+                friction,
+                rest: [ladder.a, p.b],
+            }),
         }
     }
 
@@ -258,7 +262,7 @@ impl TermsRk4 {
         for k in 0..3 {
             copy(&mut self.kq[0][k], &self.v0[k], np);
         }
-        self.evaluate(rhs, 0, true);
+        self.evaluate(0, true);
         for i in 1..4 {
             self.combine(h, RK4.a[i]);
             self.stage(rhs, i, t + RK4.c[i] * h);
@@ -319,17 +323,17 @@ impl TermsRk4 {
         // kq[i] = v: the stage's v moves into kq[i] (the next combine
         // writes every lane of v again).
         std::mem::swap(&mut self.kq[i], &mut self.v);
-        self.evaluate(rhs, i, false);
+        self.evaluate(i, false);
     }
 
     /// kv[i] = a(q, v) of stage `i`: (q0, kq[0]) for stage 0 (`start`),
     /// (q, kq[i]) for the others.
     #[inline(always)]
-    fn evaluate(&mut self, rhs: &Rhs, i: usize, start: bool) {
+    fn evaluate(&mut self, i: usize, start: bool) {
         let q = if start { &self.q0 } else { &self.q };
         let [ax, ay, aw] = &mut self.kv[i];
         acceleration(
-            (&self.c, rhs),
+            (&self.c, self.friction.as_ref()),
             &self.parity,
             (q, &self.kq[i]),
             [ax, ay, aw],
@@ -360,10 +364,11 @@ fn constrain(rhs: &Rhs, ts: f64, q: &mut Soa, v: &mut Soa) {
 
 /// The accelerations at (q, v): `Rhs::acceleration_with_terms` over
 /// whole arrays (`model::media`: Lagrange's equations with added mass,
-/// M⁻¹ in closed form, the Munk moment, strip drag in closed form).
+/// M⁻¹ in closed form, the Munk moment, strip drag in closed form; pin
+/// friction as `PinFriction::add_forces` adds it).
 #[inline(always)]
 fn acceleration(
-    (c, rhs): (&Coeffs, &Rhs),
+    (c, law): (&Coeffs, Option<&friction::Law>),
     parity: &[f64],
     (q, v): (&Soa, &Soa),
     out: [&mut Vec<f64>; 3],
@@ -372,89 +377,45 @@ fn acceleration(
 ) {
     springs(c, parity, q, s);
     let np = c.np;
-    // Pin friction takes its frames from the C library's sine and cosine
-    // (`Frames::at`, as the portable path); the drag and the added mass
-    // then take the same ones, and the run is the portable one bit for bit.
-    let friction = rhs.terms().friction;
-    let library_frames = library_frames || friction.is_some();
-    if let Some(f) = friction {
-        pin_friction(c, rhs, &f, q, &v[..], s);
-        // The friction's frames hold the library's sine and cosine:
-        // t = (sin θ, ±cos θ), ν = (cos θ, ∓sin θ).
-        for i in 0..np {
-            (s.fsin[i], s.fcos[i]) = if i < c.n {
-                let (t, nu) = s.frames.get(i);
-                (t[0], nu[0])
-            } else {
-                q[2][i].sin_cos()
-            };
-        }
-    } else if library_frames {
+    if library_frames {
         for i in 0..np {
             (s.fsin[i], s.fcos[i]) = q[2][i].sin_cos();
         }
     }
+    // Whole arrays (the links' pass reads block j + 1 beside block j).
     let (fsin, fcos) = if library_frames {
-        (&s.fsin[..np], &s.fcos[..np])
+        (&s.fsin[..], &s.fcos[..])
     } else {
-        (&s.sin[..np], &s.cos[..np])
+        (&s.sin[..], &s.cos[..])
     };
     let [ax, ay, aw] = out;
-    let [gx, gy, gt] = &s.grad;
-    let g = [&gx[..np], &gy[..np], &gt[..np]];
-    let frames = (fsin, fcos, &parity[..np]);
-    let v = [&v[0][..np], &v[1][..np], &v[2][..np]];
+    let frames = (&fsin[..np], &fcos[..np], &parity[..np]);
     let a = [&mut ax[..np], &mut ay[..np], &mut aw[..np]];
-    if friction.is_some() {
+    if let Some(law) = law {
+        let all = (fsin, fcos, parity);
+        friction::forces((c, law), all, (q, v), &s.grad, &mut s.links, &mut s.forces);
         let [fx, fy, ft] = &s.forces;
         let forces = [&fx[..np], &fy[..np], &ft[..np]];
+        let v = [&v[0][..np], &v[1][..np], &v[2][..np]];
         if c.drag != 0.0 {
             block_accelerations::<true, true>(c, forces, frames, v, a);
         } else {
             block_accelerations::<false, true>(c, forces, frames, v, a);
         }
-    } else if c.drag != 0.0 {
-        block_accelerations::<true, false>(c, g, frames, v, a);
     } else {
-        block_accelerations::<false, false>(c, g, frames, v, a);
+        let [gx, gy, gt] = &s.grad;
+        let g = [&gx[..np], &gy[..np], &gt[..np]];
+        let v = [&v[0][..np], &v[1][..np], &v[2][..np]];
+        if c.drag != 0.0 {
+            block_accelerations::<true, false>(c, g, frames, v, a);
+        } else {
+            block_accelerations::<false, false>(c, g, frames, v, a);
+        }
     }
     let first = usize::from(c.driven);
     for a in [ax, ay, aw] {
         a[..first].fill(0.0);
         a[c.n..np].fill(0.0);
-    }
-}
-
-/// The generalised forces with pin friction into `s.forces`, as
-/// `Rhs::acceleration_with_terms` computes them: −∂E/∂q − γ v block after
-/// block, then `PinFriction::add_forces` (its frames from the C library's
-/// sine and cosine, as there), in the portable layout.
-#[inline(never)]
-fn pin_friction(
-    c: &Coeffs,
-    rhs: &Rhs,
-    friction: &crate::model::links::PinFriction,
-    q: &Soa,
-    v: &[Vec<f64>],
-    s: &mut Scratch,
-) {
-    let n = c.n;
-    let g = &s.grad;
-    let rates = [c.gamma, c.gamma, c.gamma_theta];
-    for i in 0..n {
-        for k in 0..3 {
-            s.q[3 * i + k] = q[k][i];
-            s.v[3 * i + k] = v[k][i];
-            s.force[3 * i + k] = -g[k][i] - rates[k] * v[k][i];
-        }
-    }
-    s.frames.at(n, &s.q);
-    let links = &rhs.terms().links;
-    friction.add_forces(rhs.ladder, links, &s.frames, (&s.q, &s.v), &mut s.force);
-    for i in 0..n {
-        for k in 0..3 {
-            s.forces[k][i] = s.force[3 * i + k];
-        }
     }
 }
 
