@@ -31,6 +31,7 @@ mod energy_view;
 mod experiment_figures;
 mod experiment_movies;
 mod experiments;
+mod figure_words;
 mod figures;
 mod filmstrips;
 mod formats;
