@@ -45,7 +45,7 @@
 use super::outline::{Outline, Pose, add_point_force, point_velocity};
 use super::params::M;
 pub use super::tangent::{Anchor, Way, Ways};
-use super::tangent::{Relative, common_tangent};
+use super::tangent::{Relative, Warm, common_tangent, warm_tangent};
 
 /// One ribbon of every junction: its anchor on the upper and the lower
 /// block (in each block's own frame) and its rest length ℓ (in s).
@@ -72,6 +72,9 @@ pub struct Ribbons {
     pub damping: f64,
     /// Each ribbon's ways round, made once ([`Ribbons::new`]).
     ways: [Ways; 2],
+    /// Whether [`Ribbons::find_spans`] starts each common tangent from
+    /// the last evaluation's (`tangent::warm_tangent`; the same spans).
+    pub warm: bool,
 }
 
 /// A ribbon at a state: where its span leaves each block (frame points),
@@ -109,6 +112,20 @@ impl Ribbon {
     /// [`Ribbon::span`] with the ways round made beforehand.
     #[inline]
     pub fn span_with(&self, ways: &Ways, upper: &Pose, lower: &Pose, stiffness: f64) -> Span {
+        self.span_from(ways, upper, lower, stiffness, None)
+    }
+
+    /// [`Ribbon::span_with`], each common tangent started from `warm`'s
+    /// (the last evaluation's, updated) where given.
+    #[inline]
+    fn span_from(
+        &self,
+        ways: &Ways,
+        upper: &Pose,
+        lower: &Pose,
+        stiffness: f64,
+        mut warm: Option<&mut Warm>,
+    ) -> Span {
         let rel = Relative::new(upper, lower);
         // The shortest way round with a common tangent; where none has
         // one (never seen), the shortest of the last guesses.
@@ -116,12 +133,25 @@ impl Ribbon {
         let mut guess = best;
         for (a, wu) in ways.upper.iter().enumerate() {
             for (b, wl) in ways.lower.iter().enumerate() {
-                let ((ju, jl), found) = common_tangent(wu, wl, &rel);
+                let ((ju, jl), found) = match warm.as_deref_mut() {
+                    Some(w) => {
+                        let r = warm_tangent(wu, wl, &rel, w[2 * a + b]);
+                        w[2 * a + b] = r.0;
+                        r
+                    }
+                    None => common_tangent(wu, wl, &rel),
+                };
                 let (cu, cl) = (wu.c[ju], wl.c[jl]);
+                let slot = if found { &mut best } else { &mut guess };
+                // The free span is ≥ 0 and rounded addition is monotone:
+                // where the wrapped lengths alone reach the slot's, the
+                // whole length does (its square root spared).
+                if cu.arc + cl.arc >= slot.0 {
+                    continue;
+                }
                 let e = rel.to_upper(cl.point);
                 let free = ((e[0] - cu.point[0]).powi(2) + (e[1] - cu.point[1]).powi(2)).sqrt();
                 let length = cu.arc + free + cl.arc;
-                let slot = if found { &mut best } else { &mut guess };
                 if length < slot.0 {
                     *slot = (length, a, ju, b, jl);
                 }
@@ -158,6 +188,7 @@ impl Ribbons {
             ribbons,
             stiffness,
             damping: 2.0 * (stiffness * M).sqrt(),
+            warm: true,
         }
     }
 
@@ -207,11 +238,17 @@ impl Ribbons {
     /// [`Pose::of`] gives them) into `out`, in the order of
     /// [`Ribbons::for_each_span`]: the one search of a force evaluation,
     /// for [`Ribbons::gradient_of`] and [`Ribbons::add_damping_of`].
-    pub fn find_spans(&self, poses: &[Pose], out: &mut Vec<Span>) {
+    /// Each common tangent starts from `warm`'s (the last call's, kept by
+    /// the caller) where [`Ribbons::warm`].
+    pub fn find_spans(&self, poses: &[Pose], out: &mut Vec<Span>, warm: &mut Vec<Warm>) {
         out.clear();
+        let junctions = poses.len().saturating_sub(1);
+        warm.resize(2 * junctions, [(0, 0); 4]);
+        let mut last = warm.iter_mut();
         for w in poses.windows(2) {
             for (r, ways) in self.ribbons.iter().zip(&self.ways) {
-                out.push(r.span_with(ways, &w[0], &w[1], self.stiffness));
+                let start = last.next().filter(|_| self.warm);
+                out.push(r.span_from(ways, &w[0], &w[1], self.stiffness, start));
             }
         }
     }
@@ -552,7 +589,7 @@ mod dashpot_tests {
             let v: Vec<f64> = (0..q.len()).map(|k| 0.01 * (k as f64 + s).cos()).collect();
             let poses: Vec<Pose> = (0..5).map(|i| Pose::of(&q, i)).collect();
             let mut spans: Vec<Span> = Vec::new();
-            r.find_spans(&poses, &mut spans);
+            r.find_spans(&poses, &mut spans, &mut Vec::new());
             let (mut a, mut b) = (vec![0.0; 15], vec![0.0; 15]);
             r.gradient(5, 2e-4, &q, &mut a);
             r.gradient_of(2e-4, &poses, &spans, &mut b);

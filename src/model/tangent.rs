@@ -203,3 +203,32 @@ pub(super) fn common_tangent(wu: &Way, wl: &Way, rel: &Relative) -> ((usize, usi
     }
     ((ju, jl), false)
 }
+
+/// The tangent points (upper, lower) of each of a ribbon's four pairs of
+/// ways round (upper way a, lower way b at 2a + b) at the last
+/// evaluation: where [`warm_tangent`] starts.
+pub type Warm = [(usize, usize); 4];
+
+/// [`common_tangent`] started from the last evaluation's tangent points
+/// `last`: where they are still the common tangent (each the first
+/// candidate that leaves towards the other), that with two tests in
+/// place of the four or more of a search from the anchors; else the
+/// search from the anchors. The same answer as [`common_tangent`] where
+/// a way round has one common tangent (a test compares the two over
+/// whole runs of the tank and the toy, bit for bit).
+#[inline]
+pub(super) fn warm_tangent(
+    wu: &Way,
+    wl: &Way,
+    rel: &Relative,
+    last: (usize, usize),
+) -> ((usize, usize), bool) {
+    let (ju, jl) = last;
+    if (ju, jl) != (0, 0)
+        && wu.first_leaving(rel.to_upper(wl.c[jl].point)) == ju
+        && wl.first_leaving(rel.to_lower(wu.c[ju].point)) == jl
+    {
+        return (last, true);
+    }
+    common_tangent(wu, wl, rel)
+}

@@ -11,6 +11,7 @@ use crate::model::media::{self, Terms};
 use crate::model::outline::Pose;
 use crate::model::params::{M, R};
 use crate::model::ribbons::{Ribbons, Span};
+use crate::model::tangent::Warm;
 
 /// Positions q and velocities v, both in the model's layout [X, Y, θ per block].
 #[derive(Debug, Clone, PartialEq)]
@@ -58,6 +59,9 @@ pub struct Rhs<'a> {
     /// search for the ribbons' tension and dashpot alike.
     poses: Vec<Pose>,
     spans: Vec<Span>,
+    /// Each ribbon's tangent points at the last evaluation, where the
+    /// next one's search starts (`model::tangent::warm_tangent`).
+    warm: Vec<Warm>,
 }
 
 impl<'a> Rhs<'a> {
@@ -89,6 +93,7 @@ impl<'a> Rhs<'a> {
             deepest_overlap: 0.0,
             poses: Vec::new(),
             spans: Vec::new(),
+            warm: Vec::new(),
         }
     }
 
@@ -196,7 +201,7 @@ impl<'a> Rhs<'a> {
             let centre = [q[ix(i)], q[iy(i)]];
             self.poses.push(Pose { centre, t, nu });
         }
-        ribbons.find_spans(&self.poses, &mut self.spans);
+        ribbons.find_spans(&self.poses, &mut self.spans, &mut self.warm);
         let g = self.ladder.params.gravity;
         ribbons.gradient_of(g, &self.poses, &self.spans, &mut self.grad);
     }
