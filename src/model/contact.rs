@@ -104,14 +104,28 @@ impl Contact {
         o: &Outline,
         q: &[f64],
         v: &[f64],
+        f: impl FnMut(Touch),
+    ) {
+        let poses: Vec<Pose> = (0..blocks.n).map(|i| Pose::of(q, i)).collect();
+        self.for_each_touch_posed(blocks, o, &poses, v, f);
+    }
+
+    /// [`Contact::for_each_touch`] at the blocks' `poses` (one per block,
+    /// as [`Pose::of`] gives them at q).
+    pub fn for_each_touch_posed(
+        &self,
+        blocks: Blocks,
+        o: &Outline,
+        poses: &[Pose],
+        v: &[f64],
         mut f: impl FnMut(Touch),
     ) {
         let n = blocks.n;
         let reach = 2.0 * o.radius();
         for i in 0..n {
-            let pi = Pose::of(q, i);
+            let pi = poses[i];
             for j in i + 1..n {
-                let pj = Pose::of(q, j);
+                let pj = poses[j];
                 let dx = pi.centre[0] - pj.centre[0];
                 let dy = pi.centre[1] - pj.centre[1];
                 if dx * dx + dy * dy >= reach * reach {
@@ -218,15 +232,29 @@ impl Contact {
         v: &[f64],
         out: &mut [f64],
     ) -> f64 {
+        let poses: Vec<Pose> = (0..blocks.n).map(|i| Pose::of(q, i)).collect();
+        self.add_forces_posed(blocks, o, &poses, v, out)
+    }
+
+    /// [`Contact::add_forces`] at the blocks' `poses` (one per block, as
+    /// [`Pose::of`] gives them at q).
+    pub fn add_forces_posed(
+        &self,
+        blocks: Blocks,
+        o: &Outline,
+        poses: &[Pose],
+        v: &[f64],
+        out: &mut [f64],
+    ) -> f64 {
         let mut deepest = 0.0_f64;
-        self.for_each_touch(blocks, o, q, v, |t| {
+        self.for_each_touch_posed(blocks, o, poses, v, |t| {
             deepest = deepest.max(t.depth);
             let tangent = [-t.normal[1], t.normal[0]];
             let f = [
                 t.normal_force * t.normal[0] + t.friction_force * tangent[0],
                 t.normal_force * t.normal[1] + t.friction_force * tangent[1],
             ];
-            let (pa, pb) = (Pose::of(q, t.a), Pose::of(q, t.b));
+            let (pa, pb) = (poses[t.a], poses[t.b]);
             add_point_force(out, &pa, t.a, pa.local(t.point), f);
             add_point_force(out, &pb, t.b, pb.local(t.point), [-f[0], -f[1]]);
         });

@@ -11,6 +11,7 @@ pub mod params;
 pub mod ribbons;
 pub mod strap;
 pub mod table;
+pub mod tangent;
 pub mod terms;
 pub mod trig;
 

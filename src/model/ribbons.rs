@@ -16,7 +16,8 @@
 //! straight away when the span points out of the face (e · n ≥ 0), an
 //! anchor at a corner when the span points out of either edge there, and
 //! it leaves a corner it has wrapped when the span does not point back
-//! along the edge it came by (e · d_in ≥ 0); else it wraps on. The two
+//! along the edge it came by (e · d_in ≥ 0); else it wraps on (`tangent`:
+//! a tie, as where two corners coincide, counts as leaving). The two
 //! ways round from an anchor give two candidate paths; the ribbon takes
 //! the shorter (where the other block is behind the anchor, a real
 //! ribbon keeps the way round it came by: the two agree until the other
@@ -42,15 +43,9 @@
 //! of the apparatus (every block at θ = 90°, centres b apart): glued taut.
 
 use super::outline::{Outline, Pose, add_point_force, point_velocity};
-use super::params::{M, R};
-
-/// A ribbon's glue point on a block: edge k (0..4) at fraction f ∈ [0, 1)
-/// from corner k towards corner k + 1 (`outline`).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Anchor {
-    pub edge: usize,
-    pub along: f64,
-}
+use super::params::M;
+pub use super::tangent::{Anchor, Way, Ways};
+use super::tangent::{Relative, Warm, common_tangent, warm_tangent};
 
 /// One ribbon of every junction: its anchor on the upper and the lower
 /// block (in each block's own frame) and its rest length ℓ (in s).
@@ -77,6 +72,9 @@ pub struct Ribbons {
     pub damping: f64,
     /// Each ribbon's ways round, made once ([`Ribbons::new`]).
     ways: [Ways; 2],
+    /// Whether [`Ribbons::find_spans`] starts each common tangent from
+    /// the last evaluation's (`tangent::warm_tangent`; the same spans).
+    pub warm: bool,
 }
 
 /// A ribbon at a state: where its span leaves each block (frame points),
@@ -94,159 +92,6 @@ pub struct Span {
     pub tension: f64,
     /// Wrapped lengths on the upper and the lower block.
     pub wrapped: [f64; 2],
-}
-
-/// Where a ribbon may leave a block: a frame point, the length wrapped to
-/// reach it, and the test on the span's direction e (in this block's
-/// frame, pointing away from it) that lets it leave there.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Candidate {
-    point: [f64; 2],
-    arc: f64,
-    /// Leaves where e · a ≥ 0 or (at a corner anchor) e · b ≥ 0.
-    a: [f64; 2],
-    b: Option<[f64; 2]>,
-    /// The edge the ribbon would wrap along next (whose outward normal is
-    /// a) and, at a corner anchor, the other edge there (normal b).
-    next: usize,
-    other: Option<usize>,
-}
-
-impl Candidate {
-    /// Whether the span leaves here towards `target` (this block's frame),
-    /// `inside` the edge nearest to the target where the target lies inside
-    /// this block (the other block's corner pressed into it, as penalty
-    /// contact allows: module doc).
-    #[inline]
-    fn leaves(&self, target: [f64; 2], inside: Option<usize>) -> bool {
-        let e = [target[0] - self.point[0], target[1] - self.point[1]];
-        e[0] * self.a[0] + e[1] * self.a[1] >= 0.0
-            || self.b.is_some_and(|b| e[0] * b[0] + e[1] * b[1] >= 0.0)
-            || inside.is_some_and(|k| k == self.next || Some(k) == self.other)
-    }
-}
-
-/// The edge of the outline (half thickness `h`) nearest to `target`
-/// (frame), where the target lies inside the block; `None` outside.
-#[inline]
-fn nearest_edge_inside(h: f64, target: [f64; 2]) -> Option<usize> {
-    let [u, w] = target;
-    if u.abs() >= R || w.abs() >= h {
-        return None;
-    }
-    // Depth to each edge: w = −h, u = r, w = h, u = −r (edges 0..3).
-    let depths = [h + w, R - u, h - w, R + u];
-    (0..4).min_by(|&i, &j| depths[i].total_cmp(&depths[j]))
-}
-
-/// One way round (σ = ±1) from an anchor: the anchor itself, then the
-/// four corners in turn (fixed in the block: made once).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Way {
-    c: [Candidate; 5],
-    /// The block's half thickness h.
-    h: f64,
-}
-
-impl Way {
-    fn new(o: &Outline, anchor: Anchor, sigma: i32) -> Self {
-        let k = anchor.edge % 4;
-        let f = anchor.along;
-        let at_corner = f == 0.0;
-        let first = Candidate {
-            point: o.on_edge(k, f),
-            arc: 0.0,
-            a: o.normal(k),
-            b: at_corner.then(|| o.normal(k + 3)),
-            next: k,
-            other: at_corner.then_some((k + 3) % 4),
-        };
-        let mut c = [first; 5];
-        let (mut arc, mut m) = if sigma > 0 {
-            ((1.0 - f) * o.edge_length(k), k + 1)
-        } else if at_corner {
-            // The anchor is corner k: the next one back is k − 1.
-            (o.edge_length(k + 3), k + 3)
-        } else {
-            (f * o.edge_length(k), k)
-        };
-        for slot in c.iter_mut().skip(1) {
-            // Arriving at corner m along the edge from the previous corner.
-            let prev = if sigma > 0 { m + 3 } else { m + 1 };
-            let (p, q) = (o.corner(m), o.corner(prev));
-            let len = ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt();
-            let next_edge = if sigma > 0 { m % 4 } else { (m + 3) % 4 };
-            *slot = Candidate {
-                point: p,
-                arc,
-                a: [(p[0] - q[0]) / len, (p[1] - q[1]) / len],
-                b: None,
-                next: next_edge,
-                other: None,
-            };
-            arc += o.edge_length(next_edge);
-            m = if sigma > 0 { m + 1 } else { m + 3 };
-        }
-        Self {
-            c,
-            h: o.half_thickness,
-        }
-    }
-
-    /// The first candidate that leaves towards `target` (the last if none).
-    #[inline]
-    fn first_leaving(&self, target: [f64; 2]) -> usize {
-        let inside = nearest_edge_inside(self.h, target);
-        self.c
-            .iter()
-            .position(|c| c.leaves(target, inside))
-            .unwrap_or(self.c.len() - 1)
-    }
-}
-
-/// The lower block's frame seen from the upper one's: x_U = m x_L + o
-/// (m orthogonal, so x_L = mᵀ (x_U − o)).
-#[derive(Debug, Clone, Copy)]
-struct Relative {
-    m: [[f64; 2]; 2],
-    o: [f64; 2],
-}
-
-impl Relative {
-    #[inline]
-    fn new(u: &Pose, l: &Pose) -> Self {
-        let dot = |a: [f64; 2], b: [f64; 2]| a[0] * b[0] + a[1] * b[1];
-        let d = [l.centre[0] - u.centre[0], l.centre[1] - u.centre[1]];
-        Self {
-            m: [
-                [dot(l.t, u.t), dot(l.nu, u.t)],
-                [dot(l.t, u.nu), dot(l.nu, u.nu)],
-            ],
-            o: [dot(d, u.t), dot(d, u.nu)],
-        }
-    }
-    #[inline]
-    fn to_upper(self, p: [f64; 2]) -> [f64; 2] {
-        [
-            self.m[0][0] * p[0] + self.m[0][1] * p[1] + self.o[0],
-            self.m[1][0] * p[0] + self.m[1][1] * p[1] + self.o[1],
-        ]
-    }
-    #[inline]
-    fn to_lower(self, p: [f64; 2]) -> [f64; 2] {
-        let d = [p[0] - self.o[0], p[1] - self.o[1]];
-        [
-            self.m[0][0] * d[0] + self.m[1][0] * d[1],
-            self.m[0][1] * d[0] + self.m[1][1] * d[1],
-        ]
-    }
-}
-
-/// A ribbon's four ways round (two from each anchor), made once.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Ways {
-    upper: [Way; 2],
-    lower: [Way; 2],
 }
 
 impl Ribbon {
@@ -267,6 +112,20 @@ impl Ribbon {
     /// [`Ribbon::span`] with the ways round made beforehand.
     #[inline]
     pub fn span_with(&self, ways: &Ways, upper: &Pose, lower: &Pose, stiffness: f64) -> Span {
+        self.span_from(ways, upper, lower, stiffness, None)
+    }
+
+    /// [`Ribbon::span_with`], each common tangent started from `warm`'s
+    /// (the last evaluation's, updated) where given.
+    #[inline]
+    fn span_from(
+        &self,
+        ways: &Ways,
+        upper: &Pose,
+        lower: &Pose,
+        stiffness: f64,
+        mut warm: Option<&mut Warm>,
+    ) -> Span {
         let rel = Relative::new(upper, lower);
         // The shortest way round with a common tangent; where none has
         // one (never seen), the shortest of the last guesses.
@@ -274,12 +133,25 @@ impl Ribbon {
         let mut guess = best;
         for (a, wu) in ways.upper.iter().enumerate() {
             for (b, wl) in ways.lower.iter().enumerate() {
-                let ((ju, jl), found) = common_tangent(wu, wl, &rel);
+                let ((ju, jl), found) = match warm.as_deref_mut() {
+                    Some(w) => {
+                        let r = warm_tangent(wu, wl, &rel, w[2 * a + b]);
+                        w[2 * a + b] = r.0;
+                        r
+                    }
+                    None => common_tangent(wu, wl, &rel),
+                };
                 let (cu, cl) = (wu.c[ju], wl.c[jl]);
+                let slot = if found { &mut best } else { &mut guess };
+                // The free span is ≥ 0 and rounded addition is monotone:
+                // where the wrapped lengths alone reach the slot's, the
+                // whole length does (its square root spared).
+                if cu.arc + cl.arc >= slot.0 {
+                    continue;
+                }
                 let e = rel.to_upper(cl.point);
                 let free = ((e[0] - cu.point[0]).powi(2) + (e[1] - cu.point[1]).powi(2)).sqrt();
                 let length = cu.arc + free + cl.arc;
-                let slot = if found { &mut best } else { &mut guess };
                 if length < slot.0 {
                     *slot = (length, a, ju, b, jl);
                 }
@@ -307,26 +179,6 @@ impl Ribbon {
     }
 }
 
-/// The common tangent of one way round on each block: alternately the
-/// first candidate on each that leaves towards the other's point, until
-/// neither changes; with whether it got there. A way round whose guesses
-/// cycle has no common tangent (its last guess may be a straight line
-/// through a block, shorter than every real path: it is not a length).
-#[inline]
-fn common_tangent(wu: &Way, wl: &Way, rel: &Relative) -> ((usize, usize), bool) {
-    let (mut ju, mut jl) = (0, 0);
-    for _ in 0..10 {
-        let nu = wu.first_leaving(rel.to_upper(wl.c[jl].point));
-        let nl = wl.first_leaving(rel.to_lower(wu.c[nu].point));
-        let done = nu == ju && nl == jl;
-        (ju, jl) = (nu, nl);
-        if done {
-            return ((ju, jl), true);
-        }
-    }
-    ((ju, jl), false)
-}
-
 impl Ribbons {
     /// The ribbons with their ways round made.
     pub fn new(outline: Outline, ribbons: [Ribbon; 2], stiffness: f64) -> Self {
@@ -336,6 +188,7 @@ impl Ribbons {
             ribbons,
             stiffness,
             damping: 2.0 * (stiffness * M).sqrt(),
+            warm: true,
         }
     }
 
@@ -366,15 +219,60 @@ impl Ribbons {
         if self.damping == 0.0 {
             return;
         }
-        self.for_each_span(n, q, |i, pu, pl, s| {
-            let (extra, _) = self.dashpot(i, pu, pl, s, v);
-            if extra == 0.0 {
-                return;
+        self.for_each_span(n, q, |i, pu, pl, s| self.add_dashpot(i, pu, pl, s, v, out));
+    }
+
+    /// One ribbon's dashpot force at v into `out` (forces).
+    #[inline]
+    fn add_dashpot(&self, i: usize, pu: &Pose, pl: &Pose, s: &Span, v: &[f64], out: &mut [f64]) {
+        let (extra, _) = self.dashpot(i, pu, pl, s, v);
+        if extra == 0.0 {
+            return;
+        }
+        let f = [extra * s.dir[0], extra * s.dir[1]];
+        add_point_force(out, pu, i, s.d, f);
+        add_point_force(out, pl, i + 1, s.e, [-f[0], -f[1]]);
+    }
+
+    /// Every ribbon's span at the blocks' `poses` (one per block, as
+    /// [`Pose::of`] gives them) into `out`, in the order of
+    /// [`Ribbons::for_each_span`]: the one search of a force evaluation,
+    /// for [`Ribbons::gradient_of`] and [`Ribbons::add_damping_of`].
+    /// Each common tangent starts from `warm`'s (the last call's, kept by
+    /// the caller) where [`Ribbons::warm`].
+    pub fn find_spans(&self, poses: &[Pose], out: &mut Vec<Span>, warm: &mut Vec<Warm>) {
+        out.clear();
+        let junctions = poses.len().saturating_sub(1);
+        warm.resize(2 * junctions, [(0, 0); 4]);
+        let mut last = warm.iter_mut();
+        for w in poses.windows(2) {
+            for (r, ways) in self.ribbons.iter().zip(&self.ways) {
+                let start = last.next().filter(|_| self.warm);
+                out.push(r.span_from(ways, &w[0], &w[1], self.stiffness, start));
             }
-            let f = [extra * s.dir[0], extra * s.dir[1]];
-            add_point_force(out, pu, i, s.d, f);
-            add_point_force(out, pl, i + 1, s.e, [-f[0], -f[1]]);
-        });
+        }
+    }
+
+    /// [`Ribbons::gradient`] from the spans [`Ribbons::find_spans`] found
+    /// at `poses`: the same numbers, bit for bit.
+    pub fn gradient_of(&self, gravity: f64, poses: &[Pose], spans: &[Span], grad: &mut [f64]) {
+        self.gravity_gradient(poses.len(), gravity, grad);
+        for (k, s) in spans.iter().enumerate() {
+            let i = k / 2;
+            add_tension(grad, &poses[i], &poses[i + 1], i, s);
+        }
+    }
+
+    /// [`Ribbons::add_damping`] from the spans [`Ribbons::find_spans`]
+    /// found at `poses`: the same numbers, bit for bit.
+    pub fn add_damping_of(&self, poses: &[Pose], spans: &[Span], v: &[f64], out: &mut [f64]) {
+        if self.damping == 0.0 {
+            return;
+        }
+        for (k, s) in spans.iter().enumerate() {
+            let i = k / 2;
+            self.add_dashpot(i, &poses[i], &poses[i + 1], s, v, out);
+        }
     }
 
     /// Power the dashpots dissipate at (q, v), Σ −extra · L̇ ≥ 0.
@@ -432,19 +330,16 @@ impl Ribbons {
     /// `grad`: T e at D on the upper block, −T e at E on the lower one,
     /// with the sign of a gradient (the force is −grad).
     pub fn gradient(&self, n: usize, gravity: f64, q: &[f64], grad: &mut [f64]) {
+        self.gravity_gradient(n, gravity, grad);
+        self.for_each_span(n, q, |i, pu, pl, s| add_tension(grad, pu, pl, i, s));
+    }
+
+    /// Gravity's gradient, −m G per X_n, written into `grad`.
+    fn gravity_gradient(&self, n: usize, gravity: f64, grad: &mut [f64]) {
         let g = M * gravity;
         for (k, x) in grad.iter_mut().enumerate().take(3 * n) {
             *x = if k % 3 == 0 { -g } else { 0.0 };
         }
-        self.for_each_span(n, q, |i, pu, pl, s| {
-            if s.tension == 0.0 {
-                return;
-            }
-            let f = [s.tension * s.dir[0], s.tension * s.dir[1]];
-            // The force on the upper block is +T e at D: its gradient −T e.
-            add_point_force(grad, pu, i, s.d, [-f[0], -f[1]]);
-            add_point_force(grad, pl, i + 1, s.e, f);
-        });
     }
 
     /// The ribbons' rest lengths in the hanging column: every block at
@@ -466,6 +361,19 @@ impl Ribbons {
         });
         Self::new(outline, ribbons, 1.0)
     }
+}
+
+/// One taut ribbon's tension into the gradient `grad`: T e at D on the
+/// upper block (pose `pu`, block i), −T e at E on the lower one.
+#[inline]
+fn add_tension(grad: &mut [f64], pu: &Pose, pl: &Pose, i: usize, s: &Span) {
+    if s.tension == 0.0 {
+        return;
+    }
+    let f = [s.tension * s.dir[0], s.tension * s.dir[1]];
+    // The force on the upper block is +T e at D: its gradient −T e.
+    add_point_force(grad, pu, i, s.d, [-f[0], -f[1]]);
+    add_point_force(grad, pl, i + 1, s.e, f);
 }
 
 #[cfg(test)]
@@ -664,6 +572,33 @@ mod tests {
 #[cfg(test)]
 mod dashpot_tests {
     use super::tests::{column, tank_ribbons};
+    use super::{Pose, Span};
+
+    #[test]
+    fn spans_found_once_give_the_forces_bit_for_bit() {
+        // The gradient and the dashpots from one search (`find_spans`)
+        // against each searching on its own, at states bent every way.
+        let r = tank_ribbons(1.5);
+        for seed in 0..100 {
+            let mut q = column(5, 1.5);
+            let s = seed as f64;
+            for (k, x) in q.iter_mut().enumerate() {
+                let amp = if k % 3 == 2 { 1.5 } else { 0.3 };
+                *x += amp * ((k as f64) * 1.3 + s * 0.41).sin();
+            }
+            let v: Vec<f64> = (0..q.len()).map(|k| 0.01 * (k as f64 + s).cos()).collect();
+            let poses: Vec<Pose> = (0..5).map(|i| Pose::of(&q, i)).collect();
+            let mut spans: Vec<Span> = Vec::new();
+            r.find_spans(&poses, &mut spans, &mut Vec::new());
+            let (mut a, mut b) = (vec![0.0; 15], vec![0.0; 15]);
+            r.gradient(5, 2e-4, &q, &mut a);
+            r.gradient_of(2e-4, &poses, &spans, &mut b);
+            r.add_damping(5, &q, &v, &mut a);
+            r.add_damping_of(&poses, &spans, &v, &mut b);
+            let bits = |x: &[f64]| x.iter().map(|y| y.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&a), bits(&b), "seed {seed}");
+        }
+    }
 
     #[test]
     fn the_dashpot_dissipates_what_its_forces_take() {

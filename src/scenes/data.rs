@@ -492,6 +492,32 @@ pub const BYTES_PER_BLOCK_RUN: f64 = 400.0;
 /// command line, titles.
 pub const BYTES_FIXED: f64 = 64e3;
 
+/// Bytes of one impact in the data file: the event (`{t, blocks, speed}`
+/// pretty-printed, 130–150 bytes) and its time and speed in s and cm/s
+/// (`units`, two numbers of at most 40 bytes).
+pub const BYTES_PER_IMPACT: f64 = 240.0;
+
+/// Impacts allowed for per block and 100 τ of a run whose blocks may
+/// touch (ribbons with contact): the toy in air clatters at 0.52 (58
+/// impacts of 6 blocks in 1855 τ, docs/experiments.md, "The toy in air"),
+/// the tank's plates at 0; four times the toy's. Not a bound: how many
+/// impacts a run has is not known before it runs.
+pub const IMPACTS_PER_BLOCK_100_TAU: f64 = 2.0;
+
+/// The bytes allowed for the impacts a run of `s` records (0 where its
+/// blocks cannot touch).
+pub fn impact_bytes(s: &Scene) -> f64 {
+    let touch = s
+        .apparatus
+        .as_ref()
+        .is_some_and(|a| a.ribbons && a.contact.is_some());
+    if !touch {
+        return 0.0;
+    }
+    let n = s.model.n as f64;
+    n * s.run.t_end / 100.0 * IMPACTS_PER_BLOCK_100_TAU * BYTES_PER_IMPACT
+}
+
 /// Numbers of the data file per block and sample of `output`: θ, X and
 /// Y of each frame, and sin θ where a kymograph is drawn.
 fn values_per_block_sample(output: &OutputSpec) -> f64 {
@@ -505,8 +531,9 @@ fn values_per_block_sample(output: &OutputSpec) -> f64 {
 /// An upper estimate of the bytes of `scene`'s data file drawn with
 /// `movie` (a kymograph figure with `kymograph_rows` rows), made before
 /// any work (docs/limits.md): per run, samples × N × the numbers of each
-/// block × [`BYTES_PER_VALUE`], plus N × [`BYTES_PER_BLOCK_RUN`]; plus
-/// [`BYTES_FIXED`]. Returns the bytes and the largest samples × N.
+/// block × [`BYTES_PER_VALUE`], plus N × [`BYTES_PER_BLOCK_RUN`] and
+/// the impacts' allowance ([`impact_bytes`]); plus [`BYTES_FIXED`].
+/// Returns the bytes and the largest samples × N.
 pub fn estimated_bytes(scene: &Scene, movie: &MovieOptions, kymograph_rows: usize) -> (f64, f64) {
     let per = values_per_block_sample(&scene.output);
     let mut bytes = BYTES_FIXED;
@@ -518,7 +545,7 @@ pub fn estimated_bytes(scene: &Scene, movie: &MovieOptions, kymograph_rows: usiz
             _ => times.len(),
         } as f64;
         let n = s.model.n as f64;
-        bytes += samples * n * per * BYTES_PER_VALUE + n * BYTES_PER_BLOCK_RUN;
+        bytes += samples * n * per * BYTES_PER_VALUE + n * BYTES_PER_BLOCK_RUN + impact_bytes(&s);
         if matches!(scene.output, OutputSpec::Energy) {
             // Six numbers a sample, whatever N.
             bytes += ENERGY_SAMPLES as f64 * EnergyData::VALUES_PER_SAMPLE * BYTES_PER_VALUE;

@@ -8,7 +8,10 @@ use super::protocol::{Drive, Protocol};
 use crate::model::Ladder;
 use crate::model::ladder::{ForceScratch, Frames, ix, iy};
 use crate::model::media::{self, Terms};
+use crate::model::outline::Pose;
 use crate::model::params::{M, R};
+use crate::model::ribbons::{Ribbons, Span};
+use crate::model::tangent::Warm;
 
 /// Positions q and velocities v, both in the model's layout [X, Y, θ per block].
 #[derive(Debug, Clone, PartialEq)]
@@ -51,6 +54,14 @@ pub struct Rhs<'a> {
     /// The deepest overlap of two blocks in contact seen so far, in s
     /// (`model::contact`; 0 without contact).
     pub deepest_overlap: f64,
+    /// The toy as built: the blocks' poses at the q of the last
+    /// evaluation (from `frames`) and the ribbons' spans found there, one
+    /// search for the ribbons' tension and dashpot alike.
+    poses: Vec<Pose>,
+    spans: Vec<Span>,
+    /// Each ribbon's tangent points at the last evaluation, where the
+    /// next one's search starts (`model::tangent::warm_tangent`).
+    warm: Vec<Warm>,
 }
 
 impl<'a> Rhs<'a> {
@@ -80,6 +91,9 @@ impl<'a> Rhs<'a> {
             force: vec![0.0; dof],
             frames: Frames::new(p.n, q0),
             deepest_overlap: 0.0,
+            poses: Vec::new(),
+            spans: Vec::new(),
+            warm: Vec::new(),
         }
     }
 
@@ -176,6 +190,22 @@ impl<'a> Rhs<'a> {
         }
     }
 
+    /// The toy as built at `q` (`frames` already there): the blocks'
+    /// poses, the ribbons' spans (found once for the evaluation) and from
+    /// them the ribbons' and gravity's gradient, the same numbers, bit
+    /// for bit, as [`Links::gradient`](crate::model::terms::Links::gradient).
+    fn built_gradient(&mut self, ribbons: &Ribbons, q: &[f64]) {
+        self.poses.clear();
+        for i in 0..self.ladder.n() {
+            let (t, nu) = self.frames.get(i);
+            let centre = [q[ix(i)], q[iy(i)]];
+            self.poses.push(Pose { centre, t, nu });
+        }
+        ribbons.find_spans(&self.poses, &mut self.spans, &mut self.warm);
+        let g = self.ladder.params.gravity;
+        ribbons.gradient_of(g, &self.poses, &self.spans, &mut self.grad);
+    }
+
     /// Full acceleration including damping, −M⁻¹(∂E/∂q + Γ v).
     #[inline]
     pub fn acceleration(&mut self, q: &[f64], v: &[f64], acc: &mut [f64]) {
@@ -196,7 +226,9 @@ impl<'a> Rhs<'a> {
         let ladder = self.ladder;
         self.frames.at(ladder.n(), q);
         self.force_evals += 1;
-        if self.terms.links.is_paper() && ladder.built.is_none() {
+        if let Some(b) = ladder.built {
+            self.built_gradient(&b.ribbons, q);
+        } else if self.terms.links.is_paper() {
             ladder.gradient_with(q, &mut self.grad, &mut self.scratch);
         } else {
             self.terms_gradient(q, true);
@@ -212,13 +244,14 @@ impl<'a> Rhs<'a> {
             friction.add_forces(ladder, &t.links, &self.frames, (q, v), &mut self.force);
         }
         if let Some(b) = ladder.built {
-            b.ribbons.add_damping(ladder.n(), q, v, &mut self.force);
+            b.ribbons
+                .add_damping_of(&self.poses, &self.spans, v, &mut self.force);
         }
         if let Some(b) = ladder.built
             && let Some(c) = b.contact
         {
             let o = b.ribbons.outline;
-            let deepest = c.add_forces(ladder.blocks(), &o, q, v, &mut self.force);
+            let deepest = c.add_forces_posed(ladder.blocks(), &o, &self.poses, v, &mut self.force);
             self.deepest_overlap = self.deepest_overlap.max(deepest);
         }
         let j = ladder.params.inertia + t.added_inertia;

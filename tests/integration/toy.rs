@@ -310,3 +310,68 @@ fn the_first_three_flips_hold_in_the_step_and_the_sampling() {
         }
     }
 }
+
+#[test]
+fn the_warm_tangent_search_runs_the_toy_as_the_cold_one_bit_for_bit() {
+    // The toy as built-in (the hand's turn, the clatter: corners pressed
+    // into faces where the ribbons leave them), each common tangent
+    // started from the last evaluation's against searched from the
+    // anchors every time: the same states, bit for bit, every 5 τ.
+    let sc = parse(TOY, "toy", "toy").unwrap().scenario().unwrap();
+    let samples: Vec<f64> = (0..(sc.t_end / 5.0) as usize)
+        .map(|k| 5.0 * k as f64)
+        .collect();
+    let cfg = IntegratorConfig::fixed(IntegratorKind::Rk4, 0.02);
+    let (warm, arrivals) = crate::ribbons::run_bits(&sc, &samples, &cfg, true);
+    let (cold, cold_arrivals) = crate::ribbons::run_bits(&sc, &samples, &cfg, false);
+    assert_eq!(arrivals, cold_arrivals);
+    assert!(warm == cold, "the warm search moved the run");
+}
+
+#[test]
+fn the_toy_data_file_is_within_its_estimate_its_impacts_counted() {
+    // `ladder figure toy` written, against the estimate made before any
+    // work (`scenes::data::estimated_bytes`): the file within it, and the
+    // bytes its impacts take (the events and their times and speeds in
+    // s and cm/s) within the impacts' allowance (which it counts).
+    use jacobs_ladder::catalog;
+    use jacobs_ladder::scene::Kind;
+    use jacobs_ladder::scenes::data::{estimated_bytes, impact_bytes};
+    use jacobs_ladder::scenes::options::MovieOptions;
+    let dir = crate::common::tempdir::TempDir::new("toy-estimate");
+    let out = crate::common::ladder_cli(&["figure", "toy", "--out", dir.to_str().unwrap()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(dir.join("figure-toy.json")).unwrap();
+    let scene = &catalog::find(Kind::Figure, "toy").unwrap().scene;
+    let (estimate, _) = estimated_bytes(scene, &MovieOptions::default(), 400);
+    let allowance: f64 = scene.runs().iter().map(|(s, _)| impact_bytes(s)).sum();
+    // The impacts' bytes: the file pretty-printed again with and without them.
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let whole = serde_json::to_string_pretty(&v).unwrap().len();
+    let mut impacts = 0;
+    for run in v["runs"].as_array_mut().unwrap() {
+        let run = run.as_object_mut().unwrap();
+        impacts += run["impacts"].as_array().map_or(0, Vec::len);
+        run.remove("impacts");
+        if let Some(u) = run.get_mut("units").and_then(|u| u.as_object_mut()) {
+            u.remove("impact_times_s");
+            u.remove("impact_speeds_cm_s");
+        }
+    }
+    let taken = whole - serde_json::to_string_pretty(&v).unwrap().len();
+    println!(
+        "file {} bytes, estimate {estimate:.0}; {impacts} impacts take {taken} bytes, allowed {allowance:.0}",
+        text.len()
+    );
+    assert!(impacts > 0, "the toy clatters");
+    assert!(
+        (text.len() as f64) <= estimate,
+        "{} > {estimate}",
+        text.len()
+    );
+    assert!((taken as f64) <= allowance, "{taken} > {allowance}");
+}

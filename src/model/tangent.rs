@@ -1,0 +1,234 @@
+//! The common tangent of two blocks' outlines, the search behind a
+//! ribbon's free span (`ribbons`; docs/experiments.md, "The toy as
+//! built"): from each anchor the places the ribbon may leave its block
+//! (the anchor, then the corners in turn: a way round), the test that
+//! lets it leave at one, and the alternating search for the pair where
+//! both leave towards each other.
+//!
+//! The test is a sign, e · a ≥ 0, and where the two blocks touch at the
+//! tangent points it is a tie: two corners that coincide (a free span of
+//! zero length, as at the strap hinge's pivot, `strap`) give e of the
+//! size of the rounding of the poses, and a span along the edge it leaves
+//! gives e ⟂ a. Either answer gives the same length there (the length is
+//! continuous), but a tie lost sends the ribbon on round the next corner
+//! where it should leave, and past a coinciding corner the search finds a
+//! path round the far end that is no ribbon's. A tie counts as leaving:
+//! e · a ≥ −[`TIE`].
+
+use super::outline::{Outline, Pose};
+use super::params::R;
+
+/// How far (in s) the span may point back along the edge it came by and
+/// still leave: rounding of the poses, far below any real wrap.
+pub const TIE: f64 = 1e-12;
+
+/// A ribbon's glue point on a block: edge k (0..4) at fraction f ∈ [0, 1)
+/// from corner k towards corner k + 1 (`outline`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Anchor {
+    pub edge: usize,
+    pub along: f64,
+}
+
+/// Where a ribbon may leave a block: a frame point, the length wrapped to
+/// reach it, and the test on the span's direction e (in this block's
+/// frame, pointing away from it) that lets it leave there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Candidate {
+    pub(super) point: [f64; 2],
+    pub(super) arc: f64,
+    /// Leaves where e · a ≥ 0 or (at a corner anchor) e · b ≥ 0 (a tie,
+    /// within [`TIE`], counts as leaving: module doc).
+    a: [f64; 2],
+    b: Option<[f64; 2]>,
+    /// The edge the ribbon would wrap along next (whose outward normal is
+    /// a) and, at a corner anchor, the other edge there (normal b).
+    next: usize,
+    other: Option<usize>,
+}
+
+impl Candidate {
+    /// Whether the span leaves here towards `target` (this block's frame),
+    /// `inside` the edge nearest to the target where the target lies inside
+    /// this block (the other block's corner pressed into it, as penalty
+    /// contact allows: module doc).
+    #[inline]
+    fn leaves(&self, target: [f64; 2], inside: Option<usize>) -> bool {
+        let e = [target[0] - self.point[0], target[1] - self.point[1]];
+        e[0] * self.a[0] + e[1] * self.a[1] >= -TIE
+            || self.b.is_some_and(|b| e[0] * b[0] + e[1] * b[1] >= -TIE)
+            || inside.is_some_and(|k| k == self.next || Some(k) == self.other)
+    }
+}
+
+/// The edge of the outline (half thickness `h`) nearest to `target`
+/// (frame), where the target lies inside the block; `None` outside.
+#[inline]
+fn nearest_edge_inside(h: f64, target: [f64; 2]) -> Option<usize> {
+    let [u, w] = target;
+    if u.abs() >= R || w.abs() >= h {
+        return None;
+    }
+    // Depth to each edge: w = −h, u = r, w = h, u = −r (edges 0..3).
+    let depths = [h + w, R - u, h - w, R + u];
+    (0..4).min_by(|&i, &j| depths[i].total_cmp(&depths[j]))
+}
+
+/// One way round (σ = ±1) from an anchor: the anchor itself, then the
+/// four corners in turn (fixed in the block: made once).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Way {
+    pub(super) c: [Candidate; 5],
+    /// The block's half thickness h.
+    h: f64,
+}
+
+impl Way {
+    pub(super) fn new(o: &Outline, anchor: Anchor, sigma: i32) -> Self {
+        let k = anchor.edge % 4;
+        let f = anchor.along;
+        let at_corner = f == 0.0;
+        let first = Candidate {
+            point: o.on_edge(k, f),
+            arc: 0.0,
+            a: o.normal(k),
+            b: at_corner.then(|| o.normal(k + 3)),
+            next: k,
+            other: at_corner.then_some((k + 3) % 4),
+        };
+        let mut c = [first; 5];
+        let (mut arc, mut m) = if sigma > 0 {
+            ((1.0 - f) * o.edge_length(k), k + 1)
+        } else if at_corner {
+            // The anchor is corner k: the next one back is k − 1.
+            (o.edge_length(k + 3), k + 3)
+        } else {
+            (f * o.edge_length(k), k)
+        };
+        for slot in c.iter_mut().skip(1) {
+            // Arriving at corner m along the edge from the previous corner.
+            let prev = if sigma > 0 { m + 3 } else { m + 1 };
+            let (p, q) = (o.corner(m), o.corner(prev));
+            let len = ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt();
+            let next_edge = if sigma > 0 { m % 4 } else { (m + 3) % 4 };
+            *slot = Candidate {
+                point: p,
+                arc,
+                a: [(p[0] - q[0]) / len, (p[1] - q[1]) / len],
+                b: None,
+                next: next_edge,
+                other: None,
+            };
+            arc += o.edge_length(next_edge);
+            m = if sigma > 0 { m + 1 } else { m + 3 };
+        }
+        Self {
+            c,
+            h: o.half_thickness,
+        }
+    }
+
+    /// The first candidate that leaves towards `target` (the last if none).
+    #[inline]
+    fn first_leaving(&self, target: [f64; 2]) -> usize {
+        let inside = nearest_edge_inside(self.h, target);
+        self.c
+            .iter()
+            .position(|c| c.leaves(target, inside))
+            .unwrap_or(self.c.len() - 1)
+    }
+}
+
+/// The lower block's frame seen from the upper one's: x_U = m x_L + o
+/// (m orthogonal, so x_L = mᵀ (x_U − o)).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Relative {
+    m: [[f64; 2]; 2],
+    o: [f64; 2],
+}
+
+impl Relative {
+    #[inline]
+    pub(super) fn new(u: &Pose, l: &Pose) -> Self {
+        let dot = |a: [f64; 2], b: [f64; 2]| a[0] * b[0] + a[1] * b[1];
+        let d = [l.centre[0] - u.centre[0], l.centre[1] - u.centre[1]];
+        Self {
+            m: [
+                [dot(l.t, u.t), dot(l.nu, u.t)],
+                [dot(l.t, u.nu), dot(l.nu, u.nu)],
+            ],
+            o: [dot(d, u.t), dot(d, u.nu)],
+        }
+    }
+    #[inline]
+    pub(super) fn to_upper(self, p: [f64; 2]) -> [f64; 2] {
+        [
+            self.m[0][0] * p[0] + self.m[0][1] * p[1] + self.o[0],
+            self.m[1][0] * p[0] + self.m[1][1] * p[1] + self.o[1],
+        ]
+    }
+    #[inline]
+    fn to_lower(self, p: [f64; 2]) -> [f64; 2] {
+        let d = [p[0] - self.o[0], p[1] - self.o[1]];
+        [
+            self.m[0][0] * d[0] + self.m[1][0] * d[1],
+            self.m[0][1] * d[0] + self.m[1][1] * d[1],
+        ]
+    }
+}
+
+/// A ribbon's four ways round (two from each anchor), made once.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ways {
+    pub(super) upper: [Way; 2],
+    pub(super) lower: [Way; 2],
+}
+
+/// The common tangent of one way round on each block: alternately the
+/// first candidate on each that leaves towards the other's point, until
+/// neither changes; with whether it got there. A way round whose guesses
+/// cycle has no common tangent (its last guess may be a straight line
+/// through a block, shorter than every real path: it is not a length).
+#[inline]
+pub(super) fn common_tangent(wu: &Way, wl: &Way, rel: &Relative) -> ((usize, usize), bool) {
+    let (mut ju, mut jl) = (0, 0);
+    for _ in 0..10 {
+        let nu = wu.first_leaving(rel.to_upper(wl.c[jl].point));
+        let nl = wl.first_leaving(rel.to_lower(wu.c[nu].point));
+        let done = nu == ju && nl == jl;
+        (ju, jl) = (nu, nl);
+        if done {
+            return ((ju, jl), true);
+        }
+    }
+    ((ju, jl), false)
+}
+
+/// The tangent points (upper, lower) of each of a ribbon's four pairs of
+/// ways round (upper way a, lower way b at 2a + b) at the last
+/// evaluation: where [`warm_tangent`] starts.
+pub type Warm = [(usize, usize); 4];
+
+/// [`common_tangent`] started from the last evaluation's tangent points
+/// `last`: where they are still the common tangent (each the first
+/// candidate that leaves towards the other), that with two tests in
+/// place of the four or more of a search from the anchors; else the
+/// search from the anchors. The same answer as [`common_tangent`] where
+/// a way round has one common tangent (a test compares the two over
+/// whole runs of the tank and the toy, bit for bit).
+#[inline]
+pub(super) fn warm_tangent(
+    wu: &Way,
+    wl: &Way,
+    rel: &Relative,
+    last: (usize, usize),
+) -> ((usize, usize), bool) {
+    let (ju, jl) = last;
+    if (ju, jl) != (0, 0)
+        && wu.first_leaving(rel.to_upper(wl.c[jl].point)) == ju
+        && wl.first_leaving(rel.to_lower(wu.c[ju].point)) == jl
+    {
+        return (last, true);
+    }
+    common_tangent(wu, wl, rel)
+}
