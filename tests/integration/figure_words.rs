@@ -1,7 +1,8 @@
 //! The words every figure prints and every caption says, read as a
 //! referee reads them: angles in degrees written as a symbol, γ with its
 //! unit, angles in legends to one decimal, captions within a column's
-//! budget, and no caption calling a panel an inset. The pictures are the
+//! budget, no caption calling a panel an inset, and no legend over the
+//! data. The pictures are the
 //! shared render of the catalogue (`common::catalogue_render`, SVG among
 //! its formats), the captions the built-in scenes' with their formulas
 //! written out, as the data files, the gallery and the article give them.
@@ -182,4 +183,132 @@ fn no_caption_calls_a_panel_an_inset() {
         .map(|(entry, text)| format!("{entry}: {text}"))
         .collect();
     assert!(insets.is_empty(), "{insets:#?}");
+}
+
+/// A legend drawn inside a plot covers none of the data: no point of a
+/// curve or a marker (drawn before the legend, in its panel) falls inside
+/// the legend's box, except a legend's own sample lines, which lie wholly
+/// inside it. Every figure of the shared render (screen) and figure
+/// winding at every style, where a legend once covered the det C circle.
+#[test]
+fn no_legend_covers_the_data() {
+    let mut covered = Vec::new();
+    let (dir, _) = crate::common::catalogue_render();
+    let mut files: Vec<(String, String)> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().and_then(|e| e.to_str()) == Some("svg"))
+        .map(|p| (name(&p), std::fs::read_to_string(&p).unwrap()))
+        .collect();
+    let tmp = crate::common::tempdir::TempDir::new("legend-cover");
+    for style in ["paper", "paper-wide", "screen", "slide"] {
+        let out = tmp.join(style);
+        let run = crate::common::ladder_cli(&[
+            "figure",
+            "winding",
+            "--style",
+            style,
+            "--format",
+            "svg",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(
+            run.status.success(),
+            "{}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        let svg = std::fs::read_to_string(out.join("figure-winding.svg")).unwrap();
+        files.push((format!("figure-winding.svg at {style}"), svg));
+    }
+    let mut legends = 0;
+    for (file, svg) in &files {
+        let (n, found) = legend_covers(svg);
+        legends += n;
+        covered.extend(found.into_iter().map(|f| format!("{file}: {f}")));
+    }
+    assert!(legends >= 4, "only {legends} legend boxes were found");
+    assert!(covered.is_empty(), "legends over data: {covered:#?}");
+}
+
+/// (legend boxes found, the data points inside one) of one SVG: its
+/// elements in order, a panel starting at its white background, a legend
+/// box its translucent white rectangle.
+fn legend_covers(svg: &str) -> (usize, Vec<String>) {
+    let attr = |el: &str, key: &str| -> Option<f64> {
+        let at = el.find(&format!(" {key}=\""))? + key.len() + 3;
+        el[at..].split('"').next()?.parse().ok()
+    };
+    let mut points: Vec<Vec<(f64, f64)>> = Vec::new();
+    let (mut boxes, mut found) = (0, Vec::new());
+    for piece in svg.split('<').skip(1) {
+        let el = piece.split('>').next().unwrap_or("");
+        if el.starts_with("rect")
+            && el.contains("fill=\"#FFFFFF\"")
+            && el.contains("stroke=\"none\"")
+        {
+            let (x, y) = (attr(el, "x").unwrap_or(0.0), attr(el, "y").unwrap_or(0.0));
+            let (w, h) = (
+                attr(el, "width").unwrap_or(0.0),
+                attr(el, "height").unwrap_or(0.0),
+            );
+            if el.contains("opacity=\"1\"") {
+                points.clear(); // a panel's background: a new panel
+                continue;
+            }
+            boxes += 1;
+            let inside = |&(px, py): &(f64, f64)| {
+                px > x + 1.0 && px < x + w - 1.0 && py > y + 1.0 && py < y + h - 1.0
+            };
+            for curve in &points {
+                if curve.iter().all(inside) {
+                    continue; // a legend's own sample
+                }
+                if let Some(p) = curve.iter().find(|p| inside(p)) {
+                    found.push(format!(
+                        "({:.0}, {:.0}) under the legend at ({x}, {y})",
+                        p.0, p.1
+                    ));
+                }
+            }
+        } else if el.starts_with("polyline") {
+            let list = el
+                .split("points=\"")
+                .nth(1)
+                .and_then(|s| s.split('"').next());
+            let curve = list
+                .unwrap_or("")
+                .split_whitespace()
+                .filter_map(|xy| xy.split_once(','))
+                .filter_map(|(a, b)| Some((a.parse().ok()?, b.parse().ok()?)))
+                .collect();
+            points.push(curve);
+        } else if el.starts_with("line") && el.contains("opacity=\"1\"") {
+            let ends = ["x1", "y1", "x2", "y2"].map(|k| attr(el, k).unwrap_or(f64::NAN));
+            // A marker's stroke (an origin's cross), not a grid or an axis.
+            if (ends[2] - ends[0]).hypot(ends[3] - ends[1]) < 20.0 {
+                points.push(vec![(ends[0], ends[1]), (ends[2], ends[3])]);
+            }
+        }
+    }
+    (boxes, found)
+}
+
+/// The check above sees a curve under a legend, and lets a legend's own
+/// sample line (wholly inside its box) pass.
+#[test]
+fn the_legend_check_sees_a_covered_curve() {
+    let svg = |curve: &str| {
+        format!(
+            "<svg><rect x=\"0\" y=\"0\" width=\"300\" height=\"200\" opacity=\"1\" fill=\"#FFFFFF\" \
+             stroke=\"none\"/><polyline fill=\"none\" points=\"{curve}\"/><rect x=\"40\" y=\"40\" \
+             width=\"100\" height=\"30\" opacity=\"0.9\" fill=\"#FFFFFF\" stroke=\"none\"/></svg>"
+        )
+    };
+    let (boxes, found) = legend_covers(&svg("10,50 90,50 200,50"));
+    assert_eq!((boxes, found.len()), (1, 1), "{found:?}");
+    let (_, found) = legend_covers(&svg("50,55 80,55"));
+    assert!(found.is_empty(), "{found:?}");
+    let (_, found) = legend_covers(&svg("10,150 200,150"));
+    assert!(found.is_empty(), "{found:?}");
 }
