@@ -3,6 +3,8 @@
 //! and the geometry a caller needs to place its own marks.
 
 use super::grid::*;
+pub use super::marks::ChainMark;
+use super::marks::{draw_marks, mark_room};
 use crate::error::{Error, Result};
 use crate::model::Ladder;
 use crate::render::canvas::{Canvas, Pen};
@@ -48,115 +50,6 @@ pub struct FilmstripOptions {
     /// shrink, keeping their aspect ratio, so that the strip fits; a time
     /// caption wider than its snapshot goes on two lines.
     pub fit: Option<(u32, u32)>,
-}
-
-/// A labelled pointer beside a filmstrip snapshot at a point of the chain.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ChainMark {
-    /// Where along the chain, in blocks: 1 is the centre of block 1, 2.5
-    /// halfway between the centres of blocks 2 and 3.
-    pub at: f64,
-    /// The words beside the triangle (none when empty).
-    pub label: String,
-    /// What the mark points at (a kink, an antikink, an event): the
-    /// triangle takes the role's colour, the words its readable shade
-    /// ([`Theme::text_color`]).
-    pub role: Role,
-    /// The side of the ladder the pointer and its label go on (`Left` or
-    /// `Right`).
-    pub side: HAlign,
-}
-
-/// Draws `mark` onto a snapshot of `snap` drawn into `region` of `canvas`:
-/// a triangle pointing at the chain, its label beyond it. The tip clears
-/// the farthest node of the two blocks at the mark from the mark's point
-/// (`side_clear` false: on either side, as the paper's figures are drawn)
-/// or the chain's extent on the mark's side (`side_clear` true: the mark
-/// then stays beside its own column of a folded ladder).
-fn draw_mark(
-    theme: &Theme,
-    canvas: &mut Picture,
-    region: Region,
-    ladder: &Ladder,
-    snap: &Snapshot<'_>,
-    mark: &ChainMark,
-    side_clear: bool,
-) {
-    use crate::model::ladder::{ix, iy, nodes};
-    let n = ladder.n();
-    let q = snap.q;
-    let at = mark.at.clamp(1.0, n as f64);
-    let i = (at.floor() as usize).clamp(1, n) - 1;
-    let j = (i + 1).min(n - 1);
-    let f = at - (i + 1) as f64;
-    let point = [
-        q[ix(i)] + f * (q[ix(j)] - q[ix(i)]),
-        q[iy(i)] + f * (q[iy(j)] - q[iy(i)]),
-    ];
-    let (x, y) = snapshot::pixel_of(region, snap, point);
-    let ends: Vec<f32> = [i, j]
-        .into_iter()
-        .flat_map(|k| {
-            let (a, b) = nodes(q, k);
-            [a, b]
-        })
-        .map(|p| snapshot::pixel_of(region, snap, p).0 - x)
-        .collect();
-    // Clear of the chain: beyond the farthest node of the two blocks.
-    let reach = |dir: f32| {
-        if side_clear {
-            ends.iter().map(|d| dir * d).fold(0.0f32, f32::max)
-        } else {
-            ends.iter().map(|d| d.abs()).fold(0.0f32, f32::max)
-        }
-    };
-    // The far end of the label on a side: a mark whose words would leave
-    // the picture on its own side goes to the other side when they fit
-    // there (the last snapshot of a row has no room on its right).
-    let text = theme.mark_text;
-    let label_w = style::text_width(theme.font(), &mark.label, text);
-    let far = |dir: f32| {
-        x + dir * (reach(dir) + theme.mark_clear + theme.mark_arrow + theme.mark_space + label_w)
-    };
-    let fits = |dir: f32| (0.0..=canvas.width()).contains(&far(dir));
-    let mut side = mark.side;
-    let asked = if side == HAlign::Left { -1.0 } else { 1.0 };
-    if !fits(asked) && fits(-asked) {
-        side = if side == HAlign::Left {
-            HAlign::Right
-        } else {
-            HAlign::Left
-        };
-    }
-    let dir = if side == HAlign::Left { -1.0 } else { 1.0 };
-    let tip = x + dir * (reach(dir) + theme.mark_clear);
-    let base = tip + dir * theme.mark_arrow;
-    let half = theme.mark_half;
-    canvas.polygon(
-        &[(tip, y), (base, y - half), (base, y + half)],
-        theme.color(mark.role),
-    );
-    if mark.label.is_empty() {
-        return;
-    }
-    let align = if side == HAlign::Left {
-        HAlign::Right
-    } else {
-        HAlign::Left
-    };
-    canvas.text(
-        &mark.label,
-        (base + dir * theme.mark_space, y),
-        text,
-        theme.text_color(mark.role),
-        (align, VAlign::Middle),
-    );
-}
-
-/// Pixels a mark reaches beyond the chain on its side.
-fn mark_room(theme: &Theme, mark: &ChainMark) -> f32 {
-    let label = style::text_width(theme.font(), &mark.label, theme.mark_text);
-    theme.mark_clear + theme.mark_arrow + theme.mark_space + label + theme.mark_slack
 }
 
 /// Widest a folded snapshot may be, in pixels; a longer ladder is drawn
@@ -415,27 +308,41 @@ impl StripPlan {
         for rows in 1..=n {
             let k = n.div_ceil(rows);
             let room = (box_w as f32 - 2.0 * m - (k as f32 - 1.0) * gap) / k as f32;
-            let cw = room.min(w as f32).floor();
-            if cw < theme.min_snapshot.0 || (marked && cw < MARKED_SHARE * w as f32) {
-                continue;
-            }
+            let most = room.min(w as f32).floor();
+            // A caption wider than its snapshot widens its column: the
+            // widest snapshot, at most `most`, whose strip fits the box
+            // with its captions on `two` lines (so that a wider box never
+            // takes a narrower snapshot).
+            let fitting = |two: bool| {
+                let mut cw = most;
+                while cw > 0.0 && strip_w(k, cw, two) > box_w as f32 {
+                    cw -= 1.0;
+                }
+                cw
+            };
             // One line where it fits beside its neighbours and within the
             // box, two otherwise (or no way of `rows` rows).
-            let spill = |two| widest(k, two) > cw + gap - theme.caption_slack;
-            let two = spill(false) || strip_w(k, cw, false) > box_w as f32;
-            if two && (spill(true) || strip_w(k, cw, true) > box_w as f32) {
-                continue;
-            }
-            let lines = if two { 2.0 } else { 1.0 };
-            let caption = theme.caption_band(lines).floor();
-            let tall = (box_h as f32 - 2.0 * m - title - (rows as f32 - 1.0) * gap) / rows as f32
-                - caption;
-            let ch = (h as f32 * cw / w as f32).min(tall).floor();
-            if ch < theme.min_snapshot.1 {
-                continue;
-            }
-            let scale = (cw / w as f32).min(ch / h as f32);
-            ways.push((rows, cw as u32, ch as u32, two, scale));
+            let way = [false, true].into_iter().find_map(|two| {
+                let cw = fitting(two);
+                if cw < theme.min_snapshot.0 || (marked && cw < MARKED_SHARE * w as f32) {
+                    return None;
+                }
+                if widest(k, two) > cw + gap - theme.caption_slack {
+                    return None;
+                }
+                let lines = if two { 2.0 } else { 1.0 };
+                let caption = theme.caption_band(lines).floor();
+                let tall = (box_h as f32 - 2.0 * m - title - (rows as f32 - 1.0) * gap)
+                    / rows as f32
+                    - caption;
+                let ch = (h as f32 * cw / w as f32).min(tall).floor();
+                if ch < theme.min_snapshot.1 {
+                    return None;
+                }
+                let scale = (cw / w as f32).min(ch / h as f32);
+                Some((rows, cw as u32, ch as u32, two, scale))
+            });
+            ways.extend(way);
         }
         let best = ways.iter().map(|w| w.4).fold(0.0f32, f32::max);
         let Some(&(rows, cw, ch, two, _)) = ways.iter().find(|w| w.4 >= FIT_SHARE * best) else {
@@ -457,9 +364,7 @@ impl StripPlan {
             let c = &self.columns[0];
             let snap = c.snapshot(frame.q)?;
             let mut img = snapshot::snapshot_picture(theme, &snap, w, h)?;
-            for mark in marks {
-                draw_mark(theme, &mut img, c.region, &c.ladder, &snap, mark, false);
-            }
+            draw_marks(theme, &mut img, c.region, &c.ladder, &snap, marks, false);
             return Ok(img);
         };
         let mut img = Picture::new(theme, w as f32, h as f32);
@@ -471,12 +376,20 @@ impl StripPlan {
             let top = (HAlign::Center, VAlign::Top);
             img.text(&first, at, theme.column_number, number, top);
         }
-        for mark in marks {
-            let (j, at) = folded.locate(mark.at);
-            let c = &self.columns[j];
-            let local = ChainMark { at, ..mark.clone() };
+        // Each column's marks together, so that one may see the others'.
+        for (j, c) in self.columns.iter().enumerate() {
+            let local: Vec<ChainMark> = marks
+                .iter()
+                .filter_map(|m| {
+                    let (k, at) = folded.locate(m.at);
+                    (k == j).then(|| ChainMark { at, ..m.clone() })
+                })
+                .collect();
+            if local.is_empty() {
+                continue;
+            }
             let snap = c.snapshot(frame.q)?;
-            draw_mark(theme, &mut img, c.region, &c.ladder, &snap, &local, true);
+            draw_marks(theme, &mut img, c.region, &c.ladder, &snap, &local, true);
         }
         // A light frame holds each snapshot's columns together.
         let (w, h) = (w as f32, h as f32);
