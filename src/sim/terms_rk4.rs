@@ -391,31 +391,39 @@ fn acceleration(
     let [ax, ay, aw] = out;
     let frames = (&fsin[..np], &fcos[..np], &parity[..np]);
     let a = [&mut ax[..np], &mut ay[..np], &mut aw[..np]];
+    let vs = [&v[0][..np], &v[1][..np], &v[2][..np]];
     if let Some(law) = law {
         let all = (fsin, fcos, parity);
         friction::forces((c, law), all, (q, v), &s.grad, &mut s.links, &mut s.forces);
         let [fx, fy, ft] = &s.forces;
         let forces = [&fx[..np], &fy[..np], &ft[..np]];
-        let v = [&v[0][..np], &v[1][..np], &v[2][..np]];
-        if c.drag != 0.0 {
-            block_accelerations::<true, true>(c, forces, frames, v, a);
-        } else {
-            block_accelerations::<false, true>(c, forces, frames, v, a);
-        }
+        with_drag_or_not::<true>(c, forces, frames, vs, a);
     } else {
         let [gx, gy, gt] = &s.grad;
         let g = [&gx[..np], &gy[..np], &gt[..np]];
-        let v = [&v[0][..np], &v[1][..np], &v[2][..np]];
-        if c.drag != 0.0 {
-            block_accelerations::<true, false>(c, g, frames, v, a);
-        } else {
-            block_accelerations::<false, false>(c, g, frames, v, a);
-        }
+        with_drag_or_not::<false>(c, g, frames, vs, a);
     }
     let first = usize::from(c.driven);
     for a in [ax, ay, aw] {
         a[..first].fill(0.0);
         a[c.n..np].fill(0.0);
+    }
+}
+
+/// [`block_accelerations`] with drag where the run has it: the choice
+/// made once per evaluation, each variant compiled without the branch.
+#[inline(always)]
+fn with_drag_or_not<const FORCES: bool>(
+    c: &Coeffs,
+    g: [&[f64]; 3],
+    frames: (&[f64], &[f64], &[f64]),
+    v: [&[f64]; 3],
+    a: [&mut [f64]; 3],
+) {
+    if c.drag != 0.0 {
+        block_accelerations::<true, FORCES>(c, g, frames, v, a);
+    } else {
+        block_accelerations::<false, FORCES>(c, g, frames, v, a);
     }
 }
 

@@ -110,6 +110,18 @@ fn both(ladder: &Ladder, driven: bool, steps: u64, library: bool) -> [(State, Ve
     [run(false), run(true)]
 }
 
+/// Two runs' final states equal bit for bit, and their arrivals.
+fn assert_same_bits(
+    (a, arr_a): &(State, Vec<String>),
+    (b, arr_b): &(State, Vec<String>),
+    what: &str,
+) {
+    for (k, (x, y)) in a.q.iter().zip(&b.q).chain(a.v.iter().zip(&b.v)).enumerate() {
+        assert_eq!(x.to_bits(), y.to_bits(), "{what}: coordinate {k}: {x} {y}");
+    }
+    assert_eq!(arr_a, arr_b, "{what}");
+}
+
 fn has_avx2() -> bool {
     Stepping::Fastest.isa().is_some()
 }
@@ -125,15 +137,8 @@ fn library_frames_give_the_portable_trajectory_bit_for_bit() {
     }
     for (gamma, drag, driven) in [(0.0, 8.125, true), (0.003, 8.125, false), (0.01, 0.0, true)] {
         let ladder = tank(gamma, drag);
-        let [(a, arr_a), (b, arr_b)] = both(&ladder, driven, 4000, true);
-        for (k, (x, y)) in a.q.iter().zip(&b.q).chain(a.v.iter().zip(&b.v)).enumerate() {
-            assert_eq!(
-                x.to_bits(),
-                y.to_bits(),
-                "γ {gamma}, drag {drag}: coordinate {k}: {x} {y}"
-            );
-        }
-        assert_eq!(arr_a, arr_b);
+        let [a, b] = both(&ladder, driven, 4000, true);
+        assert_same_bits(&a, &b, &format!("γ {gamma}, drag {drag}"));
     }
 }
 
@@ -154,15 +159,13 @@ fn pin_friction_gives_the_portable_trajectory() {
         (0.01, 0.0, true, 0.02),
     ] {
         let ladder = with_friction(gamma, drag, mu_rp);
-        let [(a, arr_a), (b, arr_b)] = both(&ladder, driven, 2000, true);
-        for (k, (x, y)) in a.q.iter().zip(&b.q).chain(a.v.iter().zip(&b.v)).enumerate() {
-            assert_eq!(
-                x.to_bits(),
-                y.to_bits(),
-                "μ r {mu_rp}, γ {gamma}, drag {drag}: coordinate {k}: {x} {y}"
-            );
-        }
-        assert_eq!(arr_a, arr_b);
+        let [portable, fused] = both(&ladder, driven, 2000, true);
+        assert_same_bits(
+            &fused,
+            &portable,
+            &format!("μ r {mu_rp}, γ {gamma}, drag {drag}"),
+        );
+        let a = &fused.0;
         let [(p, _), (f, _)] = both(&ladder, driven, 2000, false);
         let worst =
             p.q.iter()
