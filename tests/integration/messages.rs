@@ -4,11 +4,11 @@
 //! step that works, and a summary line that says what was written.
 
 use crate::common::ladder_cli as ladder;
+use crate::common::tempdir::TempDir;
 
-fn temp_dir(tag: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("ladder-msg-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
+/// A fresh folder for one test, removed when the test ends.
+fn temp_dir(tag: &str) -> TempDir {
+    TempDir::new(&format!("msg-{tag}"))
 }
 
 /// Exit 2, one line on stderr containing every needle, nothing on stdout.
@@ -33,7 +33,6 @@ fn ids_are_case_insensitive() {
     let scene = ladder(&["scene", "s6"]);
     assert_eq!(scene.status.code(), Some(0));
     assert!(String::from_utf8_lossy(&scene.stdout).contains("label = \"Fig. S6\""));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -143,7 +142,6 @@ fn a_diverged_run_hints_a_step_that_works() {
 #[test]
 fn a_scene_file_s_hint_names_its_keys() {
     let dir = temp_dir("keys");
-    std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("fast.toml");
     std::fs::write(
         &file,
@@ -166,7 +164,6 @@ fn a_scene_file_s_hint_names_its_keys() {
         "{stderr}"
     );
     assert!(!stderr.contains("--dt"), "{stderr}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -206,21 +203,19 @@ fn the_summary_names_what_was_written() {
         assert!(dir.join(f).is_file());
     }
     assert!(lines[3].contains("wrote movie-7.gif, movie-7-kymograph.png and movie-7.json"));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// Writes `text` to a scene file in a fresh folder; returns its path.
-fn scene_file(tag: &str, text: &str) -> String {
+/// Writes `text` to the scene file `s.toml` in a fresh folder; returns the
+/// folder (removed when dropped) and the file's path.
+fn scene_file(tag: &str, text: &str) -> (TempDir, String) {
     let dir = temp_dir(tag);
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("s.toml");
-    std::fs::write(&path, text).unwrap();
-    path.to_string_lossy().into_owned()
+    let path = dir.file("s.toml", text);
+    (dir, path)
 }
 
 #[test]
 fn scene_file_types_are_said_in_words_with_an_example() {
-    let f = scene_file("flips", "[drive]\nflips = [0, 1500]\n");
+    let (_dir, f) = scene_file("flips", "[drive]\nflips = [0, 1500]\n");
     let e = bad_input(
         &["render", "--check", &f],
         &[
@@ -230,7 +225,7 @@ fn scene_file_types_are_said_in_words_with_an_example() {
         ],
     );
     assert!(!e.contains("struct Flip"), "{e}");
-    let f = scene_file("whole", "[model]\nn = 2.5\n");
+    let (_dir, f) = scene_file("whole", "[model]\nn = 2.5\n");
     let e = bad_input(
         &["render", "--check", &f],
         &[
@@ -239,7 +234,7 @@ fn scene_file_types_are_said_in_words_with_an_example() {
         ],
     );
     assert!(!e.contains("usize"), "{e}");
-    let f = scene_file("number", "[model]\nalpha = \"sixty\"\n");
+    let (_dir, f) = scene_file("number", "[model]\nalpha = \"sixty\"\n");
     let e = bad_input(
         &["render", "--check", &f],
         &["model.alpha: expected a number"],
@@ -250,7 +245,7 @@ fn scene_file_types_are_said_in_words_with_an_example() {
 #[test]
 fn an_output_table_without_kind_takes_the_kind_its_keys_say() {
     // docs/scenes.md: `times` or `panels` make a filmstrip.
-    let f = scene_file("nokind", "[run]\nt_end = 100\n[output]\ntimes = [0, 50]\n");
+    let (_dir, f) = scene_file("nokind", "[run]\nt_end = 100\n[output]\ntimes = [0, 50]\n");
     let out = ladder(&["render", "--check", &f]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert_eq!(
@@ -264,7 +259,7 @@ fn an_output_table_without_kind_takes_the_kind_its_keys_say() {
 
 #[test]
 fn an_unknown_key_in_output_is_named_with_its_table_at_its_line() {
-    let f = scene_file(
+    let (_dir, f) = scene_file(
         "unknown-output",
         "[output]\nkind = \"filmstrip\"\ntimez = [0, 900]\n",
     );
@@ -277,7 +272,7 @@ fn an_unknown_key_in_output_is_named_with_its_table_at_its_line() {
 #[test]
 fn a_wrong_type_in_output_names_file_line_key_and_form() {
     // serde reads `[output]` as a whole: its message named no key.
-    let f = scene_file("times5", "[model]\nn = 10\n\n[output]\ntimes = 5\n");
+    let (_dir, f) = scene_file("times5", "[model]\nn = 10\n\n[output]\ntimes = 5\n");
     bad_input(
         &["render", "--check", &f],
         &[
@@ -341,7 +336,6 @@ fn a_mixed_movie_format_says_what_each_file_takes() {
         &["movie", "7", "--format", "pdf", "--out", d],
         &["--format pdf: no movie format"],
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -457,5 +451,4 @@ fn apparatus_values_that_break_the_conversion_name_their_key() {
             err.len()
         );
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }

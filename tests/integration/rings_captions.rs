@@ -1,24 +1,15 @@
 //! The ring chain's captions against their data files (as
-//! `captions.rs`): figure 4b and movie 12 drawn by the `ladder` binary,
-//! and what their captions say of the run (how many rings, that no ring
+//! `captions.rs`): figure 4b's and movie 12's data files from the shared
+//! render of the catalogue (`common::catalogue_render`: `ladder all
+//! --frames 20 --size 320x240`), and what their captions say of the run (how many rings, that no ring
 //! flips, that no helical wave forms) decided from the data file's
 //! `rings` record, so a caption that outlives its data fails.
 
 use serde_json::Value;
 
-use crate::common::tempdir::TempDir;
-
-/// `ladder KIND ID` and `extra` flags into a fresh folder: its data file.
-fn data(kind: &str, id: &str, extra: &[&str]) -> Value {
-    let dir = TempDir::new(&format!("rings-captions-{kind}-{id}"));
-    let mut args = vec![kind, id, "--out", dir.to_str().unwrap()];
-    args.extend_from_slice(extra);
-    let out = crate::common::ladder_cli(&args);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+/// The data file of `KIND ID` in the shared render of the catalogue.
+fn data(kind: &str, id: &str) -> Value {
+    let (dir, _) = crate::common::catalogue_render();
     let text = std::fs::read_to_string(dir.join(format!("{kind}-{id}.json"))).unwrap();
     serde_json::from_str(&text).unwrap()
 }
@@ -75,15 +66,12 @@ fn quoted_checks(caption: &str) -> Option<u64> {
 
 #[test]
 fn figure_4b_caption_says_what_its_data_file_does() {
-    check("figure 4b", &data("figure", "4b", &[]));
+    check("figure 4b", &data("figure", "4b"));
 }
 
 /// Small frames: the simulation (and so every flip and wave, observed
 /// at every step) is the movie's; only the samples drawn are fewer.
 #[test]
 fn movie_12_caption_says_what_its_data_file_does() {
-    check(
-        "movie 12",
-        &data("movie", "12", &["--frames", "20", "--size", "320x240"]),
-    );
+    check("movie 12", &data("movie", "12"));
 }

@@ -24,6 +24,9 @@ from conftest import ladder_bin
 N = 20000
 T_END = 200
 EVERY = 0.5
+# Verlet's step: the memory does not depend on it (N × samples), the time
+# does (its default 0.01 τ took 12 s of CPU a run); `auto` finds its own.
+DT = {"verlet": 0.05, "auto": None}
 
 
 def cli_peak_kb(tmp_path, integrator):
@@ -40,6 +43,7 @@ def cli_peak_kb(tmp_path, integrator):
             str(EVERY),
             "--integrator",
             integrator,
+            *(["--dt", str(DT[integrator])] if DT[integrator] else []),
             "--npz",
             str(out),
         ],
@@ -59,7 +63,8 @@ def python_peak_kb(integrator):
         f"""
         import resource
         import jacobs_ladder as jl
-        run = jl.simulate(n={N}, t_end={T_END}, integrator={integrator!r}, sample_every={EVERY})
+        run = jl.simulate(n={N}, t_end={T_END}, integrator={integrator!r}, sample_every={EVERY},
+                          dt={DT[integrator]!r})
         assert run.x.shape == (401, {N}), run.x.shape
         print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
         """
