@@ -127,6 +127,61 @@ struct StripPlan {
     two_line: bool,
 }
 
+/// One way of wrapping a fitted strip's snapshots into rows
+/// (`StripPlan::way`): its rows, each snapshot's size, whether the time
+/// captions take two lines, and the scale the ladder is drawn at.
+struct Way {
+    rows: usize,
+    width: u32,
+    height: u32,
+    two_line: bool,
+    scale: f32,
+}
+
+/// The widths a fitted strip's time captions take: each row's first
+/// caption reads "t/τ = …", the others the time alone ([`strip_panels`]);
+/// a grid's column is as wide as its snapshot or its widest caption line,
+/// whichever is wider.
+struct Captions<'a> {
+    theme: &'a Theme,
+    frames: &'a [Frame<'a>],
+    gap: f32,
+    margin: f32,
+}
+
+impl Captions<'_> {
+    /// The widest line of each snapshot's caption with `k` snapshots a
+    /// row, on two lines or one.
+    fn widths(&self, k: usize, two: bool) -> Vec<f32> {
+        let line_w = |c: &str| {
+            two_lines(c, two)
+                .lines()
+                .map(|l| style::text_width(self.theme.font(), l, self.theme.label))
+                .fold(0.0f32, f32::max)
+        };
+        self.frames
+            .iter()
+            .enumerate()
+            .map(|(i, f)| line_w(&time_caption(i % k, f.time, true)))
+            .collect()
+    }
+
+    /// The widest of [`Self::widths`].
+    fn widest(&self, k: usize, two: bool) -> f32 {
+        self.widths(k, two).into_iter().fold(0.0f32, f32::max)
+    }
+
+    /// The strip's width with `k` snapshots `cw` wide a row, each column
+    /// widened to its captions, the gaps and the margins.
+    fn strip_width(&self, k: usize, cw: f32, two: bool) -> f32 {
+        let mut col = vec![cw; k];
+        for (i, c) in self.widths(k, two).into_iter().enumerate() {
+            col[i % k] = col[i % k].max(c.ceil());
+        }
+        col.iter().sum::<f32>() + (k as f32 - 1.0) * self.gap + 2.0 * self.margin
+    }
+}
+
 /// Pixels per s of `snap` drawn into `region`: the length of every block.
 fn block_pixels(region: Region, snap: &Snapshot<'_>) -> f32 {
     let (x0, y0) = snapshot::pixel_of(region, snap, [0.0, 0.0]);
@@ -265,95 +320,94 @@ impl StripPlan {
     /// without words do not).
     /// Unchanged without a box.
     fn fitted(self, frames: &[Frame<'_>], opts: &FilmstripOptions) -> StripPlan {
-        let Some((box_w, box_h)) = opts.fit else {
+        let Some(fit) = opts.fit else {
             return self;
         };
-        let (w, h) = self.size;
-        let theme = self.theme;
-        let (m, gap) = (theme.fit_margin as f32, self.gap as f32);
         let title = if opts.title.is_some() || opts.label.is_some() {
-            theme.title_band()
+            self.theme.title_band()
         } else {
             0.0
         };
-        // Each row's first caption reads "t/τ = …", the others the time
-        // alone ([`strip_panels`]); a grid's column is as wide as its
-        // snapshot or its widest caption line, whichever is wider.
-        let line_w = |c: &str, two: bool| {
-            two_lines(c, two)
-                .lines()
-                .map(|l| style::text_width(theme.font(), l, theme.label))
-                .fold(0.0f32, f32::max)
+        let captions = Captions {
+            theme: &self.theme,
+            frames,
+            gap: self.gap as f32,
+            margin: self.theme.fit_margin as f32,
         };
-        let widths = |k: usize, two: bool| -> Vec<f32> {
-            frames
-                .iter()
-                .enumerate()
-                .map(|(i, f)| line_w(&time_caption(i % k, f.time, true), two))
-                .collect()
-        };
-        let strip_w = |k: usize, cw: f32, two: bool| -> f32 {
-            let mut col = vec![cw; k];
-            for (i, c) in widths(k, two).into_iter().enumerate() {
-                col[i % k] = col[i % k].max(c.ceil());
-            }
-            col.iter().sum::<f32>() + (k as f32 - 1.0) * gap + 2.0 * m
-        };
-        let widest = |k: usize, two: bool| widths(k, two).into_iter().fold(0.0f32, f32::max);
         // Words beside the chain need the room; a bare triangle does not.
         let marked = opts.marks.iter().flatten().any(|m| !m.label.is_empty());
         let n = frames.len().max(1);
-        // (rows, width, height, two-line captions, ladder scale) of each way.
-        let mut ways = Vec::new();
-        for rows in 1..=n {
-            let k = n.div_ceil(rows);
-            let room = (box_w as f32 - 2.0 * m - (k as f32 - 1.0) * gap) / k as f32;
-            let most = room.min(w as f32).floor();
-            // A caption wider than its snapshot widens its column: the
-            // widest snapshot, at most `most`, whose strip fits the box
-            // with its captions on `two` lines (so that a wider box never
-            // takes a narrower snapshot).
-            let fitting = |two: bool| {
-                let mut cw = most;
-                while cw > 0.0 && strip_w(k, cw, two) > box_w as f32 {
-                    cw -= 1.0;
-                }
-                cw
-            };
-            // One line where it fits beside its neighbours and within the
-            // box, two otherwise (or no way of `rows` rows).
-            let way = [false, true].into_iter().find_map(|two| {
-                let cw = fitting(two);
-                if cw < theme.min_snapshot.0 || (marked && cw < MARKED_SHARE * w as f32) {
-                    return None;
-                }
-                if widest(k, two) > cw + gap - theme.caption_slack {
-                    return None;
-                }
-                let lines = if two { 2.0 } else { 1.0 };
-                let caption = theme.caption_band(lines).floor();
-                let tall = (box_h as f32 - 2.0 * m - title - (rows as f32 - 1.0) * gap)
-                    / rows as f32
-                    - caption;
-                let ch = (h as f32 * cw / w as f32).min(tall).floor();
-                if ch < theme.min_snapshot.1 {
-                    return None;
-                }
-                let scale = (cw / w as f32).min(ch / h as f32);
-                Some((rows, cw as u32, ch as u32, two, scale))
-            });
-            ways.extend(way);
-        }
-        let best = ways.iter().map(|w| w.4).fold(0.0f32, f32::max);
-        let Some(&(rows, cw, ch, two, _)) = ways.iter().find(|w| w.4 >= FIT_SHARE * best) else {
+        let ways: Vec<Way> = (1..=n)
+            .filter_map(|rows| self.way(&captions, rows, n, fit, title, marked))
+            .collect();
+        let best = ways.iter().map(|w| w.scale).fold(0.0f32, f32::max);
+        let Some(way) = ways.iter().find(|w| w.scale >= FIT_SHARE * best) else {
             return self;
         };
         let mut plan = self;
-        plan.size = (cw, ch);
-        plan.columns[0].region = Region::full(cw, ch);
-        plan.per_row = n.div_ceil(rows);
-        plan.two_line = two;
+        plan.size = (way.width, way.height);
+        plan.columns[0].region = Region::full(way.width, way.height);
+        plan.per_row = n.div_ceil(way.rows);
+        plan.two_line = way.two_line;
         plan
+    }
+
+    /// The way of wrapping `n` snapshots into `rows` rows in the box `fit`
+    /// (below a title band `title` tall): each snapshot as wide as the
+    /// strip with its captions allows, at most its natural size, its
+    /// captions on one line where they fit beside their neighbours and
+    /// within the box, on two otherwise; none when no snapshot of these
+    /// rows is as large as the theme's least (or, `marked`, keeps
+    /// [`MARKED_SHARE`] of its width).
+    fn way(
+        &self,
+        captions: &Captions<'_>,
+        rows: usize,
+        n: usize,
+        (box_w, box_h): (u32, u32),
+        title: f32,
+        marked: bool,
+    ) -> Option<Way> {
+        let (w, h) = self.size;
+        let (theme, m, gap) = (&self.theme, captions.margin, captions.gap);
+        let k = n.div_ceil(rows);
+        let room = (box_w as f32 - 2.0 * m - (k as f32 - 1.0) * gap) / k as f32;
+        let most = room.min(w as f32).floor();
+        // A caption wider than its snapshot widens its column: the widest
+        // snapshot, at most `most`, whose strip fits the box with its
+        // captions on `two` lines (so that a wider box never takes a
+        // narrower snapshot).
+        let fitting = |two: bool| {
+            let mut cw = most;
+            while cw > 0.0 && captions.strip_width(k, cw, two) > box_w as f32 {
+                cw -= 1.0;
+            }
+            cw
+        };
+        [false, true].into_iter().find_map(|two| {
+            let cw = fitting(two);
+            if cw < theme.min_snapshot.0 || (marked && cw < MARKED_SHARE * w as f32) {
+                return None;
+            }
+            if captions.widest(k, two) > cw + gap - theme.caption_slack {
+                return None;
+            }
+            let lines = if two { 2.0 } else { 1.0 };
+            let caption = theme.caption_band(lines).floor();
+            let tall = (box_h as f32 - 2.0 * m - title - (rows as f32 - 1.0) * gap) / rows as f32
+                - caption;
+            let ch = (h as f32 * cw / w as f32).min(tall).floor();
+            if ch < theme.min_snapshot.1 {
+                return None;
+            }
+            Some(Way {
+                rows,
+                width: cw as u32,
+                height: ch as u32,
+                two_line: two,
+                scale: (cw / w as f32).min(ch / h as f32),
+            })
+        })
     }
 
     /// The snapshot of `frame` with its `marks`.

@@ -123,21 +123,12 @@ struct Extra {
     vtheta0: *mut f64,
 }
 
+/// The constants of every Verlet step of `n` blocks, in registers (`last`:
+/// the first block of the last vector).
 #[inline(always)]
-unsafe fn body<S: Simd>(
-    state: &mut ChainState,
-    p: &ChainParams,
-    vp: &VerletParams,
-    t0: f64,
-    count: u64,
-    stepper: &mut dyn Stepper,
-) -> f64 {
-    let n = state.n;
-    let w = S::LANES;
-    let vectors = n.div_ceil(w);
-    let last = (vectors - 1) * w;
+unsafe fn consts<S: Simd>(p: &ChainParams, vp: &VerletParams, n: usize, last: usize) -> Consts<S> {
     let ones = f64::from_bits(u64::MAX);
-    let c = Consts {
+    Consts {
         step: StepConsts {
             a_rest: S::splat(p.a_rest),
             b_rest: S::splat(p.b_rest),
@@ -158,7 +149,24 @@ unsafe fn body<S: Simd>(
         inv_mass_theta: S::splat(vp.inv_mass_theta),
         div_xy: S::splat(vp.div_xy),
         div_theta: S::splat(vp.div_theta),
-    };
+    }
+}
+
+#[inline(always)]
+unsafe fn body<S: Simd>(
+    state: &mut ChainState,
+    p: &ChainParams,
+    vp: &VerletParams,
+    t0: f64,
+    count: u64,
+    stepper: &mut dyn Stepper,
+) -> f64 {
+    let n = state.n;
+    let w = S::LANES;
+    let vectors = n.div_ceil(w);
+    let last = (vectors - 1) * w;
+    // SAFETY: as the caller's.
+    let c = unsafe { consts::<S>(p, vp, n, last) };
     let extra = Extra {
         ax: state.ax.as_mut_ptr(),
         ay: state.ay.as_mut_ptr(),
@@ -374,14 +382,31 @@ unsafe fn vector<S: Simd, const FIRST: bool, const LAST: bool>(
     let candidates = q[2].le_bits(lo) | q[2].ge_bits(hi);
     if candidates != 0 {
         // SAFETY: as above.
-        let (theta0, vt0) = unsafe { (S::load(e.theta0.add(at)), S::load(e.vtheta0.add(at))) };
-        let before = [S::splat(t), theta0, vt0];
-        let after = [S::splat(t_new), q[2], v[2]];
-        unsafe {
-            m.record(at, candidates, before, after, |lane, before, after| {
-                stepper.try_record(at + lane, before, after)
-            })
-        };
+        unsafe { record(m, e, at, candidates, (t, t_new), (q[2], v[2]), stepper) };
     }
     Springs { fx, fy, tu }
+}
+
+/// The arrivals among the blocks at `at` whose angle left its window
+/// (`candidates`' lanes) between `t` and `t_new`, from the angle and rate
+/// each started the step with and its new `theta` and `omega`.
+#[inline(always)]
+unsafe fn record<S: Simd>(
+    m: &Blocks,
+    e: &Extra,
+    at: usize,
+    candidates: u64,
+    (t, t_new): (f64, f64),
+    (theta, omega): (S, S),
+    stepper: &mut dyn Stepper,
+) {
+    // SAFETY: the caller keeps `at` within the arrays, less a vector.
+    let (theta0, vt0) = unsafe { (S::load(e.theta0.add(at)), S::load(e.vtheta0.add(at))) };
+    let before = [S::splat(t), theta0, vt0];
+    let after = [S::splat(t_new), theta, omega];
+    unsafe {
+        m.record(at, candidates, before, after, |lane, before, after| {
+            stepper.try_record(at + lane, before, after)
+        })
+    };
 }
