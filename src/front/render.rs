@@ -97,14 +97,13 @@ pub fn into_folder_timed(
     // (`scenes::shared`), each charged to the first output that makes it.
     let tallies: Vec<Arc<tally::Tally>> = scenes.iter().map(|_| Arc::default()).collect();
     let shared = scenes::shared::prepare(scenes, movie, &tallies)?;
-    let mut written: Vec<(usize, (Vec<String>, Timing))> = longest_first(scenes)
+    let mut written: Vec<Rendered> = jobs(scenes)
         .into_par_iter()
-        .map(|i| {
-            let s = &scenes[i];
-            let render = || render_scene(s, out, movie, outputs, progress);
-            timed(s, &tallies[i], render).map(|w| (i, w))
-        })
-        .collect::<Result<_>>()?;
+        .map(|job| render_job(scenes, &job, &tallies, out, movie, outputs, progress))
+        .collect::<Result<Vec<_>>>()?
+        .into_iter()
+        .flatten()
+        .collect();
     drop(shared);
     written.sort_by_key(|w| w.0);
     let written: Vec<(Vec<String>, Timing)> = written.into_iter().map(|w| w.1).collect();
@@ -134,6 +133,56 @@ fn longest_first(scenes: &[Scene]) -> Vec<usize> {
     let mut order: Vec<usize> = (0..scenes.len()).collect();
     order.sort_by_key(|&i| scenes[i].rings.is_none());
     order
+}
+
+/// A scene rendered: its index, its files and its timing.
+type Rendered = (usize, (Vec<String>, Timing));
+
+/// The scenes in jobs, in the order they start ([`longest_first`]): each
+/// group of ring scenes that share one run (`scenes::shared::ring_groups`:
+/// figure 4b and movie 12) one job, its latest end first, then every
+/// other scene a job of its own.
+fn jobs(scenes: &[Scene]) -> Vec<Vec<usize>> {
+    let mut jobs = scenes::shared::ring_groups(scenes);
+    let grouped: Vec<usize> = jobs.iter().flatten().copied().collect();
+    let lone = longest_first(scenes)
+        .into_iter()
+        .filter(|i| !grouped.contains(i))
+        .map(|i| vec![i]);
+    jobs.extend(lone);
+    jobs
+}
+
+/// Renders the scenes of one job in turn, each timed ([`timed`]). A group
+/// of ring scenes makes its one run in its first scene's time, charged to
+/// it (`scenes::shared::make_ring_runs`), and holds it until the last is
+/// rendered: no output waits for another's run, and the run needs no
+/// other task (it makes none), so made in the first output's task it
+/// cannot wait for itself.
+fn render_job(
+    scenes: &[Scene],
+    job: &[usize],
+    tallies: &[Arc<tally::Tally>],
+    out: &Path,
+    movie: &MovieOptions,
+    outputs: &Outputs,
+    progress: &Progress<'_>,
+) -> Result<Vec<Rendered>> {
+    let mut held = None;
+    let mut done = Vec::with_capacity(job.len());
+    for (n, &i) in job.iter().enumerate() {
+        let s = &scenes[i];
+        let render = || {
+            if n == 0 && job.len() > 1 {
+                let group: Vec<&Scene> = job.iter().map(|&j| &scenes[j]).collect();
+                held = Some(scenes::shared::make_ring_runs(&group, movie, &tallies[i]));
+            }
+            render_scene(s, out, movie, outputs, progress)
+        };
+        done.push((i, timed(s, &tallies[i], render)?));
+    }
+    drop(held);
+    Ok(done)
 }
 
 /// `render` of `scene` timed: its wall time, and the CPU time and runs

@@ -11,7 +11,8 @@
 //! - an output's runs and block-steps (steps × blocks, summed over its
 //!   runs) are counted by the simulation as each run finishes
 //!   (`sim::tally`), whichever thread ran it; a run two outputs make
-//!   alike is made once, before the outputs start, and counted in the
+//!   alike is made once, before the outputs start (a ring chain's at the
+//!   start of the output whose end is the latest), and counted in the
 //!   first's (`scenes::shared`): the others count it as **reused**;
 //! - an output's CPU time is the time threads spent on its tasks: its
 //!   own rendering and the runs it spread over the cores, each thread's
@@ -144,8 +145,8 @@ impl Timings {
              runs outside any output: {}\nwall: an output's start to its files in place \
              (outputs overlap, rendered in parallel); CPU: its tasks' time on every thread; \
              block-steps: steps x blocks of its runs; reused: runs another output made for \
-             it, made once for both before the outputs started (not in its runs, wall or \
-             CPU)\n",
+             it, made once for both (before the outputs started; a ring chain's, in the \
+             first output's time), not in its runs, wall or CPU\n",
             self.runs.saturating_sub(runs),
         );
         s

@@ -112,6 +112,25 @@ fn strip_times(scene: &Scene, chain: &RingChain) -> Vec<f64> {
     }
 }
 
+/// The times a ring scene samples its run at: a movie's frames, a
+/// filmstrip's snapshots, a kymograph's rows.
+pub fn sample_times(scene: &Scene, chain: &RingChain, movie: &MovieOptions) -> Vec<f64> {
+    match scene.output {
+        OutputSpec::Movie { .. } => rings::run::even_times(chain.t_end, movie.frames),
+        OutputSpec::Filmstrip { .. } => strip_times(scene, chain),
+        _ => rings::run::even_times(chain.t_end, draw::KYMOGRAPH_ROWS),
+    }
+}
+
+/// The run of a ring scene sampled at `times`: the one the render holds
+/// for it (made with another output's, `scenes::shared::make_ring_runs`),
+/// else its own.
+fn run_of(scene: &Scene, chain: &RingChain, times: &[f64]) -> Result<RingRun> {
+    super::reuse::or_run(scene, times, super::reuse::Stop::ToEnd, || {
+        rings::run(chain, times)
+    })
+}
+
 /// A ring scene's title: its own, or one made from the chain (the
 /// ladder's generated title, "kink, α = 60°", is no chain's).
 fn ring_title(scene: &Scene, chain: &RingChain) -> String {
@@ -138,9 +157,9 @@ pub fn render_to(
     let chain = chain_of(scene)?;
     let title = ring_title(scene, chain);
     let formats = outputs.encoded_figures()?;
-    let (bytes, run) = match scene.output {
+    let run = run_of(scene, chain, &sample_times(scene, chain, movie))?;
+    let bytes = match scene.output {
         OutputSpec::Movie { .. } => {
-            let run = rings::run(chain, &rings::run::even_times(chain.t_end, movie.frames))?;
             let mut v = movie_bytes(
                 theme,
                 chain,
@@ -157,19 +176,16 @@ pub fn render_to(
                 .map_or("kymograph".to_string(), |l| format!("{l}: kymograph"));
             let kymo = draw::kymograph_picture(theme, chain, &run, &kymo_title);
             v.extend(figure_bytes(&kymo, &formats, outputs.scale)?);
-            (v, run)
+            v
         }
         OutputSpec::Filmstrip { .. } => {
-            let run = rings::run(chain, &strip_times(scene, chain))?;
             let picture = draw::strip_picture(theme, chain, &run, &title);
             picture.check_print_scale(&theme.style)?;
-            (figure_bytes(&picture, &formats, outputs.scale)?, run)
+            figure_bytes(&picture, &formats, outputs.scale)?
         }
         _ => {
-            let times = rings::run::even_times(chain.t_end, draw::KYMOGRAPH_ROWS);
-            let run = rings::run(chain, &times)?;
             let picture = draw::kymograph_picture(theme, chain, &run, &title);
-            (figure_bytes(&picture, &formats, outputs.scale)?, run)
+            figure_bytes(&picture, &formats, outputs.scale)?
         }
     };
     let names = file_names_for(scene, outputs);

@@ -12,11 +12,20 @@
 //! The shared runs are made before the outputs start, not when the first
 //! output asks: an output that waited for another's run while rayon ran
 //! other outputs' tasks on its thread could wait for itself.
+//!
+//! Ring chains that differ in their end only (figure 4b is movie 12's
+//! first 3 s) share one run too ([`ring_groups`], [`make_ring_runs`]),
+//! but not before the outputs start: the run is several seconds on one
+//! core, which would leave the other idle. The render makes it in the
+//! first output of the group (the latest end), renders the group's
+//! outputs one after the other in that task, and nothing waits.
 
 use super::reuse::{self, Entry, Held, Stop};
 use super::run::{self, SceneRun};
 use super::{MovieOptions, experiments};
 use crate::error::Result;
+use crate::rings::RingChain;
+use crate::rings::run::Asked;
 use crate::scene::{AUTO_T_END, OutputSpec, Scene};
 use crate::sim::tally::{self, Tally};
 use std::collections::HashMap;
@@ -118,6 +127,79 @@ pub fn prepare(scenes: &[Scene], movie: &MovieOptions, tallies: &[Arc<Tally>]) -
     Ok(Held::hold(made))
 }
 
+/// The ring scenes of `scenes` whose chains differ in their end only
+/// (figure 4b is movie 12's first 3 s: docs/rings.md), in groups of two
+/// or more, each by the scenes' indices, the latest end first (the
+/// output its one run is made for), ties in the order given.
+pub fn ring_groups(scenes: &[Scene]) -> Vec<Vec<usize>> {
+    let but_end = |s: &Scene| {
+        s.rings.as_ref().map(|c| RingChain {
+            t_end: 0.0,
+            ..c.clone()
+        })
+    };
+    let end = |i: usize| scenes[i].rings.as_ref().map_or(0.0, |c| c.t_end);
+    let mut groups: Vec<(RingChain, Vec<usize>)> = Vec::new();
+    for (i, s) in scenes.iter().enumerate() {
+        let Some(chain) = but_end(s) else { continue };
+        match groups.iter_mut().find(|g| g.0 == chain) {
+            Some(g) => g.1.push(i),
+            None => groups.push((chain, vec![i])),
+        }
+    }
+    groups
+        .into_iter()
+        .filter(|g| g.1.len() > 1)
+        .map(|(_, mut g)| {
+            g.sort_by(|&a, &b| end(b).total_cmp(&end(a)));
+            g
+        })
+        .collect()
+}
+
+/// Makes one run of the chain for a group of [`ring_groups`] (`group`,
+/// the latest end first), to its latest end (`rings::run::runs`), on this
+/// thread, charged to the tally set here, which `owner` is (the first
+/// scene's), and holds each scene's run by the key its output asks with
+/// (`scenes::rings`), counted as reused by the others. A run that fails
+/// holds nothing: each output makes its own and reports it.
+pub fn make_ring_runs(group: &[&Scene], movie: &MovieOptions, owner: &Arc<Tally>) -> Held {
+    let chains: Option<Vec<&RingChain>> = group.iter().map(|s| s.rings.as_ref()).collect();
+    let Some(chains) = chains.filter(|c| !c.is_empty()) else {
+        return Held::hold(Vec::new());
+    };
+    let times: Vec<Vec<f64>> = group
+        .iter()
+        .zip(&chains)
+        .map(|(s, c)| super::rings::sample_times(s, c, movie))
+        .collect();
+    let asked: Vec<Asked<'_>> = chains
+        .iter()
+        .zip(&times)
+        .map(|(c, t)| Asked {
+            t_end: c.t_end,
+            times: t,
+        })
+        .collect();
+    let Ok(made) = crate::rings::run::runs(chains[0], &asked) else {
+        return Held::hold(Vec::new());
+    };
+    let entries = group
+        .iter()
+        .zip(&times)
+        .zip(made)
+        .map(|((s, t), run)| {
+            let entry = Entry {
+                made: Arc::new(run),
+                runs: 1,
+                owner: owner.clone(),
+            };
+            (reuse::key(s, t, Stop::ToEnd), entry)
+        })
+        .collect();
+    Held::hold(entries)
+}
+
 /// A planned run made as its output makes it.
 fn make(p: &Planned) -> Result<SceneRun> {
     match p.stop {
@@ -170,5 +252,25 @@ mod tests {
             ["tank-positions", "tank-positions", "3"],
             "{owners:?}"
         );
+    }
+
+    /// The catalogue's ring chains that differ in their end only are
+    /// figure 4b's and movie 12's: one group, movie 12 (10 s) first.
+    #[test]
+    fn figure_4b_and_movie_12_share_a_chain() {
+        let scenes: Vec<Scene> = catalog::catalogue()
+            .unwrap()
+            .iter()
+            .map(|e| e.scene.clone())
+            .collect();
+        let groups = ring_groups(&scenes);
+        let names: Vec<Vec<String>> = groups
+            .iter()
+            .map(|g| g.iter().map(|&i| scenes[i].stem()).collect())
+            .collect();
+        assert_eq!(names, [["movie-12", "figure-4b"]], "{names:?}");
+        let mut other = find(Kind::Figure, "4b");
+        other.rings.as_mut().unwrap().guard_every += 1;
+        assert!(ring_groups(&[find(Kind::Movie, "12"), other]).is_empty());
     }
 }

@@ -89,6 +89,14 @@ fn the_table_lists_every_output_and_the_runs_each_made() {
     assert_eq!(rows["movie 4"].0, (0, 0), "{table}");
     assert_eq!(rows["movie 4"].2, rows["movie 3"].0.0, "{table}");
     assert_eq!(rows["figure tank-levels"].2, 2, "{table}");
+    // Figure 4b's chain is movie 12's first 3 s: one run, made for the
+    // movie, taken by the figure.
+    assert_eq!(rows["movie 12"].0.0, 1, "{table}");
+    assert_eq!(
+        (rows["figure 4b"].0, rows["figure 4b"].2),
+        ((0, 0), 1),
+        "{table}"
+    );
     // Every run of the render is some output's, counted once: also those
     // spread over the cores in rayon's tasks.
     let runs: u64 = rows.values().map(|r| r.0.0).sum();
@@ -114,4 +122,44 @@ fn the_table_lists_every_output_and_the_runs_each_made() {
     let expected = verified_runs(run, n);
     assert!(expected.0 >= 2, "a verified run is at least a pair");
     assert_eq!(rows["figure 1c"].0, expected, "{table}");
+}
+
+/// Figure 4b in `ladder all` takes its run from movie 12's (the chain's
+/// first 3 s: docs/performance.md, "Runs two outputs make alike") and its
+/// files are those of `ladder figure 4b` alone, byte for byte: its
+/// pictures, and its data file but for the command line and the list of
+/// files (the render adds a PNG preview).
+#[test]
+fn figure_4b_in_the_catalogue_is_figure_4b_alone() {
+    let (dir, table) = crate::common::catalogue_render();
+    let (rows, _) = parse(table);
+    assert_eq!(rows["figure 4b"].2, 1, "reused:\n{table}");
+    let alone = crate::common::tempdir::TempDir::new("figure-4b-alone");
+    let out = alone.path().to_str().unwrap();
+    let cli = crate::common::ladder_cli(&["figure", "4b", "--format", "svg,pdf", "--out", out]);
+    assert_eq!(
+        cli.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&cli.stderr)
+    );
+    for ext in ["svg", "pdf"] {
+        let name = format!("figure-4b.{ext}");
+        let (a, b) = (
+            std::fs::read(alone.join(&name)),
+            std::fs::read(dir.join(&name)),
+        );
+        assert!(
+            a.unwrap() == b.unwrap(),
+            "{name} differs from its render alone"
+        );
+    }
+    let data = |d: &std::path::Path| {
+        let text = std::fs::read(d.join("figure-4b.json")).unwrap();
+        let mut v: serde_json::Value = serde_json::from_slice(&text).unwrap();
+        let map = v.as_object_mut().unwrap();
+        assert!(map.remove("command_line").is_some() && map.remove("files").is_some());
+        v
+    };
+    assert_eq!(data(alone.path()), data(dir));
 }
