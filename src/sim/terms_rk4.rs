@@ -20,14 +20,18 @@
 //! and block by block in the same order, over whole arrays
 //! (`terms_rk4::friction`).
 //!
-//! Every operation is the portable path's in the same order, with one
-//! exception: the blocks' frames take the sine and cosine the springs
+//! Every operation is the portable path's in the same order, with two
+//! exceptions: the blocks' frames take the sine and cosine the springs
 //! already computed (`model::trig`, fdlibm's kernels) instead of the C
-//! library's. The two differ by at most 4 × 10⁻¹⁶ (`model::trig`'s test),
-//! so one force evaluation differs from the portable one by a few ulps;
-//! with the library's frames ([`TermsRk4::with_library_frames`]) the
-//! trajectory is the portable path's bit for bit, with pin friction too
-//! (`tests` below).
+//! library's (the two differ by at most 4 × 10⁻¹⁶, `model::trig`'s test);
+//! and, in the runs without pin friction, the drag's and Lagrange's
+//! divisions by 3, w, w² and I + I_a are products by 1/3, one reciprocal
+//! of w and 1/(I + I_a) (`QUICK`, each within 1.5 ulp of its quotient;
+//! docs/performance.md, "The tank's divisions"). So one force evaluation
+//! differs from the portable one by a few ulps; with the library's frames
+//! ([`TermsRk4::with_library_frames`]), which also take the portable
+//! divisions, the trajectory is the portable path's bit for bit, with pin
+//! friction too (`tests` below).
 
 mod friction;
 
