@@ -141,6 +141,15 @@ binary_ops!(F64x4,
     BitXor bitxor _mm256_xor_pd;
 );
 
+impl F64x4 {
+    /// Every bit of lane l set where lane l of `self` ≤ `o` (none for
+    /// NaN): a selector for [`Simd::select`].
+    #[inline(always)]
+    pub fn le_mask(self, o: Self) -> Self {
+        Self(simd!(_mm256_cmp_pd::<_CMP_LE_OQ>(self.0, o.0)))
+    }
+}
+
 impl Neg for F64x4 {
     type Output = Self;
     #[inline(always)]

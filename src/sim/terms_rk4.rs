@@ -20,14 +20,18 @@
 //! and block by block in the same order, over whole arrays
 //! (`terms_rk4::friction`).
 //!
-//! Every operation is the portable path's in the same order, with one
-//! exception: the blocks' frames take the sine and cosine the springs
+//! Every operation is the portable path's in the same order, with two
+//! exceptions: the blocks' frames take the sine and cosine the springs
 //! already computed (`model::trig`, fdlibm's kernels) instead of the C
-//! library's. The two differ by at most 4 × 10⁻¹⁶ (`model::trig`'s test),
-//! so one force evaluation differs from the portable one by a few ulps;
-//! with the library's frames ([`TermsRk4::with_library_frames`]) the
-//! trajectory is the portable path's bit for bit, with pin friction too
-//! (`tests` below).
+//! library's (the two differ by at most 4 × 10⁻¹⁶, `model::trig`'s test);
+//! and, in the runs without pin friction, the drag's and Lagrange's
+//! divisions by 3, w, w² and I + I_a are products by 1/3, one reciprocal
+//! of w and 1/(I + I_a) (`QUICK`, each within 1.5 ulp of its quotient;
+//! docs/performance.md, "The tank's divisions"). So one force evaluation
+//! differs from the portable one by a few ulps; with the library's frames
+//! ([`TermsRk4::with_library_frames`]), which also take the portable
+//! divisions, the trajectory is the portable path's bit for bit, with pin
+//! friction too (`tests` below).
 
 mod friction;
 
@@ -37,6 +41,7 @@ use super::stepping::Plan;
 use super::stepping::Stepping;
 use super::tableau::RK4;
 use crate::model::params::{M, R};
+use crate::sim::simd::{F64x4, Simd};
 
 /// The state, stage values and stage rates of one run, one array per
 /// coordinate: [X, Y, θ] then [Ẋ, Ẏ, θ̇].
@@ -75,8 +80,9 @@ struct Coeffs {
     /// γ r², the θ coordinate's damping coefficient.
     gamma_theta: f64,
     ma: f64,
-    /// I + I_a.
+    /// I + I_a, and its reciprocal (the quick arithmetic: [`QUICK`]).
     j: f64,
+    inv_j: f64,
     /// m_a / (m + m_a): Sherman–Morrison's factor.
     k_am: f64,
     drag: f64,
@@ -155,6 +161,7 @@ impl TermsRk4 {
             gamma_theta: p.gamma * R * R,
             ma: t.added_mass,
             j: p.inertia + t.added_inertia,
+            inv_j: 1.0 / (p.inertia + t.added_inertia),
             k_am: t.added_mass / (M + t.added_mass),
             drag: t.drag,
             driven: rhs.drive().is_some(),
@@ -397,11 +404,15 @@ fn acceleration(
         friction::forces((c, law), all, (q, v), &s.grad, &mut s.links, &mut s.forces);
         let [fx, fy, ft] = &s.forces;
         let forces = [&fx[..np], &fy[..np], &ft[..np]];
-        with_drag_or_not::<true>(c, forces, frames, vs, a);
+        with_drag_or_not::<true, PORTABLE>(c, forces, frames, vs, a);
     } else {
         let [gx, gy, gt] = &s.grad;
         let g = [&gx[..np], &gy[..np], &gt[..np]];
-        with_drag_or_not::<false>(c, g, frames, vs, a);
+        if library_frames {
+            with_drag_or_not::<false, PORTABLE>(c, g, frames, vs, a);
+        } else {
+            with_drag_or_not::<false, QUICK>(c, g, frames, vs, a);
+        }
     }
     let first = usize::from(c.driven);
     for a in [ax, ay, aw] {
@@ -413,83 +424,147 @@ fn acceleration(
 /// [`block_accelerations`] with drag where the run has it: the choice
 /// made once per evaluation, each variant compiled without the branch.
 #[inline(always)]
-fn with_drag_or_not<const FORCES: bool>(
+fn with_drag_or_not<const FORCES: bool, const EXACT: bool>(
     c: &Coeffs,
     g: [&[f64]; 3],
     frames: (&[f64], &[f64], &[f64]),
     v: [&[f64]; 3],
     a: [&mut [f64]; 3],
 ) {
+    // SAFETY: a `TermsRk4` is made only where the CPU has AVX2
+    // (`TermsRk4::new`), and only it calls this.
     if c.drag != 0.0 {
-        block_accelerations::<true, FORCES>(c, g, frames, v, a);
+        unsafe { block_accelerations::<true, FORCES, EXACT>(c, g, frames, v, a) };
     } else {
-        block_accelerations::<false, FORCES>(c, g, frames, v, a);
+        unsafe { block_accelerations::<false, FORCES, EXACT>(c, g, frames, v, a) };
     }
 }
 
 /// Each block's generalised forces, drag (`DRAG`) and accelerations
 /// (`Rhs::acceleration_with_terms`, `media::block_acceleration_framed`),
 /// from the gradient `g` (or, `FORCES`, the generalised forces before
-/// drag), the frames (sine, cosine, parity) and `v`.
-#[inline(always)]
-fn block_accelerations<const DRAG: bool, const FORCES: bool>(
+/// drag), the frames (sine, cosine, parity) and `v`, four blocks at a
+/// time (a lane's arithmetic is the scalar IEEE operation, in the
+/// portable path's order); in the portable path's arithmetic (`EXACT`)
+/// or the quick one ([`QUICK`]). Its own function compiled for AVX2 (the
+/// compiler left the loop scalar, with a branch for the drag's closed
+/// forms).
+///
+/// # Safety
+/// The CPU must have AVX2 (a `TermsRk4` is made only where it has).
+#[cfg_attr(target_arch = "x86_64", target_feature(enable = "avx2"))]
+#[inline(never)]
+unsafe fn block_accelerations<const DRAG: bool, const FORCES: bool, const EXACT: bool>(
     c: &Coeffs,
     g: [&[f64]; 3],
     (fsin, fcos, parity): (&[f64], &[f64], &[f64]),
     v: [&[f64]; 3],
     a: [&mut [f64]; 3],
 ) {
+    let sp = F64x4::splat;
+    // Four lanes from `x[i..i + 4]` (i + 4 ≤ np ≤ x's length).
+    let ld = |x: &[f64], i: usize| {
+        let x = &x[i..i + 4];
+        // SAFETY: `x` holds four values.
+        unsafe { F64x4::load(x.as_ptr()) }
+    };
     let [ax, ay, aw] = a;
-    for i in 0..c.np {
-        let (vx, vy, w) = (v[0][i], v[1][i], v[2][i]);
+    for i in (0..c.np).step_by(4) {
+        let (vx, vy, w) = (ld(v[0], i), ld(v[1], i), ld(v[2], i));
         let (mut fx, mut fy, mut ft) = if FORCES {
-            (g[0][i], g[1][i], g[2][i])
+            (ld(g[0], i), ld(g[1], i), ld(g[2], i))
         } else {
             (
-                -g[0][i] - c.gamma * vx,
-                -g[1][i] - c.gamma * vy,
-                -g[2][i] - c.gamma_theta * w,
+                -ld(g[0], i) - sp(c.gamma) * vx,
+                -ld(g[1], i) - sp(c.gamma) * vy,
+                -ld(g[2], i) - sp(c.gamma_theta) * w,
             )
         };
-        let (sn, cs, p) = (fsin[i], fcos[i], parity[i]);
+        let (sn, cs, p) = (ld(fsin, i), ld(fcos, i), ld(parity, i));
         let (t, nu) = ([sn, p * cs], [cs, -p * sn]);
         if DRAG {
             let u0 = vx * nu[0] + vy * nu[1];
-            let (f, tq) = drag_integrals(u0, w);
-            fx += -c.drag * f * nu[0];
-            fy += -c.drag * f * nu[1];
-            ft += -c.drag * tq;
+            let (f, tq) = drag_integrals::<EXACT>(u0, w);
+            fx = fx + -sp(c.drag) * f * nu[0];
+            fy = fy + -sp(c.drag) * f * nu[1];
+            ft = ft + -sp(c.drag) * tq;
         }
         let vn = vx * nu[0] + vy * nu[1];
         let vt = vx * t[0] + vy * t[1];
-        let fx = fx + c.ma * w * (vt * nu[0] + vn * t[0]);
-        let fy = fy + c.ma * w * (vt * nu[1] + vn * t[1]);
+        let fx = fx + sp(c.ma) * w * (vt * nu[0] + vn * t[0]);
+        let fy = fy + sp(c.ma) * w * (vt * nu[1] + vn * t[1]);
         let fn_ = fx * nu[0] + fy * nu[1];
-        ax[i] = (fx - c.k_am * fn_ * nu[0]) / M;
-        ay[i] = (fy - c.k_am * fn_ * nu[1]) / M;
-        aw[i] = (ft - c.ma * vn * vt) / c.j;
+        let torque = ft - sp(c.ma) * vn * vt;
+        let (x, y) = (fx - sp(c.k_am) * fn_ * nu[0], fy - sp(c.k_am) * fn_ * nu[1]);
+        // m = 1: the portable path's division by it is no operation.
+        const { assert!(M == 1.0) };
+        let th = if EXACT {
+            torque / sp(c.j)
+        } else {
+            torque * sp(c.inv_j)
+        };
+        for (out, value) in [(&mut *ax, x), (&mut *ay, y), (&mut *aw, th)] {
+            let out = &mut out[i..i + 4];
+            // SAFETY: `out` has room for four values.
+            unsafe { value.store(out.as_mut_ptr()) };
+        }
     }
 }
 
-/// `media::drag_integrals(u0, w, r)` at r = R without a branch: both
-/// closed forms computed as there, the one that applies kept.
+/// `media::drag_integrals(u0, w, r)` at r = R over four lanes without a
+/// branch: both closed forms computed as there (`EXACT`), or with the
+/// quick arithmetic's multiplications by 1/3 and one reciprocal of w
+/// ([`QUICK`]), the one that applies kept (u0 is never NaN: the sign is
+/// u0's sign bit on 1, as `signum` gives for every other u0).
 #[inline(always)]
-fn drag_integrals(u0: f64, w: f64) -> (f64, f64) {
-    let r = R;
-    let sign = u0.signum();
-    let force_a = sign * (2.0 * r * u0 * u0 + (2.0 / 3.0) * r * r * r * w * w);
-    let torque_a = sign * (4.0 / 3.0) * r * r * r * u0 * w;
-    let g = |u: f64| u * u * u.abs() / 3.0;
-    let h = |u: f64| u * u * u * u.abs() / 4.0;
-    let (up, um) = (u0 + w * r, u0 - w * r);
+fn drag_integrals<const EXACT: bool>(u0: F64x4, w: F64x4) -> (F64x4, F64x4) {
+    let (sp, r) = (F64x4::splat, R);
+    let sign = (u0 & sp(-0.0)) | sp(1.0);
+    let force_a = sign * (sp(2.0 * r) * u0 * u0 + sp((2.0 / 3.0) * r * r * r) * w * w);
+    let torque_a = sign * sp(4.0 / 3.0) * sp(r) * sp(r) * sp(r) * u0 * w;
+    let g = |u: F64x4| {
+        let cube = u * u * u.abs();
+        if EXACT {
+            cube / sp(3.0)
+        } else {
+            cube * sp(THIRD)
+        }
+    };
+    // Division by 4 is exact scaling: the product by 1/4 is the quotient.
+    let h = |u: F64x4| u * u * u * u.abs() * sp(0.25);
+    let (up, um) = (u0 + w * sp(r), u0 - w * sp(r));
     let dg = g(up) - g(um);
-    let (force_b, torque_b) = (dg / w, (h(up) - h(um) - u0 * dg) / (w * w));
-    if (w * r).abs() <= u0.abs() {
-        (force_a, torque_a)
+    let rest = h(up) - h(um) - u0 * dg;
+    let (force_b, torque_b) = if EXACT {
+        (dg / w, rest / (w * w))
     } else {
-        (force_b, torque_b)
-    }
+        let inv_w = sp(1.0) / w;
+        (dg * inv_w, rest * (inv_w * inv_w))
+    };
+    let closed_a = (w * sp(r)).abs().le_mask(u0.abs());
+    (
+        force_b.select(force_a, closed_a),
+        torque_b.select(torque_a, closed_a),
+    )
 }
+
+/// 1/3 rounded: the quick arithmetic's factor for the drag's divisions
+/// by 3.
+const THIRD: f64 = 1.0 / 3.0;
+
+/// The fused path's arithmetic, a const parameter `EXACT`: [`PORTABLE`],
+/// the portable path's divisions (with the library's frames and with pin
+/// friction: every run that is the portable one bit for bit), or
+/// [`QUICK`], for the tank's runs with
+/// the springs' frames: Lagrange's θ equation multiplied by 1/(I + I_a)
+/// and the drag's closed form by 1/3 and one reciprocal of w instead of
+/// dividing by I + I_a, 3, w and w² (four divisions of five per block on
+/// the one divider, docs/performance.md). Each product is within 1.5 ulp
+/// of the quotient it replaces; the tests bound what that does to a force
+/// evaluation and to the tank's trajectory (`tests`).
+const QUICK: bool = false;
+/// The portable path's arithmetic ([`QUICK`]).
+const PORTABLE: bool = true;
 
 /// The paper's springs' gradient into `s.grad`: `Ladder::gradient_with`'s
 /// loop (`model::ladder`), the same operations in the same order, on

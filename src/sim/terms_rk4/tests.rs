@@ -185,10 +185,12 @@ fn pin_friction_gives_the_portable_trajectory() {
 }
 
 /// The frames from the springs' sine and cosine (`model::trig`, within
-/// 4e-16 of the library's) move one force evaluation by a few ulps, and
-/// the tank's trajectory over 500 τ (the motor's drive and the kink's
-/// start) by less than 1e-9 s and 1e-9 rad (measured: 6.0e-11 and
-/// 1.8e-11 /τ; the kink amplifies the first differences).
+/// 4e-16 of the library's) and the quick arithmetic (`QUICK`: products
+/// by 1/3, 1/w and 1/(I + I_a) for the drag's and Lagrange's divisions)
+/// move one force evaluation by a few ulps, and the tank's trajectory
+/// over 500 τ (the motor's drive and the kink's start) by less than 1e-9
+/// s and 1e-9 rad (measured: 1.9e-10 and 6.1e-11 /τ, the frames alone
+/// 6.0e-11 and 1.8e-11; the kink amplifies the first differences).
 #[test]
 fn shared_frames_stay_within_the_stated_bound() {
     if !has_avx2() {
@@ -254,4 +256,59 @@ fn one_evaluation_within_ulps_of_the_portable_one() {
             "{worst:e} of {scale:e}"
         );
     }
+}
+
+/// The drag's closed forms in the quick arithmetic against the portable
+/// one, over speeds and rates of either sign and both closed forms: the
+/// force within 4 ulps of the larger of g(u0 ± wR)/|w|, the torque within
+/// 4 ulps of (the larger h(u0 ± wR) + |u0| g(u0 ± wR))/w² (the terms the
+/// closed form subtracts; each product is within 1.5 ulp of the quotient
+/// it replaces, and 1/3 is rounded once).
+#[test]
+fn the_quick_drag_is_within_ulps_of_the_portable_one() {
+    if !has_avx2() {
+        return;
+    }
+    #[target_feature(enable = "avx2")]
+    unsafe fn both(u0: f64, w: f64) -> [(f64, f64); 2] {
+        let (u, w) = (F64x4::splat(u0), F64x4::splat(w));
+        let lane = |(f, t): (F64x4, F64x4)| (f.lane(0), t.lane(0));
+        [
+            lane(drag_integrals::<PORTABLE>(u, w)),
+            lane(drag_integrals::<QUICK>(u, w)),
+        ]
+    }
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut next = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    let mut differed = 0;
+    for _ in 0..20_000 {
+        let (u0, w) = (
+            next() * 10f64.powf(3.0 * next()),
+            next() * 10f64.powf(3.0 * next()),
+        );
+        // SAFETY: the CPU has AVX2 (checked above).
+        let [(f, t), (fq, tq)] = unsafe { both(u0, w) };
+        let g = |u: f64| u * u * u.abs() / 3.0;
+        let h = |u: f64| u * u * u * u.abs() / 4.0;
+        let (up, um) = (u0 + w * R, u0 - w * R);
+        let gm = g(up).max(g(um));
+        let f_scale = gm / w.abs();
+        let t_scale = (h(up).abs().max(h(um).abs()) + u0.abs() * gm) / (w * w);
+        let ulp = 4.0 * f64::EPSILON;
+        assert!(
+            (f - fq).abs() <= ulp * f_scale.max(f.abs()),
+            "u0 {u0}, w {w}: {f} {fq}"
+        );
+        assert!(
+            (t - tq).abs() <= ulp * t_scale.max(t.abs()),
+            "u0 {u0}, w {w}: {t} {tq}"
+        );
+        differed += usize::from(f != fq || t != tq);
+    }
+    assert!(differed > 0, "the quick arithmetic should differ somewhere");
 }
