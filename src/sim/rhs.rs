@@ -4,6 +4,7 @@
 //! with block 1 constrained by the
 //! protocol.
 
+use super::budget::Quadrature;
 use super::protocol::{Drive, Protocol};
 use crate::model::Ladder;
 use crate::model::ladder::{ForceScratch, Frames, ix, iy};
@@ -62,6 +63,9 @@ pub struct Rhs<'a> {
     /// Each ribbon's tangent points at the last evaluation, where the
     /// next one's search starts (`model::tangent::warm_tangent`).
     warm: Vec<Warm>,
+    /// The rates Ẇ and Ḋ of the energy budget at the last evaluation
+    /// (`sim::budget`), where the run keeps them ([`Rhs::keep_powers`]).
+    powers: Option<Quadrature>,
 }
 
 impl<'a> Rhs<'a> {
@@ -94,7 +98,21 @@ impl<'a> Rhs<'a> {
             poses: Vec::new(),
             spans: Vec::new(),
             warm: Vec::new(),
+            powers: None,
         }
+    }
+
+    /// From now on, every evaluation of the accelerations with the terms
+    /// also gives the energy budget's rates Ẇ and Ḋ there
+    /// ([`Rhs::powers`], `sim::budget`); the accelerations are the same
+    /// bit for bit.
+    pub fn keep_powers(&mut self) {
+        self.powers = Some(Quadrature::default());
+    }
+
+    /// Ẇ and Ḋ at the last evaluation, where kept.
+    pub fn powers(&self) -> Option<Quadrature> {
+        self.powers
     }
 
     /// The ladder's terms beyond the paper's model.
@@ -221,7 +239,9 @@ impl<'a> Rhs<'a> {
     /// The accelerations with added mass, drag and pin friction
     /// (`model::media`): the generalised forces (links, gravity, linear
     /// damping, pin friction, drag) through Lagrange's equations of each
-    /// free block, with its velocity terms and M⁻¹ in closed form.
+    /// free block, with its velocity terms and M⁻¹ in closed form. Where
+    /// the run keeps its budget, Ẇ and Ḋ from the same forces
+    /// (`sim::budget`): block 1's drag, and the powers, computed beside.
     fn acceleration_with_terms(&mut self, q: &[f64], v: &[f64], acc: &mut [f64]) {
         let ladder = self.ladder;
         self.frames.at(ladder.n(), q);
@@ -233,31 +253,16 @@ impl<'a> Rhs<'a> {
         } else {
             self.terms_gradient(q, true);
         }
+        let lost = self.generalised_forces(q, v);
         let t = self.terms;
-        let gamma = ladder.params.gamma;
-        self.force.resize(self.grad.len(), 0.0);
-        for (k, (f, g)) in self.force.iter_mut().zip(&self.grad).enumerate() {
-            let rate = if k % 3 == 2 { gamma * R * R } else { gamma };
-            *f = -g - rate * v[k];
-        }
-        if let Some(friction) = t.friction {
-            friction.add_forces(ladder, &t.links, &self.frames, (q, v), &mut self.force);
-        }
-        if let Some(b) = ladder.built {
-            b.ribbons
-                .add_damping_of(&self.poses, &self.spans, v, &mut self.force);
-        }
-        if let Some(b) = ladder.built
-            && let Some(c) = b.contact
-        {
-            let o = b.ribbons.outline;
-            let deepest = c.add_forces_posed(ladder.blocks(), &o, &self.poses, v, &mut self.force);
-            self.deepest_overlap = self.deepest_overlap.max(deepest);
-        }
         let j = ladder.params.inertia + t.added_inertia;
+        let keep = self.powers.is_some();
+        // Ẇ = −θ̇₁ Q_θ₁ (block 1's centre is clamped) and the drag's Ḋ.
+        let (mut work, mut drag) = (0.0, 0.0);
         for i in 0..ladder.n() {
             let k = 3 * i;
-            if self.inv_mass[k] == 0.0 {
+            let driven = self.inv_mass[k] == 0.0;
+            if driven && !keep {
                 acc[k..k + 3].fill(0.0);
                 continue;
             }
@@ -269,10 +274,65 @@ impl<'a> Rhs<'a> {
                 for (a, b) in qi.iter_mut().zip(d) {
                     *a += b;
                 }
+                if keep {
+                    drag -= dot(&vi, &d);
+                }
+            }
+            if driven {
+                acc[k..k + 3].fill(0.0);
+                work -= dot(&vi, &qi);
+                continue;
             }
             let a = media::block_acceleration_framed(t.added_mass, j, frame, vi, qi);
             acc[k..k + 3].copy_from_slice(&a);
         }
+        if keep {
+            let dissipated = lost + drag;
+            self.powers = Some(Quadrature { work, dissipated });
+        }
+    }
+
+    /// The generalised forces before drag into `force`: −∂E/∂q, linear
+    /// damping, pin friction, the ribbons' dashpots and the contacts.
+    /// Returns the power they dissipate where the run keeps its budget
+    /// (pin friction's as the power its forces take), else 0.
+    fn generalised_forces(&mut self, q: &[f64], v: &[f64]) -> f64 {
+        let ladder = self.ladder;
+        let t = self.terms;
+        let keep = self.powers.is_some();
+        let gamma = ladder.params.gamma;
+        self.force.resize(self.grad.len(), 0.0);
+        for (k, (f, g)) in self.force.iter_mut().zip(&self.grad).enumerate() {
+            let rate = if k % 3 == 2 { gamma * R * R } else { gamma };
+            *f = -g - rate * v[k];
+        }
+        let mut lost = 0.0;
+        if keep {
+            for (k, w) in v.iter().enumerate() {
+                let rate = if k % 3 == 2 { gamma * R * R } else { gamma };
+                lost += rate * w * w;
+            }
+        }
+        if let Some(friction) = t.friction {
+            let before = if keep { dot(&self.force, v) } else { 0.0 };
+            friction.add_forces(ladder, &t.links, &self.frames, (q, v), &mut self.force);
+            if keep {
+                lost -= dot(&self.force, v) - before;
+            }
+        }
+        if let Some(b) = ladder.built {
+            lost += b
+                .ribbons
+                .add_damping_of(&self.poses, &self.spans, v, &mut self.force);
+            if let Some(c) = b.contact {
+                let o = b.ribbons.outline;
+                let (deepest, d) =
+                    c.add_forces_posed(ladder.blocks(), &o, &self.poses, v, &mut self.force);
+                self.deepest_overlap = self.deepest_overlap.max(deepest);
+                lost += d;
+            }
+        }
+        lost
     }
 
     /// Mechanical energy: kinetic plus potential (with the terms'
@@ -284,6 +344,11 @@ impl<'a> Rhs<'a> {
         media::kinetic_energy(self.ladder, &self.terms, &s.q, &s.v, false)
             + media::potential_energy(self.ladder, &self.terms, &s.q)
     }
+}
+
+/// Σ a_k b_k, in order of k.
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 #[cfg(test)]
