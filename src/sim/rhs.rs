@@ -13,6 +13,7 @@ use crate::model::outline::Pose;
 use crate::model::params::{M, R};
 use crate::model::ribbons::{Ribbons, Span};
 use crate::model::tangent::Warm;
+use crate::model::terms::PinFriction;
 
 /// Positions q and velocities v, both in the model's layout [X, Y, θ per block].
 #[derive(Debug, Clone, PartialEq)]
@@ -241,7 +242,7 @@ impl<'a> Rhs<'a> {
     /// damping, pin friction, drag) through Lagrange's equations of each
     /// free block, with its velocity terms and M⁻¹ in closed form. Where
     /// the run keeps its budget, Ẇ and Ḋ from the same forces
-    /// (`sim::budget`): block 1's drag, and the powers, computed beside.
+    /// ([`Rhs::stage_powers`]).
     fn acceleration_with_terms(&mut self, q: &[f64], v: &[f64], acc: &mut [f64]) {
         let ladder = self.ladder;
         self.frames.at(ladder.n(), q);
@@ -253,16 +254,36 @@ impl<'a> Rhs<'a> {
         } else {
             self.terms_gradient(q, true);
         }
-        let lost = self.generalised_forces(q, v);
         let t = self.terms;
+        let gamma = ladder.params.gamma;
+        self.force.resize(self.grad.len(), 0.0);
+        for (k, (f, g)) in self.force.iter_mut().zip(&self.grad).enumerate() {
+            let rate = if k % 3 == 2 { gamma * R * R } else { gamma };
+            *f = -g - rate * v[k];
+        }
+        // The power the dashpots, contacts and pin friction dissipate.
+        let mut lost = 0.0;
+        if let Some(friction) = t.friction {
+            lost = self.add_friction(&friction, q, v);
+        }
+        if let Some(b) = ladder.built {
+            lost += b
+                .ribbons
+                .add_damping_of(&self.poses, &self.spans, v, &mut self.force);
+        }
+        if let Some(b) = ladder.built
+            && let Some(c) = b.contact
+        {
+            let o = b.ribbons.outline;
+            let (deepest, d) =
+                c.add_forces_posed(ladder.blocks(), &o, &self.poses, v, &mut self.force);
+            self.deepest_overlap = self.deepest_overlap.max(deepest);
+            lost += d;
+        }
         let j = ladder.params.inertia + t.added_inertia;
-        let keep = self.powers.is_some();
-        // Ẇ = −θ̇₁ Q_θ₁ (block 1's centre is clamped) and the drag's Ḋ.
-        let (mut work, mut drag) = (0.0, 0.0);
         for i in 0..ladder.n() {
             let k = 3 * i;
-            let driven = self.inv_mass[k] == 0.0;
-            if driven && !keep {
+            if self.inv_mass[k] == 0.0 {
                 acc[k..k + 3].fill(0.0);
                 continue;
             }
@@ -274,65 +295,60 @@ impl<'a> Rhs<'a> {
                 for (a, b) in qi.iter_mut().zip(d) {
                     *a += b;
                 }
-                if keep {
-                    drag -= dot(&vi, &d);
-                }
-            }
-            if driven {
-                acc[k..k + 3].fill(0.0);
-                work -= dot(&vi, &qi);
-                continue;
             }
             let a = media::block_acceleration_framed(t.added_mass, j, frame, vi, qi);
             acc[k..k + 3].copy_from_slice(&a);
         }
-        if keep {
-            let dissipated = lost + drag;
-            self.powers = Some(Quadrature { work, dissipated });
+        if self.powers.is_some() {
+            self.stage_powers(v, lost);
         }
     }
 
-    /// The generalised forces before drag into `force`: −∂E/∂q, linear
-    /// damping, pin friction, the ribbons' dashpots and the contacts.
-    /// Returns the power they dissipate where the run keeps its budget
-    /// (pin friction's as the power its forces take), else 0.
-    fn generalised_forces(&mut self, q: &[f64], v: &[f64]) -> f64 {
-        let ladder = self.ladder;
-        let t = self.terms;
+    /// Pin friction's forces at (q, v) added to `force`; where the run
+    /// keeps its budget, returns the power they take (else 0).
+    fn add_friction(&mut self, friction: &PinFriction, q: &[f64], v: &[f64]) -> f64 {
         let keep = self.powers.is_some();
-        let gamma = ladder.params.gamma;
-        self.force.resize(self.grad.len(), 0.0);
-        for (k, (f, g)) in self.force.iter_mut().zip(&self.grad).enumerate() {
-            let rate = if k % 3 == 2 { gamma * R * R } else { gamma };
-            *f = -g - rate * v[k];
-        }
-        let mut lost = 0.0;
+        let before = if keep { dot(&self.force, v) } else { 0.0 };
+        let links = &self.terms.links;
+        friction.add_forces(self.ladder, links, &self.frames, (q, v), &mut self.force);
         if keep {
-            for (k, w) in v.iter().enumerate() {
-                let rate = if k % 3 == 2 { gamma * R * R } else { gamma };
-                lost += rate * w * w;
+            before - dot(&self.force, v)
+        } else {
+            0.0
+        }
+    }
+
+    /// The energy budget's rates at this evaluation (`sim::budget`) from
+    /// its generalised forces before drag (`force`), `lost` the power the
+    /// dashpots, contacts and pin friction dissipate: Ẇ = −θ̇₁ Q_θ₁
+    /// (block 1's centre is clamped; Q with its drag), Ḋ = `lost` plus
+    /// linear damping's and drag's power over every block.
+    #[inline(never)]
+    fn stage_powers(&mut self, v: &[f64], lost: f64) {
+        let t = self.terms;
+        let gamma = self.ladder.params.gamma;
+        let mut dissipated = lost;
+        for (k, w) in v.iter().enumerate() {
+            let rate = if k % 3 == 2 { gamma * R * R } else { gamma };
+            dissipated += rate * w * w;
+        }
+        let mut work = 0.0;
+        for i in 0..self.ladder.n() {
+            let k = 3 * i;
+            let vi = [v[k], v[k + 1], v[k + 2]];
+            let mut qi = [self.force[k], self.force[k + 1], self.force[k + 2]];
+            if t.drag != 0.0 {
+                let d = media::drag_force_framed(t.drag, self.frames.get(i).1, vi);
+                dissipated -= dot(&vi, &d);
+                for (a, b) in qi.iter_mut().zip(d) {
+                    *a += b;
+                }
+            }
+            if self.inv_mass[k] == 0.0 {
+                work -= dot(&vi, &qi);
             }
         }
-        if let Some(friction) = t.friction {
-            let before = if keep { dot(&self.force, v) } else { 0.0 };
-            friction.add_forces(ladder, &t.links, &self.frames, (q, v), &mut self.force);
-            if keep {
-                lost -= dot(&self.force, v) - before;
-            }
-        }
-        if let Some(b) = ladder.built {
-            lost += b
-                .ribbons
-                .add_damping_of(&self.poses, &self.spans, v, &mut self.force);
-            if let Some(c) = b.contact {
-                let o = b.ribbons.outline;
-                let (deepest, d) =
-                    c.add_forces_posed(ladder.blocks(), &o, &self.poses, v, &mut self.force);
-                self.deepest_overlap = self.deepest_overlap.max(deepest);
-                lost += d;
-            }
-        }
-        lost
+        self.powers = Some(Quadrature { work, dissipated });
     }
 
     /// Mechanical energy: kinetic plus potential (with the terms'
