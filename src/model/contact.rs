@@ -233,11 +233,12 @@ impl Contact {
         out: &mut [f64],
     ) -> f64 {
         let poses: Vec<Pose> = (0..blocks.n).map(|i| Pose::of(q, i)).collect();
-        self.add_forces_posed(blocks, o, &poses, v, out)
+        self.add_forces_posed(blocks, o, &poses, v, out).0
     }
 
     /// [`Contact::add_forces`] at the blocks' `poses` (one per block, as
-    /// [`Pose::of`] gives them at q).
+    /// [`Pose::of`] gives them at q). Returns the deepest overlap and the
+    /// power the contacts dissipate, as [`Contact::dissipation`].
     pub fn add_forces_posed(
         &self,
         blocks: Blocks,
@@ -245,10 +246,11 @@ impl Contact {
         poses: &[Pose],
         v: &[f64],
         out: &mut [f64],
-    ) -> f64 {
-        let mut deepest = 0.0_f64;
+    ) -> (f64, f64) {
+        let (mut deepest, mut dissipated) = (0.0_f64, 0.0);
         self.for_each_touch_posed(blocks, o, poses, v, |t| {
             deepest = deepest.max(t.depth);
+            dissipated += self.dissipated_at(&t);
             let tangent = [-t.normal[1], t.normal[0]];
             let f = [
                 t.normal_force * t.normal[0] + t.friction_force * tangent[0],
@@ -258,7 +260,14 @@ impl Contact {
             add_point_force(out, &pa, t.a, pa.local(t.point), f);
             add_point_force(out, &pb, t.b, pb.local(t.point), [-f[0], -f[1]]);
         });
-        deepest
+        (deepest, dissipated)
+    }
+
+    /// Power one touch dissipates: its dashpot's (the normal force beyond
+    /// the spring k_c δ, times the approach δ̇) and its friction's.
+    #[inline]
+    fn dissipated_at(&self, t: &Touch) -> f64 {
+        (t.normal_force - self.stiffness * t.depth) * t.approach - t.friction_force * t.slip
     }
 
     /// Elastic energy Σ ½ k_c δ² of the overlaps at q.
@@ -275,10 +284,7 @@ impl Contact {
     /// the friction's.
     pub fn dissipation(&self, blocks: Blocks, o: &Outline, q: &[f64], v: &[f64]) -> f64 {
         let mut d = 0.0;
-        self.for_each_touch(blocks, o, q, v, |t| {
-            d += (t.normal_force - self.stiffness * t.depth) * t.approach
-                - t.friction_force * t.slip;
-        });
+        self.for_each_touch(blocks, o, q, v, |t| d += self.dissipated_at(&t));
         d
     }
 }

@@ -219,19 +219,31 @@ impl Ribbons {
         if self.damping == 0.0 {
             return;
         }
-        self.for_each_span(n, q, |i, pu, pl, s| self.add_dashpot(i, pu, pl, s, v, out));
+        self.for_each_span(n, q, |i, pu, pl, s| {
+            self.add_dashpot(i, pu, pl, s, v, out);
+        });
     }
 
-    /// One ribbon's dashpot force at v into `out` (forces).
+    /// One ribbon's dashpot force at v into `out` (forces); returns the
+    /// power it dissipates, extra · L̇ (as [`Ribbons::dissipation`]).
     #[inline]
-    fn add_dashpot(&self, i: usize, pu: &Pose, pl: &Pose, s: &Span, v: &[f64], out: &mut [f64]) {
-        let (extra, _) = self.dashpot(i, pu, pl, s, v);
+    fn add_dashpot(
+        &self,
+        i: usize,
+        pu: &Pose,
+        pl: &Pose,
+        s: &Span,
+        v: &[f64],
+        out: &mut [f64],
+    ) -> f64 {
+        let (extra, rate) = self.dashpot(i, pu, pl, s, v);
         if extra == 0.0 {
-            return;
+            return 0.0;
         }
         let f = [extra * s.dir[0], extra * s.dir[1]];
         add_point_force(out, pu, i, s.d, f);
         add_point_force(out, pl, i + 1, s.e, [-f[0], -f[1]]);
+        extra * rate
     }
 
     /// Every ribbon's span at the blocks' `poses` (one per block, as
@@ -264,15 +276,24 @@ impl Ribbons {
     }
 
     /// [`Ribbons::add_damping`] from the spans [`Ribbons::find_spans`]
-    /// found at `poses`: the same numbers, bit for bit.
-    pub fn add_damping_of(&self, poses: &[Pose], spans: &[Span], v: &[f64], out: &mut [f64]) {
+    /// found at `poses`: the same numbers, bit for bit. Returns the power
+    /// the dashpots dissipate (≥ 0), as [`Ribbons::dissipation`].
+    pub fn add_damping_of(
+        &self,
+        poses: &[Pose],
+        spans: &[Span],
+        v: &[f64],
+        out: &mut [f64],
+    ) -> f64 {
+        let mut d = 0.0;
         if self.damping == 0.0 {
-            return;
+            return d;
         }
         for (k, s) in spans.iter().enumerate() {
             let i = k / 2;
-            self.add_dashpot(i, &poses[i], &poses[i + 1], s, v, out);
+            d += self.add_dashpot(i, &poses[i], &poses[i + 1], s, v, out);
         }
+        d
     }
 
     /// Power the dashpots dissipate at (q, v), Σ −extra · L̇ ≥ 0.

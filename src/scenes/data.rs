@@ -132,6 +132,13 @@ pub struct RunData {
     /// built with contact); absent otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub impacts: Option<Vec<sim::impacts::Impact>>,
+    /// The run's energy budget (`sim::budget`, docs/formats.md "The
+    /// energy budget"): the work W done through block 1, the energy D
+    /// dissipated, the change ΔE and the residual ΔE − (W − D), in k s²,
+    /// accumulated inside the integrator; for the toy as built, absent
+    /// otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub budget: Option<sim::budget::Budget>,
     /// Times in seconds and speeds in cm/s, where an apparatus gives the
     /// units (docs/experiments.md); absent in the model's units alone.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -380,6 +387,7 @@ impl RunData {
             final_theta_deg: traj.final_theta_deg(),
             waves: traj.waves.clone(),
             impacts: traj.impacts.clone(),
+            budget: traj.budget,
             units: Units::of(scene, &traj.arrival_times, speed)
                 .map(|u| u.with_impacts(scene, traj.impacts.as_deref())),
             frames: Frames(Arc::new(rows)),
@@ -518,6 +526,17 @@ pub fn impact_bytes(s: &Scene) -> f64 {
     n * s.run.t_end / 100.0 * IMPACTS_PER_BLOCK_100_TAU * BYTES_PER_IMPACT
 }
 
+/// Bytes of a run's `budget` (`sim::budget::Budget`: four numbers and
+/// their keys, pretty-printed, about 150).
+pub const BYTES_PER_BUDGET: f64 = 200.0;
+
+/// The bytes allowed for the budget a run of `s` records: a run of the
+/// toy as built (ribbons) keeps one (`sim::budget::kept`), others none.
+pub fn budget_bytes(s: &Scene) -> f64 {
+    let built = s.apparatus.as_ref().is_some_and(|a| a.ribbons);
+    if built { BYTES_PER_BUDGET } else { 0.0 }
+}
+
 /// Numbers of the data file per block and sample of `output`: θ, X and
 /// Y of each frame, and sin θ where a kymograph is drawn.
 fn values_per_block_sample(output: &OutputSpec) -> f64 {
@@ -531,8 +550,9 @@ fn values_per_block_sample(output: &OutputSpec) -> f64 {
 /// An upper estimate of the bytes of `scene`'s data file drawn with
 /// `movie` (a kymograph figure with `kymograph_rows` rows), made before
 /// any work (docs/limits.md): per run, samples × N × the numbers of each
-/// block × [`BYTES_PER_VALUE`], plus N × [`BYTES_PER_BLOCK_RUN`] and
-/// the impacts' allowance ([`impact_bytes`]); plus [`BYTES_FIXED`].
+/// block × [`BYTES_PER_VALUE`], plus N × [`BYTES_PER_BLOCK_RUN`], the
+/// impacts' allowance ([`impact_bytes`]) and the budget's
+/// ([`budget_bytes`]); plus [`BYTES_FIXED`].
 /// Returns the bytes and the largest samples × N.
 pub fn estimated_bytes(scene: &Scene, movie: &MovieOptions, kymograph_rows: usize) -> (f64, f64) {
     let per = values_per_block_sample(&scene.output);
@@ -545,7 +565,10 @@ pub fn estimated_bytes(scene: &Scene, movie: &MovieOptions, kymograph_rows: usiz
             _ => times.len(),
         } as f64;
         let n = s.model.n as f64;
-        bytes += samples * n * per * BYTES_PER_VALUE + n * BYTES_PER_BLOCK_RUN + impact_bytes(&s);
+        bytes += samples * n * per * BYTES_PER_VALUE
+            + n * BYTES_PER_BLOCK_RUN
+            + impact_bytes(&s)
+            + budget_bytes(&s);
         if matches!(scene.output, OutputSpec::Energy) {
             // Six numbers a sample, whatever N.
             bytes += ENERGY_SAMPLES as f64 * EnergyData::VALUES_PER_SAMPLE * BYTES_PER_VALUE;

@@ -6,6 +6,7 @@
 //! exactly on `t_stop` when the rest of the interval fits in one step; the
 //! run loop puts every sample time and every drive corner into `t_stop`.
 
+use super::budget::Quadrature;
 use super::chain::{ChainEuler, ChainVerlet};
 use super::fused::{Batch, FusedEuler, Stepping};
 use super::observables::ArrivalDetector;
@@ -219,6 +220,12 @@ pub trait Integrator {
     ) -> Result<(f64, u64)> {
         default_advance_many(self, rhs, st, (t, t_stop), max_steps, arrivals)
     }
+
+    /// W and D so far (`sim::budget`, `Rhs::keep_powers`): explicit
+    /// Euler, RK4 on the portable path and dopri5 keep them.
+    fn budget(&self) -> Option<Quadrature> {
+        None
+    }
 }
 
 /// Step size that divides [t, t_stop] into whole steps of at most `dt`.
@@ -250,6 +257,8 @@ pub struct FixedStep {
     /// the first `advance_many` looks at the ladder, then whether it applies.
     terms_rk4: Option<Option<Box<TermsRk4>>>,
     stepping: Stepping,
+    /// Explicit Euler's W and D (`sim::budget`), once kept.
+    budget: Option<Quadrature>,
 }
 
 impl FixedStep {
@@ -268,12 +277,16 @@ impl FixedStep {
             chain_verlet: None,
             terms_rk4: None,
             stepping: Stepping::Portable,
+            budget: None,
         }
     }
 
     /// Forward Euler: q' = q + h v, v' = v + h a(q, v).
     fn explicit_euler(&mut self, rhs: &mut Rhs, st: &mut State, h: f64) {
         rhs.acceleration(&st.q, &st.v, &mut self.acc);
+        if let Some(p) = rhs.powers() {
+            Quadrature::step(&mut self.budget, h, &[1.0], &[p]);
+        }
         for k in 0..st.q.len() {
             st.q[k] += h * st.v[k];
             st.v[k] += h * self.acc[k];
@@ -435,6 +448,17 @@ impl Integrator for FixedStep {
         };
         Ok((t_new, count))
     }
+
+    fn budget(&self) -> Option<Quadrature> {
+        match self.kind {
+            IntegratorKind::ExplicitEuler => self.budget,
+            // Not the fused RK4 of a fluid's terms.
+            IntegratorKind::Rk4 if !matches!(self.terms_rk4, Some(Some(_))) => {
+                self.rk.as_ref()?.budget
+            }
+            _ => None,
+        }
+    }
 }
 
 /// The trait's default `advance_many`, for an override that falls back to it.
@@ -471,6 +495,13 @@ struct RungeKutta {
     dv: Vec<f64>,
     /// Time at which stage 0 equals the derivative of the current state (FSAL).
     fsal_at: Option<f64>,
+    /// Ẇ and Ḋ at each stage (`kept`: the right-hand side gives them),
+    /// the last trial's step, and W and D: y's two more components
+    /// summed with the weights b (`sim::budget`).
+    powers: Vec<Quadrature>,
+    kept: bool,
+    h: f64,
+    budget: Option<Quadrature>,
 }
 
 impl RungeKutta {
@@ -487,6 +518,10 @@ impl RungeKutta {
             dq: vec![0.0; dof],
             dv: vec![0.0; dof],
             fsal_at: None,
+            powers: vec![Quadrature::default(); stages],
+            kept: false,
+            h: 0.0,
+            budget: None,
         }
     }
 
@@ -495,12 +530,16 @@ impl RungeKutta {
         rhs.constrain(ts, &mut self.q, &mut self.v);
         self.kq[i].copy_from_slice(&self.v);
         rhs.acceleration(&self.q, &self.v, &mut self.kv[i]);
+        if let Some(p) = rhs.powers() {
+            (self.powers[i], self.kept) = (p, true);
+        }
     }
 
     /// Computes all stages for a step of size `h` from (st, t) and leaves the
     /// new state in (self.q, self.v) and the error estimate in err_q/err_v.
     fn trial(&mut self, rhs: &mut Rhs, st: &State, t: f64, h: f64, fsal: bool) {
         let tab = self.tableau;
+        self.h = h;
         if !(fsal && self.fsal_at == Some(t)) {
             self.q.copy_from_slice(&st.q);
             self.v.copy_from_slice(&st.v);
@@ -556,10 +595,14 @@ impl RungeKutta {
     fn accept(&mut self, st: &mut State, t_new: f64, fsal: bool) {
         st.q.copy_from_slice(&self.q);
         st.v.copy_from_slice(&self.v);
+        if self.kept {
+            Quadrature::step(&mut self.budget, self.h, self.tableau.b, &self.powers);
+        }
         if fsal {
             let last = self.kq.len() - 1;
             self.kq.swap(0, last);
             self.kv.swap(0, last);
+            self.powers.swap(0, last);
             self.fsal_at = Some(t_new);
         }
     }
@@ -616,6 +659,9 @@ impl Integrator for Dopri5 {
         IntegratorKind::Dopri5
     }
 
+    fn budget(&self) -> Option<Quadrature> {
+        self.rk.budget
+    }
     fn advance(&mut self, rhs: &mut Rhs, st: &mut State, t: f64, t_stop: f64) -> Result<f64> {
         let Some(rtol) = self.rtol else {
             let (h, last) = subdivide(t, t_stop, self.h);

@@ -3,6 +3,7 @@
 
 pub mod auto;
 pub mod batch;
+pub mod budget;
 pub mod chain;
 pub mod cost;
 mod divergence;
@@ -467,6 +468,11 @@ pub fn run_streaming(
     let mut rhs = Rhs::new(ladder, &scenario.protocol, &scenario.initial.q);
     let mut st = scenario.initial.clone();
     rhs.constrain(0.0, &mut st.q, &mut st.v);
+    // The energy budget's E at the start, where the run keeps it.
+    let e0 = budget::kept(ladder, options.budget).then(|| {
+        rhs.keep_powers();
+        budget::energy(ladder, &scenario.protocol, (&st.q, &st.v))
+    });
     // A fluid's terms take RK4's fused path (`terms_rk4`) where it applies.
     let kernels = scenario.ladder.velocity_dependent();
     let mut integrator = config.build(rhs.dof(), if kernels { options.stepping } else { stepping });
@@ -539,9 +545,12 @@ pub fn run_streaming(
     }
     let at_rest = proved_at_rest(ladder, &scenario.protocol, t, &st);
     let waves = tracker.finish(&st.q, at_rest);
+    let e1 = budget::energy(ladder, &scenario.protocol, (&st.q, &st.v));
+    let budget = e0.and_then(|e0| Some(budget::Budget::new(integrator.budget()?, e1 - e0)));
     let mut traj = Trajectory::finished(st, t, arrivals.arrival, steps, rhs.force_evals);
     traj.waves = waves;
     traj.impacts = impacts.map(|w| w.impacts);
+    traj.budget = budget;
     Ok(traj)
 }
 

@@ -4,6 +4,7 @@
 //! with block 1 constrained by the
 //! protocol.
 
+use super::budget::Quadrature;
 use super::protocol::{Drive, Protocol};
 use crate::model::Ladder;
 use crate::model::ladder::{ForceScratch, Frames, ix, iy};
@@ -12,6 +13,7 @@ use crate::model::outline::Pose;
 use crate::model::params::{M, R};
 use crate::model::ribbons::{Ribbons, Span};
 use crate::model::tangent::Warm;
+use crate::model::terms::PinFriction;
 
 /// Positions q and velocities v, both in the model's layout [X, Y, θ per block].
 #[derive(Debug, Clone, PartialEq)]
@@ -62,6 +64,9 @@ pub struct Rhs<'a> {
     /// Each ribbon's tangent points at the last evaluation, where the
     /// next one's search starts (`model::tangent::warm_tangent`).
     warm: Vec<Warm>,
+    /// The rates Ẇ and Ḋ of the energy budget at the last evaluation
+    /// (`sim::budget`), where the run keeps them ([`Rhs::keep_powers`]).
+    powers: Option<Quadrature>,
 }
 
 impl<'a> Rhs<'a> {
@@ -94,7 +99,21 @@ impl<'a> Rhs<'a> {
             poses: Vec::new(),
             spans: Vec::new(),
             warm: Vec::new(),
+            powers: None,
         }
+    }
+
+    /// From now on, every evaluation of the accelerations with the terms
+    /// also gives the energy budget's rates Ẇ and Ḋ there
+    /// ([`Rhs::powers`], `sim::budget`); the accelerations are the same
+    /// bit for bit.
+    pub fn keep_powers(&mut self) {
+        self.powers = Some(Quadrature::default());
+    }
+
+    /// Ẇ and Ḋ at the last evaluation, where kept.
+    pub fn powers(&self) -> Option<Quadrature> {
+        self.powers
     }
 
     /// The ladder's terms beyond the paper's model.
@@ -221,7 +240,9 @@ impl<'a> Rhs<'a> {
     /// The accelerations with added mass, drag and pin friction
     /// (`model::media`): the generalised forces (links, gravity, linear
     /// damping, pin friction, drag) through Lagrange's equations of each
-    /// free block, with its velocity terms and M⁻¹ in closed form.
+    /// free block, with its velocity terms and M⁻¹ in closed form. Where
+    /// the run keeps its budget, Ẇ and Ḋ from the same forces
+    /// ([`Rhs::stage_powers`]).
     fn acceleration_with_terms(&mut self, q: &[f64], v: &[f64], acc: &mut [f64]) {
         let ladder = self.ladder;
         self.frames.at(ladder.n(), q);
@@ -240,19 +261,24 @@ impl<'a> Rhs<'a> {
             let rate = if k % 3 == 2 { gamma * R * R } else { gamma };
             *f = -g - rate * v[k];
         }
+        // The power the dashpots, contacts and pin friction dissipate.
+        let mut lost = 0.0;
         if let Some(friction) = t.friction {
-            friction.add_forces(ladder, &t.links, &self.frames, (q, v), &mut self.force);
+            lost = self.add_friction(&friction, q, v);
         }
         if let Some(b) = ladder.built {
-            b.ribbons
+            lost += b
+                .ribbons
                 .add_damping_of(&self.poses, &self.spans, v, &mut self.force);
         }
         if let Some(b) = ladder.built
             && let Some(c) = b.contact
         {
             let o = b.ribbons.outline;
-            let deepest = c.add_forces_posed(ladder.blocks(), &o, &self.poses, v, &mut self.force);
+            let (deepest, d) =
+                c.add_forces_posed(ladder.blocks(), &o, &self.poses, v, &mut self.force);
             self.deepest_overlap = self.deepest_overlap.max(deepest);
+            lost += d;
         }
         let j = ladder.params.inertia + t.added_inertia;
         for i in 0..ladder.n() {
@@ -273,6 +299,56 @@ impl<'a> Rhs<'a> {
             let a = media::block_acceleration_framed(t.added_mass, j, frame, vi, qi);
             acc[k..k + 3].copy_from_slice(&a);
         }
+        if self.powers.is_some() {
+            self.stage_powers(v, lost);
+        }
+    }
+
+    /// Pin friction's forces at (q, v) added to `force`; where the run
+    /// keeps its budget, returns the power they take (else 0).
+    fn add_friction(&mut self, friction: &PinFriction, q: &[f64], v: &[f64]) -> f64 {
+        let keep = self.powers.is_some();
+        let before = if keep { dot(&self.force, v) } else { 0.0 };
+        let links = &self.terms.links;
+        friction.add_forces(self.ladder, links, &self.frames, (q, v), &mut self.force);
+        if keep {
+            before - dot(&self.force, v)
+        } else {
+            0.0
+        }
+    }
+
+    /// The energy budget's rates at this evaluation (`sim::budget`) from
+    /// its generalised forces before drag (`force`), `lost` the power the
+    /// dashpots, contacts and pin friction dissipate: Ẇ = −θ̇₁ Q_θ₁
+    /// (block 1's centre is clamped; Q with its drag), Ḋ = `lost` plus
+    /// linear damping's and drag's power over every block.
+    #[inline(never)]
+    fn stage_powers(&mut self, v: &[f64], lost: f64) {
+        let t = self.terms;
+        let gamma = self.ladder.params.gamma;
+        let mut dissipated = lost;
+        for (k, w) in v.iter().enumerate() {
+            let rate = if k % 3 == 2 { gamma * R * R } else { gamma };
+            dissipated += rate * w * w;
+        }
+        let mut work = 0.0;
+        for i in 0..self.ladder.n() {
+            let k = 3 * i;
+            let vi = [v[k], v[k + 1], v[k + 2]];
+            let mut qi = [self.force[k], self.force[k + 1], self.force[k + 2]];
+            if t.drag != 0.0 {
+                let d = media::drag_force_framed(t.drag, self.frames.get(i).1, vi);
+                dissipated -= dot(&vi, &d);
+                for (a, b) in qi.iter_mut().zip(d) {
+                    *a += b;
+                }
+            }
+            if self.inv_mass[k] == 0.0 {
+                work -= dot(&vi, &qi);
+            }
+        }
+        self.powers = Some(Quadrature { work, dissipated });
     }
 
     /// Mechanical energy: kinetic plus potential (with the terms'
@@ -284,6 +360,11 @@ impl<'a> Rhs<'a> {
         media::kinetic_energy(self.ladder, &self.terms, &s.q, &s.v, false)
             + media::potential_energy(self.ladder, &self.terms, &s.q)
     }
+}
+
+/// Σ a_k b_k, in order of k.
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 #[cfg(test)]

@@ -51,6 +51,15 @@ pub struct RunOptions<'a> {
     /// over every step, which takes the steps one per call. Default
     /// `false`. The trajectory is the same bit for bit either way.
     pub dissipation: bool,
+    /// Keep the energy budget (`Trajectory::budget`, `sim::budget`): the
+    /// work done through block 1 and the energy dissipated, accumulated
+    /// inside the integrator from the powers at every stage. Default
+    /// `None`: kept for the toy as built (its ribbons' search makes the
+    /// powers' cost small), not for other ladders. Only where the forces
+    /// depend on the velocities and the scheme accumulates it (explicit
+    /// Euler, RK4 on the portable path, dopri5). The trajectory is the
+    /// same bit for bit either way.
+    pub budget: Option<bool>,
 }
 
 impl Default for RunOptions<'static> {
@@ -62,6 +71,7 @@ impl Default for RunOptions<'static> {
             progress: &silent,
             every_step: None,
             dissipation: false,
+            budget: None,
         }
     }
 }
@@ -101,6 +111,14 @@ impl<'a> RunOptions<'a> {
         }
     }
 
+    /// These options keeping the energy budget (or not).
+    pub fn budget(self, budget: bool) -> Self {
+        Self {
+            budget: Some(budget),
+            ..self
+        }
+    }
+
     /// These options feeding the wave tracker after every step (or not).
     pub fn every_step(self, every_step: bool) -> Self {
         Self {
@@ -117,6 +135,7 @@ impl std::fmt::Debug for RunOptions<'_> {
             .field("limits", &self.limits)
             .field("every_step", &self.every_step)
             .field("dissipation", &self.dissipation)
+            .field("budget", &self.budget)
             .finish_non_exhaustive()
     }
 }

@@ -33,6 +33,10 @@ pub struct Trajectory {
     /// Every impact between two blocks (`impacts`), in time order, for a
     /// ladder whose blocks may touch; `None` for any other.
     pub impacts: Option<Vec<super::impacts::Impact>>,
+    /// The energy budget from t = 0 to the end of the run, W and D
+    /// accumulated inside the integrator (`budget`,
+    /// `RunOptions::budget`); `None` where the run kept none.
+    pub budget: Option<super::budget::Budget>,
     /// State at the end of the run: at t_end, or at `t_final` where a stop
     /// rule ended it earlier (`RunOptions::stop`).
     pub final_state: State,
@@ -98,6 +102,7 @@ impl Trajectory {
             arrival_times,
             waves: Waves::default(),
             impacts: None,
+            budget: None,
             final_state,
             t_final,
             steps,
