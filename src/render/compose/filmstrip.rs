@@ -166,16 +166,12 @@ impl Captions<'_> {
             .collect()
     }
 
-    /// The widest of [`Self::widths`].
-    fn widest(&self, k: usize, two: bool) -> f32 {
-        self.widths(k, two).into_iter().fold(0.0f32, f32::max)
-    }
-
     /// The strip's width with `k` snapshots `cw` wide a row, each column
-    /// widened to its captions, the gaps and the margins.
-    fn strip_width(&self, k: usize, cw: f32, two: bool) -> f32 {
+    /// widened to its captions' `widths` ([`Self::widths`]), the gaps and
+    /// the margins.
+    fn strip_width(&self, k: usize, cw: f32, widths: &[f32]) -> f32 {
         let mut col = vec![cw; k];
-        for (i, c) in self.widths(k, two).into_iter().enumerate() {
+        for (i, &c) in widths.iter().enumerate() {
             col[i % k] = col[i % k].max(c.ceil());
         }
         col.iter().sum::<f32>() + (k as f32 - 1.0) * self.gap + 2.0 * self.margin
@@ -377,19 +373,23 @@ impl StripPlan {
         // snapshot, at most `most`, whose strip fits the box with its
         // captions on `two` lines (so that a wider box never takes a
         // narrower snapshot).
-        let fitting = |two: bool| {
+        // The captions' widths measured once for each `two`, not at every
+        // width tried.
+        let fitting = |widths: &[f32]| {
             let mut cw = most;
-            while cw > 0.0 && captions.strip_width(k, cw, two) > box_w as f32 {
+            while cw > 0.0 && captions.strip_width(k, cw, widths) > box_w as f32 {
                 cw -= 1.0;
             }
             cw
         };
         [false, true].into_iter().find_map(|two| {
-            let cw = fitting(two);
+            let widths = captions.widths(k, two);
+            let cw = fitting(&widths);
             if cw < theme.min_snapshot.0 || (marked && cw < MARKED_SHARE * w as f32) {
                 return None;
             }
-            if captions.widest(k, two) > cw + gap - theme.caption_slack {
+            let widest = widths.iter().copied().fold(0.0f32, f32::max);
+            if widest > cw + gap - theme.caption_slack {
                 return None;
             }
             let lines = if two { 2.0 } else { 1.0 };
