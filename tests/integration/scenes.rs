@@ -23,11 +23,34 @@ type Files = Vec<(String, Vec<u8>)>;
 
 /// Every catalogue entry rendered at `SMALL`, in `catalog::catalogue()`'s
 /// order: made once, by the first test that asks, for every test here.
+/// The runs two entries share are made once and held while they render,
+/// as `ladder all` holds them (`scenes::shared`: the water tank's levels
+/// and movies, figure 4b's run taken from movie 12's), so that
+/// [`a_printed_scene_renders_to_the_same_bytes`], which renders each
+/// figure again on its own, also checks that a held run draws what a run
+/// of its own draws.
 fn rendered() -> &'static [Files] {
+    use jacobs_ladder::scenes::shared;
+    use jacobs_ladder::sim::tally::Tally;
     static ALL: OnceLock<Vec<Files>> = OnceLock::new();
     ALL.get_or_init(|| {
-        catalog::catalogue()
-            .unwrap()
+        let entries = catalog::catalogue().unwrap();
+        let all: Vec<Scene> = entries.iter().map(|e| e.scene.clone()).collect();
+        let tallies: Vec<std::sync::Arc<Tally>> = all.iter().map(|_| Default::default()).collect();
+        let held = shared::prepare(&all, &SMALL, &tallies).unwrap();
+        let rings: Vec<_> = shared::ring_groups(&all)
+            .iter()
+            .map(|g| {
+                let group: Vec<&Scene> = g.iter().map(|&i| &all[i]).collect();
+                shared::make_ring_runs(&group, &SMALL, &tallies[g[0]])
+            })
+            .collect();
+        assert!(!held.is_empty(), "no run is shared");
+        assert!(
+            !rings.is_empty() && rings.iter().all(|r| r.len() > 1),
+            "no ring chain's run is shared"
+        );
+        entries
             .iter()
             .map(|e| {
                 scenes::render(&e.scene, &SMALL).unwrap_or_else(|err| panic!("{}: {err}", e.id))
