@@ -7,6 +7,7 @@
 //! vector description of a picture. [`Format`] names the file formats and
 //! checks what each can hold. Arrays: NumPy's `.npz` ([`npz`]), streamed.
 
+mod crc;
 mod format;
 mod gif;
 mod isobmff;

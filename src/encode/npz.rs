@@ -14,61 +14,7 @@
 
 use std::io::{self, Seek, SeekFrom, Write};
 
-/// CRC-32 (IEEE 802.3, reflected polynomial 0xEDB88320), the ZIP checksum.
-#[derive(Debug, Clone, Copy)]
-pub struct Crc32(u32);
-
-/// The byte-at-a-time table of the reflected polynomial.
-const CRC_TABLE: [u32; 256] = {
-    let mut table = [0u32; 256];
-    let mut i = 0;
-    while i < 256 {
-        let mut c = i as u32;
-        let mut k = 0;
-        while k < 8 {
-            c = if c & 1 != 0 {
-                0xEDB8_8320 ^ (c >> 1)
-            } else {
-                c >> 1
-            };
-            k += 1;
-        }
-        table[i] = c;
-        i += 1;
-    }
-    table
-};
-
-impl Default for Crc32 {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
-impl Crc32 {
-    pub fn new() -> Self {
-        Self(0xFFFF_FFFF)
-    }
-
-    pub fn update(&mut self, bytes: &[u8]) {
-        let mut c = self.0;
-        for &b in bytes {
-            c = CRC_TABLE[((c ^ b as u32) & 0xFF) as usize] ^ (c >> 8);
-        }
-        self.0 = c;
-    }
-
-    pub fn value(self) -> u32 {
-        !self.0
-    }
-
-    /// The CRC-32 of `bytes`.
-    pub fn of(bytes: &[u8]) -> u32 {
-        let mut c = Self::new();
-        c.update(bytes);
-        c.value()
-    }
-}
+pub use super::crc::Crc32;
 
 /// The `.npy` header (version 1.0) of a C-order f64 array of `shape`,
 /// padded so that the data starts at a multiple of 64 bytes.
@@ -304,13 +250,6 @@ fn local_header(name: &str, crc: u32, size: u32) -> Vec<u8> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn crc32_of_the_check_string() {
-        // The standard check value of CRC-32/ISO-HDLC.
-        assert_eq!(Crc32::of(b"123456789"), 0xCBF4_3926);
-        assert_eq!(Crc32::of(b""), 0);
-    }
 
     #[test]
     fn npy_headers_align_to_64_bytes() {

@@ -74,18 +74,7 @@ fn text_chunk(key: &str, text: &str) -> Vec<u8> {
 
 /// CRC-32 (ISO 3309, as PNG chunks use it).
 fn crc32(bytes: &[u8]) -> u32 {
-    let mut c = 0xffff_ffffu32;
-    for &b in bytes {
-        c ^= b as u32;
-        for _ in 0..8 {
-            c = if c & 1 != 0 {
-                0xedb8_8320 ^ (c >> 1)
-            } else {
-                c >> 1
-            };
-        }
-    }
-    !c
+    super::crc::Crc32::of(bytes)
 }
 
 #[cfg(test)]
