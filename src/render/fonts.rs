@@ -8,17 +8,19 @@ use super::page_style::FontChoice;
 use ab_glyph::FontRef;
 use std::sync::{Arc, Once, OnceLock};
 
-/// The bundled sans-serif font file.
-pub const FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+/// The bundled sans-serif font file. The font files are statics, not
+/// consts: a const is copied into each codegen unit that uses it, and the
+/// release binary carried DejaVu Sans and Liberation Serif twice (1.15 MB).
+pub static FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 /// Its family name (as in the file; SVG text uses it).
 pub const FONT_FAMILY: &str = "DejaVu Sans";
 /// The bundled serif font file (SIL Open Font License 1.1).
-pub const SERIF_BYTES: &[u8] = include_bytes!("../../assets/fonts/LiberationSerif-Regular.ttf");
+pub static SERIF_BYTES: &[u8] = include_bytes!("../../assets/fonts/LiberationSerif-Regular.ttf");
 /// Its family name (as in the file).
 pub const SERIF_FAMILY: &str = "Liberation Serif";
 /// The italic face of the serif font (same family and licence), for the
 /// italic runs of print text ([`italic_chars`]).
-pub const SERIF_ITALIC_BYTES: &[u8] =
+pub static SERIF_ITALIC_BYTES: &[u8] =
     include_bytes!("../../assets/fonts/LiberationSerif-Italic.ttf");
 
 /// The family name of `font`.

@@ -79,6 +79,33 @@ fn the_release_profile_keeps_at_most_line_tables() {
     assert!(ok, "[profile.release] debug = {debug:?}");
 }
 
+/// Each bundled font is in the `ladder` binary once: a font's bytes held
+/// in a `const` were copied into every codegen unit that used them, and
+/// the release binary carried DejaVu Sans and Liberation Serif twice
+/// (1.15 MB of its 16.1 MB).
+#[test]
+fn the_binary_carries_each_bundled_font_once() {
+    let binary = std::fs::read(env!("CARGO_BIN_EXE_ladder")).unwrap();
+    let fonts = std::fs::read_dir(format!("{ROOT}/assets/fonts")).unwrap();
+    let mut checked = 0;
+    for font in fonts.map(|f| f.unwrap().path()) {
+        if font.extension().is_none_or(|e| e != "ttf") {
+            continue;
+        }
+        let bytes = std::fs::read(&font).unwrap();
+        let head = &bytes[..4096];
+        let copies = binary.windows(head.len()).filter(|w| w == &head).count();
+        assert_eq!(
+            copies,
+            1,
+            "{} is in the binary {copies} times",
+            font.display()
+        );
+        checked += 1;
+    }
+    assert_eq!(checked, 3, "the three bundled fonts");
+}
+
 /// `src/lib.rs`'s list of floors is the one `scripts/check-layers`
 /// enforces (`FLOORS`, ground first): the doc cannot drift from the rule.
 #[test]
