@@ -198,7 +198,7 @@ pub struct Ways {
 /// contact) the two blocks' tests need not agree, and the guesses cycle
 /// (docs/experiments.md, "The strap hinge"): at the toy's pivot, corners
 /// 7 × 10⁻⁵ s into each other, a pair wrapped 0.95 + 0.05 s and one
-/// wrapped 1.061 + 0 s, lengths 1.111334 and 1.111304 s. Every pair of
+/// wrapped 1.061 + 0 s, lengths 1.11133 and 1.11130 s. Every pair of
 /// such a cycle runs round the overlapping corners, within the overlap
 /// of the taut path; a shorter one may cut through a block (a way round
 /// with no common tangent cycles too, its shortest guess a straight line
