@@ -230,15 +230,6 @@ fn a_two_block_hinge_swings_about_its_pivot_as_the_stiff_ribbons_do() {
 }
 
 #[test]
-#[ignore = "open, a defect of the maximal model: the motions part over the 31 τ window \
-            (0.77, 1.38, 3.05 s at κ, 2κ, 4κ) because its ribbons leave the pivot at once. At κ, \
-            junction 2's ribbons (blocks 2-3) jump at t = 0.13 τ from L = 1.11134 to 1.19678 s \
-            (ribbon 1 wrapped 0.95/0.05, free span 0.111 s; ribbon 2 0.05/1.06, free span 1e-4 \
-            s; both to 0.16/0 round the block's end, free span 1.04 s): T from 0 to 8.5e-2 in one step, at a fold \
-            of -0.7995 (-0.8 at the start); junction 4 likewise, and at 4κ junctions 3 and 4 \
-            (T 0.33). Then slack from 1.5 τ on. The length jumps by 0.085 s (7.7 %): the span \
-            search loses the short way, probably once the pivot corners, coinciding at the start, \
-            open by about 1e-4 s (beyond the tie's 1e-12 s), docs/experiments.md"]
 fn a_six_block_toy_folds_as_the_stiff_ribbons_fold_it() {
     // The toy's six blocks folded in a zig-zag (folds −1.0 … −0.4,
     // alternately either way in the lab), block 1 turned by the hand's
@@ -247,8 +238,14 @@ fn a_six_block_toy_folds_as_the_stiff_ribbons_fold_it() {
     // −1.7e-5.)
     let theta = folded(FRAC_PI_2, &[-1.0, -0.8, -0.6, -0.5, -0.4]);
     let drive = Drive::new(vec![(0.0, FRAC_PI_2), (232.0, -FRAC_PI_2)]).unwrap();
+    // The difference falls with κ (1.79e-2, 1.04e-2, 6.5e-3 at κ, 2κ,
+    // 4κ over the 31 τ window, as the two blocks' above): the tolerance
+    // at 4κ is that with a 38 % margin. Before a cycling span search was
+    // given its length (`model::tangent`) two junctions' ribbons jumped
+    // 0.085 s round a block's end at 0.13 τ, and the motions parted by
+    // 0.77, 1.38, 3.05 s.
     let a = agreement(&theta, drive, 400.0);
-    check(&a, 5e-3);
+    check(&a, 9e-3);
 }
 
 #[test]
@@ -364,4 +361,55 @@ fn the_span_through_coinciding_pivot_corners_is_the_strap_path() {
     }
     println!("{spans} spans: largest |L − ℓ| {worst:.2e}, gradient off by {worst_grad:.2e}");
     assert!(worst_grad < 1e-5, "{worst_grad}");
+}
+
+#[test]
+fn a_ribbon_length_is_continuous_as_the_pivot_corners_cross() {
+    // Block 2 at the strap hinge's pivot under block 1, then carried
+    // slowly along a straight line through it (from 10⁻³ s pressed into
+    // block 1 to 10⁻³ s out, in steps of 10⁻⁶ s, eight directions, folds
+    // through both quarters a toy's junction rolls in): each ribbon's
+    // length moves by no more than the block does. It jumped by
+    // 0.085 s (7.7 %) where the corners pressed 10⁻⁴ s into each other,
+    // and the six blocks' motions parted from the strap hinge's
+    // (docs/experiments.md, "The strap hinge").
+    let (sc, chain) = toy(2, 1.0);
+    let r = sc.ladder.built.unwrap().ribbons;
+    let (mut worst, mut lines) = (0.0f64, 0);
+    for k in 0..24 {
+        let phi = -3.0 + k as f64 * 0.25;
+        let theta = folded(FRAC_PI_2, &[phi]);
+        let q0 = chain
+            .kinematics(&theta, &[0.0; 2], &strap_regions(&theta))
+            .q;
+        for a in 0..8 {
+            let angle = (a as f64 + 0.3) * PI / 4.0;
+            let at = |x: f64| {
+                let mut q = q0.clone();
+                q[3] += x * angle.cos();
+                q[4] += x * angle.sin();
+                r.spans(2, &q)
+                    .iter()
+                    .map(|(_, s)| s.length)
+                    .collect::<Vec<_>>()
+            };
+            let step = 1e-6;
+            let mut prev = at(-1e-3);
+            for m in 1..=2000 {
+                let now = at(-1e-3 + m as f64 * step);
+                for (j, (x, y)) in prev.iter().zip(&now).enumerate() {
+                    let moved = (y - x).abs() / step;
+                    assert!(
+                        moved <= 1.0 + 1e-6,
+                        "φ {phi}, direction {angle:.3}, step {m}, ribbon {}: L {x} → {y}",
+                        j + 1
+                    );
+                    worst = worst.max(moved);
+                }
+                prev = now;
+            }
+            lines += 1;
+        }
+    }
+    println!("{lines} lines: largest |ΔL| / |Δx| {worst:.6}");
 }
