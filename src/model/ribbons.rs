@@ -632,10 +632,10 @@ mod tests {
         let mut worst = 0.0f64;
         for inset in [0.0, 0.05] {
             for theta1 in [0.4, std::f64::consts::FRAC_PI_2, 2.9] {
-                for k in 0..400 {
+                for k in 0..160 {
                     let phi = -2.0 * std::f64::consts::PI
-                        + (k as f64 + 0.5) * std::f64::consts::PI / 100.0;
-                    for eps in [1e-7, 1e-6, 1e-5, 1e-4, 1e-3] {
+                        + (k as f64 + 0.5) * std::f64::consts::PI / 40.0;
+                    for eps in [1e-7, 1e-5, 1e-3] {
                         for a in 0..16 {
                             let angle = a as f64 * std::f64::consts::PI / 8.0;
                             let off = [eps * angle.cos(), eps * angle.sin()];
