@@ -284,7 +284,12 @@ impl GifWriter {
         };
         self.lzw.send(frame)?;
         match &mut self.previous {
-            Some(prev) => prev.copy_from_slice(data),
+            // Outside the changed rectangle the frames are equal already.
+            Some(prev) => {
+                let stride = 4 * self.width as usize;
+                let rows = rect.y0 as usize * stride..rect.y1 as usize * stride;
+                prev[rows.clone()].copy_from_slice(&data[rows]);
+            }
             None => self.previous = Some(data.to_vec()),
         }
         self.frames += 1;
@@ -325,10 +330,44 @@ impl GifWriter {
     }
 }
 
+/// Pixels compared at once where two frames are compared: 8 RGBA pixels,
+/// 32 bytes, one AVX2 register. Most of a frame's changed rectangle is
+/// unchanged pixels, so whole blocks of them are passed over at once.
+const BLOCK_PIXELS: usize = 8;
+/// The bytes of [`BLOCK_PIXELS`] pixels.
+const BLOCK_BYTES: usize = 4 * BLOCK_PIXELS;
+
+/// Whether two blocks of [`BLOCK_BYTES`] bytes are equal (a fixed-size
+/// compare, inlined, not a call to `memcmp`).
+#[inline(always)]
+fn same_block(a: &[u8], b: &[u8]) -> bool {
+    let a: &[u8; BLOCK_BYTES] = a.try_into().expect("a whole block");
+    let b: &[u8; BLOCK_BYTES] = b.try_into().expect("a whole block");
+    a == b
+}
+
 /// Appends the palette index of each pixel of `cur`, or the transparent
-/// index where it equals `prev`.
+/// index where it equals `prev`: a block of [`BLOCK_PIXELS`] unchanged
+/// pixels at once, the others pixel by pixel ([`map_pixels`]); the same
+/// indices as [`map_pixels`] over the whole row.
 #[inline]
 fn map_changed(pal: &Palette, cur: &[u8], prev: &[u8], out: &mut Vec<u8>) {
+    let mut cur_blocks = cur.chunks_exact(BLOCK_BYTES);
+    let mut prev_blocks = prev.chunks_exact(BLOCK_BYTES);
+    for (c, p) in (&mut cur_blocks).zip(&mut prev_blocks) {
+        if same_block(c, p) {
+            out.extend_from_slice(&[TRANSPARENT_INDEX; BLOCK_PIXELS]);
+        } else {
+            map_pixels(pal, c, p, out);
+        }
+    }
+    map_pixels(pal, cur_blocks.remainder(), prev_blocks.remainder(), out);
+}
+
+/// Appends the palette index of each pixel of `cur`, or the transparent
+/// index where it equals `prev`, pixel by pixel.
+#[inline]
+fn map_pixels(pal: &Palette, cur: &[u8], prev: &[u8], out: &mut Vec<u8>) {
     let word = |c: &[u8]| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]);
     out.extend(cur.chunks_exact(4).zip(prev.chunks_exact(4)).map(|(c, o)| {
         if word(c) == word(o) {
@@ -358,9 +397,8 @@ fn changed_rect(prev: &[u8], cur: &[u8], w: usize) -> Option<Rect> {
         if p == c {
             continue;
         }
-        let px = |i: usize| p[4 * i..4 * i + 4] != c[4 * i..4 * i + 4];
-        let first = (0..w).find(|&i| px(i)).unwrap_or(0);
-        let last = (first..w).rev().find(|&i| px(i)).unwrap_or(first);
+        let first = first_changed(p, c).unwrap_or(0);
+        let last = last_changed(p, c).unwrap_or(first);
         x0 = x0.min(first);
         x1 = x1.max(last + 1);
         y0 = y0.min(y);
@@ -372,6 +410,51 @@ fn changed_rect(prev: &[u8], cur: &[u8], w: usize) -> Option<Rect> {
         x1: x1 as u32,
         y1: y1 as u32,
     })
+}
+
+/// The first pixel at which two RGBA rows differ: blocks of
+/// [`BLOCK_PIXELS`] passed over while equal, then pixel by pixel.
+fn first_changed(p: &[u8], c: &[u8]) -> Option<usize> {
+    let blocks = p.chunks_exact(BLOCK_BYTES).zip(c.chunks_exact(BLOCK_BYTES));
+    for (k, (a, b)) in blocks.enumerate() {
+        if !same_block(a, b) {
+            return first_pixel(a, b).map(|i| k * BLOCK_PIXELS + i);
+        }
+    }
+    let whole = p.len() / BLOCK_BYTES * BLOCK_BYTES;
+    first_pixel(&p[whole..], &c[whole..]).map(|i| whole / 4 + i)
+}
+
+/// The last pixel at which two RGBA rows differ: the part past the last
+/// whole block pixel by pixel, then blocks from the end.
+fn last_changed(p: &[u8], c: &[u8]) -> Option<usize> {
+    let whole = p.len() / BLOCK_BYTES * BLOCK_BYTES;
+    if let Some(i) = last_pixel(&p[whole..], &c[whole..]) {
+        return Some(whole / 4 + i);
+    }
+    let blocks = p[..whole]
+        .chunks_exact(BLOCK_BYTES)
+        .zip(c[..whole].chunks_exact(BLOCK_BYTES));
+    for (k, (a, b)) in blocks.enumerate().rev() {
+        if !same_block(a, b) {
+            return last_pixel(a, b).map(|i| k * BLOCK_PIXELS + i);
+        }
+    }
+    None
+}
+
+/// The first pixel at which two RGBA runs differ, pixel by pixel.
+fn first_pixel(p: &[u8], c: &[u8]) -> Option<usize> {
+    p.chunks_exact(4)
+        .zip(c.chunks_exact(4))
+        .position(|(a, b)| a != b)
+}
+
+/// The last pixel at which two RGBA runs differ, pixel by pixel.
+fn last_pixel(p: &[u8], c: &[u8]) -> Option<usize> {
+    p.chunks_exact(4)
+        .zip(c.chunks_exact(4))
+        .rposition(|(a, b)| a != b)
 }
 
 /// Highest frame rate a GIF plays at its real speed: delays are whole
@@ -482,5 +565,60 @@ mod tests {
             }
         );
         assert!(changed_rect(&a, &a, 5).is_none());
+    }
+
+    /// The bounding box pixel by pixel, as [`changed_rect`] gives it.
+    fn changed_rect_pixelwise(prev: &[u8], cur: &[u8], w: usize) -> Option<Rect> {
+        let (mut x0, mut x1, mut y0, mut y1) = (w, 0, usize::MAX, 0);
+        for y in 0..prev.len() / (4 * w) {
+            let px = |i: usize| {
+                let k = 4 * (y * w + i);
+                prev[k..k + 4] != cur[k..k + 4]
+            };
+            if let Some(first) = (0..w).find(|&i| px(i)) {
+                let last = (0..w).rev().find(|&i| px(i)).unwrap_or(first);
+                (x0, x1, y0, y1) = (x0.min(first), x1.max(last + 1), y0.min(y), y + 1);
+            }
+        }
+        (y0 != usize::MAX).then_some(Rect {
+            x0: x0 as u32,
+            y0: y0 as u32,
+            x1: x1 as u32,
+            y1: y1 as u32,
+        })
+    }
+
+    /// Two frames of width `w` and 3 rows, the second with `changes`
+    /// (pixel, channel) changed.
+    fn frames(w: usize, changes: &[(usize, usize)]) -> (Vec<u8>, Vec<u8>) {
+        let prev: Vec<u8> = (0..4 * w * 3).map(|i| (i * 37 % 251) as u8).collect();
+        let mut cur = prev.clone();
+        for &(px, ch) in changes {
+            cur[4 * px + ch] ^= 0x40;
+        }
+        (prev, cur)
+    }
+
+    #[test]
+    fn blockwise_compares_match_pixelwise() {
+        // Every width around the 8-pixel blocks, one or two changed pixels
+        // at every place (first and last pixel of a block, the part past
+        // the last whole block), each channel.
+        for w in 1..=41 {
+            for a in 0..3 * w {
+                for b in [a, a + 1, a + 7, a + 8, 3 * w - 1] {
+                    let b = b.min(3 * w - 1);
+                    let (prev, cur) = frames(w, &[(a, a % 4), (b, (b + 1) % 4)]);
+                    let want = changed_rect_pixelwise(&prev, &cur, w);
+                    assert_eq!(changed_rect(&prev, &cur, w), want, "w {w}, {a} {b}");
+                    let (mut fast, mut slow) = (Vec::new(), Vec::new());
+                    map_changed(six(), &cur, &prev, &mut fast);
+                    map_pixels(six(), &cur, &prev, &mut slow);
+                    assert_eq!(fast, slow, "w {w}, {a} {b}");
+                }
+            }
+            let (prev, _) = frames(w, &[]);
+            assert_eq!(changed_rect(&prev, &prev, w), None);
+        }
     }
 }

@@ -95,11 +95,11 @@ impl Table {
 
     /// Gives the string `prefix` + `byte` (`key`) the code `code`, as the
     /// `weezl` 0.1 encoder does (the overflowing successor left out).
-    fn append(&mut self, prefix: u32, key: u32, code: u32) {
+    fn append(&mut self, prefix: u32, key: u32, code: u32) -> bool {
         let kids = &mut self.kids[prefix as usize];
         if *kids == SHORT {
             *kids = FULL;
-            return;
+            return false;
         }
         if *kids != FULL {
             *kids += 1;
@@ -107,7 +107,7 @@ impl Table {
         // Code 4096 is given out just before the table is cleared and is
         // never looked up: it is not recorded (it would not fit the slot).
         if code >= MAX_ENTRIES {
-            return;
+            return false;
         }
         let mask = (1 << SLOT_BITS) - 1;
         let mut i = Self::slot(key);
@@ -116,6 +116,73 @@ impl Table {
         }
         self.slots[i] = key << 12 | code;
         self.last[prefix as usize] = (key & 0xff) << 16 | code;
+        true
+    }
+}
+
+/// The strings of one byte repeated ("b", "bb", "bbb", ...) that the
+/// table holds, so that a run of that byte is passed over in one step
+/// instead of a lookup a byte: a movie frame's indices are mostly long
+/// runs of the transparent index. The lookups would find exactly these
+/// codes: b^(j+1) is recorded only as the successor of b^j by b, and a
+/// recorded string is never recorded again (a lookup finds it first).
+struct Runs {
+    /// Per byte, the codes of b, bb, bbb, ... up to the longest recorded.
+    chains: Vec<Vec<u16>>,
+    /// Per code, `byte << 16 | j` if it is the string of `byte` j times,
+    /// else 0.
+    of: Vec<u32>,
+}
+
+impl Runs {
+    fn new(clear: u32) -> Self {
+        let mut of = vec![0; MAX_ENTRIES as usize + 1];
+        for b in 0..clear {
+            of[b as usize] = b << 16 | 1;
+        }
+        Self {
+            chains: (0..256u16).map(|b| vec![b]).collect(),
+            of,
+        }
+    }
+
+    /// After a clear code: the single bytes only.
+    fn reset(&mut self, clear: u32) {
+        for chain in &mut self.chains {
+            chain.truncate(1);
+        }
+        self.of[clear as usize..].fill(0);
+    }
+
+    /// `code`, just recorded as `prefix` + `byte`: a longer run of
+    /// `byte` if `prefix` is the longest one recorded.
+    #[inline(always)]
+    fn recorded(&mut self, prefix: u32, byte: u32, code: u32) {
+        let chain = &mut self.chains[byte as usize];
+        if self.of[prefix as usize] == byte << 16 | chain.len() as u32 {
+            chain.push(code as u16);
+            self.of[code as usize] = byte << 16 | chain.len() as u32;
+        }
+    }
+
+    /// Where `cur` is the string of `byte` j times and `data` starts with
+    /// `byte`: the code of the longest recorded run that `cur` and the
+    /// bytes of `data` that follow make, and how many of those bytes it
+    /// takes (none if `cur` is already the longest).
+    #[inline(always)]
+    fn skip(&self, cur: u32, byte: u8, data: &[u8]) -> Option<(u32, usize)> {
+        let of = self.of[cur as usize];
+        if of >> 16 != u32::from(byte) || of == 0 {
+            return None;
+        }
+        let chain = &self.chains[usize::from(byte)];
+        let j = (of & 0xffff) as usize;
+        let room = (chain.len() - j).min(data.len());
+        if room == 0 {
+            return None;
+        }
+        let ahead = data[..room].iter().position(|&x| x != byte).unwrap_or(room);
+        Some((u32::from(chain[j + ahead - 1]), ahead))
     }
 }
 
@@ -168,14 +235,24 @@ pub(crate) fn gif_lzw(data: &[u8]) -> Vec<u8> {
         return bits.finish();
     };
     let mut table = Table::new();
+    let mut runs = Runs::new(clear);
     let mut next = clear + 2;
     let mut cur = u32::from(first);
-    for &byte in rest {
+    let mut i = 0;
+    while let Some(&byte) = rest.get(i) {
+        if let Some((code, taken)) = runs.skip(cur, byte, &rest[i..]) {
+            cur = code;
+            i += taken;
+            continue;
+        }
+        i += 1;
         if let Some(code) = table.lookup(cur, u32::from(byte)) {
             cur = code;
             continue;
         }
-        table.append(cur, cur << 8 | u32::from(byte), next);
+        if table.append(cur, cur << 8 | u32::from(byte), next) {
+            runs.recorded(cur, u32::from(byte), next);
+        }
         next += 1;
         bits.put(cur, size);
         if next > 1 << size && size < MAX_CODESIZE {
@@ -184,6 +261,7 @@ pub(crate) fn gif_lzw(data: &[u8]) -> Vec<u8> {
         if next > MAX_ENTRIES {
             bits.put(clear, size);
             table.reset();
+            runs.reset(clear);
             next = clear + 2;
             size = min + 1;
         }
@@ -288,5 +366,65 @@ mod tests {
             }
         }
         assert_eq!(gif_lzw(&data), theirs(&data));
+    }
+
+    /// Runs of random lengths (1 to `longest`) of bytes below `modulo`.
+    fn runs_of(n: usize, seed: u64, modulo: u32, longest: u64) -> Vec<u8> {
+        let mut s = seed;
+        let mut rand = || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            s >> 11
+        };
+        let mut out = Vec::with_capacity(n);
+        while out.len() < n {
+            let byte = (rand() % u64::from(modulo)) as u8;
+            let len = 1 + (rand() % longest) as usize;
+            out.extend(std::iter::repeat_n(byte, len.min(n - out.len())));
+        }
+        out
+    }
+
+    #[test]
+    fn runs_passed_over_give_the_same_codes() {
+        let mut cases: Vec<Vec<u8>> = Vec::new();
+        for (k, (m, longest)) in [
+            (2, 3000),
+            (3, 40),
+            (5, 700),
+            (17, 9),
+            (200, 5000),
+            (256, 64),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            cases.push(runs_of(200_000, k as u64 + 11, m, longest));
+        }
+        // A run's strings with many successors: "0"^j followed by each of
+        // 1..=20, so that the seventeenth successor of a run string is
+        // left out and the run's chain must not take it.
+        let mut many = Vec::new();
+        for j in 1..60 {
+            for b in 1..=20u8 {
+                many.extend(std::iter::repeat_n(0u8, j));
+                many.push(b);
+            }
+        }
+        cases.push(many);
+        // The transparent index broken by single strokes, every width.
+        for gap in [1usize, 2, 3, 7, 64, 639, 640, 641, 5000] {
+            let mut frame = vec![255u8; 307_200];
+            for (i, px) in frame.iter_mut().enumerate() {
+                if i % gap == 0 {
+                    *px = (i % 13) as u8;
+                }
+            }
+            cases.push(frame);
+        }
+        for data in &cases {
+            assert_eq!(gif_lzw(data), theirs(data), "{} bytes", data.len());
+        }
     }
 }

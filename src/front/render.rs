@@ -68,7 +68,6 @@ pub fn into_folder_timed(
     index: bool,
     progress: &Progress<'_>,
 ) -> Result<(Vec<String>, Timings)> {
-    use rayon::prelude::*;
     let start = timings::Start::now();
     // The gallery shows a PNG of every figure: one is made if none is asked.
     let outputs = &Outputs {
@@ -97,13 +96,12 @@ pub fn into_folder_timed(
     // (`scenes::shared`), each charged to the first output that makes it.
     let tallies: Vec<Arc<tally::Tally>> = scenes.iter().map(|_| Arc::default()).collect();
     let shared = scenes::shared::prepare(scenes, movie, &tallies)?;
-    let mut written: Vec<Rendered> = jobs(scenes)
-        .into_par_iter()
-        .map(|job| render_job(scenes, &job, &tallies, out, movie, outputs, progress))
-        .collect::<Result<Vec<_>>>()?
-        .into_iter()
-        .flatten()
-        .collect();
+    let mut written: Vec<Rendered> = in_order(&jobs(scenes, movie), |job| {
+        render_job(scenes, job, &tallies, out, movie, outputs, progress)
+    })?
+    .into_iter()
+    .flatten()
+    .collect();
     drop(shared);
     written.sort_by_key(|w| w.0);
     let written: Vec<(Vec<String>, Timing)> = written.into_iter().map(|w| w.1).collect();
@@ -125,13 +123,21 @@ pub fn into_folder_timed(
     Ok((files, start.finish(timed)))
 }
 
-/// The order in which the scenes start: a ring chain's first (each of
-/// them several times any other output's work: docs/performance.md), the
-/// others as given. Rayon's first thread takes the first; started last,
-/// the longest output would end the render alone on one core.
-fn longest_first(scenes: &[Scene]) -> Vec<usize> {
+/// The order in which the lone scenes start, the most work first: a ring
+/// chain's (each several times any other output's work:
+/// docs/performance.md), then the others by the work they may take
+/// (`scenes::cost::expected_work`), ties in the order given. Started
+/// last, a long output would end the render alone on one core.
+fn longest_first(scenes: &[Scene], movie: &MovieOptions) -> Vec<usize> {
+    let work: Vec<f64> = scenes
+        .iter()
+        .map(|s| match s.rings {
+            Some(_) => f64::INFINITY,
+            None => scenes::cost::expected_work(s, movie),
+        })
+        .collect();
     let mut order: Vec<usize> = (0..scenes.len()).collect();
-    order.sort_by_key(|&i| scenes[i].rings.is_none());
+    order.sort_by(|&a, &b| work[b].total_cmp(&work[a]));
     order
 }
 
@@ -142,15 +148,52 @@ type Rendered = (usize, (Vec<String>, Timing));
 /// group of ring scenes that share one run (`scenes::shared::ring_groups`:
 /// figure 4b and movie 12) one job, its latest end first, then every
 /// other scene a job of its own.
-fn jobs(scenes: &[Scene]) -> Vec<Vec<usize>> {
+fn jobs(scenes: &[Scene], movie: &MovieOptions) -> Vec<Vec<usize>> {
     let mut jobs = scenes::shared::ring_groups(scenes);
     let grouped: Vec<usize> = jobs.iter().flatten().copied().collect();
-    let lone = longest_first(scenes)
+    let lone = longest_first(scenes, movie)
         .into_iter()
         .filter(|i| !grouped.contains(i))
         .map(|i| vec![i]);
     jobs.extend(lone);
     jobs
+}
+
+/// Runs `work` on every job of `jobs` strictly in their order: each core
+/// takes the next job as it finishes one (a parallel iterator would cut
+/// the list in halves, one a core, and the last job of a half could start
+/// last whatever its size). A job's own parallel runs go to whichever
+/// core is free. After a job fails no other starts; the first failure
+/// found is returned.
+fn in_order<T: Send>(
+    jobs: &[Vec<usize>],
+    work: impl Fn(&[usize]) -> Result<T> + Sync,
+) -> Result<Vec<T>> {
+    use rayon::prelude::*;
+    use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+    let (next, failed) = (AtomicUsize::new(0), AtomicBool::new(false));
+    let workers = rayon::current_num_threads().clamp(1, jobs.len().max(1));
+    let done: Vec<Result<Vec<T>>> = (0..workers)
+        .into_par_iter()
+        .map(|_| {
+            let mut out = Vec::new();
+            while !failed.load(Ordering::Relaxed) {
+                let Some(job) = jobs.get(next.fetch_add(1, Ordering::Relaxed)) else {
+                    break;
+                };
+                let done = work(job);
+                failed.fetch_or(done.is_err(), Ordering::Relaxed);
+                out.push(done?);
+            }
+            Ok(out)
+        })
+        .collect();
+    Ok(done
+        .into_iter()
+        .collect::<Result<Vec<_>>>()?
+        .into_iter()
+        .flatten()
+        .collect())
 }
 
 /// Renders the scenes of one job in turn, each timed ([`timed`]). A group

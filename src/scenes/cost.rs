@@ -74,3 +74,42 @@ pub fn check_with_stiff(scene: &Scene, samples: usize) -> Result<f64> {
     })?;
     Ok(total)
 }
+
+/// Work of drawing and encoding one pixel of a movie frame, in block-steps
+/// of the paper's model: about 0.8 ms for a 640 × 480 frame of a paper
+/// movie (drawing, GIF palette and LZW), against 8 ns a block-step in the
+/// kernels (docs/performance.md, "The order in which outputs start").
+const WORK_PER_PIXEL: f64 = 0.3;
+
+/// The most work rendering `scene` may take, in block-steps of the paper's
+/// model (`sim::cost`, each run weighed by its force path): every run it
+/// may make to its window (a sweep's to its cap, an experiment figure's
+/// every variant), and a movie's frames. Only an order for starting the
+/// outputs, the largest first (`front::render`); nothing is refused by it
+/// (`check` has refused what passes a cap), so a scene whose runs cannot
+/// be weighed counts as none.
+pub fn expected_work(scene: &Scene, movie: &super::MovieOptions) -> f64 {
+    let weigh = |runs: &[(Scene, usize)]| -> f64 {
+        runs.iter()
+            .map(|(s, samples)| run::check_cost(s, *samples).unwrap_or(0.0))
+            .sum()
+    };
+    match &scene.output {
+        OutputSpec::Sweep(spec) => crate::sweep::checked(scene).map_or(0.0, |plan| {
+            let to_cap: Vec<(Scene, usize)> = (0..plan.len())
+                .map(|i| {
+                    let mut s = plan.scene_at(i);
+                    s.run.t_end = spec.cap.max(s.run.t_end);
+                    (s, 0)
+                })
+                .collect();
+            weigh(&to_cap)
+        }),
+        OutputSpec::Movie { .. } => {
+            let pixels = f64::from(movie.width) * f64::from(movie.height);
+            weigh(&[(scene.clone(), movie.frames)]) + movie.frames as f64 * pixels * WORK_PER_PIXEL
+        }
+        OutputSpec::Theory(_) => 0.0,
+        _ => planned_runs(scene, movie.frames).map_or(0.0, |runs| weigh(&runs)),
+    }
+}
