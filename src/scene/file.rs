@@ -475,7 +475,9 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(
-            e.starts_with("f:2:5: model.n: expected a whole number, got the text \"ten\""),
+            e.starts_with(
+                "f:2:5: model.n: expected a whole number of 0 or more, got the text \"ten\""
+            ),
             "{e}"
         );
     }

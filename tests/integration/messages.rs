@@ -229,7 +229,7 @@ fn scene_file_types_are_said_in_words_with_an_example() {
     let e = bad_input(
         &["render", "--check", &f],
         &[
-            "model.n: expected a whole number, got the number 2.5",
+            "model.n: expected a whole number of 0 or more, got the number 2.5",
             "n = 20",
         ],
     );

@@ -29,7 +29,10 @@ fn expected(want: &str) -> String {
     let want = want.trim();
     match want {
         "f64" | "f32" => "a number".into(),
-        "usize" | "u64" | "u32" | "u16" | "u8" | "isize" | "i64" | "i32" => "a whole number".into(),
+        // Unsigned: a negative whole number is refused here, and "expected
+        // a whole number, got the whole number -3" would not say why.
+        "usize" | "u64" | "u32" | "u16" | "u8" => "a whole number of 0 or more".into(),
+        "isize" | "i64" | "i32" => "a whole number".into(),
         "a sequence" => "a list [ ... ]".into(),
         "a boolean" | "a string" => want.into(),
         "struct Flip" => "a flip { start = T, duration = TD } (times in τ)".into(),
@@ -119,7 +122,15 @@ mod tests {
         );
         assert_eq!(
             n,
-            "expected a whole number, got the number 2.5; for example n = 20"
+            "expected a whole number of 0 or more, got the number 2.5; for example n = 20"
+        );
+        let negative = plain(
+            "invalid value: integer `-3`, expected usize",
+            Some("model.n"),
+        );
+        assert_eq!(
+            negative,
+            "expected a whole number of 0 or more, got the whole number -3; for example n = 20"
         );
         let a = plain(
             "invalid type: string \"sixty\", expected f64",
