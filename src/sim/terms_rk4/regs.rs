@@ -49,7 +49,7 @@ impl<const C: usize> Coords<C> {
     /// past the last from `pad(k, lane)`.
     #[inline(always)]
     fn load(table: &[f64], n: usize, pad: fn(usize, usize) -> f64) -> Self {
-        let lanes = |k: usize| Lanes::from_fn(|i| if i < n { table[3 * i + k] } else { pad(k, i) });
+        let lanes = |k: usize| lanes(|i| if i < n { table[3 * i + k] } else { pad(k, i) });
         Self {
             x: lanes(0),
             y: lanes(1),
@@ -60,7 +60,9 @@ impl<const C: usize> Coords<C> {
     #[inline(always)]
     fn store(&self, table: &mut [f64], n: usize) {
         for (k, lanes) in [self.x, self.y, self.th].into_iter().enumerate() {
-            let values = lanes.to_array();
+            let mut values = [0.0; 4 * MAX_REGS];
+            // SAFETY: `values` holds 4 MAX_REGS ≥ 4C values.
+            unsafe { lanes.store(values.as_mut_ptr()) };
             for i in 0..n {
                 table[3 * i + k] = values[i];
             }
@@ -89,12 +91,26 @@ impl<const C: usize> Consts<C> {
         let first = usize::from(c.driven);
         Self {
             c,
-            parity: Lanes::from_fn(parity),
-            pair: Lanes::from_fn(|j| if j + 1 < c.n { ones } else { 0.0 }),
-            no_pair: Lanes::from_fn(|j| if j + 1 < c.n { 0.0 } else { -0.0 }),
-            keep: Lanes::from_fn(|i| if i >= first && i < c.n { ones } else { 0.0 }),
+            parity: lanes(parity),
+            pair: lanes(|j| if j + 1 < c.n { ones } else { 0.0 }),
+            no_pair: lanes(|j| if j + 1 < c.n { 0.0 } else { -0.0 }),
+            keep: lanes(|i| if i >= first && i < c.n { ones } else { 0.0 }),
         }
     }
+}
+
+/// Lanes from `f(i)` for the 4C blocks by a plain loop (the setup of each
+/// call of [`advance`]: `Simd::from_fn`'s array of 32 cost about 4 % of
+/// the tank's run).
+#[inline(always)]
+fn lanes<const C: usize>(f: impl Fn(usize) -> f64) -> Lanes<C> {
+    const { assert!(C <= MAX_REGS) };
+    let mut a = [0.0; 4 * MAX_REGS];
+    for (i, x) in a.iter_mut().enumerate().take(4 * C) {
+        *x = f(i);
+    }
+    // SAFETY: `a` holds 4 MAX_REGS ≥ 4C values.
+    unsafe { Lanes::<C>::load(a.as_ptr()) }
 }
 
 /// The x position of padding block `i` (as the array step's).
@@ -309,7 +325,13 @@ fn step<const C: usize, const DRAG: bool, const EXACT: bool>(
     (t, h, t_new): (f64, f64, f64),
 ) -> AtQ<C> {
     let (a, b) = (RK4.a, [RK4.b[0], RK4.b[1], RK4.b[2], RK4.b[3]]);
-    let p = [1, 2, 3].map(|i| rhs.prescribed(t + RK4.c[i] * h));
+    // Three calls, not an array's `map` (which was left out of line: 6 % of
+    // the run).
+    let p = [
+        rhs.prescribed(t + RK4.c[1] * h),
+        rhs.prescribed(t + RK4.c[2] * h),
+        rhs.prescribed(t + RK4.c[3] * h),
+    ];
     let kq0 = *v0;
     let mut q1 = combine(q0, h, [a[1][0]], [&kq0]);
     constrain(p[0].as_ref(), 0, &mut q1);
@@ -415,8 +437,8 @@ fn advance<const C: usize, const DRAG: bool, const EXACT: bool>(job: Job) -> (f6
     let (n, k) = (c.n, Consts::<C>::new(c));
     let mut q0 = Coords::<C>::load(&st.q, n, |k, i| if k == 0 { far(i) } else { 0.0 });
     let mut v0 = Coords::<C>::load(&st.v, n, |_, _| 0.0);
-    let lo = Lanes::<C>::from_fn(|i| if i < n { arrivals.window(i)[0] } else { 0.0 });
-    let hi = Lanes::<C>::from_fn(|i| if i < n { arrivals.window(i)[1] } else { 0.0 });
+    let lo = lanes::<C>(|i| if i < n { arrivals.window(i)[0] } else { 0.0 });
+    let hi = lanes::<C>(|i| if i < n { arrivals.window(i)[1] } else { 0.0 });
     let mut pending = arrivals.pending_mask();
     let mut taken = 0;
     // The state is constrained at `t` already (the array step constrains it
