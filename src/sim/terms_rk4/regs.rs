@@ -100,8 +100,7 @@ impl<const C: usize> Consts<C> {
 }
 
 /// Lanes from `f(i)` for the 4C blocks by a plain loop (the setup of each
-/// call of [`advance`]: `Simd::from_fn`'s array of 32 cost about 4 % of
-/// the tank's run).
+/// call of [`advance`], without `Simd::from_fn`'s array of 32).
 #[inline(always)]
 fn lanes<const C: usize>(f: impl Fn(usize) -> f64) -> Lanes<C> {
     const { assert!(C <= MAX_REGS) };
@@ -325,8 +324,8 @@ fn step<const C: usize, const DRAG: bool, const EXACT: bool>(
     (t, h, t_new): (f64, f64, f64),
 ) -> AtQ<C> {
     let (a, b) = (RK4.a, [RK4.b[0], RK4.b[1], RK4.b[2], RK4.b[3]]);
-    // Three calls, not an array's `map` (which was left out of line: 6 % of
-    // the run).
+    // Three calls, not an array's `map` (which was left out of line: about
+    // 3 % of the tank's run).
     let p = [
         rhs.prescribed(t + RK4.c[1] * h),
         rhs.prescribed(t + RK4.c[2] * h),
