@@ -33,15 +33,20 @@
 //! divisions, the trajectory is the portable path's bit for bit, with pin
 //! friction too (`tests` below).
 
+mod blocks;
 mod friction;
+mod regs;
 
 use super::observables::ArrivalDetector;
 use super::rhs::{Rhs, State};
 use super::stepping::Plan;
-use super::stepping::Stepping;
+use super::stepping::{Isa, Stepping};
 use super::tableau::RK4;
 use crate::model::params::{M, R};
 use crate::sim::simd::{F64x4, Simd};
+#[cfg(test)]
+use blocks::drag_integrals;
+use blocks::{PORTABLE, QUICK, block_acceleration, forces};
 
 /// The state, stage values and stage rates of one run, one array per
 /// coordinate: [X, Y, θ] then [Ẋ, Ẏ, θ̇].
@@ -62,8 +67,13 @@ pub struct TermsRk4 {
     kv: [Soa; 4],
     s: Scratch,
     library_frames: bool,
+    /// Whether the run takes the step in registers (`regs`: no pin
+    /// friction, N ≤ 16).
+    registers: bool,
     /// Pin friction's law, if the ladder has friction at its pins.
     friction: Option<friction::Law>,
+    /// The instruction set of the step in registers.
+    isa: Isa,
 }
 
 /// The run's coefficients, each computed as the portable path computes it.
@@ -122,9 +132,9 @@ impl TermsRk4 {
         let eligible = ladder.built.is_none()
             && t.links.is_paper()
             && ladder.velocity_dependent()
-            && ladder.n() >= 2
-            && stepping.isa().is_some();
-        eligible.then(|| Self::build(rhs))
+            && ladder.n() >= 2;
+        let isa = stepping.isa()?;
+        eligible.then(|| Self::build(rhs, isa))
     }
 
     /// As [`TermsRk4::new`], the frames from the C library's sine and
@@ -136,7 +146,7 @@ impl TermsRk4 {
         })
     }
 
-    fn build(rhs: &Rhs) -> Self {
+    fn build(rhs: &Rhs, isa: Isa) -> Self {
         let ladder = rhs.ladder;
         let p = &ladder.params;
         let t = rhs.terms();
@@ -192,6 +202,8 @@ impl TermsRk4 {
                 forces: soa(),
             },
             library_frames: false,
+            registers: t.friction.is_none() && np <= 4 * regs::MAX_REGS,
+            isa,
             friction: t.friction.map(|friction| friction::Law {
                 links: t.links,
                 friction,
@@ -213,6 +225,21 @@ impl TermsRk4 {
         max_steps: u64,
         arrivals: &mut ArrivalDetector,
     ) -> (f64, u64) {
+        if self.registers {
+            let job = regs::Job {
+                c: self.c,
+                rhs,
+                st,
+                plan: (plan, dt),
+                span: (t, t_stop),
+                max_steps,
+                arrivals,
+            };
+            // SAFETY: `new` checked that the CPU supports `self.isa`.
+            let (t, taken) = unsafe { self.advance_regs(job) };
+            rhs.count_evals(4 * taken);
+            return (t, taken);
+        }
         self.load(st);
         let (mut t, mut taken) = (t, 0);
         while taken < max_steps && t < t_stop {
@@ -231,6 +258,34 @@ impl TermsRk4 {
         rhs.count_evals(4 * taken);
         self.store(st);
         (t, taken)
+    }
+
+    /// [`regs::advance_avx2`] (or its copy with AVX-512's 32 registers) for
+    /// this run: its registers per quantity, drag or none, the library's
+    /// frames and the portable arithmetic or the springs' frames and the
+    /// quick one.
+    ///
+    /// # Safety
+    /// The CPU must have `self.isa`.
+    unsafe fn advance_regs(&self, job: regs::Job) -> (f64, u64) {
+        macro_rules! dispatch {
+            ($entry:ident, $($c:literal)*) => {
+                match (self.c.np / 4, self.c.drag != 0.0, self.library_frames) {
+                    $(
+                        // SAFETY: the caller guarantees the instruction set.
+                        ($c, true, true) => unsafe { regs::$entry::<$c, true, PORTABLE>(job) },
+                        ($c, true, false) => unsafe { regs::$entry::<$c, true, QUICK>(job) },
+                        ($c, false, true) => unsafe { regs::$entry::<$c, false, PORTABLE>(job) },
+                        ($c, false, false) => unsafe { regs::$entry::<$c, false, QUICK>(job) },
+                    )*
+                    _ => unreachable!("N ≤ 16 checked by the caller"),
+                }
+            };
+        }
+        match self.isa {
+            Isa::Avx2 => dispatch!(advance_avx2, 1 2 3 4),
+            Isa::Avx512 => dispatch!(advance_avx512, 1 2 3 4),
+        }
     }
 
     /// The state of `st` into the arrays.
@@ -461,7 +516,6 @@ unsafe fn block_accelerations<const DRAG: bool, const FORCES: bool, const EXACT:
     v: [&[f64]; 3],
     a: [&mut [f64]; 3],
 ) {
-    let sp = F64x4::splat;
     // Four lanes from `x[i..i + 4]` (i + 4 ≤ np ≤ x's length).
     let ld = |x: &[f64], i: usize| {
         let x = &x[i..i + 4];
@@ -471,100 +525,20 @@ unsafe fn block_accelerations<const DRAG: bool, const FORCES: bool, const EXACT:
     let [ax, ay, aw] = a;
     for i in (0..c.np).step_by(4) {
         let (vx, vy, w) = (ld(v[0], i), ld(v[1], i), ld(v[2], i));
-        let (mut fx, mut fy, mut ft) = if FORCES {
-            (ld(g[0], i), ld(g[1], i), ld(g[2], i))
+        let f = if FORCES {
+            [ld(g[0], i), ld(g[1], i), ld(g[2], i)]
         } else {
-            (
-                -ld(g[0], i) - sp(c.gamma) * vx,
-                -ld(g[1], i) - sp(c.gamma) * vy,
-                -ld(g[2], i) - sp(c.gamma_theta) * w,
-            )
+            forces(c, [ld(g[0], i), ld(g[1], i), ld(g[2], i)], [vx, vy, w])
         };
-        let (sn, cs, p) = (ld(fsin, i), ld(fcos, i), ld(parity, i));
-        let (t, nu) = ([sn, p * cs], [cs, -p * sn]);
-        if DRAG {
-            let u0 = vx * nu[0] + vy * nu[1];
-            let (f, tq) = drag_integrals::<EXACT>(u0, w);
-            fx = fx + -sp(c.drag) * f * nu[0];
-            fy = fy + -sp(c.drag) * f * nu[1];
-            ft = ft + -sp(c.drag) * tq;
-        }
-        let vn = vx * nu[0] + vy * nu[1];
-        let vt = vx * t[0] + vy * t[1];
-        let fx = fx + sp(c.ma) * w * (vt * nu[0] + vn * t[0]);
-        let fy = fy + sp(c.ma) * w * (vt * nu[1] + vn * t[1]);
-        let fn_ = fx * nu[0] + fy * nu[1];
-        let torque = ft - sp(c.ma) * vn * vt;
-        let (x, y) = (fx - sp(c.k_am) * fn_ * nu[0], fy - sp(c.k_am) * fn_ * nu[1]);
-        // m = 1: the portable path's division by it is no operation.
-        const { assert!(M == 1.0) };
-        let th = if EXACT {
-            torque / sp(c.j)
-        } else {
-            torque * sp(c.inv_j)
-        };
-        for (out, value) in [(&mut *ax, x), (&mut *ay, y), (&mut *aw, th)] {
+        let frames = (ld(fsin, i), ld(fcos, i), ld(parity, i));
+        let values = block_acceleration::<F64x4, DRAG, EXACT>(c, f, frames, [vx, vy, w]);
+        for (out, value) in [&mut *ax, &mut *ay, &mut *aw].into_iter().zip(values) {
             let out = &mut out[i..i + 4];
             // SAFETY: `out` has room for four values.
             unsafe { value.store(out.as_mut_ptr()) };
         }
     }
 }
-
-/// `media::drag_integrals(u0, w, r)` at r = R over four lanes without a
-/// branch: both closed forms computed as there (`EXACT`), or with the
-/// quick arithmetic's multiplications by 1/3 and one reciprocal of w
-/// ([`QUICK`]), the one that applies kept (u0 is never NaN: the sign is
-/// u0's sign bit on 1, as `signum` gives for every other u0).
-#[inline(always)]
-fn drag_integrals<const EXACT: bool>(u0: F64x4, w: F64x4) -> (F64x4, F64x4) {
-    let (sp, r) = (F64x4::splat, R);
-    let sign = (u0 & sp(-0.0)) | sp(1.0);
-    let force_a = sign * (sp(2.0 * r) * u0 * u0 + sp((2.0 / 3.0) * r * r * r) * w * w);
-    let torque_a = sign * sp(4.0 / 3.0) * sp(r) * sp(r) * sp(r) * u0 * w;
-    let g = |u: F64x4| {
-        let cube = u * u * u.abs();
-        if EXACT {
-            cube / sp(3.0)
-        } else {
-            cube * sp(THIRD)
-        }
-    };
-    // Division by 4 is exact scaling: the product by 1/4 is the quotient.
-    let h = |u: F64x4| u * u * u * u.abs() * sp(0.25);
-    let (up, um) = (u0 + w * sp(r), u0 - w * sp(r));
-    let dg = g(up) - g(um);
-    let rest = h(up) - h(um) - u0 * dg;
-    let (force_b, torque_b) = if EXACT {
-        (dg / w, rest / (w * w))
-    } else {
-        let inv_w = sp(1.0) / w;
-        (dg * inv_w, rest * (inv_w * inv_w))
-    };
-    let closed_a = (w * sp(r)).abs().le_mask(u0.abs());
-    (
-        force_b.select(force_a, closed_a),
-        torque_b.select(torque_a, closed_a),
-    )
-}
-
-/// 1/3 rounded: the quick arithmetic's factor for the drag's divisions
-/// by 3.
-const THIRD: f64 = 1.0 / 3.0;
-
-/// The fused path's arithmetic, a const parameter `EXACT`: [`PORTABLE`],
-/// the portable path's divisions (with the library's frames and with pin
-/// friction: every run that is the portable one bit for bit), or
-/// [`QUICK`], for the tank's runs with
-/// the springs' frames: Lagrange's θ equation multiplied by 1/(I + I_a)
-/// and the drag's closed form by 1/3 and one reciprocal of w instead of
-/// dividing by I + I_a, 3, w and w² (four divisions of five per block on
-/// the one divider, docs/performance.md). Each product is within 1.5 ulp
-/// of the quotient it replaces; the tests bound what that does to a force
-/// evaluation and to the tank's trajectory (`tests`).
-const QUICK: bool = false;
-/// The portable path's arithmetic ([`QUICK`]).
-const PORTABLE: bool = true;
 
 /// The paper's springs' gradient into `s.grad`: `Ladder::gradient_with`'s
 /// loop (`model::ladder`), the same operations in the same order, on

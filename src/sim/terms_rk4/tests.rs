@@ -11,8 +11,13 @@ use crate::sim::{IntegratorConfig, IntegratorKind};
 /// inertia, drag: `ladder scene water-tank`), with linear damping `gamma`
 /// and drag `drag`.
 fn tank(gamma: f64, drag: f64) -> Ladder {
+    tank_of(11, gamma, drag)
+}
+
+/// The tank's ladder with `n` blocks.
+fn tank_of(n: usize, gamma: f64, drag: f64) -> Ladder {
     let mut p = Params::paper(86.0).unwrap();
-    p.n = 11;
+    p.n = n;
     p.b = 1.5;
     p.gamma = gamma;
     p.gravity = 2e-4;
@@ -76,6 +81,18 @@ fn both(ladder: &Ladder, driven: bool, steps: u64, library: bool) -> [(State, Ve
 /// the fused one with the library's frames (`Some(true)`) or the
 /// springs' (`Some(false)`); its final state and arrivals.
 fn one(ladder: &Ladder, driven: bool, steps: u64, fused: Option<bool>) -> (State, Vec<String>) {
+    one_with(ladder, driven, steps, fused, true)
+}
+
+/// As [`one`], the fused stepper with the ladder in registers where it
+/// takes it (`registers`) or always over arrays.
+fn one_with(
+    ladder: &Ladder,
+    driven: bool,
+    steps: u64,
+    fused: Option<bool>,
+    registers: bool,
+) -> (State, Vec<String>) {
     let protocol = protocol(ladder, driven);
     let s0 = start(ladder);
     let (dt, t_end) = (0.125, 0.125 * steps as f64);
@@ -92,6 +109,11 @@ fn one(ladder: &Ladder, driven: bool, steps: u64, fused: Option<bool>) -> (State
                 TermsRk4::new
             };
             let mut k = make(&rhs, Stepping::Fastest).expect("the tank takes the fused path");
+            assert_eq!(
+                k.registers,
+                ladder.terms.friction.is_none() && ladder.n() <= 16
+            );
+            k.registers &= registers;
             let mut plan = Plan::default();
             while t < t_end {
                 let (t1, _) = k.advance_many(
@@ -286,8 +308,8 @@ fn the_quick_drag_is_within_ulps_of_the_portable_one() {
         let (u, w) = (F64x4::splat(u0), F64x4::splat(w));
         let lane = |(f, t): (F64x4, F64x4)| (f.lane(0), t.lane(0));
         [
-            lane(drag_integrals::<PORTABLE>(u, w)),
-            lane(drag_integrals::<QUICK>(u, w)),
+            lane(drag_integrals::<F64x4, PORTABLE>(u, w)),
+            lane(drag_integrals::<F64x4, QUICK>(u, w)),
         ]
     }
     let mut seed = 0x2545_f491_4f6c_dd1du64;
@@ -323,4 +345,63 @@ fn the_quick_drag_is_within_ulps_of_the_portable_one() {
         differed += usize::from(f != fq || t != tq);
     }
     assert!(differed > 0, "the quick arithmetic should differ somewhere");
+}
+
+/// The step with the ladder in registers (`terms_rk4::regs`) is the step
+/// over arrays bit for bit, in both arithmetics (the springs' frames and
+/// the quick divisions; the library's frames and the portable ones), for
+/// one to four registers of blocks (N = 2, 5, 11, 16: the padding, the
+/// pairs masked at the chain's end), driven and free, with and without
+/// drag; positions, velocities and arrival times.
+#[test]
+fn registers_give_the_array_trajectory_bit_for_bit() {
+    if !has_avx2() {
+        return;
+    }
+    for n in [2, 5, 11, 16] {
+        for (gamma, drag, driven) in [(0.0, 8.125, true), (0.003, 8.125, false), (0.01, 0.0, true)]
+        {
+            let ladder = tank_of(n, gamma, drag);
+            for library in [false, true] {
+                let regs = one_with(&ladder, driven, 2000, Some(library), true);
+                let arrays = one_with(&ladder, driven, 2000, Some(library), false);
+                let what = format!("N {n}, γ {gamma}, drag {drag}, library frames {library}");
+                assert_same_bits(&regs, &arrays, &what);
+            }
+        }
+    }
+}
+
+/// The registers' sine and cosine are `trig::sin_cos_slice`'s bit for bit
+/// (every lane, the quadrants, signed zeros, the library's arguments).
+#[test]
+fn register_sin_cos_is_the_slice_one_bit_for_bit() {
+    if !has_avx2() {
+        return;
+    }
+    #[target_feature(enable = "avx2")]
+    unsafe fn lanes(x: &[f64; 4]) -> ([f64; 4], [f64; 4]) {
+        // SAFETY: `x` holds four values.
+        let (s, c) = regs::sin_cos(unsafe { F64x4::load(x.as_ptr()) });
+        let (s, c) = (s.to_array(), c.to_array());
+        (std::array::from_fn(|l| s[l]), std::array::from_fn(|l| c[l]))
+    }
+    let xs = crate::sim::simd::tests::sin_cos_inputs();
+    let (mut s, mut c) = (vec![0.0; xs.len()], vec![0.0; xs.len()]);
+    crate::model::trig::sin_cos_slice(&xs, &mut s, &mut c);
+    for (k, x) in xs.chunks_exact(4).enumerate() {
+        // SAFETY: the CPU has AVX2 (checked above).
+        let (sv, cv) = unsafe { lanes(x.try_into().unwrap()) };
+        for l in 0..4 {
+            let i = 4 * k + l;
+            let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+            assert!(
+                same(sv[l], s[i]) && same(cv[l], c[i]),
+                "x {}: {} {}",
+                xs[i],
+                sv[l],
+                cv[l]
+            );
+        }
+    }
 }
