@@ -81,17 +81,28 @@ fn both(ladder: &Ladder, driven: bool, steps: u64, library: bool) -> [(State, Ve
 /// the fused one with the library's frames (`Some(true)`) or the
 /// springs' (`Some(false)`); its final state and arrivals.
 fn one(ladder: &Ladder, driven: bool, steps: u64, fused: Option<bool>) -> (State, Vec<String>) {
-    one_with(ladder, driven, steps, fused, true)
+    one_with(ladder, driven, steps, fused, StepPath::AsChosen)
 }
 
-/// As [`one`], the fused stepper with the ladder in registers where it
-/// takes it (`registers`) or always over arrays.
+/// Which step the fused stepper takes in [`one_with`].
+#[derive(Clone, Copy)]
+enum StepPath {
+    /// The one it chooses (registers where it takes them, on the best
+    /// instruction set this CPU has).
+    AsChosen,
+    /// Always over arrays.
+    Arrays,
+    /// In registers, compiled for this instruction set.
+    Registers(Isa),
+}
+
+/// As [`one`], the fused stepper taking the step `path` says.
 fn one_with(
     ladder: &Ladder,
     driven: bool,
     steps: u64,
     fused: Option<bool>,
-    registers: bool,
+    path: StepPath,
 ) -> (State, Vec<String>) {
     let protocol = protocol(ladder, driven);
     let s0 = start(ladder);
@@ -113,7 +124,11 @@ fn one_with(
                 k.registers,
                 ladder.terms.friction.is_none() && ladder.n() <= 16
             );
-            k.registers &= registers;
+            match path {
+                StepPath::AsChosen => {}
+                StepPath::Arrays => k.registers = false,
+                StepPath::Registers(isa) => k.isa = isa,
+            }
             let mut plan = Plan::default();
             while t < t_end {
                 let (t1, _) = k.advance_many(
@@ -352,21 +367,38 @@ fn the_quick_drag_is_within_ulps_of_the_portable_one() {
 /// the quick divisions; the library's frames and the portable ones), for
 /// one to four registers of blocks (N = 2, 5, 11, 16: the padding, the
 /// pairs masked at the chain's end), driven and free, with and without
-/// drag; positions, velocities and arrival times.
+/// drag; positions, velocities and arrival times, after 600 steps (75 τ:
+/// the unit tests run at opt-level 0, where 2000 steps on both
+/// instruction sets took 11 s).
 #[test]
 fn registers_give_the_array_trajectory_bit_for_bit() {
     if !has_avx2() {
         return;
     }
+    // Both compilations of the step in registers that this CPU can run:
+    // AVX2's 16 registers (every CPU with AVX2) and AVX-512's 32.
+    let isas: Vec<Isa> = [Isa::Avx2, Isa::Avx512]
+        .into_iter()
+        .filter(|isa| isa.available())
+        .collect();
     for n in [2, 5, 11, 16] {
         for (gamma, drag, driven) in [(0.0, 8.125, true), (0.003, 8.125, false), (0.01, 0.0, true)]
         {
             let ladder = tank_of(n, gamma, drag);
             for library in [false, true] {
-                let regs = one_with(&ladder, driven, 2000, Some(library), true);
-                let arrays = one_with(&ladder, driven, 2000, Some(library), false);
-                let what = format!("N {n}, γ {gamma}, drag {drag}, library frames {library}");
-                assert_same_bits(&regs, &arrays, &what);
+                let arrays = one_with(&ladder, driven, 600, Some(library), StepPath::Arrays);
+                for &isa in &isas {
+                    let regs = one_with(
+                        &ladder,
+                        driven,
+                        600,
+                        Some(library),
+                        StepPath::Registers(isa),
+                    );
+                    let what =
+                        format!("N {n}, γ {gamma}, drag {drag}, library frames {library}, {isa:?}");
+                    assert_same_bits(&regs, &arrays, &what);
+                }
             }
         }
     }
