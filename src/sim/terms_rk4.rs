@@ -139,9 +139,12 @@ impl TermsRk4 {
 
     /// As [`TermsRk4::new`], the frames from the C library's sine and
     /// cosine: the portable path's arithmetic throughout (for tests).
+    /// Such a run takes the step over arrays: the step in registers is
+    /// compiled for the springs' frames only.
     pub fn with_library_frames(rhs: &Rhs, stepping: Stepping) -> Option<Self> {
         Self::new(rhs, stepping).map(|s| Self {
             library_frames: true,
+            registers: false,
             ..s
         })
     }
@@ -202,7 +205,15 @@ impl TermsRk4 {
                 forces: soa(),
             },
             library_frames: false,
-            registers: t.friction.is_none() && np <= 4 * regs::MAX_REGS,
+            // The step in registers is compiled once per register count
+            // and instruction set, for runs with drag and the springs'
+            // frames (every catalogue run with drag that takes this path):
+            // each variant is a large unrolled function, and with the
+            // runs without drag and the library's frames (tests only)
+            // too, the 32 variants took the library's release build from
+            // 55 s to 154 s. The other runs take the step over arrays,
+            // the same numbers bit for bit.
+            registers: t.friction.is_none() && np <= 4 * regs::MAX_REGS && t.drag != 0.0,
             isa,
             friction: t.friction.map(|friction| friction::Law {
                 links: t.links,
@@ -261,22 +272,18 @@ impl TermsRk4 {
     }
 
     /// [`regs::advance_avx2`] (or its copy with AVX-512's 32 registers) for
-    /// this run: its registers per quantity, drag or none, the library's
-    /// frames and the portable arithmetic or the springs' frames and the
-    /// quick one.
+    /// this run's registers per quantity, with drag, the springs' frames
+    /// and the quick arithmetic (the only runs that take it).
     ///
     /// # Safety
     /// The CPU must have `self.isa`.
     unsafe fn advance_regs(&self, job: regs::Job) -> (f64, u64) {
         macro_rules! dispatch {
             ($entry:ident, $($c:literal)*) => {
-                match (self.c.np / 4, self.c.drag != 0.0, self.library_frames) {
+                match self.c.np / 4 {
                     $(
                         // SAFETY: the caller guarantees the instruction set.
-                        ($c, true, true) => unsafe { regs::$entry::<$c, true, PORTABLE>(job) },
-                        ($c, true, false) => unsafe { regs::$entry::<$c, true, QUICK>(job) },
-                        ($c, false, true) => unsafe { regs::$entry::<$c, false, PORTABLE>(job) },
-                        ($c, false, false) => unsafe { regs::$entry::<$c, false, QUICK>(job) },
+                        $c => unsafe { regs::$entry::<$c, true, QUICK>(job) },
                     )*
                     _ => unreachable!("N ≤ 16 checked by the caller"),
                 }
