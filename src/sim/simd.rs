@@ -518,6 +518,32 @@ fn library_half_sin_cos<S: Simd>(x: S) -> (S, S) {
     (S::from_fn(|l| R * s[l]), S::from_fn(|l| R * c[l]))
 }
 
+/// θ and θ̇ of every block at one time, the blocks in C registers of
+/// four lanes (the fused kernels' layout).
+pub(crate) type Angles<const C: usize> = (f64, Pack<F64x4, C>, Pack<F64x4, C>);
+
+/// The exact arrival test (`ArrivalDetector::try_record`) on the
+/// candidate lanes of a step of the kernels that hold the ladder in
+/// registers (`sim::fused`, `sim::terms_rk4`), in block order: the
+/// blocks that arrived, as a bit mask.
+#[cold]
+#[inline(never)]
+pub(crate) fn record_arrivals<const C: usize>(
+    arrivals: &mut crate::sim::observables::ArrivalDetector,
+    candidates: u64,
+    before: Angles<C>,
+    after: Angles<C>,
+) -> u64 {
+    let mut arrived = 0;
+    for i in (0..4 * C).filter(|i| candidates >> i & 1 == 1) {
+        let at = |(t, th, om): Angles<C>| (t, th.lane(i), om.lane(i));
+        if arrivals.try_record(i, at(before), at(after)) {
+            arrived |= 1 << i;
+        }
+    }
+    arrived
+}
+
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;

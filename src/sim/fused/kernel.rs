@@ -21,7 +21,7 @@ use crate::model::params::{M, R};
 use crate::sim::observables::ArrivalDetector;
 use crate::sim::protocol::{Drive, Piece};
 use crate::sim::rhs::{Rhs, State};
-use crate::sim::simd::{F64x4, Pack, Simd, half_sin_cos};
+use crate::sim::simd::{F64x4, Pack, Simd, half_sin_cos, record_arrivals};
 use std::arch::x86_64::*;
 
 // r = s/2 is folded into sin and cos below; that is exact only for a power
@@ -373,29 +373,6 @@ impl DriveAt<'_> {
     }
 }
 
-/// θ and θ̇ of every block at one time.
-type Angles<const C: usize> = (f64, Lanes<C>, Lanes<C>);
-
-/// Runs the exact arrival test on the candidate lanes, in block order, and
-/// returns the blocks that arrived.
-#[cold]
-#[inline(never)]
-fn record<const C: usize>(
-    arrivals: &mut ArrivalDetector,
-    candidates: u64,
-    before: Angles<C>,
-    after: Angles<C>,
-) -> u64 {
-    let mut arrived = 0;
-    for i in (0..4 * C).filter(|i| candidates >> i & 1 == 1) {
-        let at = |(t, th, om): Angles<C>| (t, th.lane(i), om.lane(i));
-        if arrivals.try_record(i, at(before), at(after)) {
-            arrived |= 1 << i;
-        }
-    }
-    arrived
-}
-
 /// The batch of `job` on `st`: load, step with the drive and the arrival
 /// check after each step, store. Returns the time reached.
 #[inline(always)]
@@ -426,7 +403,8 @@ fn run_body<const C: usize>(job: &Job, st: &mut State, arrivals: &mut ArrivalDet
         // exact test (the sign of sin θ) in scalar code for candidates only.
         let candidates = r.q.theta.outside_bits(window_lo, window_hi) & pending;
         if candidates != 0 {
-            pending &= !record(arrivals, candidates, before, (t_new, r.q.theta, r.v.theta));
+            pending &=
+                !record_arrivals(arrivals, candidates, before, (t_new, r.q.theta, r.v.theta));
         }
         t = t_new;
     }

@@ -24,7 +24,7 @@ use crate::model::params::R;
 use crate::model::trig::{self, consts::*};
 use crate::sim::observables::ArrivalDetector;
 use crate::sim::rhs::{Rhs, State};
-use crate::sim::simd::{F64x4, MAX_LANES, Pack, Simd};
+use crate::sim::simd::{F64x4, MAX_LANES, Pack, Simd, record_arrivals};
 use crate::sim::stepping::Plan;
 use crate::sim::tableau::RK4;
 use std::arch::x86_64::*;
@@ -362,29 +362,6 @@ fn step<const C: usize, const DRAG: bool, const EXACT: bool>(
     at_new
 }
 
-/// θ and θ̇ of every block at one time.
-type Angles<const C: usize> = (f64, Lanes<C>, Lanes<C>);
-
-/// The exact arrival test on the candidate lanes, in block order; the
-/// blocks that arrived.
-#[cold]
-#[inline(never)]
-fn record<const C: usize>(
-    arrivals: &mut ArrivalDetector,
-    candidates: u64,
-    before: Angles<C>,
-    after: Angles<C>,
-) -> u64 {
-    let mut arrived = 0;
-    for i in (0..4 * C).filter(|i| candidates >> i & 1 == 1) {
-        let at = |(t, th, om): Angles<C>| (t, th.lane(i), om.lane(i));
-        if arrivals.try_record(i, at(before), at(after)) {
-            arrived |= 1 << i;
-        }
-    }
-    arrived
-}
-
 /// What one call of [`advance`] is given.
 pub(super) struct Job<'j, 'a> {
     pub c: Coeffs,
@@ -455,7 +432,7 @@ fn advance<const C: usize, const DRAG: bool, const EXACT: bool>(job: Job) -> (f6
         // `ArrivalDetector::observe`'s candidates, every pending block at once.
         let candidates = (q0.th.le_bits(lo) | q0.th.ge_bits(hi)) & pending;
         if candidates != 0 {
-            pending &= !record(arrivals, candidates, before, (t_new, q0.th, v0.th));
+            pending &= !record_arrivals(arrivals, candidates, before, (t_new, q0.th, v0.th));
         }
         t = t_new;
         taken += 1;
