@@ -298,10 +298,7 @@ fn mp4_is_index_first_h264_and_shows_the_gif_frames() {
                 .chunks_exact(3)
                 .flat_map(|c| [c[0], c[1], c[2], 255])
                 .collect();
-            let img = image::RgbaImage::from_raw(w as u32, h as u32, rgba).unwrap();
-            let mut png = Vec::new();
-            img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
-                .unwrap();
+            let png = common::pngio::encode_rgba8(w as u32, h as u32, &rgba);
             dump("movie-4-mp4-frame-16.png", &png);
         }
         let p = common::gif::psnr(&rgb, &gif_rgb[k as usize]);
@@ -761,7 +758,7 @@ fn figure_in_every_format_and_scale() {
     let svg = std::fs::read(out.join("figure-2d.svg")).unwrap();
     let pdf = std::fs::read(out.join("figure-2d.pdf")).unwrap();
     assert!(pdf.starts_with(b"%PDF-") && svg.starts_with(b"<svg"));
-    let (w, h) = image::image_dimensions(out.join("figure-2d.png")).unwrap();
+    let (w, h) = common::pngio::dimensions(&out.join("figure-2d.png")).unwrap();
     let pic = &figures().iter().find(|(n, _)| n == "figure-2d").unwrap().1;
     assert_eq!(
         (w, h),

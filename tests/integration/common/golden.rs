@@ -61,8 +61,8 @@ pub fn check(name: &str, actual: &Pixmap) {
         ));
         return;
     }
-    let expected = match image::open(&path) {
-        Ok(img) => img.to_rgba8(),
+    let (ew, eh, exp) = match super::pngio::read_rgba8(&path) {
+        Ok(img) => img,
         Err(e) => panic!(
             "golden image {} missing or unreadable ({e}); run with LADDER_BLESS=1 to create it",
             path.display()
@@ -70,23 +70,14 @@ pub fn check(name: &str, actual: &Pixmap) {
     };
     let (w, h) = (actual.width(), actual.height());
     let act = rgba(actual);
-    if expected.dimensions() != (w, h) {
-        write_diff(
-            name,
-            &expected.into_raw(),
-            expected_dims(&path),
-            &act,
-            (w, h),
-        );
+    if (ew, eh) != (w, h) {
+        write_diff(name, &exp, (ew, eh), &act, (w, h));
         panic!(
-            "golden {name}: size {w}x{h} differs from the reference {}x{}; \
+            "golden {name}: size {w}x{h} differs from the reference {ew}x{eh}; \
              expected | difference | actual side by side: {}",
-            expected_dims(&path).0,
-            expected_dims(&path).1,
             diff_path(name).display()
         );
     }
-    let exp = expected.into_raw();
     let bad = exp
         .chunks_exact(4)
         .zip(act.chunks_exact(4))
@@ -107,10 +98,6 @@ pub fn check(name: &str, actual: &Pixmap) {
     }
 }
 
-fn expected_dims(path: &PathBuf) -> (u32, u32) {
-    image::image_dimensions(path).unwrap_or((1, 1))
-}
-
 /// Writes expected | difference | actual to target/golden-diffs/NAME.png.
 fn write_diff(
     name: &str,
@@ -120,7 +107,12 @@ fn write_diff(
     (aw, ah): (u32, u32),
 ) -> PathBuf {
     let (cw, ch) = (ew.max(aw), eh.max(ah));
-    let mut out = image::RgbaImage::from_pixel(3 * cw + 8, ch, image::Rgba([255, 0, 255, 255]));
+    let ow = 3 * cw + 8;
+    let mut out: Vec<u8> = [255, 0, 255, 255].repeat((ow * ch) as usize);
+    let mut put = |x: u32, y: u32, c: [u8; 4]| {
+        let i = 4 * (y * ow + x) as usize;
+        out[i..i + 4].copy_from_slice(&c);
+    };
     let px = |buf: &[u8], w: u32, x: u32, y: u32| {
         let i = 4 * (y * w + x) as usize;
         [buf[i], buf[i + 1], buf[i + 2], buf[i + 3]]
@@ -130,10 +122,10 @@ fn write_diff(
             let e = (x < ew && y < eh).then(|| px(exp, ew, x, y));
             let a = (x < aw && y < ah).then(|| px(act, aw, x, y));
             if let Some(e) = e {
-                out.put_pixel(x, y, image::Rgba(e));
+                put(x, y, e);
             }
             if let Some(a) = a {
-                out.put_pixel(2 * cw + 8 + x, y, image::Rgba(a));
+                put(2 * cw + 8 + x, y, a);
             }
             let d = match (e, a) {
                 (Some(e), Some(a)) => {
@@ -146,12 +138,12 @@ fn write_diff(
                 }
                 _ => [255, 0, 255, 255],
             };
-            out.put_pixel(cw + 4 + x, y, image::Rgba(d));
+            put(cw + 4 + x, y, d);
         }
     }
     let path = diff_path(name);
     let _ = std::fs::create_dir_all(path.parent().unwrap());
-    let _ = out.save(&path);
+    let _ = std::fs::write(&path, super::pngio::encode_rgba8(ow, ch, &out));
     path
 }
 

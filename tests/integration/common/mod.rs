@@ -9,6 +9,7 @@ pub mod kernels;
 pub mod latex;
 pub mod lcg;
 pub mod pdf;
+pub mod pngio;
 pub mod require;
 pub mod scenes;
 pub mod tempdir;
