@@ -45,7 +45,7 @@
 use super::outline::{Outline, Pose, add_point_force, point_velocity};
 use super::params::M;
 pub use super::tangent::{Anchor, Way, Ways};
-use super::tangent::{Relative, Warm, common_tangent, warm_tangent};
+use super::tangent::{Candidate, Relative, Warm, common_tangent, warm_tangent};
 
 /// One ribbon of every junction: its anchor on the upper and the lower
 /// block (in each block's own frame) and its rest length ℓ (in s).
@@ -75,6 +75,10 @@ pub struct Ribbons {
     /// Whether [`Ribbons::find_spans`] starts each common tangent from
     /// the last evaluation's (`tangent::warm_tangent`; the same spans).
     pub warm: bool,
+    /// Whether, searching warm, it takes a pair of ways round's tangent
+    /// points from an earlier pair that shares them (`twin`; the same
+    /// spans).
+    pub prune: bool,
 }
 
 /// A ribbon at a state: where its span leaves each block (frame points),
@@ -112,54 +116,81 @@ impl Ribbon {
     /// [`Ribbon::span`] with the ways round made beforehand.
     #[inline]
     pub fn span_with(&self, ways: &Ways, upper: &Pose, lower: &Pose, stiffness: f64) -> Span {
-        self.span_from(ways, upper, lower, stiffness, None)
+        self.span_from(ways, (upper, lower), stiffness, None, false)
     }
 
     /// [`Ribbon::span_with`], each common tangent started from `warm`'s
-    /// (the last evaluation's, updated) where given.
+    /// (the last evaluation's, updated) where given, and then, where
+    /// `prune`, a pair of ways round that has an earlier pair's tangent
+    /// points not searched again ([`twin`]: the same spans).
     #[inline]
     fn span_from(
         &self,
         ways: &Ways,
-        upper: &Pose,
-        lower: &Pose,
+        (upper, lower): (&Pose, &Pose),
         stiffness: f64,
         mut warm: Option<&mut Warm>,
+        prune: bool,
     ) -> Span {
         let rel = Relative::new(upper, lower);
         // The shortest way round with a common tangent; where none has
         // one (never seen), the shortest of the last guesses.
         let mut best = (f64::INFINITY, 0, 0, 0, 0);
         let mut guess = best;
-        for (a, wu) in ways.upper.iter().enumerate() {
-            for (b, wl) in ways.lower.iter().enumerate() {
-                let ((ju, jl), found) = match warm.as_deref_mut() {
-                    Some(w) => {
-                        let r = warm_tangent(wu, wl, &rel, w[2 * a + b]);
-                        w[2 * a + b] = r.0;
-                        r
+        // Each pair's tangent points where a fixed point of its search.
+        let mut fixed = [NOT_FIXED; 4];
+        for p in 0..4 {
+            let (a, b) = (p / 2, p % 2);
+            let (wu, wl) = (&ways.upper[a], &ways.lower[b]);
+            let t = match warm.as_deref_mut() {
+                Some(w) => {
+                    // An earlier pair's tangent points: its length, not
+                    // shorter (the first of equal lengths stays).
+                    if let Some(pair) = twin(&fixed, p, w[p]).filter(|_| prune) {
+                        fixed[p] = pair;
+                        continue;
                     }
-                    None => common_tangent(wu, wl, &rel),
-                };
-                let (cu, cl) = (wu.c[ju], wl.c[jl]);
-                let slot = if found { &mut best } else { &mut guess };
-                // The free span is ≥ 0 and rounded addition is monotone:
-                // where the wrapped lengths alone reach the slot's, the
-                // whole length does (its square root spared).
-                if cu.arc + cl.arc >= slot.0 {
-                    continue;
+                    let t = warm_tangent(wu, wl, &rel, w[p]);
+                    w[p] = t.pair;
+                    t
                 }
-                let e = rel.to_upper(cl.point);
-                let free = ((e[0] - cu.point[0]).powi(2) + (e[1] - cu.point[1]).powi(2)).sqrt();
-                let length = cu.arc + free + cl.arc;
-                if length < slot.0 {
-                    *slot = (length, a, ju, b, jl);
-                }
+                None => common_tangent(wu, wl, &rel),
+            };
+            if t.fixed {
+                fixed[p] = t.pair;
+            }
+            let (ju, jl) = t.pair;
+            let slot = if t.found { &mut best } else { &mut guess };
+            if let Some(length) = shorter(&rel, (&wu.c[ju], &wl.c[jl]), slot.0) {
+                *slot = (length, a, ju, b, jl);
             }
         }
         let (length, a, ju, b, jl) = if best.0.is_finite() { best } else { guess };
         let (cu, cl) = (ways.upper[a].c[ju], ways.lower[b].c[jl]);
-        let (d, e) = (upper.point(cu.point), lower.point(cl.point));
+        self.taut(
+            upper,
+            lower,
+            (cu.point, cl.point),
+            length,
+            [cu.arc, cl.arc],
+            stiffness,
+        )
+    }
+
+    /// The span through the tangent points (D, E) (frame points of the
+    /// upper and the lower block), of total `length`, wrapped lengths
+    /// `wrapped`.
+    #[inline]
+    fn taut(
+        &self,
+        upper: &Pose,
+        lower: &Pose,
+        (dp, ep): ([f64; 2], [f64; 2]),
+        length: f64,
+        wrapped: [f64; 2],
+        stiffness: f64,
+    ) -> Span {
+        let (d, e) = (upper.point(dp), lower.point(ep));
         let v = [e[0] - d[0], e[1] - d[1]];
         let free = (v[0] * v[0] + v[1] * v[1]).sqrt();
         let dir = if free > 0.0 {
@@ -168,15 +199,68 @@ impl Ribbon {
             [0.0, 0.0]
         };
         Span {
-            d: cu.point,
-            e: cl.point,
+            d: dp,
+            e: ep,
             dir,
             free,
             length,
             tension: (stiffness * (length - self.rest)).max(0.0),
-            wrapped: [cu.arc, cl.arc],
+            wrapped,
         }
     }
+}
+
+/// How much longer than the rounding of a length (in s) a free span must
+/// be for [`surely_longer`] to say so without its square root.
+const SLACK: f64 = 1e-9;
+
+/// Whether a free span of squared length `f2` is longer than `gap` (the
+/// slot's length less the wrapped lengths, > 0) by more than [`SLACK`]:
+/// then the rounded whole length is above the slot's, as its square
+/// root would have shown (rounding moves lengths of a few s by ~10⁻¹⁵).
+#[inline]
+fn surely_longer(f2: f64, gap: f64) -> bool {
+    let g = gap + SLACK;
+    f2 >= g * g
+}
+
+/// No fixed point (of [`twin`]'s record): no candidate has this index.
+const NOT_FIXED: (usize, usize) = (usize::MAX, usize::MAX);
+
+/// The length through tangent candidates `(cu, cl)` (upper, lower) where
+/// shorter than `slot` (else `None`, mostly without a square root).
+#[inline]
+fn shorter(rel: &Relative, (cu, cl): (&Candidate, &Candidate), slot: f64) -> Option<f64> {
+    // The free span is ≥ 0 and rounded addition is monotone: where the
+    // wrapped lengths alone reach the slot's, the whole length does.
+    let arcs = cu.arc + cl.arc;
+    if arcs >= slot {
+        return None;
+    }
+    let e = rel.to_upper(cl.point);
+    let f2 = (e[0] - cu.point[0]).powi(2) + (e[1] - cu.point[1]).powi(2);
+    if surely_longer(f2, slot - arcs) {
+        return None;
+    }
+    let length = cu.arc + f2.sqrt() + cl.arc;
+    (length < slot).then_some(length)
+}
+
+/// The tangent points pair p of [`Ribbon::span_from`] (upper way p / 2,
+/// lower way p % 2) takes without a search, from `fixed` (the earlier
+/// pairs' where a fixed point of their search, else [`NOT_FIXED`]): an
+/// earlier pair q's that differs from p in one way round (the lower,
+/// q = p − 1, or the upper, q = p − 2), with its tangent point on that
+/// block the anchor (candidate 0: the same point, wrapped length and test
+/// in both ways round, `tangent::Way::new`), and equal to p's `last`.
+/// Then p's tests are q's, and [`warm_tangent`] started from `last` would
+/// return them: through its two tests, or (at the anchors, (0, 0)) at
+/// the search's first step.
+#[inline]
+fn twin(fixed: &[(usize, usize); 4], p: usize, last: (usize, usize)) -> Option<(usize, usize)> {
+    let by_lower = p % 2 == 1 && fixed[p - 1] == last && last.1 == 0;
+    let by_upper = p >= 2 && fixed[p - 2] == last && last.0 == 0;
+    (by_lower || by_upper).then_some(last)
 }
 
 impl Ribbons {
@@ -189,6 +273,7 @@ impl Ribbons {
             stiffness,
             damping: 2.0 * (stiffness * M).sqrt(),
             warm: true,
+            prune: true,
         }
     }
 
@@ -260,7 +345,8 @@ impl Ribbons {
         for w in poses.windows(2) {
             for (r, ways) in self.ribbons.iter().zip(&self.ways) {
                 let start = last.next().filter(|_| self.warm);
-                out.push(r.span_from(ways, &w[0], &w[1], self.stiffness, start));
+                let pair = (&w[0], &w[1]);
+                out.push(r.span_from(ways, pair, self.stiffness, start, self.prune));
             }
         }
     }

@@ -188,6 +188,30 @@ pub struct Ways {
     pub(super) lower: [Way; 2],
 }
 
+/// What a common tangent search gives: the tangent points (upper, lower)
+/// as candidates' indices in the two ways round, whether they are a
+/// common tangent (else the last guesses), and whether they are a fixed
+/// point of the search (each the first candidate that leaves towards the
+/// other: what [`warm_tangent`] confirms; not the longest pair of a cycle).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Tangent {
+    pub(super) pair: (usize, usize),
+    pub(super) found: bool,
+    pub(super) fixed: bool,
+}
+
+impl Tangent {
+    /// A fixed point of the search.
+    #[inline]
+    fn fixed(pair: (usize, usize)) -> Self {
+        Self {
+            pair,
+            found: true,
+            fixed: true,
+        }
+    }
+}
+
 /// The common tangent of one way round on each block: alternately the
 /// first candidate on each that leaves towards the other's point, until
 /// neither changes; with whether it got there.
@@ -208,7 +232,7 @@ pub struct Ways {
 /// that neither settles nor cycles in ten rounds (never seen) has no
 /// common tangent.
 #[inline]
-pub(super) fn common_tangent(wu: &Way, wl: &Way, rel: &Relative) -> ((usize, usize), bool) {
+pub(super) fn common_tangent(wu: &Way, wl: &Way, rel: &Relative) -> Tangent {
     // The anchors, then the guesses.
     let mut seen = [(0, 0); 11];
     for k in 1..seen.len() {
@@ -216,14 +240,23 @@ pub(super) fn common_tangent(wu: &Way, wl: &Way, rel: &Relative) -> ((usize, usi
         let nu = wu.first_leaving(rel.to_upper(wl.c[jl].point));
         let nl = wl.first_leaving(rel.to_lower(wu.c[nu].point));
         if (nu, nl) == seen[k - 1] {
-            return ((nu, nl), true);
+            return Tangent::fixed((nu, nl));
         }
         if let Some(from) = seen[..k].iter().position(|&p| p == (nu, nl)) {
-            return (longest(wu, wl, rel, &seen[from..k]), true);
+            let pair = longest(wu, wl, rel, &seen[from..k]);
+            return Tangent {
+                pair,
+                found: true,
+                fixed: false,
+            };
         }
         seen[k] = (nu, nl);
     }
-    (seen[seen.len() - 1], false)
+    Tangent {
+        pair: seen[seen.len() - 1],
+        found: false,
+        fixed: false,
+    }
 }
 
 /// Of pairs of tangent points, the one whose path is the longest (the
@@ -261,18 +294,13 @@ pub type Warm = [(usize, usize); 4];
 /// a way round has one common tangent (a test compares the two over
 /// whole runs of the tank and the toy, bit for bit).
 #[inline]
-pub(super) fn warm_tangent(
-    wu: &Way,
-    wl: &Way,
-    rel: &Relative,
-    last: (usize, usize),
-) -> ((usize, usize), bool) {
+pub(super) fn warm_tangent(wu: &Way, wl: &Way, rel: &Relative, last: (usize, usize)) -> Tangent {
     let (ju, jl) = last;
     if (ju, jl) != (0, 0)
         && wu.first_leaving(rel.to_upper(wl.c[jl].point)) == ju
         && wl.first_leaving(rel.to_lower(wu.c[ju].point)) == jl
     {
-        return (last, true);
+        return Tangent::fixed(last);
     }
     common_tangent(wu, wl, rel)
 }

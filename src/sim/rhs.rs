@@ -247,7 +247,9 @@ impl<'a> Rhs<'a> {
         let ladder = self.ladder;
         self.frames.at(ladder.n(), q);
         self.force_evals += 1;
-        if let Some(b) = ladder.built {
+        // By reference: the apparatus, with its ribbons' ways round, is
+        // 3.7 kB, and a copy of it each evaluation showed in the profile.
+        if let Some(b) = &ladder.built {
             self.built_gradient(&b.ribbons, q);
         } else if self.terms.links.is_paper() {
             ladder.gradient_with(q, &mut self.grad, &mut self.scratch);
@@ -266,13 +268,13 @@ impl<'a> Rhs<'a> {
         if let Some(friction) = t.friction {
             lost = self.add_friction(&friction, q, v);
         }
-        if let Some(b) = ladder.built {
+        if let Some(b) = &ladder.built {
             lost += b
                 .ribbons
                 .add_damping_of(&self.poses, &self.spans, v, &mut self.force);
         }
-        if let Some(b) = ladder.built
-            && let Some(c) = b.contact
+        if let Some(b) = &ladder.built
+            && let Some(c) = &b.contact
         {
             let o = b.ribbons.outline;
             let (deepest, d) =

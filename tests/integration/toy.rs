@@ -329,6 +329,23 @@ fn the_warm_tangent_search_runs_the_toy_as_the_cold_one_bit_for_bit() {
 }
 
 #[test]
+fn the_pruned_way_search_runs_the_toy_as_the_full_one_bit_for_bit() {
+    // The toy as built-in through its clatter, a pair of ways round that
+    // has an earlier pair's tangent points at its anchor taken unsearched
+    // against every pair searched (both warm): the same states, every 5 τ.
+    use crate::ribbons::run_bits_searched;
+    let sc = parse(TOY, "toy", "toy").unwrap().scenario().unwrap();
+    let samples: Vec<f64> = (0..(sc.t_end / 5.0) as usize)
+        .map(|k| 5.0 * k as f64)
+        .collect();
+    let cfg = IntegratorConfig::fixed(IntegratorKind::Rk4, 0.02);
+    let (pruned, arrivals) = run_bits_searched(&sc, &samples, &cfg, (true, true));
+    let (full, full_arrivals) = run_bits_searched(&sc, &samples, &cfg, (true, false));
+    assert_eq!(arrivals, full_arrivals);
+    assert!(pruned == full, "the pruned search moved the run");
+}
+
+#[test]
 fn the_toy_data_file_is_within_its_estimate_its_impacts_counted() {
     // `ladder figure toy` written, against the estimate made before any
     // work (`scenes::data::estimated_bytes`): the file within it, and the
