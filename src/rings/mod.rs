@@ -6,7 +6,8 @@
 //! ([`chain`], [`hand`]), contact between tubes of our own ([`contact`];
 //! docs/rings.md says why not an engine, and [`warm`], its search
 //! warm-started from the previous step), the linking guard ([`guard`]),
-//! the step ([`system`]) and the observables ([`observe`]).
+//! the step ([`system`]), the observables ([`observe`]) and the chain's
+//! normal modes at rest ([`modes`]).
 //!
 //! Floors: `rings` knows only `error` below it; `render` draws its
 //! states from plain poses, and `scenes` brings them together.
@@ -18,6 +19,7 @@ pub mod contact;
 pub mod guard;
 pub mod hand;
 pub mod math;
+pub mod modes;
 pub mod observe;
 pub mod run;
 pub mod settle;

@@ -58,6 +58,7 @@ mod render;
 mod ribbons;
 mod rings;
 mod rings_captions;
+mod rings_modes;
 mod rings_settle;
 mod scene_files;
 mod scene_fuzz;
