@@ -758,7 +758,7 @@ fn figure_in_every_format_and_scale() {
     let svg = std::fs::read(out.join("figure-2d.svg")).unwrap();
     let pdf = std::fs::read(out.join("figure-2d.pdf")).unwrap();
     assert!(pdf.starts_with(b"%PDF-") && svg.starts_with(b"<svg"));
-    let (w, h) = common::pngio::dimensions(&out.join("figure-2d.png")).unwrap();
+    let (w, h) = crate::common::pngio::dimensions(&out.join("figure-2d.png")).unwrap();
     let pic = &figures().iter().find(|(n, _)| n == "figure-2d").unwrap().1;
     assert_eq!(
         (w, h),
