@@ -29,11 +29,7 @@ fn main() {
         }
     }
     if tapes {
-        chain.tapes = (1..chain.n)
-            .step_by(2)
-            .filter(|k| k + 2 < chain.n)
-            .map(|k| [k, k + 2])
-            .collect();
+        chain.tapes = chain.odd_strand_tapes();
     }
     let t0 = std::time::Instant::now();
     let (mut sys, done) = match settle::leaning(&chain, lean, squeeze) {

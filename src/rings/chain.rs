@@ -316,6 +316,19 @@ impl RingChain {
 
 /// Words for captions and the gallery (docs/rings.md).
 impl RingChain {
+    /// The partner (odd) strand taped, ring k to ring k + 2 for every odd
+    /// k with k + 2 in the chain: the tapes of figure 4b and movie 12
+    /// (docs/rings.md).
+    pub fn odd_strand_tapes(&self) -> Vec<[usize; 2]> {
+        (1..self.n)
+            .step_by(2)
+            .filter(|k| k + 2 < self.n)
+            .map(|k| [k, k + 2])
+            .collect()
+    }
+}
+
+impl RingChain {
     /// "30 rings, R = 12.5 mm, r = 1 mm, e = 0.6, μ = 0.57, 14 tapes".
     pub fn parameters(&self) -> String {
         format!(

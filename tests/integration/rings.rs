@@ -375,7 +375,7 @@ fn bad_rings_are_refused_with_one_line() {
 /// The default chain, its partner (odd) strand taped or not, over 1.5 s.
 fn chain_30(taped: bool) -> RingChain {
     let tapes = if taped {
-        (1..28).step_by(2).map(|k| [k, k + 2]).collect()
+        RingChain::default().odd_strand_tapes()
     } else {
         Vec::new()
     };
@@ -529,7 +529,7 @@ fn a_ring_filmstrip_fits_a_slide() {
 #[test]
 fn the_warm_search_finds_every_contact_of_the_full_search() {
     let chain = RingChain {
-        tapes: (1..28).step_by(2).map(|k| [k, k + 2]).collect(),
+        tapes: RingChain::default().odd_strand_tapes(),
         t_end: 0.5,
         ..Default::default()
     };
@@ -575,4 +575,21 @@ fn the_warm_search_finds_every_contact_of_the_full_search() {
         "{compared} contacts over {steps} steps"
     );
     assert!(warm_share > 0.9, "{warm_share}");
+}
+
+/// The odd strand's tapes the library makes are figure 4b's and movie
+/// 12's, as their scene files list them.
+#[test]
+fn the_odd_strand_tapes_are_the_catalogues() {
+    for id in ["4b", "12"] {
+        use jacobs_ladder::scene::Kind;
+        let kind = if id == "4b" {
+            Kind::Figure
+        } else {
+            Kind::Movie
+        };
+        let entry = jacobs_ladder::catalog::find(kind, id).unwrap();
+        let chain = entry.scene.rings.clone().unwrap();
+        assert_eq!(chain.odd_strand_tapes(), chain.tapes, "{id}");
+    }
 }
