@@ -59,6 +59,10 @@ pub const FILES: &[(&str, &str)] = &[
         include_str!("../assets/scenes/figure-tank-positions.toml"),
     ),
     (
+        "figure-tank-positions-ribbons",
+        include_str!("../assets/scenes/figure-tank-positions-ribbons.toml"),
+    ),
+    (
         "figure-tank-levels",
         include_str!("../assets/scenes/figure-tank-levels.toml"),
     ),

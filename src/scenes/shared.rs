@@ -237,7 +237,8 @@ mod tests {
 
     /// Of the whole catalogue, the runs planned twice are movie 4's (made
     /// for movie 3) and the tank's kink and antikink at 0.2 Hz with its own
-    /// terms (made for its positions' figure, taken by its levels').
+    /// terms (made for its positions' figure, taken by its levels'), and
+    /// the same of its ribbons' level (made for `tank-positions-ribbons`).
     #[test]
     fn the_catalogue_shares_movie_4_and_the_tanks_level_3() {
         let scenes: Vec<Scene> = catalog::catalogue()
@@ -249,7 +250,13 @@ mod tests {
         let owners: Vec<&str> = shared.iter().map(|s| scenes[s.2].name.as_str()).collect();
         assert_eq!(
             owners,
-            ["tank-positions", "tank-positions", "3"],
+            [
+                "tank-positions",
+                "tank-positions",
+                "tank-positions-ribbons",
+                "tank-positions-ribbons",
+                "3"
+            ],
             "{owners:?}"
         );
     }

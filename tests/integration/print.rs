@@ -936,7 +936,7 @@ fn tank_levels_plots_share_a_slide() {
     }
     assert!(pic.crowded().is_none());
     let texts: Vec<String> = pic.text_boxes().into_iter().map(|b| b.text).collect();
-    for k in 1..=5 {
+    for k in 1..=scenes::experiments::LEVELS.len() {
         let n = texts
             .iter()
             .filter(|t| t.starts_with(&format!("{k}")))

@@ -266,3 +266,33 @@ fn cheapest_setting_within_one_tau_meets_the_issue_goal() {
     assert!(paper.arrival_error.is_some_and(|e| e < 1.0));
     assert!(paper.force_evals >= 400_000);
 }
+
+/// The tank as built (movie water-tank-ribbons, left out above: no rtol
+/// 1e-10 reference gets through its contact) as the catalogue runs it,
+/// dopri5 at its scene's tolerance, against RK4 at τ/64, a quarter of the
+/// contact's stable step: every block flips in both, each arrival within
+/// 1 τ (docs/experiments.md, "The water tank with ribbons").
+#[test]
+fn the_ribbon_tank_scene_matches_a_tighter_reference() {
+    let scene = &catalog::find(jacobs_ladder::scene::Kind::Movie, "water-tank-ribbons")
+        .unwrap()
+        .scene;
+    let run = run::simulate(scene, &[]).unwrap();
+    assert_eq!(run.integrator.name, "dopri5");
+    let reference = sim::simulate(
+        &scene.scenario().unwrap(),
+        &[],
+        &IntegratorConfig::fixed(IntegratorKind::Rk4, 1.0 / 64.0),
+    )
+    .unwrap();
+    let (a, b) = (&run.trajectory.arrival_times, &reference.arrival_times);
+    let mut worst: f64 = 0.0;
+    for (n, (x, y)) in a.iter().zip(b).enumerate() {
+        let (x, y) = x
+            .zip(*y)
+            .unwrap_or_else(|| panic!("block {}: {x:?} against {y:?}", n + 1));
+        worst = worst.max((x - y).abs());
+    }
+    println!("largest arrival difference {worst:.4} τ");
+    assert!(worst < 1.0, "{worst} τ");
+}

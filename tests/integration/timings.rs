@@ -84,11 +84,12 @@ fn the_table_lists_every_output_and_the_runs_each_made() {
         assert_eq!(block_steps > 0 || reused > 0, simulated, "{name}:\n{table}");
     }
     // Movies 3 and 4 are one run (one scene, two cameras): made for
-    // movie 3, taken by movie 4; and the tank's positions at 0.2 Hz are its
-    // level 3, made for the positions, taken by the levels.
+    // movie 3, taken by movie 4; and the tank's positions at 0.2 Hz, with
+    // links and with ribbons, are its level 3 and its ribbons' level, made
+    // for the positions, taken by the levels.
     assert_eq!(rows["movie 4"].0, (0, 0), "{table}");
     assert_eq!(rows["movie 4"].2, rows["movie 3"].0.0, "{table}");
-    assert_eq!(rows["figure tank-levels"].2, 2, "{table}");
+    assert_eq!(rows["figure tank-levels"].2, 4, "{table}");
     // Figure 4b's chain is movie 12's first 3 s: one run, made for the
     // movie, taken by the figure.
     assert_eq!(rows["movie 12"].0.0, 1, "{table}");
