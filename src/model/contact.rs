@@ -122,16 +122,20 @@ impl Contact {
     ) {
         let n = blocks.n;
         let reach = 2.0 * o.radius();
+        let reach2 = reach * reach;
         for i in 0..n {
-            let pi = poses[i];
+            let ci = poses[i].centre;
             for j in i + 1..n {
-                let pj = poses[j];
-                let dx = pi.centre[0] - pj.centre[0];
-                let dy = pi.centre[1] - pj.centre[1];
-                if dx * dx + dy * dy >= reach * reach {
+                // The centres first, from the poses in place: most pairs
+                // are out of reach, and copying each pose showed in the
+                // profile.
+                let cj = poses[j].centre;
+                let (dx, dy) = (ci[0] - cj[0], ci[1] - cj[1]);
+                if dx * dx + dy * dy >= reach2 {
                     continue;
                 }
-                for (a, pa, b, pb) in [(i, &pi, j, &pj), (j, &pj, i, &pi)] {
+                let (pi, pj) = (&poses[i], &poses[j]);
+                for (a, pa, b, pb) in [(i, pi, j, pj), (j, pj, i, pi)] {
                     for k in 0..4 {
                         if let Some(t) = self.touch(blocks, o, (a, pa), (b, pb), k, v) {
                             f(t);

@@ -44,8 +44,9 @@
 
 use super::outline::{Outline, Pose, add_point_force, point_velocity};
 use super::params::M;
+pub use super::tangent::Warm;
 pub use super::tangent::{Anchor, Way, Ways};
-use super::tangent::{Candidate, Relative, Warm, common_tangent, warm_tangent};
+use super::tangent::{Candidate, Relative, common_tangent, warm_tangent};
 
 /// One ribbon of every junction: its anchor on the upper and the lower
 /// block (in each block's own frame) and its rest length ℓ (in s).
@@ -122,51 +123,98 @@ impl Ribbon {
     /// [`Ribbon::span_with`], each common tangent started from `warm`'s
     /// (the last evaluation's, updated) where given, and then, where
     /// `prune`, a pair of ways round that has an earlier pair's tangent
-    /// points not searched again ([`twin`]: the same spans).
+    /// points not searched again ([`twin`]) and the last evaluation's
+    /// shortest pair measured first ([`Ribbon::span_pruned`]): the same
+    /// spans.
     #[inline]
     fn span_from(
+        &self,
+        ways: &Ways,
+        poses: (&Pose, &Pose),
+        stiffness: f64,
+        warm: Option<&mut Warm>,
+        prune: bool,
+    ) -> Span {
+        match warm {
+            Some(w) if prune => self.span_pruned(ways, poses, stiffness, w),
+            _ => self.span_searched(ways, poses, stiffness, warm),
+        }
+    }
+
+    /// [`Ribbon::span_from`] with every pair of ways round searched (warm
+    /// from `warm` where given) and measured in turn.
+    #[inline]
+    fn span_searched(
         &self,
         ways: &Ways,
         (upper, lower): (&Pose, &Pose),
         stiffness: f64,
         mut warm: Option<&mut Warm>,
-        prune: bool,
     ) -> Span {
         let rel = Relative::new(upper, lower);
-        // The shortest way round with a common tangent; where none has
-        // one (never seen), the shortest of the last guesses.
-        let mut best = (f64::INFINITY, 0, 0, 0, 0);
-        let mut guess = best;
-        // Each pair's tangent points where a fixed point of its search.
-        let mut fixed = [NOT_FIXED; 4];
+        let mut pairs = [(0, 0); 4];
+        let mut found = [None; 4];
         for p in 0..4 {
-            let (a, b) = (p / 2, p % 2);
-            let (wu, wl) = (&ways.upper[a], &ways.lower[b]);
+            let (wu, wl) = (&ways.upper[p / 2], &ways.lower[p % 2]);
             let t = match warm.as_deref_mut() {
                 Some(w) => {
-                    // An earlier pair's tangent points: its length, not
-                    // shorter (the first of equal lengths stays).
-                    if let Some(pair) = twin(&fixed, p, w[p]).filter(|_| prune) {
-                        fixed[p] = pair;
-                        continue;
-                    }
-                    let t = warm_tangent(wu, wl, &rel, w[p]);
-                    w[p] = t.pair;
+                    let t = warm_tangent(wu, wl, &rel, w.pairs[p]);
+                    w.pairs[p] = t.pair;
                     t
                 }
                 None => common_tangent(wu, wl, &rel),
             };
-            if t.fixed {
-                fixed[p] = t.pair;
-            }
-            let (ju, jl) = t.pair;
-            let slot = if t.found { &mut best } else { &mut guess };
-            if let Some(length) = shorter(&rel, (&wu.c[ju], &wl.c[jl]), slot.0) {
-                *slot = (length, a, ju, b, jl);
-            }
+            (pairs[p], found[p]) = (t.pair, Some(t.found));
         }
-        let (length, a, ju, b, jl) = if best.0.is_finite() { best } else { guess };
-        let (cu, cl) = (ways.upper[a].c[ju], ways.lower[b].c[jl]);
+        let (length, p) = in_turn(&rel, ways, &pairs, &found);
+        if let Some(w) = warm {
+            w.shortest = p;
+        }
+        self.taut_at(ways, (upper, lower), (p, pairs[p]), length, stiffness)
+    }
+
+    /// [`Ribbon::span_from`] searching warm and pruned: each pair of ways
+    /// round searched from `w` (or taken from its [`twin`]), then the pair
+    /// that was the shortest at the last evaluation measured first, so
+    /// that the others are mostly rejected on their squared free spans
+    /// with no square root ([`comes_before`]): the shortest pair, the
+    /// first of equal lengths, as [`Ribbon::span_searched`] finds it.
+    /// That pair's span through its last tangent points is made before
+    /// the search (its square roots and divisions under way while the
+    /// search runs) and kept where the search confirms both.
+    #[inline]
+    fn span_pruned(
+        &self,
+        ways: &Ways,
+        (upper, lower): (&Pose, &Pose),
+        stiffness: f64,
+        w: &mut Warm,
+    ) -> Span {
+        let rel = Relative::new(upper, lower);
+        let last = (w.shortest, w.pairs[w.shortest]);
+        let (cu, cl) = candidates(ways, last.0, last.1);
+        let length = cu.arc + free_squared(&rel, (cu, cl)).sqrt() + cl.arc;
+        let early = self.taut_at(ways, (upper, lower), last, length, stiffness);
+        let found = search_pruned(ways, &rel, w);
+        let (length, p) = shortest_first(&rel, ways, w, &found, (last, early.length));
+        w.shortest = p;
+        if (p, w.pairs[p]) == last && length.to_bits() == early.length.to_bits() {
+            return early;
+        }
+        self.taut_at(ways, (upper, lower), (p, w.pairs[p]), length, stiffness)
+    }
+
+    /// [`Ribbon::taut`] through pair p's tangent points `pair`.
+    #[inline]
+    fn taut_at(
+        &self,
+        ways: &Ways,
+        (upper, lower): (&Pose, &Pose),
+        (p, pair): (usize, (usize, usize)),
+        length: f64,
+        stiffness: f64,
+    ) -> Span {
+        let (cu, cl) = candidates(ways, p, pair);
         self.taut(
             upper,
             lower,
@@ -215,7 +263,7 @@ impl Ribbon {
 const SLACK: f64 = 1e-9;
 
 /// Whether a free span of squared length `f2` is longer than `gap` (the
-/// slot's length less the wrapped lengths, > 0) by more than [`SLACK`]:
+/// slot's length less the wrapped lengths, ≥ 0) by more than [`SLACK`]:
 /// then the rounded whole length is above the slot's, as its square
 /// root would have shown (rounding moves lengths of a few s by ~10⁻¹⁵).
 #[inline]
@@ -227,23 +275,130 @@ fn surely_longer(f2: f64, gap: f64) -> bool {
 /// No fixed point (of [`twin`]'s record): no candidate has this index.
 const NOT_FIXED: (usize, usize) = (usize::MAX, usize::MAX);
 
-/// The length through tangent candidates `(cu, cl)` (upper, lower) where
-/// shorter than `slot` (else `None`, mostly without a square root).
+/// The candidates of pair p's tangent points `(ju, jl)`: upper way
+/// p / 2, lower way p % 2.
 #[inline]
-fn shorter(rel: &Relative, (cu, cl): (&Candidate, &Candidate), slot: f64) -> Option<f64> {
+fn candidates(ways: &Ways, p: usize, (ju, jl): (usize, usize)) -> (&Candidate, &Candidate) {
+    (&ways.upper[p / 2].c[ju], &ways.lower[p % 2].c[jl])
+}
+
+/// Each pair of ways round's tangent points searched warm from `w`'s
+/// (updated), a pair that has an earlier pair's taken from it unsearched
+/// ([`twin`]): whether each pair searched found a common tangent, `None`
+/// for a twin (its length an earlier pair's: never the first of the
+/// shortest).
+#[inline]
+fn search_pruned(ways: &Ways, rel: &Relative, w: &mut Warm) -> [Option<bool>; 4] {
+    // Each pair's tangent points where a fixed point of its search.
+    let mut fixed = [NOT_FIXED; 4];
+    let mut found = [None; 4];
+    for p in 0..4 {
+        if let Some(pair) = twin(&fixed, p, w.pairs[p]) {
+            fixed[p] = pair;
+            continue;
+        }
+        let t = warm_tangent(&ways.upper[p / 2], &ways.lower[p % 2], rel, w.pairs[p]);
+        w.pairs[p] = t.pair;
+        if t.fixed {
+            fixed[p] = t.pair;
+        }
+        found[p] = Some(t.found);
+    }
+    found
+}
+
+/// The shortest pair of ways round through `w`'s tangent points (the
+/// first of equal lengths) and its length, as [`in_turn`] finds it: the
+/// last shortest pair measured first (where it has a common tangent;
+/// else the first that has one), then the others against it. `last`:
+/// the last shortest pair, its tangent points then, and the length
+/// through them, already measured.
+#[inline]
+fn shortest_first(
+    rel: &Relative,
+    ways: &Ways,
+    w: &Warm,
+    found: &[Option<bool>; 4],
+    (last, measured): ((usize, (usize, usize)), f64),
+) -> (f64, usize) {
+    let has_tangent = |p: usize| found[p] == Some(true);
+    let first = Some(last.0)
+        .filter(|&p| has_tangent(p))
+        .or_else(|| (0..4).find(|&p| has_tangent(p)));
+    let length = first.and_then(|p| {
+        if (p, w.pairs[p]) == last {
+            return (measured < f64::INFINITY).then_some(measured);
+        }
+        comes_before(rel, candidates(ways, p, w.pairs[p]), f64::INFINITY, false)
+    });
+    // No common tangent, or no finite length: the pairs in turn.
+    let (Some(first), Some(length)) = (first, length) else {
+        return in_turn(rel, ways, &w.pairs, found);
+    };
+    let mut best = (length, first);
+    for p in (0..4).filter(|&p| p != first && has_tangent(p)) {
+        let c = candidates(ways, p, w.pairs[p]);
+        if let Some(l) = comes_before(rel, c, best.0, p < best.1) {
+            best = (l, p);
+        }
+    }
+    best
+}
+
+/// The squared free span between tangent candidates `(cu, cl)`, in the
+/// upper block's frame.
+#[inline]
+fn free_squared(rel: &Relative, (cu, cl): (&Candidate, &Candidate)) -> f64 {
+    let e = rel.to_upper(cl.point);
+    (e[0] - cu.point[0]).powi(2) + (e[1] - cu.point[1]).powi(2)
+}
+
+/// The shortest of the pairs of ways round through tangent points
+/// `pairs` measured in turn (the first of equal lengths), among those
+/// with a common tangent (`found` `Some(true)`), where none has one
+/// (never seen) among the last guesses (`Some(false)`); a pair `None`
+/// is not measured. `(∞, 0)` where none has a length below ∞.
+fn in_turn(
+    rel: &Relative,
+    ways: &Ways,
+    pairs: &[(usize, usize); 4],
+    found: &[Option<bool>; 4],
+) -> (f64, usize) {
+    let mut best = (f64::INFINITY, 0);
+    let mut guess = best;
+    for (p, &pair) in pairs.iter().enumerate() {
+        let Some(f) = found[p] else { continue };
+        let slot = if f { &mut best } else { &mut guess };
+        if let Some(length) = comes_before(rel, candidates(ways, p, pair), slot.0, false) {
+            *slot = (length, p);
+        }
+    }
+    if best.0.is_finite() { best } else { guess }
+}
+
+/// The length through tangent candidates `(cu, cl)` (upper, lower)
+/// where it comes before `slot`'s, the shortest so far: shorter, or
+/// as long where its pair comes `earlier` (the first of equal lengths is
+/// the one kept); else `None`, mostly without a square root.
+#[inline]
+fn comes_before(
+    rel: &Relative,
+    (cu, cl): (&Candidate, &Candidate),
+    slot: f64,
+    earlier: bool,
+) -> Option<f64> {
     // The free span is ≥ 0 and rounded addition is monotone: where the
-    // wrapped lengths alone reach the slot's, the whole length does.
+    // wrapped lengths alone pass the slot's, the whole length does.
     let arcs = cu.arc + cl.arc;
-    if arcs >= slot {
+    if arcs > slot || (arcs == slot && !earlier) {
         return None;
     }
-    let e = rel.to_upper(cl.point);
-    let f2 = (e[0] - cu.point[0]).powi(2) + (e[1] - cu.point[1]).powi(2);
+    let f2 = free_squared(rel, (cu, cl));
     if surely_longer(f2, slot - arcs) {
         return None;
     }
     let length = cu.arc + f2.sqrt() + cl.arc;
-    (length < slot).then_some(length)
+    (length < slot || (earlier && length == slot)).then_some(length)
 }
 
 /// The tangent points pair p of [`Ribbon::span_from`] (upper way p / 2,
@@ -340,7 +495,7 @@ impl Ribbons {
     pub fn find_spans(&self, poses: &[Pose], out: &mut Vec<Span>, warm: &mut Vec<Warm>) {
         out.clear();
         let junctions = poses.len().saturating_sub(1);
-        warm.resize(2 * junctions, [(0, 0); 4]);
+        warm.resize(2 * junctions, Warm::default());
         let mut last = warm.iter_mut();
         for w in poses.windows(2) {
             for (r, ways) in self.ribbons.iter().zip(&self.ways) {

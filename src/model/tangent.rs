@@ -281,10 +281,15 @@ fn pair_length(wu: &Way, wl: &Way, rel: &Relative, (ju, jl): (usize, usize)) -> 
     cu.arc + free + cl.arc
 }
 
-/// The tangent points (upper, lower) of each of a ribbon's four pairs of
-/// ways round (upper way a, lower way b at 2a + b) at the last
-/// evaluation: where [`warm_tangent`] starts.
-pub type Warm = [(usize, usize); 4];
+/// A ribbon's search at the last evaluation: the tangent points (upper,
+/// lower) of each of its four pairs of ways round (upper way a, lower way
+/// b at 2a + b), where [`warm_tangent`] starts, and which pair was the
+/// shortest, measured first (`ribbons`).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Warm {
+    pub(super) pairs: [(usize, usize); 4],
+    pub(super) shortest: usize,
+}
 
 /// [`common_tangent`] started from the last evaluation's tangent points
 /// `last`: where they are still the common tangent (each the first

@@ -67,6 +67,9 @@ pub struct Rhs<'a> {
     /// The rates Ẇ and Ḋ of the energy budget at the last evaluation
     /// (`sim::budget`), where the run keeps them ([`Rhs::keep_powers`]).
     powers: Option<Quadrature>,
+    /// Each block's drag force at the last evaluation with drag, made
+    /// once for its acceleration and the budget's powers.
+    drag: Vec<[f64; 3]>,
 }
 
 impl<'a> Rhs<'a> {
@@ -100,6 +103,7 @@ impl<'a> Rhs<'a> {
             spans: Vec::new(),
             warm: Vec::new(),
             powers: None,
+            drag: Vec::new(),
         }
     }
 
@@ -283,18 +287,25 @@ impl<'a> Rhs<'a> {
             lost += d;
         }
         let j = ladder.params.inertia + t.added_inertia;
+        let keep = self.powers.is_some();
+        self.drag.resize(ladder.n(), [0.0; 3]);
         for i in 0..ladder.n() {
             let k = 3 * i;
-            if self.inv_mass[k] == 0.0 {
+            let free = self.inv_mass[k] != 0.0;
+            let vi = [v[k], v[k + 1], v[k + 2]];
+            let frame = self.frames.get(i);
+            // The budget's powers read every block's drag, the prescribed
+            // block's too.
+            if t.drag != 0.0 && (free || keep) {
+                self.drag[i] = media::drag_force_framed(t.drag, frame.1, vi);
+            }
+            if !free {
                 acc[k..k + 3].fill(0.0);
                 continue;
             }
-            let vi = [v[k], v[k + 1], v[k + 2]];
             let mut qi = [self.force[k], self.force[k + 1], self.force[k + 2]];
-            let frame = self.frames.get(i);
             if t.drag != 0.0 {
-                let d = media::drag_force_framed(t.drag, frame.1, vi);
-                for (a, b) in qi.iter_mut().zip(d) {
+                for (a, b) in qi.iter_mut().zip(self.drag[i]) {
                     *a += b;
                 }
             }
@@ -324,7 +335,8 @@ impl<'a> Rhs<'a> {
     /// its generalised forces before drag (`force`), `lost` the power the
     /// dashpots, contacts and pin friction dissipate: Ẇ = −θ̇₁ Q_θ₁
     /// (block 1's centre is clamped; Q with its drag), Ḋ = `lost` plus
-    /// linear damping's and drag's power over every block.
+    /// linear damping's and drag's power over every block (the drag
+    /// forces `drag` the accelerations were made of).
     #[inline(never)]
     fn stage_powers(&mut self, v: &[f64], lost: f64) {
         let t = self.terms;
@@ -340,7 +352,8 @@ impl<'a> Rhs<'a> {
             let vi = [v[k], v[k + 1], v[k + 2]];
             let mut qi = [self.force[k], self.force[k + 1], self.force[k + 2]];
             if t.drag != 0.0 {
-                let d = media::drag_force_framed(t.drag, self.frames.get(i).1, vi);
+                // The drag force the acceleration took, made once.
+                let d = self.drag[i];
                 dissipated -= dot(&vi, &d);
                 for (a, b) in qi.iter_mut().zip(d) {
                     *a += b;
