@@ -94,7 +94,7 @@ pub fn as_built(chain: &RingChain) -> Vec<Body> {
 pub fn assemble(chain: &RingChain, bodies: Vec<Body>, tapes: bool) -> Result<System> {
     let held = bodies[chain.held];
     let mut turn = chain.turn;
-    if chain.release {
+    if chain.release || chain.alternate.is_some() {
         turn.angle = 0.0;
     }
     let hand = Hand {

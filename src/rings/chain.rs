@@ -68,6 +68,13 @@ pub struct RingChain {
     /// [`super::start`]). Default none: the chain as built.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub leaning: Option<super::start::Leaning>,
+    /// The alternating hand: instead of turning the held ring, the hand
+    /// passes the chain from one strand's top ring to the other's, again
+    /// and again (`alternate = { start = 0.3, period = 0.6, count = 4 }`,
+    /// its keys in [`super::alternate`]; the paper's "retrieving a top
+    /// ring of one of two strands alternately"). Default none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub alternate: Option<super::alternate::Alternate>,
 }
 
 /// What a tape does to the two rings it joins.
@@ -129,6 +136,7 @@ impl Default for RingChain {
             dt: 0.0,
             guard_every: 20,
             leaning: None,
+            alternate: None,
         }
     }
 }
@@ -239,6 +247,7 @@ impl RingChain {
         if let Some(l) = &self.leaning {
             l.validated()?;
         }
+        self.check_alternate()?;
         Ok(self)
     }
 
@@ -256,6 +265,34 @@ impl RingChain {
                 "rings: turn.angle must be within ±720° and turn.azimuth a number, got {} and {}",
                 t.angle, t.azimuth
             )));
+        }
+        Ok(())
+    }
+
+    /// Refuses what the alternating hand cannot do: a value out of its
+    /// keys' ranges, a second hand (`release`), or a chain that is not the
+    /// double chain (ring k linked with k + 1 and k + 2), whose two strands
+    /// are the even and the odd rings.
+    fn check_alternate(&self) -> Result<()> {
+        let Some(a) = &self.alternate else {
+            return Ok(());
+        };
+        a.validated()?;
+        if self.release {
+            return Err(Error::bad_input(
+                "rings: alternate and release = true are two hands: give one".to_string(),
+            ));
+        }
+        let double = RingChain {
+            links: None,
+            ..self.clone()
+        };
+        if self.linked_pairs() != double.linked_pairs() {
+            return Err(Error::bad_input(
+                "rings: alternate passes the hand between the two strands of the double chain \
+                 (ring k linked with k + 1 and k + 2), and these links are not it"
+                    .to_string(),
+            ));
         }
         Ok(())
     }

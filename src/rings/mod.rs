@@ -3,7 +3,7 @@
 //! solitary wave down one strand, clearest when the partner strand is
 //! held by tapes. A system of its own beside the ladder's `sim`: rigid
 //! tori in 3D ([`body`]), their topology and the hand as input
-//! ([`chain`], [`hand`]), contact between tubes of our own ([`contact`];
+//! ([`chain`], [`hand`], [`alternate`]), contact between tubes of our own ([`contact`];
 //! docs/rings.md says why not an engine, and [`warm`], its search
 //! warm-started from the previous step), the linking guard ([`guard`]),
 //! the step ([`system`]), the observables ([`observe`]) and the chain's
@@ -12,6 +12,7 @@
 //! Floors: `rings` knows only `error` below it; `render` draws its
 //! states from plain poses, and `scenes` brings them together.
 
+pub mod alternate;
 pub mod body;
 pub mod build;
 pub mod chain;

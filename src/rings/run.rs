@@ -210,7 +210,8 @@ fn finish(
     settled: Option<Settled>,
 ) -> RingRun {
     let flips = tracker.flips.clone();
-    let waves = observe::waves(&flips, system.n(), chain.held, chain.turn.start);
+    let after = chain.alternate.map_or(chain.turn.start, |a| a.start);
+    let waves = observe::waves(&flips, system.n(), chain.held, after);
     RingRun {
         samples: std::mem::take(&mut taken.samples),
         flips,

@@ -69,6 +69,7 @@ fn speed(sys: &System, k: usize, rot: &M3) -> f64 {
 /// is at rest; then zeroes its motion, its clock and its counters.
 pub fn settle(sys: &mut System) -> Result<Settled> {
     let (turn, release) = (sys.hand.turn, sys.chain.release);
+    let alternate = sys.chain.alternate.take();
     sys.hand.turn.angle = 0.0;
     sys.chain.release = false;
     let keep = (-RATE * sys.dt).exp();
@@ -113,6 +114,7 @@ pub fn settle(sys: &mut System) -> Result<Settled> {
     }
     sys.hand.turn = turn;
     sys.chain.release = release;
+    sys.chain.alternate = alternate;
     sys.t = 0.0;
     Ok(done)
 }

@@ -10,6 +10,7 @@
 //! Pairs are visited in index order and forces summed in that order, so
 //! a run is deterministic and the mirrored chain its exact mirror image.
 
+use super::alternate;
 use super::body::{Body, Inertia};
 use super::chain::{G, RingChain};
 use super::contact::{self, Circle, Law, SAMPLES, Touch};
@@ -27,6 +28,20 @@ pub struct Pin {
     pub j: usize,
     pub a: V3,
     pub b: V3,
+}
+
+/// One pass of the hand from the ring it held to another.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pass {
+    /// When, s (the first step at or after the time asked).
+    pub t: f64,
+    /// The ring let go.
+    pub from: usize,
+    /// The ring taken.
+    pub ring: usize,
+    /// The kinetic energy of the ring taken, which the hand takes away
+    /// by stopping it, J.
+    pub kinetic: f64,
 }
 
 /// Counters of a run.
@@ -78,8 +93,11 @@ pub struct System {
     pub bodies: Vec<Body>,
     pub hand: Hand,
     /// The ring the hand holds now (`chain.held`, then held + 1 once a
-    /// `release` has passed the chain).
+    /// `release` has passed the chain, or the ring the last pass of
+    /// `alternate` took).
     pub held: usize,
+    /// The hand's passes so far (`release`, `alternate`), in order.
+    pub passes: Vec<Pass>,
     pub t: f64,
     pub dt: f64,
     /// The contact search.
@@ -138,6 +156,7 @@ impl System {
             bodies,
             hand,
             held: chain_held,
+            passes: Vec::new(),
             t: 0.0,
             dt,
             search: Search::default(),
@@ -373,18 +392,39 @@ impl System {
     }
 
     /// With `release`, at `turn.start` the hand takes ring held + 1 where
-    /// it is (stopped) and lets the held ring go.
+    /// it is (stopped) and lets the held ring go. With `alternate`, at
+    /// each of its times the hand lets the held ring go and takes the top
+    /// ring of the other strand where it is (stopped).
     fn pass_hand(&mut self) {
         if self.chain.release && self.held == self.chain.held && self.t >= self.chain.turn.start {
-            let k = self.held + 1;
-            let b = self.bodies[k];
-            self.hand.grip = Some(Body {
-                v: [0.0; 3],
-                l: [0.0; 3],
-                ..b
-            });
-            self.held = k;
+            self.take(self.held + 1);
+        } else if let Some(a) = self.chain.alternate
+            && self.passes.len() < a.count
+            && self.t >= a.time(self.passes.len())
+        {
+            let other = 1 - RingChain::strand(self.held);
+            self.take(alternate::top_ring(&self.bodies, other));
         }
+    }
+
+    /// The hand lets the held ring go (at rest, as the hand held it) and
+    /// holds ring k where it is, stopped: its pose frozen, its motion
+    /// taken away by the hand.
+    fn take(&mut self, k: usize) {
+        let b = self.bodies[k];
+        let kinetic = b.kinetic(&b.q.matrix(), &self.inertia);
+        self.hand.grip = Some(Body {
+            v: [0.0; 3],
+            l: [0.0; 3],
+            ..b
+        });
+        self.passes.push(Pass {
+            t: self.t,
+            from: self.held,
+            ring: k,
+            kinetic,
+        });
+        self.held = k;
     }
 
     fn place_held(&mut self) {

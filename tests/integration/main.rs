@@ -57,6 +57,7 @@ mod reliability;
 mod render;
 mod ribbons;
 mod rings;
+mod rings_alternate;
 mod rings_captions;
 mod rings_modes;
 mod rings_settle;
