@@ -30,8 +30,9 @@ pub struct Pin {
     pub b: V3,
 }
 
-/// One pass of the hand from the ring it held to another.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// One pass of the hand from the ring it held to another (a ring
+/// scene's data file lists them as `rings.passes`).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Pass {
     /// When, s (the first step at or after the time asked).
     pub t: f64,

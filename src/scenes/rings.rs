@@ -46,6 +46,12 @@ pub struct RingsData<'a> {
     /// speed at rest); absent for the chain as built.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub settled: Option<rings::settle::Settled>,
+    /// Every pass of the hand from the ring it held to another
+    /// (`release`, `alternate`: when, the ring let go, the ring taken and
+    /// the kinetic energy the hand took by stopping it, J); absent when
+    /// the hand keeps its ring.
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    pub passes: &'a [rings::system::Pass],
 }
 
 impl<'a> RingsData<'a> {
@@ -66,6 +72,7 @@ impl<'a> RingsData<'a> {
             waves: &run.waves,
             energy: run.samples.iter().map(|s| [s.t, s.energy]).collect(),
             settled: run.settled,
+            passes: &run.system.passes,
         }
     }
 }

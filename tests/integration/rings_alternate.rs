@@ -181,7 +181,8 @@ fn render(dir: &TempDir, body: &str) -> std::process::Output {
 }
 
 /// A scene file asks for the alternating hand (and its data file records
-/// the key in the scene); a value out of its key's range, the key with
+/// the key in the scene and each pass: at its time, from the ring held to
+/// a ring of the other strand); a value out of its key's range, the key with
 /// `release`, an unknown key of it, or links that are not the double
 /// chain, are one line on stderr and exit 2.
 #[test]
@@ -197,6 +198,23 @@ fn the_alternating_hand_is_a_key_and_a_bad_value_is_refused() {
     let json: serde_json::Value = serde_json::from_slice(&json).unwrap();
     let asked = &json["scene"]["rings"]["alternate"];
     assert_eq!(asked["count"], 2, "{asked}");
+    let passes = json["rings"]["passes"].as_array().unwrap();
+    assert_eq!(passes.len(), 2, "{passes:?}");
+    let dt = json["rings"]["dt"].as_f64().unwrap();
+    let mut held = 0;
+    for (i, p) in passes.iter().enumerate() {
+        let t = p["t"].as_f64().unwrap();
+        let want = 0.1 + 0.1 * i as f64;
+        assert!(
+            t >= want - 1e-9 && t < want + dt + 1e-9,
+            "pass {i} at {t} s"
+        );
+        let (from, ring) = (p["from"].as_u64().unwrap(), p["ring"].as_u64().unwrap());
+        assert_eq!(from, held, "pass {i} lets go of the ring held");
+        assert_ne!(from % 2, ring % 2, "pass {i} takes the other strand's ring");
+        assert!(p["kinetic"].as_f64().unwrap() >= 0.0);
+        held = ring;
+    }
     let dir = TempDir::new("rings-alternate-bad");
     for (what, body, needle) in [
         (
