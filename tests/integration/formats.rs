@@ -41,7 +41,7 @@ fn figures() -> &'static [(String, Picture)] {
                 (e.scene.stem(), p)
             })
             .collect();
-        assert_eq!(all.len(), 18, "every figure of the catalogue");
+        assert_eq!(all.len(), 19, "every figure of the catalogue");
         all
     })
 }
