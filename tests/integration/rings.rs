@@ -441,8 +441,9 @@ fn the_taped_chain_makes_the_clearer_wave() {
     );
 }
 
-/// FNV-1a over the bits of every ring's state.
-fn fingerprint(bodies: &[rings::body::Body]) -> u64 {
+/// FNV-1a over the bits of every ring's state (also the alternating
+/// hand's tests', `rings_alternate.rs`).
+pub fn fingerprint(bodies: &[rings::body::Body]) -> u64 {
     let mut h = 0xcbf2_9ce4_8422_2325_u64;
     for b in bodies {
         let q = b.q.as_array();

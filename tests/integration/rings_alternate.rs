@@ -3,24 +3,11 @@
 //! docs/rings.md, "Retrieving the top rings alternately").
 
 use crate::common::tempdir::TempDir;
+use crate::rings::fingerprint;
 use jacobs_ladder::rings::alternate::Alternate;
 use jacobs_ladder::rings::math;
 use jacobs_ladder::rings::{self, RingChain, build};
 use std::process::Command;
-
-/// FNV-1a over the bits of every ring's state.
-fn fingerprint(bodies: &[rings::body::Body]) -> u64 {
-    let mut h = 0xcbf2_9ce4_8422_2325_u64;
-    for b in bodies {
-        let q = b.q.as_array();
-        for c in b.x.iter().chain(&b.v).chain(&q).chain(&b.l) {
-            for byte in c.to_bits().to_le_bytes() {
-                h = (h ^ byte as u64).wrapping_mul(0x0100_0000_01b3);
-            }
-        }
-    }
-    h
-}
 
 /// The chain's state after `t_end`, stepped by hand.
 fn stepped(chain: &RingChain) -> Vec<rings::body::Body> {
