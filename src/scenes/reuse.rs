@@ -26,8 +26,9 @@ pub enum Stop {
 /// ended by `stop`, as one string: the Debug text of the scene's model,
 /// drive, run (window, integrator, step, tolerance), apparatus, ring
 /// chain and caps (Rust writes every f64 so that it reads back to the
-/// same bits), the samples' bits (a fixed step lands on every sample
-/// time, so other samples give other steps and other bits) and the stop
+/// same bits), the samples' bits (a step lands on every sample time but
+/// where blocks touch, so other samples give other steps and other bits)
+/// and the stop
 /// rule. The scene is taken apart field by field, so that a field added
 /// to `Scene` must be placed here (in the key, or among the words and
 /// pictures that no run reads) before the program compiles.

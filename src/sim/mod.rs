@@ -3,6 +3,7 @@
 
 pub mod auto;
 pub mod batch;
+mod between;
 pub mod budget;
 pub mod chain;
 pub mod cost;
@@ -17,6 +18,7 @@ pub mod protocol;
 pub mod relax;
 pub mod rhs;
 pub mod run_options;
+mod samples;
 mod simd;
 pub mod speed;
 pub mod step_bounds;
@@ -42,6 +44,7 @@ use crate::error::{Error, Result, num};
 use crate::limits::{Limits, Resource};
 use crate::model::{Ladder, Params};
 use observables::ArrivalDetector;
+use samples::{emit_due, sorted_samples, stop_times};
 use waves::WaveTracker;
 
 /// The paper's drive time T_d = 1000 τ (10^5 steps of 0.01), the
@@ -463,7 +466,10 @@ pub fn run_streaming(
     let every_step = steps_one_by_one(scenario, options);
     // The cap in this path's own steps (`cost::weight`).
     let max_steps = limits.block_steps / (scenario.ladder.n() as f64 * cost.weight);
-    let stops = stop_times(&samples, &scenario.protocol, scenario.t_end);
+    // Samples between steps: the stops are the drive's corners and t_end.
+    let between = between::wanted(scenario, options);
+    let stop_at_samples: &[f64] = if between { &[] } else { &samples };
+    let stops = stop_times(stop_at_samples, &scenario.protocol, scenario.t_end);
     let ladder = &scenario.ladder;
     let mut rhs = Rhs::new(ladder, &scenario.protocol, &scenario.initial.q);
     let mut st = scenario.initial.clone();
@@ -486,6 +492,7 @@ pub fn run_streaming(
     let mut t = 0.0;
     let mut next_sample = 0;
     let mut dissipated = Dissipated::new(ladder, options.dissipation, &st);
+    let mut dense = between.then(|| between::Between::new(&st));
     // The stop rule, asked at every check and at every stop time.
     let stop_here = |t, st: &State, arrivals: &ArrivalDetector, waves: &WaveTracker| {
         (options.stop)(&StopView {
@@ -500,17 +507,24 @@ pub fn run_streaming(
     emit_due(&samples, &mut next_sample, t, &st, dissipated.total, sink)?;
     'run: for &stop_at in &stops {
         while t < stop_at {
-            let budget = if every_step || impacts.is_some() {
+            let budget = if every_step || impacts.is_some() || dense.is_some() {
                 1
             } else {
                 check_every - steps % check_every
             };
+            if let Some(d) = dense.as_mut() {
+                d.start(t, &st, dissipated.total);
+            }
             let (t_new, taken) =
                 integrator.advance_many(&mut rhs, &mut st, (t, stop_at), budget, &mut arrivals)?;
             if taken > 0 && t_new <= t {
                 return Err(stalled(t, &config));
             }
             dissipated.step(&st, t_new - t);
+            if let Some(d) = dense.as_mut() {
+                let now = (t_new, &st, dissipated.total);
+                d.emit((&samples, &mut next_sample), now, &rhs, sink)?;
+            }
             if let Some(w) = impacts.as_mut() {
                 w.observe(t_new, &st.q, &st.v);
             }
@@ -642,55 +656,4 @@ fn over_cap(
             cost::weighed(path, value)
         ),
     })
-}
-
-/// Hands `sink` the state for every sample time not after `t` not yet
-/// handed over.
-fn emit_due(
-    samples: &[f64],
-    next: &mut usize,
-    t: f64,
-    st: &State,
-    dissipated: Option<f64>,
-    sink: &mut dyn FnMut(&Sample) -> Result<()>,
-) -> Result<()> {
-    while *next < samples.len() && samples[*next] <= t {
-        sink(&Sample {
-            t: samples[*next],
-            q: &st.q,
-            v: &st.v,
-            dissipated,
-        })?;
-        *next += 1;
-    }
-    Ok(())
-}
-
-/// Sample times sorted and deduplicated; each must lie in [0, t_end].
-fn sorted_samples(sample_times: &[f64], t_end: f64) -> Result<Vec<f64>> {
-    if let Some(bad) = sample_times
-        .iter()
-        .find(|t| !(t.is_finite() && **t >= 0.0 && **t <= t_end))
-    {
-        return Err(Error::bad_input(format!(
-            "sample time {bad} lies outside [0, t_end = {t_end}]"
-        )));
-    }
-    let mut s = sample_times.to_vec();
-    s.sort_by(f64::total_cmp);
-    s.dedup();
-    Ok(s)
-}
-
-/// Every time the integrator must land on: samples, drive corners, t_end.
-fn stop_times(samples: &[f64], protocol: &Protocol, t_end: f64) -> Vec<f64> {
-    let mut stops: Vec<f64> = samples.to_vec();
-    if let Some(d) = protocol.drive() {
-        stops.extend(d.corners().filter(|&c| c > 0.0 && c < t_end));
-    }
-    stops.push(t_end);
-    stops.retain(|&t| t > 0.0);
-    stops.sort_by(f64::total_cmp);
-    stops.dedup();
-    stops
 }

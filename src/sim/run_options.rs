@@ -19,7 +19,8 @@ fn silent(_t: f64) {}
 /// Options of one run (`sim::run`, `sim::run_streaming`,
 /// `auto::simulate_verified`, `batch::simulate_many`, `window::auto_window`).
 /// None of them changes the trajectory, except `stop`, which may end it
-/// early, and `limits`, which may refuse it.
+/// early, `limits`, which may refuse it, and `samples_between_steps`,
+/// which takes the steps on a grid of their own.
 #[derive(Clone, Copy)]
 pub struct RunOptions<'a> {
     /// Which kernel takes symplectic Euler's and Verlet's steps. Default
@@ -60,6 +61,15 @@ pub struct RunOptions<'a> {
     /// Euler, RK4 on the portable path, dopri5). The trajectory is the
     /// same bit for bit either way.
     pub budget: Option<bool>,
+    /// Step on a grid the sample times do not cut (only the drive's
+    /// corners and t_end do) and take each sample from the two states
+    /// around it by cubic Hermite interpolation (`sim::between`), so that
+    /// the trajectory is the same whatever the run is sampled at; else a
+    /// step lands on every sample time. Default `None`: between steps
+    /// where blocks may touch (contact: the clatter is chaotic, and a step
+    /// landing on a frame's time changes it with the number of frames),
+    /// on them elsewhere. Takes the steps one per call.
+    pub samples_between_steps: Option<bool>,
 }
 
 impl Default for RunOptions<'static> {
@@ -72,6 +82,7 @@ impl Default for RunOptions<'static> {
             every_step: None,
             dissipation: false,
             budget: None,
+            samples_between_steps: None,
         }
     }
 }
@@ -119,6 +130,14 @@ impl<'a> RunOptions<'a> {
         }
     }
 
+    /// These options taking the samples between steps (or on them).
+    pub fn samples_between_steps(self, between: bool) -> Self {
+        Self {
+            samples_between_steps: Some(between),
+            ..self
+        }
+    }
+
     /// These options feeding the wave tracker after every step (or not).
     pub fn every_step(self, every_step: bool) -> Self {
         Self {
@@ -136,6 +155,7 @@ impl std::fmt::Debug for RunOptions<'_> {
             .field("every_step", &self.every_step)
             .field("dissipation", &self.dissipation)
             .field("budget", &self.budget)
+            .field("samples_between_steps", &self.samples_between_steps)
             .finish_non_exhaustive()
     }
 }

@@ -312,6 +312,72 @@ fn the_first_three_flips_hold_in_the_step_and_the_sampling() {
     }
 }
 
+/// Everything a run of the toy decides, as bits: arrivals, impacts, the
+/// final state and the step count.
+fn run_bits(traj: &Trajectory) -> Vec<u64> {
+    let mut bits: Vec<u64> = traj
+        .arrival_times
+        .iter()
+        .map(|t| t.map_or(u64::MAX, f64::to_bits))
+        .collect();
+    for i in traj.impacts.iter().flatten() {
+        bits.extend([i.t.to_bits(), i.speed.to_bits(), i.blocks[0] as u64]);
+    }
+    let end = &traj.final_state;
+    bits.extend(end.q.iter().chain(&end.v).map(|x| x.to_bits()));
+    bits.push(traj.steps);
+    bits
+}
+
+#[test]
+fn the_toys_run_is_the_same_at_any_number_of_frames() {
+    // The clatter is chaotic: a step landing on each frame's time made
+    // `movie toy` flip its last blocks in another order at 50 and at 200
+    // frames. Stepped on a grid of its own, frames taken between steps,
+    // the run is one, bit for bit, whatever it is sampled at.
+    let text = toy("flips = [{ start = 0.0, duration = 232.0 }]", 0.6);
+    let sc = parse(&text, "toy", "toy").unwrap().scenario().unwrap();
+    let frames = |k: usize| -> Vec<f64> {
+        (0..k)
+            .map(|i| sc.t_end * i as f64 / (k - 1) as f64)
+            .collect()
+    };
+    let reference = run_bits(&run(&text, &[]).unwrap());
+    for k in [50, 200, 1000] {
+        let traj = run(&text, &frames(k)).unwrap();
+        assert_eq!(traj.times.len(), k);
+        assert!(run_bits(&traj) == reference, "{k} frames moved the run");
+    }
+}
+
+#[test]
+fn a_frame_between_steps_is_the_state_a_step_landing_on_it_gives() {
+    // On a run that is not chaotic (the paper's ladder, its flip under
+    // way), frames taken between the steps by cubic Hermite interpolation
+    // are the states of a run that lands a step on each, to the
+    // interpolation's error (fourth order in the step) and the steps'
+    // (the two runs step on different grids).
+    let params = jacobs_ladder::model::Params::paper(60.0).unwrap();
+    let sc = Scenario::single_flip(params, 1000.0, 300.0).unwrap();
+    let samples: Vec<f64> = (0..=29).map(|i| 10.0 * i as f64 + 0.0371).collect();
+    let cfg = IntegratorConfig::fixed(IntegratorKind::Rk4, 0.1);
+    let runs = [true, false].map(|between| {
+        let options = sim::RunOptions::default().samples_between_steps(between);
+        sim::run(&sc, &samples, &cfg, &options).unwrap()
+    });
+    let largest = |a: &[Vec<f64>], b: &[Vec<f64>]| {
+        a.iter().zip(b).fold(0.0f64, |d, (a, b)| {
+            a.iter().zip(b).fold(d, |d, (x, y)| d.max((x - y).abs()))
+        })
+    };
+    let dq = largest(&runs[0].states, &runs[1].states);
+    let dv = largest(&runs[0].velocities, &runs[1].velocities);
+    println!("largest difference: q {dq:.2e} s, v {dv:.2e} s/τ");
+    assert_eq!(runs[0].times, runs[1].times);
+    assert!(dq < 1e-9 && dv < 1e-8, "q {dq:e}, v {dv:e}");
+    assert!(dq > 0.0, "the two runs took the same steps");
+}
+
 #[test]
 fn the_warm_tangent_search_runs_the_toy_as_the_cold_one_bit_for_bit() {
     // The toy as built-in (the hand's turn, the clatter: corners pressed
