@@ -7,7 +7,10 @@
 //! other strand where it is then; every `period` after, it lets the ring
 //! it holds go and takes the top ring of the other strand again, `count`
 //! passes in all. The top ring of a strand is the one whose centre is
-//! highest at that moment ([`top_ring`]), decided from the state. Each
+//! highest at that moment ([`top_ring`]), decided from the state. With
+//! `lift` the hand carries each ring it takes up to where it held the
+//! ring it let go, over `lift` seconds (docs/rings.md, "Retrieving with
+//! a lifting hand"; the motion in [`super::hand::Lift`]). Each
 //! key is declared once, with its name, unit, default, range and
 //! meaning, from which the check and its message are made.
 
@@ -47,8 +50,20 @@ pub const COUNT: Key = Key {
     doc: "How many passes the hand makes (the first at start, one every period after)",
 };
 
+/// How long the hand takes to lift the ring it has taken to where it
+/// held the ring it let go, s; 0: it holds the ring where it took it.
+pub const LIFT: Key = Key {
+    name: "lift",
+    unit: "s",
+    default: 0.0,
+    range: Range::Between(0.0, 60.0),
+    what: "seconds",
+    doc: "How long the hand takes to lift the ring it takes to where it held the ring it let go \
+          (0: it holds the ring where it took it); at most the period",
+};
+
 /// Every key, in the order of docs/rings.md.
-pub const KEYS: [Key; 3] = [START, PERIOD, COUNT];
+pub const KEYS: [Key; 4] = [START, PERIOD, COUNT, LIFT];
 
 /// The alternating hand: `count` passes from one strand's top ring to the
 /// other's, at `start`, `start + period`, ...
@@ -61,6 +76,8 @@ pub struct Alternate {
     pub period: f64,
     /// [`COUNT`].
     pub count: usize,
+    /// [`LIFT`], s.
+    pub lift: f64,
 }
 
 impl Default for Alternate {
@@ -69,6 +86,7 @@ impl Default for Alternate {
             start: START.default,
             period: PERIOD.default,
             count: COUNT.default as usize,
+            lift: LIFT.default,
         }
     }
 }
@@ -79,13 +97,16 @@ impl Alternate {
         self.start + i as f64 * self.period
     }
 
-    /// Refuses a value out of its key's range with one line:
-    /// "rings: alternate.period must be seconds from 0.01 to 60, got 0".
+    /// Refuses a value out of its key's range with one line ("rings:
+    /// alternate.period must be seconds from 0.01 to 60, got 0"), and a
+    /// lift longer than the period (the ring must be up before the hand
+    /// lets it go).
     pub fn validated(&self) -> Result<&Self> {
         let values = [
             (START, self.start),
             (PERIOD, self.period),
             (COUNT, self.count as f64),
+            (LIFT, self.lift),
         ];
         for (key, x) in values {
             if !key.range.contains(x) {
@@ -97,6 +118,12 @@ impl Alternate {
                     key.range.max()
                 )));
             }
+        }
+        if self.lift > self.period {
+            return Err(Error::bad_input(format!(
+                "rings: alternate.{} must be at most alternate.{} ({} s), got {}",
+                LIFT.name, PERIOD.name, self.period, self.lift
+            )));
         }
         Ok(self)
     }
@@ -146,6 +173,27 @@ mod tests {
             ..Default::default()
         };
         assert!(nan.validated().is_err());
+        let long = Alternate {
+            lift: 0.7,
+            ..Default::default()
+        };
+        let msg = long.validated().unwrap_err().to_string();
+        assert_eq!(
+            msg,
+            "rings: alternate.lift must be at most alternate.period (0.6 s), got 0.7"
+        );
+        for bad in [-0.1, f64::NAN] {
+            let e = Alternate {
+                lift: bad,
+                ..Default::default()
+            };
+            assert!(e.validated().is_err(), "lift {bad}");
+        }
+        let full = Alternate {
+            lift: 0.6,
+            ..Default::default()
+        };
+        assert!(full.validated().is_ok(), "a lift as long as the period");
     }
 
     /// The top ring of a strand is the highest centre of its rings, the

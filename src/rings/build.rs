@@ -103,6 +103,7 @@ pub fn assemble(chain: &RingChain, bodies: Vec<Body>, tapes: bool) -> Result<Sys
         turn,
         mirror: chain.mirror,
         grip: None,
+        lift: None,
     };
     let bodies = if chain.mirror {
         bodies.iter().map(Body::mirrored).collect()

@@ -4,6 +4,9 @@
 //! with the smooth profile a(t) = angle · ½(1 − cos πs), s = (t − start)/
 //! duration in [0, 1]. The turn is computed in the chain's own frame and
 //! mirrored after, so the mirrored chain's hand is the exact mirror image.
+//! Once the hand has taken another ring (`release`, `alternate`) it holds
+//! that ring's pose as gripped, or, with `alternate.lift`, carries it
+//! along a straight line ([`Lift`]).
 
 use super::body::Body;
 use super::chain::Turn;
@@ -21,6 +24,47 @@ pub struct Hand {
     /// The pose the hand holds once it has taken the other strand's top
     /// ring (`release`), in the world frame as it was gripped.
     pub grip: Option<Body>,
+    /// The lift of the gripped ring (`alternate.lift`): its centre moves
+    /// as this says, its orientation stays as gripped. None: it stays
+    /// where it was gripped.
+    pub lift: Option<Lift>,
+}
+
+/// The hand's lift of the ring it has taken: its centre carried along
+/// the straight line from `from` (where it was taken) to `to` (where the
+/// hand held the ring it let go), from `t0` over `duration`, with the
+/// profile ½(1 − cos πs), s = (t − t0)/duration: zero speed at both
+/// ends. Every coordinate is `from + f·(to − from)` with f the same for
+/// all three, so the mirror image's lift is the exact mirror image.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lift {
+    /// Where the ring was taken (world frame), m.
+    pub from: V3,
+    /// Where it ends (world frame), m.
+    pub to: V3,
+    /// When the lift starts, s.
+    pub t0: f64,
+    /// How long it takes, s (more than 0).
+    pub duration: f64,
+}
+
+impl Lift {
+    /// The lifted ring's centre and velocity at `t`: `from` and rest
+    /// before `t0`, `to` exactly and rest from `t0 + duration` on.
+    pub fn at(&self, t: f64) -> (V3, V3) {
+        let s = (t - self.t0) / self.duration;
+        if s >= 1.0 {
+            return (self.to, [0.0; 3]);
+        }
+        if s <= 0.0 {
+            return (self.from, [0.0; 3]);
+        }
+        let pi = std::f64::consts::PI;
+        let (c, sin) = math::cos_sin(pi * s);
+        let d = math::sub(self.to, self.from);
+        let x = math::axpy(self.from, 0.5 * (1.0 - c), d);
+        (x, math::scale(d, 0.5 * pi * sin / self.duration))
+    }
 }
 
 impl Hand {
@@ -48,7 +92,13 @@ impl Hand {
     /// The held ring's state at `t`.
     pub fn body(&self, t: f64) -> Body {
         if let Some(b) = self.grip {
-            return b;
+            return match self.lift {
+                Some(lift) => {
+                    let (x, v) = lift.at(t);
+                    Body { x, v, ..b }
+                }
+                None => b,
+            };
         }
         let q = Quat::axis_angle(self.axis(), self.angle(t).0).mul(self.q0);
         let b = Body {

@@ -15,7 +15,7 @@ use super::body::{Body, Inertia};
 use super::chain::{G, RingChain};
 use super::contact::{self, Circle, Law, SAMPLES, Touch};
 use super::guard;
-use super::hand::Hand;
+use super::hand::{Hand, Lift};
 use super::math::{self, M3, V3};
 use super::warm;
 use crate::error::{Error, Result};
@@ -354,6 +354,13 @@ impl System {
         self.scratch = scratch;
     }
 
+    /// The force on the ring in the hand at the last evaluation (its
+    /// weight, its contacts and tapes), N: what the hand must balance,
+    /// so that the hand's power on it is (m a − this)·v.
+    pub fn held_force(&self) -> V3 {
+        self.force[self.held]
+    }
+
     /// The touches of the last evaluation of the forces (those the step
     /// used), in pair order.
     pub fn last_touches(&self) -> &[(usize, usize, Touch)] {
@@ -408,10 +415,18 @@ impl System {
         }
     }
 
-    /// The hand lets the held ring go (at rest, as the hand held it) and
-    /// holds ring k where it is, stopped: its pose frozen, its motion
-    /// taken away by the hand.
+    /// The hand lets the held ring go (as the hand holds it at this
+    /// step: at rest, unless a lift as long as the period has not quite
+    /// ended) and holds ring k where it is, stopped: its pose frozen, its
+    /// motion taken away by the hand. With `alternate.lift` the hand then
+    /// carries ring k to where it held the ring let go (the end of the
+    /// last lift, or the held ring's centre at the first pass).
     fn take(&mut self, k: usize) {
+        self.place_held();
+        let place = self
+            .hand
+            .lift
+            .map_or(self.bodies[self.held].x, |lift| lift.to);
         let b = self.bodies[k];
         let kinetic = b.kinetic(&b.q.matrix(), &self.inertia);
         self.hand.grip = Some(Body {
@@ -426,6 +441,13 @@ impl System {
             kinetic,
         });
         self.held = k;
+        let duration = self.chain.alternate.map_or(0.0, |a| a.lift);
+        self.hand.lift = (duration > 0.0).then_some(Lift {
+            from: b.x,
+            to: place,
+            t0: self.t,
+            duration,
+        });
     }
 
     fn place_held(&mut self) {
@@ -502,15 +524,18 @@ impl System {
         Ok(())
     }
 
-    /// Total energy, J: kinetic and potential of the free rings, elastic
-    /// energy of contacts and tapes (the held ring's is the hand's).
+    /// Total energy, J: kinetic and potential of every ring, the one in
+    /// the hand included (its weight's potential, and its kinetic energy
+    /// as the hand moves it: the lift's; the hand's turn is not counted,
+    /// its held ring's angular momentum being kept 0), so that a pass of
+    /// the hand from one ring to another moves no energy but the kinetic
+    /// energy of the ring it stops; and the elastic energy of contacts
+    /// and tapes.
     pub fn energy(&self) -> f64 {
         let rots: Vec<M3> = self.bodies.iter().map(|b| b.q.matrix()).collect();
         let mut e = 0.0;
         for (k, b) in self.bodies.iter().enumerate() {
-            if k != self.held {
-                e += b.kinetic(&rots[k], &self.inertia) + self.inertia.m * G * b.x[2];
-            }
+            e += b.kinetic(&rots[k], &self.inertia) + self.inertia.m * G * b.x[2];
         }
         for (_, _, touch) in self.touches(&rots) {
             e += self.law.energy(&touch);

@@ -47,6 +47,7 @@ fn alternating(period: f64, count: usize) -> RingChain {
             start: 0.1,
             period,
             count,
+            lift: 0.0,
         }),
         ..Default::default()
     }
@@ -128,6 +129,7 @@ fn the_ring_taken_is_the_highest_even_where_it_is_far_down_the_strand() {
                 start: 0.0,
                 period: 1.0,
                 count: 1,
+                lift: 0.0,
             }),
             ..Default::default()
         };
@@ -246,4 +248,161 @@ fn the_alternating_hand_is_a_key_and_a_bad_value_is_refused() {
 fn the_alternating_hand_keeps_its_trajectory_bit_for_bit() {
     let end = fingerprint(&stepped(&alternating(0.15, 3)));
     assert_eq!(end, 0x5b12_8f88_c25b_86f5, "{end:#x}");
+}
+
+/// A 12-ring chain whose hand passes between the strands from 0.1 s,
+/// every `period`, `count` times, lifting each ring it takes over `lift`
+/// to where it held the ring it let go (docs/rings.md, "Retrieving with
+/// a lifting hand").
+fn lifting(period: f64, count: usize, lift: f64) -> RingChain {
+    let mut chain = alternating(period, count);
+    chain.alternate.as_mut().unwrap().lift = lift;
+    chain
+}
+
+/// The lifting hand carries each ring it takes from where it took it
+/// (stopped) along the straight line to where it held the ring it let go,
+/// which is where it held ring 0 at the start: it ends there exactly,
+/// at rest, its orientation as taken, at the end of the lift, and stays
+/// there still until the next pass; on the way its centre stays on the
+/// line and moves along it, fastest (π/2 times the mean speed) at half
+/// the lift.
+#[test]
+fn the_lifted_ring_ends_at_the_previous_grip_at_rest() {
+    let lift = 0.05;
+    let chain = lifting(0.15, 3, lift);
+    let mut sys = build::build(&chain).unwrap();
+    let place = sys.bodies[chain.held].x;
+    let mut taken = None;
+    let mut peak: f64 = 0.0;
+    while sys.t < chain.t_end {
+        let before = sys.passes.len();
+        sys.step().unwrap();
+        if sys.passes.len() > before {
+            let b = sys.bodies[sys.held];
+            assert_eq!(b.v, [0.0; 3], "taken stopped");
+            taken = Some((sys.t, b));
+            peak = 0.0;
+            continue;
+        }
+        let Some((t0, from)) = taken else { continue };
+        let b = sys.bodies[sys.held];
+        assert_eq!((b.q, b.l), (from.q, [0.0; 3]), "orientation as taken");
+        let d = math::sub(place, from.x);
+        let (gone, speed) = (math::sub(b.x, from.x), math::norm(b.v));
+        if sys.t >= t0 + lift {
+            assert_eq!((b.x, b.v), (place, [0.0; 3]), "t = {}", sys.t);
+            let mean = math::norm(d) / lift;
+            let want = 0.5 * std::f64::consts::PI * mean;
+            assert!((peak - want).abs() < 1e-3 * want, "peak {peak}, {want}");
+            continue;
+        }
+        let along = math::dot(gone, d) / math::dot(d, d);
+        let off = math::norm(math::sub(gone, math::scale(d, along)));
+        assert!((0.0..=1.0).contains(&along) && off < 1e-12, "t = {}", sys.t);
+        assert!(math::norm(math::cross(b.v, d)) < 1e-9 * math::norm(d));
+        peak = peak.max(speed);
+    }
+    assert_eq!(sys.passes.len(), 3);
+    let far = math::norm(math::sub(place, taken.unwrap().1.x));
+    assert!(far > 5e-3, "each ring carried some way: {far} m");
+}
+
+/// The mirrored chain with the lifting hand is the mirror image bit for
+/// bit (every sample; the same rings taken at the same steps).
+#[test]
+fn the_lifting_mirror_chain_is_the_mirror_image_bit_for_bit() {
+    let chain = lifting(0.15, 4, 0.05);
+    let (a, b) = crate::rings::mirror_images(chain);
+    assert_eq!(a.system.passes, b.system.passes);
+    assert_eq!(a.system.passes.len(), 4, "{:?}", a.system.passes);
+}
+
+/// The energy counts the ring in the hand (its weight, and its motion in
+/// a lift), so a pass moves none of it but the kinetic energy of the
+/// ring the hand stops: across the step of each pass, the energy changes
+/// by no more than in the 100 steps before it (the penalty contacts'
+/// energy moves by up to 2·10⁻⁶ J a step there at the first pass, 5·10⁻⁵
+/// J at a later one), where leaving the ring in the hand out made it jump
+/// by m g Δz, Δz the height between the ring let go and the ring taken
+/// (3.6·10⁻⁴ J at the first pass, Δz = 19 mm).
+#[test]
+fn the_energy_does_not_jump_at_a_pass() {
+    for lift in [0.0, 0.05] {
+        let chain = lifting(0.15, 3, lift);
+        let mut sys = build::build(&chain).unwrap();
+        let mut e = sys.energy();
+        let mut steps = std::collections::VecDeque::new();
+        while sys.t < chain.t_end {
+            let before = sys.passes.len();
+            let z_from = sys.bodies[sys.held].x[2];
+            sys.step().unwrap();
+            let now = sys.energy();
+            if sys.passes.len() == before {
+                steps.push_back((now - e).abs());
+                if steps.len() > 100 {
+                    steps.pop_front();
+                }
+                e = now;
+                continue;
+            }
+            let quiet = steps.iter().copied().fold(0.0, f64::max);
+            let p = sys.passes[before];
+            let at_pass = (now - e + p.kinetic).abs();
+            let dz = z_from - sys.bodies[p.ring].x[2];
+            let jump = sys.inertia.m * jacobs_ladder::rings::chain::G * dz.abs();
+            assert!(
+                at_pass <= quiet,
+                "lift {lift}, {p:?}: at the pass {at_pass} J, the steps before up to {quiet} J"
+            );
+            if before == 0 {
+                assert!(10.0 * quiet < jump, "m g dz {jump} J seen: {quiet} J");
+            }
+            e = now;
+        }
+        assert_eq!(sys.passes.len(), 3);
+    }
+}
+
+/// A scene file asks for the lifting hand (its data file records the
+/// key); a negative or NaN lift, a lift longer than the period, or a lift
+/// without the alternating hand (a key of `[rings]` it is not) are one
+/// line on stderr and exit 2.
+#[test]
+fn the_lift_is_a_key_and_a_bad_value_is_refused() {
+    let good = TempDir::new("rings-lift-good");
+    let out = render(
+        &good,
+        "alternate = { start = 0.1, period = 0.1, count = 2, lift = 0.05 }",
+    );
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    let json = std::fs::read(good.join("figure-alternate.json")).unwrap();
+    let json: serde_json::Value = serde_json::from_slice(&json).unwrap();
+    assert_eq!(json["scene"]["rings"]["alternate"]["lift"], 0.05);
+    let dir = TempDir::new("rings-lift-bad");
+    for (what, body, needle) in [
+        (
+            "negative",
+            "alternate = { lift = -0.1 }",
+            "rings: alternate.lift must be seconds from 0 to 60, got -0.1",
+        ),
+        (
+            "nan",
+            "alternate = { lift = nan }",
+            "rings: alternate.lift must be seconds from 0 to 60, got NaN",
+        ),
+        (
+            "longer than the period",
+            "alternate = { period = 0.3, lift = 0.31 }",
+            "rings: alternate.lift must be at most alternate.period (0.3 s), got 0.31",
+        ),
+        ("without alternate", "lift = 0.1", "lift"),
+    ] {
+        let out = render(&dir, body);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{what}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{what}: {err}");
+        assert!(err.contains(needle), "{what}: {err}");
+    }
 }
