@@ -1,13 +1,13 @@
 //! Captions against the data files: each figure is drawn by the `ladder`
-//! binary as a user draws it, and every number its caption gives is one
-//! of the numbers listed here, each made from the figure's data file (or
-//! its scene); a number in a caption that no data accounts for fails the
-//! test, and so does a listed number the caption lacks. Captions name no
-//! marker shape (the legend does, and the palette decides them).
+//! binary as a user draws it (`ladder all`, the shared render of the
+//! catalogue: `common::catalogue_render`), and every number its caption
+//! gives is one of the numbers listed here, each made from the figure's
+//! data file (or its scene); a number in a caption that no data accounts
+//! for fails the test, and so does a listed number the caption lacks.
+//! Captions name no marker shape (the legend does, and the palette decides
+//! them).
 
 use serde_json::Value;
-
-use crate::common::tempdir::TempDir;
 
 /// The caption of the built-in scene `kind id`.
 fn caption(kind: jacobs_ladder::scene::Kind, id: &str) -> String {
@@ -23,15 +23,16 @@ fn figure_caption(id: &str) -> String {
     caption(jacobs_ladder::scene::Kind::Figure, id)
 }
 
-/// `ladder figure ID` drawn into a fresh folder: its data file.
+/// Figure `id`'s data file as `ladder` writes it: read from the shared
+/// render of the catalogue (`ladder all`, made once for every test that
+/// reads it) instead of a `ladder figure ID` of its own, which simulated
+/// the figure again (the chain-length sweep, the linkage's 18 runs, the
+/// ribbon tank: about 9 s of the captions' 10). The two data files differ
+/// only in what no caption reads: the command line, the files written
+/// and the formats asked (`settings`); compared whole for figure 4b by
+/// `timings::figure_4b_in_the_catalogue_is_figure_4b_alone`.
 pub fn figure_data(id: &str) -> Value {
-    let dir = TempDir::new(&format!("captions-{id}"));
-    let out = crate::common::ladder_cli(&["figure", id, "--out", dir.to_str().unwrap()]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let (dir, _) = crate::common::catalogue_render();
     let text = std::fs::read_to_string(dir.join(format!("figure-{id}.json"))).unwrap();
     serde_json::from_str(&text).unwrap()
 }

@@ -27,14 +27,22 @@ pub fn decode(bytes: &[u8]) -> GifFrames {
             .clone()
             .or_else(|| global.clone())
             .expect("a GIF frame has a palette");
-        for y in 0..f.height as usize {
-            for x in 0..f.width as usize {
-                let i = f.buffer[y * f.width as usize + x];
-                if Some(i) == f.transparent {
-                    continue;
+        // Row by row, each pixel's three bytes stored one by one: the
+        // integration tests compile at opt-level 0, where a slice copy per
+        // pixel cost about a second for a 200-frame movie.
+        let fw = f.width as usize;
+        let transparent = f.transparent.map_or(-1, i32::from);
+        for (y, row) in f.buffer.chunks_exact(fw.max(1)).enumerate() {
+            let line = &mut screen[3 * ((f.top as usize + y) * w + f.left as usize)..][..3 * fw];
+            let mut at = 0;
+            for &i in row {
+                if i32::from(i) != transparent {
+                    let c = 3 * i as usize;
+                    line[at] = pal[c];
+                    line[at + 1] = pal[c + 1];
+                    line[at + 2] = pal[c + 2];
                 }
-                let at = 3 * ((f.top as usize + y) * w + f.left as usize + x);
-                screen[at..at + 3].copy_from_slice(&pal[3 * i as usize..3 * i as usize + 3]);
+                at += 3;
             }
         }
         frames.push(screen.clone());
@@ -52,11 +60,16 @@ pub fn decode(bytes: &[u8]) -> GifFrames {
 /// 255² over the mean squared difference).
 pub fn psnr(a: &[u8], b: &[u8]) -> f64 {
     assert_eq!(a.len(), b.len());
-    let mse = a
-        .iter()
-        .zip(b)
-        .map(|(&x, &y)| (x as f64 - y as f64).powi(2))
-        .sum::<f64>()
-        / a.len() as f64;
+    // Summed in integers: every square and every partial sum is an
+    // integer under 2⁵³, so this is the sum of the squares in f64 exactly,
+    // and at the integration tests' opt-level 0 several times faster than
+    // an iterator chain over f64 (a 200-frame movie: 184 million terms).
+    let mut sum: u64 = 0;
+    for (&x, &y) in a.iter().zip(b) {
+        let d = u64::from(x.abs_diff(y));
+        sum += d * d;
+    }
+    assert!(sum < 1 << 53, "the sum of squares is exact in f64");
+    let mse = sum as f64 / a.len() as f64;
     10.0 * (255.0f64 * 255.0 / mse.max(1e-12)).log10()
 }
