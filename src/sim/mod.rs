@@ -512,7 +512,9 @@ pub fn run_streaming(
             } else {
                 check_every - steps % check_every
             };
-            if let Some(d) = dense.as_mut() {
+            // Only a step that may reach a sample needs its start kept.
+            let due = samples.get(next_sample).is_some_and(|&s| s <= stop_at);
+            if let Some(d) = dense.as_mut().filter(|_| due) {
                 d.start(t, &st, dissipated.total);
             }
             let (t_new, taken) =
@@ -521,7 +523,7 @@ pub fn run_streaming(
                 return Err(stalled(t, &config));
             }
             dissipated.step(&st, t_new - t);
-            if let Some(d) = dense.as_mut() {
+            if let Some(d) = dense.as_mut().filter(|_| due) {
                 let now = (t_new, &st, dissipated.total);
                 d.emit((&samples, &mut next_sample), now, &rhs, sink)?;
             }

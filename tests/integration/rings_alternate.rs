@@ -169,6 +169,17 @@ fn render(dir: &TempDir, body: &str) -> std::process::Output {
         .unwrap()
 }
 
+/// [`render`] of `body` into a fresh folder named `name`, which must
+/// succeed: its data file.
+fn rendered_data(name: &str, body: &str) -> serde_json::Value {
+    let dir = TempDir::new(name);
+    let out = render(&dir, body);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    let json = std::fs::read(dir.join("figure-alternate.json")).unwrap();
+    serde_json::from_slice(&json).unwrap()
+}
+
 /// A scene file asks for the alternating hand (and its data file records
 /// the key in the scene and each pass: at its time, from the ring held to
 /// a ring of the other strand); a value out of its key's range, the key with
@@ -176,15 +187,10 @@ fn render(dir: &TempDir, body: &str) -> std::process::Output {
 /// chain, are one line on stderr and exit 2.
 #[test]
 fn the_alternating_hand_is_a_key_and_a_bad_value_is_refused() {
-    let good = TempDir::new("rings-alternate-good");
-    let out = render(
-        &good,
+    let json = rendered_data(
+        "rings-alternate-good",
         "alternate = { start = 0.1, period = 0.1, count = 2 }",
     );
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "{err}");
-    let json = std::fs::read(good.join("figure-alternate.json")).unwrap();
-    let json: serde_json::Value = serde_json::from_slice(&json).unwrap();
     let asked = &json["scene"]["rings"]["alternate"];
     assert_eq!(asked["count"], 2, "{asked}");
     let passes = json["rings"]["passes"].as_array().unwrap();
@@ -370,15 +376,10 @@ fn the_energy_does_not_jump_at_a_pass() {
 /// line on stderr and exit 2.
 #[test]
 fn the_lift_is_a_key_and_a_bad_value_is_refused() {
-    let good = TempDir::new("rings-lift-good");
-    let out = render(
-        &good,
+    let json = rendered_data(
+        "rings-lift-good",
         "alternate = { start = 0.1, period = 0.1, count = 2, lift = 0.05 }",
     );
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "{err}");
-    let json = std::fs::read(good.join("figure-alternate.json")).unwrap();
-    let json: serde_json::Value = serde_json::from_slice(&json).unwrap();
     assert_eq!(json["scene"]["rings"]["alternate"]["lift"], 0.05);
     let dir = TempDir::new("rings-lift-bad");
     for (what, body, needle) in [
