@@ -493,6 +493,9 @@ pub fn run_streaming(
     let mut next_sample = 0;
     let mut dissipated = Dissipated::new(ladder, options.dissipation, &st);
     let mut dense = between.then(|| between::Between::new(&st));
+    // There a fixed step keeps the grid k·dt, whatever t_end (`stepping::Grid`).
+    let adaptive = config.kind == IntegratorKind::Dopri5 && config.rtol.is_some();
+    let mut grid = (between && !adaptive).then(|| stepping::Grid::new(config.dt));
     // The stop rule, asked at every check and at every stop time.
     let stop_here = |t, st: &State, arrivals: &ArrivalDetector, waves: &WaveTracker| {
         (options.stop)(&StopView {
@@ -517,8 +520,9 @@ pub fn run_streaming(
             if let Some(d) = dense.as_mut().filter(|_| due) {
                 d.start(t, &st, dissipated.total);
             }
+            let to = grid.as_mut().map_or(stop_at, |g| g.target(t, stop_at));
             let (t_new, taken) =
-                integrator.advance_many(&mut rhs, &mut st, (t, stop_at), budget, &mut arrivals)?;
+                integrator.advance_many(&mut rhs, &mut st, (t, to), budget, &mut arrivals)?;
             if taken > 0 && t_new <= t {
                 return Err(stalled(t, &config));
             }

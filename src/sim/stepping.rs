@@ -2,7 +2,7 @@
 //! N ≤ 32, the chain kernel for longer ladders, and the batch kernel of
 //! sweeps) share: a batch of equal steps, the implicit damping factors,
 //! the instruction set a kernel is compiled for, and which code takes the
-//! steps.
+//! steps; and the grid a run stepped between its samples keeps.
 
 use super::rhs::Rhs;
 
@@ -179,5 +179,93 @@ impl Plan {
         let count = self.left.min(max);
         self.left -= count;
         (self.h, count, self.left == 0)
+    }
+}
+
+/// The grid of a fixed-step run that takes its samples between steps
+/// (docs/model.md, "Samples and steps"): the points k·dt from t = 0, cut
+/// where a stop (a drive corner, t_end) falls between two of them. A step
+/// that would cross a stop ends on it, and the next goes on to the next
+/// grid point. A stop within [`Grid::SLIVER`]·dt of a grid point takes
+/// that point's place, so no step is a sliver. Where the steps end then
+/// depends on the stops before them only, never on t_end until the last
+/// grid point before it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Grid {
+    dt: f64,
+    /// The next grid point is k·dt.
+    k: u64,
+}
+
+impl Grid {
+    /// How close, in steps, a stop may come to a grid point and be taken
+    /// as that point.
+    pub(crate) const SLIVER: f64 = 1e-9;
+
+    /// The grid of steps `dt` for a run from t = 0.
+    pub(crate) fn new(dt: f64) -> Self {
+        Self { dt, k: 1 }
+    }
+
+    /// Where the step from `t` (a grid point or a stop) ends, given the
+    /// next stop `t_stop`: the next grid point, or `t_stop` if that comes
+    /// first or within a sliver after it.
+    pub(crate) fn target(&mut self, t: f64, t_stop: f64) -> f64 {
+        let sliver = Self::SLIVER * self.dt;
+        while self.k as f64 * self.dt <= t + sliver {
+            self.k += 1;
+        }
+        let next = self.k as f64 * self.dt;
+        if next >= t_stop - sliver {
+            t_stop
+        } else {
+            next
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The ends of the steps from 0 to the last of `stops`.
+    fn ends(dt: f64, stops: &[f64]) -> Vec<f64> {
+        let (mut grid, mut t, mut out) = (Grid::new(dt), 0.0, Vec::new());
+        for &stop in stops {
+            while t < stop {
+                t = grid.target(t, stop);
+                out.push(t);
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn the_grid_is_k_dt_cut_at_a_corner_and_clipped_at_t_end() {
+        // A corner at 0.25 cuts the step from 0.2 to 0.3; the next step
+        // goes on to 0.3; t_end = 0.47 clips the last.
+        let k = |k: u32| k as f64 * 0.1;
+        let want = [k(1), k(2), 0.25, k(3), k(4), 0.47];
+        assert_eq!(ends(0.1, &[0.25, 0.47]), want);
+    }
+
+    #[test]
+    fn a_longer_run_takes_the_same_steps_up_to_the_shorter_ones_last_grid_point() {
+        let short = ends(0.02, &[4.64, 37.13]);
+        let long = ends(0.02, &[4.64, 37.13 * 1.37]);
+        let last = short.iter().rposition(|&t| t < 37.13).unwrap();
+        assert_eq!(short[..=last], long[..=last]);
+        assert_ne!(short.last(), long.get(last + 1));
+    }
+
+    #[test]
+    fn a_stop_a_sliver_from_a_grid_point_takes_its_place() {
+        // Just after 0.2 (a corner) and just before 0.4 (t_end): no step
+        // shorter than the sliver, and the grid goes on from the corner.
+        let (after, before) = (0.2 + 1e-12, 0.4 - 1e-12);
+        let got = ends(0.1, &[after, before]);
+        assert_eq!(got, [0.1, after, 0.30000000000000004, before]);
+        // A stop on a grid point, computed otherwise, is that point.
+        assert_eq!(ends(0.1, &[0.3]), [0.1, 0.2, 0.3]);
     }
 }

@@ -159,7 +159,7 @@ fn the_energy_budget_of_the_toy_in_air_closes() {
     // The toy in air (assets/scenes/toy.toml): the hand turns block 1
     // over and the blocks clatter down (about 50 impacts in 1855 τ).
     // The residual at 0.0025 τ is within 1e-3 of W and well below the
-    // one at 0.01 τ (measured 3.7e-3 and 5.5e-5 of W: the clatter is
+    // one at 0.01 τ (measured 2.0e-3 and 4.4e-5 of W: the clatter is
     // chaotic, so each step's run has impacts of its own).
     let sc = toy_in_air();
     let r: Vec<f64> = [0.01, 0.0025]
