@@ -273,7 +273,9 @@ pub fn default_steps(kind: IntegratorKind) -> Vec<f64> {
     match kind {
         IntegratorKind::ExplicitEuler => vec![0.0005, 0.001, 0.002, 0.005, 0.01],
         IntegratorKind::SymplecticEuler => vec![0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.4],
-        IntegratorKind::Verlet => vec![0.01, 0.02, 0.05, 0.1, 0.2, 0.25, 0.3, 0.4, 0.6],
+        IntegratorKind::Verlet | IntegratorKind::Moreau => {
+            vec![0.01, 0.02, 0.05, 0.1, 0.2, 0.25, 0.3, 0.4, 0.6]
+        }
         IntegratorKind::Rk4 => vec![0.05, 0.1, 0.2, 0.3, 0.4, 0.6, 0.8],
         IntegratorKind::Dopri5 => vec![1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10],
     }

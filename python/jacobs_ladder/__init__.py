@@ -101,7 +101,8 @@ def simulate(
     - ``t_end``: end of the window, τ (or ``"auto"``). Default {t_end}.
     - ``integrator``: ``auto`` (picks the step and verifies the arrival
       times to ``tolerance``), ``explicit-euler``, ``symplectic-euler`` (the
-      paper's), ``verlet``, ``rk4`` or ``dopri5``. Default {integrator}.
+      paper's), ``verlet``, ``rk4``, ``dopri5`` or ``moreau`` (inextensible
+      ribbons only). Default {integrator}.
     - ``dt``: step of a named integrator, τ. Default {dt}.
     - ``rtol``: tolerance of dopri5. Default {rtol}.
     - ``tolerance``: largest arrival-time error auto accepts, τ. Default

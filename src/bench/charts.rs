@@ -29,6 +29,7 @@ pub fn integrator_color(kind: IntegratorKind) -> Rgb {
         IntegratorKind::Verlet => Palette.color(Role::Series(3)),
         IntegratorKind::Rk4 => Palette.color(Role::Series(6)),
         IntegratorKind::Dopri5 => Palette.color(Role::Series(1)),
+        IntegratorKind::Moreau => Palette.color(Role::Series(5)),
     }
 }
 

@@ -98,7 +98,9 @@ fn workload(
 fn workloads() -> Result<Vec<Workload>> {
     use IntegratorKind::*;
     let mut w = Vec::new();
-    for kind in IntegratorKind::ALL {
+    // Moreau's steps take inextensible ribbons only: it is timed on the
+    // tank as built below, not on the paper's model.
+    for kind in IntegratorKind::ALL.into_iter().filter(|k| *k != Moreau) {
         w.push(workload(None, Some(1000), kind, 0.01, Stepping::Portable)?);
     }
     w.push(workload(

@@ -35,8 +35,9 @@ impl AsBuilt {
                 .map_or(0.0, |c| c.dissipation(blocks, &self.ribbons.outline, q, v))
     }
 
-    /// Whether its forces depend on the velocities (a dashpot, contact).
+    /// Whether its forces depend on the velocities (a dashpot, contact,
+    /// inextensible ribbons' tensions).
     pub fn velocity_dependent(&self) -> bool {
-        self.ribbons.damping != 0.0 || self.contact.is_some()
+        self.ribbons.damping != 0.0 || self.contact.is_some() || self.ribbons.inextensible
     }
 }

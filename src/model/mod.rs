@@ -12,6 +12,7 @@ pub mod ribbons;
 pub mod strap;
 pub mod table;
 pub mod tangent;
+pub mod taut;
 pub mod terms;
 pub mod trig;
 

@@ -72,7 +72,7 @@ pub struct Ribbons {
     /// does the same with c = 2 √(κ m), critical for one block on it.
     pub damping: f64,
     /// Each ribbon's ways round, made once ([`Ribbons::new`]).
-    ways: [Ways; 2],
+    pub(super) ways: [Ways; 2],
     /// Whether [`Ribbons::find_spans`] starts each common tangent from
     /// the last evaluation's (`tangent::warm_tangent`; the same spans).
     pub warm: bool,
@@ -80,6 +80,8 @@ pub struct Ribbons {
     /// points from an earlier pair that shares them (`twin`; the same
     /// spans).
     pub prune: bool,
+    /// Inextensible (`model::taut`): κ = c = 0, lengths held by the run.
+    pub inextensible: bool,
 }
 
 /// A ribbon at a state: where its span leaves each block (frame points),
@@ -429,6 +431,7 @@ impl Ribbons {
             damping: 2.0 * (stiffness * M).sqrt(),
             warm: true,
             prune: true,
+            inextensible: false,
         }
     }
 
@@ -582,6 +585,9 @@ impl Ribbons {
     /// Elastic energy Σ ½ κ max(0, L − ℓ)².
     pub fn elastic_energy(&self, n: usize, q: &[f64]) -> f64 {
         let mut e = 0.0;
+        if self.inextensible {
+            return e;
+        }
         self.for_each_span(n, q, |_, _, _, s| {
             e += 0.5 * s.tension * s.tension / self.stiffness;
         });
@@ -639,7 +645,7 @@ fn add_tension(grad: &mut [f64], pu: &Pose, pl: &Pose, i: usize, s: &Span) {
 }
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 #[cfg(test)]
 mod dashpot_tests {

@@ -328,8 +328,13 @@ pub fn worst_case(
 /// where the ladder has velocity-dependent terms (added mass, quadratic
 /// drag, pin friction: `sim::check_terms`), which Verlet cannot take. RK4
 /// is fourth order, so its error estimate is the difference / 15.
+/// Inextensible ribbons take Moreau's time-stepping (first order: the
+/// estimate is the difference itself).
 pub fn scheme(scenario: &Scenario, dt: f64) -> IntegratorConfig {
-    let kind = if scenario.ladder.velocity_dependent() {
+    let inextensible = (scenario.ladder.built.as_ref()).is_some_and(|b| b.ribbons.inextensible);
+    let kind = if inextensible {
+        IntegratorKind::Moreau
+    } else if scenario.ladder.velocity_dependent() {
         IntegratorKind::Rk4
     } else {
         IntegratorKind::Verlet

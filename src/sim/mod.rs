@@ -26,6 +26,7 @@ pub mod stepping;
 pub mod strap;
 mod tableau;
 pub mod tally;
+pub mod taut;
 pub mod terms_rk4;
 pub mod trajectory;
 pub mod waves;
@@ -126,6 +127,7 @@ impl Scenario {
 /// Stiffer or tension-only links are forces of the positions: every
 /// scheme takes them.
 pub fn check_terms(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
+    check_inextensible(ladder, config)?;
     check_contact_step(ladder, config)?;
     let t = &ladder.terms;
     if !ladder.velocity_dependent()
@@ -158,6 +160,28 @@ pub fn check_terms(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
         config.kind.name(),
         what.join(", ")
     )))
+}
+
+/// Inextensible ribbons act only through impulses between steps
+/// (`sim::taut`): `moreau` takes them, and takes nothing else.
+fn check_inextensible(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> {
+    let inextensible = ladder.built.is_some_and(|b| b.ribbons.inextensible);
+    let moreau = config.kind == IntegratorKind::Moreau;
+    if inextensible && !moreau {
+        return Err(Error::bad_input(format!(
+            "integrator {} cannot integrate inextensible ribbons: they pull only by \
+             impulses between steps; use moreau",
+            config.kind.name()
+        )));
+    }
+    if moreau && !inextensible {
+        return Err(Error::bad_input(
+            "integrator moreau integrates inextensible ribbons only (a ladder as built \
+             whose ribbons never stretch); this ladder has none: use rk4, dopri5 or auto"
+                .to_string(),
+        ));
+    }
+    Ok(())
 }
 
 /// A fixed RK4 step longer than the contact's stable step

@@ -6,6 +6,7 @@
 
 use super::budget::Quadrature;
 use super::protocol::{Drive, Protocol};
+use super::taut::{InverseMass, Taut};
 use crate::model::Ladder;
 use crate::model::ladder::{ForceScratch, Frames, ix, iy};
 use crate::model::media::{self, Terms};
@@ -70,6 +71,12 @@ pub struct Rhs<'a> {
     /// Each block's drag force at the last evaluation with drag, made
     /// once for its acceleration and the budget's powers.
     drag: Vec<[f64; 3]>,
+    /// Inextensible ribbons' impulses (`sim::taut`), where the ladder has
+    /// them.
+    pub taut: Option<Taut>,
+    /// The blocks' frames and which are free, for the tensions' solve.
+    frame_list: Vec<([f64; 2], [f64; 2])>,
+    free: Vec<bool>,
 }
 
 impl<'a> Rhs<'a> {
@@ -104,6 +111,11 @@ impl<'a> Rhs<'a> {
             warm: Vec::new(),
             powers: None,
             drag: Vec::new(),
+            taut: (ladder.built.as_ref())
+                .filter(|b| b.ribbons.inextensible)
+                .map(|_| Taut::default()),
+            frame_list: Vec::new(),
+            free: Vec::new(),
         }
     }
 
@@ -315,6 +327,54 @@ impl<'a> Rhs<'a> {
         if self.powers.is_some() {
             self.stage_powers(v, lost);
         }
+    }
+
+    /// Moreau's impulses (`sim::taut`) over a step `h`, with the last
+    /// evaluation's poses and spans (the midpoint's), into `v`. False
+    /// where the ribbons' problem could not be solved.
+    pub fn taut_impulses(&mut self, h: f64, v: &mut [f64]) -> bool {
+        let Some(b) = &self.ladder.built else {
+            return true;
+        };
+        let n = self.ladder.n();
+        self.frame_list.clear();
+        self.frame_list.extend((0..n).map(|i| self.frames.get(i)));
+        self.free.clear();
+        self.free
+            .extend((0..n).map(|i| self.inv_mass[3 * i] != 0.0));
+        let inv = InverseMass {
+            added_mass: self.terms.added_mass,
+            inertia: self.ladder.params.inertia + self.terms.added_inertia,
+            frames: &self.frame_list,
+            free: &self.free,
+        };
+        let rests = b.ribbons.ribbons.map(|r| r.rest);
+        let Some(taut) = self.taut.as_mut() else {
+            return true;
+        };
+        taut.impulses((&self.poses[..], &self.spans[..]), rests, &inv, h, v)
+    }
+
+    /// The last step's ribbon impulses' (work through block 1, loss)
+    /// between the velocities `v0` before the step and `v1` after it
+    /// (`Taut::energy`).
+    pub fn taut_energy(&self, v0: &[f64], v1: &[f64]) -> (f64, f64) {
+        let driven = self.inv_mass[2] == 0.0;
+        self.taut
+            .as_ref()
+            .map_or((0.0, 0.0), |t| t.energy(v0, v1, driven))
+    }
+
+    /// The first pair of blocks (upper, lower; 0-based) in contact at
+    /// (q, v), where the ladder as built has contact.
+    pub fn first_touch(&self, q: &[f64], v: &[f64]) -> Option<(usize, usize)> {
+        let b = self.ladder.built.as_ref()?;
+        let c = b.contact.as_ref()?;
+        let mut first = None;
+        c.for_each_touch(self.ladder.blocks(), &b.ribbons.outline, q, v, |t| {
+            first.get_or_insert((t.a.min(t.b), t.a.max(t.b)));
+        });
+        first
     }
 
     /// Pin friction's forces at (q, v) added to `force`; where the run

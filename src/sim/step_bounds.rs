@@ -9,13 +9,16 @@ use nalgebra::Complex;
 
 /// Linear stability bound of each scheme for a mode of frequency ω and
 /// damping rate c, λ = −c/2 ± i sqrt(ω² − c²/4) (README.md): 2/ω for
-/// symplectic Euler and Verlet, 2√2/ω for RK4 (the undamped bounds the spec
+/// symplectic Euler, Verlet and Moreau's midpoint (a leapfrog between
+/// impulses), 2√2/ω for RK4 (the undamped bounds the spec
 /// quotes), and for explicit Euler and fixed-step dopri5 the damped bound,
 /// the first h at which |R(hλ)| exceeds 1 (c/ω² for explicit Euler). Both of
 /// those are unstable on the imaginary axis, so only damping gives a bound.
 pub fn predicted_dt(kind: IntegratorKind, omega: f64, damping: f64) -> f64 {
     match kind {
-        IntegratorKind::SymplecticEuler | IntegratorKind::Verlet => 2.0 / omega,
+        IntegratorKind::SymplecticEuler | IntegratorKind::Verlet | IntegratorKind::Moreau => {
+            2.0 / omega
+        }
         IntegratorKind::Rk4 => 2.0 * std::f64::consts::SQRT_2 / omega,
         IntegratorKind::ExplicitEuler | IntegratorKind::Dopri5 => {
             let lambda = Complex::new(

@@ -39,6 +39,7 @@ mod gallery;
 mod golden;
 mod hanging_start;
 mod hostile;
+mod inextensible;
 mod italic;
 mod kernels;
 mod messages;

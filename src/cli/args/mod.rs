@@ -201,8 +201,9 @@ pub struct ToleranceArgs {
         simulate_run().t_end,
     ))),
     mut_arg("integrator", |a| a.help(with_default(
-        "explicit-euler, symplectic-euler (the paper's), verlet, rk4, dopri5, or auto \
-         (velocity Verlet with its step chosen and verified to --tolerance)",
+        "explicit-euler, symplectic-euler (the paper's), verlet, rk4, dopri5, moreau \
+         (inextensible ribbons only), or auto (velocity Verlet with its step chosen and \
+         verified to --tolerance)",
         simulate_run().integrator,
     ))),
 )]

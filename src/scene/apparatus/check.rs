@@ -419,6 +419,12 @@ impl Apparatus {
                     .into(),
             );
         }
+        if self.stiffness == Stiffness::Word(StiffWord::Inextensible) && !self.ribbons {
+            return bad(
+                "stiffness",
+                "\"inextensible\" is for ribbons (ribbons = true): links stretch".into(),
+            );
+        }
         if self.ribbons && (self.tension_only || self.pin_friction > 0.0) {
             return bad(
                 "ribbons",

@@ -197,7 +197,10 @@ impl Apparatus {
             (plus(x1), minus(x2))
         };
         let outline = Outline::new(self.thickness / self.s);
-        let ribbons = Ribbons::glued_in_column(outline, [(a1, a1), (a2, a2)], c.b);
+        let mut ribbons = Ribbons::glued_in_column(outline, [(a1, a1), (a2, a2)], c.b);
+        if self.stiffness == Stiffness::Word(StiffWord::Inextensible) {
+            ribbons = ribbons.inextensible();
+        }
         let contact = self.contact.map(|m| {
             let (restitution, friction) = m.coefficients();
             Contact {

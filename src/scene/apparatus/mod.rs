@@ -84,7 +84,7 @@ pub const CONTACT_STIFFNESS: f64 = 1000.0;
 /// The friction's slip speed v_ε, in s/τ.
 pub const SLIP_SPEED: f64 = 1e-4;
 
-/// "stiff" or a stiffness in N/m.
+/// "stiff", "inextensible" (ribbons only) or a stiffness in N/m.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
 pub enum Stiffness {
@@ -95,7 +95,13 @@ pub enum Stiffness {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum StiffWord {
+    /// k from the paper's G ([`STIFF_GRAVITY`]), checked stiff by a run
+    /// with 2k.
     Stiff,
+    /// Ribbons that never stretch: held at their length by impulses
+    /// (Moreau's time-stepping, `sim::taut`); k then only sets τ, as
+    /// "stiff" would.
+    Inextensible,
 }
 
 /// "paper" or a rate γ/m in 1/s.
@@ -153,7 +159,8 @@ pub struct Apparatus {
     /// The medium's density (g/cm³). Default: the medium's.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub medium_density: Option<f64>,
-    /// "stiff" or k in N/m. Default "stiff".
+    /// "stiff", "inextensible" (ribbons only: run by the `moreau`
+    /// integrator) or k in N/m. Default "stiff".
     #[serde(default = "stiff")]
     pub stiffness: Stiffness,
     /// G of "stiff" links. Default 2e-4.
