@@ -46,6 +46,7 @@ fn pretty(name: &str) -> &str {
         "verlet" => "velocity Verlet",
         "rk4" => "RK4",
         "dopri5" => "dopri5 (adaptive)",
+        "moreau" => "Moreau",
         other => other,
     }
 }

@@ -176,8 +176,9 @@ fn check_inextensible(ladder: &Ladder, config: &IntegratorConfig) -> Result<()> 
     }
     if moreau && !inextensible {
         return Err(Error::bad_input(
-            "integrator moreau integrates inextensible ribbons only (a ladder as built \
-             whose ribbons never stretch); this ladder has none: use rk4, dopri5 or auto"
+            "integrator moreau cannot integrate a ladder without inextensible ribbons: it \
+             steps only their impulses (stiffness = \"inextensible\" with ribbons); use rk4, \
+             dopri5 or auto"
                 .to_string(),
         ));
     }

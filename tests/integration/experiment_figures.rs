@@ -29,12 +29,18 @@ fn each_level_of_model_lands_where_the_caption_says() {
         );
     }
     // The levels that run a wave: the three with springs and the tank as
-    // built (ribbons); each kink faster than measured, named in the
-    // caption with its speed and its factor; its ratio is near 1, not
-    // 1.75; "stiff" links and tapes pass the k-and-2k check.
+    // built (ribbons, stiff and inextensible); each kink faster than
+    // measured, named in the caption with its speed and its factor; its
+    // ratio is near 1, not 1.75; "stiff" links and tapes pass the
+    // k-and-2k check, the inextensible tapes the check at half the step.
     let running: Vec<&experiments::LevelResult> =
-        [0, 1, 2, 5].iter().map(|&k| &levels[k]).collect();
+        [0, 1, 2, 5, 6].iter().map(|&k| &levels[k]).collect();
     assert!(levels[5].name.contains("ribbons"), "{}", levels[5].name);
+    assert!(
+        levels[6].name.contains("inextensible"),
+        "{}",
+        levels[6].name
+    );
     for r in &running {
         let c = r.kink_cm_s.unwrap_or_else(|| panic!("{}: no wave", r.name));
         assert!(c > 1.5 * MEASURED_KINK_CM_S, "{}: {c} cm/s", r.name);
@@ -53,22 +59,30 @@ fn each_level_of_model_lands_where_the_caption_says() {
             "{q}"
         );
         assert!(caption.contains(&format!("{q:.2}")), "{}: {q:.2}", r.name);
-        let d = r.stiff_difference().unwrap();
+        let d = (r.stiff_difference()).or(r.step_difference()).unwrap();
         assert!(d < experiments::STIFF_TOLERANCE, "{}: k vs 2k {d}", r.name);
     }
     // Each added term slows the kink, and the ribbons slow it further:
     // the closest level, as the caption says.
     let c: Vec<f64> = running.iter().map(|r| r.kink_cm_s.unwrap()).collect();
-    assert!(c[0] > c[1] && c[1] > c[2] && c[2] > c[3], "{c:?}");
+    assert!(
+        c[0] > c[1] && c[1] > c[2] && c[2] > c[3] && c[3] > c[4],
+        "{c:?}"
+    );
     // The tape, alone or with every term: no wave, drawn and said so.
     for r in &levels[3..5] {
         assert_eq!(r.kink_cm_s, None, "{}", r.name);
     }
     assert!(caption.contains("no wave"));
     records_the_model_and_drive_it_ran(&data);
-    // The ribbons' level runs dopri5 at its tolerance, the others RK4.
+    // The ribbons' level runs dopri5 at its tolerance, the inextensible
+    // ribbons' Moreau's time-stepping, the others RK4.
     for (k, d) in data.iter().enumerate() {
-        let want = if k / 3 == 5 { "dopri5" } else { "rk4" };
+        let want = match k / 3 {
+            5 => "dopri5",
+            6 => "moreau",
+            _ => "rk4",
+        };
         assert_eq!(d.integrator.name, want, "{}", d.label);
     }
     // Every number of the caption is one of these.
@@ -88,9 +102,15 @@ fn each_level_of_model_lands_where_the_caption_says() {
             "{} %",
             two(running
                 .iter()
-                .map(|r| 100.0 * r.stiff_difference().unwrap())
+                .filter_map(|r| r.stiff_difference())
+                .map(|d| 100.0 * d)
                 .collect())
         ),
+        format!(
+            "{:.2} % at half the step",
+            100.0 * levels[6].step_difference().unwrap()
+        ),
+        format!("{} τ", experiments::INEXTENSIBLE_STEP),
         format!("tolerance {:.0} %", 100.0 * experiments::STIFF_TOLERANCE),
         "0.125 τ".into(),
         format!("{thickness} cm thick"),

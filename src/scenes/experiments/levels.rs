@@ -2,7 +2,7 @@
 //! of model, beside the measured 6.0 cm/s and 1.75.
 
 use super::runs::{Variant, run_all, variant};
-use super::{LEVELS, LEVELS_MOTOR_HZ, MEASURED_KINK_CM_S, MEASURED_RATIO};
+use super::{INEXTENSIBLE_STEP, LEVELS, LEVELS_MOTOR_HZ, MEASURED_KINK_CM_S, MEASURED_RATIO};
 use crate::error::{Error, Result};
 use crate::render::charts::{self, Axis, ChartSpec, Marker, Series};
 use crate::render::compose::{self, Layout, Panel};
@@ -13,13 +13,16 @@ use crate::scenes::data::RunData;
 
 /// What one level of model gives in the tank: the bulk speeds (cm/s) of
 /// the kink and the antikink, and of the kink with the links twice as
-/// stiff ("stiff" links: k and 2k must agree, [`STIFF_TOLERANCE`]).
+/// stiff ("stiff" links: k and 2k must agree, [`STIFF_TOLERANCE`]), or,
+/// for inextensible ribbons (no k), of the kink at half the step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LevelResult {
     pub name: &'static str,
     pub kink_cm_s: Option<f64>,
     pub antikink_cm_s: Option<f64>,
     pub kink_2k_cm_s: Option<f64>,
+    /// Inextensible ribbons: `kink_2k_cm_s` is the kink at half the step.
+    pub inextensible: bool,
 }
 
 impl LevelResult {
@@ -28,8 +31,23 @@ impl LevelResult {
         self.kink_cm_s.zip(self.antikink_cm_s).map(|(k, a)| a / k)
     }
 
-    /// |c(2k)/c(k) − 1|, where both run.
+    /// |c(2k)/c(k) − 1|, where both run (not for inextensible ribbons).
     pub fn stiff_difference(&self) -> Option<f64> {
+        if self.inextensible {
+            return None;
+        }
+        self.second_difference()
+    }
+
+    /// |c(h/2)/c(h) − 1| of inextensible ribbons' kink, where both run.
+    pub fn step_difference(&self) -> Option<f64> {
+        if !self.inextensible {
+            return None;
+        }
+        self.second_difference()
+    }
+
+    fn second_difference(&self) -> Option<f64> {
         self.kink_cm_s
             .zip(self.kink_2k_cm_s)
             .map(|(k, k2)| (k2 / k - 1.0).abs())
@@ -45,30 +63,44 @@ pub fn levels(scene: &Scene) -> Result<(Vec<LevelResult>, Vec<RunData>)> {
     let results = LEVELS
         .iter()
         .enumerate()
-        .map(|(k, (name, _))| LevelResult {
+        .map(|(k, (name, level))| LevelResult {
             name,
             kink_cm_s: done[3 * k].bulk_cm_s,
             antikink_cm_s: done[3 * k + 1].bulk_cm_s,
             kink_2k_cm_s: done[3 * k + 2].bulk_cm_s,
+            inextensible: level.inextensible,
         })
         .collect();
     Ok((results, done.into_iter().map(|d| d.data).collect()))
 }
 
-/// The figure's runs: kink, antikink and kink at 2k for every level.
+/// The figure's runs: kink, antikink and kink at 2k for every level (for
+/// inextensible ribbons, which have no k, the kink at half the step).
 pub(super) fn variants(scene: &Scene) -> Result<Vec<Variant>> {
     let mut variants = Vec::new();
     for (name, level) in LEVELS {
-        for (sign, word, stiffer) in [
-            (1.0, "kink", 1.0),
-            (-1.0, "antikink", 1.0),
-            (1.0, "kink, links 2k", 0.5),
+        let third = if level.inextensible {
+            "kink, half the step"
+        } else {
+            "kink, links 2k"
+        };
+        for (sign, word, second) in [
+            (1.0, "kink", false),
+            (-1.0, "antikink", false),
+            (1.0, third, true),
         ] {
-            variants.push(variant(scene, format!("{name}, {word}"), sign, |a| {
+            let stiffer = second && !level.inextensible;
+            let mut v = variant(scene, format!("{name}, {word}"), sign, |a| {
                 level.apply(a);
                 a.motor = Some(LEVELS_MOTOR_HZ);
-                a.stiff_gravity *= stiffer;
-            })?);
+                if stiffer {
+                    a.stiff_gravity *= 0.5;
+                }
+            })?;
+            if second && level.inextensible {
+                v.scene.run.dt = Some(0.5 * INEXTENSIBLE_STEP);
+            }
+            variants.push(v);
         }
     }
     Ok(variants)
@@ -80,6 +112,18 @@ pub(super) fn variants(scene: &Scene) -> Result<Vec<Variant>> {
 /// "no wave" in its name and has no point on the value axis.
 pub(super) fn tank_levels(theme: &Theme, scene: &Scene) -> Result<(Picture, Vec<RunData>)> {
     let (results, data) = levels(scene)?;
+    if let Some(r) = results
+        .iter()
+        .find(|r| r.step_difference().is_some_and(|d| d > STIFF_TOLERANCE))
+    {
+        return Err(Error::failed(format!(
+            "{}: the kink's speed moves by {:.1} % at half of Moreau's step, more than {} %: \
+             the run is not converged in its step",
+            r.name,
+            100.0 * r.step_difference().unwrap_or(0.0),
+            100.0 * STIFF_TOLERANCE
+        )));
+    }
     if let Some(r) = results
         .iter()
         .find(|r| r.stiff_difference().is_some_and(|d| d > STIFF_TOLERANCE))

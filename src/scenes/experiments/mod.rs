@@ -33,7 +33,9 @@ use super::data::{ApparatusNumbers, BulkFit, RunData};
 use crate::error::Result;
 use crate::render::charts::{self, ChartSpec};
 use crate::render::{Picture, Theme};
-use crate::scene::apparatus::{Apparatus, Damping, ExperimentFigure, Material, PaperWord};
+use crate::scene::apparatus::{
+    Apparatus, Damping, ExperimentFigure, Material, PaperWord, StiffWord, Stiffness,
+};
 use crate::scene::{Scene, describe};
 
 /// The tank's measured kink speed (cm/s; main text and supplement).
@@ -59,10 +61,14 @@ pub const STEP: f64 = 0.125;
 /// and 0.4 Hz is within 0.008 s of RK4 at τ/128, nearer than RK4 at the
 /// contact's stable step, for a quarter of its force evaluations).
 pub const RIBBON_RTOL: f64 = 1e-6;
+/// The step of Moreau's time-stepping for the inextensible ribbons' level,
+/// in τ; its check runs at half of it (docs/experiments.md,
+/// "Inextensible ribbons").
+pub const INEXTENSIBLE_STEP: f64 = 0.05;
 
 /// The levels of model of the tank (docs/experiments.md): name and what it switches on
 /// over the bare apparatus (two-way stiff links, gravity g).
-pub const LEVELS: [(&str, Level); 6] = [
+pub const LEVELS: [(&str, Level); 7] = [
     (
         "1 paper: linear damping γ",
         Level {
@@ -71,6 +77,7 @@ pub const LEVELS: [(&str, Level); 6] = [
             added_mass: false,
             tape: false,
             ribbons: false,
+            inextensible: false,
         },
     ),
     (
@@ -81,6 +88,7 @@ pub const LEVELS: [(&str, Level); 6] = [
             added_mass: false,
             tape: false,
             ribbons: false,
+            inextensible: false,
         },
     ),
     (
@@ -91,6 +99,7 @@ pub const LEVELS: [(&str, Level); 6] = [
             added_mass: true,
             tape: false,
             ribbons: false,
+            inextensible: false,
         },
     ),
     (
@@ -101,6 +110,7 @@ pub const LEVELS: [(&str, Level); 6] = [
             added_mass: true,
             tape: true,
             ribbons: false,
+            inextensible: false,
         },
     ),
     (
@@ -111,6 +121,7 @@ pub const LEVELS: [(&str, Level); 6] = [
             added_mass: true,
             tape: true,
             ribbons: false,
+            inextensible: false,
         },
     ),
     (
@@ -121,6 +132,18 @@ pub const LEVELS: [(&str, Level); 6] = [
             added_mass: true,
             tape: false,
             ribbons: true,
+            inextensible: false,
+        },
+    ),
+    (
+        "7 inextensible ribbons",
+        Level {
+            damping: false,
+            buoyancy_and_drag: true,
+            added_mass: true,
+            tape: false,
+            ribbons: true,
+            inextensible: true,
         },
     ),
 ];
@@ -139,6 +162,9 @@ pub struct Level {
     /// at its default, the paper's nodes), with contact between acrylic
     /// plates.
     pub ribbons: bool,
+    /// The ribbons inextensible (`stiffness = "inextensible"`), run by
+    /// Moreau's time-stepping at [`INEXTENSIBLE_STEP`].
+    pub inextensible: bool,
 }
 
 impl Level {
@@ -150,6 +176,9 @@ impl Level {
         a.tension_only = self.tape;
         a.ribbons = self.ribbons;
         a.contact = self.ribbons.then_some(Material::Acrylic);
+        if self.inextensible {
+            a.stiffness = Stiffness::Word(StiffWord::Inextensible);
+        }
     }
 }
 

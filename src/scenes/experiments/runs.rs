@@ -1,13 +1,14 @@
 //! A figure's runs: each a variant of the scene's apparatus (its terms,
 //! motor, μ_p, wave), run by RK4 at [`STEP`] τ (with ribbons, dopri5 at
-//! [`RIBBON_RTOL`]) until it has decided
+//! [`RIBBON_RTOL`]; inextensible ribbons, Moreau's time-stepping at
+//! [`INEXTENSIBLE_STEP`]) until it has decided
 //! ([`Decided`]), two at a time or more.
 
 use super::decided::{Decided, block_rate};
-use super::{RIBBON_RTOL, STEP};
+use super::{INEXTENSIBLE_STEP, RIBBON_RTOL, STEP};
 use super::{apparatus_numbers, bulk_speed};
 use crate::error::{Error, Result};
-use crate::scene::apparatus::Apparatus;
+use crate::scene::apparatus::{Apparatus, StiffWord, Stiffness};
 use crate::scene::{Method, OutputSpec, Scene};
 use crate::scenes::data::RunData;
 use crate::scenes::reuse;
@@ -18,7 +19,8 @@ use rayon::prelude::*;
 
 /// One run of the figure: its label, and `scene` as a data scene with its
 /// apparatus changed by `change`, its α of sign `sign`, RK4 at [`STEP`]
-/// (with ribbons, dopri5 at [`RIBBON_RTOL`]).
+/// (with ribbons, dopri5 at [`RIBBON_RTOL`]; inextensible ribbons, Moreau
+/// at [`INEXTENSIBLE_STEP`]).
 pub(super) struct Variant {
     pub(super) label: String,
     pub(super) scene: Scene,
@@ -40,6 +42,7 @@ pub(super) fn variant(
     })?;
     change(&mut a);
     let ribbons = a.ribbons;
+    let inextensible = a.stiffness == Stiffness::Word(StiffWord::Inextensible);
     s.model.alpha = sign * scene.model.alpha.abs();
     s.apparatus = Some(a);
     // The model, drive and window the changed apparatus gives (the run
@@ -47,7 +50,10 @@ pub(super) fn variant(
     let mut s = s.with_conversion();
     s.output = OutputSpec::Data;
     s.run.dt = Some(STEP);
-    if ribbons {
+    if inextensible {
+        s.run.integrator = Method::Fixed(IntegratorKind::Moreau);
+        s.run.dt = Some(INEXTENSIBLE_STEP);
+    } else if ribbons {
         // Its contact refuses RK4 at STEP; dopri5 shortens its step only
         // where the plates touch.
         s.run.integrator = Method::Fixed(IntegratorKind::Dopri5);
