@@ -9,9 +9,12 @@
 //!
 //! w = A P − (L̇ + c) ≥ 0,  P ≥ 0,  P w = 0,  A = G B Gᵀ,
 //!
-//! c = 2 (L − ℓ)/h at the midpoint (one fifth of it where a ribbon is
-//! already past its length, so that drift is taken back over several
-//! steps, not thrown). G is the ribbons' rows (`model::taut`), B the
+//! c = 2 min(L − ℓ, 0)/h at the midpoint: a slack ribbon may close its
+//! gap within the step, and one already past its length (the scheme's
+//! drift) is kept from stretching further but not pulled back. Pulling
+//! it back, even by a fifth of its stretch a step, turned the drift into
+//! rebounds that made the run hang on rounding (docs/experiments.md,
+//! "Inextensible ribbons"). G is the ribbons' rows (`model::taut`), B the
 //! blocks' inverse mass with added mass. A ribbon that reaches its length
 //! while stretching is so stopped without rebound, as an inextensible
 //! string's impulsive tension stops it (Routh, *Dynamics of a System of
@@ -23,10 +26,6 @@ use crate::model::media;
 use crate::model::outline::Pose;
 use crate::model::ribbons::Span;
 use crate::model::taut::{Row, row, solve_banded};
-
-/// One fifth: how much of a ribbon's stretch past its length one step
-/// takes back (a stretch is the integrator's drift, not motion).
-pub const DRIFT_RELAXATION: f64 = 0.2;
 
 /// A ribbon slacker than this (in s) at the midpoint, and not
 /// lengthening, is left out of the step's problem: within a step no
@@ -209,9 +208,8 @@ impl Taut {
         self.assemble(inv);
         self.rhs.clear();
         for &k in &self.index {
-            let g = self.rows[k].gap;
-            let relax = if g > 0.0 { DRIFT_RELAXATION } else { 1.0 };
-            self.rhs.push(self.rows[k].rate + relax * 2.0 * g / h);
+            let g = self.rows[k].gap.min(0.0);
+            self.rhs.push(self.rows[k].rate + 2.0 * g / h);
         }
         if !self.complementarity() {
             self.singular += 1;

@@ -13,6 +13,15 @@ fn tank() -> BenchScene {
     BenchScene::movie("water-tank", Some(300.0), 60).unwrap()
 }
 
+/// Moreau's time-stepping takes inextensible ribbons only, which the tank
+/// has not: refused, saying so.
+fn assert_refused_without_ribbons(reason: &str) {
+    assert!(
+        reason.contains("moreau") && reason.contains("without inextensible ribbons"),
+        "{reason}"
+    );
+}
+
 /// The refusals name the terms: symplectic Euler and Verlet kick with
 /// forces of the positions only.
 fn assert_refused_for_terms(reason: &str) {
@@ -32,12 +41,20 @@ fn work_precision_on_the_tank_has_a_row_per_method_and_rk4_converges_at_order_4(
     let all: Vec<&str> = IntegratorKind::ALL.iter().map(|k| k.name()).collect();
     assert_eq!(names, all, "one row per method");
     for sweep in sweeps {
-        let refuses = matches!(sweep.name.as_str(), "symplectic-euler" | "verlet");
+        let refuses = matches!(
+            sweep.name.as_str(),
+            "symplectic-euler" | "verlet" | "moreau"
+        );
         assert_eq!(sweep.refused.is_some(), refuses, "{}", sweep.name);
         for p in &sweep.points {
             if refuses {
                 assert_eq!(p.status, Status::Refused, "{}", sweep.name);
-                assert_refused_for_terms(p.refused.as_deref().unwrap());
+                let reason = p.refused.as_deref().unwrap();
+                if sweep.name == "moreau" {
+                    assert_refused_without_ribbons(reason);
+                } else {
+                    assert_refused_for_terms(reason);
+                }
             } else {
                 assert!(p.refused.is_none() && p.force_evals > 0, "{p:?}");
             }
@@ -67,7 +84,8 @@ fn work_precision_on_the_tank_has_a_row_per_method_and_rk4_converges_at_order_4(
     let csv = bench::work_precision_csv(&report);
     let refused_rows = csv.lines().filter(|l| l.contains(",refused,")).count();
     let steps = bench::default_steps(IntegratorKind::SymplecticEuler).len()
-        + bench::default_steps(IntegratorKind::Verlet).len();
+        + bench::default_steps(IntegratorKind::Verlet).len()
+        + bench::default_steps(IntegratorKind::Moreau).len();
     assert_eq!(refused_rows, steps, "{csv}");
     assert!(csv.lines().any(|l| l.contains(",inaccurate,")), "{csv}");
     let image = bench::work_precision_chart(&report).unwrap();
@@ -89,6 +107,10 @@ fn stability_on_the_tank_refuses_the_kick_schemes_and_bounds_rk4_near_its_predic
         match r.name.as_str() {
             "symplectic-euler" | "verlet" => {
                 assert_refused_for_terms(r.refused.as_deref().unwrap());
+                assert_eq!(r.critical_dt, 0.0);
+            }
+            "moreau" => {
+                assert_refused_without_ribbons(r.refused.as_deref().unwrap());
                 assert_eq!(r.critical_dt, 0.0);
             }
             _ => assert!(r.refused.is_none() && r.critical_dt > 0.0, "{r:?}"),

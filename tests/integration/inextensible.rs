@@ -75,8 +75,10 @@ fn stretch_range(sc: &Scenario, cfg: &IntegratorConfig) -> (f64, f64, sim::Traje
 fn inextensible_ribbons_stretch_less_than_stiff_ones_and_do_go_slack() {
     // The catalogue's tank at 0.2 Hz over 10 s, by Moreau at 0.4 τ,
     // looked at every 2 τ: no ribbon is longer than its length by more
-    // than 2e-3 s (0.1 mm on a 5 cm plate) nor by more than half what the
-    // stiff ribbons stretch in the same run; some are slack by more than
+    // than 3e-3 s (0.15 mm on a 5 cm plate; measured 1.7e-3, the drift
+    // kept from growing but not taken back) nor by more than half what
+    // the stiff ribbons stretch in the same run (4.9e-3); some are slack
+    // by more than
     // 1e-2 s (the ribbons only pull); every plate turns over in turn and
     // ends upside down.
     let sc = scenario(&tank("inextensible", WATER, 0.2, 10.0, 11));
@@ -87,7 +89,7 @@ fn inextensible_ribbons_stretch_less_than_stiff_ones_and_do_go_slack() {
         "L − ℓ from {slackest:.3e} to {longest:.3e} s; stiff ribbons to {stiff_longest:.3e} s"
     );
     assert!(
-        longest < 2e-3 && longest < 0.5 * stiff_longest,
+        longest < 3e-3 && longest < 0.5 * stiff_longest,
         "{longest} {stiff_longest}"
     );
     assert!(slackest < -1e-2, "{slackest}");
@@ -107,11 +109,11 @@ fn inextensible_ribbons_stretch_less_than_stiff_ones_and_do_go_slack() {
 #[test]
 fn moreaus_run_converges_in_its_step() {
     // At 0.4 and 0.1 τ against 0.025 τ: blocks 2 to 6 arrive within
-    // 0.5 % of their times (measured 0.28 %), and the whole-chain speed is
-    // within 2 % (measured 1.5 %). From block 7 on, the arrivals fall on
-    // one of two branches some 20 τ apart at every step from 0.8 to
-    // 0.0125 τ, not converging with the step (docs/experiments.md,
-    // "Inextensible ribbons"); they are left to the speed.
+    // 0.5 % of their times (measured 0.22 % and 0.06 %), and the
+    // whole-chain speed is within 2 % (measured 0.6 % and 1.0 %). The
+    // last blocks' arrivals, at the free end, still move by tens of τ
+    // between steps (docs/experiments.md, "Inextensible ribbons"); they
+    // are left to the speed.
     let sc = scenario(&tank("inextensible", WATER, 0.2, 10.0, 11));
     let (fine, c_fine) = arrivals(&sc, &moreau(0.025));
     for h in [0.4, 0.1] {
@@ -141,7 +143,7 @@ fn moreaus_energy_budget_closes_at_first_order() {
     // ΔE = W − D, W the work through block 1 (the drive's, smooth and
     // impulsive), D drag's and the impulses' loss (`integrators::moreau`).
     // Moreau's scheme is first order: a sixteenth of the step, about a
-    // sixteenth of the residual (measured 3.0e-4 and 1.8e-5 of W at 0.4
+    // sixteenth of the residual (measured 2.4e-4 and 1.7e-5 of W at 0.4
     // and 0.025 τ). Without drag the plates clatter, which Moreau's steps
     // do not integrate.
     let r: Vec<f64> = [0.4, 0.025]
@@ -165,11 +167,9 @@ fn moreaus_energy_budget_closes_at_first_order() {
 fn a_mirrored_inextensible_apparatus_moves_as_the_mirror_image() {
     // As tests/ribbons.rs: y → −y, each ribbon on the other face, block
     // 1 turned the other way round. Moreau's steps see the same problems
-    // mirrored, but not the same rounding (π − θ is not exact): blocks 2
-    // and 3 arrive within 1e-8 of their times (measured 2e-12 and 5e-10),
-    // the later ones within 1e-3 (measured up to 2.2e-4: the rounding
-    // grows down the chain, which the stiff ribbons' RK4 keeps within
-    // 1e-6, tests/ribbons.rs), every final position within 1e-2 s.
+    // mirrored, but not the same rounding (π − θ is not exact): every
+    // arrival agrees within 1e-7 of its time (measured at most 1e-8), every
+    // final position within 1e-6 s.
     let keys = "added_mass = true\ndrag = true\n";
     let sc = scenario(&tank("inextensible", keys, 0.4, 10.0, 6));
     let mirrored = scenario(&tank(
@@ -189,8 +189,7 @@ fn a_mirrored_inextensible_apparatus_moves_as_the_mirror_image() {
     println!("{:?}\n{:?}", a.arrival_times, b.arrival_times);
     for (n, (x, y)) in a.arrival_times.iter().zip(&b.arrival_times).enumerate() {
         let (x, y) = (x.unwrap(), y.unwrap());
-        let tol = if n < 3 { 1e-8 } else { 1e-3 };
-        assert!((x - y).abs() < tol * x, "block {}: {x} {y}", n + 1);
+        assert!((x - y).abs() < 1e-7 * x, "block {}: {x} {y}", n + 1);
     }
     let (qa, qb) = (&a.final_state.q, &b.final_state.q);
     for i in 0..sc.ladder.n() {
@@ -205,8 +204,8 @@ fn a_mirrored_inextensible_apparatus_moves_as_the_mirror_image() {
 #[test]
 fn inextensible_and_stiff_ribbons_give_the_kink_the_same_speed_within_two_percent() {
     // The stiff ribbons (κ = k, dopri5) against the inextensible ones
-    // over the catalogue's 10 s at 0.2 Hz: measured −0.29 % at h = 0.4 τ
-    // (−1.4 to +0.5 % over h = 0.8 to 0.0125 τ). The stiff ribbons' k is
+    // over the catalogue's 10 s at 0.2 Hz: measured −0.19 % at h = 0.4 τ
+    // (−1.2 to +0.4 % over h = 0.8 to 0.0125 τ). The stiff ribbons' k is
     // finite (docs/experiments.md, "Inextensible ribbons").
     let inext = scenario(&tank("inextensible", WATER, 0.2, 10.0, 11));
     let stiff = scenario(&tank("stiff", WATER, 0.2, 10.0, 11));
@@ -269,4 +268,30 @@ fn what_moreau_cannot_integrate_is_refused_and_a_touch_stops_the_run() {
     let (code, line) = simulate_file("toy", &toy, &["--integrator", "moreau", "--dt", "0.02"]);
     assert_eq!(code, Some(1), "{line}");
     assert!(line.contains("touch") && line.contains("dopri5"), "{line}");
+}
+
+#[test]
+fn moreaus_state_converges_with_its_step() {
+    // A short run (N = 4, 0.4 Hz, 1 s: block 1 turning, the ribbons going
+    // slack and jerked taut) at h = 0.4 τ halved four times, against h =
+    // 0.4/256 τ: the error of the final positions falls at every halving,
+    // and by more than 4 over the 16 (measured 2.1e-3 to 3.7e-4, 5.8:
+    // order 0.6, below the first order of a time-stepping with impacts;
+    // docs/experiments.md, "Inextensible ribbons").
+    let sc = scenario(&tank("inextensible", WATER, 0.4, 1.0, 4));
+    let end = |h: f64| sim::simulate(&sc, &[], &moreau(h)).unwrap().final_state.q;
+    let reference = end(0.4 / 256.0);
+    let err = |h: f64| -> f64 {
+        let q = end(h);
+        q.iter()
+            .zip(&reference)
+            .fold(0.0, |m, (a, b)| m.max((a - b).abs()))
+    };
+    let e: Vec<f64> = [0.4, 0.2, 0.1, 0.05, 0.025]
+        .iter()
+        .map(|&h| err(h))
+        .collect();
+    println!("errors {e:?}");
+    assert!(e.windows(2).all(|w| w[1] < w[0]), "{e:?}");
+    assert!(e[0] > 4.0 * e[4], "{e:?}");
 }

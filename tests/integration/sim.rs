@@ -128,7 +128,12 @@ fn max_diff(a: &[f64], b: &[f64]) -> f64 {
 #[test]
 fn integrators_converge_at_their_order() {
     let reference = smooth_run(IntegratorKind::Dopri5, 1e-3);
-    for kind in IntegratorKind::ALL {
+    // Moreau's time-stepping takes inextensible ribbons only; its order is
+    // measured on them (tests/inextensible.rs).
+    for kind in IntegratorKind::ALL
+        .into_iter()
+        .filter(|k| *k != IntegratorKind::Moreau)
+    {
         let coarse = match kind.order() {
             1 => 0.01,
             2 => 0.02,
