@@ -326,7 +326,7 @@ pub fn work_precision_chart(report: &WorkPrecisionReport) -> Result<Pixmap> {
     }
     let first = &report.scenes[0];
     let title = format!(
-        "Work–precision of the five integrators (N = {}, {} τ; reference: {})",
+        "Work–precision of the integrators (N = {}, {} τ; reference: {})",
         first.n,
         if first.t_end >= 100.0 {
             format!("{:.0}", first.t_end)

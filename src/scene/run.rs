@@ -14,7 +14,7 @@ pub enum Method {
     /// scene's tolerance.
     #[default]
     Auto,
-    /// One of the five schemes, at the scene's `dt` (or `rtol`).
+    /// One of the named schemes, at the scene's `dt` (or `rtol`).
     Fixed(IntegratorKind),
 }
 
