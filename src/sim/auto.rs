@@ -18,6 +18,7 @@
 //! never computes past the cap. Every halving down to dt / 2^[`MAX_HALVINGS`]
 //! would be about 2^11 − 1 = 2047 times the first run.
 
+use super::integrators::AUTO_DT;
 use super::{Cost, IntegratorConfig, IntegratorKind, RunOptions, Scenario, Trajectory, check_cost};
 use crate::error::{Error, Result, num};
 use crate::limits::{Limits, Resource};
@@ -270,6 +271,7 @@ pub fn worst_case(
     omega_max: f64,
     limits: &Limits,
 ) -> Result<Budget> {
+    refuse_inextensible(scenario)?;
     let dt = IntegratorConfig::auto(omega_max).dt;
     let mut total = check_cost(scenario, samples, &scheme(scenario, dt), limits)?;
     let second = check_cost(scenario, samples, &scheme(scenario, 0.5 * dt), limits)?;
@@ -322,6 +324,24 @@ pub fn worst_case(
         dt,
         first_pair,
     })
+}
+
+/// `auto` does not take inextensible ribbons: Moreau's step converges at
+/// first order at best, and the arrivals at the free end move by tens of
+/// τ between steps, so halving until they agree within a tolerance would
+/// spend the budget and fail (docs/experiments.md, "Inextensible
+/// ribbons"). Refused before any run, naming the step that holds.
+fn refuse_inextensible(scenario: &Scenario) -> Result<()> {
+    if scheme(scenario, AUTO_DT).kind != IntegratorKind::Moreau {
+        return Ok(());
+    }
+    Err(Error::bad_input(
+        "the auto integrator cannot verify inextensible ribbons' runs (Moreau's step \
+         converges at first order at best, and the free end's arrivals move by tens of τ \
+         between steps); name the integrator and its step: moreau at 0.05 τ holds the tank's \
+         speeds within 2 % (docs/experiments.md)"
+            .to_string(),
+    ))
 }
 
 /// The scheme `auto` runs at step `dt`: velocity Verlet, or classical RK4

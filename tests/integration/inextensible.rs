@@ -246,6 +246,11 @@ fn what_moreau_cannot_integrate_is_refused_and_a_touch_stops_the_run() {
         line.contains("inextensible") && line.contains("moreau"),
         "{line}"
     );
+    // `auto` cannot verify them (first order, the free end's arrivals):
+    // refused before any run, naming the step that holds.
+    let (code, line) = simulate_file("auto", &inext, &["--integrator", "auto"]);
+    assert_eq!(code, Some(2), "{line}");
+    assert!(line.contains("moreau at 0.05 τ"), "{line}");
     let stiff = tank("stiff", WATER, 0.2, 1.0, 4);
     let (code, line) = simulate_file("moreau", &stiff, &["--integrator", "moreau"]);
     assert_eq!(code, Some(2), "{line}");
