@@ -51,6 +51,14 @@ pub(crate) fn with_divergence_hint(e: Error, scene: &Scene, words: Words) -> Err
     let auto = words.auto();
     let hint = if kind == IntegratorKind::Dopri5 && scene.run.rtol.is_some() {
         format!("use a smaller {}, or {auto}", words.rtol())
+    } else if kind == IntegratorKind::Moreau {
+        // Inextensible ribbons: no linear bound (the ribbons act by
+        // impulses), and `auto` refuses them.
+        format!(
+            "use a smaller {}: 0.05 τ holds the tank's speeds within 2 % \
+             (docs/experiments.md, \"Inextensible ribbons\")",
+            words.dt()
+        )
     } else {
         let dt = words.dt();
         match scenes::run::critical_step(scene, kind) {

@@ -251,6 +251,25 @@ fn what_moreau_cannot_integrate_is_refused_and_a_touch_stops_the_run() {
     let (code, line) = simulate_file("auto", &inext, &["--integrator", "auto"]);
     assert_eq!(code, Some(2), "{line}");
     assert!(line.contains("moreau at 0.05 τ"), "{line}");
+    // A step so long that the run blows up: the hint names the step that
+    // holds, not `auto` (which refuses these ribbons) nor a linear bound.
+    let long = tank("inextensible", WATER, 0.2, 10.0, 11);
+    let (code, line) = simulate_file(
+        "diverged",
+        &long,
+        &["--integrator", "moreau", "--dt", "1e6"],
+    );
+    assert_eq!(code, Some(1), "{line}");
+    assert!(line.contains("0.05 τ") && !line.contains("auto"), "{line}");
+    // A word the key does not take: one line naming what it takes.
+    let elastic = inext.replace("\"inextensible\"", "\"elastic\"");
+    let (code, line) = simulate_file("elastic", &elastic, &["--integrator", "moreau"]);
+    assert_eq!(code, Some(2), "{line}");
+    assert!(
+        line.contains("must be \"stiff\", \"inextensible\""),
+        "{line}"
+    );
+    assert!(line.contains("got \"elastic\""), "{line}");
     let stiff = tank("stiff", WATER, 0.2, 1.0, 4);
     let (code, line) = simulate_file("moreau", &stiff, &["--integrator", "moreau"]);
     assert_eq!(code, Some(2), "{line}");

@@ -39,6 +39,7 @@ mod scenario;
 pub use convert::Conversion;
 pub use figures::{ExperimentFigure, ExperimentSpec};
 
+use serde::de::Error as _;
 use serde::{Deserialize, Serialize};
 
 /// The medium the ladder moves in.
@@ -85,11 +86,33 @@ pub const CONTACT_STIFFNESS: f64 = 1000.0;
 pub const SLIP_SPEED: f64 = 1e-4;
 
 /// "stiff", "inextensible" (ribbons only) or a stiffness in N/m.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum Stiffness {
     NewtonPerMetre(f64),
     Word(StiffWord),
+}
+
+impl<'de> Deserialize<'de> for Stiffness {
+    /// A number, or one of the words; anything else one line naming
+    /// what the key takes (serde's untagged enums say only that no
+    /// variant matched).
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Raw {
+            Number(f64),
+            Word(String),
+        }
+        let expected = "\"stiff\", \"inextensible\" (ribbons only) or a stiffness in N/m";
+        let bad = |got: &str| D::Error::custom(format!("must be {expected}, got {got}"));
+        match Raw::deserialize(d).map_err(|_| bad("another kind of value"))? {
+            Raw::Number(k) => Ok(Self::NewtonPerMetre(k)),
+            Raw::Word(w) if w == "stiff" => Ok(Self::Word(StiffWord::Stiff)),
+            Raw::Word(w) if w == "inextensible" => Ok(Self::Word(StiffWord::Inextensible)),
+            Raw::Word(w) => Err(bad(&format!("\"{w}\""))),
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
