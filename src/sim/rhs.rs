@@ -77,6 +77,8 @@ pub struct Rhs<'a> {
     /// The blocks' frames and which are free, for the tensions' solve.
     frame_list: Vec<([f64; 2], [f64; 2])>,
     free: Vec<bool>,
+    /// The blocks' poses at the end of a step, for Moreau's touch check.
+    touch_poses: Vec<Pose>,
 }
 
 impl<'a> Rhs<'a> {
@@ -116,6 +118,7 @@ impl<'a> Rhs<'a> {
                 .map(|_| Taut::default()),
             frame_list: Vec::new(),
             free: Vec::new(),
+            touch_poses: Vec::new(),
         }
     }
 
@@ -367,11 +370,17 @@ impl<'a> Rhs<'a> {
 
     /// The first pair of blocks (upper, lower; 0-based) in contact at
     /// (q, v), where the ladder as built has contact.
-    pub fn first_touch(&self, q: &[f64], v: &[f64]) -> Option<(usize, usize)> {
+    pub fn first_touch(&mut self, q: &[f64], v: &[f64]) -> Option<(usize, usize)> {
         let b = self.ladder.built.as_ref()?;
         let c = b.contact.as_ref()?;
+        // The poses at q in scratch kept for it (`poses` holds the last
+        // evaluation's, the midpoint's).
+        self.touch_poses.clear();
+        self.touch_poses
+            .extend((0..self.ladder.n()).map(|i| Pose::of(q, i)));
         let mut first = None;
-        c.for_each_touch(self.ladder.blocks(), &b.ribbons.outline, q, v, |t| {
+        let (blocks, outline) = (self.ladder.blocks(), &b.ribbons.outline);
+        c.for_each_touch_posed(blocks, outline, &self.touch_poses, v, |t| {
             first.get_or_insert((t.a.min(t.b), t.a.max(t.b)));
         });
         first

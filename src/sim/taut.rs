@@ -69,6 +69,9 @@ pub struct Taut {
     active: Vec<bool>,
     a: Vec<f64>,
     b: Vec<f64>,
+    /// The active ribbons' positions and their solution (scratch).
+    pos: Vec<usize>,
+    sol: Vec<f64>,
     /// Ribbon-steps with an impulse, problems A could not solve
     /// (singular), active-set iterations.
     pub impulses: u64,
@@ -127,19 +130,22 @@ impl Taut {
     /// A is singular there.
     fn solve_active(&mut self) -> bool {
         let m = self.index.len();
-        let pos: Vec<usize> = (0..m).filter(|&x| self.active[x]).collect();
-        let p = pos.len();
+        self.pos.clear();
+        self.pos.extend((0..m).filter(|&x| self.active[x]));
+        let p = self.pos.len();
         self.a.clear();
-        for &x in &pos {
-            self.a.extend(pos.iter().map(|&y| self.full[x * m + y]));
+        for &x in &self.pos {
+            self.a
+                .extend(self.pos.iter().map(|&y| self.full[x * m + y]));
         }
-        let mut sol: Vec<f64> = pos.iter().map(|&x| self.rhs[x]).collect();
-        if !solve_banded(&mut self.a, &mut sol, p, 3) {
+        self.sol.clear();
+        self.sol.extend(self.pos.iter().map(|&x| self.rhs[x]));
+        if !solve_banded(&mut self.a, &mut self.sol, p, 3) {
             return false;
         }
         self.b.clear();
         self.b.resize(m, 0.0);
-        for (x, l) in pos.into_iter().zip(sol) {
+        for (&x, &l) in self.pos.iter().zip(&self.sol) {
             self.b[x] = l;
         }
         true
