@@ -1,7 +1,12 @@
-//! Probe of the leaning start (docs/rings.md, "The leaning start"):
-//! settles the chain from a leaning guess, then turns or releases the
-//! top ring and prints each ring's n_z at rest, the flips and the waves.
+//! Probe of a settled start (docs/rings.md, "The leaning start" and "The
+//! tumbling rings"): settles the chain from a leaning guess (the double
+//! chain) or from the tumbling rings' guess (`tumbling`), then turns or
+//! releases the top ring (or lifts the other strand's, `lift=`) and
+//! prints each ring's n_z, azimuth and height, the flips and the waves.
+//! `EVERY=0.02` prints every 0.02 s; `DBGEND=1` lists the touches at the
+//! end.
 //! `cargo run --release --example rings_wave_probe -- n=12 t=2 lean=30 squeeze=0.8 tapes release`
+//! `cargo run --release --example rings_wave_probe -- tumbling n=30 t=3 start=0.1 release mu=0.2 [tapes]`
 use jacobs_ladder::rings::observe::{self, FlipTracker};
 use jacobs_ladder::rings::{self, RingChain, settle};
 
@@ -16,8 +21,17 @@ fn main() {
             "t" => chain.t_end = num(),
             "lean" => lean = num(),
             "squeeze" => squeeze = num(),
+            "tumbling" => chain.topology = Some(rings::Topology::Tumbling),
             "tapes" => tapes = true,
             "release" => chain.release = true,
+            "lift" => {
+                chain.alternate = Some(rings::alternate::Alternate {
+                    start: chain.turn.start,
+                    period: 10.0,
+                    count: 1,
+                    lift: num(),
+                })
+            }
             "mirror" => chain.mirror = true,
             "angle" => chain.turn.angle = num(),
             "az" => chain.turn.azimuth = num(),
@@ -32,7 +46,12 @@ fn main() {
         chain.tapes = chain.odd_strand_tapes();
     }
     let t0 = std::time::Instant::now();
-    let (mut sys, done) = match settle::leaning(&chain, lean, squeeze) {
+    let started = if chain.is_tumbling() {
+        rings::run::start(&chain).map(|(s, d)| (s, d.expect("the tumbling rings settle")))
+    } else {
+        settle::leaning(&chain, lean, squeeze)
+    };
+    let (mut sys, done) = match started {
         Ok(x) => x,
         Err(e) => {
             println!("settle failed: {e}");
@@ -81,7 +100,12 @@ fn main() {
     let mut tracker = FlipTracker::new(sys.n());
     tracker.observe(sys.t, &rings::run::normals(&sys.bodies));
     let steps = (chain.t_end / sys.dt).ceil() as u64;
-    let every = (0.25 / sys.dt).round() as u64;
+    let every = (std::env::var("EVERY")
+        .ok()
+        .and_then(|v| v.parse::<f64>().ok())
+        .unwrap_or(0.25)
+        / sys.dt)
+        .round() as u64;
     for k in 1..=steps {
         if let Err(e) = sys.step() {
             println!("failed: {e}");
@@ -96,6 +120,37 @@ fn main() {
         }
         if k % every == 0 {
             show(&sys, "at");
+        }
+    }
+    if std::env::var("DBGEND").is_ok() {
+        let rots: Vec<_> = sys.bodies.iter().map(|b| b.q.matrix()).collect();
+        for (i, j, t) in sys.touches(&rots) {
+            let c = |k: usize| sys.bodies[k].x;
+            println!(
+                "touch {i} {j} d/r {:.3} at z {:.1} mm (centres {:.1} {:.1}) point rel i ({:.1},{:.1},{:.1}) j ({:.1},{:.1},{:.1})",
+                t.d / chain.tube_radius,
+                t.p[2] * 1e3,
+                c(i)[2] * 1e3,
+                c(j)[2] * 1e3,
+                (t.p[0] - c(i)[0]) * 1e3,
+                (t.p[1] - c(i)[1]) * 1e3,
+                (t.p[2] - c(i)[2]) * 1e3,
+                (t.q[0] - c(j)[0]) * 1e3,
+                (t.q[1] - c(j)[1]) * 1e3,
+                (t.q[2] - c(j)[2]) * 1e3
+            );
+        }
+        let n = rings::run::normals(&sys.bodies);
+        for (k, b) in sys.bodies.iter().enumerate() {
+            println!(
+                "ring {k} x ({:.1},{:.1},{:.1}) n ({:+.2},{:+.2},{:+.2})",
+                b.x[0] * 1e3,
+                b.x[1] * 1e3,
+                b.x[2] * 1e3,
+                n[k][0],
+                n[k][1],
+                n[k][2]
+            );
         }
     }
     for f in &tracker.flips {

@@ -3,7 +3,9 @@
 //! chain (ring k linked with k + 1 and k + 2, the default) s = R − r and
 //! β = 45°: ring k rests on ring k − 2 of its own strand (their wires
 //! touch) and passes loosely through ring k − 1 of the other; for a
-//! single chain (k with k + 1) s = 2(R − r) and β = 90°. The built chain
+//! single chain (k with k + 1) s = 2(R − r) and β = 90°; the tumbling
+//! rings (k with k + 2, 2j with 2j + 1) are a guess the run lets settle
+//! ([`tumbling_guess`]). The built chain
 //! must realise the topology asked, pair by pair, or the scene is refused.
 //! Tapes join two rings at their crossing (docs/rings.md).
 
@@ -75,6 +77,9 @@ pub fn build(chain: &RingChain) -> Result<System> {
 /// Each ring's pose in the chain as built (unmirrored, at rest): ring k
 /// at depth k·s below the held ring, its plane vertical, turned k·β.
 pub fn as_built(chain: &RingChain) -> Vec<Body> {
+    if chain.is_tumbling() {
+        return tumbling_guess(chain);
+    }
     let (s, beta) = layout(chain);
     let tilt = Quat::axis_angle([0.0, 1.0, 0.0], std::f64::consts::FRAC_PI_2);
     (0..chain.n)
@@ -83,6 +88,41 @@ pub fn as_built(chain: &RingChain) -> Vec<Body> {
             v: [0.0; 3],
             q: Quat::axis_angle([0.0, 0.0, 1.0], beta * k as f64).mul(tilt),
             l: [0.0; 3],
+        })
+        .collect()
+}
+
+/// The tumbling rings' guess (not at rest: the run settles it): each
+/// strand a simple chain on its own vertical axis, its rings 1.6 R apart
+/// and turned 90° from one to the next; the even strand on the held
+/// ring's axis (ring 0 facing x, as the double chain's), the odd strand on
+/// an axis (R/2, R/2) beside it and half a spacing lower, each odd ring
+/// 2j + 1 turned 90° from ring 2j so that it passes through it (the rung)
+/// and lies parallel to ring 2j + 2 (no link).
+pub fn tumbling_guess(chain: &RingChain) -> Vec<Body> {
+    let r = chain.major_radius;
+    let p = 1.6 * r;
+    let tilt = Quat::axis_angle([0.0, 1.0, 0.0], std::f64::consts::FRAC_PI_2);
+    let z0 = if chain.held.is_multiple_of(2) {
+        -p * (chain.held / 2) as f64
+    } else {
+        -p * (chain.held / 2) as f64 - 0.5 * p
+    };
+    (0..chain.n)
+        .map(|k| {
+            let j = k / 2;
+            let (x, z, quarter) = if k.is_multiple_of(2) {
+                ([0.0, 0.0], -p * j as f64, j)
+            } else {
+                ([0.5 * r, 0.5 * r], -p * j as f64 - 0.5 * p, j + 1)
+            };
+            let azimuth = std::f64::consts::FRAC_PI_2 * (quarter % 2) as f64;
+            Body {
+                x: [x[0], x[1], z - z0],
+                v: [0.0; 3],
+                q: Quat::axis_angle([0.0, 0.0, 1.0], azimuth).mul(tilt),
+                l: [0.0; 3],
+            }
         })
         .collect()
 }
@@ -143,8 +183,9 @@ fn check_topology(sys: &System) -> Result<()> {
             if built != sys.is_linked(i, j) {
                 return Err(Error::bad_input(format!(
                     "rings: the links {} rings {i} and {j}, but the chain as built ({}) {} them; \
-                     the program builds the double chain (ring k linked with k + 1 and k + 2) \
-                     and the single chain (k with k + 1)",
+                     the program builds the double chain (ring k linked with k + 1 and k + 2), \
+                     the tumbling rings (k with k + 2, 2j with 2j + 1) and the single chain \
+                     (k with k + 1)",
                     if built { "leave apart" } else { "interlock" },
                     "each ring hanging through the ones above it",
                     if built { "links" } else { "does not link" },

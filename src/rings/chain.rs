@@ -33,10 +33,15 @@ pub struct RingChain {
     /// Penalty stiffness, as the overlap (a fraction of r) that the weight
     /// of the whole chain makes at one contact. Default 0.05.
     pub overlap: f64,
-    /// Linked pairs (ring indices from 0, the top ring). Default: ring k
-    /// with k + 1 and k + 2.
+    /// Linked pairs (ring indices from 0, the top ring). Default: those
+    /// of `topology`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub links: Option<Vec<[usize; 2]>>,
+    /// The links by name, when `links` is not given: "double" (ring k
+    /// with k + 1 and k + 2) or "tumbling" (k with k + 2, and 2j with
+    /// 2j + 1: Gardner's tumbling rings, docs/rings.md). Default "double".
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub topology: Option<Topology>,
     /// Taped pairs. Default: none.
     pub tapes: Vec<[usize; 2]>,
     /// What a tape is: "weld" (the two rings move as one body) or "link"
@@ -75,6 +80,20 @@ pub struct RingChain {
     /// ring of one of two strands alternately"). Default none.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub alternate: Option<super::alternate::Alternate>,
+}
+
+/// The chain's links by name (`topology` in `[rings]`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Topology {
+    /// Ring k linked with k + 1 and k + 2: every ring threaded by its two
+    /// neighbours of the other strand.
+    Double,
+    /// Ring k linked with k + 2 (each strand a simple chain) and ring 2j
+    /// with 2j + 1 (a rung every other ring): the tumbling rings of
+    /// magicians (Gardner's "Afghan rings"), the key-ring chain the paper
+    /// cites for Fig. 4b.
+    Tumbling,
 }
 
 /// What a tape does to the two rings it joins.
@@ -126,6 +145,7 @@ impl Default for RingChain {
             slip_speed: 0.05,
             overlap: 0.05,
             links: None,
+            topology: None,
             tapes: Vec::new(),
             tape: TapeKind::Weld,
             held: 0,
@@ -147,9 +167,10 @@ pub const MAX_RINGS: usize = 400;
 impl RingChain {
     /// The linked pairs, `i < j`, sorted: as given, or the default.
     pub fn linked_pairs(&self) -> Vec<[usize; 2]> {
-        let mut pairs: Vec<[usize; 2]> = match &self.links {
-            Some(l) => l.iter().map(|&[a, b]| [a.min(b), a.max(b)]).collect(),
-            None => (0..self.n)
+        let mut pairs: Vec<[usize; 2]> = match (&self.links, self.topology) {
+            (Some(l), _) => l.iter().map(|&[a, b]| [a.min(b), a.max(b)]).collect(),
+            (None, Some(Topology::Tumbling)) => Self::tumbling_links(self.n),
+            (None, _) => (0..self.n)
                 .flat_map(|k| [[k, k + 1], [k, k + 2]])
                 .filter(|p| p[1] < self.n)
                 .collect(),
@@ -157,6 +178,24 @@ impl RingChain {
         pairs.sort();
         pairs.dedup();
         pairs
+    }
+
+    /// The tumbling rings' links (Gardner's "Afghan rings", the chain of
+    /// key rings the paper cites): ring k with k + 2 (each strand a simple
+    /// chain) and ring 2j with 2j + 1 (a rung every other ring).
+    pub fn tumbling_links(n: usize) -> Vec<[usize; 2]> {
+        let mut pairs: Vec<[usize; 2]> = (0..n)
+            .flat_map(|k| [[k, k + 1], [k, k + 2]])
+            .filter(|p| p[1] < n && (p[1] == p[0] + 2 || p[0].is_multiple_of(2)))
+            .collect();
+        pairs.sort();
+        pairs
+    }
+
+    /// Whether the chain's links are the tumbling rings'.
+    /// (At least 4 rings: below that the links are no two strands.)
+    pub fn is_tumbling(&self) -> bool {
+        self.n >= 4 && self.linked_pairs() == Self::tumbling_links(self.n)
     }
 
     /// The strand of ring k (0 or 1): rings of one parity.
@@ -243,6 +282,7 @@ impl RingChain {
             return bad(format!("t_end must be at most 600 s, got {}", self.t_end));
         }
         self.check_turn()?;
+        self.check_tumbling()?;
         self.check_pairs()?;
         if let Some(l) = &self.leaning {
             l.validated()?;
@@ -269,10 +309,34 @@ impl RingChain {
         Ok(())
     }
 
+    /// Refuses `links` beside `topology` (two answers to one question),
+    /// and the leaning start on the tumbling rings (its guess leans the
+    /// double chain as built).
+    fn check_tumbling(&self) -> Result<()> {
+        if self.links.is_some() && self.topology.is_some() {
+            return Err(Error::bad_input(
+                "rings: links and topology both say which rings interlock: give one".to_string(),
+            ));
+        }
+        if self.topology == Some(Topology::Tumbling) && self.n < 4 {
+            return Err(Error::bad_input(format!(
+                "rings: the tumbling rings need at least 4 rings (two strands), got n = {}",
+                self.n
+            )));
+        }
+        if self.is_tumbling() && self.leaning.is_some() {
+            return Err(Error::bad_input(
+                "rings: the tumbling rings always settle from their own guess; leaning leans                  the double chain: leave it out"
+                    .to_string(),
+            ));
+        }
+        Ok(())
+    }
+
     /// Refuses what the alternating hand cannot do: a value out of its
     /// keys' ranges, a second hand (`release`), or a chain that is not the
-    /// double chain (ring k linked with k + 1 and k + 2), whose two strands
-    /// are the even and the odd rings.
+    /// double chain (ring k linked with k + 1 and k + 2) or the tumbling
+    /// rings, whose two strands are the even and the odd rings.
     fn check_alternate(&self) -> Result<()> {
         let Some(a) = &self.alternate else {
             return Ok(());
@@ -285,12 +349,14 @@ impl RingChain {
         }
         let double = RingChain {
             links: None,
+            topology: None,
             ..self.clone()
         };
-        if self.linked_pairs() != double.linked_pairs() {
+        if self.linked_pairs() != double.linked_pairs() && !self.is_tumbling() {
             return Err(Error::bad_input(
                 "rings: alternate passes the hand between the two strands of the double chain \
-                 (ring k linked with k + 1 and k + 2), and these links are not it"
+                 (ring k linked with k + 1 and k + 2) or of the tumbling rings, and these links \
+                 are neither"
                     .to_string(),
             ));
         }
@@ -369,8 +435,9 @@ impl RingChain {
     /// "30 rings, R = 12.5 mm, r = 1 mm, e = 0.6, μ = 0.57, 14 tapes".
     pub fn parameters(&self) -> String {
         format!(
-            "{} rings, R = {} mm, r = {} mm, e = {}, μ = {}{}{}",
+            "{} {}rings, R = {} mm, r = {} mm, e = {}, μ = {}{}{}",
             self.n,
+            if self.is_tumbling() { "tumbling " } else { "" },
             self.major_radius * 1e3,
             self.tube_radius * 1e3,
             self.restitution,

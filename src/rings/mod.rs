@@ -28,5 +28,5 @@ pub mod start;
 pub mod system;
 pub mod warm;
 
-pub use chain::{RingChain, TapeKind, Turn};
+pub use chain::{RingChain, TapeKind, Topology, Turn};
 pub use run::{RingRun, Sample, run};

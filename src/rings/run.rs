@@ -53,9 +53,14 @@ pub struct RingRun {
 }
 
 /// The system at t = 0: the chain as built, or settled from its leaning
-/// start (docs/rings.md, "The leaning start").
+/// start (docs/rings.md, "The leaning start") or, for the tumbling rings,
+/// from their guess ("The tumbling rings").
 pub fn start(chain: &RingChain) -> Result<(System, Option<Settled>)> {
     match &chain.leaning {
+        None if chain.is_tumbling() => {
+            let (sys, done) = settle::settled_from(chain, settle::tumbling_guess(chain)?)?;
+            Ok((sys, Some(done)))
+        }
         None => Ok((build::build(chain)?, None)),
         Some(l) => {
             let (sys, done) = settle::leaning(chain, l.angle, l.squeeze)?;
@@ -68,6 +73,7 @@ pub fn start(chain: &RingChain) -> Result<(System, Option<Settled>)> {
 /// leaning start's guess realises its topology.
 pub fn check(chain: &RingChain) -> Result<()> {
     match &chain.leaning {
+        None if chain.is_tumbling() => settle::tumbling_guess(chain).map(drop),
         None => build::build(chain).map(drop),
         Some(l) => settle::guess(chain, l.angle, l.squeeze).map(drop),
     }

@@ -24,6 +24,11 @@ pub const RATE: f64 = 20.0;
 pub const REST_SPEED: f64 = 1e-2;
 /// The longest settle, s of chain time; a chain not at rest by then fails.
 pub const MAX_TIME: f64 = 4.0;
+/// The shortest settle, s of chain time: a guess starts at rest, and its
+/// rings take about √(4R/g) = 0.07 s (R = 12.5 mm) to fall onto one
+/// another; before that the rest test would end it at once (the 30-ring
+/// tumbling chain's guess was "at rest" after 20 steps, 6 mm/s).
+pub const MIN_TIME: f64 = 0.2;
 
 /// How a settle ended (the data file's `rings.settled`).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
@@ -93,7 +98,7 @@ pub fn settle(sys: &mut System) -> Result<Settled> {
             .filter(|&k| k != held)
             .map(|k| speed(sys, k, &sys.bodies[k].q.matrix()))
             .fold(0.0, f64::max);
-        if fastest < REST_SPEED {
+        if fastest < REST_SPEED && sys.t >= MIN_TIME {
             break fastest;
         }
         if sys.t > MAX_TIME {
@@ -150,10 +155,22 @@ pub fn guess(chain: &RingChain, lean: f64, squeeze: f64) -> Result<System> {
     })
 }
 
+/// The tumbling rings' guess assembled (no tapes, not settled): the
+/// tapes are pinned where the settled rings cross.
+pub fn tumbling_guess(chain: &RingChain) -> Result<System> {
+    chain.validated()?;
+    build::assemble(chain, build::as_built(chain), false)
+}
+
 /// The chain settled from the leaning guess, its tapes pinned where the
 /// settled rings cross, ready to run from t = 0.
 pub fn leaning(chain: &RingChain, lean: f64, squeeze: f64) -> Result<(System, Settled)> {
-    let mut sys = guess(chain, lean, squeeze)?;
+    settled_from(chain, guess(chain, lean, squeeze)?)
+}
+
+/// The chain settled from the guess `sys` (assembled without tapes), its
+/// tapes pinned where the settled rings cross, ready to run from t = 0.
+pub fn settled_from(chain: &RingChain, mut sys: System) -> Result<(System, Settled)> {
     let done = settle(&mut sys)?;
     let mut bodies = sys.bodies.clone();
     if chain.mirror {

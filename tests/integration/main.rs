@@ -62,6 +62,7 @@ mod rings_alternate;
 mod rings_captions;
 mod rings_modes;
 mod rings_settle;
+mod rings_tumbling;
 mod scene_files;
 mod scene_fuzz;
 mod scenes;

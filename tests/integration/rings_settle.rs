@@ -155,15 +155,21 @@ fn a_bad_lean_is_refused() {
         let text = format!(
             "name = \"lean\"\n[rings]\nn = 8\nleaning = {{ {lean} }}\n[output]\nkind = \"kymograph\"\n"
         );
-        let path = dir.file("bad.toml", &text);
-        let out = Command::new(BIN)
-            .args(["render", &path, "--check", "--out"])
-            .arg(dir.path())
-            .output()
-            .unwrap();
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{what}: {err}");
-        assert_eq!(err.trim_end().lines().count(), 1, "{what}: {err}");
-        assert!(err.contains(needle), "{what}: {err}");
+        refused_in_one_line(&dir, &text, what, needle);
     }
+}
+
+/// `ladder render --check` on the scene `text` exits 2 with one line on
+/// stderr that contains `needle`.
+pub fn refused_in_one_line(dir: &TempDir, text: &str, what: &str, needle: &str) {
+    let path = dir.file("bad.toml", text);
+    let out = Command::new(BIN)
+        .args(["render", &path, "--check", "--out"])
+        .arg(dir.path())
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{what}: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{what}: {err}");
+    assert!(err.contains(needle), "{what}: {err}");
 }
