@@ -4,7 +4,9 @@
 //! releases the top ring (or lifts the other strand's, `lift=`) and
 //! prints each ring's n_z, azimuth and height, the flips and the waves.
 //! `EVERY=0.02` prints every 0.02 s; `DBGEND=1` lists the touches at the
-//! end.
+//! end; `KICK=5 SEED=1` spins every free ring at random (up to 5 rad/s a
+//! component) after the settle; `TUMBLE=1.0,4,40` spins ring 4 at 1.0 s
+//! about the horizontal axis in its plane at 40 rad/s.
 //! `cargo run --release --example rings_wave_probe -- n=12 t=2 lean=30 squeeze=0.8 tapes release`
 //! `cargo run --release --example rings_wave_probe -- tumbling n=30 t=3 start=0.1 release mu=0.2 [tapes]`
 use jacobs_ladder::rings::observe::{self, FlipTracker};
@@ -39,6 +41,8 @@ fn main() {
             "turn" => chain.turn.duration = num(),
             "mu" => chain.friction = num(),
             "e" => chain.restitution = num(),
+            "R" => chain.major_radius = num(),
+            "r" => chain.tube_radius = num(),
             _ => panic!("unknown argument {a}"),
         }
     }
@@ -87,6 +91,27 @@ fn main() {
         );
     };
     show(&sys, "rest");
+    if let Ok(v) = std::env::var("KICK") {
+        // KICK=w (SEED=s): a random spin of every free ring, each
+        // component up to w rad/s (a seeded linear congruential generator).
+        let w: f64 = v.parse().unwrap();
+        let mut seed: u64 = std::env::var("SEED")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(1);
+        let mut rnd = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+        };
+        let i_d = sys.inertia.i_d;
+        for k in 0..sys.n() {
+            if k != sys.held {
+                sys.bodies[k].l = [w * rnd() * i_d, w * rnd() * i_d, w * rnd() * i_d];
+            }
+        }
+    }
     if std::env::var("DBG").is_ok() {
         let rots: Vec<_> = sys.bodies.iter().map(|b| b.q.matrix()).collect();
         for p in &sys.pins {
@@ -106,7 +131,26 @@ fn main() {
         .unwrap_or(0.25)
         / sys.dt)
         .round() as u64;
+    // TUMBLE="t,ring,omega" spins one ring at time t about the horizontal
+    // axis in its plane (a tumble started by hand).
+    let tumble: Option<(f64, usize, f64)> = std::env::var("TUMBLE").ok().map(|v| {
+        let p: Vec<f64> = v.split(',').map(|x| x.parse().unwrap()).collect();
+        (p[0], p[1] as usize, p[2])
+    });
+    let mut tumbled = false;
     for k in 1..=steps {
+        if let Some((t, ring, w)) = tumble
+            && !tumbled
+            && sys.t >= t
+        {
+            tumbled = true;
+            println!("tumble ring {ring} at {:.3} s", sys.t);
+            let n = rings::run::normals(&sys.bodies)[ring];
+            let a = [n[1], -n[0], 0.0];
+            let len = (a[0] * a[0] + a[1] * a[1]).sqrt();
+            let i_d = sys.inertia.i_d;
+            sys.bodies[ring].l = [w * i_d * a[0] / len, w * i_d * a[1] / len, 0.0];
+        }
         if let Err(e) = sys.step() {
             println!("failed: {e}");
             break;
