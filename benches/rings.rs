@@ -1,7 +1,8 @@
 //! The ring chain's cost (docs/rings.md, docs/performance.md): the default
-//! 30-ring chain (movie 12's, its partner strand taped) for 1 s of chain
-//! time, with the full contact search and with the warm-started one
-//! (`rings::warm`, the default), each timed three times; prints the
+//! 30-ring chain (the double chain, its partner strand taped: movie 12's
+//! until it took the tumbling rings) for 1 s of chain time, with the full
+//! contact search and with the warm-started one (`rings::warm`, the
+//! default), each timed three times; prints the
 //! time per step and per contact pair tested, the share of the pair
 //! searches answered warm, and what 10 s of chain time (the movie's
 //! simulation) takes at that rate. Run with `cargo bench --bench rings`;

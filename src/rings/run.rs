@@ -105,7 +105,7 @@ pub struct Asked<'a> {
 /// earlier end the linking guard checks the chain as a run ending there
 /// would, that check counted in that run's `guard_checks` only (it reads
 /// the state and changes nothing else). Figure 4b is movie 12's first
-/// 3 s (docs/rings.md, docs/performance.md "Runs two outputs make alike").
+/// 2 s (docs/rings.md, docs/performance.md "Runs two outputs make alike").
 /// Counted as one run of the latest end's steps (`sim::tally`).
 pub fn runs(chain: &RingChain, asked: &[Asked<'_>]) -> Result<Vec<RingRun>> {
     let (mut sys, settled) = start(chain)?;

@@ -14,7 +14,7 @@
 //! other outputs' tasks on its thread could wait for itself.
 //!
 //! Ring chains that differ in their end only (figure 4b is movie 12's
-//! first 3 s) share one run too ([`ring_groups`], [`make_ring_runs`]),
+//! first 2 s) share one run too ([`ring_groups`], [`make_ring_runs`]),
 //! but not before the outputs start: the run is several seconds on one
 //! core, which would leave the other idle. The render makes it in the
 //! first output of the group (the latest end), renders the group's
@@ -128,7 +128,7 @@ pub fn prepare(scenes: &[Scene], movie: &MovieOptions, tallies: &[Arc<Tally>]) -
 }
 
 /// The ring scenes of `scenes` whose chains differ in their end only
-/// (figure 4b is movie 12's first 3 s: docs/rings.md), in groups of two
+/// (figure 4b is movie 12's first 2 s: docs/rings.md), in groups of two
 /// or more, each by the scenes' indices, the latest end first (the
 /// output its one run is made for), ties in the order given.
 pub fn ring_groups(scenes: &[Scene]) -> Vec<Vec<usize>> {
@@ -262,7 +262,7 @@ mod tests {
     }
 
     /// The catalogue's ring chains that differ in their end only are
-    /// figure 4b's and movie 12's: one group, movie 12 (10 s) first.
+    /// figure 4b's and movie 12's: one group, movie 12 (3 s) first.
     #[test]
     fn figure_4b_and_movie_12_share_a_chain() {
         let scenes: Vec<Scene> = catalog::catalogue()

@@ -456,8 +456,9 @@ pub fn fingerprint(bodies: &[rings::body::Body]) -> u64 {
     h
 }
 
-/// Movie 12's chain (30 rings, the odd strand taped) through the hand's
-/// turn, 0.6 s (13 901 steps), with the contact search given.
+/// The double chain of 30 rings, the odd strand taped (movie 12's until
+/// it took the tumbling rings), through the hand's turn, 0.6 s (13 901
+/// steps), with the contact search given.
 fn turned_chain(search: Search) -> Vec<rings::body::Body> {
     let chain = RingChain {
         t_end: 0.6,
@@ -526,7 +527,7 @@ fn a_ring_filmstrip_fits_a_slide() {
 }
 
 /// The warm search finds every contact the full search finds, with
-/// its overlap within 1e-9 r, at every step of figure 4b's chain
+/// its overlap within 1e-9 r, at every step of the taped double chain
 /// (30 rings, the odd strand taped) through the hand's turn, 0.5 s;
 /// and it answers most pairs itself (a search that always fell back
 /// would pass the first check vacuously).

@@ -90,7 +90,7 @@ fn the_table_lists_every_output_and_the_runs_each_made() {
     assert_eq!(rows["movie 4"].0, (0, 0), "{table}");
     assert_eq!(rows["movie 4"].2, rows["movie 3"].0.0, "{table}");
     assert_eq!(rows["figure tank-levels"].2, 4, "{table}");
-    // Figure 4b's chain is movie 12's first 3 s: one run, made for the
+    // Figure 4b's chain is movie 12's first 2 s: one run, made for the
     // movie, taken by the figure.
     assert_eq!(rows["movie 12"].0.0, 1, "{table}");
     assert_eq!(
@@ -126,7 +126,7 @@ fn the_table_lists_every_output_and_the_runs_each_made() {
 }
 
 /// Figure 4b in `ladder all` takes its run from movie 12's (the chain's
-/// first 3 s: docs/performance.md, "Runs two outputs make alike") and its
+/// first 2 s: docs/performance.md, "Runs two outputs make alike") and its
 /// files are those of `ladder figure 4b` alone, byte for byte: its
 /// pictures, and its data file but for the command line and the list of
 /// files (the render adds a PNG preview).
