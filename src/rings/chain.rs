@@ -326,7 +326,8 @@ impl RingChain {
         }
         if self.is_tumbling() && self.leaning.is_some() {
             return Err(Error::bad_input(
-                "rings: the tumbling rings always settle from their own guess; leaning leans                  the double chain: leave it out"
+                "rings: the tumbling rings always settle from their own guess, and leaning leans \
+                 the double chain: leave leaning out"
                     .to_string(),
             ));
         }

@@ -102,9 +102,18 @@ pub fn settle(sys: &mut System) -> Result<Settled> {
             break fastest;
         }
         if sys.t > MAX_TIME {
+            let (start, hint) = if sys.chain.is_tumbling() {
+                (
+                    "the tumbling rings' guess",
+                    "at the defaults 30 tumbling rings settle in about 1 s of chain time \
+                     (docs/rings.md, \"The tumbling rings\"): compare your keys with them",
+                )
+            } else {
+                ("its leaning start", "a smaller lean")
+            };
             return Err(Error::failed(format!(
-                "the ring chain did not come to rest from its leaning start within {MAX_TIME} s \
-                 (a ring still moves at {fastest:.3} m/s); hint: a smaller lean"
+                "the ring chain did not come to rest from {start} within {MAX_TIME} s (a ring \
+                 still moves at {fastest:.3} m/s); hint: {hint}"
             )));
         }
     };

@@ -172,4 +172,5 @@ pub fn refused_in_one_line(dir: &TempDir, text: &str, what: &str, needle: &str) 
     assert_eq!(out.status.code(), Some(2), "{what}: {err}");
     assert_eq!(err.trim_end().lines().count(), 1, "{what}: {err}");
     assert!(err.contains(needle), "{what}: {err}");
+    assert!(!err.contains("  "), "{what}: a run of spaces in \"{err}\"");
 }

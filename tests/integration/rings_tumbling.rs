@@ -174,7 +174,7 @@ fn bad_topologies_are_refused_in_one_line() {
         (
             "leaning",
             "topology = \"tumbling\"\nleaning = { angle = 30.0, squeeze = 0.7 }",
-            "leaning",
+            "leave leaning out",
         ),
         ("few", "topology = \"tumbling\"\nn = 3", "at least 4 rings"),
     ] {
