@@ -83,7 +83,7 @@ pub struct RingChain {
 }
 
 /// The chain's links by name (`topology` in `[rings]`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Topology {
     /// Ring k linked with k + 1 and k + 2: every ring threaded by its two
@@ -94,6 +94,30 @@ pub enum Topology {
     /// magicians (Gardner's "Afghan rings"), the key-ring chain the paper
     /// cites for Fig. 4b.
     Tumbling,
+}
+
+impl<'de> Deserialize<'de> for Topology {
+    /// One of the names; anything else one line naming what the key
+    /// takes (serde says "wanted string or table" of a number).
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Raw {
+            Word(String),
+            Other(serde::de::IgnoredAny),
+        }
+        let bad = |got: &str| {
+            <D::Error as serde::de::Error>::custom(format!(
+                "must be \"double\" or \"tumbling\", got {got}"
+            ))
+        };
+        match Raw::deserialize(d)? {
+            Raw::Word(w) if w == "double" => Ok(Self::Double),
+            Raw::Word(w) if w == "tumbling" => Ok(Self::Tumbling),
+            Raw::Word(w) => Err(bad(&format!("\"{w}\""))),
+            Raw::Other(_) => Err(bad("another kind of value")),
+        }
+    }
 }
 
 /// What a tape does to the two rings it joins.

@@ -6,7 +6,7 @@
 
 use super::budget::Quadrature;
 use super::protocol::{Drive, Protocol};
-use super::taut::{InverseMass, Taut};
+use super::taut::{InverseMass, Taut, Unsolved};
 use crate::model::Ladder;
 use crate::model::ladder::{ForceScratch, Frames, ix, iy};
 use crate::model::media::{self, Terms};
@@ -333,11 +333,11 @@ impl<'a> Rhs<'a> {
     }
 
     /// Moreau's impulses (`sim::taut`) over a step `h`, with the last
-    /// evaluation's poses and spans (the midpoint's), into `v`. False
+    /// evaluation's poses and spans (the midpoint's), into `v`; why not
     /// where the ribbons' problem could not be solved.
-    pub fn taut_impulses(&mut self, h: f64, v: &mut [f64]) -> bool {
+    pub fn taut_impulses(&mut self, h: f64, v: &mut [f64]) -> Result<(), Unsolved> {
         let Some(b) = &self.ladder.built else {
-            return true;
+            return Ok(());
         };
         let n = self.ladder.n();
         self.frame_list.clear();
@@ -353,7 +353,7 @@ impl<'a> Rhs<'a> {
         };
         let rests = b.ribbons.ribbons.map(|r| r.rest);
         let Some(taut) = self.taut.as_mut() else {
-            return true;
+            return Ok(());
         };
         taut.impulses((&self.poses[..], &self.spans[..]), rests, &inv, h, v)
     }

@@ -86,6 +86,32 @@ pub struct Taut {
     pulled: Vec<bool>,
 }
 
+/// Why a step's impulses could not be found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Unsolved {
+    /// A of the ribbons taken as pulling is singular (the banded
+    /// Cholesky met a pivot that is not positive): two taut ribbons
+    /// pull along one line.
+    Singular,
+    /// The active-set search did not settle within its passes.
+    Unsettled {
+        /// The passes it made (4m + 4 for m ribbons in the problem).
+        passes: usize,
+    },
+}
+
+impl std::fmt::Display for Unsolved {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Unsolved::Singular => f.write_str("two taut ribbons pull along the same line"),
+            Unsolved::Unsettled { passes } => write!(
+                f,
+                "the search for the ribbons that pull did not settle in {passes} passes"
+            ),
+        }
+    }
+}
+
 fn dot3(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
@@ -155,15 +181,16 @@ impl Taut {
     /// `index` by active sets (the most negative P out, else the most
     /// negative w in), started from the ribbons that pulled at the last
     /// step. P into `b`.
-    fn complementarity(&mut self) -> bool {
+    fn complementarity(&mut self) -> Result<(), Unsolved> {
         let m = self.index.len();
         self.active.clear();
         let pulled = &self.pulled;
         self.active.extend(self.index.iter().map(|&k| pulled[k]));
-        for _ in 0..4 * m + 4 {
+        let passes = 4 * m + 4;
+        for _ in 0..passes {
             self.iterations += 1;
             if !self.solve_active() {
-                return false;
+                return Err(Unsolved::Singular);
             }
             let neg = (0..m).filter(|&x| self.active[x] && self.b[x] < 0.0);
             if let Some(x) = neg.min_by(|&x, &y| self.b[x].total_cmp(&self.b[y])) {
@@ -182,15 +209,15 @@ impl Taut {
                 .filter(|&(_, w, tol)| w < -tol);
             match viol.min_by(|a, b| a.1.total_cmp(&b.1)) {
                 Some((x, _, _)) => self.active[x] = true,
-                None => return true,
+                None => return Ok(()),
             }
         }
-        false
+        Err(Unsolved::Unsettled { passes })
     }
 
     /// The step's impulses (module doc) with the rows at the midpoint
     /// (`poses`, `spans`) and the velocities `v` after the smooth kick,
-    /// applied to `v`. False where the problem could not be solved.
+    /// applied to `v`; why not where the problem could not be solved.
     pub fn impulses(
         &mut self,
         (poses, spans): (&[Pose], &[Span]),
@@ -198,7 +225,7 @@ impl Taut {
         inv: &InverseMass,
         h: f64,
         v: &mut [f64],
-    ) -> bool {
+    ) -> Result<(), Unsolved> {
         self.make_rows(poses, spans, rests, v);
         self.last.clear();
         self.pulled.resize(spans.len(), false);
@@ -209,7 +236,7 @@ impl Taut {
         index.extend((0..rows.len()).filter(|&k| near(&rows[k])));
         self.index = index;
         if self.index.is_empty() {
-            return true;
+            return Ok(());
         }
         self.assemble(inv);
         self.rhs.clear();
@@ -217,9 +244,9 @@ impl Taut {
             let g = self.rows[k].gap.min(0.0);
             self.rhs.push(self.rows[k].rate + 2.0 * g / h);
         }
-        if !self.complementarity() {
+        if let Err(why) = self.complementarity() {
             self.singular += 1;
-            return false;
+            return Err(why);
         }
         for x in 0..self.index.len() {
             let (k, p) = (self.index[x], self.b[x]);
@@ -230,7 +257,7 @@ impl Taut {
                 self.last.push((k, p));
             }
         }
-        true
+        Ok(())
     }
 
     /// v ← v − B Gᵀ P of ribbon `k`'s impulse `p`.
@@ -266,5 +293,51 @@ impl Taut {
             }
         }
         (work, lost)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A problem over `full` (m × m, row major) and `rhs`, started from
+    /// the ribbons `pulled`.
+    fn problem(full: Vec<f64>, rhs: Vec<f64>, pulled: Vec<bool>) -> Taut {
+        let m = rhs.len();
+        Taut {
+            index: (0..m).collect(),
+            full,
+            rhs,
+            pulled,
+            ..Taut::default()
+        }
+    }
+
+    /// Two ribbons along one line (A = [1 1; 1 1]) both taken as
+    /// pulling: singular, and said so; started from neither, the search
+    /// takes one and solves it (P = (1, 0)).
+    #[test]
+    fn a_singular_problem_is_named_singular() {
+        let mut t = problem(vec![1.0, 1.0, 1.0, 1.0], vec![1.0, 1.0], vec![true, true]);
+        assert_eq!(t.complementarity(), Err(Unsolved::Singular));
+        let mut t = problem(vec![1.0, 1.0, 1.0, 1.0], vec![1.0, 1.0], vec![false, false]);
+        assert_eq!(t.complementarity(), Ok(()));
+        assert_eq!(t.b, [1.0, 0.0]);
+        assert_eq!(
+            Unsolved::Singular.to_string(),
+            "two taut ribbons pull along the same line"
+        );
+    }
+
+    /// The other cause names the passes the search made (no positive
+    /// definite A built from ribbons has been seen to need them all; the
+    /// message is what a run that did would say).
+    #[test]
+    fn an_unsettled_search_says_its_passes() {
+        let why = Unsolved::Unsettled { passes: 8 };
+        assert_eq!(
+            why.to_string(),
+            "the search for the ribbons that pull did not settle in 8 passes"
+        );
     }
 }

@@ -165,7 +165,16 @@ fn the_mirrored_tumbling_chain_is_the_mirror_image_bit_for_bit() {
 fn bad_topologies_are_refused_in_one_line() {
     let dir = TempDir::new("rings-tumbling");
     for (what, keys, needle) in [
-        ("unknown", "topology = \"triple\"", "topology"),
+        (
+            "unknown",
+            "topology = \"triple\"",
+            "must be \"double\" or \"tumbling\", got \"triple\"",
+        ),
+        (
+            "a number",
+            "topology = 5",
+            "must be \"double\" or \"tumbling\", got another kind of value",
+        ),
         (
             "both",
             "topology = \"tumbling\"\nlinks = [[0, 1], [0, 2], [1, 3], [2, 3]]",

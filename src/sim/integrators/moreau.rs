@@ -102,10 +102,9 @@ impl Moreau {
     /// The step's impulses into `st.v` (`Rhs::taut_impulses`), and their
     /// loss and the drive's part into the budget where it is kept.
     fn impulses(&mut self, rhs: &mut Rhs, st: &mut State, h: f64, t: f64) -> Result<()> {
-        if !rhs.taut_impulses(h, &mut st.v) {
+        if let Err(why) = rhs.taut_impulses(h, &mut st.v) {
             return Err(Error::failed(format!(
-                "moreau: the ribbons' impulses have no solution at t = {t:.3} τ \
-                 (two taut ribbons pull along the same line)"
+                "moreau: the ribbons' impulses have no solution at t = {t:.3} τ ({why})"
             )));
         }
         if rhs.powers().is_some() {
