@@ -58,7 +58,7 @@ pub struct RingRun {
 pub fn start(chain: &RingChain) -> Result<(System, Option<Settled>)> {
     match &chain.leaning {
         None if chain.is_tumbling() => {
-            let (sys, done) = settle::settled_from(chain, settle::tumbling_guess(chain)?)?;
+            let (sys, done) = settle::settled_from(chain, settle::tumbling_assembled(chain)?)?;
             Ok((sys, Some(done)))
         }
         None => Ok((build::build(chain)?, None)),
@@ -73,7 +73,7 @@ pub fn start(chain: &RingChain) -> Result<(System, Option<Settled>)> {
 /// leaning start's guess realises its topology.
 pub fn check(chain: &RingChain) -> Result<()> {
     match &chain.leaning {
-        None if chain.is_tumbling() => settle::tumbling_guess(chain).map(drop),
+        None if chain.is_tumbling() => settle::tumbling_assembled(chain).map(drop),
         None => build::build(chain).map(drop),
         Some(l) => settle::guess(chain, l.angle, l.squeeze).map(drop),
     }

@@ -164,9 +164,10 @@ pub fn guess(chain: &RingChain, lean: f64, squeeze: f64) -> Result<System> {
     })
 }
 
-/// The tumbling rings' guess assembled (no tapes, not settled): the
-/// tapes are pinned where the settled rings cross.
-pub fn tumbling_guess(chain: &RingChain) -> Result<System> {
+/// The tumbling rings' guess ([`build::tumbling_guess`]) assembled (no
+/// tapes, not settled): the tapes are pinned where the settled rings
+/// cross.
+pub fn tumbling_assembled(chain: &RingChain) -> Result<System> {
     chain.validated()?;
     build::assemble(chain, build::as_built(chain), false)
 }
