@@ -33,6 +33,12 @@ pub fn median(mut values: Vec<f64>) -> f64 {
 /// Tolerance of the reference solution.
 pub const REFERENCE_RTOL: f64 = 1e-11;
 
+/// The step of the reference of a scene with inextensible ribbons, which
+/// only Moreau's first-order time-stepping integrates: a fifth of the
+/// finest step of its sweep. Its chain's free end still moves by tens of
+/// τ between such steps (docs/experiments.md, "Inextensible ribbons").
+pub const MOREAU_REFERENCE_DT: f64 = 0.002;
+
 /// A scene of the work-precision and stability studies: a single-run
 /// [`Scene`] (the paper's single flip by default, or a built-in movie such
 /// as the water tank, whose `[apparatus]` adds terms some integrators
@@ -157,8 +163,20 @@ impl BenchScene {
                 terms.push(what);
             }
         }
-        if matches!(a.stiffness, crate::scene::apparatus::Stiffness::Word(_)) {
-            terms.push("stiff links");
+        use crate::scene::apparatus::{StiffWord, Stiffness};
+        let word = match a.stiffness {
+            Stiffness::Word(w) => Some(w),
+            Stiffness::NewtonPerMetre(_) => None,
+        };
+        match (a.ribbons, word) {
+            (true, Some(StiffWord::Inextensible)) => terms.push("inextensible ribbons"),
+            (true, Some(StiffWord::Stiff)) => terms.push("stiff ribbons"),
+            (true, None) => terms.push("ribbons"),
+            (false, Some(_)) => terms.push("stiff links"),
+            (false, None) => {}
+        }
+        if a.contact.is_some() {
+            terms.push("contact");
         }
         Some(format!("{medium}: {}", terms.join(", ")))
     }
@@ -168,9 +186,22 @@ impl BenchScene {
         sim::simulate(&self.scenario, &self.frames, config)
     }
 
-    /// The reference solution (dopri5 at `rtol`).
-    pub fn reference(&self, rtol: f64) -> Result<Trajectory> {
-        self.run(&IntegratorConfig::adaptive(rtol))
+    /// The reference's configuration: dopri5 at [`REFERENCE_RTOL`], or,
+    /// for inextensible ribbons (which dopri5 refuses), Moreau at
+    /// [`MOREAU_REFERENCE_DT`].
+    pub fn reference_config(&self) -> IntegratorConfig {
+        let inextensible =
+            (self.scenario.ladder.built.as_ref()).is_some_and(|b| b.ribbons.inextensible);
+        if inextensible {
+            IntegratorConfig::fixed(IntegratorKind::Moreau, MOREAU_REFERENCE_DT)
+        } else {
+            IntegratorConfig::adaptive(REFERENCE_RTOL)
+        }
+    }
+
+    /// The reference solution ([`BenchScene::reference_config`]).
+    pub fn reference(&self) -> Result<Trajectory> {
+        self.run(&self.reference_config())
     }
 }
 
@@ -512,5 +543,45 @@ mod tests {
     fn slope_of_a_power_law() {
         let pts: Vec<(f64, f64)> = (1..6).map(|k| (k as f64, -3.0 * k as f64 + 1.0)).collect();
         assert!((slope(&pts) + 3.0).abs() < 1e-12);
+    }
+
+    /// The terms a study's header names are the scene's: the ribbon tank's
+    /// inextensible ribbons and contact, the spring tank's stiff links.
+    #[test]
+    fn a_study_names_the_scenes_links() {
+        let terms = |id: &str| {
+            BenchScene::movie(id, Some(1.0), 2)
+                .unwrap()
+                .terms()
+                .unwrap()
+        };
+        let ribbons = terms("water-tank-ribbons");
+        assert!(
+            ribbons.ends_with("motor, inextensible ribbons, contact"),
+            "{ribbons}"
+        );
+        assert!(terms("water-tank").ends_with("motor, stiff links"));
+    }
+
+    /// The ribbon tank's inextensible ribbons, which dopri5 refuses, are
+    /// measured against Moreau at a fine step; every other scene against
+    /// dopri5. On a short window its points run and the refused schemes
+    /// say why.
+    #[test]
+    fn inextensible_ribbons_are_measured_against_a_fine_moreau_run() {
+        let ribbons = BenchScene::movie("water-tank-ribbons", Some(200.0), 4).unwrap();
+        let c = ribbons.reference_config();
+        assert_eq!(
+            (c.kind, c.dt),
+            (IntegratorKind::Moreau, MOREAU_REFERENCE_DT)
+        );
+        let tank = BenchScene::movie("water-tank", Some(1.0), 2).unwrap();
+        assert_eq!(tank.reference_config().rtol, Some(REFERENCE_RTOL));
+        let reference = ribbons.reference().unwrap();
+        let p = measure(&ribbons, &reference, IntegratorKind::Moreau, 0.2, 1).unwrap();
+        assert_eq!(p.status, Status::Ok, "{p:?}");
+        let p = measure(&ribbons, &reference, IntegratorKind::Rk4, 0.2, 1).unwrap();
+        assert_eq!(p.status, Status::Refused);
+        assert!(p.refused.unwrap().contains("inextensible"));
     }
 }

@@ -49,7 +49,7 @@ pub fn work_precision(
     let mut reports = Vec::new();
     let mut cheapest = Vec::new();
     for scene in scenes {
-        let reference = scene.reference(REFERENCE_RTOL)?;
+        let reference = scene.reference()?;
         let mut sweeps = Vec::new();
         for kind in IntegratorKind::ALL {
             let mut points = Vec::new();
@@ -89,8 +89,18 @@ pub fn work_precision(
             .unwrap_or_default(),
         scenes: reports,
         cheapest_within_1tau: cheapest,
-        reference: format!("dopri5, rtol = {REFERENCE_RTOL:e}"),
+        reference: scenes.first().map_or(String::new(), reference_name),
     })
+}
+
+/// The reference of `scene` as the report names it: "dopri5, rtol = 1e-11"
+/// or "moreau, dt = 0.002 τ".
+fn reference_name(scene: &BenchScene) -> String {
+    let c = scene.reference_config();
+    match c.rtol {
+        Some(rtol) => format!("dopri5, rtol = {rtol:e}"),
+        None => format!("{}, dt = {} τ", c.kind.name(), c.dt),
+    }
 }
 
 /// A CSV field, quoted when it holds a comma or a quote.

@@ -157,8 +157,13 @@ pub fn kinetic_energy(
 /// Potential energy with the links' terms: the links' elastic energy
 /// (`links`) minus m G Σ X_n.
 pub fn potential_energy(ladder: &Ladder, terms: &Terms, q: &[f64]) -> f64 {
-    let gravity: f64 = (0..ladder.n()).map(|i| q[ix(i)]).sum();
-    terms.links.elastic_energy(ladder, q) - M * ladder.params.gravity * gravity
+    terms.links.elastic_energy(ladder, q) + gravity_energy(ladder, q)
+}
+
+/// Gravity's part of the potential energy, −m G Σ X_n (G with buoyancy).
+pub fn gravity_energy(ladder: &Ladder, q: &[f64]) -> f64 {
+    let x: f64 = (0..ladder.n()).map(|i| q[ix(i)]).sum();
+    -M * ladder.params.gravity * x
 }
 
 /// Power dissipated (≥ 0) by each dissipative term at (q, v), blocks

@@ -61,6 +61,17 @@ pub fn row(span: &Span, rest: f64, (pu, pl): (&Pose, &Pose), i: usize, v: &[f64]
 /// (Cholesky, the band's loops only). Returns false where A is not
 /// positive definite (a pivot ≤ 0 or not finite).
 pub fn solve_banded(a: &mut [f64], b: &mut [f64], n: usize, band: usize) -> bool {
+    if !factor_banded(a, n, band) {
+        return false;
+    }
+    solve_factored(a, b, n, band);
+    true
+}
+
+/// Cholesky A = L Lᵀ in place of `a`'s lower band (`solve_banded`),
+/// each diagonal entry holding 1/L_jj (the solves multiply by it); false
+/// where A is not positive definite.
+pub fn factor_banded(a: &mut [f64], n: usize, band: usize) -> bool {
     for j in 0..n {
         let lo = j.saturating_sub(band);
         let mut d = a[j * n + j];
@@ -70,31 +81,35 @@ pub fn solve_banded(a: &mut [f64], b: &mut [f64], n: usize, band: usize) -> bool
         if !(d > 0.0 && d.is_finite()) {
             return false;
         }
-        let d = d.sqrt();
-        a[j * n + j] = d;
+        let inv = 1.0 / d.sqrt();
+        a[j * n + j] = inv;
         for i in j + 1..(j + band + 1).min(n) {
             let mut s = a[i * n + j];
             for k in i.saturating_sub(band).max(lo)..j {
                 s -= a[i * n + k] * a[j * n + k];
             }
-            a[i * n + j] = s / d;
+            a[i * n + j] = s * inv;
         }
     }
+    true
+}
+
+/// Solves L Lᵀ x = b in place with the factor `factor_banded` left.
+pub fn solve_factored(a: &[f64], b: &mut [f64], n: usize, band: usize) {
     for i in 0..n {
         let mut s = b[i];
         for k in i.saturating_sub(band)..i {
             s -= a[i * n + k] * b[k];
         }
-        b[i] = s / a[i * n + i];
+        b[i] = s * a[i * n + i];
     }
     for i in (0..n).rev() {
         let mut s = b[i];
         for k in i + 1..(i + band + 1).min(n) {
             s -= a[k * n + i] * b[k];
         }
-        b[i] = s / a[i * n + i];
+        b[i] = s * a[i * n + i];
     }
-    true
 }
 
 #[cfg(test)]

@@ -34,6 +34,10 @@ use serde::Serialize;
 pub struct Quadrature {
     pub work: f64,
     pub dissipated: f64,
+    /// The potential energy a position projection put in (Moreau's,
+    /// `integrators::moreau`): part of the scheme's error, `None` for a
+    /// scheme without one.
+    pub projected: Option<f64>,
 }
 
 impl Quadrature {
@@ -50,6 +54,7 @@ impl Quadrature {
         *total = Some(Self {
             work: t.work + h * dw,
             dissipated: t.dissipated + h * dd,
+            ..t
         });
     }
 }
@@ -66,6 +71,11 @@ pub struct Budget {
     pub energy_change: f64,
     /// ΔE − (W − D): zero but for the integrator's error.
     pub residual: f64,
+    /// The part of ΔE (and so of the residual) Moreau's projection put
+    /// in: the potential energy of the positions it moved back onto the
+    /// ribbons' lengths. Absent for every other integrator.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub projected: Option<f64>,
 }
 
 impl Budget {
@@ -77,6 +87,7 @@ impl Budget {
             dissipated: q.dissipated,
             energy_change,
             residual: energy_change - (q.work - q.dissipated),
+            projected: q.projected,
         }
     }
 }

@@ -332,10 +332,12 @@ impl<'a> Rhs<'a> {
         }
     }
 
-    /// Moreau's impulses (`sim::taut`) over a step `h`, with the last
-    /// evaluation's poses and spans (the midpoint's), into `v`; why not
-    /// where the ribbons' problem could not be solved.
-    pub fn taut_impulses(&mut self, h: f64, v: &mut [f64]) -> Result<(), Unsolved> {
+    /// Moreau's projection and impulses (`sim::taut`) over a step `h`,
+    /// with the last evaluation's poses and spans (the midpoint's): the
+    /// midpoint `qm` moved back onto the stretched ribbons' lengths, the
+    /// impulses into `v`; why not where the ribbons' problem could not be
+    /// solved.
+    pub fn taut_impulses(&mut self, h: f64, qm: &mut [f64], v: &mut [f64]) -> Result<(), Unsolved> {
         let Some(b) = &self.ladder.built else {
             return Ok(());
         };
@@ -355,7 +357,19 @@ impl<'a> Rhs<'a> {
         let Some(taut) = self.taut.as_mut() else {
             return Ok(());
         };
-        taut.impulses((&self.poses[..], &self.spans[..]), rests, &inv, h, v)
+        taut.impulses((&self.poses[..], &self.spans[..]), rests, &inv, h, qm, v)
+    }
+
+    /// Whether the last step's projection moved any position.
+    pub fn taut_projected(&self) -> bool {
+        self.taut.as_ref().is_some_and(|t| t.projected)
+    }
+
+    /// Gravity's potential energy at `q` (`model::media::gravity_energy`):
+    /// a run by Moreau has no other (its ribbons are inextensible, and a
+    /// touch between blocks stops it).
+    pub fn gravity_energy(&self, q: &[f64]) -> f64 {
+        media::gravity_energy(self.ladder, q)
     }
 
     /// The last step's ribbon impulses' (work through block 1, loss)
@@ -432,7 +446,11 @@ impl<'a> Rhs<'a> {
                 work -= dot(&vi, &qi);
             }
         }
-        self.powers = Some(Quadrature { work, dissipated });
+        self.powers = Some(Quadrature {
+            work,
+            dissipated,
+            projected: None,
+        });
     }
 
     /// Mechanical energy: kinetic plus potential (with the terms'

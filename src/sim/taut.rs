@@ -21,11 +21,16 @@
 //! Rigid Bodies*, 1905); a ribbon left slack gets no impulse. The problem
 //! is solved exactly by active sets (A is banded: a ribbon's row touches
 //! the two blocks of its junction).
+//!
+//! Before the impulses, the midpoint is moved back onto the stretched
+//! ribbons' lengths (`Taut::project`): the same problem on the gaps,
+//! μ ≥ 0, A μ − (L − ℓ) ≥ 0, complementary, q_m ← q_m − B Gᵀ μ, the
+//! velocities untouched. The gaps the impulses see are the moved ones.
 
 use crate::model::media;
 use crate::model::outline::Pose;
 use crate::model::ribbons::Span;
-use crate::model::taut::{Row, row, solve_banded};
+use crate::model::taut::{Row, factor_banded, row, solve_factored};
 
 /// A ribbon slacker than this (in s) at the midpoint, and not
 /// lengthening, is left out of the step's problem: within a step no
@@ -33,6 +38,15 @@ use crate::model::taut::{Row, row, solve_banded};
 /// that does not pull changes nothing (it gets P = 0), so the margin is
 /// generous: a tenth of s, against ribbons that move by ~1e-3 s a step.
 pub const SLACK_MARGIN: f64 = 0.1;
+
+/// A's half bandwidth in the ribbons' order: ribbon k's row touches the
+/// blocks k/2 and k/2 + 1, which no ribbon more than 3 away touches.
+const BAND: usize = 3;
+
+/// The positions within A's band of position `x` among `m`.
+fn band(x: usize, m: usize) -> std::ops::Range<usize> {
+    x.saturating_sub(BAND)..(x + BAND + 1).min(m)
+}
 
 /// The blocks' inverse mass: added mass m_a, inertia j (with added
 /// inertia), and which blocks are free.
@@ -64,6 +78,9 @@ pub struct Taut {
     /// The ribbons in the problem (`index`), their A (row major) and
     /// right-hand sides, and scratch for one solve.
     index: Vec<usize>,
+    /// B Gᵀ of each ribbon in the problem (by ribbon): its row's parts
+    /// on the upper and the lower block, each times that block's B.
+    bg: Vec<([f64; 3], [f64; 3])>,
     full: Vec<f64>,
     rhs: Vec<f64>,
     active: Vec<bool>,
@@ -71,6 +88,10 @@ pub struct Taut {
     b: Vec<f64>,
     /// The active ribbons' positions and their solution (scratch).
     pos: Vec<usize>,
+    /// The positions whose A `a` holds factored, where `full` has not
+    /// changed since (the projection's last set is most often the
+    /// impulses' first).
+    factored: Option<Vec<usize>>,
     sol: Vec<f64>,
     /// Ribbon-steps with an impulse, problems A could not solve
     /// (singular), active-set iterations.
@@ -84,6 +105,10 @@ pub struct Taut {
     /// The ribbons that pulled at the last step, where the next step's
     /// active set starts.
     pulled: Vec<bool>,
+    /// The projection's multipliers μ (scratch), and whether the last
+    /// step moved any position.
+    mu: Vec<f64>,
+    pub projected: bool,
 }
 
 /// Why a step's impulses could not be found.
@@ -128,20 +153,25 @@ impl Taut {
         }
     }
 
-    /// A = G B Gᵀ over the ribbons `index`, into `full`.
+    /// A = G B Gᵀ over the ribbons `index`, into `full`, and each one's
+    /// B Gᵀ into `bg`.
     fn assemble(&mut self, inv: &InverseMass) {
         let m = self.index.len();
+        self.factored = None;
+        self.bg.resize(self.rows.len(), ([0.0; 3], [0.0; 3]));
+        for &k in &self.index {
+            let (r, i) = (&self.rows[k], k / 2);
+            self.bg[k] = (inv.apply(i, r.upper), inv.apply(i + 1, r.lower));
+        }
         self.full.clear();
         self.full.resize(m * m, 0.0);
         for (x, &j) in self.index.iter().enumerate() {
             for (y, &l) in self.index.iter().enumerate().skip(x) {
-                let (rj, rl) = (&self.rows[j], &self.rows[l]);
-                let (bj, bl) = (j / 2, l / 2);
-                let s = if bj == bl {
-                    dot3(rj.upper, inv.apply(bj, rl.upper))
-                        + dot3(rj.lower, inv.apply(bj + 1, rl.lower))
-                } else if bl == bj + 1 {
-                    dot3(rj.lower, inv.apply(bl, rl.upper))
+                let (rj, bl) = (&self.rows[j], &self.bg[l]);
+                let s = if j / 2 == l / 2 {
+                    dot3(rj.upper, bl.0) + dot3(rj.lower, bl.1)
+                } else if l / 2 == j / 2 + 1 {
+                    dot3(rj.lower, bl.0)
                 } else {
                     break;
                 };
@@ -159,16 +189,26 @@ impl Taut {
         self.pos.clear();
         self.pos.extend((0..m).filter(|&x| self.active[x]));
         let p = self.pos.len();
-        self.a.clear();
-        for &x in &self.pos {
-            self.a
-                .extend(self.pos.iter().map(|&y| self.full[x * m + y]));
+        if self.factored.as_deref() != Some(&self.pos[..]) {
+            // Only the band is read by the solve: two active positions
+            // i, j more than BAND apart are at least as far apart among all.
+            self.a.resize(p * p, 0.0);
+            for (i, &x) in self.pos.iter().enumerate() {
+                for j in band(i, p) {
+                    self.a[i * p + j] = self.full[x * m + self.pos[j]];
+                }
+            }
+            if !factor_banded(&mut self.a, p, BAND) {
+                self.factored = None;
+                return false;
+            }
+            let f = self.factored.get_or_insert_with(Vec::new);
+            f.clear();
+            f.extend_from_slice(&self.pos);
         }
         self.sol.clear();
         self.sol.extend(self.pos.iter().map(|&x| self.rhs[x]));
-        if !solve_banded(&mut self.a, &mut self.sol, p, 3) {
-            return false;
-        }
+        solve_factored(&self.a, &mut self.sol, p, BAND);
         self.b.clear();
         self.b.resize(m, 0.0);
         for (&x, &l) in self.pos.iter().zip(&self.sol) {
@@ -198,7 +238,7 @@ impl Taut {
                 continue;
             }
             let w = |x: usize| -> f64 {
-                (0..m)
+                band(x, m)
                     .map(|y| self.full[x * m + y] * self.b[y])
                     .sum::<f64>()
                     - self.rhs[x]
@@ -215,15 +255,18 @@ impl Taut {
         Err(Unsolved::Unsettled { passes })
     }
 
-    /// The step's impulses (module doc) with the rows at the midpoint
-    /// (`poses`, `spans`) and the velocities `v` after the smooth kick,
-    /// applied to `v`; why not where the problem could not be solved.
+    /// The step's projection and impulses (module doc) with the rows at
+    /// the midpoint `qm` (`poses`, `spans`) and the velocities `v` after
+    /// the smooth kick: `qm` moved back onto the stretched ribbons'
+    /// lengths, the impulses applied to `v`; why not where a problem
+    /// could not be solved.
     pub fn impulses(
         &mut self,
         (poses, spans): (&[Pose], &[Span]),
         rests: [f64; 2],
         inv: &InverseMass,
         h: f64,
+        qm: &mut [f64],
         v: &mut [f64],
     ) -> Result<(), Unsolved> {
         self.make_rows(poses, spans, rests, v);
@@ -239,6 +282,7 @@ impl Taut {
             return Ok(());
         }
         self.assemble(inv);
+        self.project(qm)?;
         self.rhs.clear();
         for &k in &self.index {
             let g = self.rows[k].gap.min(0.0);
@@ -253,22 +297,51 @@ impl Taut {
             self.pulled[k] = p > 0.0;
             if p > 0.0 {
                 self.impulses += 1;
-                self.apply(k, p, inv, v);
+                self.apply(k, p, v);
                 self.last.push((k, p));
             }
         }
         Ok(())
     }
 
-    /// v ← v − B Gᵀ P of ribbon `k`'s impulse `p`.
-    fn apply(&self, k: usize, p: f64, inv: &InverseMass, v: &mut [f64]) {
-        let r = self.rows[k];
-        let i = k / 2;
-        for (blk, g) in [(i, r.upper), (i + 1, r.lower)] {
-            let dv = inv.apply(blk, [-p * g[0], -p * g[1], -p * g[2]]);
-            for c in 0..3 {
-                v[3 * blk + c] += dv[c];
+    /// The midpoint q_m moved by −B Gᵀ μ, the least displacement (in
+    /// the metric B⁻¹) that takes every stretched ribbon back to its
+    /// length to first order, no ribbon in the problem stretched by it:
+    /// μ ≥ 0, A μ − (L − ℓ) ≥ 0, complementary (the impulses' problem on
+    /// the gaps). The velocities are not touched, so no ribbon rebounds;
+    /// the gaps the impulses then see are the moved ones, A μ less.
+    fn project(&mut self, qm: &mut [f64]) -> Result<(), Unsolved> {
+        self.projected = false;
+        if !self.index.iter().any(|&k| self.rows[k].gap > 0.0) {
+            return Ok(());
+        }
+        self.rhs.clear();
+        self.rhs
+            .extend(self.index.iter().map(|&k| self.rows[k].gap));
+        self.complementarity()?;
+        let m = self.index.len();
+        self.mu.clear();
+        self.mu.extend_from_slice(&self.b);
+        for x in 0..m {
+            let k = self.index[x];
+            if self.mu[x] > 0.0 {
+                self.projected = true;
+                self.apply(k, self.mu[x], qm);
             }
+            let moved: f64 = band(x, m).map(|y| self.full[x * m + y] * self.mu[y]).sum();
+            self.rows[k].gap -= moved;
+        }
+        Ok(())
+    }
+
+    /// v ← v − B Gᵀ P of ribbon `k`'s impulse `p` (or q ← q − B Gᵀ μ),
+    /// with its B Gᵀ from `assemble` (zero on a prescribed block).
+    fn apply(&self, k: usize, p: f64, v: &mut [f64]) {
+        let (upper, lower) = self.bg[k];
+        let i = 3 * (k / 2);
+        for c in 0..3 {
+            v[i + c] -= p * upper[c];
+            v[i + 3 + c] -= p * lower[c];
         }
     }
 }
@@ -339,5 +412,73 @@ mod tests {
             why.to_string(),
             "the search for the ribbons that pull did not settle in 8 passes"
         );
+    }
+
+    /// A problem of two ribbons of one junction (blocks 0 and 1, B = 1)
+    /// with rows `g` and gaps `gap`, all in the problem, none pulled.
+    fn junction(g: [[f64; 6]; 2], gap: [f64; 2]) -> Taut {
+        let rows: Vec<Row> = (0..2)
+            .map(|k| Row {
+                upper: [g[k][0], g[k][1], g[k][2]],
+                lower: [g[k][3], g[k][4], g[k][5]],
+                rate: 0.0,
+                gap: gap[k],
+            })
+            .collect();
+        let dot6 = |a: &[f64; 6], b: &[f64; 6]| (0..6).map(|c| a[c] * b[c]).sum::<f64>();
+        let full = vec![
+            dot6(&g[0], &g[0]),
+            dot6(&g[0], &g[1]),
+            dot6(&g[1], &g[0]),
+            dot6(&g[1], &g[1]),
+        ];
+        let bg = (0..2).map(|k| (rows[k].upper, rows[k].lower)).collect();
+        Taut {
+            rows,
+            bg,
+            index: vec![0, 1],
+            full,
+            pulled: vec![false, false],
+            ..Taut::default()
+        }
+    }
+
+    /// The projection takes a stretched ribbon back to its length (to
+    /// first order: G Δq = −(L − ℓ)) by Δq = −B Gᵀ μ, leaves a slack one
+    /// that it does not stretch out of the problem, and takes both where
+    /// moving one would stretch the other; the velocities are not its.
+    #[test]
+    fn the_projection_takes_a_stretched_ribbon_back_to_its_length() {
+        let g = [
+            [1.0, 0.0, 0.0, -1.0, 0.0, 0.0],
+            [-0.5, 0.5, 0.0, 0.5, -0.5, 0.0],
+        ];
+        // Ribbon 0 stretched by 2e-3, ribbon 1 slack by 5e-3: A = [2 −1; −1
+        // 1], μ = (1e-3, 0), ribbon 1 then slack by 4e-3.
+        let mut t = junction(g, [2e-3, -5e-3]);
+        let mut q = [0.0; 6];
+        t.project(&mut q).unwrap();
+        let near = |a: &[f64], b: &[f64]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-18);
+        assert!(t.projected);
+        assert!(near(&t.mu, &[1e-3, 0.0]), "{:?}", t.mu);
+        assert!(near(&q, &[-1e-3, 0.0, 0.0, 1e-3, 0.0, 0.0]), "{q:?}");
+        let gaps = [t.rows[0].gap, t.rows[1].gap];
+        assert!(near(&gaps, &[0.0, -4e-3]), "{gaps:?}");
+        // Ribbon 1 slack by only 5e-4: moving ribbon 0 alone would stretch
+        // it (by 5e-4), so both are taken back: A μ = (2e-3, −5e-4), μ =
+        // (1.5e-3, 1e-3).
+        let mut t = junction(g, [2e-3, -5e-4]);
+        let mut q = [0.0; 6];
+        t.project(&mut q).unwrap();
+        assert!(near(&t.mu, &[1.5e-3, 1e-3]), "{:?}", t.mu);
+        for r in &t.rows {
+            assert!(r.gap.abs() < 1e-18, "{}", r.gap);
+        }
+        // Nothing stretched: nothing moves.
+        let mut t = junction(g, [-1e-3, -5e-4]);
+        let mut q = [0.0; 6];
+        t.project(&mut q).unwrap();
+        assert!(!t.projected);
+        assert_eq!(q, [0.0; 6]);
     }
 }

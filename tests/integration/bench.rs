@@ -5,7 +5,7 @@
 
 use jacobs_ladder::bench::{self, BenchScene};
 use jacobs_ladder::scene::{DriveSpec, Scene};
-use jacobs_ladder::sim::IntegratorKind;
+use jacobs_ladder::sim::{IntegratorConfig, IntegratorKind};
 
 /// The paper's scene with N = 4 and a drive of 20 τ, to `t_end`.
 fn small(t_end: f64) -> Scene {
@@ -24,8 +24,10 @@ fn tiny() -> BenchScene {
 #[test]
 fn reference_is_converged() {
     let scene = tiny();
-    let r1 = scene.reference(bench::REFERENCE_RTOL).unwrap();
-    let r2 = scene.reference(bench::REFERENCE_RTOL / 2.0).unwrap();
+    let r1 = scene.reference().unwrap();
+    let r2 = scene
+        .run(&IntegratorConfig::adaptive(bench::REFERENCE_RTOL / 2.0))
+        .unwrap();
     let change = bench::theta_error(&r1, &r2);
     assert!(change < 1e-8, "halving the tolerance moved θ by {change:e}");
 }
@@ -33,7 +35,7 @@ fn reference_is_converged() {
 #[test]
 fn sweep_error_falls_monotonically_for_convergent_methods() {
     let scene = tiny();
-    let reference = scene.reference(bench::REFERENCE_RTOL).unwrap();
+    let reference = scene.reference().unwrap();
     for (kind, steps) in [
         (IntegratorKind::SymplecticEuler, vec![0.2, 0.1, 0.05, 0.025]),
         (IntegratorKind::Verlet, vec![0.2, 0.1, 0.05, 0.025]),

@@ -232,7 +232,7 @@ fn every_block_that_ends_flipped_at_88_degrees_has_an_arrival() {
 #[test]
 fn cheapest_setting_within_one_tau_meets_the_issue_goal() {
     let scene = BenchScene::paper(60.0).unwrap();
-    let reference = scene.reference(bench::REFERENCE_RTOL).unwrap();
+    let reference = scene.reference().unwrap();
     let sweeps = vec![
         bench::sweep(
             &scene,
@@ -267,32 +267,43 @@ fn cheapest_setting_within_one_tau_meets_the_issue_goal() {
     assert!(paper.force_evals >= 400_000);
 }
 
-/// The tank as built (movie water-tank-ribbons, left out above: no rtol
-/// 1e-10 reference gets through its contact) as the catalogue runs it,
-/// dopri5 at its scene's tolerance, against RK4 at τ/64, a quarter of the
-/// contact's stable step: every block flips in both, each arrival within
-/// 1 τ (docs/experiments.md, "The water tank with ribbons").
+/// The tank as built (movie water-tank-ribbons, left out above: Moreau's
+/// time-stepping has no tolerance to tighten) as the catalogue runs it,
+/// its inextensible tapes by Moreau at 0.2 τ, against Moreau at a
+/// sixteenth of the step: every block flips in both; blocks 2 to 8
+/// arrive within 10 τ of the reference (measured 3.1 τ), the last three,
+/// at the free end, within 50 τ (measured 7.6 τ; they move by tens of τ
+/// from step to step, docs/experiments.md, "Inextensible ribbons"), and
+/// the kink's whole-chain speed within 1 % (measured 0.24 %).
 #[test]
 fn the_ribbon_tank_scene_matches_a_tighter_reference() {
     let scene = &catalog::find(jacobs_ladder::scene::Kind::Movie, "water-tank-ribbons")
         .unwrap()
         .scene;
     let run = run::simulate(scene, &[]).unwrap();
-    assert_eq!(run.integrator.name, "dopri5");
+    assert_eq!(run.integrator.name, "moreau");
+    let h = run.integrator.dt;
     let reference = sim::simulate(
         &scene.scenario().unwrap(),
         &[],
-        &IntegratorConfig::fixed(IntegratorKind::Rk4, 1.0 / 64.0),
+        &IntegratorConfig::fixed(IntegratorKind::Moreau, h / 16.0),
     )
     .unwrap();
     let (a, b) = (&run.trajectory.arrival_times, &reference.arrival_times);
-    let mut worst: f64 = 0.0;
+    let (mut early, mut late): (f64, f64) = (0.0, 0.0);
     for (n, (x, y)) in a.iter().zip(b).enumerate() {
         let (x, y) = x
             .zip(*y)
             .unwrap_or_else(|| panic!("block {}: {x:?} against {y:?}", n + 1));
-        worst = worst.max((x - y).abs());
+        if n < 8 {
+            early = early.max((x - y).abs());
+        } else {
+            late = late.max((x - y).abs());
+        }
     }
-    println!("largest arrival difference {worst:.4} τ");
-    assert!(worst < 1.0, "{worst} τ");
+    let speed = |t: &[Option<f64>]| sim::speed::wave_speed(t).unwrap();
+    let dc = speed(a) / speed(b) - 1.0;
+    println!("blocks 1-8 within {early:.2} τ, 9-11 within {late:.2} τ, speed {dc:+.2e}");
+    assert!(early < 10.0 && late < 50.0, "{early} τ, {late} τ");
+    assert!(dc.abs() < 0.01, "{dc}");
 }

@@ -122,7 +122,9 @@ fn the_ribbon_tanks_caption_is_its_run() {
         format!("{}", f(&a["thickness"])),
         format!("{}", f(&a["b"])),
         format!("{}", f(&a["motor"])),
-        format!("{:.2}", order[n - 1].1),
+        // The last arrival to a tenth of a second: the free end's arrivals
+        // move by tens of τ (0.1 s) with Moreau's step.
+        format!("{:.1}", order[n - 1].1),
         format!("{speed:.1}"),
         // The speed's window, blocks 3 to N − 1 (`sim::speed`).
         "3".into(),
