@@ -144,18 +144,24 @@ fn at(cost: Cost, evals: f64, wall: f64) -> f64 {
     }
 }
 
+/// A refused integrator's legend line: its name, what it refused, and
+/// nothing to plot.
+fn refused_entry(name: &str, reason: &str) -> Series {
+    Series::scatter(
+        format!("{} refused: {}", pretty(name), refusal_terms(reason)),
+        Vec::new(),
+        color_of(name),
+        Marker::Plus,
+    )
+    .with_width(3.0)
+}
+
 /// The series of one integrator: its error line against `cost`, or, for a
 /// refused integrator, a legend line with the reason and nothing to plot.
 fn integrator_series(sweep: &Sweep, cost: Cost) -> Series {
     let color = color_of(&sweep.name);
     if let Some(reason) = &sweep.refused {
-        return Series::scatter(
-            format!("{} refused: {}", pretty(&sweep.name), refusal_terms(reason)),
-            Vec::new(),
-            color,
-            Marker::Plus,
-        )
-        .with_width(3.0);
+        return refused_entry(&sweep.name, reason);
     }
     let pts: Vec<(f64, f64)> = sweep
         .points
@@ -440,12 +446,22 @@ pub fn stability_chart(report: &StabilityReport) -> Result<Pixmap> {
     if report.scene.is_some() {
         return scene_stability_chart(report);
     }
+    // A scheme refused by the scene's terms has no limit to plot: the
+    // legend names it and why (`refused_entry`).
     let names: Vec<&str> = report.sweep[0]
         .integrators
         .iter()
+        .filter(|r| r.refused.is_none())
         .map(|r| r.name.as_str())
         .collect();
-    let specs = [stability_spec(report, &names), ratio_spec(report, &names)];
+    let mut specs = [stability_spec(report, &names), ratio_spec(report, &names)];
+    for r in report.sweep[0].integrators.iter() {
+        if let Some(reason) = &r.refused {
+            for spec in specs.iter_mut() {
+                *spec = std::mem::take(spec).series(refused_entry(&r.name, reason));
+            }
+        }
+    }
     // Equal plot widths: each chart is narrower by what its legend needs
     // less than the widest legend.
     let widest = specs.iter().map(legend_width).max().unwrap_or(0);

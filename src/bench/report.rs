@@ -337,16 +337,23 @@ pub fn stability_at(alpha_deg: f64) -> Result<StabilityPoint> {
     let mut rows = Vec::new();
     for kind in IntegratorKind::ALL {
         let predicted = predicted_dt(kind, omega_max, c);
-        let (critical, failed) = match critical_dt(&scene, kind, predicted, STABILITY_PRECISION) {
-            Ok(dt) => (dt, None),
-            Err(e) if e.is_failed_run() => (0.0, Some(e.to_string())),
-            Err(e) => return Err(e),
+        // Moreau's time-stepping takes inextensible ribbons only: refused
+        // here with its reason, as on any scene whose terms a scheme
+        // cannot take.
+        let refused = scene.refusal(&IntegratorConfig::fixed(kind, predicted));
+        let (critical, failed) = match refused {
+            Some(_) => (0.0, None),
+            None => match critical_dt(&scene, kind, predicted, STABILITY_PRECISION) {
+                Ok(dt) => (dt, None),
+                Err(e) if e.is_failed_run() => (0.0, Some(e.to_string())),
+                Err(e) => return Err(e),
+            },
         };
         rows.push(StabilityRow {
             name: kind.name().to_string(),
             critical_dt: critical,
             predicted_dt: predicted,
-            refused: None,
+            refused,
             failed,
         });
     }

@@ -302,3 +302,21 @@ fn bench_studies_are_capped_before_any_run() {
         );
     }
 }
+
+/// The paper's stability study (`ladder bench stability`, the default
+/// scene) lists Moreau's time-stepping, which takes inextensible ribbons
+/// only, as refused with its reason, and measures every other scheme
+/// (it stopped at Moreau with exit 2 before).
+#[test]
+fn the_papers_stability_study_lists_moreau_as_refused() {
+    let point = bench::stability_at(60.0).unwrap();
+    for r in &point.integrators {
+        if r.name == "moreau" {
+            let why = r.refused.as_deref().expect("moreau refused");
+            assert!(why.contains("inextensible ribbons"), "{why}");
+        } else {
+            assert!(r.refused.is_none() && r.critical_dt > 0.0, "{r:?}");
+        }
+    }
+    assert!(point.integrators.iter().any(|r| r.name == "moreau"));
+}
