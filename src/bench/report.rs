@@ -266,22 +266,7 @@ pub fn stability_of_scene(
         // Without linear damping the damped bound of explicit Euler and
         // dopri5 is 0: start the bracket from a hundredth of 2/ω_max.
         let guess = predicted.clamp(0.02 / omega_max, 10.0 / omega_max);
-        let refused = scene.refusal(&IntegratorConfig::fixed(kind, guess));
-        let (critical, failed) = match refused {
-            Some(_) => (0.0, None),
-            None => match critical_dt(scene, kind, guess, STABILITY_PRECISION) {
-                Ok(dt) => (dt, None),
-                Err(e) if e.is_failed_run() => (0.0, Some(e.to_string())),
-                Err(e) => return Err(e),
-            },
-        };
-        rows.push(StabilityRow {
-            name: kind.name().to_string(),
-            critical_dt: critical,
-            predicted_dt: predicted,
-            refused,
-            failed,
-        });
+        rows.push(stability_row(scene, kind, guess, predicted)?);
         progress(&format!("{}: {kind}", scene.name));
     }
     let point = StabilityPoint {
@@ -326,6 +311,32 @@ pub fn check_window(t_end: f64, omega_max: f64) -> Result<()> {
     )))
 }
 
+/// `kind`'s row on `scene`: its critical dt bisected from `guess`, or why
+/// it refused the scene's terms (not run), or why its run failed.
+fn stability_row(
+    scene: &BenchScene,
+    kind: IntegratorKind,
+    guess: f64,
+    predicted: f64,
+) -> Result<StabilityRow> {
+    let refused = scene.refusal(&IntegratorConfig::fixed(kind, guess));
+    let (critical, failed) = match refused {
+        Some(_) => (0.0, None),
+        None => match critical_dt(scene, kind, guess, STABILITY_PRECISION) {
+            Ok(dt) => (dt, None),
+            Err(e) if e.is_failed_run() => (0.0, Some(e.to_string())),
+            Err(e) => return Err(e),
+        },
+    };
+    Ok(StabilityRow {
+        name: kind.name().to_string(),
+        critical_dt: critical,
+        predicted_dt: predicted,
+        refused,
+        failed,
+    })
+}
+
 /// Relative precision of the stability bisection.
 pub const STABILITY_PRECISION: f64 = 0.02;
 
@@ -340,22 +351,7 @@ pub fn stability_at(alpha_deg: f64) -> Result<StabilityPoint> {
         // Moreau's time-stepping takes inextensible ribbons only: refused
         // here with its reason, as on any scene whose terms a scheme
         // cannot take.
-        let refused = scene.refusal(&IntegratorConfig::fixed(kind, predicted));
-        let (critical, failed) = match refused {
-            Some(_) => (0.0, None),
-            None => match critical_dt(&scene, kind, predicted, STABILITY_PRECISION) {
-                Ok(dt) => (dt, None),
-                Err(e) if e.is_failed_run() => (0.0, Some(e.to_string())),
-                Err(e) => return Err(e),
-            },
-        };
-        rows.push(StabilityRow {
-            name: kind.name().to_string(),
-            critical_dt: critical,
-            predicted_dt: predicted,
-            refused,
-            failed,
-        });
+        rows.push(stability_row(&scene, kind, predicted, predicted)?);
     }
     Ok(StabilityPoint {
         alpha_deg,

@@ -194,10 +194,7 @@ impl RingChain {
         let mut pairs: Vec<[usize; 2]> = match (&self.links, self.topology) {
             (Some(l), _) => l.iter().map(|&[a, b]| [a.min(b), a.max(b)]).collect(),
             (None, Some(Topology::Tumbling)) => Self::tumbling_links(self.n),
-            (None, _) => (0..self.n)
-                .flat_map(|k| [[k, k + 1], [k, k + 2]])
-                .filter(|p| p[1] < self.n)
-                .collect(),
+            (None, _) => Self::double_links(self.n),
         };
         pairs.sort();
         pairs.dedup();
@@ -208,9 +205,16 @@ impl RingChain {
     /// key rings the paper cites): ring k with k + 2 (each strand a simple
     /// chain) and ring 2j with 2j + 1 (a rung every other ring).
     pub fn tumbling_links(n: usize) -> Vec<[usize; 2]> {
+        let mut pairs = Self::double_links(n);
+        pairs.retain(|p| p[1] == p[0] + 2 || p[0].is_multiple_of(2));
+        pairs
+    }
+
+    /// The double chain's links, sorted: ring k with k + 1 and k + 2.
+    pub fn double_links(n: usize) -> Vec<[usize; 2]> {
         let mut pairs: Vec<[usize; 2]> = (0..n)
             .flat_map(|k| [[k, k + 1], [k, k + 2]])
-            .filter(|p| p[1] < n && (p[1] == p[0] + 2 || p[0].is_multiple_of(2)))
+            .filter(|p| p[1] < n)
             .collect();
         pairs.sort();
         pairs
@@ -372,12 +376,7 @@ impl RingChain {
                 "rings: alternate and release = true are two hands: give one".to_string(),
             ));
         }
-        let double = RingChain {
-            links: None,
-            topology: None,
-            ..self.clone()
-        };
-        if self.linked_pairs() != double.linked_pairs() && !self.is_tumbling() {
+        if self.linked_pairs() != Self::double_links(self.n) && !self.is_tumbling() {
             return Err(Error::bad_input(
                 "rings: alternate passes the hand between the two strands of the double chain \
                  (ring k linked with k + 1 and k + 2) or of the tumbling rings, and these links \

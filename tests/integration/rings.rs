@@ -11,7 +11,7 @@ use std::process::Command;
 const BIN: &str = env!("CARGO_BIN_EXE_ladder");
 
 /// A short chain turned early: cheap, and every test's claim in it.
-fn small() -> RingChain {
+pub(crate) fn small() -> RingChain {
     RingChain {
         n: 12,
         t_end: 0.8,

@@ -14,16 +14,11 @@ use jacobs_ladder::rings::{self, RingChain, Topology, guard};
 /// even rings pass the odd ones: docs/rings.md).
 fn small() -> RingChain {
     RingChain {
-        n: 12,
         topology: Some(Topology::Tumbling),
         friction: 0.2,
         release: true,
         t_end: 1.2,
-        turn: rings::Turn {
-            start: 0.1,
-            ..Default::default()
-        },
-        ..Default::default()
+        ..crate::rings::small()
     }
 }
 
