@@ -58,7 +58,8 @@ pub struct Limits {
     /// Steps × N of one simulation, in block-steps of the paper's model
     /// stepped by velocity Verlet: a run on another force path counts its
     /// steps × N times that path's weight (`sim::cost`, docs/limits.md).
-    /// Default 1e10: about 9 minutes of the unit (54 ns per block-step).
+    /// Default 1e10: about a minute and a half of the unit (8.6 ns per
+    /// block-step, `sim::cost::REFERENCE_NS`).
     /// The paper's run is 4 × 10^6; N = 1000 for 2 × 10^5 steps is
     /// 2 × 10^8; N = 100,000 for 5000 steps is 5 × 10^8.
     pub block_steps: f64,

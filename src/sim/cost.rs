@@ -21,40 +21,48 @@ use crate::model::Ladder;
 
 /// ns per block-step of the paper's model on the portable path (`Rhs`
 /// over `Ladder::gradient_with`), per integrator, measured by `ladder
-/// bench cost` at N = 1000 (docs/limits.md): velocity Verlet is the unit
-/// of the cap.
-/// Moreau's step is one evaluation, as Verlet's, and is counted as it
-/// (it runs only with the ribbons, whose term dominates).
+/// bench cost` at N = 1000 (docs/limits.md; median of 5 rounds, the
+/// machine otherwise idle): velocity Verlet is the unit of the cap.
+/// Moreau's step is one evaluation plus its impulses and projection: its
+/// number is the tank as built's at N = 11 (331.5 to 341.3) less the
+/// terms' one evaluation (water, ribbons, contact at N = 11; below).
 const PAPER_NS: [(IntegratorKind, f64); 6] = [
-    (IntegratorKind::ExplicitEuler, 52.0),
-    (IntegratorKind::SymplecticEuler, 42.0),
-    (IntegratorKind::Verlet, 54.0),
-    (IntegratorKind::Rk4, 353.0),
-    (IntegratorKind::Dopri5, 648.0),
-    (IntegratorKind::Moreau, 54.0),
+    (IntegratorKind::ExplicitEuler, 7.8),
+    (IntegratorKind::SymplecticEuler, 6.8),
+    (IntegratorKind::Verlet, 8.6),
+    (IntegratorKind::Rk4, 41.8),
+    (IntegratorKind::Dopri5, 82.8),
+    (IntegratorKind::Moreau, 215.0),
 ];
 
 /// ns per block-step of symplectic Euler on the fused and chain kernels
 /// (`sim::fused`, `sim::chain`), the paper's model only.
-const PAPER_KERNEL_NS: f64 = 19.0;
+const PAPER_KERNEL_NS: f64 = 2.8;
 
 /// ns per block and force evaluation each term of docs/experiments.md
 /// adds to the portable path: `bench cost`'s path with the term less the
 /// paper's by the same scheme (RK4), over its 4 evaluations a step.
 const TERM_NS: Terms = Terms {
-    // The tank: (1029 to 1143 − 353) / 4.
-    water: 180.0,
-    // The linkage in air (drag, "stiff" links, pin friction): (4172 to
-    // 4302 − 353) / 4 − the drag's 180; its links and its friction are
+    // The tank: (149.6 at N = 11 − 41.8) / 4 (19 at N = 1000).
+    water: 27.0,
+    // The linkage in air (drag, "stiff" links, pin friction): (448.1 at
+    // N = 8 − 41.8) / 4 − the drag's 27; its links and its friction are
     // measured together and counted once for either.
-    linkage: 780.0,
-    // The tank as built, ribbons and contact: (6185 at N = 11 − 353) / 4
-    // − the water's 180 − the contact's 15.3 × 11.
-    ribbons: 1110.0,
-    // Contact tests every pair of blocks: (66550 at N = 1000 − 6185 at
-    // N = 11) / 4 / 989, per block and per block of the chain.
-    contact_per_block: 15.3,
+    linkage: 75.0,
+    // The tank as built, ribbons and contact: (459.8 at N = 11 − 41.8) / 4
+    // − the water's 27 − the contact's 0.49 × 11.
+    ribbons: 72.0,
+    // Contact tests every pair of blocks: (828.7 at N = 200 − 459.8 at
+    // N = 11) / 4 / 189, per block and per block of the chain (at N =
+    // 1000, 2134.7 measured: 0.42).
+    contact_per_block: 0.49,
 };
+
+/// Moreau's step tests the pairs of blocks more than once (its smooth
+/// forces, and after the step that no two touch): its contact counts as
+/// this many evaluations (measured 3.5: (2046.8 at N = 1000 − 331.5 at
+/// N = 11) / 989 / 0.49).
+const MOREAU_CONTACT_PASSES: f64 = 4.0;
 
 /// The extra ns per block and force evaluation of each term.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -117,11 +125,16 @@ impl Path {
             .find(|(k, _)| *k == self.kind)
             .map_or(PAPER_NS[2].1, |(_, ns)| *ns);
         let t = TERM_NS;
+        let passes = if self.kind == IntegratorKind::Moreau {
+            MOREAU_CONTACT_PASSES
+        } else {
+            1.0
+        };
         let extra = [
             (self.water, t.water),
             (self.links || self.friction, t.linkage),
             (self.ribbons, t.ribbons),
-            (self.contact, t.contact_per_block * self.n as f64),
+            (self.contact, passes * t.contact_per_block * self.n as f64),
         ]
         .iter()
         .filter(|(on, _)| *on)
@@ -236,9 +249,10 @@ mod tests {
                 .describe()
                 .contains("pin friction")
         );
-        assert_eq!(
-            about(1e10),
-            format!("about {:.0} min", 1e10 * REFERENCE_NS * 1e-9 / 60.0)
-        );
+        let per_second = 1.0 / seconds(1.0);
+        assert_eq!(about(60.0 * per_second), "about 60 s");
+        assert_eq!(about(300.0 * per_second), "about 5 min");
+        assert_eq!(about(3.0 * 3600.0 * per_second), "about 3.0 h");
+        assert_eq!(about(0.5 * per_second), "under a second");
     }
 }

@@ -29,7 +29,10 @@ pub struct LimitArgs {
 pub struct SimLimitArgs {
     // Most steps × N of one simulation.
     #[arg(long, value_name = "X", help = with_default(
-        "Most steps × N of one simulation, counted as the paper's model by Verlet (about 54 ns each); other force paths count theirs times their weight (docs/limits.md)",
+        &format!(
+            "Most steps × N of one simulation, counted as the paper's model by Verlet (about {:.0} ns each); other force paths count theirs times their weight (docs/limits.md)",
+            crate::sim::cost::REFERENCE_NS,
+        ),
         limits().block_steps,
     ))]
     pub max_block_steps: Option<f64>,
