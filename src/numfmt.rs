@@ -15,6 +15,27 @@ pub fn plain(x: f64) -> String {
     }
 }
 
+/// A computed number for a message: [`plain`] to six significant
+/// digits (3234.8106590649163 → 3234.81, a duration converted to τ),
+/// so a value the user typed with six or fewer reads as typed.
+pub fn brief(x: f64) -> String {
+    if !x.is_finite() || x == 0.0 {
+        return plain(x);
+    }
+    let magnitude = x.abs().log10().floor() as i32;
+    let rounded: f64 = format!("{x:.5e}").parse().unwrap_or(x);
+    if !(-4..9).contains(&magnitude) {
+        return plain(rounded);
+    }
+    let decimals = (5 - magnitude).max(0) as usize;
+    let s = format!("{rounded:.decimals$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
 /// A number as a reader writes it: 60, 1.3, 0.0002 → 2e-4, with a
 /// typographic minus sign.
 pub fn typeset(x: f64) -> String {
@@ -47,6 +68,19 @@ mod tests {
         assert_eq!(plain(1e308), "1e308");
         assert_eq!(plain(2e-5), "2e-5");
         assert_eq!(plain(0.0), "0");
+    }
+
+    #[test]
+    fn brief_keeps_six_significant_digits() {
+        assert_eq!(brief(3234.8106590649163), "3234.81");
+        assert_eq!(brief(2000.0), "2000");
+        assert_eq!(brief(0.125), "0.125");
+        assert_eq!(brief(-1.0 / 3.0), "-0.333333");
+        assert_eq!(brief(123456789.0), "123457000");
+        assert_eq!(brief(1e12 / 3.0), "3.33333e11");
+        assert_eq!(brief(2e-5 / 3.0), "6.66667e-6");
+        assert_eq!(brief(0.0), "0");
+        assert_eq!(brief(f64::INFINITY), "inf");
     }
 
     #[test]

@@ -290,7 +290,7 @@ pub fn worst_case(
                  N = {}{}; or name an integrator and step",
                 num(dt),
                 num(0.5 * dt),
-                num(scenario.t_end),
+                crate::numfmt::brief(scenario.t_end),
                 scenario.ladder.n(),
                 super::cost::weighed(&path, total.equivalent)
             )

@@ -374,7 +374,7 @@ pub fn check_cost_stepped(
             "{least}{} steps of dt = {} up to t_end = {}, times N = {n}{}",
             count(steps),
             num(step),
-            num(t_end),
+            crate::numfmt::brief(t_end),
             cost::weighed(&path, cost.equivalent)
         )
     })?;
@@ -681,8 +681,8 @@ fn over_cap(
         detail: format!(
             "{} steps by t = {} of t_end = {} × N = {}{}, and counting",
             steps,
-            num(t),
-            num(scenario.t_end),
+            crate::numfmt::brief(t),
+            crate::numfmt::brief(scenario.t_end),
             n,
             cost::weighed(path, value)
         ),
