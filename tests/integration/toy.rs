@@ -281,6 +281,7 @@ fn block_1_turned_over_once_flips_every_block_in_turn() {
             flip in 10.8 s, at every gap and turn tried the cascade stops after 2 to 4 blocks \
             (docs/experiments.md, \"A longer toy\")"]
 fn block_1_turned_over_once_flips_every_block_of_a_ten_block_toy_in_turn() {
+    assert!(TOY.contains("n = 6"), "the scene's N");
     let text = toy("flips = [{ start = 0.0, duration = 232.0 }]", 10.8).replace("n = 6", "n = 10");
     let traj = run(&text, &[]).unwrap();
     println!("arrivals (τ) {:?}", traj.arrival_times);
@@ -299,6 +300,9 @@ fn block_1_turned_over_once_flips_every_block_of_a_ten_block_toy_in_turn() {
 /// `duration` (s): each run's blocks in the order of their first flips
 /// (0-based; a block that never flips is left out).
 fn orders(gap_mm: f64, turn: f64, k: usize, duration: f64) -> Vec<Vec<usize>> {
+    // The gap is set by replacing the scene's b (0.5 mm); a scene that
+    // says it otherwise would leave every run at its own gap.
+    assert!(TOY.contains("b = 5.75"), "the scene's b = s + 0.5 mm");
     (0..k)
         .map(|i| {
             let td = turn * (0.9 + 0.2 * i as f64 / (k - 1) as f64);
@@ -322,7 +326,6 @@ fn a_slow_turn_starts_the_cascade_in_turn_whatever_its_exact_time() {
     // run says little (the clatter is chaotic); eight turns over ±10 %
     // of 464 τ (0.5 s) each say it. Run to 1.2 s (1113 τ): block 3
     // flips by about 710 τ.
-    assert!(TOY.contains("b = 5.75"), "the scene's gap is 0.5 mm");
     for order in orders(0.5, 464.0, 8, 1.2) {
         assert!(
             order.len() >= 3 && order[..3] == [0, 1, 2],
