@@ -121,8 +121,27 @@ pub fn scene_from_flags(
     let before = base.clone();
     model.apply(&mut base);
     drive.apply(&mut base);
+    let drive_given = drive.any().then(|| base.drive.clone());
     run.apply(&mut base)?;
     model.apply_apparatus(&mut base)?;
+    // The flags are the window and the drive, whatever `duration` and
+    // `motor` the apparatus gives.
+    if let Some(t) = run.t_end {
+        base = base.with_t_end(t);
+    }
+    if let Some(d) = drive_given {
+        base = base.with_drive(d);
+    }
+    if let Some(a) = &base.apparatus {
+        for (p, _) in model.params.given() {
+            if let Some(why) = a.replaces(p) {
+                return Err(Error::bad_input(format!(
+                    "--{}: {why}",
+                    p.name().replace('_', "-")
+                )));
+            }
+        }
+    }
     // A window fitted to the built-in's chain follows a changed model
     // unless --t-end sets it (`Scene::window_following`).
     if run.t_end.is_none() {

@@ -2,6 +2,7 @@
 //! path of the first bad field (`model.alpha`, `drive.flips.1.start`) for
 //! the file loader to locate.
 
+use super::params::Param;
 use super::{AUTO_T_END, Fidelity, MAX_FLIPS, MAX_PANELS, MAX_TIMES, Method, Panel, TheoryFigure};
 use super::{Model, OutputSpec, Scene, TheorySpec};
 use crate::sim::IntegratorKind;
@@ -128,6 +129,14 @@ impl Scene {
                     check_text(&format!("{key}.{k}.label"), &p.label, false)?;
                     let m = p.model.apply(&self.model);
                     check_model(&format!("{key}.{k}.model"), &m, simulated, hanging)?;
+                    // A value the apparatus sets would be replaced unsaid.
+                    if let Some(a) = &self.apparatus {
+                        for q in Param::ALL {
+                            if let Some(why) = a.replaces(q).filter(|_| p.model.get(q).is_some()) {
+                                return Err((format!("{key}.{k}.model.{}", q.name()), why));
+                            }
+                        }
+                    }
                     if let Some(t) = p.t_end
                         && !(t.is_finite() && t > 0.0)
                     {

@@ -190,14 +190,14 @@ impl Scene {
     pub fn variant(&self, panel: &Panel) -> Scene {
         let mut s = self.clone();
         s.model = panel.model.apply(&self.model);
-        if let Some(t) = panel.t_end {
-            s.run.t_end = t;
-        }
         s.output = OutputSpec::Data;
         s.label = None;
         s.title = None;
         s.caption = None;
-        s.with_conversion()
+        match panel.t_end {
+            Some(t) => s.with_t_end(t),
+            None => s.with_conversion(),
+        }
     }
 
     /// Every simulation this scene runs, as single-run scenes, with the

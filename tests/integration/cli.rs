@@ -472,3 +472,154 @@ fn simulate_with_an_apparatus_reports_the_values_it_ran() {
     let plain = json_with(&["simulate", "--t-end", "10", "--json"], &["model"]);
     assert!(plain.get("units").is_none());
 }
+
+/// `--t-end` is the run's window even where the apparatus gives a
+/// `duration`: before, the duration (converted again with the apparatus)
+/// silently replaced it, and the recorded scene said both.
+#[test]
+fn t_end_replaces_the_apparatus_duration() {
+    let dir = crate::common::tempdir::TempDir::new("t-end-duration");
+    let tank = dir.file(
+        "tank.toml",
+        "[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\ndensity = 1.2\nmedium = \"water\"\n\
+         g = 981.0\nmotor = 0.2\nduration = 20.0\n",
+    );
+    let base = [
+        "simulate",
+        "--alpha",
+        "86",
+        "--n",
+        "4",
+        "--integrator",
+        "rk4",
+        "--dt",
+        "0.125",
+        "--apparatus",
+        &tank,
+        "--json",
+    ];
+    let mut given = base.to_vec();
+    given.extend(["--t-end", "300"]);
+    let v = json_with(&given, &["t_end", "units"]);
+    assert_eq!(v["t_end"].as_f64(), Some(300.0));
+    assert_eq!(v["scene"]["run"]["t_end"].as_f64(), Some(300.0));
+    assert!(
+        v["scene"]["apparatus"].get("duration").is_none(),
+        "{}",
+        v["scene"]["apparatus"]
+    );
+    let tau = v["units"]["tau_s"].as_f64().unwrap();
+    let t_end_s = v["units"]["t_end_s"].as_f64().unwrap();
+    assert!((t_end_s - 300.0 * tau).abs() < 1e-12, "{t_end_s}");
+    // Without the flag the duration is the window.
+    let v = json_with(&base, &["t_end"]);
+    assert!((v["units"]["t_end_s"].as_f64().unwrap() - 20.0).abs() < 1e-9);
+}
+
+/// A built-in scene whose apparatus gives a `duration` (the toy) runs to
+/// `--t-end` too, and the movie's data file says the window it ran.
+#[test]
+fn a_built_in_apparatus_scene_runs_to_the_t_end_given() {
+    let dir = crate::common::tempdir::TempDir::new("t-end-toy");
+    let out = dir.path().to_str().unwrap().to_string();
+    ladder_ok(&[
+        "movie", "toy", "--t-end", "120", "--frames", "4", "--size", "160x120", "--name", "short",
+        "--out", &out,
+    ]);
+    let text = std::fs::read_to_string(dir.path().join("movie-short.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(v["runs"][0]["t_end"].as_f64(), Some(120.0));
+    assert!(v["scene"]["apparatus"].get("duration").is_none());
+}
+
+/// `--drive-time` is block 1's drive even where the apparatus has a
+/// motor: before, the motor's flip silently replaced it.
+#[test]
+fn drive_time_replaces_the_apparatus_motor() {
+    let dir = crate::common::tempdir::TempDir::new("drive-time-motor");
+    let tank = dir.file(
+        "tank.toml",
+        "[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\ndensity = 1.2\nmedium = \"water\"\n\
+         g = 981.0\nmotor = 0.2\nduration = 2.0\n",
+    );
+    let base = [
+        "simulate",
+        "--alpha",
+        "86",
+        "--n",
+        "4",
+        "--integrator",
+        "rk4",
+        "--dt",
+        "0.125",
+        "--apparatus",
+        &tank,
+        "--json",
+    ];
+    let mut given = base.to_vec();
+    given.extend(["--drive-time", "300"]);
+    let v = json_with(&given, &["drive"]);
+    for record in [&v, &v["scene"]] {
+        assert_eq!(
+            record["drive"]["flips"][0]["duration"].as_f64(),
+            Some(300.0)
+        );
+    }
+    assert!(v["scene"]["apparatus"].get("motor").is_none());
+    // Without the flag the motor turns block 1 (0.2 Hz: far longer).
+    let v = json_with(&base, &["drive"]);
+    assert!(v["drive"]["flips"][0]["duration"].as_f64().unwrap() > 2000.0);
+}
+
+/// A model flag the apparatus sets (b, gamma, gravity, inertia) is refused
+/// with one line naming the flag: before, the apparatus' value replaced
+/// it without a word. In a sweep, such an axis (and the drive time beside
+/// a motor) is refused the same way.
+#[test]
+fn a_model_flag_the_apparatus_sets_is_refused() {
+    let dir = crate::common::tempdir::TempDir::new("flag-apparatus");
+    let text = "[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\ndensity = 1.2\n\
+                medium = \"water\"\ng = 981.0\nmotor = 0.2\nduration = 2.0\n";
+    let tank = dir.file("tank.toml", text);
+    for (flag, value) in [
+        ("--b", "2"),
+        ("--gamma", "0.1"),
+        ("--gravity", "1e-3"),
+        ("--inertia", "0.3"),
+    ] {
+        assert_bad_input(
+            &[
+                "simulate",
+                "--alpha",
+                "86",
+                "--n",
+                "4",
+                "--apparatus",
+                &tank,
+                flag,
+                value,
+            ],
+            &format!("{flag}: the apparatus sets"),
+        );
+    }
+    assert_bad_input(&["movie", "toy", "--b", "1.2"], "--b: the apparatus sets b");
+    let head =
+        format!("[model]\nalpha = 86.0\nn = 4\n{text}[run]\nintegrator = \"rk4\"\ndt = 0.125\n");
+    for (axis, needle) in [
+        ("b = [1.2, 1.3]", "output.grid.b: the apparatus sets b"),
+        (
+            "drive_time = [300, 400]",
+            "output.grid.drive_time: the apparatus' motor",
+        ),
+    ] {
+        let sweep = dir.file(
+            "sweep.toml",
+            &format!("{head}[output]\nkind = \"sweep\"\n[output.grid]\n{axis}\n"),
+        );
+        let out_dir = dir.path().join("out");
+        assert_bad_input(
+            &["sweep", &sweep, "--out", out_dir.to_str().unwrap()],
+            needle,
+        );
+    }
+}

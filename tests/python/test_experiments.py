@@ -124,3 +124,36 @@ def test_a_run_of_the_model_alone_has_no_apparatus_units():
     assert run.t_s is None and run.speed_cm_s is None and run.tau_s is None
     assert run.bulk_speed_cm_s is None and run.bulk_fit is None
     assert run.bulk_speed > 0  # the paper's kink runs steadily in the bulk
+
+
+def test_t_end_replaces_the_apparatus_duration():
+    """Before: the apparatus' duration, converted again, replaced t_end."""
+    run = jl.simulate(alpha=86, n=4, integrator="rk4", dt=0.125, apparatus=TANK, t_end=50.0)
+    assert run.record["t_end"] == 50.0
+    assert run.record["scene"]["run"]["t_end"] == 50.0
+    assert "duration" not in run.record["scene"]["apparatus"]
+    assert run.t[-1] == pytest.approx(50.0, abs=1e-9)
+    # A scene with the duration, then a window given by replace().
+    scene = jl.Scene(alpha=86, n=4, integrator="rk4", dt=0.125, apparatus=TANK)
+    assert scene.to_dict()["run"]["t_end"] == pytest.approx(1.0 / tau_s(), rel=1e-12)
+    shorter = scene.replace(t_end=60.0)
+    assert shorter.to_dict()["run"]["t_end"] == 60.0
+    assert "duration" not in shorter.to_dict()["apparatus"]
+
+
+def test_drive_time_replaces_the_apparatus_motor():
+    """Before: the motor's flip replaced the drive given."""
+    run = jl.simulate(alpha=86, n=4, integrator="rk4", dt=0.125, apparatus=TANK, drive_time=300.0)
+    assert run.record["drive"]["flips"][0]["duration"] == 300.0
+    assert "motor" not in run.record["scene"]["apparatus"]
+    # Without it the motor (0.4 Hz) sets the drive time: 2 × 86° at 0.4 Hz.
+    run = jl.simulate(alpha=86, n=4, integrator="rk4", dt=0.125, apparatus=TANK)
+    want = 2 * math.radians(86) / (2 * math.pi * 0.4) / tau_s()
+    assert run.record["drive"]["flips"][0]["duration"] == pytest.approx(want, rel=1e-12)
+
+
+@pytest.mark.parametrize("key", ["b", "gamma", "gravity", "inertia"])
+def test_a_model_keyword_the_apparatus_sets_is_refused(key):
+    """Before: the apparatus' value replaced the keyword without a word."""
+    with pytest.raises(ValueError, match=f"^{key}: the apparatus sets"):
+        jl.simulate(alpha=86, n=4, apparatus=TANK, **{key: 0.3})

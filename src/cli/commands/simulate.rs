@@ -134,7 +134,9 @@ fn write_sidecar(path: &std::path::Path, report: &SimulateReport<'_>) -> Result<
 
 /// The scene of `ladder simulate`: a data scene with `simulate`'s run
 /// ([`simulate_run`]: the paper's window and integrator) under the flags;
-/// the window stays a number (no `auto` window follows a changed N).
+/// the window stays a number (a data scene's window follows no changed
+/// N, `Scene::window_following`), and is an apparatus' `duration` unless
+/// `--t-end` gives it.
 fn simulate_scene(args: &SimulateArgs) -> Result<Scene> {
     let defaults = simulate_run();
     let base = Scene {
@@ -142,10 +144,7 @@ fn simulate_scene(args: &SimulateArgs) -> Result<Scene> {
         run: defaults,
         ..Scene::default()
     };
-    let run = RunArgs {
-        t_end: Some(args.run.t_end.unwrap_or(defaults.t_end)),
-        ..args.run.clone()
-    };
+    let run = args.run.clone();
     let method = match &run.integrator {
         Some(name) => convert::parse_method(name)?,
         None => defaults.integrator,

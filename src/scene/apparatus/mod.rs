@@ -242,10 +242,15 @@ pub struct Apparatus {
     /// of overlap. Default 1000.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub contact_stiffness: Option<f64>,
-    /// The motor turns block 1 through its flip at this rate (Hz).
+    /// The motor turns block 1 through its flip at this rate (Hz); it
+    /// overrides a scene file's `[drive]`, and yields to a drive given
+    /// where the scene is made (`--drive-time`, Python's `drive_time`:
+    /// `Scene::with_drive`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub motor: Option<f64>,
-    /// Length of the run (s); overrides `[run] t_end`.
+    /// Length of the run (s); overrides a scene file's `[run] t_end`, and
+    /// yields to a window given where the scene is made (`--t-end`,
+    /// Python's `t_end`, a panel's: `Scene::with_t_end`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub duration: Option<f64>,
     /// What the program derived (written into data files; recomputed,

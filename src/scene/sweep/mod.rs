@@ -255,6 +255,21 @@ impl SweepSpec {
             ));
         }
         let axes = self.axes()?;
+        if let Some(a) = &base.apparatus {
+            for (param, _) in &axes {
+                let why = match *param {
+                    Param::DriveTime if a.motor.is_some() => Some(
+                        "the apparatus' motor sets block 1's drive time; leave `motor` out to \
+                         sweep it"
+                            .to_string(),
+                    ),
+                    p => a.replaces(p),
+                };
+                if let Some(why) = why {
+                    return Err((format!("output.grid.{}", param.name()), why));
+                }
+            }
+        }
         // Each axis's values one at a time on the base: the model's ranges
         // are per parameter, so this checks every point, and names the axis.
         for (param, vals) in &axes {
