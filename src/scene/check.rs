@@ -32,6 +32,16 @@ impl Scene {
             self.fidelity() == Fidelity::Simulation,
             hanging,
         )?;
+        // The run of ribbons starts from the column they hang in, at rest
+        // (`Scenario::as_built`): another start would be ignored unsaid.
+        if hanging && self.model.start == crate::sim::Start::Relaxed {
+            return bad(
+                "model.start",
+                "the ribbons' run starts from the column they hang in, at rest; `relaxed` is \
+                 the springs' hanging start (docs/experiments.md)"
+                    .into(),
+            );
+        }
         if self.drive.flips.len() > MAX_FLIPS {
             return bad(
                 "drive.flips",

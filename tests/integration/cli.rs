@@ -603,6 +603,11 @@ fn a_model_flag_the_apparatus_sets_is_refused() {
         );
     }
     assert_bad_input(&["movie", "toy", "--b", "1.2"], "--b: the apparatus sets b");
+    // The ribbons start from their hanging column; another start is refused.
+    assert_bad_input(
+        &["movie", "toy", "--start", "relaxed"],
+        "--start: the ribbons' run starts",
+    );
     let head =
         format!("[model]\nalpha = 86.0\nn = 4\n{text}[run]\nintegrator = \"rk4\"\ndt = 0.125\n");
     for (axis, needle) in [
