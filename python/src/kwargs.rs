@@ -60,8 +60,7 @@ fn keyword_names() -> Vec<&'static str> {
 
 /// `scene` with the keywords `kwargs` applied, checked.
 pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
-    let drive_before = scene.drive.clone();
-    let model_before = scene.clone();
+    let before = scene.clone();
     let mut scene = scene.clone();
     let (drive_time, flips, second_flip) = drive_args(&kwargs)?;
     if drive_time.is_some() || flips.is_some() || second_flip.is_some() {
@@ -69,7 +68,6 @@ pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
             .drive
             .reshaped(drive_time, flips.as_deref(), second_flip);
     }
-    let t_end_before = scene.run.t_end;
     let mut value = serde_json::to_value(&scene)
         .map_err(|e| Error::failed(format!("cannot encode the scene: {e}")))?;
     // Each keyword's path in the scene, then every key it sets.
@@ -121,24 +119,24 @@ pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
             Error::bad_input(format!("{path}: {inner}"))
         }
     })?;
-    // A window given (`t_end=`, `run={"t_end": ...}`) replaces an
-    // apparatus' `duration`, and a drive given its `motor`, as the
-    // flags do (`Scene::with_t_end`, `Scene::with_drive`).
     // A model value the apparatus would replace is refused, naming it.
     if let Some(a) = &scene.apparatus {
         for p in Param::ALL {
-            let changed = scene.param(p).to_bits() != model_before.param(p).to_bits();
+            let changed = scene.param(p).to_bits() != before.param(p).to_bits();
             if let Some(why) = a.replaces(p).filter(|_| changed) {
                 return Err(Error::bad_input(format!("{}: {why}", p.name())));
             }
         }
     }
+    // A window given (`t_end=`, `run={"t_end": ...}`) replaces an
+    // apparatus' `duration`, and a drive given its `motor`, as the
+    // flags do (`Scene::with_t_end`, `Scene::with_drive`).
     let mut scene = scene;
-    if scene.run.t_end.to_bits() != t_end_before.to_bits() {
+    if scene.run.t_end.to_bits() != before.run.t_end.to_bits() {
         let t = scene.run.t_end;
         scene = scene.with_t_end(t);
     }
-    if scene.drive != drive_before {
+    if scene.drive != before.drive {
         let d = scene.drive.clone();
         scene = scene.with_drive(d);
     }
