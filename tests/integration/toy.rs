@@ -300,15 +300,26 @@ fn block_1_turned_over_once_flips_every_block_of_a_ten_block_toy_in_turn() {
 /// `duration` (s): each run's blocks in the order of their first flips
 /// (0-based; a block that never flips is left out).
 fn orders(gap_mm: f64, turn: f64, k: usize, duration: f64) -> Vec<Vec<usize>> {
-    // The gap is set by replacing the scene's b (0.5 mm); a scene that
-    // says it otherwise would leave every run at its own gap.
+    orders_with(gap_mm, turn, k, duration, "")
+}
+
+/// [`orders`] with `extra` lines added to the scene's `[apparatus]`.
+fn orders_with(gap_mm: f64, turn: f64, k: usize, duration: f64, extra: &str) -> Vec<Vec<usize>> {
+    // The gap is set by replacing the scene's b (0.5 mm), the extra keys
+    // after its contact; a scene that says them otherwise would leave
+    // every run as the scene is.
     assert!(TOY.contains("b = 5.75"), "the scene's b = s + 0.5 mm");
+    assert!(TOY.contains("contact = \"wood\"\n"), "the scene's contact");
     (0..k)
         .map(|i| {
             let td = turn * (0.9 + 0.2 * i as f64 / (k - 1) as f64);
             let drive = format!("flips = [{{ start = 0.0, duration = {td} }}]");
-            let text =
-                toy(&drive, duration).replace("b = 5.75", &format!("b = {}", 5.7 + gap_mm / 10.0));
+            let text = toy(&drive, duration)
+                .replace("b = 5.75", &format!("b = {}", 5.7 + gap_mm / 10.0))
+                .replace(
+                    "contact = \"wood\"\n",
+                    &format!("contact = \"wood\"\n{extra}"),
+                );
             let a = run(&text, &[]).unwrap().arrival_times;
             let mut flipped: Vec<(f64, usize)> =
                 (0..a.len()).filter_map(|n| a[n].map(|t| (t, n))).collect();
@@ -348,6 +359,31 @@ fn a_quick_turn_throws_the_free_end_over_before_block_3() {
             "block 6 before block 3: {order:?}"
         );
     }
+}
+
+#[test]
+fn turned_the_other_way_round_block_1_flips_block_2_and_mostly_no_more() {
+    // The claim docs/experiments.md ("Which way round the hand turns")
+    // makes: the ribbons' faces fix a sense; block 1 turned the other way
+    // round (the mirrored ribbons turned the scene's way: the mirror image
+    // of that turn) flips block 2 and leaves it hanging short of
+    // inverted. Over eight turns within ±10 % of a slow 1 s (928 τ), to
+    // 3000 τ: no run starts 1, 2, 3, and in 7 of the 8 blocks 1 and 2
+    // are the only ones to flip (the longest turn flips 1, 3, 2, 4). The
+    // scene's own sense flips block 3, third, in 6 of the same 8 turns.
+    let mirrored = orders_with(0.5, 928.0, 8, 3.234, "ribbon_mirror = true\n");
+    assert!(
+        mirrored.iter().all(|o| !o.starts_with(&[0, 1, 2])),
+        "no run in turn: {mirrored:?}"
+    );
+    let stopped = mirrored.iter().filter(|o| o[..] == [0, 1]).count();
+    assert!(stopped >= 6, "blocks 1 and 2 alone in most: {mirrored:?}");
+    let scene = orders(0.5, 928.0, 8, 3.234);
+    let on = scene.iter().filter(|o| o.starts_with(&[0, 1, 2])).count();
+    assert!(
+        on >= 6,
+        "the scene's sense starts in turn in most: {scene:?}"
+    );
 }
 
 /// The arrival times (τ) of `text` run at a fixed RK4 step `dt`, sampled
