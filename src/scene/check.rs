@@ -72,6 +72,22 @@ impl Scene {
                 format!("must be a finite time > 0 or \"auto\", got {}", r.t_end),
             );
         }
+        // An apparatus' run has no automatic window (`with_auto_window`
+        // leaves it): its `duration` (which replaces `t_end` when the
+        // apparatus is converted) or a number of τ.
+        if r.t_end == AUTO_T_END
+            && self
+                .apparatus
+                .as_ref()
+                .is_some_and(|a| a.duration.is_none())
+        {
+            return bad(
+                "run.t_end",
+                "\"auto\" is not a window for an apparatus: give [apparatus] duration (s) or a \
+                 time in τ"
+                    .into(),
+            );
+        }
         if let Some(dt) = r.dt
             && !(dt.is_finite() && dt > 0.0)
         {

@@ -139,6 +139,9 @@ def test_t_end_replaces_the_apparatus_duration():
     shorter = scene.replace(t_end=60.0)
     assert shorter.to_dict()["run"]["t_end"] == 60.0
     assert "duration" not in shorter.to_dict()["apparatus"]
+    # An apparatus has no automatic window.
+    with pytest.raises(ValueError, match='"auto" is not a window for an apparatus'):
+        scene.replace(t_end="auto")
 
 
 def test_drive_time_replaces_the_apparatus_motor():

@@ -151,13 +151,24 @@ pub struct DriveArgs {
     pub second_flip: Option<f64>,
 }
 
+/// `--t-end`: a time in τ, or `auto` (the scene's `t_end = "auto"`,
+/// [`crate::scene::AUTO_T_END`]). Its range is the scene's check's.
+fn parse_t_end(s: &str) -> std::result::Result<f64, String> {
+    if s.trim() == "auto" {
+        return Ok(crate::scene::AUTO_T_END);
+    }
+    s.trim()
+        .parse()
+        .map_err(|_| format!("expected a time in tau or auto, got '{s}'"))
+}
+
 /// The window and integrator (`[run]`).
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Run")]
 pub struct RunArgs {
     /// End time, in units of tau = sqrt(m/k), or auto (until every wave
     /// has a fate) [default: the scene's; auto for your own]
-    #[arg(long, value_name = "T")]
+    #[arg(long, value_name = "T", value_parser = parse_t_end)]
     pub t_end: Option<f64>,
     /// auto (choose the method and step, then verify the arrival times to
     /// --tolerance), explicit-euler, symplectic-euler (the paper's),

@@ -145,6 +145,12 @@ fn simulate_scene(args: &SimulateArgs) -> Result<Scene> {
         ..Scene::default()
     };
     let run = args.run.clone();
+    if run.t_end == Some(scene::AUTO_T_END) {
+        return Err(Error::bad_input(
+            "--t-end: simulate runs to a time given in tau; auto (until every wave has a fate) \
+             is for movie and figure",
+        ));
+    }
     let method = match &run.integrator {
         Some(name) => convert::parse_method(name)?,
         None => defaults.integrator,
