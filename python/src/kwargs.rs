@@ -49,6 +49,16 @@ fn is_drive(key: &str) -> bool {
     in_table(key, Place::Drive) || DRIVE_FLIPS.contains(&key)
 }
 
+/// Whether `key` sets the ladder's model, drive, run or apparatus (a
+/// keyword of a flag, or a key path under one of those tables).
+fn is_ladder_key(key: &str) -> bool {
+    let root = key.split('.').next().unwrap_or(key);
+    is_model(key)
+        || is_drive(key)
+        || RUN.contains(&key)
+        || ["model", "drive", "run", "apparatus", "start"].contains(&root)
+}
+
 /// Every keyword of a flag, for messages: the table's, then the run's and
 /// the drive's.
 fn keyword_names() -> Vec<&'static str> {
@@ -61,6 +71,15 @@ fn keyword_names() -> Vec<&'static str> {
 /// `scene` with the keywords `kwargs` applied, checked.
 pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
     let before = scene.clone();
+    // A ring chain has no ladder: a ladder keyword would set nothing run.
+    if before.rings.is_some()
+        && let Some(key) = kwargs.keys().find(|k| is_ladder_key(k))
+    {
+        return Err(Error::bad_input(format!(
+            "{key}: the ring chain has no ladder to set it on; its keys are rings.* \
+             (docs/rings.md)"
+        )));
+    }
     let mut scene = scene.clone();
     let (drive_time, flips, second_flip) = drive_args(&kwargs)?;
     if drive_time.is_some() || flips.is_some() || second_flip.is_some() {

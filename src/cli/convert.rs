@@ -118,6 +118,14 @@ pub fn scene_from_flags(
     drive: &DriveArgs,
     run: &RunArgs,
 ) -> Result<Scene> {
+    if base.rings.is_some()
+        && let Some(flag) = first_ladder_flag(model, drive, run)
+    {
+        return Err(Error::bad_input(format!(
+            "{flag}: the ring chain has no ladder to set it on; its keys are [rings]'s \
+             (docs/rings.md): `ladder scene ID > rings.toml`, edit, `ladder render rings.toml`"
+        )));
+    }
     let before = base.clone();
     model.apply(&mut base);
     drive.apply(&mut base);
@@ -148,6 +156,31 @@ pub fn scene_from_flags(
         base = base.window_following(&before);
     }
     checked(base)
+}
+
+/// The first of the ladder's model, drive and run flags given, by its
+/// name (`--alpha`, `--drive-time`, `--t-end`), or `None`.
+fn first_ladder_flag(model: &ModelArgs, drive: &DriveArgs, run: &RunArgs) -> Option<String> {
+    if let Some((p, _)) = model.params.given().next() {
+        return Some(format!("--{}", p.name().replace('_', "-")));
+    }
+    let named = [
+        (model.start.is_some(), "--start"),
+        (model.apparatus.is_some(), "--apparatus"),
+        (model.medium.is_some(), "--medium"),
+        (drive.drive_time.is_some(), "--drive-time"),
+        (drive.flips.is_some(), "--flips"),
+        (drive.second_flip.is_some(), "--second-flip"),
+        (run.t_end.is_some(), "--t-end"),
+        (run.integrator.is_some(), "--integrator"),
+        (run.dt.is_some(), "--dt"),
+        (run.tol.rtol.is_some(), "--rtol"),
+        (run.tol.tolerance.is_some(), "--tolerance"),
+    ];
+    named
+        .iter()
+        .find(|(given, _)| *given)
+        .map(|(_, flag)| flag.to_string())
 }
 
 /// `Scene::check`, its key path worded as the flag that sets it.

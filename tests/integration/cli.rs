@@ -661,3 +661,33 @@ fn t_end_auto_is_taken_where_the_help_offers_it() {
         "expected a time in tau or auto",
     );
 }
+
+/// The ring chain (movie 12, figure 4b) has no ladder: a model, drive or
+/// run flag is one line and exit 2. Before, each was taken, set on the
+/// scene's unused ladder, and the same chain was run under a name that
+/// claimed the flag (`movie-12-a70.gif`, byte for byte `movie-12.gif`).
+#[test]
+fn a_ring_scene_refuses_the_ladders_flags() {
+    let dir = crate::common::tempdir::TempDir::new("rings-flags");
+    let out = dir.path().to_str().unwrap().to_string();
+    for (flag, value) in [
+        ("--alpha", "70"),
+        ("--n", "8"),
+        ("--drive-time", "300"),
+        ("--start", "relaxed"),
+        ("--t-end", "1"),
+        ("--integrator", "rk4"),
+    ] {
+        for (kind, id) in [("movie", "12"), ("figure", "4b")] {
+            assert_bad_input(
+                &[kind, id, flag, value, "--out", &out],
+                &format!("{flag}: the ring chain has no ladder"),
+            );
+        }
+    }
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        0,
+        "nothing written"
+    );
+}

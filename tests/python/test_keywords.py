@@ -163,3 +163,13 @@ def test_random_keyword_sets_return_or_name_the_key():
         assert elapsed < 30, f"{kw!r} took {elapsed:.1f} s"
         calls += 1
     assert calls == 300
+
+
+@pytest.mark.parametrize("key, value", [("alpha", 70.0), ("n", 8), ("t_end", 1.0), ("drive_time", 300.0), ("model.b", 1.5)])
+def test_a_ring_scene_refuses_the_ladders_keywords(key, value):
+    """Before: a ring chain took them and ran the same chain (docs/rings.md)."""
+    rings = jl.Scene.builtin("12")
+    with pytest.raises(ValueError, match=f"^{key}: the ring chain has no ladder"):
+        rings.replace(**{key: value})
+    # Its own keys still work.
+    assert rings.replace(**{"rings.t_end": 1.0}).to_dict()["rings"]["t_end"] == 1.0
