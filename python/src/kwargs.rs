@@ -21,8 +21,8 @@
 //! another keyword gave. A list where the scene has a table
 //! (`model=[70, 20]`) is refused: a table's keys are named.
 
-use jacobs_ladder::scene::Scene;
 use jacobs_ladder::scene::params::{Param, Place};
+use jacobs_ladder::scene::{Fidelity, Scene};
 use jacobs_ladder::{Error, Result};
 use serde_json::{Map, Value};
 
@@ -59,6 +59,13 @@ fn is_ladder_key(key: &str) -> bool {
         || ["model", "drive", "run", "apparatus", "start"].contains(&root)
 }
 
+/// Whether `key` sets block 1's drive or the run (a keyword of a flag,
+/// or a key path under `drive` or `run`).
+fn is_run_key(key: &str) -> bool {
+    let root = key.split('.').next().unwrap_or(key);
+    is_drive(key) || RUN.contains(&key) || ["drive", "run"].contains(&root)
+}
+
 /// Every keyword of a flag, for messages: the table's, then the run's and
 /// the drive's.
 fn keyword_names() -> Vec<&'static str> {
@@ -78,6 +85,17 @@ pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
         return Err(Error::bad_input(format!(
             "{key}: the ring chain has no ladder to set it on; its keys are rings.* \
              (docs/rings.md)"
+        )));
+    }
+    // A figure that runs no simulation: a drive or run keyword sets
+    // nothing run.
+    if before.fidelity() != Fidelity::Simulation
+        && let Some(key) = kwargs.keys().find(|k| is_run_key(k))
+    {
+        return Err(Error::bad_input(format!(
+            "{key}: this figure is a {} and runs no simulation; block 1's drive and the run's \
+             keys do not apply to it",
+            before.fidelity().name()
         )));
     }
     let mut scene = scene.clone();

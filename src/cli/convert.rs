@@ -7,7 +7,7 @@
 use super::args::{DriveArgs, GridArgs, MediumArg, ModelArgs, RunArgs, StartArg, SweepArgs};
 use crate::error::{Error, Result};
 use crate::scene::sweep::{Param, SweepSpec, Values};
-use crate::scene::{Method, OutputSpec, Scene};
+use crate::scene::{Fidelity, Method, OutputSpec, Scene};
 use crate::sim;
 
 impl ModelArgs {
@@ -126,6 +126,15 @@ pub fn scene_from_flags(
              (docs/rings.md): `ladder scene ID > rings.toml`, edit, `ladder render rings.toml`"
         )));
     }
+    if base.fidelity() != Fidelity::Simulation
+        && let Some(flag) = first_run_flag(drive, run)
+    {
+        return Err(Error::bad_input(format!(
+            "{flag}: this figure is a {} and runs no simulation; block 1's drive and the \
+             run's flags do not apply to it",
+            base.fidelity().name()
+        )));
+    }
     let before = base.clone();
     model.apply(&mut base);
     drive.apply(&mut base);
@@ -159,7 +168,7 @@ pub fn scene_from_flags(
 }
 
 /// The first of the ladder's model, drive and run flags given, by its
-/// name (`--alpha`, `--drive-time`, `--t-end`), or `None`.
+/// name (`--alpha`, `--start`, then [`first_run_flag`]'s), or `None`.
 fn first_ladder_flag(model: &ModelArgs, drive: &DriveArgs, run: &RunArgs) -> Option<String> {
     if let Some((p, _)) = model.params.given().next() {
         return Some(format!("--{}", p.name().replace('_', "-")));
@@ -168,6 +177,18 @@ fn first_ladder_flag(model: &ModelArgs, drive: &DriveArgs, run: &RunArgs) -> Opt
         (model.start.is_some(), "--start"),
         (model.apparatus.is_some(), "--apparatus"),
         (model.medium.is_some(), "--medium"),
+    ];
+    named
+        .iter()
+        .find(|(given, _)| *given)
+        .map(|(_, flag)| flag.to_string())
+        .or_else(|| first_run_flag(drive, run))
+}
+
+/// The first of block 1's drive flags and the run's flags given, by its
+/// name (`--drive-time`, `--t-end`), or `None`.
+fn first_run_flag(drive: &DriveArgs, run: &RunArgs) -> Option<String> {
+    let named = [
         (drive.drive_time.is_some(), "--drive-time"),
         (drive.flips.is_some(), "--flips"),
         (drive.second_flip.is_some(), "--second-flip"),

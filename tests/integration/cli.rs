@@ -691,3 +691,31 @@ fn a_ring_scene_refuses_the_ladders_flags() {
         "nothing written"
     );
 }
+
+/// A figure that runs no simulation (a drawing, a formula, linear theory)
+/// refuses block 1's drive and the run's flags with one line; before,
+/// each was taken and the same figure written under a name that claimed
+/// it (`figure-2b-to100.png`). Its model flags still draw it anew.
+#[test]
+fn a_figure_that_runs_no_simulation_refuses_the_run_flags() {
+    let dir = crate::common::tempdir::TempDir::new("theory-flags");
+    let out = dir.path().to_str().unwrap().to_string();
+    for (id, flag, value, kind) in [
+        ("2b", "--t-end", "100", "drawing"),
+        ("S5", "--integrator", "rk4", "linear theory"),
+        ("2c", "--drive-time", "5", "formula"),
+        ("2c", "--flips", "0,2000", "formula"),
+    ] {
+        assert_bad_input(
+            &["figure", id, flag, value, "--out", &out],
+            &format!("{flag}: this figure is a {kind} and runs no simulation"),
+        );
+    }
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        0,
+        "nothing written"
+    );
+    ladder_ok(&["figure", "2c", "--alpha", "70", "--out", &out]);
+    assert!(dir.path().join("figure-2c-a70.png").exists());
+}

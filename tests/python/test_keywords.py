@@ -173,3 +173,12 @@ def test_a_ring_scene_refuses_the_ladders_keywords(key, value):
         rings.replace(**{key: value})
     # Its own keys still work.
     assert rings.replace(**{"rings.t_end": 1.0}).to_dict()["rings"]["t_end"] == 1.0
+
+
+@pytest.mark.parametrize("key, value", [("t_end", 100.0), ("integrator", "rk4"), ("drive_time", 5.0), ("run.dt", 0.1)])
+def test_a_figure_that_runs_no_simulation_refuses_run_keywords(key, value):
+    """Before: figure 2b took them and drew the same figure."""
+    drawing = jl.Scene.builtin("2b")
+    with pytest.raises(ValueError, match=f"^{key}: this figure is a drawing and runs no simulation"):
+        drawing.replace(**{key: value})
+    assert drawing.replace(alpha=70.0).to_dict()["model"]["alpha"] == 70.0
