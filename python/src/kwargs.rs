@@ -22,7 +22,7 @@
 //! (`model=[70, 20]`) is refused: a table's keys are named.
 
 use jacobs_ladder::scene::params::{Param, Place};
-use jacobs_ladder::scene::{Fidelity, Scene};
+use jacobs_ladder::scene::{Scene, Table};
 use jacobs_ladder::{Error, Result};
 use serde_json::{Map, Value};
 
@@ -49,21 +49,21 @@ fn is_drive(key: &str) -> bool {
     in_table(key, Place::Drive) || DRIVE_FLIPS.contains(&key)
 }
 
-/// Whether `key` sets the ladder's model, drive, run or apparatus (a
-/// keyword of a flag, or a key path under one of those tables).
-fn is_ladder_key(key: &str) -> bool {
+/// The table `key` sets (a keyword of a flag, or a key path under
+/// `model`, `drive`, `run` or `apparatus`), if one of those.
+fn table_of(key: &str) -> Option<Table> {
     let root = key.split('.').next().unwrap_or(key);
-    is_model(key)
-        || is_drive(key)
-        || RUN.contains(&key)
-        || ["model", "drive", "run", "apparatus", "start"].contains(&root)
-}
-
-/// Whether `key` sets block 1's drive or the run (a keyword of a flag,
-/// or a key path under `drive` or `run`).
-fn is_run_key(key: &str) -> bool {
-    let root = key.split('.').next().unwrap_or(key);
-    is_drive(key) || RUN.contains(&key) || ["drive", "run"].contains(&root)
+    if is_model(key) || root == "model" {
+        Some(Table::Model)
+    } else if is_drive(key) || root == "drive" {
+        Some(Table::Drive)
+    } else if RUN.contains(&key) || root == "run" {
+        Some(Table::Run)
+    } else if root == "apparatus" {
+        Some(Table::Apparatus)
+    } else {
+        None
+    }
 }
 
 /// Every keyword of a flag, for messages: the table's, then the run's and
@@ -78,25 +78,12 @@ fn keyword_names() -> Vec<&'static str> {
 /// `scene` with the keywords `kwargs` applied, checked.
 pub fn apply(scene: &Scene, kwargs: Map<String, Value>) -> Result<Scene> {
     let before = scene.clone();
-    // A ring chain has no ladder: a ladder keyword would set nothing run.
-    if before.rings.is_some()
-        && let Some(key) = kwargs.keys().find(|k| is_ladder_key(k))
-    {
-        return Err(Error::bad_input(format!(
-            "{key}: the ring chain has no ladder to set it on; its keys are rings.* \
-             (docs/rings.md)"
-        )));
-    }
-    // A figure that runs no simulation: a drive or run keyword sets
-    // nothing run.
-    if before.fidelity() != Fidelity::Simulation
-        && let Some(key) = kwargs.keys().find(|k| is_run_key(k))
-    {
-        return Err(Error::bad_input(format!(
-            "{key}: this figure is a {} and runs no simulation; block 1's drive and the run's \
-             keys do not apply to it",
-            before.fidelity().name()
-        )));
+    // A keyword that would set nothing run (a ring chain's ladder, a
+    // drawing's drive or run) is refused, naming it (`Scene::sets_nothing`).
+    for key in kwargs.keys() {
+        if let Some(why) = table_of(key).and_then(|t| before.sets_nothing(t)) {
+            return Err(Error::bad_input(format!("{key}: {why}")));
+        }
     }
     let mut scene = scene.clone();
     let (drive_time, flips, second_flip) = drive_args(&kwargs)?;

@@ -7,7 +7,7 @@
 use super::args::{DriveArgs, GridArgs, MediumArg, ModelArgs, RunArgs, StartArg, SweepArgs};
 use crate::error::{Error, Result};
 use crate::scene::sweep::{Param, SweepSpec, Values};
-use crate::scene::{Fidelity, Method, OutputSpec, Scene};
+use crate::scene::{Method, OutputSpec, Scene, Table};
 use crate::sim;
 
 impl ModelArgs {
@@ -118,22 +118,14 @@ pub fn scene_from_flags(
     drive: &DriveArgs,
     run: &RunArgs,
 ) -> Result<Scene> {
-    if base.rings.is_some()
-        && let Some(flag) = first_ladder_flag(model, drive, run)
-    {
-        return Err(Error::bad_input(format!(
-            "{flag}: the ring chain has no ladder to set it on; its keys are [rings]'s \
-             (docs/rings.md): `ladder scene ID > rings.toml`, edit, `ladder render rings.toml`"
-        )));
-    }
-    if base.fidelity() != Fidelity::Simulation
-        && let Some(flag) = first_run_flag(drive, run)
-    {
-        return Err(Error::bad_input(format!(
-            "{flag}: this figure is a {} and runs no simulation; block 1's drive and the \
-             run's flags do not apply to it",
-            base.fidelity().name()
-        )));
+    for (flag, table) in given_flags(model, drive, run) {
+        if let Some(why) = base.sets_nothing(table) {
+            let hint = match base.rings {
+                Some(_) => ": `ladder scene ID > rings.toml`, edit, `ladder render rings.toml`",
+                None => "",
+            };
+            return Err(Error::bad_input(format!("{flag}: {why}{hint}")));
+        }
     }
     let before = base.clone();
     model.apply(&mut base);
@@ -167,41 +159,31 @@ pub fn scene_from_flags(
     checked(base)
 }
 
-/// The first of the ladder's model, drive and run flags given, by its
-/// name (`--alpha`, `--start`, then [`first_run_flag`]'s), or `None`.
-fn first_ladder_flag(model: &ModelArgs, drive: &DriveArgs, run: &RunArgs) -> Option<String> {
-    if let Some((p, _)) = model.params.given().next() {
-        return Some(format!("--{}", p.name().replace('_', "-")));
-    }
+/// The model, drive and run flags given, by name (`--alpha`,
+/// `--drive-time`, `--t-end`), each with the table it sets.
+fn given_flags(model: &ModelArgs, drive: &DriveArgs, run: &RunArgs) -> Vec<(String, Table)> {
+    let params = model
+        .params
+        .given()
+        .map(|(p, _)| (format!("--{}", p.name().replace('_', "-")), Table::Model));
     let named = [
-        (model.start.is_some(), "--start"),
-        (model.apparatus.is_some(), "--apparatus"),
-        (model.medium.is_some(), "--medium"),
+        (model.start.is_some(), "--start", Table::Model),
+        (model.apparatus.is_some(), "--apparatus", Table::Apparatus),
+        (model.medium.is_some(), "--medium", Table::Apparatus),
+        (drive.drive_time.is_some(), "--drive-time", Table::Drive),
+        (drive.flips.is_some(), "--flips", Table::Drive),
+        (drive.second_flip.is_some(), "--second-flip", Table::Drive),
+        (run.t_end.is_some(), "--t-end", Table::Run),
+        (run.integrator.is_some(), "--integrator", Table::Run),
+        (run.dt.is_some(), "--dt", Table::Run),
+        (run.tol.rtol.is_some(), "--rtol", Table::Run),
+        (run.tol.tolerance.is_some(), "--tolerance", Table::Run),
     ];
-    named
-        .iter()
-        .find(|(given, _)| *given)
-        .map(|(_, flag)| flag.to_string())
-        .or_else(|| first_run_flag(drive, run))
-}
-
-/// The first of block 1's drive flags and the run's flags given, by its
-/// name (`--drive-time`, `--t-end`), or `None`.
-fn first_run_flag(drive: &DriveArgs, run: &RunArgs) -> Option<String> {
-    let named = [
-        (drive.drive_time.is_some(), "--drive-time"),
-        (drive.flips.is_some(), "--flips"),
-        (drive.second_flip.is_some(), "--second-flip"),
-        (run.t_end.is_some(), "--t-end"),
-        (run.integrator.is_some(), "--integrator"),
-        (run.dt.is_some(), "--dt"),
-        (run.tol.rtol.is_some(), "--rtol"),
-        (run.tol.tolerance.is_some(), "--tolerance"),
-    ];
-    named
-        .iter()
-        .find(|(given, _)| *given)
-        .map(|(_, flag)| flag.to_string())
+    let named = named
+        .into_iter()
+        .filter(|(given, _, _)| *given)
+        .map(|(_, flag, table)| (flag.to_string(), table));
+    params.chain(named).collect()
 }
 
 /// `Scene::check`, its key path worded as the flag that sets it.

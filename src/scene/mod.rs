@@ -128,6 +128,42 @@ impl Fidelity {
     }
 }
 
+/// The tables of a scene that a flag or a keyword sets.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Table {
+    Model,
+    Drive,
+    Run,
+    Apparatus,
+}
+
+impl Scene {
+    /// Why a value given for `table` (a flag, a Python keyword) would set
+    /// nothing this scene runs, or `None` where it would: a ring chain has
+    /// no ladder (its keys are `[rings]`'s), and a figure that runs no
+    /// simulation (a drawing, a formula, linear theory) has no drive and
+    /// no run. A value given there used to be taken and ignored.
+    pub fn sets_nothing(&self, table: Table) -> Option<String> {
+        if self.rings.is_some() {
+            return Some(
+                "the ring chain has no ladder to set it on; its keys are [rings]'s \
+                 (docs/rings.md)"
+                    .into(),
+            );
+        }
+        let fidelity = self.fidelity();
+        (fidelity != Fidelity::Simulation && matches!(table, Table::Drive | Table::Run)).then(
+            || {
+                format!(
+                    "this figure is a {} and runs no simulation; block 1's drive and the run do \
+                 not apply to it",
+                    fidelity.name()
+                )
+            },
+        )
+    }
+}
+
 /// Whether a scene makes a figure or a movie.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]

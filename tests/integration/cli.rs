@@ -473,18 +473,19 @@ fn simulate_with_an_apparatus_reports_the_values_it_ran() {
     assert!(plain.get("units").is_none());
 }
 
-/// `--t-end` is the run's window even where the apparatus gives a
-/// `duration`: before, the duration (converted again with the apparatus)
-/// silently replaced it, and the recorded scene said both.
-#[test]
-fn t_end_replaces_the_apparatus_duration() {
-    let dir = crate::common::tempdir::TempDir::new("t-end-duration");
-    let tank = dir.file(
-        "tank.toml",
+/// The tank's plates turned by a motor at 0.2 Hz for `duration` s: an
+/// `[apparatus]` table, as `simulate --apparatus FILE` reads it.
+fn motor_tank(duration: f64) -> String {
+    format!(
         "[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\ndensity = 1.2\nmedium = \"water\"\n\
-         g = 981.0\nmotor = 0.2\nduration = 20.0\n",
-    );
-    let base = [
+         g = 981.0\nmotor = 0.2\nduration = {duration}\n"
+    )
+}
+
+/// `simulate --json` of four of the plates of the apparatus file `tank`,
+/// RK4 at 0.125 τ, with the flags `extra`.
+fn simulate_tank<'a>(tank: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
+    let mut args = vec![
         "simulate",
         "--alpha",
         "86",
@@ -495,11 +496,21 @@ fn t_end_replaces_the_apparatus_duration() {
         "--dt",
         "0.125",
         "--apparatus",
-        &tank,
+        tank,
         "--json",
     ];
-    let mut given = base.to_vec();
-    given.extend(["--t-end", "300"]);
+    args.extend(extra);
+    args
+}
+
+/// `--t-end` is the run's window even where the apparatus gives a
+/// `duration`: before, the duration (converted again with the apparatus)
+/// silently replaced it, and the recorded scene said both.
+#[test]
+fn t_end_replaces_the_apparatus_duration() {
+    let dir = crate::common::tempdir::TempDir::new("t-end-duration");
+    let tank = dir.file("tank.toml", &motor_tank(20.0));
+    let given = simulate_tank(&tank, &["--t-end", "300"]);
     let v = json_with(&given, &["t_end", "units"]);
     assert_eq!(v["t_end"].as_f64(), Some(300.0));
     assert_eq!(v["scene"]["run"]["t_end"].as_f64(), Some(300.0));
@@ -512,7 +523,7 @@ fn t_end_replaces_the_apparatus_duration() {
     let t_end_s = v["units"]["t_end_s"].as_f64().unwrap();
     assert!((t_end_s - 300.0 * tau).abs() < 1e-12, "{t_end_s}");
     // Without the flag the duration is the window.
-    let v = json_with(&base, &["t_end"]);
+    let v = json_with(&simulate_tank(&tank, &[]), &["t_end"]);
     assert!((v["units"]["t_end_s"].as_f64().unwrap() - 20.0).abs() < 1e-9);
 }
 
@@ -537,27 +548,8 @@ fn a_built_in_apparatus_scene_runs_to_the_t_end_given() {
 #[test]
 fn drive_time_replaces_the_apparatus_motor() {
     let dir = crate::common::tempdir::TempDir::new("drive-time-motor");
-    let tank = dir.file(
-        "tank.toml",
-        "[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\ndensity = 1.2\nmedium = \"water\"\n\
-         g = 981.0\nmotor = 0.2\nduration = 2.0\n",
-    );
-    let base = [
-        "simulate",
-        "--alpha",
-        "86",
-        "--n",
-        "4",
-        "--integrator",
-        "rk4",
-        "--dt",
-        "0.125",
-        "--apparatus",
-        &tank,
-        "--json",
-    ];
-    let mut given = base.to_vec();
-    given.extend(["--drive-time", "300"]);
+    let tank = dir.file("tank.toml", &motor_tank(2.0));
+    let given = simulate_tank(&tank, &["--drive-time", "300"]);
     let v = json_with(&given, &["drive"]);
     for record in [&v, &v["scene"]] {
         assert_eq!(
@@ -567,7 +559,7 @@ fn drive_time_replaces_the_apparatus_motor() {
     }
     assert!(v["scene"]["apparatus"].get("motor").is_none());
     // Without the flag the motor turns block 1 (0.2 Hz: far longer).
-    let v = json_with(&base, &["drive"]);
+    let v = json_with(&simulate_tank(&tank, &[]), &["drive"]);
     assert!(v["drive"]["flips"][0]["duration"].as_f64().unwrap() > 2000.0);
 }
 
@@ -578,9 +570,8 @@ fn drive_time_replaces_the_apparatus_motor() {
 #[test]
 fn a_model_flag_the_apparatus_sets_is_refused() {
     let dir = crate::common::tempdir::TempDir::new("flag-apparatus");
-    let text = "[apparatus]\ns = 5.0\nb = 7.5\nthickness = 0.3\ndensity = 1.2\n\
-                medium = \"water\"\ng = 981.0\nmotor = 0.2\nduration = 2.0\n";
-    let tank = dir.file("tank.toml", text);
+    let text = motor_tank(2.0);
+    let tank = dir.file("tank.toml", &text);
     for (flag, value) in [
         ("--b", "2"),
         ("--gamma", "0.1"),
@@ -588,17 +579,7 @@ fn a_model_flag_the_apparatus_sets_is_refused() {
         ("--inertia", "0.3"),
     ] {
         assert_bad_input(
-            &[
-                "simulate",
-                "--alpha",
-                "86",
-                "--n",
-                "4",
-                "--apparatus",
-                &tank,
-                flag,
-                value,
-            ],
+            &simulate_tank(&tank, &[flag, value]),
             &format!("{flag}: the apparatus sets"),
         );
     }
